@@ -1,0 +1,55 @@
+# CREATIVE-py: every target installs what it needs on a fresh Debian-like machine.
+SHELL := /bin/bash
+VENV  := .venv
+PY    := $(VENV)/bin/python
+SWIPL := swipl
+STAMP := $(VENV)/.installed
+SUDO  := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+RUN   ?=
+SEED  ?= 0
+OUT   ?= runs
+
+.PHONY: help setup test test-prolog test-python test-all hook wedge repl bench clean
+
+help:  ## List the targets.
+	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
+
+/usr/bin/swipl:
+	$(SUDO) apt-get update -qq
+	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq swi-prolog-nox openscad >/dev/null
+
+$(STAMP): pyproject.toml | /usr/bin/swipl
+	@command -v openscad >/dev/null || (DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq openscad >/dev/null)
+	python3 -m venv $(VENV)
+	$(PY) -m pip install -q --upgrade pip
+	$(PY) -m pip install -q -e '.[test]'
+	$(PY) -m pip install -q --no-deps example-robot-data
+	touch $(STAMP)
+
+setup: $(STAMP)  ## Install SWI-Prolog, OpenSCAD and the Python environment.
+
+test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
+
+test-prolog: $(STAMP)  ## Run the plunit tests under --on-warning=status.
+	$(SWIPL) --on-warning=status -q -g run_all -t halt tests/prolog/run_tests.pl
+
+test-python: $(STAMP)  ## Run pytest without the slow tests.
+	$(PY) -m pytest -q -m "not slow"
+
+test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs included.
+	$(PY) -m pytest -q
+
+hook: $(STAMP)  ## Case 1 end to end: demonstration, tool-use learning, hook creation.
+	$(VENV)/bin/creative run hook --seed $(SEED) --out $(OUT)
+
+wedge: $(STAMP)  ## Case 2 end to end: demonstration, tool-use learning, wedge creation.
+	$(VENV)/bin/creative run wedge --seed $(SEED) --out $(OUT)
+
+repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads its model.pl).
+	$(VENV)/bin/creative repl $(RUN)
+
+bench: $(STAMP)  ## Run the benchmarks and record their figures under bench/results/.
+	$(PY) bench/run_all.py
+
+clean:  ## Remove the environment and run folders.
+	rm -rf $(VENV) runs .pytest_cache

@@ -1,0 +1,32 @@
+/*  CREATIVE-py: load the whole learning engine, for the REPL and for the tests.
+
+    swipl prolog/creative.pl
+
+    Every module of prolog/ is loaded with use_module/1, so its exports are visible at
+    the top level. The ontology (background knowledge) is loaded by knowledge:load_ontology/1
+    through creative_load_default_ontology/0.
+*/
+
+:- multifile user:file_search_path/2.
+:- dynamic user:file_search_path/2.
+:- prolog_load_context(directory, Dir),
+   asserta(user:file_search_path(creative, Dir)),
+   file_directory_name(Dir, Root),
+   directory_file_path(Root, ontology, Onto),
+   asserta(user:file_search_path(ontology, Onto)),
+   asserta(user:file_search_path(creative_root, Root)).
+
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+
+%   Load every module file beside this one (one module per file, see DESIGN.md §2).
+:- prolog_load_context(directory, Dir),
+   directory_files(Dir, Entries),
+   msort(Entries, Sorted),
+   forall(( member(E, Sorted),
+            file_name_extension(Base, pl, E),
+            Base \== creative
+          ),
+          ( directory_file_path(Dir, E, Path),
+            use_module(Path)
+          )).
