@@ -224,10 +224,15 @@ ToolSpec = Union[HookSpec, BlockSpec]
 
 def spec_volume(spec: ToolSpec) -> float:
     """Return the solid volume of a spec in m^3 (overlaps of hook parts counted once)."""
-    vol = sum(p.volume for p in spec.parts())
+    parts = spec.parts()
+    vol = sum(p.volume for p in parts)
     if isinstance(spec, HookSpec) and not spec.is_stick:
+        # The prong box (same z extent as the handle) overlaps the handle; at angles
+        # other than 90 degrees the overlap is not a plain half-width block, so clip
+        # the prong's footprint by the handle's rectangle.
+        handle, prong = parts
         w = spec.handle_width
-        vol -= spec.hook_width * (w / 2) * w  # prong box overlaps half the handle
+        vol -= w * _footprint_overlap_area(prong, (0.0, spec.handle_length), (-w / 2, w / 2))
     return vol
 
 
@@ -258,6 +263,34 @@ def spec_from_dict(data: dict, *, source: str = "<dict>") -> ToolSpec:
         raise ValueError(f"{source}: object {data.get('name', '?')!r}: {exc}") from None
     except ValueError as exc:
         raise ValueError(f"{source}: {exc}") from None
+
+
+def _footprint_overlap_area(box: Box, xs: tuple[float, float],
+                            ys: tuple[float, float]) -> float:
+    """Return the area (m^2) of a yawed box's xy footprint inside the rectangle xs x ys."""
+    c, s = math.cos(box.yaw), math.sin(box.yaw)
+    hx, hy = box.size[0] / 2, box.size[1] / 2
+    poly = [(box.center[0] + c * u - s * v, box.center[1] + s * u + c * v)
+            for u, v in ((-hx, -hy), (hx, -hy), (hx, hy), (-hx, hy))]
+    # Sutherland-Hodgman: clip by x >= xs[0], x <= xs[1], y >= ys[0], y <= ys[1].
+    for axis, bound, keep_above in ((0, xs[0], True), (0, xs[1], False),
+                                    (1, ys[0], True), (1, ys[1], False)):
+        def inside(p, axis=axis, bound=bound, keep_above=keep_above):
+            return p[axis] >= bound if keep_above else p[axis] <= bound
+        clipped = []
+        for i, cur in enumerate(poly):
+            prev = poly[i - 1]
+            if inside(cur) != inside(prev):
+                t = (bound - prev[axis]) / (cur[axis] - prev[axis])
+                clipped.append((prev[0] + t * (cur[0] - prev[0]),
+                                prev[1] + t * (cur[1] - prev[1])))
+            if inside(cur):
+                clipped.append(cur)
+        poly = clipped
+        if not poly:
+            return 0.0
+    return 0.5 * abs(sum(poly[i - 1][0] * p[1] - p[0] * poly[i - 1][1]
+                         for i, p in enumerate(poly)))
 
 
 def _check_name(name: str) -> None:
