@@ -1,0 +1,88 @@
+"""Figures and text reports of a run folder.
+
+The trial plot follows the paper's Figures 5 and 6: trial number on the x axis (tool-use
+learning trials "TUL", then tool-creation trials "TC"), the tool used on the y axis, and
+each trial drawn as a filled marker (success) or a cross (failure), with blocked,
+unreachable and invalid outcomes marked separately.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+MARKERS = {
+    "success": dict(marker="o", color="tab:green", label="success"),
+    "failure": dict(marker="x", color="tab:red", label="failure"),
+    "blocked": dict(marker="s", color="tab:orange", label="blocked"),
+    "unreachable": dict(marker="^", color="tab:gray", label="unreachable"),
+    "invalid": dict(marker="D", color="black", label="invalid"),
+}
+
+
+def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Path:
+    """Draw the trial outcomes of a run and save them as a PNG.
+
+    Parameters
+    ----------
+    trials : list of dict
+        Records of ``trials.jsonl``; keys used: ``phase``, ``tool``, ``outcome``,
+        ``variant``.
+    path : Path
+        PNG file to write.
+    title : str
+        Figure title.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    tools: list[str] = []
+    for t in trials:
+        if t["tool"] not in tools:
+            tools.append(t["tool"])
+    fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(trials) + 2.5), 1.2 + 0.38 * len(tools)))
+    seen = set()
+    labels = []
+    for i, t in enumerate(trials, start=1):
+        style = dict(MARKERS.get(t["outcome"], MARKERS["invalid"]))
+        label = style.pop("label")
+        y = tools.index(t["tool"])
+        ax.scatter([i], [y], s=70, label=None if label in seen else label, **style)
+        seen.add(label)
+        labels.append(("TUL" if t["phase"] == "use" else "TC") + f" {t.get('phase_trial', i)}")
+    # Shade the tool-creation trials and mark the task variant changes.
+    tc = [i for i, t in enumerate(trials, start=1) if t["phase"] == "create"]
+    if tc:
+        ax.axvspan(min(tc) - 0.5, max(tc) + 0.5, color="tab:blue", alpha=0.08, lw=0)
+        ax.text(min(tc) - 0.4, len(tools) - 0.6, "tool creation", fontsize=8, color="tab:blue")
+    ax.set_xticks(range(1, len(trials) + 1))
+    ax.set_xticklabels(labels, rotation=60, fontsize=7)
+    ax.set_yticks(range(len(tools)))
+    ax.set_yticklabels(tools, fontsize=8)
+    ax.set_ylim(-0.6, len(tools) - 0.4)
+    ax.set_xlim(0.4, len(trials) + 0.6)
+    ax.grid(axis="x", alpha=0.25)
+    ax.set_xlabel("trial")
+    ax.set_ylabel("tool")
+    if title:
+        ax.set_title(title, fontsize=10)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.0, 1.0), fontsize=8, frameon=False)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)
+
+
+def summarise_trials(trials: list[dict[str, Any]]) -> dict[str, Any]:
+    """Return counts of trials and successes per phase."""
+    out: dict[str, Any] = {}
+    for phase in ("use", "create", "eval"):
+        ts = [t for t in trials if t["phase"] == phase]
+        out[phase] = {
+            "trials": len(ts),
+            "successes": sum(t["outcome"] == "success" for t in ts),
+            "outcomes": [t["outcome"] for t in ts],
+        }
+    return out
