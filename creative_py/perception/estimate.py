@@ -1,0 +1,332 @@
+"""Object poses and sizes from one or more depth cameras.
+
+For each named body the points of every camera that sees it are unprojected to the
+world frame and fused. The estimate describes the object's *bounding box in its own yaw
+frame*:
+
+* ``(x, y, z)`` is the centre of that box (world frame, metres). For a wedge whose
+  block frame has its base on z = 0 this is the block origin raised by half the height.
+* ``yaw`` (radians, about world +z) is the heading of the box's x axis, chosen by the
+  object's symmetry (see below), and ``size = (dx, dy, dz)`` its extents (metres).
+
+Why the extent and not the mean: a camera sees only the faces turned towards it, so the
+mean of the visible points is pulled 9-18 mm towards the camera for a 3 cm cube seen from
+1 m; the mid-point of the points' extent is not. With the sampling convention of
+:mod:`creative_py.perception.unproject` the raw extents are unbiased (measured on a 3 cm
+cube from 1 m: -0.2 mm mean, 0.35 mm s.d. at 320x240), so no pixel-size correction is
+added.
+
+Height: a camera looking down does not see the bottom face, and when walls (a tube) hide
+the side faces the lowest visible point is not the bottom either. The bottom is, in
+order of preference: the known support height ``support_z[name]`` (the table or floor top
+the object rests on), the top surface minus the known height ``heights[name]``, or the
+lowest observed point.
+
+Yaw and symmetry (field ``symmetry`` of the estimate):
+
+* ``"none"`` - a sloped top (a wedge): the height profile along the footprint's axes
+  tells the length axis (the one the top slopes along) and its low end, the tip; ``yaw``
+  is the heading of the tip direction (block +x), in (-pi, pi].
+* ``"pi"`` - a flat rectangular footprint: x is the longer side, yaw in (-pi/2, pi/2].
+* ``"half_pi"`` - a square footprint (a cube): yaw modulo pi/2, in (-pi/4, pi/4].
+* ``"round"`` - a round footprint (an upright cylinder): yaw is meaningless and set to 0.
+
+The footprint's axes come from the rectangle of least area around the points' top view
+(a fine scan of headings over the convex hull), refined for square footprints by the
+fourth-order angular moment of the top-face points, which averages over all pixels
+instead of relying on a few edge pixels.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+from typing import Mapping, Sequence
+
+import numpy as np
+from scipy.spatial import ConvexHull, QhullError
+
+from creative_py.perception.frame import Frame
+from creative_py.perception.noise import NoiseModel
+from creative_py.perception.segment import body_mask
+from creative_py.perception.unproject import unproject_mask
+
+log = logging.getLogger(__name__)
+
+
+@dataclass(frozen=True)
+class EstimatorConfig:
+    """Tolerances of the estimator, all in one place.
+
+    Attributes
+    ----------
+    min_points : int
+        Fewest fused points for an object to be reported.
+    min_pixels_per_camera : int
+        Fewest pixels for a camera to count as seeing the object.
+    extent_trim : float
+        Fraction of points ignored at each end of every extent (robustness to noise).
+    yaw_step_deg : float
+        Heading step of the minimum-area rectangle scan, degrees.
+    profile_bins : int
+        Bins of the height profile used to find a slope.
+    slope_rise_fraction : float
+        A footprint axis is sloped when the top rises by at least this fraction of the
+        object's height across it.
+    square_tolerance : float
+        Footprint sides differing by less than this fraction are a square.
+    round_fill : float
+        A square footprint whose hull fills less than this fraction of its rectangle
+        is round (a disc fills pi/4 = 0.785).
+    top_band_fraction : float
+        Points within this fraction of the height below the top form the top face.
+    """
+
+    min_points: int = 12
+    min_pixels_per_camera: int = 4
+    extent_trim: float = 0.0
+    yaw_step_deg: float = 0.25
+    profile_bins: int = 8
+    slope_rise_fraction: float = 0.45
+    square_tolerance: float = 0.12
+    round_fill: float = 0.88
+    top_band_fraction: float = 0.15
+
+
+@dataclass(frozen=True)
+class ObjectEstimate:
+    """The estimated pose and size of one object (world frame, metres, radians).
+
+    ``(x, y, z)`` is the centre of the object's bounding box in its yaw frame, ``yaw`` the
+    heading of that frame's x axis (see the module docstring for the symmetry rules),
+    ``size = (dx, dy, dz)`` the box's extents, ``n_points`` the number of fused points and
+    ``cameras`` the names of the cameras that saw it.
+    """
+
+    name: str
+    x: float
+    y: float
+    z: float
+    yaw: float
+    size: tuple[float, float, float]
+    n_points: int
+    cameras: tuple[str, ...]
+    symmetry: str = "none"
+
+
+def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
+                     noise: NoiseModel | None = None,
+                     rng: np.random.Generator | None = None, *,
+                     support_z: Mapping[str, float] | None = None,
+                     heights: Mapping[str, float] | None = None,
+                     config: EstimatorConfig = EstimatorConfig()) -> dict[str, ObjectEstimate]:
+    """Estimate the pose and size of every named body that the cameras see.
+
+    Parameters
+    ----------
+    frames : sequence of Frame
+        Images of the same instant from one or more cameras.
+    bodies : mapping of str to int
+        Object name -> pybullet body id (as found in the segmentation images).
+    noise : NoiseModel or None
+        Sensor noise applied to each frame before estimation (needs ``rng``).
+    rng : numpy.random.Generator or None
+        Source of the noise; the same seed gives the same estimates.
+    support_z : mapping of str to float, optional
+        World z (metres) of the surface each object rests on; fixes the bottom face.
+    heights : mapping of str to float, optional
+        Known heights (metres), used when the support is not given.
+    config : EstimatorConfig
+        Tolerances.
+
+    Returns
+    -------
+    dict of str to ObjectEstimate
+        One entry per object seen by at least ``config.min_points`` points; objects
+        not seen are left out (and logged).
+    """
+    if noise is not None and not noise.is_zero and rng is None:
+        raise ValueError("estimate_objects: a noise model needs an rng "
+                         "(numpy.random.default_rng(seed)) so that results are reproducible")
+    for name, bid in bodies.items():
+        if isinstance(bid, bool) or not isinstance(bid, (int, np.integer)) or bid < 0:
+            raise ValueError(f"estimate_objects: body id of {name!r} must be an int >= 0, "
+                             f"got {bid!r}")
+    support_z = dict(support_z or {})
+    heights = dict(heights or {})
+    if noise is not None and not noise.is_zero:
+        frames = [noise.apply(f, rng) for f in frames]
+    out: dict[str, ObjectEstimate] = {}
+    for name, bid in bodies.items():
+        chunks, cams = [], []
+        for frame in frames:
+            mask = body_mask(frame.seg, int(bid))
+            n = int(mask.sum())
+            if n < config.min_pixels_per_camera:
+                continue
+            pts = unproject_mask(frame, mask)
+            chunks.append(pts)
+            cams.append(frame.name)
+        n_pts = sum(len(c) for c in chunks)
+        if n_pts < config.min_points:
+            log.info("object %s not seen (%d points)", name, n_pts)
+            continue
+        est = _estimate_one(name, np.concatenate(chunks), tuple(cams),
+                            support_z.get(name), heights.get(name), config)
+        out[name] = est
+    return out
+
+
+def _estimate_one(name: str, pts: np.ndarray, cams: tuple[str, ...],
+                  support: float | None, height: float | None,
+                  cfg: EstimatorConfig) -> ObjectEstimate:
+    z = pts[:, 2]
+    top = _quantile(z, 1.0 - cfg.extent_trim)
+    if support is not None:
+        bottom = float(support)
+    elif height is not None:
+        bottom = top - float(height)
+    else:
+        bottom = _quantile(z, cfg.extent_trim)
+    dz = max(top - bottom, 0.0)
+    xy = pts[:, :2]
+    theta = _min_area_heading(xy, cfg.yaw_step_deg)
+    ext = _extents(xy, theta, cfg.extent_trim)
+    du, dv = ext[1] - ext[0], ext[3] - ext[2]
+    # Which footprint axis, if any, does the top slope along?
+    rises = [_profile_rise(xy, z, theta + k * math.pi / 2, cfg) for k in (0, 1)]
+    k_slope = int(np.argmax([abs(r) for r in rises]))
+    sloped = dz > 0 and abs(rises[k_slope]) >= cfg.slope_rise_fraction * dz
+    if sloped:
+        symmetry = "none"
+        yaw = theta + k_slope * math.pi / 2
+        if rises[k_slope] > 0:  # the top rises towards +axis: the tip (low end) is behind
+            yaw += math.pi
+        yaw = _wrap(yaw, math.pi)
+    else:
+        longer, shorter = max(du, dv), min(du, dv)
+        if longer - shorter <= cfg.square_tolerance * longer:
+            if _fill_ratio(xy, du * dv) < cfg.round_fill:
+                symmetry, yaw = "round", 0.0
+            else:
+                symmetry = "half_pi"
+                band = z >= top - cfg.top_band_fraction * max(dz, 1e-6)
+                yaw = _square_heading(xy[band], theta)
+                yaw = _wrap(yaw, math.pi / 4)
+        else:
+            symmetry = "pi"
+            yaw = theta if du >= dv else theta + math.pi / 2
+            yaw = _wrap(yaw, math.pi / 2)
+    ext = _extents(xy, yaw, cfg.extent_trim)
+    c_u, c_v = (ext[0] + ext[1]) / 2, (ext[2] + ext[3]) / 2
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    x = c_u * cy - c_v * sy
+    y = c_u * sy + c_v * cy
+    dx = ext[1] - ext[0]
+    dy = ext[3] - ext[2]
+    return ObjectEstimate(name=name, x=float(x), y=float(y), z=float((top + bottom) / 2),
+                          yaw=float(yaw), size=(float(dx), float(dy), float(dz)),
+                          n_points=int(len(pts)), cameras=cams, symmetry=symmetry)
+
+
+def _quantile(values: np.ndarray, q: float) -> float:
+    if q >= 1.0:
+        return float(values.max())
+    if q <= 0.0:
+        return float(values.min())
+    return float(np.quantile(values, q))
+
+
+def _hull_points(xy: np.ndarray) -> np.ndarray:
+    try:
+        return xy[ConvexHull(xy).vertices]
+    except (QhullError, ValueError):  # degenerate (collinear or too few) points
+        return xy
+
+
+def _min_area_heading(xy: np.ndarray, step_deg: float) -> float:
+    """Return the heading in [0, pi/2) of the least-area rectangle around the points."""
+    hull = _hull_points(xy)
+    angles = np.radians(np.arange(0.0, 90.0, step_deg))
+    c, s = np.cos(angles)[:, None], np.sin(angles)[:, None]
+    u = hull[:, 0][None, :] * c + hull[:, 1][None, :] * s
+    v = -hull[:, 0][None, :] * s + hull[:, 1][None, :] * c
+    area = (u.max(axis=1) - u.min(axis=1)) * (v.max(axis=1) - v.min(axis=1))
+    return float(angles[int(np.argmin(area))])
+
+
+def _extents(xy: np.ndarray, heading: float, trim: float) -> tuple[float, float, float, float]:
+    """Return (u_min, u_max, v_min, v_max) of the points in the frame rotated by heading."""
+    c, s = math.cos(heading), math.sin(heading)
+    u = xy[:, 0] * c + xy[:, 1] * s
+    v = -xy[:, 0] * s + xy[:, 1] * c
+    return (_quantile(u, trim), _quantile(u, 1.0 - trim),
+            _quantile(v, trim), _quantile(v, 1.0 - trim))
+
+
+def _profile_rise(xy: np.ndarray, z: np.ndarray, heading: float, cfg: EstimatorConfig) -> float:
+    """Return how much the top surface rises (metres) from the -axis to the +axis end.
+
+    The top surface is the highest point of each bin along the axis; a straight line
+    fitted to those maxima gives the rise across the footprint.
+    """
+    u = xy[:, 0] * math.cos(heading) + xy[:, 1] * math.sin(heading)
+    lo, hi = float(u.min()), float(u.max())
+    if hi - lo < 1e-9:
+        return 0.0
+    idx = np.minimum(((u - lo) / (hi - lo) * cfg.profile_bins).astype(int), cfg.profile_bins - 1)
+    centres, tops = [], []
+    for b in range(cfg.profile_bins):
+        sel = idx == b
+        if sel.sum() >= 2:
+            centres.append(lo + (b + 0.5) * (hi - lo) / cfg.profile_bins)
+            tops.append(float(np.quantile(z[sel], 0.9)))
+    if len(centres) < 3:
+        return 0.0
+    slope = np.polyfit(centres, tops, 1)[0]
+    return float(slope * (hi - lo))
+
+
+def _fill_ratio(xy: np.ndarray, rect_area: float) -> float:
+    if rect_area <= 0:
+        return 1.0
+    try:
+        return float(ConvexHull(xy).volume / rect_area)  # 2-D hull: volume is the area
+    except (QhullError, ValueError):
+        return 1.0
+
+
+def _square_heading(xy: np.ndarray, fallback: float) -> float:
+    """Return the heading (mod pi/2) of a square from the 4th angular moment of its points.
+
+    Points spread evenly over a square centred at the origin and aligned with the axes
+    have ``sum r^4 exp(4 i phi)`` real and negative (the corners lie at 45 degrees).
+    """
+    if len(xy) < 8:
+        return fallback
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    # Centre from a first extent along the fallback heading keeps the moment unbiased.
+    c, s = math.cos(fallback), math.sin(fallback)
+    u = xy[:, 0] * c + xy[:, 1] * s
+    v = -xy[:, 0] * s + xy[:, 1] * c
+    cu, cv = (u.min() + u.max()) / 2, (v.min() + v.max()) / 2
+    centre = np.array([cu * c - cv * s, cu * s + cv * c])
+    if not np.all((centre >= lo - 1e-9) & (centre <= hi + 1e-9)):
+        return fallback
+    d = xy - centre
+    r2 = (d ** 2).sum(axis=1)
+    phi = np.arctan2(d[:, 1], d[:, 0])
+    m4 = np.sum(r2 ** 2 * np.exp(4j * phi))
+    if abs(m4) < 1e-18:
+        return fallback
+    return float((np.angle(m4) - math.pi) / 4.0)
+
+
+def _wrap(angle: float, half_period: float) -> float:
+    """Wrap ``angle`` into (-half_period, half_period]."""
+    period = 2.0 * half_period
+    a = math.fmod(angle + half_period, period)
+    if a <= 0.0:
+        a += period
+    return a - half_period
