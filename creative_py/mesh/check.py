@@ -1,0 +1,227 @@
+"""Check a tool's written files: the checker the tool-creation tests run on every tool.
+
+It reads the files back (nothing is taken from memory): the STL must be one watertight
+shell whose volume equals ``spec_volume``; URDF and SDF must name every file they use and
+carry the spec's mass and a physically valid inertia tensor; the .scad, rendered by the
+``openscad`` program, must give the same solid as the STL (volume and symmetric
+difference). Loading into pybullet is the simulator's business and is tested there.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import tempfile
+import time
+import xml.etree.ElementTree as ET
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import manifold3d
+import numpy as np
+import trimesh
+
+from creative_py.mesh.export import ToolFiles, read_tool_files
+from creative_py.mesh.spec import spec_mass, spec_volume
+from creative_py.mesh.tolerances import (MASS_RTOL, MM_PER_M, OPENSCAD_TIMEOUT_S,
+                                         SCAD_MISMATCH_RTOL, SCAD_VOLUME_RTOL, STL_VOLUME_RTOL)
+
+MM3_PER_M3 = MM_PER_M**3
+
+
+@dataclass(frozen=True)
+class ToolCheck:
+    """What the files of one tool were found to be. Volumes in m^3, masses in kg.
+
+    ``problems`` lists every failed check in words; ``ok`` is true when it is empty.
+    The ``scad_*`` fields are None when OpenSCAD was not run.
+    """
+
+    name: str
+    stl_watertight: bool
+    stl_shells: int
+    stl_volume: float
+    spec_volume: float
+    stl_volume_rel_err: float
+    urdf_mass: float | None
+    sdf_mass: float | None
+    inertia_valid: bool
+    fits_build_volume: bool
+    scad_volume: float | None = None
+    scad_volume_rel_err: float | None = None
+    scad_mismatch_rel: float | None = None
+    scad_seconds: float | None = None
+    problems: tuple[str, ...] = field(default=())
+
+    @property
+    def ok(self) -> bool:
+        """Return whether every check passed."""
+        return not self.problems
+
+
+def _load_mm_mesh(path: Path) -> trimesh.Trimesh:
+    mesh = trimesh.load_mesh(path, file_type="stl", process=True)
+    mesh.merge_vertices()
+    return mesh
+
+
+def _manifold(mesh: trimesh.Trimesh) -> manifold3d.Manifold:
+    return manifold3d.Manifold(manifold3d.Mesh(
+        vert_properties=np.asarray(mesh.vertices, dtype=np.float32),
+        tri_verts=np.asarray(mesh.faces, dtype=np.uint32)))
+
+
+def _inertia_problems(tensor: np.ndarray) -> list[str]:
+    if not np.allclose(tensor, tensor.T, rtol=0, atol=1e-12 * np.abs(tensor).max()):
+        return ["inertia tensor is not symmetric"]
+    moments = np.linalg.eigvalsh(tensor)
+    if moments.min() <= 0:
+        return [f"inertia tensor is not positive definite (principal moments {moments})"]
+    a, b, c = sorted(moments)
+    if a + b < c * (1 - 1e-9):
+        return [f"principal moments {moments} violate the triangle inequality"]
+    return []
+
+
+def _urdf_mass_inertia(path: Path) -> tuple[float, np.ndarray, list[str]]:
+    root = ET.parse(path).getroot()
+    links = root.findall("link")
+    if len(links) != 1:
+        raise ValueError(f"{path}: expected one <link>, found {len(links)}")
+    inertial = links[0].find("inertial")
+    mass = float(inertial.find("mass").get("value"))
+    i = {k: float(v) for k, v in inertial.find("inertia").attrib.items()}
+    tensor = np.array([[i["ixx"], i["ixy"], i["ixz"]], [i["ixy"], i["iyy"], i["iyz"]],
+                       [i["ixz"], i["iyz"], i["izz"]]])
+    meshes = [m.get("filename") for m in root.iter("mesh")]
+    return mass, tensor, meshes
+
+
+def _sdf_mass(path: Path) -> tuple[float, list[str]]:
+    root = ET.parse(path).getroot()
+    masses = root.findall("./model/link/inertial/mass")
+    if len(masses) != 1:
+        raise ValueError(f"{path}: expected one model/link/inertial/mass, found {len(masses)}")
+    meshes = [u.text for u in root.iter("uri")]
+    return float(masses[0].text), meshes
+
+
+def render_scad(scad: Path, out_stl: Path, *, openscad: str = "openscad") -> float:
+    """Render a .scad file to STL with the ``openscad`` program; return the seconds taken.
+
+    Raises
+    ------
+    FileNotFoundError
+        The program is not installed.
+    RuntimeError
+        OpenSCAD failed; the message carries its error output.
+    """
+    exe = shutil.which(openscad)
+    if exe is None:
+        raise FileNotFoundError(f"{openscad}: program not found (install the openscad package)")
+    start = time.perf_counter()
+    done = subprocess.run([exe, "-o", str(out_stl), str(scad)], capture_output=True, text=True,
+                          timeout=OPENSCAD_TIMEOUT_S, check=False)
+    seconds = time.perf_counter() - start
+    if done.returncode != 0 or not out_stl.exists():
+        raise RuntimeError(f"{scad}: openscad failed (exit {done.returncode}): "
+                           f"{done.stderr.strip()[-2000:]}")
+    return seconds
+
+
+def check_tool_files(files: ToolFiles | Path | str, *, openscad: bool = True,
+                     openscad_program: str = "openscad") -> ToolCheck:
+    """Check the files of one tool and return a report.
+
+    Parameters
+    ----------
+    files : ToolFiles or path
+        What :func:`~creative_py.mesh.export.write_tool_files` returned, or the tool's
+        folder (read through its manifest).
+    openscad : bool
+        Render the .scad with OpenSCAD and compare it with the STL (0.04-0.5 s).
+    openscad_program : str
+        Name or path of the OpenSCAD program.
+
+    Returns
+    -------
+    ToolCheck
+        Volumes, masses, the OpenSCAD agreement and the list of problems found.
+    """
+    if not isinstance(files, ToolFiles):
+        files = read_tool_files(files)
+    spec = files.spec
+    problems: list[str] = []
+    for path in files.paths():
+        if path == files.png and not path.exists():
+            problems.append(f"{path}: picture missing")
+        elif not path.is_file():
+            problems.append(f"{path}: file missing")
+    if problems:
+        return ToolCheck(spec.name, False, 0, 0.0, spec_volume(spec), 1.0, None, None, False,
+                         files.fits_build_volume, problems=tuple(problems))
+
+    stl = _load_mm_mesh(files.stl)
+    expected_volume = spec_volume(spec)
+    stl_volume = float(stl.volume) / MM3_PER_M3
+    stl_err = abs(stl_volume - expected_volume) / expected_volume
+    shells = int(stl.body_count)
+    if not stl.is_watertight:
+        problems.append(f"{files.stl}: not watertight")
+    if shells != 1:
+        problems.append(f"{files.stl}: {shells} shells, expected one")
+    if stl_err > STL_VOLUME_RTOL:
+        problems.append(f"{files.stl}: volume {stl_volume:.6g} m^3 differs from spec_volume "
+                        f"{expected_volume:.6g} m^3 by {stl_err:.2%}")
+
+    mass = spec_mass(spec)
+    urdf_mass = sdf_mass = None
+    inertia_problems = ["not read"]
+    meshes: list[str] = []
+    try:
+        urdf_mass, tensor, urdf_meshes = _urdf_mass_inertia(files.urdf)
+        inertia_problems = _inertia_problems(tensor)
+        meshes += urdf_meshes
+    except (ET.ParseError, AttributeError, KeyError, TypeError, ValueError) as exc:
+        problems.append(f"{files.urdf}: unreadable link description ({exc!r})")
+    try:
+        sdf_mass, sdf_meshes = _sdf_mass(files.sdf)
+        meshes += sdf_meshes
+    except (ET.ParseError, AttributeError, TypeError, ValueError) as exc:
+        problems.append(f"{files.sdf}: unreadable model description ({exc!r})")
+    for label, value in (("URDF", urdf_mass), ("SDF", sdf_mass)):
+        if value is not None and abs(value - mass) > MASS_RTOL * mass:
+            problems.append(f"{label} mass {value} kg differs from spec_mass {mass} kg")
+    if urdf_mass is not None:
+        problems += [f"{files.urdf}: {p}" for p in inertia_problems]
+    for name in meshes:
+        if not (name and (files.directory / name).is_file()):
+            problems.append(f"mesh {name!r} referenced by URDF/SDF is missing")
+
+    report = dict(name=spec.name, stl_watertight=bool(stl.is_watertight), stl_shells=shells,
+                  stl_volume=stl_volume, spec_volume=expected_volume,
+                  stl_volume_rel_err=stl_err, urdf_mass=urdf_mass, sdf_mass=sdf_mass,
+                  inertia_valid=not inertia_problems,
+                  fits_build_volume=files.fits_build_volume)
+    if openscad:
+        with tempfile.TemporaryDirectory(prefix="creative_scad_") as tmp:
+            out = Path(tmp) / "scad.stl"
+            try:
+                seconds = render_scad(files.scad, out, openscad=openscad_program)
+            except (FileNotFoundError, RuntimeError, subprocess.TimeoutExpired) as exc:
+                problems.append(str(exc))
+            else:
+                scad_mesh = _load_mm_mesh(out)
+                scad_volume = float(scad_mesh.volume) / MM3_PER_M3
+                scad_err = abs(scad_volume - stl_volume) / stl_volume
+                a, b = _manifold(stl), _manifold(scad_mesh)
+                mismatch = ((a - b).volume() + (b - a).volume()) / MM3_PER_M3 / stl_volume
+                report.update(scad_volume=scad_volume, scad_volume_rel_err=scad_err,
+                              scad_mismatch_rel=mismatch, scad_seconds=seconds)
+                if scad_err > SCAD_VOLUME_RTOL:
+                    problems.append(f"{files.scad}: OpenSCAD volume {scad_volume:.6g} m^3 "
+                                    f"differs from the STL's by {scad_err:.2%}")
+                if mismatch > SCAD_MISMATCH_RTOL:
+                    problems.append(f"{files.scad}: OpenSCAD solid and STL differ by "
+                                    f"{mismatch:.2%} of the volume (wrong shape or place)")
+    return ToolCheck(**report, problems=tuple(problems))

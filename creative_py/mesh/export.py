@@ -1,0 +1,236 @@
+"""Write a sized tool spec as files: URDF, SDF, OpenSCAD, STL, a picture and a manifest.
+
+``write_tool_files(spec, out_dir)`` creates the folder ``out_dir/<name>/`` holding
+
+==================  =====================================================================
+``<name>.urdf``     one link, tool frame, metres; primitives, mass and full inertia
+``<name>.sdf``      the same link as an SDF 1.6 model
+``<name>.scad``     parametric OpenSCAD model, millimetres
+``<name>.stl``      the printable solid (manifold3d union of the parts), millimetres
+``<name>.png``      shaded 3D view and dimensioned drawing
+``<name>.json``     manifest: spec, mass properties, printability, file names
+``<name>_hull<i>.obj``  convex-hull parts (the wedge's prism) in metres, for URDF/SDF
+==================  =====================================================================
+
+The folder appears complete or not at all: everything is written into a hidden temporary
+folder inside ``out_dir`` and renamed into place at the end; on any error the temporary
+folder is removed and nothing else changes.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+import logging
+import os
+import shutil
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+
+from creative_py.mesh.link import hull_meshes, tool_link
+from creative_py.mesh.printability import (PrintSettings, Printability, check_min_feature,
+                                           printability)
+from creative_py.mesh.render import render_png
+from creative_py.mesh.scad import scad_text
+from creative_py.mesh.sdf import sdf_text
+from creative_py.mesh.solid import MassProperties, mass_properties, mesh_from_solid, tool_solid
+from creative_py.mesh.spec import ToolSpec, spec_from_dict, spec_volume
+from creative_py.mesh.tolerances import MM_PER_M
+from creative_py.mesh.urdf import urdf_text
+
+log = logging.getLogger(__name__)
+
+MANIFEST_VERSION = 1
+FOLDER_MODE = 0o755
+"""Permissions of a tool folder (``mkdtemp`` makes it private)."""
+
+
+@dataclass(frozen=True)
+class ToolFiles:
+    """The files written for one tool and the figures computed on the way.
+
+    Attributes
+    ----------
+    spec : HookSpec or BlockSpec
+        The tool.
+    directory : pathlib.Path
+        The tool's folder, ``out_dir/<name>``.
+    urdf, sdf, scad, stl, png, manifest : pathlib.Path
+        The files (STL and SCAD in millimetres; URDF, SDF and OBJ in metres).
+    meshes : tuple of pathlib.Path
+        OBJ files (metres) the URDF and SDF refer to; empty for hooks, boxes, cylinders.
+    mass : MassProperties
+        Mass, volume, centre of mass and inertia written into URDF and SDF.
+    printability : Printability
+        The build-volume verdict (also in the .scad header and the manifest).
+    """
+
+    spec: ToolSpec
+    directory: Path
+    urdf: Path
+    sdf: Path
+    scad: Path
+    stl: Path
+    png: Path
+    manifest: Path
+    meshes: tuple[Path, ...]
+    mass: MassProperties
+    printability: Printability
+
+    @property
+    def fits_build_volume(self) -> bool:
+        """Return whether the part fits the printer's build volume."""
+        return self.printability.fits_build_volume
+
+    def paths(self) -> tuple[Path, ...]:
+        """Return every file of the tool."""
+        return (self.urdf, self.sdf, self.scad, self.stl, self.png, self.manifest) + self.meshes
+
+
+def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
+              names: dict[str, object]) -> dict:
+    return {
+        "manifest_version": MANIFEST_VERSION,
+        "name": spec.name,
+        "units": {"length": "m (STL and SCAD: mm)", "mass": "kg", "inertia": "kg m^2",
+                  "angle": "deg"},
+        "spec": dataclasses.asdict(spec),
+        "spec_volume_m3": spec_volume(spec),
+        "mass_kg": mass.mass,
+        "mesh_volume_m3": mass.volume,
+        "center_of_mass_m": list(mass.center_of_mass),
+        "inertia_kg_m2": [list(row) for row in mass.inertia],
+        "printability": dataclasses.asdict(verdict),
+        "files": names,
+    }
+
+
+def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: bool,
+               ) -> tuple[MassProperties, Printability]:
+    solid = tool_solid(spec)
+    mesh = mesh_from_solid(solid)
+    mass = mass_properties(spec, mesh)
+    verdict = printability(spec, mesh, settings)
+    link = tool_link(spec, mass)
+    name = spec.name
+    (folder / f"{name}.urdf").write_text(urdf_text(link), encoding="utf-8")
+    (folder / f"{name}.sdf").write_text(sdf_text(link), encoding="utf-8")
+    (folder / f"{name}.scad").write_text(scad_text(spec, verdict), encoding="utf-8")
+    (folder / f"{name}.stl").write_bytes(mesh_from_solid(solid, MM_PER_M).export(file_type="stl"))
+    hulls = hull_meshes(spec)
+    for file_name, hull in hulls.items():
+        (folder / file_name).write_text(hull.export(file_type="obj", include_normals=False),
+                                        encoding="utf-8")
+    if picture:
+        render_png(spec, mesh, mass, verdict, folder / f"{name}.png")
+    names = {"urdf": f"{name}.urdf", "sdf": f"{name}.sdf", "scad": f"{name}.scad",
+             "stl": f"{name}.stl", "png": f"{name}.png" if picture else None,
+             "meshes": sorted(hulls)}
+    manifest = _manifest(spec, mass, verdict, names)
+    (folder / f"{name}.json").write_text(json.dumps(manifest, indent=2) + "\n", encoding="utf-8")
+    return mass, verdict
+
+
+def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
+                  verdict: Printability) -> ToolFiles:
+    """Return the :class:`ToolFiles` naming a tool's files inside ``directory``."""
+    name = spec.name
+    return ToolFiles(
+        spec=spec, directory=directory,
+        urdf=directory / f"{name}.urdf", sdf=directory / f"{name}.sdf",
+        scad=directory / f"{name}.scad", stl=directory / f"{name}.stl",
+        png=directory / f"{name}.png", manifest=directory / f"{name}.json",
+        meshes=tuple(directory / f for f in sorted(hull_meshes(spec))),
+        mass=mass, printability=verdict)
+
+
+def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
+                     settings: PrintSettings = PrintSettings(), overwrite: bool = False,
+                     picture: bool = True) -> ToolFiles:
+    """Write a tool's URDF, SDF, OpenSCAD, STL, picture and manifest into ``out_dir/<name>/``.
+
+    Parameters
+    ----------
+    spec : HookSpec or BlockSpec
+        The sized tool (metres).
+    out_dir : path
+        Parent folder (created if missing); the tool gets its own folder inside it.
+    settings : PrintSettings
+        The printer: minimum feature (refused below it) and build volume (flagged).
+    overwrite : bool
+        Replace an existing ``out_dir/<name>/``; otherwise that is a ``FileExistsError``.
+    picture : bool
+        Render the PNG (about 0.5 s); without it ``png`` names a file that is absent.
+
+    Returns
+    -------
+    ToolFiles
+        The paths, the mass properties and the printability verdict.
+
+    Raises
+    ------
+    ValueError
+        A dimension below ``settings.min_feature`` or a spec whose parts do not make one
+        solid; the message names the tool and the field.
+    FileExistsError
+        ``out_dir/<name>`` exists and ``overwrite`` is false.
+    """
+    check_min_feature(spec, settings)
+    out_dir = Path(out_dir)
+    out_dir.mkdir(parents=True, exist_ok=True)
+    target = out_dir / spec.name
+    if target.exists() and not overwrite:
+        raise FileExistsError(f"{target}: tool folder exists (pass overwrite=True to replace it)")
+    tmp = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".tmp", dir=out_dir))
+    tmp.chmod(FOLDER_MODE)
+    old: Path | None = None
+    try:
+        mass, verdict = _write_all(spec, tmp, settings, picture)
+        if target.exists():
+            old = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".old", dir=out_dir))
+            os.rename(target, old / spec.name)
+        os.rename(tmp, target)
+    except BaseException:
+        shutil.rmtree(tmp, ignore_errors=True)
+        if old is not None:
+            if not target.exists():
+                os.rename(old / spec.name, target)
+            shutil.rmtree(old, ignore_errors=True)
+        raise
+    if old is not None:
+        shutil.rmtree(old, ignore_errors=True)
+    files = tool_files_in(target, spec, mass, verdict)
+    if not verdict.fits_build_volume:
+        log.warning("%s: %s", spec.name, verdict.reason)
+    log.info("wrote tool %s to %s (%s)", spec.name, target, verdict.summary())
+    return files
+
+
+def read_tool_files(directory: Path | str) -> ToolFiles:
+    """Return the :class:`ToolFiles` of a tool folder written by :func:`write_tool_files`.
+
+    Raises
+    ------
+    ValueError
+        The folder has no readable manifest, or the manifest is malformed.
+    """
+    directory = Path(directory)
+    manifests = sorted(directory.glob("*.json"))
+    if len(manifests) != 1:
+        raise ValueError(f"{directory}: expected exactly one <name>.json manifest, "
+                         f"found {len(manifests)}")
+    source = str(manifests[0])
+    try:
+        data = json.loads(manifests[0].read_text(encoding="utf-8"))
+        spec = spec_from_dict(data["spec"], source=source)
+        mass = MassProperties(
+            mass=float(data["mass_kg"]), volume=float(data["mesh_volume_m3"]),
+            center_of_mass=tuple(data["center_of_mass_m"]),
+            inertia=tuple(tuple(r) for r in data["inertia_kg_m2"]))
+        p = data["printability"]
+        verdict = Printability(bool(p["fits_build_volume"]), tuple(p["extent"]),
+                               p["up_axis"], p["yaw_deg"], p["reason"])
+    except (KeyError, TypeError, json.JSONDecodeError) as exc:
+        raise ValueError(f"{source}: malformed tool manifest ({exc!r})") from None
+    return tool_files_in(directory, spec, mass, verdict)

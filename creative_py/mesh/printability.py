@@ -1,0 +1,144 @@
+"""Can a hobby FDM printer make this tool? Minimum feature size and build-volume fit.
+
+A dimension below :data:`~creative_py.mesh.tolerances.MIN_FEATURE` makes the spec
+unprintable and is refused with a ``ValueError`` naming the field. A part that does not
+fit the build volume in any flat placement (any of its three axes up, any yaw on the bed,
+diagonals included) is *not* refused: the files are still written and the result says
+``fits_build_volume = False`` with the reason (the design must be split into pieces or
+printed on a larger machine). The .scad file repeats the verdict in a comment.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import trimesh
+
+from creative_py.mesh.spec import BlockSpec, HookSpec, ToolSpec
+from creative_py.mesh.tolerances import (BUILD_VOLUME, FIT_MARGIN, FIT_YAW_STEP_DEG,
+                                         MIN_FEATURE, MM_PER_M)
+
+Vec3 = tuple[float, float, float]
+
+
+@dataclass(frozen=True)
+class PrintSettings:
+    """The printer a tool is checked against.
+
+    Attributes
+    ----------
+    min_feature : float
+        Smallest printable dimension of any part, metres.
+    build_volume : tuple of float
+        Build volume along the printer's x, y, z, metres.
+    """
+
+    min_feature: float = MIN_FEATURE
+    build_volume: Vec3 = BUILD_VOLUME
+
+
+@dataclass(frozen=True)
+class Printability:
+    """The verdict on printing one tool.
+
+    Attributes
+    ----------
+    fits_build_volume : bool
+        Whether the part fits the build volume lying on one of its faces.
+    extent : tuple of float
+        Axis-aligned size of the part in the tool frame (x, y, z), metres.
+    up_axis : str or None
+        Tool-frame axis pointing up on the bed ("z", "x" or "y") when it fits.
+    yaw_deg : float or None
+        Rotation of the part about the bed's normal when it fits, degrees
+        (0: the part's first horizontal axis along the printer's x).
+    reason : str
+        Why it does not fit (empty when it does).
+    """
+
+    fits_build_volume: bool
+    extent: Vec3
+    up_axis: str | None
+    yaw_deg: float | None
+    reason: str
+
+    def summary(self) -> str:
+        """Return a one-line human-readable verdict (millimetres)."""
+        ex = " x ".join(f"{v * MM_PER_M:.1f}" for v in self.extent)
+        if self.fits_build_volume:
+            return (f"fits the build volume: {ex} mm, lying with its {self.up_axis} axis up, "
+                    f"turned {self.yaw_deg:g} deg on the bed")
+        return f"DOES NOT FIT the build volume: {self.reason}"
+
+
+def feature_dimensions(spec: ToolSpec) -> dict[str, float]:
+    """Return the spec's printable dimensions by field name, metres."""
+    if isinstance(spec, HookSpec):
+        fields = ["handle_length", "handle_width"]
+        if not spec.is_stick:
+            fields += ["hook_length", "hook_width"]
+    elif isinstance(spec, BlockSpec):
+        fields = ["length", "width", "height"]
+    else:
+        raise TypeError(f"expected a HookSpec or BlockSpec, got {type(spec).__name__}")
+    return {f: getattr(spec, f) for f in fields}
+
+
+def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings()) -> None:
+    """Raise ``ValueError`` naming the first dimension a hobby printer cannot print.
+
+    Parameters
+    ----------
+    spec : HookSpec or BlockSpec
+        The tool.
+    settings : PrintSettings
+        The printer (``min_feature`` in metres).
+    """
+    for field_name, value in feature_dimensions(spec).items():
+        if not (isinstance(value, (int, float)) and np.isfinite(value) and value > 0):
+            raise ValueError(f"{spec.name}: {field_name} must be a positive number of metres, "
+                             f"got {value!r}")
+        if value < settings.min_feature:
+            raise ValueError(
+                f"{spec.name}: {field_name} is {value * MM_PER_M:.2f} mm, below the "
+                f"{settings.min_feature * MM_PER_M:.2f} mm minimum feature a hobby FDM "
+                "printer can print")
+
+
+def printability(spec: ToolSpec, mesh: trimesh.Trimesh,
+                 settings: PrintSettings = PrintSettings()) -> Printability:
+    """Return whether the tool's mesh fits the build volume, and how to place it.
+
+    Parameters
+    ----------
+    spec : HookSpec or BlockSpec
+        The tool (its minimum features are checked first; see :func:`check_min_feature`).
+    mesh : trimesh.Trimesh
+        The tool's solid in the tool frame, metres.
+    settings : PrintSettings
+        The printer.
+    """
+    check_min_feature(spec, settings)
+    points = np.asarray(mesh.convex_hull.vertices, dtype=float)
+    extent = tuple(float(v) for v in points.max(axis=0) - points.min(axis=0))
+    bx, by, bz = (b - 2 * FIT_MARGIN for b in settings.build_volume)
+    yaws = np.radians(np.arange(0.0, 180.0, FIT_YAW_STEP_DEG))
+    cos, sin = np.cos(yaws)[:, None], np.sin(yaws)[:, None]
+    for up, (i, j, k) in (("z", (0, 1, 2)), ("x", (1, 2, 0)), ("y", (2, 0, 1))):
+        if extent[k] > bz:
+            continue
+        u, v = points[:, i][None, :], points[:, j][None, :]
+        ru, rv = u * cos - v * sin, u * sin + v * cos
+        du = ru.max(axis=1) - ru.min(axis=1)
+        dv = rv.max(axis=1) - rv.min(axis=1)
+        ok = np.flatnonzero((du <= bx) & (dv <= by))
+        if ok.size:
+            yaw = float(np.degrees(yaws[ok[0]]))
+            return Printability(True, extent, up, round(yaw, 6), "")  # type: ignore[arg-type]
+    size = " x ".join(f"{v * MM_PER_M:.1f}" for v in extent)
+    bed = " x ".join(f"{v * MM_PER_M:.0f}" for v in settings.build_volume)
+    reason = (f"the part is {size} mm and fits no flat or diagonal placement in the {bed} mm "
+              "build volume; split it into pieces (e.g. cut the handle and join it with a "
+              "dowel) or print it on a larger machine")
+    return Printability(False, extent, None, None, reason)  # type: ignore[arg-type]
