@@ -1,0 +1,401 @@
+"""The simulated Baxter: loading, right-arm IK, guarded position control, grasping.
+
+The URDF comes from the ``example-robot-data`` package; its ``package://`` mesh paths
+are rewritten once into a cached copy (with or without ``<visual>`` elements). The
+base frame of the robot is the world frame (the floor is at z = -0.926 m).
+
+IK is solved in a second DIRECT client holding a kinematics-only Baxter, so trying a
+target never disturbs the physics. The tool frame is the link ``right_gripper`` (the
+point between the finger tips; its +z axis points out of the gripper).
+
+Moves are Cartesian straight lines sampled every ``steps_per_waypoint`` physics steps;
+each waypoint is an IK solution seeded from the previous one, sent as position targets
+at the URDF effort limits. A move ends ``blocked`` when the gripper lags its target by
+more than ``max_tracking_error`` (it hit something), ``unreachable`` when IK cannot
+reach a waypoint, ``invalid`` when the physics produces NaN.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import math
+import re
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal, Sequence
+
+import numpy as np
+import pybullet as pb
+
+from creative_py.sim.core import Point, Pose, Quat, Sim
+
+log = logging.getLogger(__name__)
+
+RIGHT_ARM = ("right_s0", "right_s1", "right_e0", "right_e1", "right_w0", "right_w1",
+             "right_w2")
+"""The seven joints of the right arm, shoulder to wrist."""
+
+LEFT_ARM = tuple(n.replace("right", "left") for n in RIGHT_ARM)
+
+TUCKED_LEFT = (0.6, -1.0, -0.3, 2.2, 0.0, 0.4, 0.0)
+"""Left-arm joint angles (rad) that keep the idle arm out of the workspace."""
+
+READY_RIGHT = (0.3, -0.6, 0.4, 1.6, -0.3, 0.6, 0.0)
+"""Right-arm joint angles (rad) of the start posture, gripper in front of the robot."""
+
+EE_LINK = "right_gripper"
+
+Status = Literal["ok", "blocked", "unreachable", "invalid"]
+
+
+def baxter_share_dir() -> Path:
+    """Return ``.../cmeel.prefix/share`` of the installed example-robot-data package."""
+    import site
+    import sys
+
+    for base in map(Path, [*site.getsitepackages(), *sys.path]):
+        share = base / "cmeel.prefix" / "share"
+        if (share / "example-robot-data" / "robots" / "baxter_description").is_dir():
+            return share
+    raise FileNotFoundError("the Baxter URDF needs the package example-robot-data "
+                            "(pip install --no-deps example-robot-data)")
+
+
+def baxter_urdf(visuals: bool = False) -> Path:
+    """Return a cached Baxter URDF with absolute mesh paths, with or without visuals."""
+    share = baxter_share_dir()
+    src = share / "example-robot-data" / "robots" / "baxter_description" / "urdf" / "baxter.urdf"
+    text = src.read_text()
+    key = hashlib.sha1((str(src) + text + str(visuals)).encode()).hexdigest()[:12]
+    out = Path(tempfile.gettempdir()) / f"creative_py_baxter_{key}.urdf"
+    if not out.is_file():
+        text = text.replace("package://", str(share) + "/")
+        if not visuals:
+            text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
+        tmp = out.with_suffix(f".{id(text)}.tmp")
+        tmp.write_text(text)
+        tmp.replace(out)
+    return out
+
+
+@dataclass(frozen=True)
+class BaxterConfig:
+    """Settings of the robot model and its controller.
+
+    Attributes
+    ----------
+    visuals : bool
+        Load the visual meshes (slow, 1.2 s) so cameras see the robot.
+    speed : float
+        Default Cartesian speed of the gripper, m/s.
+    steps_per_waypoint : int
+        Physics steps between two IK waypoints.
+    max_tracking_error : float
+        Gripper lag (m) beyond which a move stops as ``blocked``.
+    ik_position_tolerance : float
+        Position error (m) an IK solution must reach to count as reachable.
+    ik_orientation_tolerance : float
+        Orientation error (rad) an IK solution must reach.
+    grasp_max_force : float
+        Maximum force of the fixed grasp constraint, N.
+    settle_steps : int
+        Most physics steps spent at the end of a move waiting for the arm to converge.
+    """
+
+    visuals: bool = False
+    speed: float = 0.10
+    steps_per_waypoint: int = 4
+    max_tracking_error: float = 0.03
+    ik_position_tolerance: float = 0.002
+    ik_orientation_tolerance: float = 0.02
+    grasp_max_force: float = 500.0
+    settle_steps: int = 120
+
+
+@dataclass(frozen=True)
+class MoveResult:
+    """How a motion ended: ``status`` in ok/blocked/unreachable/invalid, and why."""
+
+    status: Status
+    reason: str = ""
+
+    @property
+    def ok(self) -> bool:
+        """Return whether the motion completed."""
+        return self.status == "ok"
+
+
+def quat_angle(q1: Sequence[float], q2: Sequence[float]) -> float:
+    """Return the rotation angle (rad) between two quaternions (x, y, z, w)."""
+    d = abs(float(np.dot(q1, q2)))
+    return 2.0 * math.acos(min(1.0, d))
+
+
+def rotation_vector(q_from: Sequence[float], q_to: Sequence[float]) -> np.ndarray:
+    """Return the rotation vector (axis * angle, rad, world frame) taking q_from to q_to."""
+    x, y, z, w = pb.multiplyTransforms((0, 0, 0), q_to, (0, 0, 0),
+                                       pb.invertTransform((0, 0, 0), q_from)[1])[1]
+    if w < 0:
+        x, y, z, w = -x, -y, -z, -w
+    s = math.sqrt(x * x + y * y + z * z)
+    if s < 1e-12:
+        return np.zeros(3)
+    angle = 2.0 * math.atan2(s, w)
+    return np.array([x, y, z]) * (angle / s)
+
+
+def slerp(q1: Sequence[float], q2: Sequence[float], t: float) -> Quat:
+    """Return the spherical interpolation between two quaternions at fraction t."""
+    a, b = np.asarray(q1, float), np.asarray(q2, float)
+    d = float(np.dot(a, b))
+    if d < 0:
+        b, d = -b, -d
+    if d > 0.9995:
+        q = a + t * (b - a)
+    else:
+        th = math.acos(d)
+        q = (math.sin((1 - t) * th) * a + math.sin(t * th) * b) / math.sin(th)
+    q = q / np.linalg.norm(q)
+    return tuple(float(v) for v in q)
+
+
+class _Model:
+    """A loaded Baxter in one client: joint tables and helpers."""
+
+    def __init__(self, client: int, urdf: Path) -> None:
+        self.client = client
+        self.body = pb.loadURDF(str(urdf), (0, 0, 0), (0, 0, 0, 1), useFixedBase=True,
+                                physicsClientId=client)
+        if self.body < 0:
+            raise RuntimeError(f"{urdf}: pybullet could not load the Baxter URDF")
+        self.joint: dict[str, int] = {}
+        self.link: dict[str, int] = {}
+        self.movable: list[int] = []
+        self.lower: list[float] = []
+        self.upper: list[float] = []
+        self.effort: dict[int, float] = {}
+        for j in range(pb.getNumJoints(self.body, physicsClientId=client)):
+            info = pb.getJointInfo(self.body, j, physicsClientId=client)
+            name = info[1].decode()
+            self.joint[name] = j
+            self.link[info[12].decode()] = j
+            if info[2] != pb.JOINT_FIXED:
+                self.movable.append(j)
+                self.lower.append(info[8])
+                self.upper.append(info[9])
+                self.effort[j] = info[10]
+        self.arm = [self.joint[n] for n in RIGHT_ARM]
+        self.left = [self.joint[n] for n in LEFT_ARM]
+        self.ee = self.link[EE_LINK]
+        self.arm_in_movable = [self.movable.index(j) for j in self.arm]
+
+    def reset(self, joints: Sequence[int], q: Sequence[float]) -> None:
+        for j, v in zip(joints, q):
+            pb.resetJointState(self.body, j, v, 0.0, physicsClientId=self.client)
+
+    def ee_pose(self) -> Pose:
+        st = pb.getLinkState(self.body, self.ee, computeForwardKinematics=True,
+                             physicsClientId=self.client)
+        return tuple(st[4]), tuple(st[5])
+
+    def arm_q(self) -> list[float]:
+        return [pb.getJointState(self.body, j, physicsClientId=self.client)[0]
+                for j in self.arm]
+
+
+class Baxter:
+    """A Baxter robot in a :class:`Sim`, with a private kinematics client for IK.
+
+    Parameters
+    ----------
+    sim : Sim
+        The physics client to load the robot into (base at the world origin).
+    config : BaxterConfig
+        Controller settings.
+    """
+
+    def __init__(self, sim: Sim, config: BaxterConfig = BaxterConfig()) -> None:
+        self.sim = sim
+        self.config = config
+        self.model = _Model(sim.client, baxter_urdf(config.visuals))
+        self.body = self.model.body
+        self._kin_client = pb.connect(pb.DIRECT)
+        self.kin = _Model(self._kin_client, baxter_urdf(False))
+        self.grasp_constraint: int | None = None
+        self.held: int | None = None
+        self.reset_posture(READY_RIGHT)
+
+    # ------------------------------------------------------------------ state
+    def reset_posture(self, right_q: Sequence[float]) -> None:
+        """Teleport the right arm to ``right_q`` (rad) and tuck the left arm; hold them."""
+        m = self.model
+        m.reset(m.arm, right_q)
+        m.reset(m.left, TUCKED_LEFT)
+        self._command(list(right_q))
+        pb.setJointMotorControlArray(m.body, m.left, pb.POSITION_CONTROL,
+                                     targetPositions=list(TUCKED_LEFT),
+                                     forces=[m.effort[j] for j in m.left],
+                                     physicsClientId=self.sim.client)
+
+    def arm_q(self) -> list[float]:
+        """Return the right-arm joint angles (rad)."""
+        return self.model.arm_q()
+
+    def gripper_pose(self) -> Pose:
+        """Return the world pose of ``right_gripper`` by forward kinematics (proprioception)."""
+        return self.model.ee_pose()
+
+    def _command(self, q: Sequence[float]) -> None:
+        m = self.model
+        pb.setJointMotorControlArray(m.body, m.arm, pb.POSITION_CONTROL,
+                                     targetPositions=list(q),
+                                     forces=[m.effort[j] for j in m.arm],
+                                     physicsClientId=self.sim.client)
+
+    # --------------------------------------------------------------------- IK
+    def solve_ik(self, target: Pose, seed: Sequence[float] | None = None,
+                 max_iterations: int = 150) -> list[float] | None:
+        """Return right-arm joint angles (rad) putting ``right_gripper`` at ``target``.
+
+        Damped least squares on the arm's 6 x 7 Jacobian (from pybullet, in the
+        kinematics client), started from ``seed`` (default: the current arm) and
+        clamped to the joint limits. Returns None unless the position error ends
+        under ``ik_position_tolerance`` (m) and the orientation error under
+        ``ik_orientation_tolerance`` (rad): the target is then unreachable from
+        this seed (out of reach, or a joint limit in the way).
+        """
+        k = self.kin
+        q = np.array(seed if seed is not None else self.arm_q(), dtype=float)
+        lo = np.array([k.lower[i] for i in k.arm_in_movable])
+        hi = np.array([k.upper[i] for i in k.arm_in_movable])
+        q = np.clip(q, lo, hi)
+        tpos = np.asarray(target[0], float)
+        tquat = target[1]
+        zeros = [0.0] * len(k.movable)
+        full = [0.0] * len(k.movable)
+        perr = oerr = math.inf
+        damping2 = 1e-4
+        for _ in range(max_iterations):
+            k.reset(k.arm, q)
+            pos, quat = k.ee_pose()
+            e_pos = tpos - np.asarray(pos)
+            e_rot = rotation_vector(quat, tquat)
+            perr, oerr = float(np.linalg.norm(e_pos)), float(np.linalg.norm(e_rot))
+            if perr < 1e-4 and oerr < 1e-3:
+                break
+            for i, v in zip(k.arm_in_movable, q):
+                full[i] = float(v)
+            lin, ang = pb.calculateJacobian(k.body, k.ee, (0, 0, 0), full, zeros, zeros,
+                                            physicsClientId=k.client)
+            jac = np.vstack([np.asarray(lin)[:, k.arm_in_movable],
+                             np.asarray(ang)[:, k.arm_in_movable]])
+            err = np.concatenate([e_pos, e_rot])
+            dq = jac.T @ np.linalg.solve(jac @ jac.T + damping2 * np.eye(6), err)
+            biggest = float(np.max(np.abs(dq)))
+            if biggest > 0.2:
+                dq *= 0.2 / biggest
+            q = np.clip(q + dq, lo, hi)
+        if perr > self.config.ik_position_tolerance or oerr > self.config.ik_orientation_tolerance:
+            return None
+        return [float(v) for v in q]
+
+    # ----------------------------------------------------------------- motion
+    def move_to(self, target: Pose, speed: float | None = None,
+                check: bool = True) -> MoveResult:
+        """Move the gripper in a straight line (slerped orientation) to ``target``.
+
+        Parameters
+        ----------
+        target : Pose
+            World pose of ``right_gripper``.
+        speed : float or None
+            Cartesian speed, m/s (default ``config.speed``). Pure rotations advance
+            at ``speed`` rad/s scaled by 1 m/rad... i.e. at 10 x speed rad/s.
+        check : bool
+            Apply the tracking-error guard.
+        """
+        cfg = self.config
+        speed = speed or cfg.speed
+        start_pos, start_quat = self.gripper_pose()
+        dist = math.dist(start_pos, target[0])
+        ang = quat_angle(start_quat, target[1])
+        step_len = speed * cfg.steps_per_waypoint * self.sim.physics.time_step
+        n = max(1, math.ceil(max(dist / step_len, ang / (10 * step_len))))
+        q = self.arm_q()
+        # Continue from the last commanded solution, if any, to avoid wrist flips.
+        for i in range(1, n + 1):
+            t = i / n
+            pos = tuple(a + t * (b - a) for a, b in zip(start_pos, target[0]))
+            quat = slerp(start_quat, target[1], t)
+            sol = self.solve_ik((pos, quat), seed=q)
+            if sol is None:
+                return MoveResult("unreachable", f"IK found no arm posture for gripper at "
+                                  f"({pos[0]:.3f}, {pos[1]:.3f}, {pos[2]:.3f}) m")
+            if max(abs(a - b) for a, b in zip(sol, q)) > 0.5:
+                return MoveResult("unreachable", "the arm would have to flip its posture "
+                                  f"(joint jump > 0.5 rad) near ({pos[0]:.3f}, {pos[1]:.3f}, "
+                                  f"{pos[2]:.3f}) m")
+            q = sol
+            self._command(q)
+            self.sim.step(cfg.steps_per_waypoint)
+            bad = self._check(pos, check)
+            if bad is not None:
+                return bad
+        for _ in range(cfg.settle_steps // cfg.steps_per_waypoint):
+            actual = self.gripper_pose()[0]
+            if math.dist(actual, target[0]) < 0.001:
+                break
+            self.sim.step(cfg.steps_per_waypoint)
+            bad = self._check(target[0], check)
+            if bad is not None:
+                return bad
+        return MoveResult("ok")
+
+    def _check(self, commanded: Point, check: bool) -> MoveResult | None:
+        actual = self.gripper_pose()[0]
+        if not all(math.isfinite(v) for v in actual):
+            return MoveResult("invalid", "the physics produced NaN in the arm's state")
+        if self.held is not None and not self.sim.body_is_sane(self.held):
+            return MoveResult("invalid", "the held tool left the scene (physics blow-up)")
+        err = math.dist(actual, commanded)
+        if check and err > self.config.max_tracking_error:
+            return MoveResult("blocked", f"gripper lagged its target by {err * 100:.1f} cm "
+                              f"at ({commanded[0]:.3f}, {commanded[1]:.3f}, "
+                              f"{commanded[2]:.3f}) m: something is in the way")
+        return None
+
+    # ----------------------------------------------------------------- grasp
+    def grasp(self, body: int, body_in_gripper: Pose) -> None:
+        """Fix ``body`` to the gripper with ``body_in_gripper`` (its COM frame in the gripper frame).
+
+        Collisions between the body and every robot link are switched off.
+        """
+        c = self.sim.client
+        for link in range(-1, pb.getNumJoints(self.body, physicsClientId=c)):
+            for blink in range(-1, pb.getNumJoints(body, physicsClientId=c)):
+                pb.setCollisionFilterPair(self.body, body, link, blink, 0, physicsClientId=c)
+        inv = pb.invertTransform(*body_in_gripper)
+        self.grasp_constraint = pb.createConstraint(
+            self.body, self.model.ee, body, -1, pb.JOINT_FIXED, (0, 0, 0),
+            parentFramePosition=body_in_gripper[0], childFramePosition=(0, 0, 0),
+            parentFrameOrientation=body_in_gripper[1], childFrameOrientation=(0, 0, 0, 1),
+            physicsClientId=c)
+        del inv
+        pb.changeConstraint(self.grasp_constraint, maxForce=self.config.grasp_max_force,
+                            physicsClientId=c)
+        self.held = body
+
+    def release(self) -> None:
+        """Remove the grasp constraint, if any."""
+        if self.grasp_constraint is not None:
+            pb.removeConstraint(self.grasp_constraint, physicsClientId=self.sim.client)
+        self.grasp_constraint = None
+        self.held = None
+
+    def close(self) -> None:
+        """Disconnect the kinematics client (the physics client belongs to the Sim)."""
+        if self._kin_client >= 0:
+            pb.disconnect(physicsClientId=self._kin_client)
+            self._kin_client = -1

@@ -1,0 +1,133 @@
+"""The simulator: one pybullet physics client owned by a :class:`Sim` object.
+
+No module globals hold clients; every pybullet call passes ``physicsClientId``.
+Poses are ``(point, quat)`` with points in metres (world frame) and quaternions
+``(x, y, z, w)`` as pybullet has them.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+import os
+from contextlib import contextmanager
+from typing import Iterator
+
+import pybullet as pb
+
+from creative_py.world import PhysicsSettings
+
+log = logging.getLogger(__name__)
+
+Point = tuple[float, float, float]
+Quat = tuple[float, float, float, float]
+Pose = tuple[Point, Quat]
+
+
+def display_available() -> bool:
+    """Return whether a GUI window can be opened (an X display is set)."""
+    return bool(os.environ.get("DISPLAY"))
+
+
+class Sim:
+    """A pybullet physics client with a world's settings.
+
+    Parameters
+    ----------
+    physics : PhysicsSettings
+        Time step (s), solver iterations and gravity (m/s^2).
+    gui : bool
+        Open the GUI if a display exists; otherwise (and by default) DIRECT.
+
+    Use as a context manager, or call :meth:`close`.
+    """
+
+    def __init__(self, physics: PhysicsSettings, gui: bool = False) -> None:
+        self.physics = physics
+        mode = pb.DIRECT
+        if gui:
+            if display_available():
+                mode = pb.GUI
+            else:
+                log.warning("no display: running the simulator without a GUI")
+        self.gui = mode == pb.GUI
+        self.client = pb.connect(mode)
+        if self.client < 0:
+            raise RuntimeError("pybullet: could not connect a physics client")
+        self.steps = 0
+        self.configure()
+
+    def configure(self) -> None:
+        """(Re)apply the physics settings to the client."""
+        c = self.client
+        pb.setGravity(*self.physics.gravity, physicsClientId=c)
+        pb.setPhysicsEngineParameter(fixedTimeStep=self.physics.time_step,
+                                     numSolverIterations=self.physics.solver_iterations,
+                                     deterministicOverlappingPairs=1,
+                                     physicsClientId=c)
+        if self.gui:
+            pb.configureDebugVisualizer(pb.COV_ENABLE_GUI, 0, physicsClientId=c)
+
+    @property
+    def time(self) -> float:
+        """Return the simulated time since the client started, seconds."""
+        return self.steps * self.physics.time_step
+
+    def step(self, n: int = 1) -> None:
+        """Advance the physics by ``n`` time steps."""
+        for _ in range(n):
+            pb.stepSimulation(physicsClientId=self.client)
+        self.steps += n
+
+    def pose(self, body: int, link: int = -1) -> Pose:
+        """Return the world pose of a body's base (link -1) or of one of its links."""
+        if link < 0:
+            pos, quat = pb.getBasePositionAndOrientation(body, physicsClientId=self.client)
+        else:
+            state = pb.getLinkState(body, link, computeForwardKinematics=True,
+                                    physicsClientId=self.client)
+            pos, quat = state[4], state[5]
+        return tuple(pos), tuple(quat)
+
+    def body_is_sane(self, body: int, bound: float = 20.0) -> bool:
+        """Return whether a body's base pose is finite and within ``bound`` metres."""
+        pos, quat = self.pose(body)
+        return all(math.isfinite(v) for v in (*pos, *quat)) and max(abs(v) for v in pos) < bound
+
+    def save_state(self) -> int:
+        """Save the whole physics state in memory; return its id."""
+        return pb.saveState(physicsClientId=self.client)
+
+    def restore_state(self, state_id: int) -> None:
+        """Restore a state saved with :meth:`save_state`."""
+        pb.restoreState(stateId=state_id, physicsClientId=self.client)
+
+    def remove_state(self, state_id: int) -> None:
+        """Forget a saved state."""
+        pb.removeState(state_id, physicsClientId=self.client)
+
+    @contextmanager
+    def saved(self) -> Iterator[int]:
+        """Save the state on entry and restore it on exit (a try that leaves no trace)."""
+        state = self.save_state()
+        steps = self.steps
+        try:
+            yield state
+        finally:
+            self.restore_state(state)
+            self.remove_state(state)
+            self.steps = steps
+
+    def close(self) -> None:
+        """Disconnect the client (idempotent)."""
+        if self.client >= 0:
+            try:
+                pb.disconnect(physicsClientId=self.client)
+            finally:
+                self.client = -1
+
+    def __enter__(self) -> "Sim":
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
