@@ -375,7 +375,7 @@ dedupe_([X|Xs], Ys) :-
 %   Objects is the sorted list of Name-Type for every constant of the ground
 %   Literals, plus Extra (a list of Name-Type that wins over inference).  A constant
 %   is a `tool` if tool(X) or object(X) is among Literals; otherwise it takes the
-%   type of a model parameter that occupies the same argument position of the same
+%   type, other than `tool`, of a model parameter that occupies the same argument position of the same
 %   predicate in some model (precondition, add or delete list, models in order);
 %   otherwise it is a `value` (a qualitative value such as `medium`).
 %
@@ -417,7 +417,8 @@ constant_type_(Models, Literals, C, C-Type) :-
         functor(ML, F, N), functor(SL, F, N),
         arg(I, SL, A), A == C,
         arg(I, ML, V), var(V),
-        member(W-Type, Params), W == V
+        member(W-Type, Params), W == V,
+        Type \== tool
     ->  true
     ;   Type = value
     ).
