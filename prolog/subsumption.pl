@@ -1,0 +1,643 @@
+:- module(subsumption,
+          [ theta_subsumes/2,        % +General, +Specific
+            theta_subsumes/3,        % +General, +Specific, +Options
+            clause_reduce/2,         % +Clause, -Reduced
+            clause_reduce/3,         % +Clause, -Reduced, +Options
+            clause_covers/2,         % +Clause, +Example
+            clause_violations/3,     % +Clause, +Example, -Violated
+            clause_violations/4,     % +Clause, +Example, -Violated, +Options
+            clause_head_body/3       % ?Clause, ?Head, ?Body
+          ]).
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(assoc)).
+:- use_module(library(option)).
+:- use_module(library(pairs)).
+
+/** <module> Theta-subsumption, Plotkin reduction and coverage of clauses
+
+Clauses are written `Head :- Body` with a conjunction body; a unit clause is
+just `Head`. A body literal is an atom or a negated atom `\+ Atom`; `\+ p(X)`
+is matched only against `\+ p(...)` literals (literals are paired by predicate
+symbol and sign).
+
+*Range tests.* A body literal `in_range(V, Lo, Hi)` (see lgg:in_range/3) is a
+*test*, not a literal to match: it is satisfied when V is bound to a number in
+the closed interval [Lo,Hi], or to a variable of the specific clause whose own
+`in_range(V2, Lo2, Hi2)` literal lies within [Lo,Hi], or when V stays unbound
+(V occurs in no other literal, so some value in the interval exists).
+
+*Search.* The specific clause is skolemised (its variables become constants).
+The general clause's head is unified with the specific head first, so the head
+variables are fixed; the body then splits into *components*: sets of literals
+linked by variables that are not in the head. Components share no variables
+and are matched independently, each with its literals ordered most constrained
+first (fewest candidate literals, then most variables already bound), with
+every range test placed directly after the literal that binds its variable.
+
+*Bound.* Every search runs under call_with_inference_limit/3. The default
+limit is 10,000,000 inferences (about one second); set it with the option
+inference_limit(N) (N an integer or `infinite`). When the limit is hit the
+predicate raises `error(resource_error(inference_limit(N)), _)`: it never
+fails silently on a hard instance.
+*/
+
+% ---------------------------------------------------------------------------
+% Clause syntax
+
+%!  clause_head_body(?Clause, ?Head, ?Body:list) is det.
+%
+%   Relate a clause `Head :- Conjunction` (or the unit clause `Head`) to its
+%   head and the list of its body literals. With Clause bound, parse it and
+%   raise type_error(clause, Clause) when it is not a clause (a variable or
+%   a number as head or literal, a non-callable in the body). With Clause
+%   unbound, build it from Head and the list Body (`[]` gives the unit clause).
+%
+%   ==
+%   ?- clause_head_body((p(X) :- q(X), \+ r(X)), H, B).
+%   H = p(X), B = [q(X), \+ r(X)].
+%   ==
+clause_head_body(Clause, Head, Body) :-
+    (   var(Clause)
+    ->  must_be(callable, Head),
+        must_be(list, Body),
+        (   Body == []
+        ->  Clause = Head
+        ;   list_conj_(Body, Conj),
+            Clause = (Head :- Conj)
+        )
+    ;   parse_clause_(Clause, Head, Body)
+    ).
+
+parse_clause_(Clause, Head, Body) :-
+    (   Clause = (H :- B)
+    ->  head_ok_(H, Clause),
+        conj_list_(B, Clause, Body0),
+        Head = H,
+        Body = Body0
+    ;   head_ok_(Clause, Clause),
+        Head = Clause,
+        Body = []
+    ).
+
+head_ok_(H, Clause) :-
+    (   callable(H),
+        H \= (_, _),
+        H \= (\+ _),
+        H \= (_ :- _)
+    ->  true
+    ;   type_error(clause, Clause)
+    ).
+
+conj_list_(B, Clause, Lits) :-
+    (   var(B)
+    ->  type_error(clause, Clause)
+    ;   B == true
+    ->  Lits = []
+    ;   B = (A, C)
+    ->  conj_list_(A, Clause, L1),
+        conj_list_(C, Clause, L2),
+        append(L1, L2, Lits)
+    ;   literal_ok_(B)
+    ->  Lits = [B]
+    ;   type_error(clause, Clause)
+    ).
+
+literal_ok_(L) :-
+    callable(L),
+    (   L = (\+ A)
+    ->  callable(A),
+        A \= (\+ _)
+    ;   true
+    ).
+
+list_conj_([L], L) :-
+    !.
+list_conj_([L|Ls], (L, C)) :-
+    list_conj_(Ls, C).
+
+% ---------------------------------------------------------------------------
+% Theta-subsumption
+
+%!  theta_subsumes(+General, +Specific) is semidet.
+%!  theta_subsumes(+General, +Specific, +Options) is semidet.
+%
+%   True when the clause (or atom) General theta-subsumes the clause (or
+%   atom) Specific: some substitution maps General's head onto Specific's
+%   head and every body literal of General onto a body literal of Specific,
+%   and General's range tests hold under it (see the module comment).
+%   Specific's variables are treated as constants. Options:
+%
+%     - inference_limit(+N)
+%       Bound on the search, default 10,000,000; raises
+%       resource_error(inference_limit(N)) when exceeded.
+%
+%   ==
+%   ?- theta_subsumes((p(X) :- q(X, Y)), (p(a) :- q(a, b), r(b))).
+%   true.
+%   ?- theta_subsumes((p(X) :- q(X, V), in_range(V, 0, 1)), (p(a) :- q(a, 2))).
+%   false.
+%   ==
+theta_subsumes(General, Specific) :-
+    theta_subsumes(General, Specific, []).
+
+theta_subsumes(General, Specific, Options) :-
+    must_be(list, Options),
+    inference_limit_(Options, Limit),
+    clause_head_body(General, GH0, GB0),
+    clause_head_body(Specific, SH0, SB0),
+    copy_term_nat(GH0-GB0, GH-GB),
+    copy_term_nat(SH0-SB0, SH-SB),
+    skolemise_(SH-SB),
+    split_body_(SB, SLits, STests),
+    number_items_(SLits, 1, SItems),
+    spec_index_(SItems, Index),
+    spec_ranges_(STests, Ranges),
+    limited_(Limit, subsumes_body_(GH, GB, SH, Index, Ranges)).
+
+subsumes_body_(GH, GB, SH, Index, Ranges) :-
+    GH = SH,
+    split_body_(GB, GLits, GTests0),
+    number_items_(GLits, 1, GItems),
+    number_items_(GTests0, 1, GTests),
+    components_(GItems, GTests, Comps),
+    empty_assoc(NoExclusion),
+    maplist(match_component_(Index, Ranges, NoExclusion), Comps).
+
+match_component_(Index, Ranges, Excl, comp(Items, Tests)) :-
+    order_steps_(Items, Tests, Index, Excl, Steps),
+    once(match_steps_(Steps, Excl, Ranges)).
+
+%!  clause_covers(+Clause, +Example) is semidet.
+%
+%   True when Clause covers the example clause Example (`Head :- Facts`, the
+%   facts true in the example, or an atom with no facts): Clause
+%   theta-subsumes Example, range tests included.
+%
+%   ==
+%   ?- clause_covers((tool_pose(T, C, X) :- behind(T, C)),
+%                    (tool_pose(h1, c1, t1) :- behind(h1, c1), hook(h1))).
+%   true.
+%   ==
+clause_covers(Clause, Example) :-
+    theta_subsumes(Clause, Example, []).
+
+% ---------------------------------------------------------------------------
+% Violated literals
+
+%!  clause_violations(+Clause, +Example, -Violated) is semidet.
+%!  clause_violations(+Clause, +Example, -Violated, +Options) is semidet.
+%
+%   Unify (a copy of) Clause's head with the head of the example clause
+%   Example (`Head :- Facts`); fail when that is impossible. Then find a
+%   substitution that satisfies as many of Clause's body literals as
+%   possible in Example's facts and return, in body order, the literals of
+%   Clause (the terms as they appear in Clause, not instantiated) that it
+%   leaves unsatisfied. `[]` means that Clause covers Example.
+%
+%   The search is an exact branch and bound per component (see the module
+%   comment), bounded by the option max_nodes(N) (default 20,000 search
+%   nodes per component). When the bound is hit the best substitution found
+%   so far is used, so Violated may then contain more literals than the
+%   optimum; it always names literals that are violated by one concrete
+%   substitution. Components without local variables (the usual case for
+%   structural literals about the head's objects) are exact and immediate.
+%
+%   ==
+%   ?- clause_violations((tool_pose(T, C, X) :- hook(T), behind(T, C)),
+%                        (tool_pose(h1, c1, t1) :- hook(h1), in_front(h1, c1)), V).
+%   V = [behind(T, C)].
+%   ==
+clause_violations(Clause, Example, Violated) :-
+    clause_violations(Clause, Example, Violated, []).
+
+clause_violations(Clause, Example, Violated, Options) :-
+    must_be(list, Options),
+    option(max_nodes(MaxNodes), Options, 20000),
+    must_be(positive_integer, MaxNodes),
+    clause_head_body(Clause, Head, Body),
+    clause_head_body(Example, EH0, EB0),
+    copy_term_nat(EH0-EB0, EH-EB),
+    skolemise_(EH-EB),
+    split_body_(EB, ELits, ETests),
+    number_items_(ELits, 1, EItems),
+    spec_index_(EItems, Index),
+    spec_ranges_(ETests, Ranges),
+    number_items_(Body, 1, Items0),
+    copy_term_nat(Head-Items0, GH-Items),
+    GH = EH,
+    partition(is_test_item_, Items, TestItems, LitItems),
+    components_(LitItems, TestItems, Comps),
+    foldl(component_violations_(Index, Ranges, MaxNodes), Comps, [], ViolIdx0),
+    sort(ViolIdx0, ViolIdx),
+    pairs_at_(ViolIdx, Items0, Violated).
+
+is_test_item_(_-in_range(_, _, _)).
+
+component_violations_(Index, Ranges, MaxNodes, comp(Items, Tests), V0, V) :-
+    empty_assoc(Excl),
+    order_steps_all_(Items, Tests, Index, Excl, Steps),
+    findall(I, step_index_(Steps, I), All),
+    length(All, N),
+    State = best(N, All, 0),
+    (   bb_(Steps, [], 0, Ranges, MaxNodes, State),
+        fail
+    ;   true
+    ),
+    arg(2, State, Best),
+    append(Best, V0, V).
+
+step_index_(Steps, I) :-
+    member(S, Steps),
+    arg(1, S, I).
+
+bb_([], Viol, NV, _, _, State) :-
+    arg(1, State, Best),
+    NV < Best,
+    nb_setarg(1, State, NV),
+    nb_setarg(2, State, Viol).
+bb_([S|Ss], Viol, NV, Ranges, MaxNodes, State) :-
+    arg(1, State, Best),
+    NV < Best,
+    arg(3, State, Nodes),
+    Nodes < MaxNodes,
+    Nodes1 is Nodes + 1,
+    nb_setarg(3, State, Nodes1),
+    bb_step_(S, Ss, Viol, NV, Ranges, MaxNodes, State).
+
+bb_step_(lit(I, L, Cands, _), Ss, Viol, NV, Ranges, MaxNodes, State) :-
+    (   member(_-C, Cands),
+        L = C,
+        bb_(Ss, Viol, NV, Ranges, MaxNodes, State)
+    ;   NV1 is NV + 1,
+        bb_(Ss, [I|Viol], NV1, Ranges, MaxNodes, State)
+    ).
+bb_step_(test(I, V, Lo, Hi), Ss, Viol, NV, Ranges, MaxNodes, State) :-
+    (   range_test_(V, Lo, Hi, Ranges)
+    ->  bb_(Ss, Viol, NV, Ranges, MaxNodes, State)
+    ;   NV1 is NV + 1,
+        bb_(Ss, [I|Viol], NV1, Ranges, MaxNodes, State)
+    ).
+
+pairs_at_([], _, []).
+pairs_at_([I|Is], Items, [L|Ls]) :-
+    memberchk(I-L, Items),
+    pairs_at_(Is, Items, Ls).
+
+% ---------------------------------------------------------------------------
+% Plotkin reduction
+
+%!  clause_reduce(+Clause, -Reduced) is det.
+%!  clause_reduce(+Clause, -Reduced, +Options) is det.
+%
+%   Reduced is the Plotkin reduction of Clause: duplicate body literals are
+%   removed, then a literal L is removed whenever Clause theta-subsumes
+%   Clause without L (the clauses are then equivalent), until no literal can
+%   go. The head is kept; only the component of L (its literals linked by
+%   non-head variables) has to be mapped, and a successful mapping removes
+%   every literal of that component outside its image at once. Range tests
+%   stay for the variables that still occur. Body order is kept. Options as
+%   for theta_subsumes/3 (the inference limit applies to each test).
+%
+%   ==
+%   ?- clause_reduce((p(X) :- q(X, Y), q(X, a)), R).
+%   R = (p(X) :- q(X, a)).
+%   ==
+clause_reduce(Clause, Reduced) :-
+    clause_reduce(Clause, Reduced, []).
+
+clause_reduce(Clause, Reduced, Options) :-
+    must_be(list, Options),
+    inference_limit_(Options, Limit),
+    clause_head_body(Clause, Head, Body0),
+    dedupe_(Body0, Body),
+    split_body_(Body, Lits, Tests),
+    number_items_(Lits, 1, Items),
+    number_items_(Tests, 1, TestItems),
+    reduce_items_(Head, Items, TestItems, Limit, KeptItems),
+    pairs_values(KeptItems, Kept),
+    term_variables(Head-Kept, Live),
+    include(live_test_(Live), Tests, KeptTests),
+    append(Kept, KeptTests, RBody),
+    clause_head_body(Reduced, Head, RBody).
+
+live_test_(Live, in_range(V, _, _)) :-
+    (   var(V)
+    ->  member(W, Live),
+        W == V,
+        !
+    ;   true
+    ).
+
+reduce_items_(Head, Items, Tests, Limit, Kept) :-
+    copy_term_nat(Head-Items-Tests, SH-SItems-STests),
+    skolemise_(SH-SItems-STests),
+    spec_index_(SItems, Index),
+    pairs_values(STests, STestLits),
+    spec_ranges_(STestLits, Ranges),
+    copy_term_nat(Head-Items-Tests, CH-CItems-CTests),
+    CH = SH,
+    components_(CItems, CTests, Comps),
+    empty_assoc(Removed0),
+    foldl(reduce_component_(Head, Items, Tests, SH, Index, Ranges, Limit),
+          Comps, Removed0, Removed),
+    exclude(removed_item_(Removed), Items, Kept).
+
+removed_item_(Removed, I-_) :-
+    get_assoc(I, Removed, _).
+
+reduce_component_(Head, Items, Tests, SH, Index, Ranges, Limit,
+                  comp(CItems, _), Removed0, Removed) :-
+    pairs_keys(CItems, Idxs),
+    (   CItems = [_-L],
+        ground(L)
+    ->  Removed = Removed0
+    ;   foldl(reduce_literal_(Head, Items, Tests, SH, Index, Ranges, Limit, Idxs),
+              Idxs, Removed0, Removed)
+    ).
+
+reduce_literal_(Head, Items, Tests, SH, Index, Ranges, Limit, Idxs, I,
+                Removed0, Removed) :-
+    (   get_assoc(I, Removed0, _)
+    ->  Removed = Removed0
+    ;   put_assoc(I, Removed0, true, Excl),
+        exclude(removed_key_(Excl), Idxs, Alive0),
+        Alive = [I|Alive0],
+        copy_term_nat(Head-Items-Tests, GH-GItems-GTests),
+        GH = SH,
+        include(alive_item_(Alive), GItems, KItems),
+        term_variables(KItems, KVars),
+        include(test_on_(KVars), GTests, KTests),
+        (   limited_(Limit, reduce_match_(KItems, KTests, Index, Ranges, Excl, Image))
+        ->  subtract_idx_(Alive, Image, Gone),
+            foldl(mark_removed_, Gone, Removed0, Removed)
+        ;   Removed = Removed0
+        )
+    ).
+
+removed_key_(Removed, I) :-
+    get_assoc(I, Removed, _).
+
+alive_item_(Alive, I-_) :-
+    memberchk(I, Alive).
+
+reduce_match_(KItems, KTests, Index, Ranges, Excl, Image) :-
+    order_steps_(KItems, KTests, Index, Excl, Steps),
+    once(match_steps_(Steps, Excl, Ranges)),
+    findall(J, member(lit(_, _, _, J), Steps), Image).
+
+subtract_idx_([], _, []).
+subtract_idx_([I|Is], Image, Gone) :-
+    (   memberchk(I, Image)
+    ->  Gone = Gone1
+    ;   Gone = [I|Gone1]
+    ),
+    subtract_idx_(Is, Image, Gone1).
+
+mark_removed_(I, R0, R) :-
+    put_assoc(I, R0, true, R).
+
+% ---------------------------------------------------------------------------
+% Shared machinery: skolem constants, index, components, ordering, matching
+
+inference_limit_(Options, Limit) :-
+    option(inference_limit(Limit), Options, 10000000),
+    (   Limit == infinite
+    ->  true
+    ;   must_be(positive_integer, Limit)
+    ).
+
+limited_(Limit, Goal) :-
+    (   Limit == infinite
+    ->  once(Goal)
+    ;   call_with_inference_limit(once(Goal), Limit, Result),
+        (   Result == inference_limit_exceeded
+        ->  resource_error(inference_limit(Limit))
+        ;   true
+        )
+    ).
+
+skolemise_(Term) :-
+    numbervars(Term, 0, _, [functor_name('$sk'), attvar(bind)]).
+
+dedupe_([], []).
+dedupe_([L|Ls], [L|Ds]) :-
+    exclude(==(L), Ls, Rest),
+    dedupe_(Rest, Ds).
+
+split_body_([], [], []).
+split_body_([L|Ls], Lits, Tests) :-
+    (   L = in_range(_, Lo, Hi)
+    ->  must_be(number, Lo),
+        must_be(number, Hi),
+        Tests = [L|Tests1],
+        split_body_(Ls, Lits, Tests1)
+    ;   Lits = [L|Lits1],
+        split_body_(Ls, Lits1, Tests)
+    ).
+
+number_items_([], _, []).
+number_items_([L|Ls], I, [I-L|Items]) :-
+    I1 is I + 1,
+    number_items_(Ls, I1, Items).
+
+lit_key_(L, Key) :-
+    (   L = (\+ A)
+    ->  functor(A, N, Ar),
+        Key = neg(N/Ar)
+    ;   functor(L, N, Ar),
+        Key = pos(N/Ar)
+    ).
+
+spec_index_(Items, Index) :-
+    map_list_to_pairs(item_key_, Items, Keyed),
+    keysort(Keyed, Sorted),
+    group_pairs_by_key(Sorted, Groups),
+    list_to_assoc(Groups, Index).
+
+item_key_(_-L, Key) :-
+    lit_key_(L, Key).
+
+spec_ranges_(Tests, Ranges) :-
+    findall(V-(Lo-Hi), ( member(in_range(V, Lo, Hi), Tests), \+ number(V) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, Ranges).
+
+range_test_(V, Lo, Hi, Ranges) :-
+    (   var(V)
+    ->  true
+    ;   number(V)
+    ->  Lo =< V,
+        V =< Hi
+    ;   get_assoc(V, Ranges, Rs)
+    ->  once(( member(L-H, Rs), L >= Lo, H =< Hi ))
+    ;   fail
+    ).
+
+%   components_(+Items, +Tests, -Comps): split the literals I-L (head
+%   variables already bound) into groups linked by the variables left, as
+%   comp(Items, Tests) terms; a range test I-in_range(V, Lo, Hi) joins the
+%   group of its variable, and a test on a bound term or on a variable that
+%   no literal has forms a group of its own.
+components_(Items, Tests, Comps) :-
+    copy_term_nat(Items, CItems),
+    numbervars(CItems, 0, _, [functor_name('$cv')]),
+    maplist(item_var_ids_, CItems, IdItems),
+    var_occurrences_(IdItems, Occ),
+    empty_assoc(Seen0),
+    group_items_(Items, IdItems, Occ, Seen0, Groups),
+    foldl(group_comp_(Items), Groups, Comps0, Tests, Lone),
+    maplist(lone_comp_, Lone, LoneComps),
+    append(Comps0, LoneComps, Comps).
+
+lone_comp_(T, comp([], [T])).
+
+item_var_ids_(I-L, I-Ids) :-
+    findall(N, sub_term('$cv'(N), L), Ns),
+    sort(Ns, Ids).
+
+var_occurrences_(IdItems, Occ) :-
+    findall(V-I, ( member(I-Ids, IdItems), member(V, Ids) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, Occ).
+
+group_items_([], _, _, _, []).
+group_items_([I-_|Items], IdItems, Occ, Seen0, Groups) :-
+    (   get_assoc(I, Seen0, _)
+    ->  group_items_(Items, IdItems, Occ, Seen0, Groups)
+    ;   closure_([I], IdItems, Occ, Seen0, Seen, [], Group0),
+        sort(Group0, Group),
+        Groups = [Group|Groups1],
+        group_items_(Items, IdItems, Occ, Seen, Groups1)
+    ).
+
+closure_([], _, _, Seen, Seen, Acc, Acc).
+closure_([I|Is], IdItems, Occ, Seen0, Seen, Acc0, Acc) :-
+    (   get_assoc(I, Seen0, _)
+    ->  closure_(Is, IdItems, Occ, Seen0, Seen, Acc0, Acc)
+    ;   put_assoc(I, Seen0, true, Seen1),
+        memberchk(I-Ids, IdItems),
+        findall(J, ( member(V, Ids), get_assoc(V, Occ, Js), member(J, Js) ), Next),
+        append(Next, Is, Queue),
+        closure_(Queue, IdItems, Occ, Seen1, Seen, [I|Acc0], Acc)
+    ).
+
+group_comp_(Items, Group, comp(GItems, GTests), Tests0, Tests) :-
+    include(in_group_(Group), Items, GItems),
+    term_variables(GItems, Vars),
+    partition(test_on_(Vars), Tests0, GTests, Tests).
+
+in_group_(Group, I-_) :-
+    memberchk(I, Group).
+
+test_on_(Vars, _-in_range(V, _, _)) :-
+    var(V),
+    member(W, Vars),
+    W == V,
+    !.
+
+%   order_steps_(+Items, +Tests, +Index, +Excl, -Steps): the steps
+%   lit(I, L, Cands, J) and test(I, V, Lo, Hi) of one component in search
+%   order; J is bound to the index of the matched literal. Fails at once
+%   when a literal has no candidate.
+order_steps_(Items, Tests, Index, Excl, Steps) :-
+    maplist(candidates_(Index, Excl), Items, Cands),
+    \+ memberchk([], Cands),
+    weave_(Items, Cands, Tests, Steps).
+
+%   As order_steps_/5, but a literal without candidates is kept (it will be
+%   violated): used by clause_violations/4.
+order_steps_all_(Items, Tests, Index, Excl, Steps) :-
+    maplist(candidates_(Index, Excl), Items, Cands),
+    weave_(Items, Cands, Tests, Steps).
+
+candidates_(Index, Excl, _-L, Cands) :-
+    lit_key_(L, Key),
+    (   get_assoc(Key, Index, All)
+    ->  include(candidate_ok_(L, Excl), All, Cands)
+    ;   Cands = []
+    ).
+
+candidate_ok_(L, Excl, J-C) :-
+    \+ get_assoc(J, Excl, _),
+    \+ L \= C.
+
+%   Greedy static order on a working copy: pick the best literal, bind its
+%   variables in the copy to '$bound', emit the tests that became ready.
+weave_(Items, Cands, Tests, Steps) :-
+    maplist(step_info_, Items, Cands, Infos),
+    copy_term_nat(Infos-Tests, CInfos-CTests),
+    pairs_keys_values(IP, Infos, CInfos),
+    pairs_keys_values(TP, Tests, CTests),
+    ready_tests_(TP, Ready, Pending),
+    maplist(test_step_, Ready, Steps0),
+    pick_loop_(IP, Pending, Steps1),
+    append(Steps0, Steps1, Steps).
+
+step_info_(I-L, Cands, info(I, L, Cands, N)) :-
+    length(Cands, N).
+
+test_step_((I-in_range(V, Lo, Hi))-_, test(I, V, Lo, Hi)).
+
+ready_tests_([], [], []).
+ready_tests_([T-C|TPs], Ready, Pending) :-
+    C = _-in_range(V, _, _),
+    (   nonvar(V)
+    ->  Ready = [T-C|Ready1],
+        ready_tests_(TPs, Ready1, Pending)
+    ;   Pending = [T-C|Pending1],
+        ready_tests_(TPs, Ready, Pending1)
+    ).
+
+pick_loop_([], Pending, Steps) :-
+    maplist(test_step_, Pending, Steps).
+pick_loop_([P|Ps], Pending0, [Step|Steps]) :-
+    best_info_(Ps, P, Best),
+    selectchk(Best, [P|Ps], Rest),
+    Best = info(I, L, Cands, _)-CInfo,
+    Step = lit(I, L, Cands, _),
+    term_variables(CInfo, CVs),
+    maplist(=('$bound'), CVs),
+    ready_tests_(Pending0, Ready, Pending),
+    maplist(test_step_, Ready, TSteps),
+    append(TSteps, Steps1, Steps),
+    pick_loop_(Rest, Pending, Steps1).
+
+best_info_([], Best, Best).
+best_info_([P|Ps], Best0, Best) :-
+    info_score_(P, S),
+    info_score_(Best0, S0),
+    (   S @< S0
+    ->  best_info_(Ps, P, Best)
+    ;   best_info_(Ps, Best0, Best)
+    ).
+
+%   Lower is better: fully bound literals first (pure checks), then literals
+%   touching bound variables, then fewest candidates, then most bound.
+info_score_(info(_, _, _, N)-info(_, CL, _, _), s(Free, Unlinked, N, NegBound)) :-
+    term_variables(CL, Vs),
+    findall(x, sub_term('$bound', CL), Bs),
+    length(Bs, NBound),
+    NegBound is -NBound,
+    (   Vs == []
+    ->  Free = 0
+    ;   Free = 1
+    ),
+    (   NBound > 0
+    ->  Unlinked = 0
+    ;   Unlinked = 1
+    ).
+
+match_steps_([], _, _).
+match_steps_([S|Ss], Excl, Ranges) :-
+    match_step_(S, Ranges),
+    match_steps_(Ss, Excl, Ranges).
+
+match_step_(lit(_, L, Cands, J), _) :-
+    member(J-C, Cands),
+    L = C.
+match_step_(test(_, V, Lo, Hi), Ranges) :-
+    range_test_(V, Lo, Hi, Ranges).
