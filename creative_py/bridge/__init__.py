@@ -1,1 +1,42 @@
-"""bridge."""
+"""The bridge: the only way from Python to SWI-Prolog (the only importer of pyswip).
+
+Importing this package starts nothing; :class:`Engine` (``Engine.instance()``) starts
+the one embedded SWI-Prolog of the process and loads the facade ``prolog/api.pl``.
+Terms are plain Python values (:mod:`creative_py.bridge.terms`); one encoder and one
+decoder (:mod:`creative_py.bridge.codec`) carry them across.
+"""
+
+from creative_py.bridge.codec import decode, encode
+from creative_py.bridge.engine import FAILED, Engine, LoadReport
+from creative_py.bridge.errors import (
+    BridgeError,
+    BridgeProtocolError,
+    EngineStateError,
+    LoadMessage,
+    PrologError,
+    PrologFailed,
+    PrologFileNotFoundError,
+    PrologLoadError,
+    PrologSyntaxError,
+    WrongThreadError,
+)
+from creative_py.bridge.terms import (
+    Compound,
+    PlString,
+    Term,
+    Var,
+    clause,
+    clause_parts,
+    conj,
+    conj_to_list,
+    is_ground,
+    variables,
+)
+
+__all__ = [
+    "FAILED", "BridgeError", "BridgeProtocolError", "Compound", "Engine",
+    "EngineStateError", "LoadMessage", "LoadReport", "PlString", "PrologError",
+    "PrologFailed", "PrologFileNotFoundError", "PrologLoadError", "PrologSyntaxError",
+    "Term", "Var", "WrongThreadError", "clause", "clause_parts", "conj", "conj_to_list",
+    "decode", "encode", "is_ground", "variables",
+]

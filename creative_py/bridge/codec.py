@@ -1,0 +1,195 @@
+"""The bridge's one encoder (Python term -> Prolog text) and one decoder (reply -> term).
+
+Requests travel to Prolog as text that ``prolog/api.pl`` parses with ``term_string/3``;
+:func:`encode` writes that text. Replies travel back as JSON text written by
+``api.pl`` (a fixed, self-describing schema, so no Prolog lexical rule has to be
+re-implemented in Python); :func:`decode` reads it. The reply schema:
+
+=======================  =========================================
+Prolog                   JSON
+=======================  =========================================
+atom ``foo``             ``"foo"``
+``[]``, ``[a, b]``       ``[]``, ``["a", "b"]`` (proper lists only)
+integer, float           number (``NaN``, ``Infinity``, ``-Infinity`` for the specials)
+string ``"s"``           ``{"s": "s"}``
+variable                 ``{"v": "Name"}``
+compound ``f(a)``        ``{"f": "f", "a": ["a"]}``
+blob (stream, clause)    ``{"b": "<stream>(0x...)"}`` (decoded as an atom: its text)
+=======================  =========================================
+
+Nothing else in the project may build Prolog text: use these two functions (or the
+term model in :mod:`creative_py.bridge.terms`, whose ``str()`` calls :func:`encode`).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import numbers
+import re
+from typing import Any
+
+from creative_py.bridge.errors import BridgeProtocolError
+from creative_py.bridge.terms import Compound, PlString, Term, Var
+
+_PLAIN_ATOM = re.compile(r"[a-z][A-Za-z0-9_]*\Z")
+
+# Infix operators written as operators by encode(..., operators=True):
+# name -> (priority, type). Standard SWI-Prolog priorities.
+_INFIX = {
+    ":-": (1200, "xfx"),
+    ";": (1100, "xfy"),
+    "->": (1050, "xfy"),
+    ",": (1000, "xfy"),
+}
+_ARG_PRIORITY = 999
+_TOP_PRIORITY = 1200
+
+# Atoms that are (prefix or infix) operators in standard SWI-Prolog; written as an
+# operand of an infix operator they get parentheses so the text reads back the same.
+_OPERATOR_ATOMS = frozenset(
+    ":- --> ?- ; | -> *-> , := \\+ = \\= == \\== @< @> @=< @>= =.. is =:= =\\= < > =< >= "
+    "as >:< :< + - /\\ \\/ xor * / // rdiv << >> mod rem div divmod ** ^ \\ $ : "
+    "dynamic discontiguous initialization meta_predicate module_transparent multifile "
+    "public thread_local table".split()
+)
+
+
+def _escape(text: str, quote: str) -> str:
+    out = []
+    for ch in text:
+        code = ord(ch)
+        if ch == "\\":
+            out.append("\\\\")
+        elif ch == quote:
+            out.append("\\" + quote)
+        elif ch == "\n":
+            out.append("\\n")
+        elif ch == "\t":
+            out.append("\\t")
+        elif code < 0x20 or 0x7F <= code <= 0x9F:
+            out.append(f"\\x{code:x}\\")
+        elif 0xD800 <= code <= 0xDFFF:
+            raise ValueError(
+                f"text {text!r} contains the lone surrogate U+{code:04X}, which is not a character"
+            )
+        else:
+            out.append(ch)
+    return "".join(out)
+
+
+def _atom(name: str) -> str:
+    if _PLAIN_ATOM.match(name):
+        return name
+    return "'" + _escape(name, "'") + "'"
+
+
+def _float(value: float) -> str:
+    if not math.isfinite(value):
+        raise ValueError(f"{value!r} cannot be sent to Prolog: NaN and infinities are refused")
+    text = repr(float(value))
+    mantissa, e, exponent = text.partition("e")
+    if "." not in mantissa:
+        mantissa += ".0"
+    return mantissa + e + exponent
+
+
+def encode(value: Any, *, operators: bool = False) -> str:
+    """Return the Prolog text of a Python term (see :mod:`creative_py.bridge.terms`).
+
+    Parameters
+    ----------
+    value
+        ``str`` (atom), ``int``, ``float``, :class:`PlString`, :class:`Var`,
+        :class:`Compound` or ``list`` of these, nested to any depth below Python's
+        recursion limit. Any ``numbers.Integral`` / ``numbers.Real`` (e.g. numpy
+        scalars) is accepted as an integer / float.
+    operators
+        False (the wire format): canonical text, every compound in functional
+        notation, e.g. ``':-'(p(X),','(q(X),r))``. True (for people): the clause
+        operators ``:-``, ``;``, ``->`` and ``,`` are written infix with the
+        parentheses their priorities need, e.g. ``p(X) :- q(X), r``. Both read back
+        as the same term in SWI-Prolog.
+
+    Raises
+    ------
+    ValueError
+        A float is NaN or infinite, or text holds a lone surrogate.
+    TypeError
+        A value is not part of the term model (``bool``, ``tuple``, ``dict``, ``None``,
+        ...); the message names the type and where it was found.
+    """
+    return _encode(value, operators, _TOP_PRIORITY, "term")
+
+
+def _encode(value: Any, operators: bool, max_priority: int, where: str,
+            operand: bool = False) -> str:
+    if isinstance(value, str):
+        text = _atom(value)
+        if operand and value in _OPERATOR_ATOMS:
+            return "(" + text + ")"
+        return text
+    if isinstance(value, Compound):
+        if operators and len(value.args) == 2 and value.name in _INFIX:
+            priority, kind = _INFIX[value.name]
+            left_max = priority - 1
+            right_max = priority if kind == "xfy" else priority - 1
+            left = _encode(value.args[0], operators, left_max, where + " (left operand)",
+                           operand=True)
+            right = _encode(value.args[1], operators, right_max, where + " (right operand)",
+                            operand=True)
+            sep = ", " if value.name == "," else f" {value.name} "
+            text = left + sep + right
+            return "(" + text + ")" if priority > max_priority else text
+        args = ",".join(
+            _encode(arg, operators, _ARG_PRIORITY, f"argument {i + 1} of {value.indicator}")
+            for i, arg in enumerate(value.args)
+        )
+        return _atom(value.name) + "(" + args + ")"
+    if isinstance(value, list):
+        return "[" + ",".join(
+            _encode(item, operators, _ARG_PRIORITY, f"list element {i + 1}")
+            for i, item in enumerate(value)
+        ) + "]"
+    if isinstance(value, Var):
+        return "_" if value.name is None else value.name
+    if isinstance(value, PlString):
+        return '"' + _escape(value.value, '"') + '"'
+    if isinstance(value, bool):
+        raise TypeError(
+            f"{where}: bool {value!r} is not a Prolog term; use the atom 'true' or 'false'"
+        )
+    if isinstance(value, numbers.Integral):
+        return str(int(value))
+    if isinstance(value, numbers.Real):
+        return _float(float(value))
+    raise TypeError(
+        f"{where}: {type(value).__name__} {value!r} is not a Prolog term "
+        "(expected str, int, float, PlString, Var, Compound or list)"
+    )
+
+
+def _object_hook(obj: dict) -> Term:
+    if "f" in obj:
+        return Compound(obj["f"], tuple(obj["a"]))
+    if "s" in obj:
+        return PlString(obj["s"])
+    if "v" in obj:
+        return Var(obj["v"])
+    if "b" in obj:
+        return obj["b"]
+    raise BridgeProtocolError(f"unknown object in a Prolog reply: {obj!r}")
+
+
+def decode(text: str) -> Term:
+    """Return the Python term of a JSON reply written by ``api.pl`` (schema above).
+
+    Raises
+    ------
+    BridgeProtocolError
+        The text is not a reply in the schema above (a bug on one side of the bridge).
+    """
+    try:
+        return json.loads(text, object_hook=_object_hook)
+    except (ValueError, KeyError, TypeError) as exc:
+        raise BridgeProtocolError(f"malformed reply from Prolog ({exc}): {text[:200]!r}") from exc

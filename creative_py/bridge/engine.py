@@ -1,0 +1,385 @@
+"""The Prolog engine: one embedded SWI-Prolog per process, reached through the facade.
+
+Usage::
+
+    from creative_py.bridge import Engine, clause
+    engine = Engine.instance()                 # starts Prolog, loads prolog/creative.pl
+    g = engine.clause_lgg(c1, c2)              # a Compound with Var("_G0") ...
+    engine.call("theta_subsumes", g, c1)       # "true", or FAILED
+
+pyswip embeds one SWI-Prolog per process and it cannot be restarted, so :class:`Engine`
+is a singleton by construction: the first ``Engine(...)`` (or ``Engine.instance()``)
+starts Prolog; a second ``Engine(...)`` raises :class:`EngineStateError`;
+``Engine.instance()`` always returns the one engine. Only the thread that created the
+engine may call it (others get :class:`WrongThreadError`), and a forked child may not
+use its parent's engine.
+
+Every call runs one operation of ``prolog/api.pl`` (its table ``api_op/3`` lists
+them): the request ``op(arg1, ...)`` is encoded as text by
+:func:`creative_py.bridge.codec.encode`, parsed by Prolog, run deterministically, and
+answered by exactly one reply:
+
+* ``ok(Result)``: :meth:`Engine.call` returns the decoded ``Result``;
+* ``failed``: :meth:`Engine.call` returns the sentinel :data:`FAILED` (falsy);
+* ``error(E)``: :meth:`Engine.call` raises :class:`PrologError` with the operation
+  name and the decoded ``E``.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import threading
+from dataclasses import dataclass
+from pathlib import Path
+from typing import ClassVar, Iterable, Optional, Sequence, Union
+
+from creative_py.bridge import _native
+from creative_py.bridge.codec import decode, encode
+from creative_py.bridge.errors import (
+    BridgeError,
+    BridgeProtocolError,
+    EngineStateError,
+    LoadMessage,
+    PrologError,
+    PrologFailed,
+    PrologFileNotFoundError,
+    PrologLoadError,
+    PrologSyntaxError,
+    WrongThreadError,
+)
+from creative_py.bridge.terms import Compound, Term
+
+log = logging.getLogger(__name__)
+
+PathLike = Union[str, os.PathLike]
+
+PROJECT_ROOT = Path(__file__).resolve().parents[2]
+"""The repository root (the folder holding ``prolog/`` and ``ontology/``)."""
+
+FACADE_FILE = PROJECT_ROOT / "prolog" / "api.pl"
+"""The facade module, always loaded first."""
+
+DEFAULT_LOAD = (PROJECT_ROOT / "prolog" / "creative.pl",)
+"""Files an engine loads when ``load`` is not given: the whole learning engine."""
+
+
+class _Failed:
+    """The type of :data:`FAILED`."""
+
+    _made = False
+
+    def __new__(cls) -> "_Failed":
+        if cls._made:
+            raise TypeError("FAILED is a singleton; compare with `is FAILED`")
+        cls._made = True
+        return super().__new__(cls)
+
+    def __bool__(self) -> bool:
+        return False
+
+    def __repr__(self) -> str:
+        return "FAILED"
+
+    def __reduce__(self) -> str:
+        return "FAILED"
+
+
+FAILED = _Failed()
+"""What :meth:`Engine.call` returns when the operation's goal fails (Prolog's "no")."""
+
+
+@dataclass(frozen=True)
+class LoadReport:
+    """What consulting a file printed that was not an error.
+
+    Attributes
+    ----------
+    path
+        The absolute path that was loaded.
+    warnings
+        The warnings printed while loading (e.g. singleton variables), in order.
+    """
+
+    path: str
+    warnings: tuple[LoadMessage, ...] = ()
+
+
+class Engine:
+    """The process's embedded SWI-Prolog, with the facade ``prolog/api.pl`` loaded.
+
+    Parameters
+    ----------
+    load
+        Prolog files to consult after the facade, in order (paths, relative to the
+        current directory or absolute). None loads :data:`DEFAULT_LOAD`, i.e.
+        ``prolog/creative.pl`` (every module of ``prolog/``); ``[]`` loads only the
+        facade and the modules it uses.
+
+    Raises
+    ------
+    EngineStateError
+        An engine already exists in this process (use :meth:`instance`), or
+        SWI-Prolog cannot be started.
+    PrologLoadError, PrologSyntaxError, PrologFileNotFoundError
+        A file of ``load`` has errors or does not exist. The engine exists anyway
+        (Prolog cannot be restarted): :meth:`instance` returns it.
+    """
+
+    _instance: ClassVar[Optional["Engine"]] = None
+    _creating: ClassVar[threading.Lock] = threading.Lock()
+
+    def __init__(self, load: Optional[Sequence[PathLike]] = None) -> None:
+        with Engine._creating:
+            if Engine._instance is not None:
+                raise EngineStateError(
+                    "a Prolog engine already exists in this process (pyswip embeds one "
+                    "SWI-Prolog per process); use Engine.instance()"
+                )
+            self._thread = threading.get_ident()
+            self._pid = os.getpid()
+            self._loaded: list[str] = []
+            self._native = _native.start()
+            self._predicate = self._native.predicate(b"api_request", 2, b"api")
+            self._bootstrap()
+            Engine._instance = self
+        for path in DEFAULT_LOAD if load is None else load:
+            self.consult(path)
+
+    @classmethod
+    def instance(cls, load: Optional[Sequence[PathLike]] = None) -> "Engine":
+        """Return the process's engine, creating it on the first call.
+
+        ``load`` is used as by the constructor when the engine is created; on later
+        calls, the files of ``load`` that this engine has not consulted yet are
+        consulted (``None`` then means nothing more).
+        """
+        engine = cls._instance
+        if engine is None:
+            return cls(load)
+        for path in load or ():
+            if str(Path(path).resolve()) not in engine._loaded:
+                engine.consult(path)
+        return engine
+
+    @property
+    def loaded(self) -> tuple[str, ...]:
+        """Return the absolute paths consulted through this engine, in order."""
+        return tuple(self._loaded)
+
+    # ------------------------------------------------------------------ transport
+
+    def _check_caller(self) -> None:
+        if os.getpid() != self._pid:
+            raise EngineStateError(
+                "this Prolog engine belongs to the parent process; a forked child "
+                "cannot use it"
+            )
+        if threading.get_ident() != self._thread:
+            raise WrongThreadError(
+                "the Prolog engine may only be called from the thread that created it "
+                f"(thread {self._thread}); this is thread {threading.get_ident()}"
+            )
+
+    def _call_predicate(self, predicate: int, text: str, kind: int,
+                        want_reply: bool) -> Optional[str]:
+        native = self._native
+        data = text.encode("utf-8")
+        frame = native.open_frame()
+        try:
+            t0 = native.new_term_refs(2)
+            if not native.put_chars(t0, kind, len(data), data):
+                raise BridgeError(f"could not pass {len(data)} bytes of text to Prolog")
+            if not native.call_predicate(None, native.query_flags, predicate, t0):
+                exc = native.exception(0)
+                if exc:
+                    detail = _native.read_text(native, exc, native.get_writeq_utf8)
+                    native.clear_exception()
+                    raise PrologError("api_request", detail)
+                raise PrologFailed("api_request", "the facade must never fail")
+            if not want_reply:
+                return None
+            reply = _native.read_text(native, t0 + 1, native.get_string_utf8)
+            if reply is None:
+                raise BridgeProtocolError("the facade's reply is not a string")
+            return reply
+        finally:
+            native.discard_frame(frame)
+
+    def request_text(self, request: str) -> str:
+        """Send one request text to the facade and return its JSON reply text.
+
+        This is the raw transport under :meth:`call`, for tests and benchmarks:
+        ``request`` is Prolog text (one term, no full stop).
+        """
+        self._check_caller()
+        reply = self._call_predicate(self._predicate, request, self._native.string_utf8,
+                                     want_reply=True)
+        assert reply is not None
+        return reply
+
+    def _bootstrap(self) -> None:
+        consult = self._native.predicate(b"ensure_loaded", 1, b"user")
+        self._call_predicate(consult, str(FACADE_FILE), self._native.atom_utf8,
+                             want_reply=False)
+        status = self.call("load_status")
+        errors, warnings = status.args
+        if errors or warnings:
+            message = LoadMessage(
+                "error" if errors else "warning", str(FACADE_FILE), None,
+                f"{errors} error(s) and {warnings} warning(s) printed to stderr while "
+                "loading the facade and the modules it uses",
+            )
+            if errors:
+                raise PrologLoadError(str(FACADE_FILE), [message])
+            log.warning("%s", message)
+
+    # ------------------------------------------------------------------ operations
+
+    def call(self, op: str, *args: Term) -> Union[Term, _Failed]:
+        """Run the facade operation ``op(*args)`` and return its result.
+
+        Parameters
+        ----------
+        op
+            An operation name of ``api_op/3`` in ``prolog/api.pl``.
+        args
+            Its arguments, Python terms (see :mod:`creative_py.bridge.terms`).
+
+        Returns
+        -------
+        The decoded ``Result`` of ``ok(Result)``, or :data:`FAILED` if the goal failed.
+
+        Raises
+        ------
+        PrologError
+            Prolog raised an exception (including an unknown operation:
+            ``existence_error(api_operation, Op/Arity)``); ``predicate`` is ``op``.
+        TypeError, ValueError
+            An argument is not a term, or is a NaN or infinite float.
+        WrongThreadError
+            Called from a thread other than the creator.
+        """
+        if not isinstance(op, str):
+            raise TypeError(f"operation name must be a str, got {type(op).__name__}")
+        request = Compound(op, args) if args else op
+        reply = decode(self.request_text(encode(request)))
+        if isinstance(reply, Compound) and len(reply.args) == 1:
+            if reply.name == "ok":
+                return reply.args[0]
+            if reply.name == "error":
+                raise PrologError(op, reply.args[0])
+        if reply == "failed":
+            return FAILED
+        raise BridgeProtocolError(f"{op}: unexpected reply {reply!r}")
+
+    def _must(self, op: str, *args: Term) -> Term:
+        result = self.call(op, *args)
+        if result is FAILED:
+            raise PrologFailed(op)
+        return result
+
+    def _holds(self, op: str, *args: Term) -> bool:
+        return self.call(op, *args) is not FAILED
+
+    def consult(self, path: PathLike) -> LoadReport:
+        """Load a Prolog file into module ``user`` and report what loading printed.
+
+        The path is checked before Prolog sees it. Errors and warnings printed while
+        loading are captured (not printed); warnings are logged and returned.
+
+        Raises
+        ------
+        PrologFileNotFoundError
+            ``path`` is not an existing file (also a ``FileNotFoundError``).
+        PrologSyntaxError
+            The file has syntax errors; ``file`` and ``line`` locate the first, and
+            ``messages`` lists every error. The rest of the file is loaded, as
+            SWI-Prolog does.
+        PrologLoadError
+            Loading printed other errors (e.g. a directive raised).
+        """
+        self._check_caller()
+        resolved = Path(path).expanduser().resolve()
+        if not resolved.is_file():
+            reason = "it is a directory" if resolved.is_dir() else "no such file"
+            raise PrologFileNotFoundError(str(path), reason)
+        try:
+            report = self._must("consult", str(resolved))
+        except PrologError as exc:
+            formal = exc.formal
+            if isinstance(formal, Compound) and formal.name == "existence_error":
+                raise PrologFileNotFoundError(str(path), "Prolog cannot find it") from exc
+            raise
+        loaded_path, errors, warnings = report.args
+        errors = [_load_message(m) for m in errors]
+        warnings = tuple(_load_message(m) for m in warnings)
+        if str(resolved) not in self._loaded:
+            self._loaded.append(str(resolved))
+        syntax = [m for m in errors if m.kind == "syntax_error"]
+        if syntax:
+            raise PrologSyntaxError(str(path), syntax + [m for m in errors if m not in syntax],
+                                    warnings)
+        if errors:
+            raise PrologLoadError(str(path), errors, warnings)
+        for warning in warnings:
+            log.warning("%s", warning)
+        return LoadReport(loaded_path, warnings)
+
+    # ------------------------------------------------------------------ the bridge ops
+
+    def ping(self) -> str:
+        """Return ``"pong"``: the cheapest round trip through the facade."""
+        return self._must("ping")
+
+    def version(self) -> dict:
+        """Return the facade's API version and SWI-Prolog's, e.g. ``{"api": 1, "swipl": (9, 0, 4)}``."""
+        reply = self._must("version")
+        api, swipl = reply.args
+        return {"api": api.args[0], "swipl": tuple(swipl.args)}
+
+    def operations(self) -> list[str]:
+        """Return ``name/arity`` of every operation the facade dispatches, in table order."""
+        return [f"{op.args[0]}/{op.args[1]}" for op in self._must("operations")]
+
+    def variant(self, a: Term, b: Term) -> bool:
+        """Return whether ``a`` and ``b`` are variants (equal up to renaming, Prolog ``=@=``)."""
+        return self._holds("variant", a, b)
+
+    def parse(self, text: str) -> Term:
+        """Return the term that Prolog reads from ``text`` (one term, no full stop).
+
+        Variables keep their names; anonymous ones come back as ``_G0``, ``_G1``, ...
+        A syntax error raises :class:`PrologError` with ``syntax_error(...)``.
+        """
+        from creative_py.bridge.terms import PlString
+
+        return self._must("parse", PlString(text))
+
+    def load_ontology(self, path: PathLike) -> None:
+        """Load a background-knowledge file with ``knowledge:load_ontology/1``.
+
+        ``path`` is a file path (checked first) or an alias term such as
+        ``Compound("ontology", ("tools_hook",))``.
+        """
+        spec: Term
+        if isinstance(path, Compound):
+            spec = path
+        else:
+            resolved = Path(path).expanduser().resolve()
+            if not resolved.is_file():
+                raise PrologFileNotFoundError(str(path))
+            spec = str(resolved)
+        self._must("load_ontology", spec)
+
+
+def _load_message(term: Term) -> LoadMessage:
+    kind, file, line, text = term.args
+    return LoadMessage(
+        kind,
+        None if file == "none" else file,
+        None if line == "none" else line,
+        text.value if hasattr(text, "value") else str(text),
+        term,
+    )
+

@@ -1,0 +1,207 @@
+"""The Python model of Prolog terms.
+
+A Prolog term is one of these plain Python values:
+
+==========================  =====================================================
+Prolog                      Python
+==========================  =====================================================
+atom ``foo``, ``'a b'``     ``str`` (``"foo"``, ``"a b"``); the atom ``'[]'`` is
+                            ``"[]"``, distinct from the empty list
+string ``"text"``           :class:`PlString` (``PlString("text")``)
+integer, float              ``int`` (any size), ``float`` (NaN and infinities are
+                            refused when encoding)
+list ``[a, b]``, ``[]``     ``list`` (``["a", "b"]``, ``[]``); a partial list
+                            ``[a|T]`` is ``Compound("[|]", ("a", Var("T")))``
+compound ``f(a, X)``        :class:`Compound` (``Compound("f", ("a", Var("X")))``)
+variable ``X``, ``_``       :class:`Var` (``Var("X")``, anonymous ``Var()``)
+==========================  =====================================================
+
+Inside one term, every ``Var`` with the same name is the same Prolog variable; each
+anonymous ``Var()`` is a fresh one. Variables that Prolog returns keep the names they
+had in the request; new ones are named ``_G0``, ``_G1``, ... (see ``prolog/api.pl``).
+
+Clauses are terms too: ``Head :- Body`` is ``Compound(":-", (head, body))`` with a
+right-nested ``","`` conjunction as body; :func:`clause`, :func:`conj` and
+:func:`clause_parts` convert between that and ``(head, [literal, ...])``.
+
+``str()`` of a :class:`Compound`, :class:`Var` or :class:`PlString` is Prolog syntax
+(the clause operators ``:-``, ``,``, ``;`` and ``->`` written infix), produced by the
+bridge's one encoder, :func:`creative_py.bridge.codec.encode`.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from typing import Iterator, Optional, Sequence, Union
+
+_VAR_NAME = re.compile(r"[A-Z_][A-Za-z0-9_]*\Z")
+
+
+@dataclass(frozen=True)
+class PlString:
+    """A Prolog string object (``"text"``), as opposed to an atom (a Python ``str``)."""
+
+    value: str
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.value, str):
+            raise TypeError(f"PlString.value must be a str, got {type(self.value).__name__}")
+
+    def __str__(self) -> str:
+        from creative_py.bridge.codec import encode
+
+        return encode(self, operators=True)
+
+
+@dataclass(frozen=True)
+class Var:
+    """A Prolog variable: ``Var("X")`` is ``X``; ``Var()`` is the anonymous ``_``.
+
+    A name must be a Prolog variable name: an upper-case ASCII letter or ``_``, then
+    ASCII letters, digits or ``_``. The name ``"_"`` is the anonymous variable.
+    """
+
+    name: Optional[str] = None
+
+    def __post_init__(self) -> None:
+        if self.name is None:
+            return
+        if not isinstance(self.name, str) or not _VAR_NAME.match(self.name):
+            raise ValueError(
+                f"Var.name {self.name!r} is not a Prolog variable name "
+                "(an upper-case ASCII letter or '_' then letters, digits or '_')"
+            )
+        if self.name == "_":
+            object.__setattr__(self, "name", None)
+
+    @property
+    def anonymous(self) -> bool:
+        """Return whether this is the anonymous variable ``_``."""
+        return self.name is None
+
+    def __str__(self) -> str:
+        return "_" if self.name is None else self.name
+
+
+@dataclass(frozen=True)
+class Compound:
+    """A compound term ``name(arg1, ..., argN)``; ``args`` is a tuple (a list is copied).
+
+    Zero arguments (``foo()``) is allowed, as in SWI-Prolog 7 and later; it is not the
+    atom ``foo``.
+    """
+
+    name: str
+    args: tuple = ()
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.name, str):
+            raise TypeError(f"Compound.name must be a str, got {type(self.name).__name__}")
+        if not isinstance(self.args, tuple):
+            if isinstance(self.args, list):
+                object.__setattr__(self, "args", tuple(self.args))
+            else:
+                raise TypeError(
+                    f"Compound.args must be a tuple or list, got {type(self.args).__name__}"
+                )
+
+    @property
+    def arity(self) -> int:
+        """Return the number of arguments."""
+        return len(self.args)
+
+    @property
+    def indicator(self) -> str:
+        """Return the predicate indicator ``name/arity`` as text (atom name unquoted)."""
+        return f"{self.name}/{len(self.args)}"
+
+    def __str__(self) -> str:
+        from creative_py.bridge.codec import encode
+
+        return encode(self, operators=True)
+
+
+Term = Union[str, int, float, PlString, Var, Compound, list]
+"""Any Prolog term in the Python model (see the module docstring)."""
+
+
+def conj(literals: Sequence[Term]) -> Term:
+    """Return the right-nested conjunction ``(L1, (L2, ...))`` of ``literals``.
+
+    An empty sequence gives the atom ``true``; one literal gives that literal.
+    """
+    items = list(literals)
+    if not items:
+        return "true"
+    result = items[-1]
+    for literal in reversed(items[:-1]):
+        result = Compound(",", (literal, result))
+    return result
+
+
+def conj_to_list(body: Term) -> list:
+    """Return the literals of a conjunction as a list, flattening nested ``,``/2.
+
+    The atom ``true`` alone is the empty body ``[]``; ``true`` inside a longer
+    conjunction is kept (it is a literal there).
+    """
+    if body == "true":
+        return []
+    return list(_flatten_conj(body))
+
+
+def _flatten_conj(term: Term) -> Iterator[Term]:
+    stack = [term]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Compound) and item.name == "," and len(item.args) == 2:
+            stack.append(item.args[1])
+            stack.append(item.args[0])
+        else:
+            yield item
+
+
+def clause(head: Term, body: Sequence[Term] = ()) -> Term:
+    """Return the clause ``head :- L1, ..., Ln``, or ``head`` itself for an empty body."""
+    literals = list(body)
+    if not literals:
+        return head
+    return Compound(":-", (head, conj(literals)))
+
+
+def clause_parts(term: Term) -> tuple[Term, list]:
+    """Return ``(head, body_literals)`` of a clause; a unit clause has an empty body."""
+    if isinstance(term, Compound) and term.name == ":-" and len(term.args) == 2:
+        return term.args[0], conj_to_list(term.args[1])
+    return term, []
+
+
+def variables(term: Term) -> list[Var]:
+    """Return the named variables of ``term`` in depth-first, left-to-right order, once each."""
+    seen: dict[str, Var] = {}
+    stack = [term]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Var):
+            if item.name is not None and item.name not in seen:
+                seen[item.name] = item
+        elif isinstance(item, Compound):
+            stack.extend(reversed(item.args))
+        elif isinstance(item, list):
+            stack.extend(reversed(item))
+    return list(seen.values())
+
+
+def is_ground(term: Term) -> bool:
+    """Return whether ``term`` contains no variable (named or anonymous)."""
+    stack = [term]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Var):
+            return False
+        if isinstance(item, Compound):
+            stack.extend(item.args)
+        elif isinstance(item, list):
+            stack.extend(item)
+    return True

@@ -1,0 +1,375 @@
+:- module(api,
+          [ api_request/2,              % +RequestText, -ReplyJson
+            api_call/2,                 % +Request, -Reply
+            api_operation/1             % ?NameArity
+          ]).
+
+/** <module> The facade: the one entry point Python calls through the bridge
+
+Python (`creative_py/bridge/`) calls exactly one predicate, api_request/2, with a
+constant query shape: the varying request travels as a string argument that this
+module parses, so pyswip never sees a new query text. Each operation is one row of the
+table api_op/3, deterministic, and answers exactly one ground reply term:
+
+    ok(Result)     the operation's goal succeeded (first solution; operations that
+                   want every answer collect them with findall/3 in their goal)
+    failed         the goal has no solution ("no")
+    error(E)       the goal raised E (a request that does not parse, or names no
+                   operation, raises too)
+
+Variables in a reply are bound to '$VAR'(Name): a variable of the request keeps its
+name, a new one is named '_G0', '_G1', ... (skipping names the request uses), so
+clauses with variables travel back and forth with stable names. The reply is written
+as JSON for the Python decoder (creative_py/bridge/codec.py describes the schema):
+atoms as JSON strings, proper lists as arrays, numbers as numbers, strings as
+{"s":Text}, variables as {"v":Name}, compounds as {"f":Name,"a":Args}, blobs as
+{"b":Text}.
+
+To add an operation, add ONE row to api_op/3 (request term, result term, goal) and,
+if it needs a new module, its use_module/1 below.
+
+Not yet dispatched (their modules were not in prolog/ when this facade was written):
+see the table comment.
+*/
+
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(http/json), [json_write/3]).
+
+:- use_module(knowledge, [load_ontology/1]).
+:- use_module(lgg, [term_lgg/3, clause_lgg/3]).
+:- use_module(subsumption,
+              [ theta_subsumes/2, theta_subsumes/3, clause_reduce/2, clause_reduce/3,
+                clause_covers/2, clause_violations/3, clause_violations/4 ]).
+:- use_module(geometry_clp, [solve_pose/5, solve_size/4]).
+
+%!  api_op(?Request, -Result, -Goal) is nondet.
+%
+%   The operation table: Request is the term Python sends, Goal is called once, and
+%   Result (bound by Goal) is the answer inside ok(Result).
+
+% The bridge itself.
+api_op(ping, pong, true).
+api_op(version, version(api(Api), swipl(Major, Minor, Patch)),
+       api_version_(Api, Major, Minor, Patch)).
+api_op(operations, Ops, findall(Op, api_operation(Op), Ops)).
+api_op(variant(A, B), true, A =@= B).
+api_op(parse(Text), Term, api_parse_(Text, Term)).
+api_op(consult(File), Report, api_consult_(File, Report)).
+api_op(load_status, status(Errors, Warnings), api_load_status_(Errors, Warnings)).
+% Knowledge.
+api_op(load_ontology(Spec), true, load_ontology(Spec)).
+% Generalisation and subsumption (lgg.pl, subsumption.pl).
+api_op(term_lgg(T1, T2), G, term_lgg(T1, T2, G)).
+api_op(clause_lgg(C1, C2), G, clause_lgg(C1, C2, G)).
+api_op(theta_subsumes(G, S), true, theta_subsumes(G, S)).
+api_op(theta_subsumes(G, S, Options), true, theta_subsumes(G, S, Options)).
+api_op(clause_reduce(C), R, clause_reduce(C, R)).
+api_op(clause_reduce(C, Options), R, clause_reduce(C, R, Options)).
+api_op(clause_covers(C, E), true, clause_covers(C, E)).
+api_op(clause_violations(C, E), V, clause_violations(C, E, V)).
+api_op(clause_violations(C, E, Options), V, clause_violations(C, E, V, Options)).
+% Geometry: spatial literals -> pose numbers, structural literals -> dimensions.
+api_op(solve_pose(Case, Required, Negated, Context), R,
+       solve_pose(Case, Required, Negated, Context, R)).
+api_op(solve_size(Kind, Literals, Context), R, solve_size(Kind, Literals, Context, R)).
+
+%!  api_operation(?NameArity) is nondet.
+%
+%   NameArity is Name/Arity of an operation the facade dispatches.
+%
+%   ==
+%   ?- api_operation(ping/0).
+%   true.
+%   ==
+
+api_operation(Name/Arity) :-
+    clause(api_op(Request, _, _), _),
+    functor(Request, Name, Arity).
+
+%!  api_request(+RequestText, -ReplyJson) is det.
+%
+%   Parse RequestText (a string or atom holding one Prolog term, no full stop), run
+%   the operation it names with api_call/2 and unify ReplyJson with the JSON text of
+%   the reply. A request that does not parse answers error(syntax_error(...)); this
+%   predicate itself never fails and never raises.
+%
+%   ==
+%   ?- api_request("term_lgg(f(a,b),f(c,b))", R).
+%   R = "{\"f\":\"ok\",\"a\":[{\"f\":\"f\",\"a\":[{\"v\":\"_G0\"},\"b\"]}]}".
+%   ==
+
+api_request(Text, ReplyJson) :-
+    catch(api_parse_request_(Text, Request, Bindings), Error, true),
+    (   var(Error)
+    ->  api_call_(Request, Bindings, Reply)
+    ;   api_ground_reply_([], error(Error), Reply)
+    ),
+    api_reply_json_(Reply, ReplyJson).
+
+api_parse_request_(Text, Request, Bindings) :-
+    must_be(text, Text),
+    term_string(Request, Text, [variable_names(Bindings)]).
+
+%!  api_call(+Request, -Reply) is det.
+%
+%   Run the operation Request from the table and unify Reply with ok(Result),
+%   failed or error(E), made ground as described in the module header. This is the
+%   term-level entry (for Prolog callers and tests); Python uses api_request/2.
+%
+%   ==
+%   ?- api_call(term_lgg(f(a, b), f(c, b)), R).
+%   R = ok(f('$VAR'('_G0'), b)).
+%   ?- api_call(no_such_op, R).
+%   R = error(error(existence_error(api_operation, no_such_op/0), _)).   % made ground
+%   ==
+
+api_call(Request, Reply) :-
+    api_call_(Request, [], Reply).
+
+api_call_(Request, Bindings, Reply) :-
+    catch(api_run_(Request, Reply0), Error, Reply0 = error(Error)),
+    api_ground_reply_(Bindings, Reply0, Reply).
+
+api_run_(Request, Reply) :-
+    (   var(Request)
+    ->  instantiation_error(Request)
+    ;   api_op(Request, Result, Goal)
+    ->  (   call(Goal)
+        ->  Reply = ok(Result)
+        ;   Reply = failed
+        )
+    ;   callable(Request)
+    ->  functor(Request, Name, Arity),
+        existence_error(api_operation, Name/Arity)
+    ;   type_error(callable, Request)
+    ).
+
+%   api_ground_reply_(+Bindings, +Reply0, -Reply) is det.
+%
+%   Copy Reply0 without attributes (constraints are not data) and bind its variables
+%   to '$VAR'(Name): request variables keep their names, new ones get '_G<N>'.
+
+api_ground_reply_(Bindings, Reply0, Reply) :-
+    copy_term(Bindings-Reply0, Bindings1-Reply1, _Constraints),
+    (   acyclic_term(Reply1)
+    ->  Reply2 = Reply1
+    ;   Reply2 = error(error(type_error(acyclic_term, reply), _))
+    ),
+    foldl(api_bind_name_, Bindings1, [], Used),
+    term_variables(Reply2, Fresh),
+    api_name_fresh_(Fresh, Used, 0),
+    Reply = Reply2.
+
+api_bind_name_(Name = Var, Used, [Name|Used]) :-
+    (   var(Var)
+    ->  Var = '$VAR'(Name)
+    ;   true
+    ).
+
+api_name_fresh_([], _, _).
+api_name_fresh_([Var|Vars], Used, N0) :-
+    api_fresh_name_(Used, N0, Name, N),
+    Var = '$VAR'(Name),
+    api_name_fresh_(Vars, Used, N).
+
+api_fresh_name_(Used, N0, Name, N) :-
+    format(atom(Name0), '_G~d', [N0]),
+    N1 is N0 + 1,
+    (   memberchk(Name0, Used)
+    ->  api_fresh_name_(Used, N1, Name, N)
+    ;   Name = Name0,
+        N = N1
+    ).
+
+%   api_reply_json_(+Reply, -Json) is det.
+
+api_reply_json_(Reply, Json) :-
+    catch(with_output_to(string(Json), api_write_json_(Reply)), Error, true),
+    (   var(Error)
+    ->  true
+    ;   format(string(Text), "~q", [Error]),
+        with_output_to(string(Json),
+                       api_write_json_(error(error(api_reply_unwritable(Text), _))))
+    ).
+
+api_write_json_(T) :-
+    (   var(T)
+    ->  write('{"v":"_"}')
+    ;   T == []
+    ->  write('[]')
+    ;   is_list(T)
+    ->  write('['),
+        api_write_json_items_(T),
+        write(']')
+    ;   string(T)
+    ->  write('{"s":'),
+        api_write_json_text_(T),
+        write('}')
+    ;   atom(T)
+    ->  api_write_json_text_(T)
+    ;   integer(T)
+    ->  write(T)
+    ;   float(T)
+    ->  api_write_json_float_(T)
+    ;   rational(T, Num, Den)
+    ->  api_write_json_(rdiv(Num, Den))
+    ;   blob(T, _)
+    ->  format(string(Text), "~q", [T]),
+        write('{"b":'),
+        api_write_json_text_(Text),
+        write('}')
+    ;   T = '$VAR'(Name),
+        atom(Name)
+    ->  write('{"v":'),
+        api_write_json_text_(Name),
+        write('}')
+    ;   T = '$VAR'(N),
+        integer(N)
+    ->  format(string(Name), "~W", [T, [numbervars(true)]]),
+        write('{"v":'),
+        api_write_json_text_(Name),
+        write('}')
+    ;   compound_name_arguments(T, Name, Args),
+        write('{"f":'),
+        api_write_json_text_(Name),
+        write(',"a":['),
+        api_write_json_items_(Args),
+        write(']}')
+    ).
+
+api_write_json_items_([]).
+api_write_json_items_([X|Xs]) :-
+    api_write_json_(X),
+    (   Xs == []
+    ->  true
+    ;   write(','),
+        api_write_json_items_(Xs)
+    ).
+
+api_write_json_text_(Text) :-
+    atom_string(Text, String),
+    json_write(current_output, String, [width(0)]).
+
+api_write_json_float_(F) :-
+    float_class(F, Class),
+    (   Class == nan
+    ->  write('NaN')
+    ;   Class == infinite
+    ->  (   F > 0
+        ->  write('Infinity')
+        ;   write('-Infinity')
+        )
+    ;   format('~w', [F])
+    ).
+
+%   api_version_(-Api, -Major, -Minor, -Patch) is det.
+
+api_version_(1, Major, Minor, Patch) :-
+    current_prolog_flag(version, V),
+    Major is V // 10000,
+    Minor is (V // 100) mod 100,
+    Patch is V mod 100.
+
+%   api_parse_(+Text, -Term) is det.
+%
+%   Read Text (one term, no full stop) keeping its variable names.
+
+api_parse_(Text, Term) :-
+    must_be(text, Text),
+    term_string(Term, Text, [variable_names(Bindings)]),
+    maplist(api_bind_var_name_, Bindings).
+
+api_bind_var_name_(Name = '$VAR'(Name)).
+
+%   api_load_status_(-Errors, -Warnings) is det.
+%
+%   The numbers of error and warning messages printed since Prolog started.
+
+api_load_status_(Errors, Warnings) :-
+    statistics(errors, Errors),
+    statistics(warnings, Warnings).
+
+		 /*******************************
+		 *            CONSULT            *
+		 *******************************/
+
+%   api_consult_(+File, -Report) is det.
+%
+%   Load File (an existing file, else existence_error(source_sink, File)) into
+%   module user, capturing the errors and warnings printed while loading instead
+%   of printing them. Report is load_report(Path, Errors, Warnings), each a list of
+%   message(Kind, File, Line, Text), Kind one of syntax_error, error, warning and
+%   Line an integer or none. A load that throws runs nodebug/0 (a failed load can
+%   leave the debugger on) and passes the exception on.
+
+:- thread_local api_capturing_/0.
+:- thread_local api_load_message_/4.
+
+api_consult_(File, load_report(Path, Errors, Warnings)) :-
+    must_be(text, File),
+    atom_string(FileAtom, File),
+    (   absolute_file_name(FileAtom, Path,
+                           [access(read), file_type(prolog), file_errors(fail)]),
+        exists_file(Path)
+    ->  true
+    ;   existence_error(source_sink, File)
+    ),
+    catch(setup_call_cleanup(api_capture_begin_,
+                             api_load_and_collect_(Path, Messages),
+                             api_capture_end_),
+          Error,
+          ( nodebug, throw(Error) )),
+    partition(api_is_warning_, Messages, Warnings, Errors).
+
+api_load_and_collect_(Path, Messages) :-
+    load_files(user:Path, [if(true)]),
+    findall(message(Kind, F, L, Text), api_load_message_(Kind, F, L, Text), Messages).
+
+api_is_warning_(message(warning, _, _, _)).
+
+api_capture_begin_ :-
+    retractall(api_load_message_(_, _, _, _)),
+    assertz(api_capturing_).
+
+api_capture_end_ :-
+    retractall(api_capturing_),
+    retractall(api_load_message_(_, _, _, _)).
+
+:- multifile user:message_hook/3.
+
+%   While api_consult_/2 runs, record error and warning messages (and print
+%   nothing): the reply carries them to Python.
+
+user:message_hook(Term, Kind, Lines) :-
+    api_capturing_,
+    memberchk(Kind, [error, warning]),
+    api_record_message_(Term, Kind, Lines).
+
+api_record_message_(Term, Kind0, Lines) :-
+    (   Term = error(syntax_error(_), _)
+    ->  Kind = syntax_error
+    ;   Kind = Kind0
+    ),
+    api_message_location_(Term, File, Line),
+    with_output_to(string(Text0), print_message_lines(current_output, '', Lines)),
+    split_string(Text0, "", "\n ", [Text]),
+    assertz(api_load_message_(Kind, File, Line, Text)).
+
+api_message_location_(Term, File, Line) :-
+    (   Term = error(_, file(File0, Line0, _, _)),
+        atom(File0)
+    ->  File = File0,
+        Line = Line0
+    ;   Term = error(_, stream(Stream, Line0, _, _)),
+        is_stream(Stream),
+        stream_property(Stream, file_name(File0))
+    ->  File = File0,
+        Line = Line0
+    ;   source_location(File0, Line0)
+    ->  File = File0,
+        Line = Line0
+    ;   File = none,
+        Line = none
+    ).
