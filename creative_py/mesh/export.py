@@ -174,12 +174,14 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
         A dimension below ``settings.min_feature`` or a spec whose parts do not make one
         solid; the message names the tool and the field.
     FileExistsError
-        ``out_dir/<name>`` exists and ``overwrite`` is false.
+        ``out_dir/<name>`` exists and ``overwrite`` is false, or it is not a folder.
     """
     check_min_feature(spec, settings)
     out_dir = Path(out_dir)
     out_dir.mkdir(parents=True, exist_ok=True)
     target = out_dir / spec.name
+    if target.exists() and not target.is_dir():
+        raise FileExistsError(f"{target}: exists and is not a tool folder; not replacing it")
     if target.exists() and not overwrite:
         raise FileExistsError(f"{target}: tool folder exists (pass overwrite=True to replace it)")
     tmp = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".tmp", dir=out_dir))
