@@ -50,7 +50,7 @@ from scipy.spatial import ConvexHull, QhullError
 from creative_py.perception.frame import Frame
 from creative_py.perception.noise import NoiseModel
 from creative_py.perception.segment import body_mask
-from creative_py.perception.unproject import unproject_mask
+from creative_py.perception.unproject import masked_median_depth, unproject_pixels
 
 log = logging.getLogger(__name__)
 
@@ -65,33 +65,49 @@ class EstimatorConfig:
         Fewest fused points for an object to be reported.
     min_pixels_per_camera : int
         Fewest pixels for a camera to count as seeing the object.
-    extent_trim : float
-        Fraction of points ignored at each end of every extent (robustness to noise).
+    extent_trim : float or None
+        Fraction of points ignored at each end of every extent and of the heights
+        (robustness to outliers). None: 0. Trimming shortens the extents of small
+        objects (a 3 cm cube is 10 pixels across from 1 m at 320x240): the median
+        filter is the better defence against depth noise.
+    median_filter : bool or None
+        Take heights (top, bottom, top-face band, slope profile) from the object's depth
+        median-filtered over its 3x3 in-mask neighbourhood; the footprint (x, y) always
+        comes from the raw depth, because at a silhouette the filter drags side-face
+        pixels to the top face's depth and shifts them towards the camera (measured:
+        1.0 mm mean centre error on a noise-free cube instead of 0.2 mm). None: on when
+        a noise model with depth noise is given.
     yaw_step_deg : float
         Heading step of the minimum-area rectangle scan, degrees.
     profile_bins : int
         Bins of the height profile used to find a slope.
-    slope_rise_fraction : float
-        A footprint axis is sloped when the top rises by at least this fraction of the
-        object's height across it.
+    slope_rise_fraction, slope_rise_min_m : float
+        A footprint axis is sloped when the top rises across it by at least this
+        fraction of the object's height and at least this many metres.
     square_tolerance : float
         Footprint sides differing by less than this fraction are a square.
     round_fill : float
         A square footprint whose hull fills less than this fraction of its rectangle
         is round (a disc fills pi/4 = 0.785).
     top_band_fraction : float
-        Points within this fraction of the height below the top form the top face.
+        Points within this fraction of the height below the top (or three times the
+        remaining depth noise, if larger) form the top face.
+    noisy_top_quantile : float
+        With a noise model, the top is the height quantile 1 - this, not the maximum.
     """
 
     min_points: int = 12
     min_pixels_per_camera: int = 4
-    extent_trim: float = 0.0
+    extent_trim: float | None = None
+    median_filter: bool | None = None
     yaw_step_deg: float = 0.25
     profile_bins: int = 8
     slope_rise_fraction: float = 0.45
+    slope_rise_min_m: float = 0.008
     square_tolerance: float = 0.12
     round_fill: float = 0.88
     top_band_fraction: float = 0.15
+    noisy_top_quantile: float = 0.1
 
 
 @dataclass(frozen=True)
@@ -155,49 +171,66 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
                              f"got {bid!r}")
     support_z = dict(support_z or {})
     heights = dict(heights or {})
-    if noise is not None and not noise.is_zero:
+    noisy = noise is not None and not noise.is_zero
+    if noisy:
         frames = [noise.apply(f, rng) for f in frames]
+    trim = config.extent_trim if config.extent_trim is not None else 0.0
+    smooth = (config.median_filter if config.median_filter is not None
+              else noise is not None and noise.depth_sigma_m > 0.0)
+    # The sensor's depth noise is known from its model; a 3x3 median leaves about half.
+    sigma_z = 0.0 if noise is None else noise.depth_sigma_m * (0.5 if smooth else 1.0)
+    if not 0.0 <= trim < 0.5:
+        raise ValueError(f"estimate_objects: config field 'extent_trim' must lie in [0, 0.5), "
+                         f"got {trim!r}")
     out: dict[str, ObjectEstimate] = {}
     for name, bid in bodies.items():
-        chunks, cams = [], []
+        chunks, heights_f, cams = [], [], []
         for frame in frames:
             mask = body_mask(frame.seg, int(bid))
             n = int(mask.sum())
             if n < config.min_pixels_per_camera:
                 continue
-            pts = unproject_mask(frame, mask)
+            rows, cols = np.nonzero(mask)
+            pts = unproject_pixels(frame, rows, cols)
             chunks.append(pts)
+            if smooth:
+                filtered = unproject_pixels(frame, rows, cols,
+                                            masked_median_depth(frame.depth, mask))
+                heights_f.append(filtered[:, 2])
+            else:
+                heights_f.append(pts[:, 2])
             cams.append(frame.name)
         n_pts = sum(len(c) for c in chunks)
         if n_pts < config.min_points:
             log.info("object %s not seen (%d points)", name, n_pts)
             continue
-        est = _estimate_one(name, np.concatenate(chunks), tuple(cams),
-                            support_z.get(name), heights.get(name), config)
+        est = _estimate_one(name, np.concatenate(chunks), np.concatenate(heights_f), tuple(cams),
+                            support_z.get(name), heights.get(name), trim, sigma_z, config)
         out[name] = est
     return out
 
 
-def _estimate_one(name: str, pts: np.ndarray, cams: tuple[str, ...],
-                  support: float | None, height: float | None,
+def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, cams: tuple[str, ...],
+                  support: float | None, height: float | None, trim: float, sigma_z: float,
                   cfg: EstimatorConfig) -> ObjectEstimate:
-    z = pts[:, 2]
-    top = _quantile(z, 1.0 - cfg.extent_trim)
+    """Estimate one object from its fused points (N x 3) and their (filtered) heights z."""
+    # With noisy heights the maximum is an outlier: take a high quantile instead.
+    top = _quantile(z, 1.0 - max(trim, cfg.noisy_top_quantile if sigma_z > 0 else 0.0))
     if support is not None:
         bottom = float(support)
     elif height is not None:
         bottom = top - float(height)
     else:
-        bottom = _quantile(z, cfg.extent_trim)
+        bottom = _quantile(z, trim)
     dz = max(top - bottom, 0.0)
     xy = pts[:, :2]
     theta = _min_area_heading(xy, cfg.yaw_step_deg)
-    ext = _extents(xy, theta, cfg.extent_trim)
+    ext = _extents(xy, theta, trim)
     du, dv = ext[1] - ext[0], ext[3] - ext[2]
     # Which footprint axis, if any, does the top slope along?
     rises = [_profile_rise(xy, z, theta + k * math.pi / 2, cfg) for k in (0, 1)]
     k_slope = int(np.argmax([abs(r) for r in rises]))
-    sloped = dz > 0 and abs(rises[k_slope]) >= cfg.slope_rise_fraction * dz
+    sloped = abs(rises[k_slope]) >= max(cfg.slope_rise_fraction * dz, cfg.slope_rise_min_m)
     if sloped:
         symmetry = "none"
         yaw = theta + k_slope * math.pi / 2
@@ -211,14 +244,14 @@ def _estimate_one(name: str, pts: np.ndarray, cams: tuple[str, ...],
                 symmetry, yaw = "round", 0.0
             else:
                 symmetry = "half_pi"
-                band = z >= top - cfg.top_band_fraction * max(dz, 1e-6)
+                band = z >= top - max(cfg.top_band_fraction * dz, 3.0 * sigma_z, 1e-6)
                 yaw = _square_heading(xy[band], theta)
                 yaw = _wrap(yaw, math.pi / 4)
         else:
             symmetry = "pi"
             yaw = theta if du >= dv else theta + math.pi / 2
             yaw = _wrap(yaw, math.pi / 2)
-    ext = _extents(xy, yaw, cfg.extent_trim)
+    ext = _extents(xy, yaw, trim)
     c_u, c_v = (ext[0] + ext[1]) / 2, (ext[2] + ext[3]) / 2
     cy, sy = math.cos(yaw), math.sin(yaw)
     x = c_u * cy - c_v * sy
