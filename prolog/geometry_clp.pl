@@ -1,0 +1,754 @@
+:- module(geometry_clp,
+          [ spatial_literal/2,        % +Case, +Literal
+            pose_geometry/5,          % +Case, +Tool, +Target, +Facts, -Geometry
+            spatial_holds/4,          % +Case, +Literal, +Pose, +Geometry
+            pose_constraints/5,       % +Case, +Required, +Negated, +Context, -Pose
+            pose_search/2,            % +Pose, -Ground
+            solve_pose/5,             % +Case, +Required, +Negated, +Context, -Result
+            size_constraints/4,       % +Kind, +Literals, +Context, -Dims
+            size_search/2,            % +Dims, -Ground
+            solve_size/4              % +Kind, +Literals, +Context, -Result
+          ]).
+
+/** <module> CLP(R)/CLP(FD) models: qualitative literals to numbers
+
+Two models, each split like library(clpfd) into a *core relation* that posts
+constraints and a *search* that picks values:
+
+  - **Pose**: spatial literals (behind/2, hook_down/1, near/2, ...) to the pose numbers
+    of a tool relative to its target, hook_pose(Dx, Dy, Roll) or wedge_pose(R, Gap,
+    Yaw) (metres, radians; see ontology/spatial.pl).  pose_constraints/5 posts,
+    pose_search/2 labels, solve_pose/5 does both and names a minimal conflict when
+    there is no pose.
+  - **Size**: structural literals (handle_length(T, long), shape(W, box), ...) to the
+    dimensions of a new tool, named as the fields of HookSpec / BlockSpec
+    (creative_py/mesh/spec.py).  size_constraints/4 posts, size_search/2 labels,
+    solve_size/4 does both.
+
+The definitions are data of the knowledge base (module knowledge): spatial_definition/4,
+pose_domain/3, geometry_default/4, qualitative_range/5, size_field/3, size_choice/4,
+size_parameter/3.  Metres are CLP(R) variables; the hook angle is a CLP(FD) integer
+(whole degrees).
+
+**Search.** Each variable in turn, in the order of the pose or dims term, is bound to
+the midpoint of its current interval (clpr inf/2 and sup/2, clpfd fd_inf/2 and
+fd_sup/2), rounded to 0.1 mm (0.0001 rad) when that stays strictly inside.  Earlier
+choices narrow later intervals, so the point is inside the feasible region, never on a
+bound unless the region is a single point.
+
+**Negation.** A literal that must not hold requires the complement of its definition.
+A definition with several clauses (hook_flat/1: Roll >= 1.2 or Roll =< -1.2) is a
+disjunction, so its complement is the conjunction of the clauses' complements; the
+complement of one clause (a conjunction) is a disjunction: one of its comparisons is
+violated.  pose_constraints/5 enumerates these choices on backtracking, comparisons in
+the order the definition lists them; solve_pose/5 takes the first choice that is
+feasible.  The ontology lists first the side that is meaningful (not behind: Dx below
+the minimum, i.e. the prong in front of or beside the cube).
+
+**Conflicts.** When there is no solution, the conflict set is found by deletion: drop
+each literal (and, for sizes, each context fact) in turn, keeping it out while the rest
+is still infeasible.  The remainder is minimal: removing any one of its members makes
+the problem feasible.  The pose domain and the property domains (union of the
+qualitative ranges) are always posted and never named.
+*/
+
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(clpr)).
+:- use_module(library(clpfd), [ (#>=)/2, (#=<)/2, (#>)/2, (#<)/2, (#=)/2,
+                                fd_inf/2, fd_sup/2, op(_, _, _) ]).
+:- use_module(knowledge).
+
+                 /*******************************
+                 *     SPATIAL DEFINITIONS      *
+                 *******************************/
+
+%!  spatial_literal(+Case, +Literal) is semidet.
+%
+%   Literal is a spatial literal of Case (hook or wedge): the ontology defines it over
+%   the case's pose numbers.
+%
+%   ==
+%   ?- spatial_literal(hook, behind(hook_a2, cube1)).
+%   true.
+%   ==
+spatial_literal(Case, Literal) :-
+    must_be(oneof([hook, wedge]), Case),
+    must_be(callable, Literal),
+    functor(Literal, N, A),
+    functor(Template, N, A),
+    once(kb_clause(spatial_definition(Case, Template, _, _), true)).
+
+%!  pose_geometry(+Case, +Tool, +Target, +Facts:list, -Geometry:list) is det.
+%
+%   Geometry lists Name=Value for every geometry parameter of Case
+%   (ontology/spatial.pl, geometry_default/4), taken from the primitive facts Facts
+%   where they say it, else the default.  Tool and Target may be unbound (then only
+%   facts naming no tool or target are used).
+%
+%   Hook: cube_half from size(Target, Sx, _, _); prong_half from hook_width_m(Tool, W)
+%   (a stick: handle_width_m); handle_half from handle_width_m(Tool, W);
+%   tube_length from tube_length_m/2; dx_min, dx_max, dy_min, dy_max from tube_mouth/4,
+%   tube_length_m/2, tube_inner_m/3 and pose(Target, ...): the prong stays inside the
+%   tube.  Wedge: door_width from door_width_m(Target, W); door_angle from
+%   door_angle(Target, A); wedge_half from size(Tool, Sx, _, _) or block_length_m/2.
+%
+%   ==
+%   ?- pose_geometry(hook, h, cube1, [size(cube1, 0.04, 0.04, 0.04)], G),
+%      memberchk(cube_half=C, G).
+%   C = 0.02.
+%   ==
+pose_geometry(Case, Tool, Target, Facts, Geometry) :-
+    must_be(oneof([hook, wedge]), Case),
+    must_be(list, Facts),
+    findall(Name=Value,
+            ( kb_clause(geometry_default(Case, Name, Default, _), true),
+              Value0 = Default,
+              geometry_value_(Case, Name, Tool, Target, Facts, Value0, Value)
+            ),
+            Geometry0),
+    derived_geometry_(Case, Tool, Target, Facts, Geometry0, Geometry).
+
+geometry_value_(hook, cube_half, _, Target, Facts, _, V) :-
+    nonvar(Target),
+    memberchk(size(Target, Sx, _, _), Facts),
+    !,
+    V is Sx / 2.
+geometry_value_(hook, prong_half, Tool, _, Facts, _, V) :-
+    nonvar(Tool),
+    (   memberchk(hook_width_m(Tool, W), Facts)
+    ->  true
+    ;   memberchk(handle_width_m(Tool, W), Facts)
+    ),
+    !,
+    V is W / 2.
+geometry_value_(hook, handle_half, Tool, _, Facts, _, V) :-
+    nonvar(Tool),
+    memberchk(handle_width_m(Tool, W), Facts),
+    !,
+    V is W / 2.
+geometry_value_(hook, tube_length, _, _, Facts, _, L) :-
+    memberchk(tube_length_m(_, L), Facts),
+    !.
+geometry_value_(wedge, door_width, _, Target, Facts, _, W) :-
+    memberchk(door_width_m(Target, W), Facts),
+    !.
+geometry_value_(wedge, door_angle, _, Target, Facts, _, A) :-
+    memberchk(door_angle(Target, A), Facts),
+    !.
+geometry_value_(wedge, wedge_half, Tool, _, Facts, _, V) :-
+    nonvar(Tool),
+    (   memberchk(size(Tool, Sx, _, _), Facts)
+    ->  true
+    ;   memberchk(block_length_m(Tool, Sx), Facts)
+    ),
+    !,
+    V is Sx / 2.
+geometry_value_(_, _, _, _, _, V, V).
+
+%   The tube bounds depend on the other parameters: computed after them.
+derived_geometry_(hook, _Tool, Target, Facts, G0, G) :-
+    nonvar(Target),
+    memberchk(tube_mouth(Tube, MX, MY, _), Facts),
+    memberchk(tube_length_m(Tube, L), Facts),
+    memberchk(pose(Target, CX, CY, _, _), Facts),
+    !,
+    memberchk(prong_half=PH, G0),
+    memberchk(handle_half=HH, G0),
+    memberchk(clearance=C, G0),
+    DxMax is MX + L - CX - PH,
+    DxMin is MX - CX + PH,
+    (   memberchk(tube_inner_m(Tube, W, _), Facts)
+    ->  Room is W / 2 - HH - C,
+        DyMax is MY - CY + Room,
+        DyMin is MY - CY - Room,
+        Set = [dx_max=DxMax, dx_min=DxMin, dy_max=DyMax, dy_min=DyMin]
+    ;   Set = [dx_max=DxMax, dx_min=DxMin]
+    ),
+    foldl(set_param_, Set, G0, G).
+derived_geometry_(_, _, _, _, G, G).
+
+set_param_(Name=Value, G0, G) :-
+    selectchk(Name=_, G0, Name=Value, G).
+
+%!  spatial_holds(+Case, +Literal, +Pose, +Geometry) is semidet.
+%
+%   The spatial Literal holds for the ground pose term Pose (hook_pose/3 or
+%   wedge_pose/3) in the task geometry Geometry (from pose_geometry/5): the numbers
+%   satisfy every comparison of one clause of its definition.
+%
+%   ==
+%   ?- pose_geometry(hook, _, _, [], G),
+%      spatial_holds(hook, behind(h, cube1), hook_pose(0.04, 0.0, 0.0), G).
+%   true.
+%   ==
+spatial_holds(Case, Literal, Pose, Geometry) :-
+    must_be(ground, Pose),
+    definition_clauses_(Case, Literal, Pose, Clauses),
+    member(Comparisons, Clauses),
+    maplist(holds_(Geometry), Comparisons),
+    !.
+
+holds_(Geometry, Comparison) :-
+    instantiate_(Comparison, Geometry, C),
+    call(C).
+
+%   definition_clauses_(+Case, +Literal, ?Pose, -Clauses): the constraint lists of
+%   Literal's definition, sharing Pose's variables.
+definition_clauses_(Case, Literal, Pose, Clauses) :-
+    must_be(callable, Literal),
+    functor(Literal, N, A),
+    functor(Template, N, A),
+    findall(Pose-Cs, kb_clause(spatial_definition(Case, Template, Pose, Cs), true), Pairs),
+    (   Pairs == []
+    ->  domain_error(spatial_literal(Case), Literal)
+    ;   maplist(pose_clause_(Pose), Pairs, Clauses)
+    ).
+
+pose_clause_(Pose, Pose-Cs, Cs).
+
+%   instantiate_(+Comparison, +Geometry, -Numeric): geometry parameter names replaced
+%   by their values, ground subexpressions evaluated.
+instantiate_(Comparison, Geometry, Numeric) :-
+    Comparison =.. [Op, L0, R0],
+    comparison_(Op),
+    !,
+    expr_(L0, Geometry, L),
+    expr_(R0, Geometry, R),
+    Numeric =.. [Op, L, R].
+instantiate_(Comparison, _, _) :-
+    domain_error(linear_comparison, Comparison).
+
+comparison_(>=).
+comparison_(=<).
+comparison_(>).
+comparison_(<).
+
+expr_(V, _, V) :-
+    var(V),
+    !.
+expr_(N, _, N) :-
+    number(N),
+    !.
+expr_(A, Geometry, V) :-
+    atom(A),
+    !,
+    (   memberchk(A=V, Geometry)
+    ->  true
+    ;   A == pi
+    ->  V is pi
+    ;   existence_error(geometry_parameter, A)
+    ).
+expr_(E0, Geometry, E) :-
+    compound(E0),
+    E0 =.. [F|Args0],
+    exprs_(Args0, Geometry, Args),
+    E1 =.. [F|Args],
+    (   ground(E1)
+    ->  E is E1
+    ;   E = E1
+    ).
+
+exprs_([], _, []).
+exprs_([E0|Es0], Geometry, [E|Es]) :-
+    expr_(E0, Geometry, E),
+    exprs_(Es0, Geometry, Es).
+
+negate_(>=, <).
+negate_(=<, >).
+negate_(>, =<).
+negate_(<, >=).
+
+                 /*******************************
+                 *           POSE MODEL         *
+                 *******************************/
+
+%!  pose_constraints(+Case, +Required:list, +Negated:list, +Context:list, -Pose) is nondet.
+%
+%   Pose is hook_pose(Dx, Dy, Roll) or wedge_pose(R, Gap, Yaw) with CLP(R) constraints
+%   saying: every literal of Required holds, no literal of Negated holds, and the pose
+%   lies in the case's pose domain.  Context is a list of primitive facts giving the
+%   task geometry (see pose_geometry/5); the tool and target are the objects the
+%   literals name (else the case's task_roles/3).  Solutions differ in the disjunct
+%   chosen for disjunctive definitions and complements (see the module header); fails
+%   if none is feasible.
+%
+%   @error domain_error(spatial_literal(Case), L) for a literal with no definition.
+%
+%   ==
+%   ?- pose_constraints(hook, [behind(h, cube1)], [], [], P), P = hook_pose(Dx, _, _),
+%      inf(Dx, I).
+%   I = 0.025.
+%   ==
+pose_constraints(Case, Required, Negated, Context, Pose) :-
+    must_be(oneof([hook, wedge]), Case),
+    must_be(list, Required),
+    must_be(list, Negated),
+    must_be(list, Context),
+    append(Required, Negated, All),
+    roles_(Case, All, Tool, Target),
+    pose_geometry(Case, Tool, Target, Context, Geometry),
+    kb_clause(pose_domain(Case, Pose, Domain), true),
+    !,
+    post_all_(Domain, Geometry),
+    maplist(post_required_(Case, Pose, Geometry), Required),
+    maplist(post_negated_(Case, Pose, Geometry), Negated).
+
+roles_(Case, Literals, Tool, Target) :-
+    once(kb_clause(task_roles(Case, Target0, _), true)),
+    (   member(L, Literals),
+        literal_role_(Case, L, tool, Tool0)
+    ->  Tool = Tool0
+    ;   true
+    ),
+    (   member(L, Literals),
+        literal_role_(Case, L, target, T1)
+    ->  Target = T1
+    ;   Target = Target0
+    ).
+
+literal_role_(Case, Literal, Role, Object) :-
+    compound(Literal),
+    functor(Literal, N, A),
+    functor(Template, N, A),
+    once(kb_clause(spatial_definition(Case, Template, _, _), true)),
+    arg(I, Template, Role),
+    arg(I, Literal, Object),
+    nonvar(Object).
+
+post_all_(Comparisons, Geometry) :-
+    maplist(post_(Geometry), Comparisons).
+
+post_(Geometry, Comparison) :-
+    instantiate_(Comparison, Geometry, C),
+    {C}.
+
+post_required_(Case, Pose, Geometry, Literal) :-
+    definition_clauses_(Case, Literal, Pose, Clauses),
+    member(Comparisons, Clauses),
+    post_all_(Comparisons, Geometry).
+
+post_negated_(Case, Pose, Geometry, Literal) :-
+    definition_clauses_(Case, Literal, Pose, Clauses),
+    maplist(post_violated_(Geometry), Clauses).
+
+post_violated_(Geometry, Comparisons) :-
+    member(Comparison, Comparisons),
+    Comparison =.. [Op, L, R],
+    negate_(Op, NOp),
+    Violated =.. [NOp, L, R],
+    post_(Geometry, Violated).
+
+%!  pose_search(+Pose, -Ground) is semidet.
+%
+%   Ground is Pose with each variable, in argument order, bound to the midpoint of its
+%   interval under the posted constraints.  Fails if a variable is unbounded.
+%
+%   ==
+%   ?- {X >= 0.025, X =< 0.07}, pose_search(hook_pose(X, 0.0, 0.0), G).
+%   G = hook_pose(0.0475, 0.0, 0.0).
+%   ==
+pose_search(Pose, Ground) :-
+    must_be(compound, Pose),
+    Pose =.. [_|Vars],
+    maplist(label_midpoint_, Vars),
+    Ground = Pose.
+
+label_midpoint_(V) :-
+    (   var(V)
+    ->  inf(V, Inf),
+        sup(V, Sup),
+        midpoint_(Inf, Sup, M),
+        {V =:= M}
+    ;   true
+    ).
+
+midpoint_(Inf, Sup, M) :-
+    M0 is (Inf + Sup) / 2,
+    Rounded is round(M0 * 10000) / 10000,
+    (   Rounded > Inf,
+        Rounded < Sup
+    ->  M = Rounded
+    ;   M = M0
+    ).
+
+%!  solve_pose(+Case, +Required:list, +Negated:list, +Context:list, -Result) is det.
+%
+%   Result is pose(Ground), a ground pose term inside the region pose_constraints/5
+%   describes (its first feasible disjunct), or infeasible(Conflict) where Conflict is a
+%   minimal list of the literals that cannot hold together (a negated literal L appears
+%   as not(L)); infeasible([]) when the context's pose domain is empty by itself.
+%
+%   ==
+%   ?- solve_pose(hook, [behind(h, cube1), hook_down(h)], [], [], R).
+%   R = pose(hook_pose(0.0475, 0.0, 0.0)).
+%   ?- solve_pose(hook, [behind(h, cube1), in_front(h, cube1)], [hook_flat(h)], [], R).
+%   R = infeasible([behind(h, cube1), in_front(h, cube1)]).
+%   ==
+solve_pose(Case, Required, Negated, Context, Result) :-
+    must_be(list, Required),
+    must_be(list, Negated),
+    (   pose_point_(Case, Required, Negated, Context, Ground)
+    ->  Result = pose(Ground)
+    ;   findall(req(L), member(L, Required), Rs),
+        findall(neg(L), member(L, Negated), Ns),
+        append(Rs, Ns, Items),
+        minimal_conflict_(Items, pose_items_feasible_(Case, Context), Conflict0),
+        maplist(item_literal_, Conflict0, Conflict),
+        Result = infeasible(Conflict)
+    ).
+
+pose_point_(Case, Required, Negated, Context, Ground) :-
+    findall(G,
+            once(( pose_constraints(Case, Required, Negated, Context, Pose),
+                   pose_search(Pose, G) )),
+            [Ground]).
+
+pose_items_feasible_(Case, Context, Items) :-
+    findall(L, member(req(L), Items), Rs),
+    findall(L, member(neg(L), Items), Ns),
+    \+ \+ pose_point_(Case, Rs, Ns, Context, _).
+
+item_literal_(req(L), L).
+item_literal_(neg(L), not(L)).
+item_literal_(ctx(F), F).
+
+%   minimal_conflict_(+Items, :Feasible, -Conflict): deletion filter.  Items is
+%   infeasible; Conflict is an irreducible infeasible sublist.
+minimal_conflict_(Items, Feasible, Conflict) :-
+    deletion_(Items, [], Feasible, Conflict).
+
+deletion_([], Kept, _, Conflict) :-
+    reverse(Kept, Conflict).
+deletion_([I|Is], Kept, Feasible, Conflict) :-
+    reverse(Kept, KeptInOrder),
+    append(KeptInOrder, Is, Without),
+    (   call(Feasible, Without)
+    ->  deletion_(Is, [I|Kept], Feasible, Conflict)
+    ;   deletion_(Is, Kept, Feasible, Conflict)
+    ).
+
+                 /*******************************
+                 *           SIZE MODEL         *
+                 *******************************/
+
+%!  size_constraints(+Kind, +Literals:list, +Context:list, -Dims:list) is semidet.
+%
+%   Dims lists Field=Value for the spec fields of a new tool of Kind (hook, stick or
+%   block), Value a constrained variable or a fixed value, such that the structural
+%   Literals hold and the tool suits the task Context.  Fails if they cannot.
+%
+%   Fields: hook: handle_length, handle_width, hook_length, hook_width (CLP(R), metres),
+%   hook_angle_deg (CLP(FD), whole degrees), hook_side (left or right, unbound if no
+%   literal fixes it).  stick: handle_length, handle_width; hook_length = 0.0,
+%   hook_width = 0.0, hook_side = none, hook_angle_deg = 90.  block: length, width,
+%   height (metres), shape (unbound if no literal fixes it).
+%
+%   Structural literals: those of the ontology (handle_length(T, long), hook_side(T,
+%   left), shape(W, box), mechanical_advantage(W, above_one), ...); class literals
+%   (tool/1, hook_like/1, hook/1, stick/1, object/1, block/1) must agree with Kind;
+%   spatial and task literals are ignored.  Context facts used (others are ignored):
+%
+%     - tube_length_m(Tube, L): handle_length >= L + reach margin (reach_margin_m,
+%       0.05 m unless a reach_margin_m(M) fact says otherwise), so that the prong
+%       reaches behind a cube at the tube's far end with the gripper outside.
+%     - tube_inner_m(Tube, W, H): handle_width + hook_length + clearance =< min(W, H)
+%       (tube_clearance_m, 0.005 m): the tool turns inside the tube.
+%     - max_tool_length(M): handle_length =< M (block: length and width =< M).
+%     - door_gap_m(Door, G): height > G (the wedge must reach under the door).
+%     - min_wall_m(M): every solid dimension >= M (printable).
+%
+%   @error domain_error(structural_literal(Kind), L) for an unknown literal or value.
+%
+%   ==
+%   ?- size_constraints(hook, [handle_length(t, long)], [tube_length_m(tube1, 0.45)], D),
+%      memberchk(handle_length=L, D), inf(L, I).
+%   I = 0.5.
+%   ==
+size_constraints(Kind, Literals, Context, Dims) :-
+    must_be(oneof([hook, stick, block]), Kind),
+    must_be(list, Literals),
+    must_be(list, Context),
+    size_items_(Kind, Literals, Context, Items),
+    size_model_(Kind, Context, Items, Dims).
+
+size_items_(Kind, Literals, Context, Items) :-
+    foldl(literal_item_(Kind), Literals, Items, Items1),
+    findall(ctx(F), ( member(F, Context), context_item_(Kind, F) ), Items1).
+
+literal_item_(Kind, L, Items0, Items) :-
+    must_be(callable, L),
+    (   ignored_literal_(L)
+    ->  Items0 = Items
+    ;   check_structural_(Kind, L),
+        Items0 = [lit(L)|Items]
+    ).
+
+ignored_literal_(L) :-
+    (   spatial_literal(hook, L)
+    ;   spatial_literal(wedge, L)
+    ;   functor(L, N, A),
+        kb_clause(task_predicate(_, N/A), true)
+    ),
+    !.
+
+check_structural_(Kind, L) :-
+    (   class_literal_(L, _)
+    ->  true
+    ;   L =.. [P, _, V],
+        property_field_(P),
+        nonvar(V),
+        (   kb_clause(qualitative_range(P, V, _, _, _), true)
+        ;   kb_clause(size_choice(_, _, P, Vs), true),
+            memberchk(V, Vs)
+        )
+    ->  true
+    ;   L =.. [mechanical_advantage, _, V],
+        nonvar(V),
+        kb_clause(qualitative_range(mechanical_advantage, V, _, _, _), true)
+    ->  true
+    ;   domain_error(structural_literal(Kind), L)
+    ).
+
+class_literal_(tool(_), [hook, stick]).
+class_literal_(hook_like(_), [hook, stick]).
+class_literal_(hook(_), [hook]).
+class_literal_(stick(_), [stick]).
+class_literal_(object(_), [block]).
+class_literal_(block(_), [block]).
+
+%   P is a property some kind of tool has a spec field for.
+property_field_(P) :-
+    (   kb_clause(size_field(_, _, P), true)
+    ;   kb_clause(size_choice(_, _, P, _), true)
+    ),
+    !.
+
+context_item_(hook, tube_length_m(_, _)).
+context_item_(hook, tube_inner_m(_, _, _)).
+context_item_(stick, tube_length_m(_, _)).
+context_item_(stick, tube_inner_m(_, _, _)).
+context_item_(_, max_tool_length(_)).
+context_item_(block, door_gap_m(_, _)).
+context_item_(_, min_wall_m(_)).
+
+%   size_model_(+Kind, +Context, +Items, -Dims): post the property domains and every item.
+size_model_(Kind, Context, Items, Dims) :-
+    findall(F-P, kb_clause(size_field(Kind, F, P), true), FieldProps),
+    maplist(field_var_, FieldProps, NumDims),
+    findall(F=_, kb_clause(size_choice(Kind, F, _, _), true), ChoiceDims),
+    fixed_fields_(Kind, Fixed),
+    append([NumDims, ChoiceDims, Fixed], Dims),
+    maplist(post_domain_(FieldProps, Dims), FieldProps),
+    maplist(post_size_item_(Kind, Context, Dims), Items).
+
+field_var_(F-_, F=_).
+
+fixed_fields_(stick, [hook_length=0.0, hook_width=0.0, hook_side=none, hook_angle_deg=90]).
+fixed_fields_(hook, []).
+fixed_fields_(block, []).
+
+%   The domain of a field: the union of its property's qualitative ranges.
+post_domain_(_, Dims, F-P) :-
+    memberchk(F=V, Dims),
+    aggregate_all(min(Lo), kb_clause(qualitative_range(P, _, Lo, _, _), true), Min),
+    aggregate_all(max(Hi), kb_clause(qualitative_range(P, _, _, Hi, _), true), Max),
+    (   integer_field_(F)
+    ->  Lo1 is ceiling(Min),
+        Hi1 is floor(Max),
+        V #>= Lo1,
+        V #=< Hi1
+    ;   {V >= Min, V =< Max}
+    ).
+
+integer_field_(hook_angle_deg).
+
+post_size_item_(Kind, _, _, lit(L)) :-
+    class_literal_(L, Kinds),
+    !,
+    memberchk(Kind, Kinds).
+post_size_item_(Kind, _, Dims, lit(L)) :-
+    L =.. [P, _, Value],
+    kb_clause(size_choice(Kind, F, P, _), true),
+    !,
+    memberchk(F=Value, Dims).
+post_size_item_(block, _, Dims, lit(mechanical_advantage(_, Value))) :-
+    !,
+    kb_clause(qualitative_range(mechanical_advantage, Value, Lo, Hi, Bounds), true),
+    memberchk(length=L, Dims),
+    memberchk(height=H, Dims),
+    range_constraint_(Bounds, L, Lo * H, Hi * H).
+post_size_item_(Kind, _, Dims, lit(L)) :-
+    L =.. [P, _, Value],
+    kb_clause(size_field(Kind, F, P), true),
+    !,
+    memberchk(F=V, Dims),
+    kb_clause(qualitative_range(P, Value, Lo, Hi, Bounds), true),
+    (   integer_field_(F)
+    ->  fd_range_constraint_(Bounds, V, Lo, Hi)
+    ;   range_constraint_(Bounds, V, Lo, Hi)
+    ).
+post_size_item_(_, _, _, lit(_)) :-
+    !,
+    fail.
+post_size_item_(Kind, Context, Dims, ctx(tube_length_m(_, Length))) :-
+    !,
+    size_parameter_(reach_margin_m, Context, Margin),
+    (   memberchk(Kind, [hook, stick])
+    ->  memberchk(handle_length=HL, Dims),
+        {HL >= Length + Margin}
+    ;   true
+    ).
+post_size_item_(Kind, Context, Dims, ctx(tube_inner_m(_, W, H))) :-
+    !,
+    size_parameter_(tube_clearance_m, Context, C),
+    Free is min(W, H) - C,
+    memberchk(handle_width=HW, Dims),
+    (   Kind == hook
+    ->  memberchk(hook_length=KL, Dims),
+        {HW + KL =< Free}
+    ;   {HW =< Free}
+    ).
+post_size_item_(Kind, _, Dims, ctx(max_tool_length(M))) :-
+    !,
+    (   Kind == block
+    ->  memberchk(length=L, Dims),
+        memberchk(width=W, Dims),
+        {L =< M, W =< M}
+    ;   memberchk(handle_length=HL, Dims),
+        {HL =< M}
+    ).
+post_size_item_(block, _, Dims, ctx(door_gap_m(_, G))) :-
+    !,
+    memberchk(height=H, Dims),
+    {H > G}.
+post_size_item_(Kind, _, Dims, ctx(min_wall_m(M))) :-
+    !,
+    solid_fields_(Kind, Fields),
+    forall(member(F, Fields),
+           ( memberchk(F=V, Dims),
+             {V >= M} )).
+post_size_item_(_, _, _, _).
+
+solid_fields_(hook, [handle_width, hook_length, hook_width]).
+solid_fields_(stick, [handle_width]).
+solid_fields_(block, [length, width, height]).
+
+size_parameter_(Name, Context, Value) :-
+    Fact =.. [Name, V],
+    (   memberchk(Fact, Context)
+    ->  Value = V
+    ;   kb_clause(size_parameter(Name, Value, _), true)
+    ->  true
+    ;   existence_error(size_parameter, Name)
+    ).
+
+range_constraint_(closed_open, V, Lo, Hi) :-
+    {V >= Lo, V < Hi}.
+range_constraint_(closed_closed, V, Lo, Hi) :-
+    {V >= Lo, V =< Hi}.
+range_constraint_(open_closed, V, Lo, Hi) :-
+    {V > Lo, V =< Hi}.
+
+fd_range_constraint_(closed_open, V, Lo, Hi) :-
+    Lo1 is ceiling(Lo),
+    Hi1 is ceiling(Hi),
+    V #>= Lo1,
+    V #< Hi1.
+fd_range_constraint_(closed_closed, V, Lo, Hi) :-
+    Lo1 is ceiling(Lo),
+    Hi1 is floor(Hi),
+    V #>= Lo1,
+    V #=< Hi1.
+fd_range_constraint_(open_closed, V, Lo, Hi) :-
+    Lo1 is floor(Lo),
+    Hi1 is floor(Hi),
+    V #> Lo1,
+    V #=< Hi1.
+
+%!  size_search(+Dims:list, -Ground:list) is semidet.
+%
+%   Ground is Dims with every value bound: a symbolic field (hook_side, shape) to the
+%   first value of its size_choice/4 list that keeps the rest feasible (a cylinder gets
+%   width = length), then each number, in Dims order, to the midpoint of its interval
+%   (metres rounded to 0.1 mm when that stays strictly inside; degrees to a whole
+%   number).
+%
+%   ==
+%   ?- size_constraints(block, [shape(w, triangular_prism), block_length(w, long)], [], D),
+%      size_search(D, G).
+%   G = [length=0.16, width=0.085, height=0.0475, shape=triangular_prism].
+%   ==
+size_search(Dims, Ground) :-
+    must_be(list, Dims),
+    label_choices_(Dims),
+    maplist(label_field_, Dims),
+    Ground = Dims.
+
+label_choices_(Dims) :-
+    findall(F-Vs, kb_clause(size_choice(_, F, _, Vs), true), Choices),
+    maplist(label_choice_(Dims), Choices).
+
+label_choice_(Dims, F-Values) :-
+    (   memberchk(F=V, Dims),
+        var(V)
+    ->  member(V, Values),
+        shape_constraint_(F, V, Dims)
+    ;   true
+    ).
+
+shape_constraint_(shape, cylinder, Dims) :-
+    !,
+    memberchk(length=L, Dims),
+    memberchk(width=W, Dims),
+    {W =:= L}.
+shape_constraint_(_, _, _).
+
+label_field_(F=V) :-
+    (   var(V),
+        integer_field_(F)
+    ->  fd_inf(V, Inf),
+        fd_sup(V, Sup),
+        M is (Inf + Sup) // 2,
+        V #= M
+    ;   var(V)
+    ->  label_midpoint_(V)
+    ;   true
+    ).
+
+%!  solve_size(+Kind, +Literals:list, +Context:list, -Result) is det.
+%
+%   Result is dims(Fields), Fields a ground list Field=Value (size_constraints/4,
+%   size_search/2) for a new tool of Kind, or infeasible(Conflict), Conflict a minimal
+%   list of the literals and context facts that cannot hold together.
+%
+%   ==
+%   ?- solve_size(hook, [hook(t), handle_length(t, long), hook_side(t, left)],
+%                 [tube_length_m(tube1, 0.45), max_tool_length(0.70)], R).
+%   R = dims([handle_length=0.6, handle_width=0.018, hook_length=0.03,
+%             hook_width=0.012, hook_angle_deg=90, hook_side=left]).
+%   ?- solve_size(hook, [handle_length(t, long)], [max_tool_length(0.3)], R).
+%   R = infeasible([handle_length(t, long), max_tool_length(0.3)]).
+%   ==
+solve_size(Kind, Literals, Context, Result) :-
+    must_be(oneof([hook, stick, block]), Kind),
+    size_items_(Kind, Literals, Context, Items),
+    (   size_point_(Kind, Context, Items, Ground)
+    ->  Result = dims(Ground)
+    ;   minimal_conflict_(Items, size_items_feasible_(Kind, Context), Conflict0),
+        maplist(size_item_term_, Conflict0, Conflict),
+        Result = infeasible(Conflict)
+    ).
+
+size_point_(Kind, Context, Items, Ground) :-
+    findall(G,
+            once(( size_model_(Kind, Context, Items, Dims),
+                   size_search(Dims, G) )),
+            [Ground]).
+
+size_items_feasible_(Kind, Context, Items) :-
+    \+ \+ size_point_(Kind, Context, Items, _).
+
+size_item_term_(lit(L), L).
+size_item_term_(ctx(F), F).
