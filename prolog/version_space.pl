@@ -1,0 +1,422 @@
+:- module(version_space,
+          [ vs_init/2,               % +Example, -VS
+            vs_update/3,             % +VS0, +LabelledExample, -VS
+            vs_bounds/3,             % +VS, -HS, -HG
+            vs_unknown/2,            % +VS, -Literals
+            vs_examples/3,           % +VS, -Pos, -Neg
+            vs_converged/1,          % +VS
+            vs_covers/3,             % +VS, +Bound, +Example
+            vs_notes/2               % +VS, -Notes
+          ]).
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(pairs)).
+:- use_module(lgg, [clause_lgg/3]).
+:- use_module(subsumption,
+              [ clause_head_body/3, clause_covers/2, clause_violations/3 ]).
+
+/** <module> Version space of a tool-use concept: h_s and h_g
+
+Mitchell's version space as CREATIVE uses it (paper, Algorithm 1): a most
+specific hypothesis h_s, generalised by constrained LGG on positives, and a
+most general hypothesis h_g, specialised on negatives with literals of h_s
+(negative-based reduction style). Examples are ground clauses
+`tool_pose(Tool, Target, Context) :- Facts`.
+
+The state is one term (opaque: use the accessors)
+
+    vs(Head, SBody, GBody, Pos, Neg, Notes)
+
+Head is shared by h_s (`Head :- SBody`) and h_g (`Head :- GBody`); Pos and
+Neg list the examples in arrival order; Notes lists, newest first, what was
+inconsistent:
+
+  - hg_weakened(E, Dropped): the positive E violated the h_g literals
+    Dropped, which were removed from h_g.
+  - noisy_negative(E): the negative E is covered by h_s, so no literal of h_s
+    can exclude it; h_g was left unchanged and E is ignored when h_g is
+    specialised later.
+
+*Free literals.* After an LGG, a literal whose variable occurs nowhere else
+in h_s and has no range (e.g. `handle_length(T, L)` from `medium` and
+`long`) only says that the tool has some handle length. No experiment can
+violate it, so h_s drops it (repeatedly, until no such literal is left). A
+positive with a different handle length therefore removes `handle_length/2`
+from h_s.
+
+*Ranges.* `in_range(V, Lo, Hi)` literals of h_s (from the constrained LGG of
+numbers) belong to the literal that binds V: they are not unknown literals to
+test, so vs_unknown/2 leaves them out. When h_g takes a literal of h_s it
+takes the range literals of that literal's variables with it.
+*/
+
+%!  vs_init(+Example, -VS) is det.
+%
+%   VS is the version space of the first positive example Example, a
+%   ground clause whose head arguments are distinct atoms (the roles:
+%   tool, target, context). h_s is Example with each head atom replaced by a
+%   fresh variable everywhere in the clause (numbers stay numbers); h_g is
+%   the head with an empty body. Raises type_error(clause, Example),
+%   instantiation_error for a non-ground example and
+%   domain_error(distinct_head_atoms, Head) otherwise.
+%
+%   ==
+%   ?- vs_init((tool_pose(hook_a2, cube1, tube1) :- hook(hook_a2),
+%               behind(hook_a2, cube1)), VS), vs_bounds(VS, HS, HG).
+%   HS = (tool_pose(T, C, X) :- hook(T), behind(T, C)),
+%   HG = tool_pose(T, C, X).
+%   ==
+vs_init(Example, VS) :-
+    clause_head_body(Example, Head0, Body0),
+    must_be(ground, Example),
+    Head0 =.. [Name|Args],
+    (   maplist(atom, Args),
+        sort(Args, Sorted),
+        length(Args, N),
+        length(Sorted, N)
+    ->  true
+    ;   domain_error(distinct_head_atoms, Head0)
+    ),
+    length(Vars, N),
+    pairs_keys_values(Map, Args, Vars),
+    Head =.. [Name|Vars],
+    maplist(replace_constants_(Map), Body0, Body1),
+    dedupe_(Body1, SBody),
+    VS = vs(Head, SBody, [], [Example], [], []).
+
+replace_constants_(Map, T0, T) :-
+    (   atom(T0),
+        memberchk(T0-V, Map)
+    ->  T = V
+    ;   compound(T0)
+    ->  compound_name_arguments(T0, Name, Args0),
+        maplist(replace_constants_(Map), Args0, Args),
+        compound_name_arguments(T, Name, Args)
+    ;   T = T0
+    ).
+
+%!  vs_update(+VS0, +LabelledExample, -VS) is det.
+%
+%   VS is VS0 after the example LabelledExample, pos(E) or neg(E):
+%
+%     - pos(E): h_s becomes the clause_lgg/3 of h_s and E (without free
+%       literals); literals of h_g that E violates are dropped (noted as
+%       hg_weakened/2) and h_g is then specialised again against the stored
+%       negatives, as below, so that it stays consistent when it can.
+%     - neg(E): if h_g does not cover E, E is only stored. If h_s covers E,
+%       E is noted as noisy_negative/1 and h_g is unchanged. Otherwise h_g is
+%       specialised with a smallest set of h_s literals found greedily: at
+%       each step the literal that excludes most of the stored (non-noisy)
+%       negatives h_g still covers, preferring literals that E violates,
+%       then body order; literals made redundant by later ones are removed
+%       at the end.
+%
+%   Raises domain_error(labelled_example, X) for any other X.
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1), behind(h1, c)), VS0),
+%      vs_update(VS0, neg((tp(h2, c, t) :- hook(h2), in_front(h2, c))), VS),
+%      vs_bounds(VS, _, HG).
+%   HG = (tp(T, C, X) :- behind(T, C)).
+%   ==
+vs_update(VS0, Labelled, VS) :-
+    (   Labelled = pos(E)
+    ->  clause_head_body(E, _, _),
+        copy_term(VS0, VS1),
+        update_pos_(VS1, E, VS)
+    ;   Labelled = neg(E)
+    ->  clause_head_body(E, _, _),
+        copy_term(VS0, VS1),
+        update_neg_(VS1, E, VS)
+    ;   domain_error(labelled_example, Labelled)
+    ).
+
+update_pos_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS) :-
+    clause_head_body(HS0, Head, SBody),
+    clause_lgg(HS0, E, HS1),
+    clause_head_body(HS1, Head1, SBody1),
+    drop_free_literals_(Head1, SBody1, SBody2),
+    Head = Head1,
+    clause_head_body(HG0, Head, GBody0),
+    (   clause_violations(HG0, E, Violated)
+    ->  true
+    ;   Violated = GBody0
+    ),
+    append(Pos0, [E], Pos),
+    (   Violated == []
+    ->  VS = vs(Head, SBody2, GBody0, Pos, Neg, Notes0)
+    ;   exclude(member_eq_(Violated), GBody0, GBody1),
+        drop_orphan_ranges_(Head, GBody1, GBody2),
+        Notes1 = [hg_weakened(E, Violated)|Notes0],
+        consistent_negatives_(Neg, Notes1, Negs),
+        specialise_(Head, SBody2, GBody2, Negs, [], GBody, Left),
+        note_noisy_(Left, Notes1, Notes),
+        VS = vs(Head, SBody2, GBody, Pos, Neg, Notes)
+    ).
+
+update_neg_(vs(Head, SBody, GBody0, Pos, Neg0, Notes0), E, VS) :-
+    append(Neg0, [E], Neg),
+    clause_head_body(HG0, Head, GBody0),
+    clause_head_body(HS, Head, SBody),
+    (   \+ clause_covers(HG0, E)
+    ->  VS = vs(Head, SBody, GBody0, Pos, Neg, Notes0)
+    ;   clause_violations(HS, E, Violated),
+        Violated \== []
+    ->  consistent_negatives_(Neg, Notes0, Negs),
+        specialise_(Head, SBody, GBody0, Negs, Violated, GBody, Left),
+        note_noisy_(Left, Notes0, Notes),
+        VS = vs(Head, SBody, GBody, Pos, Neg, Notes)
+    ;   VS = vs(Head, SBody, GBody0, Pos, Neg, [noisy_negative(E)|Notes0])
+    ).
+
+consistent_negatives_(Neg, Notes, Negs) :-
+    exclude(noted_noisy_(Notes), Neg, Negs).
+
+noted_noisy_(Notes, E) :-
+    memberchk(noisy_negative(E), Notes).
+
+note_noisy_([], Notes, Notes).
+note_noisy_([E|Es], Notes0, Notes) :-
+    (   memberchk(noisy_negative(E), Notes0)
+    ->  Notes1 = Notes0
+    ;   Notes1 = [noisy_negative(E)|Notes0]
+    ),
+    note_noisy_(Es, Notes1, Notes).
+
+%   specialise_(+Head, +SBody, +GBody0, +Negs, +Prefer, -GBody, -Left):
+%   greedy cover of the negatives h_g covers by units of h_s (a literal and
+%   the range literals of its variables); Left are the negatives that even
+%   all of h_s cannot exclude.
+specialise_(Head, SBody, GBody0, Negs, Prefer, GBody, Left) :-
+    clause_head_body(HG0, Head, GBody0),
+    include(covers_(HG0), Negs, Covered),
+    (   Covered == []
+    ->  GBody = GBody0,
+        Left = []
+    ;   candidate_units_(Head, SBody, GBody0, Units),
+        greedy_(Units, Head, GBody0, Covered, Prefer, [], Added, Left),
+        minimise_(Added, Head, GBody0, Negs, Left, Kept),
+        units_body_(Kept, GBody0, GBody)
+    ).
+
+covers_(Clause, E) :-
+    clause_covers(Clause, E).
+
+candidate_units_(Head, SBody, GBody, Units) :-
+    partition(range_lit_, SBody, Ranges, Lits),
+    exclude(in_body_(Head, GBody), Lits, Fresh),
+    maplist(unit_(Ranges), Fresh, Units).
+
+unit_(Ranges, L, unit(L, LRanges)) :-
+    term_variables(L, Vs),
+    include(range_on_(Vs), Ranges, LRanges).
+
+range_on_(Vs, in_range(V, _, _)) :-
+    member(W, Vs),
+    W == V,
+    !.
+
+add_unit_(unit(L, Rs), G0, G) :-
+    append(G0, [L|Rs], G1),
+    dedupe_(G1, G).
+
+units_body_(Units, GBody0, GBody) :-
+    foldl(add_unit_, Units, GBody0, GBody).
+
+greedy_(Units, Head, GBody0, Covered, Prefer, Added0, Added, Left) :-
+    (   Covered == []
+    ->  reverse(Added0, Added),
+        Left = []
+    ;   Units == []
+    ->  reverse(Added0, Added),
+        Left = Covered
+    ;   reverse(Added0, InOrder),
+        units_body_(InOrder, GBody0, GBody1),
+        map_list_to_pairs(unit_score_(Head, GBody1, Covered, Prefer), Units, Scored),
+        best_unit_(Scored, Best),
+        selectchk(Best, Units, Rest),
+        add_unit_(Best, GBody1, GBody2),
+        clause_head_body(HG, Head, GBody2),
+        include(covers_(HG), Covered, Covered1),
+        greedy_(Rest, Head, GBody0, Covered1, Prefer, [Best|Added0], Added, Left)
+    ).
+
+%   Score s(Excluded, Preferred): more excluded negatives first, then
+%   literals the new negative violates; ties keep the first in body order.
+unit_score_(Head, GBody, Covered, Prefer, Unit, s(Excluded, Preferred)) :-
+    add_unit_(Unit, GBody, GBody1),
+    clause_head_body(HG, Head, GBody1),
+    exclude(covers_(HG), Covered, Out),
+    length(Out, Excluded),
+    Unit = unit(L, _),
+    (   member_eq_(Prefer, L)
+    ->  Preferred = 1
+    ;   Preferred = 0
+    ).
+
+best_unit_([S-U|Scored], Best) :-
+    best_unit_(Scored, S, U, Best).
+
+best_unit_([], _, Best, Best).
+best_unit_([S-U|Scored], S0, U0, Best) :-
+    (   S @> S0
+    ->  best_unit_(Scored, S, U, Best)
+    ;   best_unit_(Scored, S0, U0, Best)
+    ).
+
+%   Drop added units, last first, while the rest still excludes every
+%   negative that the whole set excludes.
+minimise_(Added, Head, GBody0, Negs, Left, Kept) :-
+    subtract_eq_(Negs, Left, Targets),
+    reverse(Added, Rev),
+    foldl(try_drop_(Head, GBody0, Targets), Rev, Added, Kept).
+
+try_drop_(Head, GBody0, Targets, Unit, Units0, Units) :-
+    exclude(==(Unit), Units0, Without),
+    units_body_(Without, GBody0, GBody),
+    clause_head_body(HG, Head, GBody),
+    (   \+ ( member(N, Targets), clause_covers(HG, N) )
+    ->  Units = Without
+    ;   Units = Units0
+    ).
+
+subtract_eq_([], _, []).
+subtract_eq_([X|Xs], Ys, Zs) :-
+    (   member_eq_(Ys, X)
+    ->  Zs = Zs1
+    ;   Zs = [X|Zs1]
+    ),
+    subtract_eq_(Xs, Ys, Zs1).
+
+%   A literal with a variable that occurs once in the clause (and has no
+%   range) says nothing an experiment could violate: drop it, repeatedly.
+drop_free_literals_(Head, Body0, Body) :-
+    partition(range_lit_, Body0, Ranges, Lits),
+    (   select(L, Lits, Rest),
+        has_free_var_(L, Head-Rest-Ranges)
+    ->  exclude(==(L), Body0, Body1),
+        drop_orphan_ranges_(Head, Body1, Body2),
+        drop_free_literals_(Head, Body2, Body)
+    ;   Body = Body0
+    ).
+
+has_free_var_(L, Others) :-
+    term_variables(L, Vs),
+    term_variables(Others, OVs),
+    member(V, Vs),
+    \+ ( member(W, OVs), W == V ),
+    occurrences_of_var(V, L, 1),
+    !.
+
+drop_orphan_ranges_(Head, Body0, Body) :-
+    exclude(range_lit_, Body0, Lits),
+    term_variables(Head-Lits, Live),
+    exclude(orphan_range_(Live), Body0, Body).
+
+orphan_range_(Live, in_range(V, _, _)) :-
+    \+ ( member(W, Live), W == V ).
+
+range_lit_(in_range(_, _, _)).
+
+member_eq_(List, X) :-
+    member(Y, List),
+    Y == X,
+    !.
+
+dedupe_([], []).
+dedupe_([L|Ls], [L|Ds]) :-
+    exclude(==(L), Ls, Rest),
+    dedupe_(Rest, Ds).
+
+%   L of h_s is already in h_g when some literal of h_g is a variant of it
+%   once the shared head variables are fixed.
+in_body_(Head, GBody, L) :-
+    member(G, GBody),
+    same_literal_(Head, L, G),
+    !.
+
+same_literal_(Head, L, G) :-
+    \+ \+ ( numbervars(Head, 0, _, [functor_name('$head')]),
+            L =@= G ).
+
+%!  vs_bounds(+VS, -HS, -HG) is det.
+%
+%   HS and HG are copies of the boundary clauses h_s and h_g; they share
+%   the same head term (and its variables).
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1)), VS), vs_bounds(VS, HS, HG).
+%   HS = (tp(A, B, C) :- hook(A)), HG = tp(A, B, C).
+%   ==
+vs_bounds(VS, HS, HG) :-
+    copy_term(VS, vs(Head, SBody, GBody, _, _, _)),
+    clause_head_body(HS, Head, SBody),
+    clause_head_body(HG, Head, GBody).
+
+%!  vs_unknown(+VS, -Literals:list) is det.
+%
+%   Literals are the body literals of h_s (a copy) that are not in h_g,
+%   compared as variants once the shared head is fixed, in h_s body order.
+%   Range literals (`in_range/3`) are left out (see the module comment).
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1), behind(h1, c)), VS),
+%      vs_unknown(VS, U).
+%   U = [hook(A), behind(A, B)].
+%   ==
+vs_unknown(VS, Literals) :-
+    copy_term(VS, vs(Head, SBody, GBody, _, _, _)),
+    exclude(range_lit_, SBody, Lits),
+    exclude(in_body_(Head, GBody), Lits, Literals).
+
+%!  vs_examples(+VS, -Pos:list, -Neg:list) is det.
+%
+%   Pos and Neg are the positive and negative examples seen, in order
+%   (Pos starts with the example of vs_init/2; Neg includes noisy ones).
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1)), VS), vs_examples(VS, P, N).
+%   P = [(tp(h1, c, t) :- hook(h1))], N = [].
+%   ==
+vs_examples(vs(_, _, _, Pos, Neg, _), Pos, Neg).
+
+%!  vs_converged(+VS) is semidet.
+%
+%   True when h_s and h_g agree: vs_unknown/2 gives [].
+%
+%   ==
+%   ?- vs_init(tp(h1, c, t), VS), vs_converged(VS).
+%   true.
+%   ==
+vs_converged(VS) :-
+    vs_unknown(VS, []).
+
+%!  vs_covers(+VS, +Bound, +Example) is semidet.
+%
+%   True when the boundary Bound (`hs` or `hg`) covers the example clause
+%   Example (subsumption:clause_covers/2).
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1)), VS),
+%      vs_covers(VS, hs, (tp(h2, c, t) :- hook(h2), red(h2))).
+%   true.
+%   ==
+vs_covers(VS, Bound, Example) :-
+    must_be(oneof([hs, hg]), Bound),
+    vs_bounds(VS, HS, HG),
+    (   Bound == hs
+    ->  clause_covers(HS, Example)
+    ;   clause_covers(HG, Example)
+    ).
+
+%!  vs_notes(+VS, -Notes:list) is det.
+%
+%   Notes lists, newest first, the inconsistencies met: hg_weakened(E,
+%   Dropped) and noisy_negative(E) (see the module comment).
+%
+%   ==
+%   ?- vs_init(tp(h1, c, t), VS), vs_notes(VS, N).
+%   N = [].
+%   ==
+vs_notes(vs(_, _, _, _, _, Notes), Notes).
