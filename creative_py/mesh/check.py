@@ -153,11 +153,9 @@ def check_tool_files(files: ToolFiles | Path | str, *, openscad: bool = True,
     spec = files.spec
     problems: list[str] = []
     for path in files.paths():
-        if path == files.png and not path.exists():
-            problems.append(f"{path}: picture missing")
-        elif not path.is_file():
+        if not path.is_file():
             problems.append(f"{path}: file missing")
-    if problems:
+    if not (files.stl.is_file() and files.urdf.is_file() and files.sdf.is_file()):
         return ToolCheck(spec.name, False, 0, 0.0, spec_volume(spec), 1.0, None, None, False,
                          files.fits_build_volume, problems=tuple(problems))
 
@@ -203,7 +201,7 @@ def check_tool_files(files: ToolFiles | Path | str, *, openscad: bool = True,
                   stl_volume_rel_err=stl_err, urdf_mass=urdf_mass, sdf_mass=sdf_mass,
                   inertia_valid=not inertia_problems,
                   fits_build_volume=files.fits_build_volume)
-    if openscad:
+    if openscad and files.scad.is_file():
         with tempfile.TemporaryDirectory(prefix="creative_scad_") as tmp:
             out = Path(tmp) / "scad.stl"
             try:

@@ -56,8 +56,10 @@ class ToolFiles:
         The tool.
     directory : pathlib.Path
         The tool's folder, ``out_dir/<name>``.
-    urdf, sdf, scad, stl, png, manifest : pathlib.Path
+    urdf, sdf, scad, stl, manifest : pathlib.Path
         The files (STL and SCAD in millimetres; URDF, SDF and OBJ in metres).
+    png : pathlib.Path or None
+        The picture; None when it was not drawn.
     meshes : tuple of pathlib.Path
         OBJ files (metres) the URDF and SDF refer to; empty for hooks, boxes, cylinders.
     mass : MassProperties
@@ -72,7 +74,7 @@ class ToolFiles:
     sdf: Path
     scad: Path
     stl: Path
-    png: Path
+    png: Path | None
     manifest: Path
     meshes: tuple[Path, ...]
     mass: MassProperties
@@ -85,7 +87,8 @@ class ToolFiles:
 
     def paths(self) -> tuple[Path, ...]:
         """Return every file of the tool."""
-        return (self.urdf, self.sdf, self.scad, self.stl, self.png, self.manifest) + self.meshes
+        picture = () if self.png is None else (self.png,)
+        return (self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture + self.meshes
 
 
 def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
@@ -133,14 +136,15 @@ def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: b
 
 
 def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
-                  verdict: Printability) -> ToolFiles:
+                  verdict: Printability, *, picture: bool = True) -> ToolFiles:
     """Return the :class:`ToolFiles` naming a tool's files inside ``directory``."""
     name = spec.name
     return ToolFiles(
         spec=spec, directory=directory,
         urdf=directory / f"{name}.urdf", sdf=directory / f"{name}.sdf",
         scad=directory / f"{name}.scad", stl=directory / f"{name}.stl",
-        png=directory / f"{name}.png", manifest=directory / f"{name}.json",
+        png=directory / f"{name}.png" if picture else None,
+        manifest=directory / f"{name}.json",
         meshes=tuple(directory / f for f in sorted(hull_meshes(spec))),
         mass=mass, printability=verdict)
 
@@ -161,7 +165,7 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
     overwrite : bool
         Replace an existing ``out_dir/<name>/``; otherwise that is a ``FileExistsError``.
     picture : bool
-        Render the PNG (about 0.5 s); without it ``png`` names a file that is absent.
+        Draw the PNG (about 0.4 s); without it the result's ``png`` is None.
 
     Returns
     -------
@@ -202,7 +206,7 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
         raise
     if old is not None:
         shutil.rmtree(old, ignore_errors=True)
-    files = tool_files_in(target, spec, mass, verdict)
+    files = tool_files_in(target, spec, mass, verdict, picture=picture)
     if not verdict.fits_build_volume:
         log.warning("%s: %s", spec.name, verdict.reason)
     log.info("wrote tool %s to %s (%s)", spec.name, target, verdict.summary())
@@ -233,6 +237,7 @@ def read_tool_files(directory: Path | str) -> ToolFiles:
         p = data["printability"]
         verdict = Printability(bool(p["fits_build_volume"]), tuple(p["extent"]),
                                p["up_axis"], p["yaw_deg"], p["reason"])
+        picture = data["files"]["png"] is not None
     except (KeyError, TypeError, json.JSONDecodeError) as exc:
         raise ValueError(f"{source}: malformed tool manifest ({exc!r})") from None
-    return tool_files_in(directory, spec, mass, verdict)
+    return tool_files_in(directory, spec, mass, verdict, picture=picture)
