@@ -47,7 +47,7 @@ facts are never asserted: they travel in the argument.
 %        hook_down(h), hook_like(h), tool(h)].
 %   ==
 abstract_state(Case, Facts, Abstract) :-
-    must_be(oneof([hook, wedge]), Case),
+    must_be_oneof_([hook, wedge], Case),
     must_be(list, Facts),
     maplist(must_be(ground), Facts),
     findall(L, derived_literal_(Case, structural_predicate, Facts, L), Structural),
@@ -143,7 +143,7 @@ block_in_sweep_(W, Facts) :-
 %   P = wedge_pose(0.6083, 0.1778, 0.0045).   % rounded here
 %   ==
 pose_numbers(Case, Tool, Facts, Pose) :-
-    must_be(oneof([hook, wedge]), Case),
+    must_be_oneof_([hook, wedge], Case),
     must_be(list, Facts),
     pose_numbers_(Case, Tool, Facts, Pose).
 
@@ -182,4 +182,12 @@ wrap_angle_(Expr, Wrapped) :-
     (   W0 =< -pi
     ->  Wrapped is W0 + 2 * pi
     ;   Wrapped = W0
+    ).
+
+%   must_be_oneof_(+Values, +X): X is one of the atoms Values, else a domain error.
+must_be_oneof_(Values, X) :-
+    must_be(atom, X),
+    (   memberchk(X, Values)
+    ->  true
+    ;   domain_error(oneof(Values), X)
     ).

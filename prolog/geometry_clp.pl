@@ -74,7 +74,7 @@ qualitative ranges) are always posted and never named.
 %   true.
 %   ==
 spatial_literal(Case, Literal) :-
-    must_be(oneof([hook, wedge]), Case),
+    must_be_oneof_([hook, wedge], Case),
     must_be(callable, Literal),
     functor(Literal, N, A),
     functor(Template, N, A),
@@ -100,7 +100,7 @@ spatial_literal(Case, Literal) :-
 %   C = 0.02.
 %   ==
 pose_geometry(Case, Tool, Target, Facts, Geometry) :-
-    must_be(oneof([hook, wedge]), Case),
+    must_be_oneof_([hook, wedge], Case),
     must_be(list, Facts),
     findall(Name=Value,
             ( kb_clause(geometry_default(Case, Name, Default, _), true),
@@ -282,7 +282,7 @@ negate_(<, >=).
 %   I = 0.025.
 %   ==
 pose_constraints(Case, Required, Negated, Context, Pose) :-
-    must_be(oneof([hook, wedge]), Case),
+    must_be_oneof_([hook, wedge], Case),
     must_be(list, Required),
     must_be(list, Negated),
     must_be(list, Context),
@@ -467,7 +467,7 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 %   I = 0.5.
 %   ==
 size_constraints(Kind, Literals, Context, Dims) :-
-    must_be(oneof([hook, stick, block]), Kind),
+    must_be_oneof_([hook, stick, block], Kind),
     must_be(list, Literals),
     must_be(list, Context),
     size_items_(Kind, Literals, Context, Items),
@@ -691,9 +691,11 @@ label_choices_(Dims) :-
     maplist(label_choice_(Dims), Choices).
 
 label_choice_(Dims, F-Values) :-
-    (   memberchk(F=V, Dims),
-        var(V)
-    ->  member(V, Values),
+    (   memberchk(F=V, Dims)
+    ->  (   var(V)
+        ->  member(V, Values)
+        ;   true
+        ),
         shape_constraint_(F, V, Dims)
     ;   true
     ).
@@ -732,7 +734,7 @@ label_field_(F=V) :-
 %   R = infeasible([handle_length(t, long), max_tool_length(0.3)]).
 %   ==
 solve_size(Kind, Literals, Context, Result) :-
-    must_be(oneof([hook, stick, block]), Kind),
+    must_be_oneof_([hook, stick, block], Kind),
     size_items_(Kind, Literals, Context, Items),
     (   size_point_(Kind, Context, Items, Ground)
     ->  Result = dims(Ground)
@@ -752,3 +754,11 @@ size_items_feasible_(Kind, Context, Items) :-
 
 size_item_term_(lit(L), L).
 size_item_term_(ctx(F), F).
+
+%   must_be_oneof_(+Values, +X): X is one of the atoms Values, else a domain error.
+must_be_oneof_(Values, X) :-
+    must_be(atom, X),
+    (   memberchk(X, Values)
+    ->  true
+    ;   domain_error(oneof(Values), X)
+    ).

@@ -1,0 +1,175 @@
+:- begin_tests(geometry_clp, [setup(load_default_ontology)]).
+
+:- use_module(library(clpr)).
+:- use_module('../../prolog/knowledge').
+:- use_module('../../prolog/geometry_clp').
+
+%   The simulated hook task: mouth at x = 0.70, tube 0.30 m, inner 4 x 5.5 cm, a 3 cm
+%   cube at x = 0.90 (0.10 m from the far end).
+hook_context_([ tube_mouth(tube1, 0.70, 0.0, 0.0), tube_length_m(tube1, 0.30),
+                tube_inner_m(tube1, 0.04, 0.055), pose(cube1, 0.90, 0.0, -0.0125, 0.0),
+                size(cube1, 0.03, 0.03, 0.03), hook_width_m(h, 0.01),
+                handle_width_m(h, 0.01) ]).
+
+wedge_context_([ hinge(door1, 0.0, 0.0), door_width_m(door1, 0.8),
+                 door_closed_heading(door1, 0.0), door_angle(door1, 0.8) ]).
+
+%   strictly_inside_(+Case, +Literals, +Pose, +Geometry): the pose satisfies every
+%   definition with a margin of 1 mm (1 mrad): interior, not on a bound.
+strictly_inside_(Case, Literals, Pose, Geometry) :-
+    Pose =.. [F|Xs],
+    forall(( member(L, Literals),
+             member(Delta, [-0.001, 0.001]),
+             nth1(I, Xs, _),
+             perturb_(Xs, I, Delta, Xs1) ),
+           ( Pose1 =.. [F|Xs1],
+             spatial_holds(Case, L, Pose1, Geometry) )).
+
+perturb_([X|Xs], 1, Delta, [Y|Xs]) :-
+    !,
+    Y is X + Delta.
+perturb_([X|Xs], I, Delta, [X|Ys]) :-
+    I1 is I - 1,
+    perturb_(Xs, I1, Delta, Ys).
+
+test(hook_behind_down_interior) :-
+    hook_context_(Ctx),
+    Req = [in_tube(h, tube1), behind(h, cube1), hook_down(h), centred_on(h, cube1)],
+    solve_pose(hook, Req, [], Ctx, R),
+    assertion(R = pose(hook_pose(_, _, _))),
+    R = pose(P),
+    pose_geometry(hook, h, cube1, Ctx, G),
+    assertion(forall(member(L, Req), spatial_holds(hook, L, P, G))),
+    assertion(strictly_inside_(hook, Req, P, G)),
+    P = hook_pose(Dx, Dy, Roll),
+    % behind: Dx in [0.015 + 0.005 + 0.005, 0.70 + 0.30 - 0.90 - 0.005] = [0.025, 0.095]
+    assertion(abs(Dx - 0.06) < 1e-6),
+    assertion(abs(Dy) < 1e-6),
+    assertion(abs(Roll) < 1e-6).
+
+test(negated_behind_puts_prong_in_front) :-
+    hook_context_(Ctx),
+    solve_pose(hook, [in_tube(h, tube1), hook_down(h)], [behind(h, cube1)], Ctx, R),
+    R = pose(P),
+    pose_geometry(hook, h, cube1, Ctx, G),
+    assertion(\+ spatial_holds(hook, behind(h, cube1), P, G)),
+    assertion(spatial_holds(hook, in_tube(h, tube1), P, G)),
+    P = hook_pose(Dx, _, _),
+    assertion(Dx < 0.025).
+
+test(negated_disjunction_hook_flat) :-
+    solve_pose(hook, [], [hook_flat(h), hook_down(h)], [], R),
+    R = pose(hook_pose(_, _, Roll)),
+    assertion(abs(Roll) > 0.35),
+    assertion(abs(Roll) < 1.2).
+
+test(behind_and_in_front_conflict) :-
+    hook_context_(Ctx),
+    solve_pose(hook, [in_tube(h, tube1), behind(h, cube1), hook_down(h), in_front(h, cube1)],
+               [hook_flat(h)], Ctx, R),
+    assertion(R == infeasible([behind(h, cube1), in_front(h, cube1)])).
+
+test(required_and_negated_conflict) :-
+    solve_pose(hook, [hook_down(h), behind(h, cube1)], [hook_down(h)], [], R),
+    assertion(R == infeasible([hook_down(h), not(hook_down(h))])).
+
+test(no_room_behind_cube_at_far_end) :-
+    hook_context_(Ctx0),
+    selectchk(pose(cube1, _, Y, Z, Yaw), Ctx0, pose(cube1, 0.985, Y, Z, Yaw), Ctx),
+    solve_pose(hook, [in_tube(h, tube1), behind(h, cube1)], [], Ctx, R),
+    assertion(R == infeasible([behind(h, cube1)])).
+
+test(wedge_near_far_from_hinge_tip_towards) :-
+    wedge_context_(Ctx),
+    Req = [near(w, door1), far_from_hinge(w, door1), tip_towards(w, door1)],
+    solve_pose(wedge, Req, [], Ctx, R),
+    R = pose(P),
+    pose_geometry(wedge, w, door1, Ctx, G),
+    assertion(strictly_inside_(wedge, Req, P, G)),
+    P = wedge_pose(Rad, Gap, Yaw),
+    assertion(abs(Rad - 0.625) < 1e-6),
+    assertion(abs(Gap - 0.05) < 1e-6),
+    assertion(abs(Yaw) < 1e-6).
+
+test(wedge_near_and_far_conflict) :-
+    wedge_context_(Ctx),
+    solve_pose(wedge, [near(w, door1), tip_away(w, door1), far(w, door1)], [], Ctx, R),
+    assertion(R == infeasible([near(w, door1), far(w, door1)])).
+
+test(unknown_spatial_literal, [error(domain_error(spatial_literal(hook), on_top(h, cube1)))]) :-
+    solve_pose(hook, [on_top(h, cube1)], [], [], _).
+
+test(pose_constraints_then_search) :-
+    pose_constraints(hook, [behind(h, cube1)], [], [], P),
+    !,
+    P = hook_pose(Dx, _, _),
+    inf(Dx, I),
+    sup(Dx, S),
+    assertion(abs(I - 0.025) < 1e-9),
+    assertion(abs(S - 0.07) < 1e-9),
+    pose_search(P, G),
+    assertion(G = hook_pose(0.0475, 0.0, 0.0)).
+
+test(size_long_handle_for_long_tube) :-
+    solve_size(hook, [hook(t), hook_like(t), handle_length(t, long), hook_side(t, right),
+                      hook_length(t, long), handle_width(t, thin)],
+               [tube_length_m(tube1, 0.45), tube_inner_m(tube1, 0.04, 0.055),
+                max_tool_length(0.70), min_wall_m(0.004)], R),
+    assertion(R = dims(_)),
+    R = dims(D),
+    memberchk(handle_length=HL, D),
+    memberchk(handle_width=HW, D),
+    memberchk(hook_length=KL, D),
+    memberchk(hook_side=Side, D),
+    memberchk(hook_angle_deg=Ang, D),
+    % long handle, >= 0.45 + 0.05 reach margin, =< 0.70: midpoint 0.60
+    assertion(abs(HL - 0.60) < 1e-9),
+    assertion(HW >= 0.006), assertion(HW < 0.012),
+    assertion(KL >= 0.025), assertion(HW + KL + 0.005 =< 0.04),
+    assertion(Side == right),
+    assertion(Ang == 90).
+
+test(size_medium_handle_does_not_reach_in_long_tube) :-
+    solve_size(hook, [hook(t), handle_length(t, medium)],
+               [tube_length_m(tube1, 0.45), max_tool_length(0.70)], R),
+    assertion(R == infeasible([handle_length(t, medium), tube_length_m(tube1, 0.45)])).
+
+test(size_long_handle_too_long_to_hold) :-
+    solve_size(hook, [hook(t), handle_length(t, long), hook_side(t, left)],
+               [max_tool_length(0.3)], R),
+    assertion(R == infeasible([handle_length(t, long), max_tool_length(0.3)])).
+
+test(size_kind_conflict) :-
+    solve_size(stick, [hook(t), handle_length(t, short)], [], R),
+    assertion(R == infeasible([hook(t)])).
+
+test(size_hook_angle_whole_degrees) :-
+    solve_size(hook, [hook_angle(t, obtuse)], [], dims(D)),
+    memberchk(hook_angle_deg=A, D),
+    assertion(A == 128).
+
+test(size_wedge_long_above_one) :-
+    solve_size(block, [block(w), shape(w, triangular_prism), block_length(w, long),
+                       mechanical_advantage(w, above_one)],
+               [door_gap_m(door1, 0.01), min_wall_m(0.004)], R),
+    assertion(R == dims([length=0.16, width=0.085, height=0.0475, shape=triangular_prism])).
+
+test(size_wedge_gap_too_high) :-
+    solve_size(block, [shape(w, triangular_prism), block_height(w, low)],
+               [door_gap_m(door1, 0.05)], R),
+    assertion(R == infeasible([block_height(w, low), door_gap_m(door1, 0.05)])).
+
+test(size_cylinder_width_equals_length) :-
+    solve_size(block, [shape(w, cylinder), block_length(w, short)], [], dims(D)),
+    memberchk(length=L, D),
+    memberchk(width=W, D),
+    assertion(L =:= W).
+
+test(size_unknown_value, [error(domain_error(structural_literal(hook), handle_length(t, huge)))]) :-
+    solve_size(hook, [handle_length(t, huge)], [], _).
+
+test(size_spatial_literals_ignored) :-
+    solve_size(hook, [handle_length(t, short), behind(t, cube1), in_tube(t, tube1)], [], R),
+    assertion(R = dims(_)).
+
+:- end_tests(geometry_clp).

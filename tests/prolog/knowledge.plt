@@ -1,0 +1,92 @@
+:- begin_tests(knowledge).
+
+:- use_module('../../prolog/knowledge').
+
+%   write_temp_ontology_(+Text, -Path): a temporary .pl file holding Text.
+write_temp_ontology_(Text, Path) :-
+    tmp_file_stream(text, Path0, S0),
+    close(S0),
+    delete_file(Path0),
+    file_name_extension(Path0, pl, Path),
+    setup_call_cleanup(open(Path, write, S), write(S, Text), close(S)).
+
+test(default_ontology_loads, [setup(load_default_ontology)]) :-
+    kb_loaded_files(Files),
+    length(Files, N),
+    assertion(N >= 6),
+    kb_holds(subclass_of(hook, hook_like)),
+    kb_holds(qualitative_range(handle_length, medium, 0.25, 0.45)).
+
+test(reload_replaces_clauses, [setup(load_default_ontology)]) :-
+    aggregate_all(count, kb_clause(any_length(_), _), N0),
+    load_default_ontology,
+    aggregate_all(count, kb_clause(any_length(_), _), N),
+    assertion(N0 == 3),
+    assertion(N == 3).
+
+test(syntax_error_names_file_and_line,
+     [ setup(write_temp_ontology_("ok(a).\n\nbad(X) :- ok(X.\n", F)),
+       cleanup(delete_file(F)),
+       error(syntax_error(_), file(F, 3, _, _)) ]) :-
+    load_ontology(F).
+
+test(unknown_predicate_names_predicate_file_and_line,
+     [ setup(write_temp_ontology_("ok(a).\n\nuses(X) :-\n    ok(X),\n    frobnicate(X).\n", F)),
+       cleanup(delete_file(F)),
+       error(existence_error(procedure, frobnicate/1), file(F, 3, _, _)) ]) :-
+    load_ontology(F).
+
+test(failed_load_asserts_nothing,
+     [ setup(write_temp_ontology_("marker_fact_kn(a).\nuses(X) :- nowhere_kn(X).\n", F)),
+       cleanup(delete_file(F)) ]) :-
+    catch(load_ontology(F), error(existence_error(procedure, nowhere_kn/1), _), true),
+    \+ current_predicate(kb:marker_fact_kn/1).
+
+test(directive_is_rejected,
+     [ setup(write_temp_ontology_(":- dynamic foo/1.\n", F)),
+       cleanup(delete_file(F)),
+       error(domain_error(ontology_clause, _), file(F, 1, _, _)) ]) :-
+    load_ontology(F).
+
+test(missing_file, [error(existence_error(source_sink, '/nonexistent/onto.pl'))]) :-
+    load_ontology('/nonexistent/onto.pl').
+
+test(calls_may_refer_to_primitive_predicates,
+     [ setup(write_temp_ontology_("primitive_predicate(weight_kg_kn/2).\nheavy_kn(X) :- weight_kg_kn(X, W), W > 1.\n", F)),
+       cleanup(( kb_reset_all, delete_file(F), load_default_ontology )) ]) :-
+    load_ontology(F),
+    \+ kb_holds(heavy_kn(rock)),
+    kb_assert_facts([weight_kg_kn(rock, 2.0)]),
+    kb_holds(heavy_kn(rock)).
+
+test(world_facts_and_reset,
+     [ setup(load_default_ontology), cleanup(kb_reset) ]) :-
+    kb_assert_facts([object_kind(h9, hook), handle_length_m(h9, 0.5)]),
+    kb_holds(handle_length(h9, V)),
+    assertion(V == long),
+    kb_retract_facts(handle_length_m(h9, _)),
+    \+ kb_holds(handle_length(h9, _)),
+    kb_holds(hook(h9)),
+    kb_reset,
+    \+ kb_holds(hook(h9)),
+    kb_holds(subclass_of(stick, hook_like)).
+
+test(assert_rejects_non_ground, [error(instantiation_error)]) :-
+    kb_assert_facts([pose(_, 0, 0, 0, 0)]).
+
+test(assert_rejects_clauses, [error(type_error(fact, _))]) :-
+    kb_assert_facts([(a :- b)]).
+
+test(prove_from_fact_list, [setup(load_default_ontology)]) :-
+    findall(V, kb_prove(handle_length(h, V), [object_kind(h, stick), handle_length_m(h, 0.2)]), Vs),
+    assertion(Vs == [short]),
+    \+ kb_prove(handle_length(h, _), [object_kind(h, stick)]).
+
+test(reset_all_then_reload, [cleanup(load_default_ontology)]) :-
+    load_default_ontology,
+    kb_reset_all,
+    kb_loaded_files(Fs),
+    assertion(Fs == []),
+    \+ current_predicate(kb:subclass_of/2).
+
+:- end_tests(knowledge).
