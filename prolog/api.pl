@@ -54,6 +54,7 @@ api_op(ping, pong, true).
 api_op(version, version(api(Api), swipl(Major, Minor, Patch)),
        api_version_(Api, Major, Minor, Patch)).
 api_op(operations, Ops, findall(Op, api_operation(Op), Ops)).
+api_op(echo(Term), Term, true).
 api_op(variant(A, B), true, A =@= B).
 api_op(parse(Text), Term, api_parse_(Text, Term)).
 api_op(consult(File), Report, api_consult_(File, Report)).
@@ -221,7 +222,7 @@ api_write_json_(T) :-
         api_write_json_text_(Text),
         write('}')
     ;   T = '$VAR'(Name),
-        atom(Name)
+        api_variable_name_(Name)
     ->  write('{"v":'),
         api_write_json_text_(Name),
         write('}')
@@ -237,6 +238,31 @@ api_write_json_(T) :-
         write(',"a":['),
         api_write_json_items_(Args),
         write(']}')
+    ).
+
+%   api_variable_name_(+Name) is semidet.
+%
+%   Name is an atom that reads as a variable name the Python side accepts: an ASCII
+%   capital or `_`, then ASCII letters, digits or `_`.
+
+api_variable_name_(Name) :-
+    atom(Name),
+    atom_codes(Name, [C|Cs]),
+    (   C =:= 0'_
+    ->  true
+    ;   C >= 0'A,
+        C =< 0'Z
+    ),
+    forall(member(D, Cs), api_ascii_csym_(D)).
+
+api_ascii_csym_(C) :-
+    (   C =:= 0'_
+    ->  true
+    ;   C >= 0'a, C =< 0'z
+    ->  true
+    ;   C >= 0'A, C =< 0'Z
+    ->  true
+    ;   C >= 0'0, C =< 0'9
     ).
 
 api_write_json_items_([]).

@@ -372,6 +372,68 @@ class Engine:
             spec = str(resolved)
         self._must("load_ontology", spec)
 
+    # ------------------------------------------------------------------ learning ops
+
+    def term_lgg(self, t1: Term, t2: Term) -> Term:
+        """Return Plotkin's least general generalisation of two terms (``lgg:term_lgg/3``)."""
+        return self._must("term_lgg", t1, t2)
+
+    def clause_lgg(self, c1: Term, c2: Term) -> Term:
+        """Return the reduced, constrained LGG of two clauses (``lgg:clause_lgg/3``).
+
+        Two different numbers generalise to a variable plus a body literal
+        ``in_range(V, Lo, Hi)`` (Lo, Hi the two numbers, in the units of the inputs).
+        """
+        return self._must("clause_lgg", c1, c2)
+
+    def theta_subsumes(self, general: Term, specific: Term,
+                       options: Optional[Sequence[Term]] = None) -> bool:
+        """Return whether ``general`` theta-subsumes ``specific`` (clauses or atoms).
+
+        ``options`` is the option list of ``subsumption:theta_subsumes/3``, e.g.
+        ``[Compound("inference_limit", (100000,))]``.
+        """
+        if options is None:
+            return self._holds("theta_subsumes", general, specific)
+        return self._holds("theta_subsumes", general, specific, list(options))
+
+    def clause_reduce(self, c: Term, options: Optional[Sequence[Term]] = None) -> Term:
+        """Return the Plotkin reduction of clause ``c`` (``subsumption:clause_reduce/2,3``)."""
+        if options is None:
+            return self._must("clause_reduce", c)
+        return self._must("clause_reduce", c, list(options))
+
+    def clause_covers(self, c: Term, example: Term) -> bool:
+        """Return whether clause ``c`` covers the example clause ``Head :- Facts``."""
+        return self._holds("clause_covers", c, example)
+
+    def clause_violations(self, c: Term, example: Term,
+                          options: Optional[Sequence[Term]] = None) -> Optional[list]:
+        """Return the body literals of ``c`` that ``example`` leaves unsatisfied.
+
+        ``[]`` means ``c`` covers ``example``; None means the heads do not unify.
+        """
+        args = (c, example) if options is None else (c, example, list(options))
+        result = self.call("clause_violations", *args)
+        return None if result is FAILED else result
+
+    # ------------------------------------------------------------------ geometry ops
+
+    def solve_pose(self, case: str, required: Sequence[Term], negated: Sequence[Term],
+                   context: Sequence[Term]) -> Term:
+        """Return ``pose(PoseTerm)`` or ``infeasible(Conflict)`` (``geometry_clp:solve_pose/5``).
+
+        ``case`` is ``"hook"`` or ``"wedge"``; the pose numbers are metres and radians
+        relative to the target, as the shared vocabulary defines ``hook_pose/3`` and
+        ``wedge_pose/3``.
+        """
+        return self._must("solve_pose", case, list(required), list(negated), list(context))
+
+    def solve_size(self, kind: str, literals: Sequence[Term], context: Sequence[Term]) -> Term:
+        """Return ``dims([Field=Value, ...])`` (metres, degrees where named ``_deg``) or
+        ``infeasible(Conflict)`` for a new tool of ``kind`` (``geometry_clp:solve_size/4``)."""
+        return self._must("solve_size", kind, list(literals), list(context))
+
 
 def _load_message(term: Term) -> LoadMessage:
     kind, file, line, text = term.args
