@@ -1,0 +1,144 @@
+"""The PDDL that Prolog writes is solved by pyperplan and the Prolog plan validates.
+
+Prolog (prolog/observe.pl, planner.pl, pddl.pl) runs in a subprocess on the
+hand-written demonstrations of tests/prolog/fixtures/demonstrations.pl: it learns the
+tool model from the demonstration, plans the task, and writes domain.pddl,
+problem.pddl and its own plan.  unified-planning then solves and validates.
+"""
+
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from creative_py.learning.pddl_check import PddlError, parse, solve, validate_plan
+
+ROOT = Path(__file__).resolve().parents[3]
+FIXTURES = ROOT / "tests" / "prolog" / "fixtures" / "demonstrations.pl"
+
+pytestmark = pytest.mark.skipif(shutil.which("swipl") is None, reason="needs SWI-Prolog")
+
+STEP = re.compile(r"^\((\S+)((?: \S+)*)\)$")
+
+
+def read_plan(path: Path) -> list[tuple[str, list[str]]]:
+    """Return the steps of a plan file with one ``(action arg ...)`` per line."""
+    steps = []
+    for line in path.read_text().splitlines():
+        match = STEP.match(line.strip())
+        assert match, f"{path}: not a plan step: {line!r}"
+        steps.append((match.group(1), match.group(2).split()))
+    return steps
+
+
+@pytest.fixture(scope="module", params=["hook", "wedge"])
+def written(request, tmp_path_factory) -> tuple[str, Path]:
+    """Let Prolog write the case's domain, problem and plan; return (case, folder)."""
+    case = request.param
+    out = tmp_path_factory.mktemp(case)
+    subprocess.run(
+        ["swipl", "--on-warning=status", "-q", "-g", "fixture_write_pddl_main",
+         "-t", "halt", str(FIXTURES), case, str(out)],
+        check=True, cwd=ROOT, capture_output=True, text=True, timeout=60,
+    )
+    return case, out
+
+
+LAST_ACTION = {"hook": "pull_out", "wedge": "hold_door"}
+
+
+def test_pyperplan_and_prolog_agree(written):
+    case, out = written
+    domain, problem = out / "domain.pddl", out / "problem.pddl"
+    prolog_plan = read_plan(out / "prolog_plan.txt")
+    pyperplan_plan = solve(domain, problem)
+
+    assert pyperplan_plan is not None
+    assert len(pyperplan_plan) == len(prolog_plan) == 3
+    assert prolog_plan[-1][0] == pyperplan_plan[-1][0] == LAST_ACTION[case]
+    assert validate_plan(domain, problem, prolog_plan) == (True, "valid")
+    assert validate_plan(domain, problem, pyperplan_plan) == (True, "valid")
+
+
+def test_a_plan_missing_its_first_step_is_rejected(written):
+    _, out = written
+    domain, problem = out / "domain.pddl", out / "problem.pddl"
+    plan = read_plan(out / "prolog_plan.txt")
+
+    valid, reason = validate_plan(domain, problem, plan[1:])
+
+    assert not valid
+    assert "inapplicable" in reason and plan[1][0] in reason
+
+
+def test_a_plan_that_stops_short_of_the_goal_is_rejected(written):
+    _, out = written
+    domain, problem = out / "domain.pddl", out / "problem.pddl"
+    plan = read_plan(out / "prolog_plan.txt")
+
+    valid, _ = validate_plan(domain, problem, plan[:-1])
+
+    assert not valid
+
+
+def test_a_step_with_an_unknown_action_or_object_is_rejected(written):
+    _, out = written
+    domain, problem = out / "domain.pddl", out / "problem.pddl"
+
+    assert validate_plan(domain, problem, [("fly", [])]) == (
+        False, "plan step 1: unknown action 'fly'")
+    valid, reason = validate_plan(domain, problem, [("pick_up", ["no_such_tool"])])
+    assert not valid and "no_such_tool" in reason
+
+
+def test_a_tool_the_model_rejects_makes_the_task_unsolvable(written, tmp_path):
+    """Without the demonstrated tool on the table, no object satisfies the model."""
+    case, out = written
+    demo_tool = read_plan(out / "prolog_plan.txt")[0][1][0]
+    problem = (out / "problem.pddl").read_text()
+    without = tmp_path / "problem.pddl"
+    without.write_text(problem.replace(f"(on_table {demo_tool})", ""))
+
+    assert solve(out / "domain.pddl", without) is None
+
+
+NEGATIVE_DOMAIN = """(define (domain door)
+  (:requirements :strips :typing :negative-preconditions)
+  (:types thing)
+  (:predicates (locked ?d - thing) (open ?d - thing))
+  (:action unlock :parameters (?d - thing) :precondition (and (locked ?d))
+    :effect (and (not (locked ?d))))
+  (:action open_door :parameters (?d - thing) :precondition (and (not (locked ?d)))
+    :effect (and (open ?d))))
+"""
+NEGATIVE_PROBLEM = """(define (problem p) (:domain door) (:objects d1 - thing)
+  (:init (locked d1)) (:goal (and (open d1))))
+"""
+
+
+def test_negative_preconditions_are_compiled_away(tmp_path):
+    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
+    domain.write_text(NEGATIVE_DOMAIN)
+    problem.write_text(NEGATIVE_PROBLEM)
+
+    plan = solve(domain, problem)
+
+    assert plan == [("unlock", ["d1"]), ("open_door", ["d1"])]
+    assert validate_plan(domain, problem, plan) == (True, "valid")
+    assert not validate_plan(domain, problem, plan[1:])[0]
+
+
+def test_bad_files_raise_an_error_naming_them(tmp_path):
+    broken = tmp_path / "broken.pddl"
+    broken.write_text(NEGATIVE_DOMAIN[:-3])
+    problem = tmp_path / "p.pddl"
+    problem.write_text(NEGATIVE_PROBLEM)
+
+    with pytest.raises(PddlError, match="broken.pddl"):
+        parse(broken, problem)
+    with pytest.raises(PddlError, match="missing.pddl: no such PDDL file"):
+        parse(tmp_path / "missing.pddl", problem)
