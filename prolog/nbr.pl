@@ -75,7 +75,7 @@ nbr_(Head, Fixed, Rest, Negatives0, Chosen) :-
         shortest_prefix_(Head, Fixed, Rest, Negatives, 1, N, K),
         length(Prefix, K),
         append(Prefix, _, Rest),
-        append(Before, [Last], Prefix),
+        split_last_(Prefix, Before, Last),
         nbr_(Head, [Last|Fixed], Before, Negatives, Chosen)
     ).
 
@@ -102,6 +102,13 @@ covered_by_(Head, Fixed, Prefix, Neg) :-
     clause_head_body(C, Head, Lits),
     clause_covers(C, Neg),
     !.
+
+split_last_([X|Xs], Before, Last) :-
+    split_last_(Xs, X, Before, Last).
+
+split_last_([], X, [], X).
+split_last_([Y|Ys], X, [X|Before], Last) :-
+    split_last_(Ys, Y, Before, Last).
 
 items_lits_([], []).
 items_lits_([_-L|Items], [L|Lits]) :-
