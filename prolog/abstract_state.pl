@@ -18,7 +18,8 @@ abstract state is the list of qualitative literals that hold in it:
     ontology's spatial definitions evaluated on the pose numbers (pose_numbers/4).
 
 Tools in use: in the hook case every held(T) tool whose tip lies inside the tube's
-inner box (when the tube's facts are given); in the wedge case every held block and
+inner box (so the tube's facts tube_mouth/4, tube_length_m/2 and tube_inner_m/3 must be
+given for any hook spatial literal); in the wedge case every held block and
 every block that lies in the door's sweep (0 =< Phi =< A, R =< door width).
 
 The ontology is read from the knowledge base (knowledge:load_default_ontology/0); the
@@ -41,10 +42,13 @@ facts are never asserted: they travel in the argument.
 %
 %   ==
 %   ?- abstract_state(hook, [object_kind(h, hook), handle_length_m(h, 0.3),
+%                            tube_mouth(tube1, 0.7, 0.0, 0.0), tube_length_m(tube1, 0.3),
+%                            tube_inner_m(tube1, 0.08, 0.07),
 %                            held(h), tip_position(h, 0.95, 0.0, 0.0), tool_roll(h, 0.1),
 %                            pose(cube1, 0.9, 0.0, -0.01, 0.0), size(cube1, 0.03, 0.03, 0.03)], A).
-%   A = [behind(h, cube1), centred_on(h, cube1), handle_length(h, medium), hook(h),
-%        hook_down(h), hook_like(h), tool(h)].
+%   A = [hook(h), hook_down(h), hook_like(h), tool(h), behind(h, cube1),
+%        centred_on(h, cube1), handle_length(h, medium), in_tube(cube1, tube1),
+%        in_tube(h, tube1)].          % standard order: arity first
 %   ==
 abstract_state(Case, Facts, Abstract) :-
     must_be_oneof_([hook, wedge], Case),
@@ -97,18 +101,16 @@ tool_in_use_(wedge, Facts, Tool) :-
     append(Held, Placed, Tools),
     member(Tool, Tools).
 
-%   The held tool's tip is inside the tube's inner box; true when no tube is known.
+%   The held tool's tip is inside the tube's inner box.
 tip_in_tube_(Tool, Facts) :-
-    (   memberchk(tube_mouth(Tube, MX, MY, MZ), Facts),
-        memberchk(tube_length_m(Tube, L), Facts),
-        memberchk(tube_inner_m(Tube, W, H), Facts)
-    ->  memberchk(tip_position(Tool, X, Y, Z), Facts),
-        X >= MX,
-        X =< MX + L,
-        abs(Y - MY) =< W / 2,
-        abs(Z - MZ) =< H / 2
-    ;   true
-    ).
+    memberchk(tube_mouth(Tube, MX, MY, MZ), Facts),
+    memberchk(tube_length_m(Tube, L), Facts),
+    memberchk(tube_inner_m(Tube, W, H), Facts),
+    memberchk(tip_position(Tool, X, Y, Z), Facts),
+    X >= MX,
+    X =< MX + L,
+    abs(Y - MY) =< W / 2,
+    abs(Z - MZ) =< H / 2.
 
 block_in_sweep_(W, Facts) :-
     once(kb_clause(task_roles(wedge, Door, _), true)),
@@ -140,7 +142,7 @@ block_in_sweep_(W, Facts) :-
 %   ?- pose_numbers(wedge, w, [hinge(door1, 0.0, 0.0), door_closed_heading(door1, 0.0),
 %                              door_angle(door1, 0.5), pose(w, 0.6, 0.1, 0.0, 1.74),
 %                              size(w, 0.15, 0.05, 0.03)], P).
-%   P = wedge_pose(0.6083, 0.1778, 0.0045).   % rounded here
+%   P = wedge_pose(0.6082762530298219, 0.10868210782431094, 0.004054995790476523).
 %   ==
 pose_numbers(Case, Tool, Facts, Pose) :-
     must_be_oneof_([hook, wedge], Case),

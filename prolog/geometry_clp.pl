@@ -277,7 +277,8 @@ negate_(<, >=).
 %   @error domain_error(spatial_literal(Case), L) for a literal with no definition.
 %
 %   ==
-%   ?- pose_constraints(hook, [behind(h, cube1)], [], [], P), P = hook_pose(Dx, _, _),
+%   ?- use_module(library(clpr)),
+%      pose_constraints(hook, [behind(h, cube1)], [], [], P), P = hook_pose(Dx, _, _),
 %      inf(Dx, I).
 %   I = 0.025.
 %   ==
@@ -346,7 +347,8 @@ post_violated_(Geometry, Comparisons) :-
 %   interval under the posted constraints.  Fails if a variable is unbounded.
 %
 %   ==
-%   ?- {X >= 0.025, X =< 0.07}, pose_search(hook_pose(X, 0.0, 0.0), G).
+%   ?- use_module(library(clpr)),
+%      {X >= 0.025, X =< 0.07}, pose_search(hook_pose(X, 0.0, 0.0), G).
 %   G = hook_pose(0.0475, 0.0, 0.0).
 %   ==
 pose_search(Pose, Ground) :-
@@ -459,10 +461,14 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 %     - door_gap_m(Door, G): height > G (the wedge must reach under the door).
 %     - min_wall_m(M): every solid dimension >= M (printable).
 %
+%   A literal of a property that Kind does not have (hook_length/2 for a block) makes
+%   the spec infeasible.
+%
 %   @error domain_error(structural_literal(Kind), L) for an unknown literal or value.
 %
 %   ==
-%   ?- size_constraints(hook, [handle_length(t, long)], [tube_length_m(tube1, 0.45)], D),
+%   ?- use_module(library(clpr)),
+%      size_constraints(hook, [handle_length(t, long)], [tube_length_m(tube1, 0.45)], D),
 %      memberchk(handle_length=L, D), inf(L, I).
 %   I = 0.5.
 %   ==
@@ -667,13 +673,13 @@ fd_range_constraint_(open_closed, V, Lo, Hi) :-
     V #> Lo1,
     V #=< Hi1.
 
-%!  size_search(+Dims:list, -Ground:list) is semidet.
+%!  size_search(+Dims:list, -Ground:list) is nondet.
 %
 %   Ground is Dims with every value bound: a symbolic field (hook_side, shape) to the
 %   first value of its size_choice/4 list that keeps the rest feasible (a cylinder gets
 %   width = length), then each number, in Dims order, to the midpoint of its interval
 %   (metres rounded to 0.1 mm when that stays strictly inside; degrees to a whole
-%   number).
+%   number).  On backtracking, the next values of the symbolic fields.
 %
 %   ==
 %   ?- size_constraints(block, [shape(w, triangular_prism), block_length(w, long)], [], D),

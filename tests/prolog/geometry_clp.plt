@@ -172,4 +172,92 @@ test(size_spatial_literals_ignored) :-
     solve_size(hook, [handle_length(t, short), behind(t, cube1), in_tube(t, tube1)], [], R),
     assertion(R = dims(_)).
 
+%   Law: for every choice of up to two required hook literals and one negated one,
+%   solve_pose/5 either returns a pose where the required literals hold and the negated
+%   one does not, or a conflict that is infeasible and minimal (dropping any member
+%   makes the rest feasible).
+test(pose_law_all_small_combinations) :-
+    hook_context_(Ctx),
+    Lits = [in_tube(h, tube1), behind(h, cube1), in_front(h, cube1), centred_on(h, cube1),
+            hook_down(h), hook_flat(h)],
+    pose_geometry(hook, h, cube1, Ctx, G),
+    forall(( sublist_(Lits, Req), length(Req, NR), NR =< 2,
+             ( Neg = [] ; member(N, Lits), Neg = [N] ) ),
+           pose_law_(Req, Neg, Ctx, G)).
+
+pose_law_(Req, Neg, Ctx, G) :-
+    solve_pose(hook, Req, Neg, Ctx, R),
+    (   R = pose(P)
+    ->  assertion(forall(member(L, Req), spatial_holds(hook, L, P, G))),
+        assertion(forall(member(L, Neg), \+ spatial_holds(hook, L, P, G)))
+    ;   R = infeasible(Conflict),
+        split_conflict_(Conflict, CR, CN),
+        solve_pose(hook, CR, CN, Ctx, R1),
+        assertion(R1 = infeasible(_)),
+        forall(select(_, Conflict, Rest),
+               ( split_conflict_(Rest, RR, RN),
+                 solve_pose(hook, RR, RN, Ctx, R2),
+                 assertion(R2 = pose(_)) ))
+    ).
+
+split_conflict_([], [], []).
+split_conflict_([not(L)|Cs], Rs, [L|Ns]) :-
+    !,
+    split_conflict_(Cs, Rs, Ns).
+split_conflict_([L|Cs], [L|Rs], Ns) :-
+    split_conflict_(Cs, Rs, Ns).
+
+sublist_([], []).
+sublist_([X|Xs], [X|Ys]) :-
+    sublist_(Xs, Ys).
+sublist_([_|Xs], Ys) :-
+    sublist_(Xs, Ys).
+
+%   Law (round trip): a tool sized by solve_size/4 for two qualitative values has, when
+%   its dimensions are read back through the ontology's ranges, exactly those values.
+test(size_round_trip_hook) :-
+    Props = [handle_length, handle_width, hook_length, hook_width, hook_angle],
+    forall(( select(P1, Props, Rest), member(P2, Rest), P1 @< P2,
+             kb_clause(qualitative_range(P1, V1, _, _, _), true),
+             kb_clause(qualitative_range(P2, V2, _, _, _), true) ),
+           ( L1 =.. [P1, t, V1],
+             L2 =.. [P2, t, V2],
+             solve_size(hook, [hook(t), L1, L2, hook_side(t, left)], [], dims(D)),
+             hook_catalogue_(t, D, Facts),
+             assertion(kb_prove(L1, Facts)),
+             assertion(kb_prove(L2, Facts)),
+             assertion(kb_prove(hook_side(t, left), Facts)) )).
+
+test(size_round_trip_block) :-
+    Props = [block_length, block_width, block_height, mechanical_advantage],
+    forall(( select(P1, Props, Rest), member(P2, Rest), P1 @< P2,
+             kb_clause(qualitative_range(P1, V1, _, _, _), true),
+             kb_clause(qualitative_range(P2, V2, _, _, _), true),
+             member(Shape, [triangular_prism, box]) ),
+           ( L1 =.. [P1, w, V1],
+             L2 =.. [P2, w, V2],
+             solve_size(block, [shape(w, Shape), L1, L2], [], R),
+             (   R = dims(D)
+             ->  block_catalogue_(w, D, Facts),
+                 assertion(kb_prove(L1, Facts)),
+                 assertion(kb_prove(L2, Facts)),
+                 assertion(kb_prove(shape(w, Shape), Facts))
+             ;   % a long block (>= 0.12 m) would need a height above the 0.08 m maximum
+                 assertion(R == infeasible([L1, L2])),
+                 assertion([L1, L2] == [block_length(w, long),
+                                        mechanical_advantage(w, below_one)])
+             ) )).
+
+hook_catalogue_(T, D, [ object_kind(T, hook), handle_length_m(T, HL), handle_width_m(T, HW),
+                        hook_length_m(T, KL), hook_width_m(T, KW), hook_side_is(T, S),
+                        hook_angle_deg(T, A) ]) :-
+    memberchk(handle_length=HL, D), memberchk(handle_width=HW, D),
+    memberchk(hook_length=KL, D), memberchk(hook_width=KW, D),
+    memberchk(hook_side=S, D), memberchk(hook_angle_deg=A, D).
+
+block_catalogue_(W, D, [ object_kind(W, block), block_shape(W, S), block_length_m(W, L),
+                         block_width_m(W, Wd), block_height_m(W, H) ]) :-
+    memberchk(shape=S, D), memberchk(length=L, D),
+    memberchk(width=Wd, D), memberchk(height=H, D).
+
 :- end_tests(geometry_clp).
