@@ -28,8 +28,6 @@ atoms as JSON strings, proper lists as arrays, numbers as numbers, strings as
 To add an operation, add ONE row to api_op/3 (request term, result term, goal) and,
 if it needs a new module, its use_module/1 below.
 
-Not yet dispatched (their modules were not in prolog/ when this facade was written):
-see the table comment.
 */
 
 :- use_module(library(error)).
@@ -37,12 +35,19 @@ see the table comment.
 :- use_module(library(apply)).
 :- use_module(library(http/json), [json_write/3]).
 
-:- use_module(knowledge, [load_ontology/1]).
+:- use_module(knowledge, [load_ontology/1, load_default_ontology/0]).
 :- use_module(lgg, [term_lgg/3, clause_lgg/3]).
 :- use_module(subsumption,
               [ theta_subsumes/2, theta_subsumes/3, clause_reduce/2, clause_reduce/3,
                 clause_covers/2, clause_violations/3, clause_violations/4 ]).
 :- use_module(geometry_clp, [solve_pose/5, solve_size/4]).
+:- use_module(rlgg, [rlgg/4, rlgg/5, saturate/4]).
+:- use_module(nbr, [nbr_reduce/3]).
+:- use_module(version_space,
+              [ vs_init/2, vs_update/3, vs_bounds/3, vs_unknown/2, vs_examples/3,
+                vs_converged/1, vs_covers/3, vs_notes/2 ]).
+:- use_module(replacement, [replacement/3]).
+:- use_module(abstract_state, [abstract_state/3, pose_numbers/4]).
 
 %!  api_op(?Request, -Result, -Goal) is nondet.
 %
@@ -61,6 +66,7 @@ api_op(consult(File), Report, api_consult_(File, Report)).
 api_op(load_status, status(Errors, Warnings), api_load_status_(Errors, Warnings)).
 % Knowledge.
 api_op(load_ontology(Spec), true, load_ontology(Spec)).
+api_op(load_default_ontology, true, load_default_ontology).
 % Generalisation and subsumption (lgg.pl, subsumption.pl).
 api_op(term_lgg(T1, T2), G, term_lgg(T1, T2, G)).
 api_op(clause_lgg(C1, C2), G, clause_lgg(C1, C2, G)).
@@ -71,6 +77,24 @@ api_op(clause_reduce(C, Options), R, clause_reduce(C, R, Options)).
 api_op(clause_covers(C, E), true, clause_covers(C, E)).
 api_op(clause_violations(C, E), V, clause_violations(C, E, V)).
 api_op(clause_violations(C, E, Options), V, clause_violations(C, E, V, Options)).
+api_op(rlgg(E1, E2, BK), C, rlgg(E1, E2, BK, C)).
+api_op(rlgg(E1, E2, BK, Options), C, rlgg(E1, E2, BK, C, Options)).
+api_op(saturate(E, BK, Options), C, saturate(E, BK, C, Options)).
+api_op(nbr_reduce(C, Negatives), R, nbr_reduce(C, Negatives, R)).
+% The version space (version_space.pl); VS is an opaque term Python hands back.
+api_op(vs_init(Example), VS, vs_init(Example, VS)).
+api_op(vs_update(VS0, Labelled), VS, vs_update(VS0, Labelled, VS)).
+api_op(vs_bounds(VS), bounds(HS, HG), vs_bounds(VS, HS, HG)).
+api_op(vs_unknown(VS), Literals, vs_unknown(VS, Literals)).
+api_op(vs_examples(VS), examples(Pos, Neg), vs_examples(VS, Pos, Neg)).
+api_op(vs_converged(VS), true, vs_converged(VS)).
+api_op(vs_covers(VS, Bound, Example), true, vs_covers(VS, Bound, Example)).
+api_op(vs_notes(VS), Notes, vs_notes(VS, Notes)).
+% Tool creation (replacement.pl) and perception's facts -> literals (abstract_state.pl).
+api_op(replacement(Literal), replacement(General, Alternatives),
+       replacement(Literal, General, Alternatives)).
+api_op(abstract_state(Case, Facts), Abstract, abstract_state(Case, Facts, Abstract)).
+api_op(pose_numbers(Case, Tool, Facts), Pose, pose_numbers(Case, Tool, Facts, Pose)).
 % Geometry: spatial literals -> pose numbers, structural literals -> dimensions.
 api_op(solve_pose(Case, Required, Negated, Context), R,
        solve_pose(Case, Required, Negated, Context, R)).

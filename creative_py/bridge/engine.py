@@ -372,6 +372,10 @@ class Engine:
             spec = str(resolved)
         self._must("load_ontology", spec)
 
+    def load_default_ontology(self) -> None:
+        """Load every background-knowledge file of ``ontology/`` (``knowledge:load_default_ontology/0``)."""
+        self._must("load_default_ontology")
+
     # ------------------------------------------------------------------ learning ops
 
     def term_lgg(self, t1: Term, t2: Term) -> Term:
@@ -415,6 +419,77 @@ class Engine:
         """
         args = (c, example) if options is None else (c, example, list(options))
         result = self.call("clause_violations", *args)
+        return None if result is FAILED else result
+
+    def rlgg(self, e1: Term, e2: Term, background: Sequence[Term],
+             options: Optional[Sequence[Term]] = None) -> Term:
+        """Return the relative LGG of ground examples ``e1``, ``e2`` w.r.t. ground facts.
+
+        ``options`` as for ``rlgg:rlgg/5``: ``depth(I)`` (default 2),
+        ``link_numbers(Bool)``.
+        """
+        if options is None:
+            return self._must("rlgg", e1, e2, list(background))
+        return self._must("rlgg", e1, e2, list(background), list(options))
+
+    def nbr_reduce(self, c: Term, negatives: Sequence[Term]) -> Term:
+        """Return ``c`` with its body reduced against the negative examples (``nbr:nbr_reduce/3``)."""
+        return self._must("nbr_reduce", c, list(negatives))
+
+    def vs_init(self, example: Term) -> Term:
+        """Return the version space of a first positive example (an opaque term)."""
+        return self._must("vs_init", example)
+
+    def vs_update(self, vs: Term, labelled: Term) -> Term:
+        """Return the version space after ``pos(Example)`` or ``neg(Example)``."""
+        return self._must("vs_update", vs, labelled)
+
+    def vs_bounds(self, vs: Term) -> tuple[Term, Term]:
+        """Return ``(h_s, h_g)``, the two boundary clauses, sharing their head variables."""
+        bounds = self._must("vs_bounds", vs)
+        return bounds.args[0], bounds.args[1]
+
+    def vs_unknown(self, vs: Term) -> list:
+        """Return the literals of h_s not yet in h_g (the ones experiments test)."""
+        return self._must("vs_unknown", vs)
+
+    def vs_examples(self, vs: Term) -> tuple[list, list]:
+        """Return ``(positives, negatives)`` seen so far, in arrival order."""
+        examples = self._must("vs_examples", vs)
+        return examples.args[0], examples.args[1]
+
+    def vs_converged(self, vs: Term) -> bool:
+        """Return whether h_s and h_g agree."""
+        return self._holds("vs_converged", vs)
+
+    def vs_covers(self, vs: Term, bound: str, example: Term) -> bool:
+        """Return whether the boundary ``bound`` (``"hs"`` or ``"hg"``) covers ``example``."""
+        return self._holds("vs_covers", vs, bound, example)
+
+    def vs_notes(self, vs: Term) -> list:
+        """Return the inconsistencies met, newest first (``hg_weakened/2``, ``noisy_negative/1``)."""
+        return self._must("vs_notes", vs)
+
+    def replacement(self, literal: Term) -> Optional[tuple[Term, list]]:
+        """Return ``(general, alternatives)`` of a structural literal, or None if no
+        replacement operator of the loaded ontology covers it."""
+        result = self.call("replacement", literal)
+        if result is FAILED:
+            return None
+        return result.args[0], result.args[1]
+
+    def abstract_state(self, case: str, facts: Sequence[Term]) -> list:
+        """Return the sorted qualitative literals that hold in primitive ``facts``.
+
+        ``facts`` are ground primitive facts (world frame, metres, radians), e.g.
+        ``Compound("pose", ("cube1", 0.9, 0.0, -0.01, 0.0))``.
+        """
+        return self._must("abstract_state", case, list(facts))
+
+    def pose_numbers(self, case: str, tool: str, facts: Sequence[Term]) -> Optional[Term]:
+        """Return ``hook_pose(Dx, Dy, Roll)`` / ``wedge_pose(R, Gap, Yaw)`` of ``tool``
+        (metres, radians, relative to the target), or None if a fact is missing."""
+        result = self.call("pose_numbers", case, tool, list(facts))
         return None if result is FAILED else result
 
     # ------------------------------------------------------------------ geometry ops
