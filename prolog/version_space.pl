@@ -351,8 +351,10 @@ same_literal_(Head, L, G) :-
 %   ==
 vs_bounds(VS, HS, HG) :-
     copy_term(VS, vs(Head, SBody, GBody, _, _, _)),
-    clause_head_body(HS, Head, SBody),
-    clause_head_body(HG, Head, GBody).
+    clause_head_body(HS0, Head, SBody),
+    clause_head_body(HG0, Head, GBody),
+    HS = HS0,
+    HG = HG0.
 
 %!  vs_unknown(+VS, -Literals:list) is det.
 %
@@ -403,11 +405,13 @@ vs_converged(VS) :-
 %   true.
 %   ==
 vs_covers(VS, Bound, Example) :-
-    must_be(oneof([hs, hg]), Bound),
+    must_be(atom, Bound),
     vs_bounds(VS, HS, HG),
     (   Bound == hs
     ->  clause_covers(HS, Example)
-    ;   clause_covers(HG, Example)
+    ;   Bound == hg
+    ->  clause_covers(HG, Example)
+    ;   domain_error(oneof([hs, hg]), Bound)
     ).
 
 %!  vs_notes(+VS, -Notes:list) is det.
