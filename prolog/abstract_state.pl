@@ -1,6 +1,7 @@
 :- module(abstract_state,
           [ abstract_state/3,         % +Case, +PrimitiveFacts, -Abstract
-            pose_numbers/4            % +Case, +Tool, +PrimitiveFacts, -Pose
+            pose_numbers/4,           % +Case, +Tool, +PrimitiveFacts, -Pose
+            pose_world/5              % +Case, +Tool, +PrimitiveFacts, +Pose, -World
           ]).
 
 /** <module> Primitive state facts to abstract (qualitative) states
@@ -167,6 +168,49 @@ pose_numbers_(wedge, Tool, Facts, wedge_pose(R, Gap, Yaw)) :-
     Gap is R * (A - Phi) - Half - Thick,
     Towards is Theta0 + Phi + pi / 2,
     wrap_angle_(Heading - Towards, Yaw).
+
+%!  pose_world(+Case, +Tool, +PrimitiveFacts:list, +Pose, -World) is semidet.
+%
+%   World is where the ground relative pose Pose (hook_pose/3 or wedge_pose/3, e.g.
+%   from geometry_clp:solve_pose/5) puts Tool in the world frame, the inverse of
+%   pose_numbers/4 in the current state PrimitiveFacts; fails if a needed fact is
+%   missing.
+%
+%   Hook: World = tip(X, Y, Roll), the prong centre's world X and Y (metres; its
+%   height is the skill's choice) and the roll (radians, 0 = prong down).
+%   Wedge: World = place(X, Y, Heading), the wedge centre's world X and Y and the
+%   world yaw of its tip (+x of the block frame), radians in (-pi, pi]; the door's
+%   opening A is taken from door_angle/2 (the door as it stands when the trial starts).
+%
+%   ==
+%   ?- pose_world(hook, h, [pose(cube1, 0.9, -0.25, -0.0125, 0.0)],
+%                 hook_pose(0.04, 0.0, 0.0), W).
+%   W = tip(0.9400000000000001, -0.25, 0.0).
+%   ==
+pose_world(Case, Tool, Facts, Pose, World) :-
+    must_be_oneof_([hook, wedge], Case),
+    must_be(list, Facts),
+    must_be(ground, Pose),
+    pose_world_(Case, Tool, Facts, Pose, World).
+
+pose_world_(hook, _Tool, Facts, hook_pose(Dx, Dy, Roll), tip(X, Y, Roll)) :-
+    once(kb_clause(task_roles(hook, Target, _), true)),
+    memberchk(pose(Target, CX, CY, _, _), Facts),
+    X is CX + Dx,
+    Y is CY + Dy.
+pose_world_(wedge, Tool, Facts, wedge_pose(R, Gap, Yaw), place(X, Y, Heading)) :-
+    once(kb_clause(task_roles(wedge, Door, _), true)),
+    memberchk(hinge(Door, HX, HY), Facts),
+    memberchk(door_closed_heading(Door, Theta0), Facts),
+    memberchk(door_angle(Door, A), Facts),
+    R > 0,
+    pose_geometry(wedge, Tool, Door, Facts, Geometry),
+    memberchk(wedge_half=Half, Geometry),
+    memberchk(door_half_thickness=Thick, Geometry),
+    Phi is A - (Gap + Half + Thick) / R,
+    X is HX + R * cos(Theta0 + Phi),
+    Y is HY + R * sin(Theta0 + Phi),
+    wrap_angle_(Yaw + Theta0 + Phi + pi / 2, Heading).
 
 %   door_polar_(+W, +Door, +Facts, -R, -Phi, -A): W's centre in polar coordinates about
 %   the hinge, Phi relative to the closed door's heading, wrapped to (-pi, pi].

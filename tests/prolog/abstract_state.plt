@@ -116,4 +116,28 @@ test(bad_case, [error(domain_error(oneof([hook, wedge]), door))]) :-
 test(non_ground_fact, [error(instantiation_error)]) :-
     abstract_state(hook, [pose(cube1, _, 0, 0, 0)], _).
 
+test(hook_pose_world_inverts_pose_numbers) :-
+    hook_scene_(0.95, 0.1, 0.90, Facts),
+    pose_world(hook, hook_a2, Facts, hook_pose(0.04, -0.01, 0.2), tip(X, Y, Roll)),
+    assertion(abs(X - 0.94) < 1e-9),
+    assertion(abs(Y + 0.01) < 1e-9),
+    assertion(Roll == 0.2).
+
+%   Law: pose_world/5 then pose_numbers/4 gives the pose back, for a grid of wedge poses
+%   and door headings.
+test(wedge_pose_world_round_trip) :-
+    wedge_scene_(Facts0),
+    forall(( member(Theta0, [0.0, 1.2, -2.5, 3.0]),
+             member(R, [0.2, 0.45, 0.7]),
+             member(Gap, [0.0, 0.05, 0.2]),
+             member(Yaw, [0.0, 0.25, -3.0, 3.1]) ),
+           ( selectchk(door_closed_heading(door1, _), Facts0,
+                       door_closed_heading(door1, Theta0), Facts1),
+             pose_world(wedge, wedge_a2, Facts1, wedge_pose(R, Gap, Yaw), place(X, Y, H)),
+             selectchk(pose(wedge_a2, _, _, Z, _), Facts1, pose(wedge_a2, X, Y, Z, H), Facts),
+             pose_numbers(wedge, wedge_a2, Facts, wedge_pose(R1, Gap1, Yaw1)),
+             assertion(abs(R1 - R) < 1e-9),
+             assertion(abs(Gap1 - Gap) < 1e-9),
+             assertion(abs(sin(Yaw1 - Yaw)) + abs(cos(Yaw1 - Yaw) - 1) < 1e-9) )).
+
 :- end_tests(abstract_state).
