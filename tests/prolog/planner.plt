@@ -17,7 +17,11 @@ planned_(Case, State, Options, Result) :-
 
 %   S0 without the literals whose first argument is Tool.
 without_(Tool, S0, S) :-
-    exclude([L]>>( L =.. [_, A|_], A == Tool ), S0, S).
+    exclude(about_(Tool), S0, S).
+
+about_(Tool, L) :-
+    L =.. [_, A|_],
+    A == Tool.
 
 test(hook_plan, Steps == [pick_up(hook_a2), position_tool(hook_a2, cube1, tube1),
                           pull_out(hook_a2, cube1, tube1)]) :-

@@ -1,0 +1,79 @@
+:- begin_tests(pddl).
+
+:- use_module(library(lists)).
+:- use_module(library(readutil)).
+:- use_module('fixtures/demonstrations').
+
+models_(Case, Models) :-
+    fixture_demonstration(Case, Steps),
+    innate_action_models(Case, Innate),
+    observe_demonstration(Steps, Innate, models(_, New, _)),
+    append(New, Innate, Models).
+
+contains_(Text, Sub) :-
+    once(sub_string(Text, _, _, _, Sub)).
+
+test(hook_domain_strips) :-
+    models_(hook, Models),
+    pddl_domain(hook, Models, Text),
+    contains_(Text, "(:requirements :strips :typing)\n"),
+    contains_(Text, "(:constants long medium right thick wide - value)"),
+    contains_(Text, "(:action position_tool\n    :parameters (?tool - tool_object ?target - target ?site - site)\n    :precondition (and (holding ?tool) (in_tube ?target ?site))\n    :effect (and (in_tube ?tool ?site) (behind ?tool ?target) (centred_on ?tool ?target) (hook_down ?tool)))"),
+    contains_(Text, ":effect (and (out_of_tube ?target ?site) (not (in_tube ?tool ?site)) (not (in_tube ?target ?site))))").
+
+test(wedge_domain_renames_object) :-
+    models_(wedge, Models),
+    pddl_domain(wedge, Models, Text),
+    contains_(Text, "(is_object ?a1 - object)"),
+    contains_(Text, "(is_object ?tool)"),
+    \+ contains_(Text, "(object ").
+
+test(negative_preconditions_declared) :-
+    pddl_domain(d, [action_model(a, [X-tool], [p(X), not(q(X))], [q(X)], [])], Text),
+    contains_(Text, "(:requirements :strips :typing :negative-preconditions)"),
+    contains_(Text, ":precondition (and (p ?tool) (not (q ?tool)))").
+
+test(extra_predicates_declared) :-
+    pddl_domain(d, [], [extra_literals([door_held(door1), gripper_empty])], Text),
+    contains_(Text, "(door_held ?a1 - object)"),
+    contains_(Text, "(gripper_empty)").
+
+test(bad_name, error(domain_error(pddl_name, 'Bad'))) :-
+    pddl_domain('Bad', [], _).
+
+test(not_strips, error(domain_error(pddl_strips_literal(a), p('?tool', _)))) :-
+    pddl_domain(d, [action_model(a, [X-tool], [p(X, _)], [], [])], _).
+
+test(problem_text, Text == "(define (problem p)\n  (:domain d)\n  (:objects h - tool_object c - target)\n  (:init\n    (on_table h)\n    (gripper_empty)\n  )\n  (:goal (and (holding h) (near h c)))\n)\n") :-
+    pddl_problem(p, d, [h-tool, c-target], [on_table(h), gripper_empty],
+                 [holding(h), near(h, c)], Text).
+
+test(problem_bad_object, error(domain_error(typed_object, h-robot))) :-
+    pddl_problem(p, d, [h-robot], [], [], _).
+
+test(plan_text, Text == "(pick_up hook_a2)\n(place wedge_a2 door1 floor1)\n") :-
+    pddl_plan([pick_up(hook_a2), place(wedge_a2, door1, floor1)], Text).
+
+test(write_files, [setup(tmp_files_(D, P)), cleanup(delete_files_([D, P]))]) :-
+    models_(hook, Models),
+    fixture_initial_state(hook, S0),
+    pddl_write_files(D, P, Models, S0, [out_of_tube(cube1, tube1)],
+                     [domain_name(hook), problem_name(pull_cube)]),
+    read_file_to_string(D, DText, []),
+    read_file_to_string(P, PText, []),
+    contains_(DText, "(define (domain hook)"),
+    contains_(PText, "(define (problem pull_cube)\n  (:domain hook)"),
+    contains_(PText, "(:objects cube1 - target hook_a1 - tool_object"),
+    contains_(PText, "left - value short - value tube1 - site)"),
+    \+ contains_(PText, "medium - value"),
+    \+ contains_(PText, "(stick "),
+    contains_(PText, "(:goal (and (out_of_tube cube1 tube1)))").
+
+tmp_files_(D, P) :-
+    tmp_file(domain, D),
+    tmp_file(problem, P).
+
+delete_files_(Files) :-
+    forall(( member(F, Files), exists_file(F) ), delete_file(F)).
+
+:- end_tests(pddl).
