@@ -115,6 +115,7 @@ class HookSpec:
     def __post_init__(self) -> None:
         _check_name(self.name)
         _check_positive(self, "handle_length", "handle_width")
+        _check_mass(self)
         if self.hook_side == "none":
             if self.hook_length != 0.0:
                 raise ValueError(f"{self.name}: a stick (hook_side 'none') has hook_length 0")
@@ -198,6 +199,7 @@ class BlockSpec:
         if self.shape not in ("triangular_prism", "box", "cylinder"):
             raise ValueError(f"{self.name}: shape must be triangular_prism, box or cylinder")
         _check_positive(self, "length", "width", "height")
+        _check_mass(self)
         if self.shape == "cylinder" and abs(self.width - self.length) > 1e-9:
             raise ValueError(f"{self.name}: a cylinder's width must equal its length (diameter)")
 
@@ -263,6 +265,13 @@ def spec_from_dict(data: dict, *, source: str = "<dict>") -> ToolSpec:
         raise ValueError(f"{source}: object {data.get('name', '?')!r}: {exc}") from None
     except ValueError as exc:
         raise ValueError(f"{source}: {exc}") from None
+
+
+def _check_mass(spec) -> None:
+    # A zero mass would make pybullet treat the tool as static.
+    m = spec.mass
+    if m is not None and not (isinstance(m, (int, float)) and math.isfinite(m) and m > 0):
+        raise ValueError(f"{spec.name}: mass must be a positive number of kg or None, got {m!r}")
 
 
 def _footprint_overlap_area(box: Box, xs: tuple[float, float],

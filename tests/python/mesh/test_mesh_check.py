@@ -5,6 +5,8 @@ from __future__ import annotations
 import shutil
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from creative_py.mesh.check import check_tool_files
 from creative_py.mesh.export import write_tool_files
@@ -70,3 +72,21 @@ def test_a_truncated_stl_is_reported(tmp_path):
     report = check_tool_files(files, openscad=False)
     assert not report.stl_watertight
     assert any("not watertight" in p for p in report.problems)
+
+
+@needs_openscad
+@settings(max_examples=12, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(length=st.floats(0.05, 0.4), width=st.floats(0.003, 0.02),
+       hook_length=st.floats(0.003, 0.06), hook_width=st.floats(0.003, 0.02),
+       angle=st.floats(30.0, 150.0), side=st.sampled_from(["left", "right"]))
+def test_the_scad_of_any_hook_is_the_same_solid_as_its_stl(tmp_path, length, width,
+                                                           hook_length, hook_width, angle,
+                                                           side):
+    spec = HookSpec("h", length, handle_width=width, hook_length=hook_length,
+                    hook_width=hook_width, hook_side=side, hook_angle_deg=angle,
+                    grip_offset=0.01)
+    files = write_tool_files(spec, tmp_path, picture=False, overwrite=True)
+    report = check_tool_files(files)
+    assert report.problems == ()
+    assert report.scad_mismatch_rel < 1e-4
