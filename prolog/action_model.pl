@@ -49,8 +49,12 @@ hook_width/2, hook_side/2, hook_angle/2, object/1, block/1, shape/2, block_lengt
 block_width/2, block_height/2, mechanical_advantage/2) and *spatial* (in_tube/2,
 behind/2, in_front/2, centred_on/2, hook_down/1, hook_flat/1, near/2, far/2,
 far_from_hinge/2, near_hinge/2, tip_towards/2, tip_away/2) when their first argument
-is the tool; *robot* (gripper_empty/0, holding/1, on_table/1); anything else is
-*other* (task literals such as in_tube(cube1, tube1), door_held(door1)).
+is the tool; *robot* (gripper_empty/0, holding/1, on_table/1);
+*catalogue* (the numeric facts object_kind/2, handle_length_m/2, handle_width_m/2,
+hook_length_m/2, hook_width_m/2, hook_side_is/2, hook_angle_deg/2, block_shape/2,
+block_length_m/2, block_width_m/2, block_height_m/2) when their first argument is the
+tool; anything else is *other* (task literals such as in_tube(cube1, tube1),
+door_held(door1)).
 The lists follow the shared vocabulary and ontology/tools_*.pl, ontology/spatial.pl.
 */
 
@@ -174,8 +178,9 @@ action_model_instance(Model, Args, Name, Pre, Add, Del) :-
 %
 %   True if Model is a motion skill (its Add holds the schema `spatial_of(Tool)`).
 %
-%       ?- innate_action_models(hook, [_, M|_]), action_motion_tool(M, T).
-%       M = action_model(position_tool, [T-tool|_], _, _, _).
+%       ?- innate_action_models(hook, [_, M|_]), action_motion_tool(M, T),
+%          M = action_model(position_tool, [P-tool|_], _, _, _), T == P.
+%       true.
 
 action_motion_tool(action_model(_, _, _, Add, _), Tool) :-
     memberchk(spatial_of(Tool), Add).
@@ -197,9 +202,10 @@ action_tool_model(action_model(_, Params, Pre, _, _), Tool) :-
 
 %!  tool_literal_kind(+Tool, +Literal, -Kind) is det.
 %
-%   Kind is `structural` or `spatial` if Literal is a structural or spatial literal
-%   whose first argument is Tool (compared with ==, so Tool may be a variable of a
-%   model), `robot` for the robot's own state, and `other` otherwise.  A negated
+%   Kind is `structural`, `spatial` or `catalogue` if Literal is a structural,
+%   spatial or catalogue (numeric: handle_length_m/2, ...) literal whose first
+%   argument is Tool (compared with ==, so Tool may be a variable of a model),
+%   `robot` for the robot's own state, and `other` otherwise.  A negated
 %   literal not(L) has the kind of L.
 %
 %       ?- tool_literal_kind(hook_a2, behind(hook_a2, cube1), K).
@@ -225,6 +231,8 @@ literal_kind_(PI, Literal, Tool, Kind) :-
     ->  Kind = structural
     ;   compound(Literal), arg(1, Literal, A), A == Tool, spatial_predicate_(PI)
     ->  Kind = spatial
+    ;   compound(Literal), arg(1, Literal, A), A == Tool, catalogue_predicate_(PI)
+    ->  Kind = catalogue
     ;   Kind = other
     ).
 
@@ -249,6 +257,18 @@ structural_predicate_(block_length/2).
 structural_predicate_(block_width/2).
 structural_predicate_(block_height/2).
 structural_predicate_(mechanical_advantage/2).
+
+catalogue_predicate_(object_kind/2).
+catalogue_predicate_(handle_length_m/2).
+catalogue_predicate_(handle_width_m/2).
+catalogue_predicate_(hook_length_m/2).
+catalogue_predicate_(hook_width_m/2).
+catalogue_predicate_(hook_side_is/2).
+catalogue_predicate_(hook_angle_deg/2).
+catalogue_predicate_(block_shape/2).
+catalogue_predicate_(block_length_m/2).
+catalogue_predicate_(block_width_m/2).
+catalogue_predicate_(block_height_m/2).
 
 spatial_predicate_(in_tube/2).
 spatial_predicate_(behind/2).

@@ -39,7 +39,11 @@ skill: they become a **new action model**.
 
 The *example* is the ground clause the version space starts from:
 `tool_pose(Tool, Target, Context) :- Body`, Body the h_s literals above (structural,
-then spatial, then task, each in S0's order) as a conjunction.
+then spatial, then task, each in S0's order) as a conjunction.  If S0 also holds the
+tool's catalogue numbers (handle_length_m(hook_a2, 0.35), ...; abstract_state/3 does
+not add them, the caller may) they go into the example after the structural literals,
+for the constrained LGG, but not into the model's precondition (a planner and PDDL
+have no use for one tool's exact sizes).
 
 A transition with no change at all is explained whatever the model says (a skill that
 did nothing teaches nothing), so it is matched even if the precondition was not seen.
@@ -214,10 +218,12 @@ new_model_(Skill, Args, S0, Model, frame(Tool, Target, Context), UAdd, UDel,
     exclude(is_schema_, Add0, Add1),
     exclude(is_schema_, Del0, Del1),
     include(kind_(Tool, structural), S0, Structural),
+    include(kind_(Tool, catalogue), S0, Catalogue),
     include(spatial_wrt_(Tool, [Target, Context]), S0, Spatial),
     include(kind_(Tool, other), UDel, Task),
     append([Structural, Spatial, Task], Body),
-    list_conj_(Body, BodyConj),
+    append([Structural, Catalogue, Spatial, Task], ExampleBody),
+    list_conj_(ExampleBody, BodyConj),
     Example = (tool_pose(Tool, Target, Context) :- BodyConj),
     append(Pre0, Body, Pre1),
     append(Add1, UAdd, Add2),

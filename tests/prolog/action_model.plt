@@ -46,11 +46,11 @@ test(instance_arity, error(domain_error(arguments_of(pick_up), [a, b]))) :-
     action_model_instance(PickUp, [a, b], _, _, _, _).
 
 test(literal_kinds, Kinds == [structural, spatial, other, robot, spatial, other,
-                              structural]) :-
+                              structural, catalogue]) :-
     maplist([L, K]>>tool_literal_kind(hook_a2, L, K),
             [handle_length(hook_a2, medium), behind(hook_a2, cube1),
              in_tube(cube1, tube1), gripper_empty, not(hook_down(hook_a2)),
-             hook(hook_a1), object(hook_a2)],
+             hook(hook_a1), object(hook_a2), handle_length_m(hook_a2, 0.35)],
             Kinds).
 
 test(literal_kind_of_a_model_variable, [K1, K2] == [spatial, other]) :-

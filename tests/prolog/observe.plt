@@ -114,4 +114,16 @@ test(non_ground_state, error(type_error(demonstration_step, _))) :-
     innate_action_models(hook, Ms),
     observe_demonstration([step(pick_up, [h], [on_table(_)], [])], Ms, _).
 
+test(catalogue_numbers_go_to_the_example_only,
+     [Body, Pre] =@= [(hook(h), handle_length_m(h, 0.35), behind(h, c), in_tube(c, u)),
+                      [holding(T), hook(T), behind(T, C), in_tube(C, U)]]) :-
+    innate_action_models(hook, Ms),
+    S0 = [holding(h), hook(h), handle_length_m(h, 0.35), behind(h, c), in_tube(c, u)],
+    S1 = [holding(h), hook(h), handle_length_m(h, 0.35), behind(h, c),
+          out_of_tube(c, u)],
+    observe_demonstration([step(pull, [h, c, u], S0, S1)], Ms,
+                          models([], [action_model(pull_out, [T-tool, C-target, U-site],
+                                                   Pre, _, _)],
+                                 (_ :- Body))).
+
 :- end_tests(observe).
