@@ -27,8 +27,10 @@ An action model is a plain data term, threaded through arguments:
 A *motion skill* moves a held object to a pose relative to the target.  Which spatial
 literals it makes true is not fixed in advance: the schematic literal `spatial_of(T)`
 in Add and Del says "any spatial literal whose first argument is the tool T may become
-true or false".  Learning by observation (observe.pl) uses the schema to explain any
-change of T's spatial literals; planning (planner.pl) and PDDL (pddl.pl) first
+true or false".  In the delete list of another skill (pull) the
+schema says only that T's spatial literals may become false (pulling moves the tool
+out of the tube).  Learning by observation (observe.pl) uses the schema to explain
+such changes of T's spatial literals; planning (planner.pl) and PDDL (pddl.pl) first
 *compile* each motion skill into ordinary STRIPS actions whose add effects are exactly
 the spatial literals some learned model's precondition needs
 (action_models_compile/2).
@@ -39,7 +41,7 @@ The innate models (the robot's skills, given, not learned):
   |-------|------------------------------|--------------------------------|-----------|
   | both  | pick_up(T)                   | gripper_empty, on_table(T)     | +holding(T) -gripper_empty -on_table(T) |
   | hook  | position_tool(T, C, Tube)    | holding(T), in_tube(C, Tube)   | motion: spatial_of(T) |
-  | hook  | pull(T, C, Tube)             | holding(T)                     | -in_tube(T, Tube) |
+  | hook  | pull(T, C, Tube)             | holding(T)                     | -in_tube(T, Tube), -spatial_of(T) |
   | wedge | place(W, D, Floor)           | holding(W), door_open(D)       | motion: spatial_of(W); +gripper_empty -holding(W) |
   | wedge | release_door(D)              | door_open(D)                   | none (the door's closing is the world's response) |
 
@@ -97,7 +99,7 @@ innate_model_(pull,
               action_model(pull, [T-tool, _C-target, Tube-site],
                            [holding(T)],
                            [],
-                           [in_tube(T, Tube)])).
+                           [in_tube(T, Tube), spatial_of(T)])).
 innate_model_(place,
               action_model(place, [W-tool, D-target, _Floor-site],
                            [holding(W), door_open(D)],
@@ -285,8 +287,9 @@ spatial_predicate_(tip_away/2).
 
 %!  action_models_compile(+Models, -Compiled) is det.
 %
-%   Compiled holds the ordinary (non-motion) models of Models unchanged, in order,
-%   followed by one ordinary STRIPS action per pair (motion skill M, tool action L)
+%   Compiled holds the ordinary (non-motion) models of Models in order, with any
+%   spatial_of/1 schema removed from their effects (STRIPS keeps only the named
+%   literals), followed by one ordinary STRIPS action per pair (motion skill M, tool action L)
 %   where L needs spatial literals of its tool.  The compiled action has M's
 %   parameters and precondition; it adds M's plain add effects plus L's positive
 %   spatial literals of the tool and deletes M's plain delete effects plus the
@@ -307,7 +310,8 @@ spatial_predicate_(tip_away/2).
 action_models_compile(Models, Compiled) :-
     must_be(list, Models),
     maplist(must_be_action_model, Models),
-    partition(is_motion_, Models, Motions, Plain),
+    partition(is_motion_, Models, Motions, Plain0),
+    maplist(strip_schema_, Plain0, Plain),
     include([M]>>action_tool_model(M, _), Plain, ToolModels),
     maplist(compile_motion_(ToolModels), Motions, MotionLists),
     append(MotionLists, Compiled0),
@@ -315,6 +319,12 @@ action_models_compile(Models, Compiled) :-
 
 is_motion_(M) :-
     action_motion_tool(M, _).
+
+strip_schema_(action_model(N, Ps, Pre, Add0, Del0), action_model(N, Ps, Pre, Add, Del)) :-
+    exclude(is_schema_, Add0, Add),
+    exclude(is_schema_, Del0, Del).
+
+is_schema_(spatial_of(_)).
 
 compile_motion_(ToolModels, Motion, Actions) :-
     maplist(motion_purpose_(Motion), ToolModels, Purposes0),
@@ -356,8 +366,8 @@ motion_literal_(Tool, MVars, L) :-
 motion_action_(Motion, N, Purposes, purpose(LName, Params, Pos, Neg), Action) :-
     copy_term(Motion, action_model(MName, MParams, MPre, MAdd, MDel)),
     MParams = Params,
-    exclude([L]>>(L = spatial_of(_)), MAdd, Add0),
-    exclude([L]>>(L = spatial_of(_)), MDel, Del0),
+    exclude(is_schema_, MAdd, Add0),
+    exclude(is_schema_, MDel, Del0),
     findall(Params-S, ( member(purpose(Other, Params, OPos, _), Purposes),
                         Other \== LName,
                         member(S, OPos)

@@ -16,8 +16,10 @@ transition is matched against the innate model of its skill (action_model.pl):
 
   - the model's precondition must hold in S0;
   - every change (added: in S1 and not in S0; deleted: in S0 and not in S1) is
-    *explained* if it is an add or delete effect of the model, or, for a motion skill,
-    a spatial literal of its tool argument.
+    *explained* if it is an add (delete) effect of the model, or a spatial literal of
+    a tool T whose schema spatial_of(T) is in the model's add (delete) list: any
+    spatial change of a motion skill's tool, and spatial literals of the pulled tool
+    going false.
 
 The unexplained changes of a transition are what the trainer's tool use did beyond the
 skill: they become a **new action model**.
@@ -196,20 +198,17 @@ observe_transition(step(Skill, Args, S0, S1), Model, Added, Deleted) :-
     subtract_eq_(S0, S1, Deleted).
 
 unexplained_(Model, Args, Added, Deleted, UAdd, UDel) :-
-    bound_model_(Model, Args, Bound),
-    Bound = action_model(_, _, _, Add, Del),
-    (   action_motion_tool(Bound, Tool0)
-    ->  Tool = Tool0
-    ;   Tool = '$no_tool'
-    ),
-    exclude(explained_(Add, Tool), Added, UAdd),
-    exclude(explained_(Del, Tool), Deleted, UDel).
+    bound_model_(Model, Args, action_model(_, _, _, Add, Del)),
+    exclude(explained_(Add), Added, UAdd),
+    exclude(explained_(Del), Deleted, UDel).
 
-explained_(Effects, Tool, L) :-
+%   L is one of Effects or a spatial literal of a tool T with spatial_of(T) there.
+explained_(Effects, L) :-
     (   memberchk(L, Effects)
     ->  true
-    ;   Tool \== '$no_tool',
-        tool_literal_kind(Tool, L, spatial)
+    ;   member(spatial_of(T), Effects),
+        tool_literal_kind(T, L, spatial)
+    ->  true
     ).
 
 new_model_(Skill, Args, S0, Model, frame(Tool, Target, Context), UAdd, UDel,

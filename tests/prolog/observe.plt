@@ -92,14 +92,14 @@ test(change_during_a_motion_gets_a_derived_name,
                           models([], [action_model(Name, [_-tool, C-target, U-site],
                                                    _, Add, Del)], _)).
 
-test(spatial_change_of_a_non_motion_skill_is_learned, Del == [behind(h, c)]) :-
+test(spatial_literals_going_false_in_a_pull_are_explained,
+     [Add, Del] =@= [[out_of_tube(C, U), hook_flat(T)], [in_tube(T, U), in_tube(C, U)]]) :-
     innate_action_models(hook, Ms),
-    S0 = [holding(h), in_tube(h, u), behind(h, c)],
-    S1 = [holding(h)],
+    S0 = [holding(h), hook(h), in_tube(h, u), behind(h, c), in_tube(c, u)],
+    S1 = [holding(h), hook(h), out_of_tube(c, u), hook_flat(h)],
     observe_demonstration([step(pull, [h, c, u], S0, S1)], Ms,
-                          models([], [action_model(_, Ps, _, _, Del0)], _)),
-    Ps = [h-tool, c-target, u-site],
-    subtract(Del0, [in_tube(h, u)], Del).
+                          models([], [action_model(pull_out, [T-tool, C-target, U-site],
+                                                   _, Add, Del)], _)).
 
 test(transition, [A, D] == [[holding(h)], [gripper_empty, on_table(h)]]) :-
     innate_action_models(hook, [PickUp|_]),
