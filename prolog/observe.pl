@@ -96,6 +96,8 @@ observe_demonstration(Steps, InnateModels, Result) :-
 %
 %   @error type_error(demonstration_step, S) if a step is not step(Skill, Args, S0,
 %          S1) with an atom, a list and two lists of ground literals.
+%   @error domain_error(arguments_of(Skill), Args) if Args do not fit the skill's
+%          parameters.
 
 observe_demonstration(Steps, InnateModels, Options, Result) :-
     must_be(list, Steps),
