@@ -1,19 +1,13 @@
 """Measure perception error and render time; record them in bench/results/perception.json.
 
-Scenes: the hook world's table, riser, tube (top wall without a visual) and 3 cm cube at
-each of its four predefined locations, seen by the world's ``[[camera]]``; and wedges,
-a box and a cylinder at several placements on a floor seen by a downward and a side
-camera. Each placement is estimated without noise and with the world's
-``[perception]`` depth noise over several seeds. Ground truth comes from pybullet and is
-used only here, to measure the error.
+Hook: every variant and cube location of ``worlds/hook_tube``, built by the world's own
+loader (:mod:`creative_py.sim.hook_tube`), seen by its downward camera. Wedge: the stage
+and the two cameras of ``worlds/wedge_door/scene.toml`` with each object of its
+``objects.toml`` at random placements (the door left out). Each view is estimated
+without noise and with the world's ``[perception]`` depth noise over several seeds.
+Ground truth comes from pybullet and is used only here, to measure the error.
 
-The scenes are built from ``worlds/hook_tube/scene.toml`` and ``tasks.toml`` (standard
-tube, the four ``[[location]]`` tables) with the simulator's own body
-builders (:mod:`creative_py.sim.bodies`); ``worlds/wedge_door/scene.toml`` supplies the
-wedge cameras when it exists, otherwise a downward camera 1.6 m above the floor and a
-side camera 0.5 m up are used.
-
-    .venv/bin/python bench/perception_error.py [--seeds 5] [--out bench/results/perception.json]
+    .venv/bin/python bench/perception_error.py [--seeds 5] [--placements 5] [--out ...]
 """
 
 from __future__ import annotations
@@ -31,7 +25,7 @@ from pathlib import Path
 import numpy as np
 import pybullet as pb
 
-from creative_py.mesh.spec import BlockSpec, Box
+from creative_py.mesh.spec import BlockSpec, Box, spec_from_dict
 from creative_py.perception import NoiseModel, estimate_objects
 from creative_py.sim.bodies import Surface, frame_pose, set_frame_pose, spawn_parts, spawn_spec, yaw_of
 from creative_py.sim.camera import CameraSpec, cameras_from_tables, capture
@@ -94,105 +88,97 @@ def summarise(rows: list[dict]) -> dict:
             "size_mm_mean": statistics.fmean(size), "size_mm_worst": max(size)}
 
 
-def hook_scene(sim: Sim, scene: dict, length: float) -> tuple[int, float]:
-    """Build table, riser and a tube ``length`` m long; return (tube body, tube floor z)."""
-    t, r, tube = scene["table"], scene["riser"], scene["tube"]
-    grey = Surface(0.5, (0.55, 0.55, 0.6, 1.0))
-    spawn_parts(sim, [Box((t["near_edge_x"] + t["depth"] / 2, t["center_y"], t["top_z"] - t["thickness"] / 2),
-                          (t["depth"], t["width"], t["thickness"]))], ((0, 0, 0), (0, 0, 0, 1)), 0.0, grey)
-    riser_x0 = tube["mouth_x"] - r["front"]
-    riser_len = tube["mouth_x"] + length - riser_x0
-    spawn_parts(sim, [Box((riser_x0 + riser_len / 2, tube["axis_y"], t["top_z"] + r["height"] / 2),
-                          (riser_len, r["width"], r["height"]))], ((0, 0, 0), (0, 0, 0, 1)), 0.0, grey)
-    w, iw, ih = tube["wall"], tube["inner_width"], tube["inner_height"]
-    z0 = t["top_z"] + r["height"]
-    x0, y0, cx = tube["mouth_x"], tube["axis_y"], tube["mouth_x"] + length / 2
-    ow, oh = iw + 2 * w, ih + 2 * w
-    walls = [Box((cx, y0, z0 + w / 2), (length, ow, w)),                      # floor
-             Box((cx, y0 - iw / 2 - w / 2, z0 + oh / 2), (length, w, oh)),     # right side
-             Box((cx, y0 + iw / 2 + w / 2, z0 + oh / 2), (length, w, oh)),     # left side
-             Box((x0 + length - w / 2, y0, z0 + oh / 2), (w, ow, oh)),         # far end
-             Box((cx, y0, z0 + oh - w / 2), (length, ow, w))]                  # top: clear
-    body = spawn_parts(sim, walls, ((0, 0, 0), (0, 0, 0, 1)), 0.0,
-                       Surface(0.3, (0.3, 0.5, 0.8, 1.0)), hidden=[4])
-    return body, z0 + w
-
-
 def run_hook(seeds: int) -> dict:
-    """Measure the cube's perception error at the hook world's four locations."""
-    path = ROOT / "worlds/hook_tube/scene.toml"
-    scene = tomllib.loads(path.read_text())
-    cameras = cameras_from_tables(scene["camera"], str(path))
-    noise = NoiseModel.from_dict(scene.get("perception", {}), str(path))
-    tasks = tomllib.loads((ROOT / "worlds/hook_tube/tasks.toml").read_text())
-    length = tasks["variant"]["standard"]["tube_length"]
-    tube = scene["tube"]
-    with Sim(PhysicsSettings()) as sim:
-        tube_body, floor_z = hook_scene(sim, scene, length)
-        far_inner = tube["mouth_x"] + length - tube["wall"]
-        cube = spawn_spec(sim, CUBE, ((far_inner - 0.1, tube["axis_y"], floor_z), (0, 0, 0, 1)),
-                          Surface(0.5, (0.85, 0.1, 0.1, 1.0)))
-        rows = {"noise_free": [], "noisy": []}
-        rng_yaw = np.random.default_rng(0)
-        for i, loc in enumerate(tasks["location"]):
-            x = far_inner - loc["back_gap"] - CUBE.length / 2
-            y = tube["axis_y"] + loc["lateral"]
-            for yaw in (0.0, float(rng_yaw.uniform(-0.4, 0.4))):
-                set_frame_pose(sim, cube, ((x, y, floor_z), pb.getQuaternionFromEuler((0, 0, yaw))))
-                truth = truth_of(sim, cube, CUBE)
-                frames = [capture(sim.client, c) for c in cameras]
-                est = estimate_objects(frames, {"cube1": cube}, support_z={"cube1": floor_z})
-                rows["noise_free"].append({"location": i + 1, "yaw": yaw,
-                                           **errors(est["cube1"], truth, CUBE)})
-                for seed in range(seeds):
-                    est = estimate_objects(frames, {"cube1": cube}, noise,
-                                           np.random.default_rng(seed),
-                                           support_z={"cube1": floor_z})
-                    rows["noisy"].append({"location": i + 1, "yaw": yaw, "seed": seed,
-                                          **errors(est["cube1"], truth, CUBE)})
-        del tube_body
-    return {"scene": "worlds/hook_tube/scene.toml geometry (standard tube), built with sim.bodies",
-            "cameras": [c.name for c in cameras], "resolution": [cameras[0].width, cameras[0].height],
-            "noise": {"depth_sigma_m": noise.depth_sigma_m, "dropout": noise.dropout},
+    """Measure the cube's perception error in the hook world's episodes.
+
+    Every variant and location of ``worlds/hook_tube`` is built by the world's own loader
+    (Baxter, table, riser, tube, the cube settled for 60 steps); the cube is seen as it
+    lies (yaw 0) and turned by a random yaw in place. The estimate is called as the
+    episode calls it (known cube height), without and with the world's depth noise.
+    """
+    from creative_py.sim.hook_tube import load_hook_world, open_hook_episode
+
+    world = load_hook_world()
+    name = world.cube.name
+    spec = BlockSpec(name, "box", world.cube.size, world.cube.size, world.cube.size)
+    tool = world.demonstration.tool
+    rows: dict[str, list] = {"noise_free": [], "noisy": []}
+    rng_yaw = np.random.default_rng(0)
+    for variant in world.variants:
+        for location in range(1, len(world.locations) + 1):
+            ep = open_hook_episode(world, variant, location, tool, seed=0)
+            try:
+                pos, _ = frame_pose(ep.sim, ep.cube_body)
+                for yaw in (None, float(rng_yaw.uniform(-0.6, 0.6))):
+                    if yaw is not None:
+                        set_frame_pose(ep.sim, ep.cube_body,
+                                       (pos, pb.getQuaternionFromEuler((0, 0, yaw))))
+                    truth = ep.truth()[name]
+                    frames = [capture(ep.sim.client, c) for c in world.cameras]
+                    bodies, known = {name: ep.cube_body}, {name: world.cube.size}
+                    base = {"variant": variant, "location": location, "true_yaw": truth[3]}
+                    est = estimate_objects(frames, bodies, heights=known)
+                    rows["noise_free"].append({**base, **errors(est[name], truth, spec)})
+                    for seed in range(seeds):
+                        est = estimate_objects(frames, bodies, world.noise,
+                                               np.random.default_rng(seed), heights=known)
+                        rows["noisy"].append({**base, "seed": seed,
+                                              **errors(est[name], truth, spec)})
+            finally:
+                ep.close()
+    cam = world.cameras[0]
+    return {"scene": "worlds/hook_tube via creative_py.sim.hook_tube (every variant and location)",
+            "cameras": [c.name for c in world.cameras], "resolution": [cam.width, cam.height],
+            "noise": {"depth_sigma_m": world.noise.depth_sigma_m, "dropout": world.noise.dropout},
             "noise_free": summarise(rows["noise_free"]), "noisy": summarise(rows["noisy"]),
             "rows": rows}
 
 
-def wedge_cameras() -> tuple[list[CameraSpec], str]:
-    """Return the wedge world's cameras, or the stand-in pair if it has none yet."""
-    path = ROOT / "worlds/wedge_door/scene.toml"
-    if path.is_file():
-        scene = tomllib.loads(path.read_text())
-        if scene.get("camera"):
-            return list(cameras_from_tables(scene["camera"], str(path))), str(path.relative_to(ROOT))
-    return [CameraSpec("top", eye=(0.4, 0.3, 1.6), target=(0.4, 0.3, 0.0), up=(1.0, 0.0, 0.0),
-                       fov_deg=45.0, width=320, height=240, near=0.1, far=4.0),
-            CameraSpec("side", eye=(1.4, -0.6, 0.5), target=(0.4, 0.3, 0.0), up=(0.0, 0.0, 1.0),
-                       fov_deg=45.0, width=320, height=240, near=0.1, far=4.0)], "stand-in cameras"
+def wedge_objects() -> list[BlockSpec]:
+    """Return the block specs of ``worlds/wedge_door/objects.toml``."""
+    path = ROOT / "worlds/wedge_door/objects.toml"
+    specs = []
+    for table in tomllib.loads(path.read_text())["object"]:
+        table = {k: v for k, v in table.items() if k not in ("set", "slot", "friction")}
+        specs.append(spec_from_dict(table, source=str(path)))
+    return specs
 
 
 def run_wedge(seeds: int, placements: int) -> dict:
-    """Measure block errors at random placements in view of the wedge cameras."""
-    cameras, source = wedge_cameras()
-    noise = NoiseModel(depth_sigma_m=0.0005)
-    rows = {"noise_free": [], "noisy": [], "top_only": []}
+    """Measure block errors at random placements in the wedge zone of the door world.
+
+    The stage (the floor the door stands on) and the two cameras come from
+    ``worlds/wedge_door/scene.toml`` and the objects from its ``objects.toml``; the door
+    itself is left out (it would only hide objects behind it). Each object is placed at
+    random in a 0.4 m square around the downward camera's target with a random heading.
+    """
+    path = ROOT / "worlds/wedge_door/scene.toml"
+    scene = tomllib.loads(path.read_text())
+    cameras = list(cameras_from_tables(scene["camera"], str(path)))
+    noise = NoiseModel.from_dict(scene.get("perception", {}), str(path))
+    stage = scene["stage"]
+    floor_z = stage["top_z"]
+    rows: dict[str, list] = {"noise_free": [], "noisy": [], "top_only": []}
     rng = np.random.default_rng(1)
     cx, cy = cameras[0].target[0], cameras[0].target[1]
+    objects = wedge_objects()
     with Sim(PhysicsSettings()) as sim:
-        floor = pb.createMultiBody(0, pb.createCollisionShape(pb.GEOM_PLANE, physicsClientId=sim.client),
-                                   -1, physicsClientId=sim.client)
-        del floor
-        for spec in WEDGE_OBJECTS:
-            body = spawn_spec(sim, spec, ((cx, cy, 0.0), (0, 0, 0, 1)), Surface(1.0, (0.9, 0.6, 0.1, 1.0)))
+        sx, sy = stage["size"]
+        spawn_parts(sim, [Box((0, 0, 0), (sx, sy, stage["thickness"]))],
+                    ((*stage["centre"], floor_z - stage["thickness"] / 2), (0, 0, 0, 1)), 0.0,
+                    Surface(stage["friction"], (0.5, 0.5, 0.5, 1.0)))
+        for spec in objects:
+            body = spawn_spec(sim, spec, ((cx, cy, floor_z), (0, 0, 0, 1)),
+                              Surface(1.0, (0.9, 0.6, 0.1, 1.0)))
             for _ in range(placements):
-                x, y = cx + rng.uniform(-0.3, 0.3), cy + rng.uniform(-0.3, 0.3)
+                x, y = cx + rng.uniform(-0.2, 0.2), cy + rng.uniform(-0.2, 0.2)
                 yaw = float(rng.uniform(-math.pi, math.pi))
-                set_frame_pose(sim, body, ((x, y, 0.0), pb.getQuaternionFromEuler((0, 0, yaw))))
+                set_frame_pose(sim, body, ((x, y, floor_z), pb.getQuaternionFromEuler((0, 0, yaw))))
                 truth = truth_of(sim, body, spec)
                 frames = [capture(sim.client, c) for c in cameras]
-                bodies, sup = {spec.name: body}, {spec.name: 0.0}
-                est = estimate_objects(frames, bodies, support_z=sup)[spec.name]
+                bodies, sup = {spec.name: body}, {spec.name: floor_z}
                 base = {"object": spec.name, "shape": spec.shape}
+                est = estimate_objects(frames, bodies, support_z=sup)[spec.name]
                 rows["noise_free"].append({**base, **errors(est, truth, spec)})
                 est = estimate_objects(frames[:1], bodies, support_z=sup)[spec.name]
                 rows["top_only"].append({**base, **errors(est, truth, spec)})
@@ -202,12 +188,12 @@ def run_wedge(seeds: int, placements: int) -> dict:
                     rows["noisy"].append({**base, "seed": seed, **errors(est, truth, spec)})
             pb.removeBody(body, physicsClientId=sim.client)
     wedges = {k: [r for r in v if r["shape"] == "triangular_prism"] for k, v in rows.items()}
-    tip_wrong = sum(1 for v in rows.values() for r in v
-                    if r["shape"] == "triangular_prism" and r["yaw_deg"] > 90)
-    return {"cameras": [c.name for c in cameras], "camera_source": source,
-            "resolution": [cameras[0].width, cameras[0].height],
+    tip_wrong = sum(1 for v in wedges.values() for r in v if r["yaw_deg"] > 90)
+    return {"scene": "worlds/wedge_door/scene.toml stage and cameras, objects.toml objects, "
+                     "no door",
+            "cameras": [c.name for c in cameras], "resolution": [cameras[0].width, cameras[0].height],
             "noise": {"depth_sigma_m": noise.depth_sigma_m, "dropout": noise.dropout},
-            "objects": [s.name for s in WEDGE_OBJECTS], "placements_per_object": placements,
+            "objects": [s.name for s in objects], "placements_per_object": placements,
             "tip_direction_wrong": tip_wrong,
             "all_objects": {k: summarise(v) for k, v in rows.items()},
             "wedges_only": {k: summarise(v) for k, v in wedges.items()},
@@ -215,25 +201,31 @@ def run_wedge(seeds: int, placements: int) -> dict:
 
 
 def render_times(repeats: int) -> dict:
-    """Return ms per frame of the hook world's camera at three resolutions (CPU renderer)."""
-    path = ROOT / "worlds/hook_tube/scene.toml"
-    scene = tomllib.loads(path.read_text())
-    table = dict(scene["camera"][0])
+    """Return ms per frame of the hook world's camera at three resolutions (CPU renderer).
+
+    The scene is a hook episode (Baxter without visuals, table, tube, cube, tool).
+    """
+    from creative_py.sim.hook_tube import load_hook_world, open_hook_episode
+
+    world = load_hook_world()
+    cam = world.cameras[0]
     out = {}
-    with Sim(PhysicsSettings()) as sim:
-        _, floor_z = hook_scene(sim, scene, 0.30)
-        cube = spawn_spec(sim, CUBE, ((1.1, scene["tube"]["axis_y"], floor_z), (0, 0, 0, 1)))
+    ep = open_hook_episode(world, "standard", 1, world.demonstration.tool)
+    try:
         for w, h in ((160, 120), (320, 240), (640, 480)):
-            spec = CameraSpec.from_dict({**table, "width": w, "height": h}, str(path))
-            capture(sim.client, spec)
-            times = [capture(sim.client, spec).render_time_s for _ in range(repeats)]
+            spec = CameraSpec(cam.name, cam.eye, cam.target, cam.up, cam.fov_deg, w, h,
+                              cam.near, cam.far)
+            capture(ep.sim.client, spec)
+            times = [capture(ep.sim.client, spec).render_time_s for _ in range(repeats)]
+            frame = capture(ep.sim.client, spec)
             t0 = time.perf_counter()
-            frame = capture(sim.client, spec)
-            estimate_objects([frame], {"cube1": cube}, support_z={"cube1": floor_z})
-            est_ms = 1000 * (time.perf_counter() - t0 - frame.render_time_s)
+            estimate_objects([frame], {world.cube.name: ep.cube_body},
+                             heights={world.cube.name: world.cube.size})
             out[f"{w}x{h}"] = {"render_ms_median": 1000 * statistics.median(times),
                                "render_ms_worst": 1000 * max(times),
-                               "estimate_ms": est_ms}
+                               "estimate_ms": 1000 * (time.perf_counter() - t0)}
+    finally:
+        ep.close()
     return out
 
 

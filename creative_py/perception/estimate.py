@@ -50,7 +50,8 @@ from scipy.spatial import ConvexHull, QhullError
 from creative_py.perception.frame import Frame
 from creative_py.perception.noise import NoiseModel
 from creative_py.perception.segment import body_mask
-from creative_py.perception.unproject import masked_median_depth, unproject_pixels
+from creative_py.perception.unproject import (camera_position, masked_median_depth,
+                                              unproject_pixels)
 
 log = logging.getLogger(__name__)
 
@@ -92,8 +93,10 @@ class EstimatorConfig:
     top_band_fraction : float
         Points within this fraction of the height below the top (or three times the
         remaining depth noise, if larger) form the top face.
-    noisy_top_quantile : float
-        With a noise model, the top is the height quantile 1 - this, not the maximum.
+    footprint_max_tilt : float
+        With a noise model, only points whose camera ray has at most this horizontal
+        fraction (sine of its angle from vertical; 0.5 = 30 degrees) shape the footprint,
+        when there are enough of them: depth noise moves a point along its ray.
     """
 
     min_points: int = 12
@@ -107,7 +110,7 @@ class EstimatorConfig:
     square_tolerance: float = 0.12
     round_fill: float = 0.88
     top_band_fraction: float = 0.15
-    noisy_top_quantile: float = 0.1
+    footprint_max_tilt: float = 0.5
 
 
 @dataclass(frozen=True)
@@ -184,7 +187,7 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
                          f"got {trim!r}")
     out: dict[str, ObjectEstimate] = {}
     for name, bid in bodies.items():
-        chunks, heights_f, cams = [], [], []
+        chunks, heights_f, tilts, cams = [], [], [], []
         for frame in frames:
             mask = body_mask(frame.seg, int(bid))
             n = int(mask.sum())
@@ -193,6 +196,8 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
             rows, cols = np.nonzero(mask)
             pts = unproject_pixels(frame, rows, cols)
             chunks.append(pts)
+            rays = pts - camera_position(frame)
+            tilts.append(np.hypot(rays[:, 0], rays[:, 1]) / np.linalg.norm(rays, axis=1))
             if smooth:
                 filtered = unproject_pixels(frame, rows, cols,
                                             masked_median_depth(frame.depth, mask))
@@ -204,18 +209,38 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
         if n_pts < config.min_points:
             log.info("object %s not seen (%d points)", name, n_pts)
             continue
-        est = _estimate_one(name, np.concatenate(chunks), np.concatenate(heights_f), tuple(cams),
-                            support_z.get(name), heights.get(name), trim, sigma_z, config)
+        pts, z, tilt = (np.concatenate(c) for c in (chunks, heights_f, tilts))
+        # Depth noise moves a point along its ray, so sideways by sigma * tilt. With a
+        # noise model, draw the footprint from steep rays (a downward camera sees the
+        # whole footprint of an object on a surface) if there are enough of them.
+        footprint = np.ones(len(pts), bool)
+        if sigma_z > 0.0:
+            steep = tilt <= config.footprint_max_tilt
+            if steep.sum() >= config.min_points:
+                footprint = steep
+        est = _estimate_one(name, pts, z, footprint, tuple(cams), support_z.get(name),
+                            heights.get(name), trim, sigma_z, config)
         out[name] = est
     return out
 
 
-def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, cams: tuple[str, ...],
-                  support: float | None, height: float | None, trim: float, sigma_z: float,
-                  cfg: EstimatorConfig) -> ObjectEstimate:
-    """Estimate one object from its fused points (N x 3) and their (filtered) heights z."""
-    # With noisy heights the maximum is an outlier: take a high quantile instead.
-    top = _quantile(z, 1.0 - max(trim, cfg.noisy_top_quantile if sigma_z > 0 else 0.0))
+def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, footprint: np.ndarray,
+                  cams: tuple[str, ...], support: float | None, height: float | None,
+                  trim: float, sigma_z: float, cfg: EstimatorConfig) -> ObjectEstimate:
+    """Estimate one object from its fused points (N x 3), their (filtered) heights z and
+    the mask of points that may shape the footprint."""
+    xy_all = pts[:, :2]
+    xy, z_fp = xy_all[footprint], z[footprint]
+    theta = _min_area_heading(xy, cfg.yaw_step_deg)
+    # The top surface along both footprint axes: its rise (a slope) and its highest part.
+    profiles = [_profile(xy_all, z, theta + k * math.pi / 2, cfg) for k in (0, 1)]
+    rises = [rise for rise, _ in profiles]
+    if sigma_z > 0.0:
+        # With noisy heights the maximum is an outlier; a high quantile of the whole
+        # object would cut a wedge's top: take the highest bin's quantile instead.
+        top = max(high for _, high in profiles)
+    else:
+        top = _quantile(z, 1.0 - trim)
     if support is not None:
         bottom = float(support)
     elif height is not None:
@@ -223,12 +248,9 @@ def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, cams: tuple[str, ..
     else:
         bottom = _quantile(z, trim)
     dz = max(top - bottom, 0.0)
-    xy = pts[:, :2]
-    theta = _min_area_heading(xy, cfg.yaw_step_deg)
     ext = _extents(xy, theta, trim)
     du, dv = ext[1] - ext[0], ext[3] - ext[2]
     # Which footprint axis, if any, does the top slope along?
-    rises = [_profile_rise(xy, z, theta + k * math.pi / 2, cfg) for k in (0, 1)]
     k_slope = int(np.argmax([abs(r) for r in rises]))
     sloped = abs(rises[k_slope]) >= max(cfg.slope_rise_fraction * dz, cfg.slope_rise_min_m)
     if sloped:
@@ -244,7 +266,7 @@ def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, cams: tuple[str, ..
                 symmetry, yaw = "round", 0.0
             else:
                 symmetry = "half_pi"
-                band = z >= top - max(cfg.top_band_fraction * dz, 3.0 * sigma_z, 1e-6)
+                band = z_fp >= top - max(cfg.top_band_fraction * dz, 3.0 * sigma_z, 1e-6)
                 yaw = _square_heading(xy[band], theta)
                 yaw = _wrap(yaw, math.pi / 4)
         else:
@@ -298,16 +320,18 @@ def _extents(xy: np.ndarray, heading: float, trim: float) -> tuple[float, float,
             _quantile(v, trim), _quantile(v, 1.0 - trim))
 
 
-def _profile_rise(xy: np.ndarray, z: np.ndarray, heading: float, cfg: EstimatorConfig) -> float:
-    """Return how much the top surface rises (metres) from the -axis to the +axis end.
+def _profile(xy: np.ndarray, z: np.ndarray, heading: float,
+             cfg: EstimatorConfig) -> tuple[float, float]:
+    """Return the top surface's rise (metres) from the -axis to the +axis end, and its height.
 
-    The top surface is the highest point of each bin along the axis; a straight line
-    fitted to those maxima gives the rise across the footprint.
+    The top surface is a high quantile (0.9) of the heights in each of
+    ``cfg.profile_bins`` bins along the axis; a straight line fitted to those gives the
+    rise across the footprint, and the highest bin the top's height (world z, metres).
     """
     u = xy[:, 0] * math.cos(heading) + xy[:, 1] * math.sin(heading)
     lo, hi = float(u.min()), float(u.max())
     if hi - lo < 1e-9:
-        return 0.0
+        return 0.0, float(np.quantile(z, 0.9))
     idx = np.minimum(((u - lo) / (hi - lo) * cfg.profile_bins).astype(int), cfg.profile_bins - 1)
     centres, tops = [], []
     for b in range(cfg.profile_bins):
@@ -316,9 +340,9 @@ def _profile_rise(xy: np.ndarray, z: np.ndarray, heading: float, cfg: EstimatorC
             centres.append(lo + (b + 0.5) * (hi - lo) / cfg.profile_bins)
             tops.append(float(np.quantile(z[sel], 0.9)))
     if len(centres) < 3:
-        return 0.0
+        return 0.0, float(np.quantile(z, 0.9))
     slope = np.polyfit(centres, tops, 1)[0]
-    return float(slope * (hi - lo))
+    return float(slope * (hi - lo)), max(tops)
 
 
 def _fill_ratio(xy: np.ndarray, rect_area: float) -> float:
