@@ -48,6 +48,9 @@ if it needs a new module, its use_module/1 below.
                 vs_converged/1, vs_covers/3, vs_notes/2 ]).
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4]).
+:- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
+                           plan_experiment/4, label_trial/7]).
+:- use_module(creation, [next_tool/6, creation_candidates/3]).
 
 %!  api_op(?Request, -Result, -Goal) is nondet.
 %
@@ -64,6 +67,7 @@ api_op(variant(A, B), true, A =@= B).
 api_op(parse(Text), Term, api_parse_(Text, Term)).
 api_op(consult(File), Report, api_consult_(File, Report)).
 api_op(load_status, status(Errors, Warnings), api_load_status_(Errors, Warnings)).
+api_op(timed(Request, N), Seconds, api_timed_(Request, N, Seconds)).
 % Knowledge.
 api_op(load_ontology(Spec), true, load_ontology(Spec)).
 api_op(load_default_ontology, true, load_default_ontology).
@@ -99,6 +103,14 @@ api_op(pose_numbers(Case, Tool, Facts), Pose, pose_numbers(Case, Tool, Facts, Po
 api_op(solve_pose(Case, Required, Negated, Context), R,
        solve_pose(Case, Required, Negated, Context, R)).
 api_op(solve_size(Kind, Literals, Context), R, solve_size(Kind, Literals, Context, R)).
+% Tool-use learning (Algorithm 1) and tool creation (Algorithm 2).
+api_op(learn_from_demonstration(Case, Steps), R, learn_from_demonstration(Case, Steps, R)).
+api_op(observed_state(Case, Facts), S, observed_state(Case, Facts, S)).
+api_op(next_experiment(Case, VS, Facts), R, plan_experiment(Case, VS, Facts, R)).
+api_op(label_trial(Case, VS0, Experiment, Facts, Label, Mode), VS,
+       label_trial(Case, VS0, Experiment, Facts, Label, Mode, VS)).
+api_op(next_tool(Case, VS, Tried, Context), R, next_tool(Case, VS, Tried, Context, [], R)).
+api_op(creation_candidates(VS), Cs, creation_candidates(VS, [], Cs)).
 
 %!  api_operation(?NameArity) is nondet.
 %
@@ -332,6 +344,23 @@ api_parse_(Text, Term) :-
     maplist(api_bind_var_name_, Bindings).
 
 api_bind_var_name_(Name = '$VAR'(Name)).
+
+%   api_timed_(+Request, +N, -Seconds) is det.
+%
+%   Run the operation Request N times inside Prolog (each run's bindings undone) and
+%   give the mean wall time per run in seconds: the cost without the bridge.
+
+api_timed_(Request, N, Seconds) :-
+    must_be(positive_integer, N),
+    (   api_op(Request, _, Goal)
+    ->  true
+    ;   functor(Request, Name, Arity),
+        existence_error(api_operation, Name/Arity)
+    ),
+    get_time(T0),
+    forall(between(1, N, _), \+ \+ once(Goal)),
+    get_time(T1),
+    Seconds is (T1 - T0) / N.
 
 %   api_load_status_(-Errors, -Warnings) is det.
 %

@@ -1,11 +1,10 @@
-/*  CREATIVE-py: load the whole learning engine, for the REPL and for the tests.
-
-    swipl prolog/creative.pl
-
-    Every module of prolog/ is loaded with use_module/1, so its exports are visible at
-    the top level. The ontology (background knowledge) is loaded by knowledge:load_ontology/1
-    through creative_load_default_ontology/0.
-*/
+%   CREATIVE-py: load the whole learning engine, for the REPL and for the tests.
+%
+%       swipl prolog/creative.pl
+%
+%   Every module of prolog/ is loaded with use_module/1, so its exports are visible at
+%   the top level. The ontology (background knowledge: the .pl files of ontology/) is
+%   loaded at the end with knowledge:load_default_ontology/0.
 
 :- multifile user:file_search_path/2.
 :- dynamic user:file_search_path/2.
@@ -30,3 +29,8 @@
           ( directory_file_path(Dir, E, Path),
             use_module(Path)
           )).
+
+%   The default background knowledge (ontology/*.pl), so that the REPL and the bridge
+%   start with the tool hierarchies, ranges, spatial definitions and replacement
+%   operators loaded.
+:- knowledge:load_default_ontology.

@@ -1,0 +1,144 @@
+:- module(creation,
+          [ creation_candidates/3,   % +VS, +Options, -Candidates
+            next_tool/6              % +Case, +VS, +Tried, +Context, +Options, -Result
+          ]).
+
+/** <module> Tool creation by Marvin-style replacement (the paper's Algorithm 2)
+
+Tool creation starts from the most specific hypothesis h_s of the learned tool-use model
+(its structural literals describe the tool of the last positive example). One structural
+literal is generalised with a replacement operator of the ontology
+(replacement:replacement/3, e.g. handle_length(T, medium) -> any_length(T)) and the new
+tool is an instance that does *not* satisfy the replaced literal
+(handle_length(T, long)). Its structural literals are then sized by CLP(R)
+(geometry_clp:solve_size/4) within the task's geometry.
+
+Order of the candidates (creation_candidates/3):
+
+  1. Properties whose literal is in h_g come first: the physics showed them necessary,
+     so a different value of them is the change most likely to matter. Then the other
+     structural literals of h_s, in clause order.
+  2. Within a property, alternatives that a stored negative example refuted (a negative
+     example whose only violated literal of h_s is this property and which had that
+     alternative value, e.g. the short-handled hook that failed during tool-use
+     learning) come last; otherwise the ontology's order. This is where we depart from
+     the paper, which tried the short wedge before the long one: the failure already
+     told us which way to go.
+*/
+
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(pairs)).
+:- use_module(library(error)).
+:- use_module(library(option)).
+:- use_module(version_space).
+:- use_module(replacement).
+:- use_module(geometry_clp).
+:- use_module(experiment).
+
+%!  creation_candidates(+VS, +Options, -Candidates) is det.
+%
+%   Candidates is the ordered list of
+%   candidate(Replaced, General, Instance, Structural): Replaced is the literal of h_s
+%   that is generalised to General; Instance the alternative value tried; Structural
+%   the new tool's structural literals (those of h_s with Replaced swapped for
+%   Instance). Options: exclude(Literals) leaves out properties (default []).
+
+creation_candidates(VS, Options, Candidates) :-
+    option(exclude(Excluded), Options, []),
+    vs_bounds(VS, HS, HG),
+    hypothesis_parts(HS, Struct, _, _),
+    hypothesis_parts(HG, HGStruct, _, _),
+    vs_examples(VS, _, Negs),
+    findall(Key-candidate(L, General, Alt, NewStruct),
+            ( nth1(I, Struct, L),
+              \+ ( member(X, Excluded), X =@= L ),
+              replacement(L, General, Alts),
+              (   memberchk_variant_(L, HGStruct)
+              ->  Nec = 0
+              ;   Nec = 1
+              ),
+              nth1(J, Alts, Alt),
+              (   refuted_(HS, L, Alt, Negs)
+              ->  Ref = 1
+              ;   Ref = 0
+              ),
+              Key = k(Nec, I, Ref, J),
+              replace_eq_(Struct, L, Alt, NewStruct)
+            ),
+            Keyed),
+    keysort(Keyed, Sorted),
+    pairs_values(Sorted, Candidates).
+
+memberchk_variant_(X, [Y|Ys]) :-
+    (   X =@= Y
+    ->  true
+    ;   memberchk_variant_(X, Ys)
+    ).
+
+replace_eq_([], _, _, []).
+replace_eq_([X|Xs], L, Alt, [Y|Ys]) :-
+    (   X == L
+    ->  Y = Alt
+    ;   Y = X
+    ),
+    replace_eq_(Xs, L, Alt, Ys).
+
+%   The kind of tool solve_size/4 sizes: a hook case tool is a stick when its
+%   structural literals say so.
+size_kind_(hook, Struct, Kind) :-
+    (   member(L, Struct), L = stick(_)
+    ->  Kind = stick
+    ;   Kind = hook
+    ).
+size_kind_(wedge, _, block).
+
+%   A negative example refutes Alt if the only literal of h_s it violates is L and its
+%   body contains Alt (for its own tool).
+refuted_(HS, L, Alt, Negs) :-
+    member(Neg, Negs),
+    clause_violations(HS, Neg, Viol),
+    Viol = [V],
+    V == L,
+    copy_term(HS-Alt, HS1-Alt1),
+    HS1 = (H1 :- _),
+    Neg = (NH :- NB),
+    H1 = NH,
+    conj_member_(Alt1, NB),
+    !.
+
+conj_member_(X, (A, B)) :- !,
+    (   X =@= A
+    ->  true
+    ;   conj_member_(X, B)
+    ).
+conj_member_(X, A) :-
+    X =@= A.
+
+%!  next_tool(+Case, +VS, +Tried, +Context, +Options, -Result) is det.
+%
+%   The next tool to create. Tried lists the Instance literals created before (compared
+%   as variants). Context holds the task's geometry facts for the constraint solver.
+%   Result is create(Replaced, General, Instance, Structural, Dims) with Dims the sized
+%   dimensions (Name=Value, HookSpec/BlockSpec field names), or
+%   exhausted(Skipped), Skipped a list of Instance-Reason for the candidates that were
+%   tried before or could not be sized.
+
+next_tool(Case, VS, Tried, Context, Options, Result) :-
+    must_be(list, Tried),
+    creation_candidates(VS, Options, Candidates),
+    next_tool_(Candidates, Case, Tried, Context, [], Result).
+
+next_tool_([], _, _, _, Skipped0, exhausted(Skipped)) :-
+    reverse(Skipped0, Skipped).
+next_tool_([candidate(L, G, Alt, Struct)|Cs], Case, Tried, Context, Skipped0, Result) :-
+    (   memberchk_variant_(Alt, Tried)
+    ->  next_tool_(Cs, Case, Tried, Context, [Alt-tried|Skipped0], Result)
+    ;   size_kind_(Case, Struct, Kind),
+        solve_size(Kind, Struct, Context, Sized),
+        (   Sized = dims(Dims)
+        ->  Result = create(L, G, Alt, Struct, Dims)
+        ;   Sized = infeasible(Conflict),
+            next_tool_(Cs, Case, Tried, Context, [Alt-infeasible(Conflict)|Skipped0], Result)
+        )
+    ).

@@ -1,0 +1,399 @@
+:- module(experiment,
+          [ learn_from_demonstration/3, % +Case, +Steps, -Result
+            observed_state/3,      % +Case, +Primitive, -State
+            plan_experiment/4,     % +Case, +VS, +Primitive, -Result
+            label_trial/7,         % +Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS
+            task_objects/3,        % +Case, +State, -Objects
+            next_experiment/6,     % +Case, +VS, +Objects, +Context, +Options, -Result
+            trial_example/6,       % +Case, +Tool, +Target, +Ctx, +Primitive, -Example
+            literal_role/3,        % +Head, +Literal, -Role
+            hypothesis_parts/4     % +Clause, -Structural, -Spatial, -Task
+          ]).
+
+/** <module> Informative experiments for tool-use learning (the paper's Algorithm 1)
+
+An experiment tests the *unknown* literals of the version space: literals of h_s that are
+not (yet) in h_g. The experiment is built so that the trial example
+
+  - is covered by h_g (otherwise the outcome is already known: failure), and
+  - violates the tested literal and as few other literals of h_s as possible.
+
+A success then drops the tested literal from h_s (the LGG of h_s with the new positive no
+longer contains it); a failure makes it necessary in h_g (negative-based specialisation).
+
+Structural literals are tested by choosing an *object* that violates them; spatial
+literals by choosing a *pose* whose CLP(R) constraints negate them. The pose is always
+produced by geometry_clp:solve_pose/5 from the required and negated spatial literals.
+
+Roles of literals (literal_role/3), relative to the head tool_pose(Tool, Target, Ctx):
+
+  - spatial: a literal with a spatial definition in the ontology (geometry_clp);
+  - structural: mentions Tool and neither Target nor Ctx;
+  - task: does not mention Tool (e.g. in_tube(cube1, tube1)).
+*/
+
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(library(pairs)).
+:- use_module(library(error)).
+:- use_module(library(option)).
+:- use_module(version_space).
+:- use_module(lgg, []).
+:- use_module(geometry_clp).
+:- use_module(abstract_state).
+:- use_module(observe).
+:- use_module(action_model).
+
+%   Spatial literals that are preconditions of the motion rather than pose choices: the
+%   hook is always used inside the tube, so in_tube/2 of the tool is never tested by
+%   placing the tool outside it.
+untestable_(hook, in_tube(_, _)).
+
+%!  learn_from_demonstration(+Case, +Steps, -Result) is det.
+%
+%   Steps is the trainer's demonstration as step(Skill, Args, Primitive0, Primitive1)
+%   with the primitive facts observed before and after each skill. The primitive facts
+%   become abstract states (observed_state/3) and observe:observe_demonstration/4
+%   builds the new action model. Result is models(Matched, New, Example) or the
+%   observe module's error term (goal_not_reached(Goal), no_model(...)).
+
+learn_from_demonstration(Case, Steps, Result) :-
+    must_be(list, Steps),
+    maplist(abstract_step_(Case), Steps, AbstractSteps),
+    innate_action_models(Case, Models),
+    action_task_goal(Case, Goal),
+    observe_demonstration(AbstractSteps, Models, [goal(Goal)], Result).
+
+abstract_step_(Case, step(Skill, Args, P0, P1), step(Skill, Args, S0, S1)) :-
+    observed_state(Case, P0, S0),
+    observed_state(Case, P1, S1).
+
+%!  observed_state(+Case, +Primitive, -State) is det.
+%
+%   The abstract state of the primitive facts (abstract_state/3) plus the robot-state
+%   literals the innate models speak of: holding(T) for a held tool (held/1 fact),
+%   gripper_empty when nothing is held, and on_table(O) for every catalogued object
+%   that is neither held nor placed (no spatial literal relates it to a target).
+
+observed_state(Case, Primitive, State) :-
+    abstract_state(Case, Primitive, Abstract),
+    findall(holding(T), member(held(T), Primitive), Holding),
+    (   Holding == []
+    ->  Grip = [gripper_empty]
+    ;   Grip = []
+    ),
+    findall(on_table(O),
+            ( catalogued_(Abstract, O),
+              \+ memberchk(held(O), Primitive),
+              \+ ( member(L, Abstract),
+                    L =.. [_, O2, _],
+                    O2 == O,
+                    spatial_any_(L) )
+            ),
+            OnTable),
+    append([Abstract, Holding, Grip, OnTable], State0),
+    sort(State0, State).
+
+catalogued_(Abstract, O) :-
+    member(L, Abstract),
+    (   L = tool(O)
+    ;   L = object(O)
+    ).
+
+spatial_any_(L) :-
+    (   geometry_clp:spatial_literal(hook, L)
+    ->  true
+    ;   geometry_clp:spatial_literal(wedge, L)
+    ).
+
+%!  task_objects(+Case, +State, -Objects) is det.
+%
+%   The available objects of a state with their structural literals, as
+%   object(Name, Literals) for next_experiment/6.
+
+task_objects(_Case, State, Objects) :-
+    findall(O, catalogued_(State, O), Os0),
+    sort(Os0, Os),
+    findall(object(O, Lits),
+            ( member(O, Os),
+              findall(L, ( member(L, State),
+                           compound(L),
+                           arg(1, L, A), A == O,
+                           \+ spatial_any_(L),
+                           \+ robot_literal_(L) ),
+                      Lits)
+            ),
+            Objects).
+
+robot_literal_(on_table(_)).
+robot_literal_(holding(_)).
+
+%!  plan_experiment(+Case, +VS, +Primitive, -Result) is det.
+%
+%   next_experiment/6 for the task described by the primitive facts Primitive (the
+%   catalogue of available objects and the task's geometry). The target and context
+%   objects are those of the version space's first positive example (the
+%   demonstration).
+
+plan_experiment(Case, VS, Primitive, Result) :-
+    vs_examples(VS, [(tool_pose(_, Target, Ctx) :- _)|_], _),
+    observed_state(Case, Primitive, State),
+    task_objects(Case, State, Objects),
+    next_experiment(Case, VS, Objects, Primitive, [target(Target), context(Ctx)], Result).
+
+%!  label_trial(+Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS) is det.
+%
+%   Update the version space with the outcome of a trial. Label is pos or neg. Mode
+%   observed builds the example from the primitive facts observed before the tool
+%   action (trial_example/6); Mode planned builds it from the experiment's plan (the
+%   object's structural literals and the required spatial literals), used when the
+%   motion was blocked and the observed state is not the one the experiment tested.
+
+label_trial(Case, VS0, Experiment, Primitive, Label, Mode, VS) :-
+    must_be(oneof([pos, neg]), Label),
+    must_be(oneof([observed, planned]), Mode),
+    experiment_object_(Experiment, Tool, Required),
+    vs_examples(VS0, [(tool_pose(_, Target, Ctx) :- _)|_], _),
+    (   Mode == observed
+    ->  trial_example(Case, Tool, Target, Ctx, Primitive, Example)
+    ;   observed_state(Case, Primitive, State),
+        task_objects(Case, State, Objects),
+        memberchk(object(Tool, Struct), Objects),
+        append(Struct, Required, Lits),
+        list_to_conj_(Lits, Body),
+        Example = (tool_pose(Tool, Target, Ctx) :- Body)
+    ),
+    Labelled =.. [Label, Example],
+    vs_update(VS0, Labelled, VS).
+
+experiment_object_(experiment(Tool, _, _, _, Required, _), Tool, Required).
+experiment_object_(exploit(Tool, _, _, Required), Tool, Required).
+
+%!  next_experiment(+Case, +VS, +Objects, +Context, +Options, -Result) is det.
+%
+%   Choose the next trial. Objects is a list of object(Name, StructuralLiterals) of the
+%   available objects (ground literals as abstract_state/3 gives them); Context the
+%   primitive facts of the task (tube or door geometry, the target's pose). Options:
+%
+%     - target(Target), context(Ctx): the head's second and third arguments (required).
+%     - tested(Tested): literals tested before and found untestable (default []).
+%
+%   Result is one of
+%
+%     - experiment(Object, Tested, Violated, Pose, Required, Negated): test the literal
+%       Tested (a literal of h_s instantiated to the trial's objects) with Object at Pose
+%       (the ground pose term of solve_pose/5); Violated lists every literal of h_s the
+%       planned example violates (Tested among them), Required/Negated the spatial
+%       literals given to the constraint solver.
+%     - exploit(Object, Violated, Pose, Required): nothing informative is left that the
+%       available objects and poses can test; use the best object at an h_s pose.
+%     - no_experiment(Reason): no object and pose satisfy h_g (Reason names the
+%       literals of h_g that no object satisfies, or the infeasible pose literals).
+%
+%   ==
+%   ?- next_experiment(hook, VS, Objects, Context, [target(cube1), context(tube1)], R).
+%   R = experiment(hook_b4, hook_side(hook_b4, right), [hook_side(hook_b4, right)], ...)
+%   ==
+
+next_experiment(Case, VS, Objects, Context, Options, Result) :-
+    must_be(list, Objects),
+    option(target(Target), Options),
+    option(context(Ctx), Options),
+    vs_bounds(VS, HS, HG),
+    clause_head_body_(HS, Head, _),
+    Head =.. [_, _Tool, Target, Ctx],
+    unknown_literals_(HS, HG, Unknown),
+    hypothesis_parts(HS, _Struct, Spatial, Task),
+    findall(Score-cand(L, O, Req, Neg, Viol),
+            candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
+                       L, O, Req, Neg, Viol, Score),
+            Scored),
+    keysort(Scored, Sorted),
+    pairs_values(Sorted, Cands),
+    (   first_feasible_(Case, Cands, Context, cand(L, O, Req, Neg, Viol), Pose)
+    ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
+    ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
+    ).
+
+candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
+           L, O, Req, Neg, Viol, Score) :-
+    nth1(Index, Unknown, L0),
+    literal_role(Head, L0, Role),
+    Role \== task,
+    \+ untestable_(Case, L0),
+    member(object(O, Struct), Objects),
+    copy_term(Head-(L0-Spatial-Task), HeadC-(L-SpatialC-TaskC)),
+    HeadC =.. [_, O|_],
+    (   Role == spatial
+    ->  testable_spatial_(Case, L),
+        exclude(==(L), SpatialC, Req),
+        Neg = [L]
+    ;   Req = SpatialC,
+        Neg = []
+    ),
+    append([Struct, Req, TaskC], Body),
+    list_to_conj_(Body, Conj),
+    Example = (HeadC :- Conj),
+    clause_covers_hg_(HG, Example),
+    clause_violations(HS, Example, Viol0),
+    instantiate_violations_(HS, Example, Viol0, Viol),
+    memberchk_eq_(L, Viol),
+    length(Viol, NV),
+    Score = s(NV, Index, O).
+
+%   A spatial literal can be tested when the ontology defines it for the constraint
+%   solver (in_tube/2 of the tool, for example, is a precondition of the motion, not a
+%   pose choice).
+testable_spatial_(Case, L) :-
+    geometry_clp:spatial_literal(Case, L).
+
+first_feasible_(Case, [C|Cs], Context, Chosen, Pose) :-
+    C = cand(_, _, Req, Neg, _),
+    solve_pose(Case, Req, Neg, Context, R),
+    (   R = pose(Pose)
+    ->  Chosen = C
+    ;   first_feasible_(Case, Cs, Context, Chosen, Pose)
+    ).
+
+exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result) :-
+    findall(NV-e(O, Viol, Req),
+            ( member(object(O, Struct), Objects),
+              copy_term(Head-(Spatial-Task), HeadC-(Req-TaskC)),
+              HeadC =.. [_, O|_],
+              append([Struct, Req, TaskC], Body),
+              list_to_conj_(Body, Conj),
+              Example = (HeadC :- Conj),
+              clause_covers_hg_(HG, Example),
+              clause_violations(HS, Example, Viol0),
+              instantiate_violations_(HS, Example, Viol0, Viol),
+              length(Viol, NV)
+            ),
+            Scored),
+    keysort(Scored, Sorted),
+    (   Sorted = [_-e(O, Viol, Req)|_]
+    ->  solve_pose(Case, Req, [], Context, R),
+        (   R = pose(Pose)
+        ->  Result = exploit(O, Viol, Pose, Req)
+        ;   R = infeasible(Conflict),
+            Result = no_experiment(infeasible_pose(Conflict))
+        )
+    ;   clause_head_body_(HG, _, HGBody),
+        conj_to_list_(HGBody, HGLits),
+        Result = no_experiment(no_object_satisfies(HGLits))
+    ).
+
+clause_covers_hg_(HG, Example) :-
+    clause_covers(HG, Example).
+
+%   clause_violations/3 returns the literals as they appear in the clause; give them the
+%   example's objects by unifying a copy of the clause's head with the example's head.
+instantiate_violations_(HS, (EH :- _), Viol0, Viol) :-
+    clause_head_body_(HS, H, _),
+    copy_term(H-Viol0, H1-Viol),
+    H1 = EH.
+
+memberchk_eq_(X, [Y|Ys]) :-
+    (   X =@= Y
+    ->  true
+    ;   memberchk_eq_(X, Ys)
+    ).
+
+%   The unknown literals: those of h_s's body not in h_g's body (vs_bounds/3 returns
+%   the two clauses sharing their head variables, so == compares them).
+unknown_literals_(HS, HG, Unknown) :-
+    clause_head_body_(HS, _, HSBody),
+    clause_head_body_(HG, _, HGBody),
+    conj_to_list_(HSBody, HSLits),
+    conj_to_list_(HGBody, HGLits),
+    exclude(in_list_eq_(HGLits), HSLits, Unknown0),
+    exclude(is_in_range_, Unknown0, Unknown).
+
+in_list_eq_(List, X) :-
+    member(Y, List),
+    Y == X,
+    !.
+
+%!  hypothesis_parts(+Clause, -Structural, -Spatial, -Task) is det.
+%
+%   Split the body of a hypothesis tool_pose(Tool, Target, Ctx) :- Body by
+%   literal_role/3. in_range/3 interval literals are left out.
+
+hypothesis_parts(Clause, Structural, Spatial, Task) :-
+    clause_head_body_(Clause, Head, Body),
+    conj_to_list_(Body, Lits0),
+    exclude(is_in_range_, Lits0, Lits),
+    partition_roles_(Lits, Head, Structural, Spatial, Task).
+
+partition_roles_([], _, [], [], []).
+partition_roles_([L|Ls], Head, St, Sp, Ta) :-
+    literal_role(Head, L, Role),
+    (   Role == structural
+    ->  St = [L|St1], Sp = Sp1, Ta = Ta1
+    ;   Role == spatial
+    ->  St = St1, Sp = [L|Sp1], Ta = Ta1
+    ;   St = St1, Sp = Sp1, Ta = [L|Ta1]
+    ),
+    partition_roles_(Ls, Head, St1, Sp1, Ta1).
+
+is_in_range_(in_range(_, _, _)).
+
+%!  literal_role(+Head, +Literal, -Role) is det.
+%
+%   Role of a body literal relative to the head tool_pose(Tool, Target, Ctx): spatial,
+%   structural or task (see the module header).
+
+literal_role(Head, L, Role) :-
+    Head =.. [_, Tool|_],
+    (   spatial_any_(L)
+    ->  Role = spatial
+    ;   term_variables(L, _),
+        mentions_(L, Tool)
+    ->  Role = structural
+    ;   Role = task
+    ).
+
+mentions_(L, X) :-
+    L =.. [_|Args],
+    member(A, Args),
+    A == X,
+    !.
+
+%!  trial_example(+Case, +Tool, +Target, +Ctx, +Primitive, -Example) is det.
+%
+%   The ground example of a trial: the head tool_pose(Tool, Target, Ctx) and every
+%   abstract literal of the state before the tool action (Primitive: primitive facts)
+%   that mentions Tool, Target or Ctx, structural literals of other objects left out.
+
+trial_example(Case, Tool, Target, Ctx, Primitive, (Head :- Body)) :-
+    Head = tool_pose(Tool, Target, Ctx),
+    abstract_state(Case, Primitive, Abstract),
+    include(relevant_literal_(Tool, Target, Ctx), Abstract, Lits0),
+    sort(0, @<, Lits0, Lits1),
+    order_literals_(Head, Lits1, Lits),
+    list_to_conj_(Lits, Body).
+
+relevant_literal_(Tool, Target, Ctx, L) :-
+    L =.. [_|Args],
+    (   memberchk(Tool, Args)
+    ->  true
+    ;   Args \== [],
+        forall(member(A, Args), memberchk(A, [Target, Ctx]))
+    ).
+
+%   Structural, then spatial, then task literals: the order people read clauses in.
+order_literals_(Head, Lits, Ordered) :-
+    partition_roles_(Lits, Head, St, Sp, Ta),
+    append([St, Sp, Ta], Ordered).
+
+clause_head_body_((H :- B), H, B) :- !.
+clause_head_body_(H, H, true).
+
+conj_to_list_(true, []) :- !.
+conj_to_list_((A, B), [A|L]) :- !,
+    conj_to_list_(B, L).
+conj_to_list_(A, [A]).
+
+list_to_conj_([], true).
+list_to_conj_([L], L) :- !.
+list_to_conj_([L|Ls], (L, C)) :-
+    list_to_conj_(Ls, C).
