@@ -23,6 +23,7 @@ term model in :mod:`creative_py.bridge.terms`, whose ``str()`` calls :func:`enco
 
 from __future__ import annotations
 
+import functools
 import json
 import math
 import numbers
@@ -78,15 +79,18 @@ def _escape(text: str, quote: str) -> str:
     return "".join(out)
 
 
+@functools.lru_cache(maxsize=4096)
 def _atom(name: str) -> str:
     if _PLAIN_ATOM.match(name):
         return name
     return "'" + _escape(name, "'") + "'"
 
 
-def _float(value: float) -> str:
+def _float(value: float, path: tuple = ()) -> str:
     if not math.isfinite(value):
-        raise ValueError(f"{value!r} cannot be sent to Prolog: NaN and infinities are refused")
+        raise ValueError(
+            f"{_where(path)}: {value!r} cannot be sent to Prolog: NaN and infinities are refused"
+        )
     text = repr(float(value))
     mantissa, e, exponent = text.partition("e")
     if "." not in mantissa:
@@ -119,12 +123,24 @@ def encode(value: Any, *, operators: bool = False) -> str:
         A value is not part of the term model (``bool``, ``tuple``, ``dict``, ``None``,
         ...); the message names the type and where it was found.
     """
-    return _encode(value, operators, _TOP_PRIORITY, "term")
+    return _encode(value, operators, _TOP_PRIORITY)
 
 
-def _encode(value: Any, operators: bool, max_priority: int, where: str,
+def _where(path: tuple) -> str:
+    if not path:
+        return "term"
+    parent, index = path
+    if isinstance(parent, Compound):
+        return f"argument {index + 1} of {parent.indicator}"
+    return f"list element {index + 1}"
+
+
+def _encode(value: Any, operators: bool, max_priority: int, path: tuple = (),
             operand: bool = False) -> str:
+    # ``path`` is (parent, index) of value, turned into text only for an error message.
     if isinstance(value, str):
+        if _PLAIN_ATOM.match(value):
+            return value
         text = _atom(value)
         if operand and value in _OPERATOR_ATOMS:
             return "(" + text + ")"
@@ -134,37 +150,37 @@ def _encode(value: Any, operators: bool, max_priority: int, where: str,
             priority, kind = _INFIX[value.name]
             left_max = priority - 1
             right_max = priority if kind == "xfy" else priority - 1
-            left = _encode(value.args[0], operators, left_max, where + " (left operand)",
-                           operand=True)
-            right = _encode(value.args[1], operators, right_max, where + " (right operand)",
-                            operand=True)
+            left = _encode(value.args[0], operators, left_max, (value, 0), True)
+            right = _encode(value.args[1], operators, right_max, (value, 1), True)
             sep = ", " if value.name == "," else f" {value.name} "
             text = left + sep + right
             return "(" + text + ")" if priority > max_priority else text
-        args = ",".join(
-            _encode(arg, operators, _ARG_PRIORITY, f"argument {i + 1} of {value.indicator}")
+        args = ",".join([
+            _encode(arg, operators, _ARG_PRIORITY, (value, i))
             for i, arg in enumerate(value.args)
-        )
+        ])
         return _atom(value.name) + "(" + args + ")"
     if isinstance(value, list):
-        return "[" + ",".join(
-            _encode(item, operators, _ARG_PRIORITY, f"list element {i + 1}")
+        return "[" + ",".join([
+            _encode(item, operators, _ARG_PRIORITY, (value, i))
             for i, item in enumerate(value)
-        ) + "]"
+        ]) + "]"
+    if isinstance(value, float):
+        return _float(value, path)
     if isinstance(value, Var):
         return "_" if value.name is None else value.name
     if isinstance(value, PlString):
         return '"' + _escape(value.value, '"') + '"'
     if isinstance(value, bool):
         raise TypeError(
-            f"{where}: bool {value!r} is not a Prolog term; use the atom 'true' or 'false'"
+            f"{_where(path)}: bool {value!r} is not a Prolog term; use the atom 'true' or 'false'"
         )
     if isinstance(value, numbers.Integral):
         return str(int(value))
     if isinstance(value, numbers.Real):
-        return _float(float(value))
+        return _float(float(value), path)
     raise TypeError(
-        f"{where}: {type(value).__name__} {value!r} is not a Prolog term "
+        f"{_where(path)}: {type(value).__name__} {value!r} is not a Prolog term "
         "(expected str, int, float, PlString, Var, Compound or list)"
     )
 

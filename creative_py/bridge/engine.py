@@ -30,6 +30,7 @@ from __future__ import annotations
 import logging
 import os
 import threading
+from ctypes import byref, c_size_t
 from dataclasses import dataclass
 from pathlib import Path
 from typing import ClassVar, Iterable, Optional, Sequence, Union
@@ -185,6 +186,8 @@ class Engine:
                         want_reply: bool) -> Optional[str]:
         native = self._native
         data = text.encode("utf-8")
+        mark = c_size_t(0)
+        native.mark_strings(byref(mark))
         frame = native.open_frame()
         try:
             t0 = native.new_term_refs(2)
@@ -205,6 +208,7 @@ class Engine:
             return reply
         finally:
             native.discard_frame(frame)
+            native.release_strings(mark.value)
 
     def request_text(self, request: str) -> str:
         """Send one request text to the facade and return its JSON reply text.

@@ -225,3 +225,43 @@ def test_nan_is_refused_before_prolog_is_asked(engine: Engine) -> None:
     with pytest.raises(ValueError, match="NaN"):
         engine.call("echo", Compound("pose", (math.nan,)))
     assert engine.ping() == "pong"
+
+
+def _example(tool: str, body: list) -> Compound:
+    return clause(Compound("tool_pose", (tool, "cube1", "tube1")), body)
+
+
+def test_version_space_state_travels_through_python_intact(engine: Engine) -> None:
+    pos = _example("hook_a2", [Compound("hook", ("hook_a2",)),
+                               Compound("behind", ("hook_a2", "cube1")),
+                               Compound("handle_length", ("hook_a2", "medium"))])
+    vs = engine.vs_init(pos)
+    assert engine.variant(engine.call("echo", vs), vs)
+    hs, hg = engine.vs_bounds(vs)
+    head = hs.args[0]
+    assert all(isinstance(v, Var) for v in head.args)
+    assert hg == head  # h_g starts as the bare head, sharing h_s's head variables
+    neg = _example("hook_b1", [Compound("hook", ("hook_b1",)),
+                               Compound("handle_length", ("hook_b1", "medium"))])
+    vs2 = engine.vs_update(vs, Compound("neg", (neg,)))
+    assert not engine.vs_covers(vs2, "hg", neg)
+    assert engine.vs_covers(vs2, "hg", pos)
+    positives, negatives = engine.vs_examples(vs2)
+    assert positives == [pos] and negatives == [neg]
+    assert isinstance(engine.vs_unknown(vs2), list)
+    assert engine.vs_converged(vs2) in (True, False)
+
+
+def test_learning_operations_answer_through_the_bridge(engine: Engine) -> None:
+    bk = [Compound("parent", p) for p in [("ann", "mary"), ("ann", "tom"), ("tom", "eve"),
+                                           ("tom", "ian")]]
+    bk += [Compound("female", (f,)) for f in ("ann", "mary", "eve")]
+    c = engine.rlgg(Compound("daughter", ("mary", "ann")), Compound("daughter", ("eve", "tom")),
+                    bk)
+    assert engine.theta_subsumes(c, clause(Compound("daughter", ("mary", "ann")), bk))
+    reduced = engine.nbr_reduce(
+        clause(Compound("p", (X,)), [Compound(n, (X,)) for n in ("a", "b", "c")]),
+        [clause(Compound("p", ("n1",)), [Compound("a", ("n1",)), Compound("c", ("n1",))])])
+    assert not engine.clause_covers(
+        reduced, clause(Compound("p", ("n1",)), [Compound("a", ("n1",)), Compound("c", ("n1",))]))
+    assert engine.clause_violations(Compound("p", (X,)), Compound("q", ("a",))) is None
