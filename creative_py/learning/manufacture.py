@@ -1,0 +1,489 @@
+"""Manufacture a new tool: qualitative spec -> sized spec -> printable files.
+
+This is the path of ``creative make-tool`` and of steps 3-9 of the paper's Algorithm 2
+(tool creation): the structural literals a new tool must have (``hook(T)``,
+``handle_length(T, long)``, ...) are sized by the CLP(R) size model in Prolog
+(``geometry_clp:solve_size/4``) against the task's geometry, and the sized tool is
+written as URDF, SDF, OpenSCAD, STL and a manifest by
+:func:`creative_py.mesh.export.write_tool_files`::
+
+    engine = Engine.instance(); engine.load_default_ontology()
+    literals = parse_spec("hook", "handle_length=long,hook_side=left")
+    sized = size_tool(engine, "hook", literals, default_context("hook", "long_tube"),
+                      "hook_new1")                     # or raises InfeasibleSpec
+    files = make_tool(engine, "hook", literals, default_context("hook", "long_tube"),
+                      "hook_new1", "runs/tools")      # sizes, then writes
+
+Units are those of :mod:`creative_py.mesh.spec`: metres, degrees where a name says
+``_deg``. The printed mass is PLA density times volume (``mass=None`` in the spec).
+
+Sizing always happens before anything is written, and the writer is atomic: when
+:func:`make_tool` raises, no file or folder of the tool exists (the output folder
+itself is not even created when sizing fails).
+
+The qualitative vocabulary (property names and values, :data:`HOOK_PROPERTIES`,
+:data:`WEDGE_PROPERTIES`) mirrors the ontology (``ontology/ranges.pl``,
+``ontology/sizes.pl``, ``ontology/replacement.pl``); it lives here too so that a
+command line can be checked before Prolog starts. The tests compare it with the
+knowledge base.
+"""
+
+from __future__ import annotations
+
+import difflib
+import logging
+import re
+import time
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Sequence
+
+from creative_py.bridge import Compound, Engine, PlString, PrologError, Term, Var
+from creative_py.mesh.export import ToolFiles, write_tool_files
+from creative_py.mesh.printability import PrintSettings
+from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict
+from creative_py.world import WORLDS_ROOT, WorldFileError, load_toml
+
+log = logging.getLogger(__name__)
+
+CASES = ("hook", "wedge")
+"""The two tasks of the paper: hook-and-tube, wedge-and-door."""
+
+PLACEHOLDER_TOOL = "new_tool"
+"""The tool atom of the literals :func:`parse_spec` returns (renamed by :func:`size_tool`)."""
+
+HOOK_PROPERTIES: dict[str, tuple[str, ...]] = {
+    "kind": ("hook", "stick"),
+    "handle_length": ("short", "medium", "long"),
+    "handle_width": ("thin", "thick"),
+    "hook_length": ("short", "long"),
+    "hook_width": ("narrow", "wide"),
+    "hook_side": ("left", "right"),
+    "hook_angle": ("acute", "right", "obtuse"),
+}
+"""Hook-case spec properties and their values; ``kind`` selects ``hook(T)`` or ``stick(T)``."""
+
+PRONG_PROPERTIES = ("hook_length", "hook_width", "hook_side", "hook_angle")
+"""Hook-case properties of the prong, which a stick does not have."""
+
+WEDGE_PROPERTIES: dict[str, tuple[str, ...]] = {
+    "shape": ("triangular_prism", "box", "cylinder"),
+    "block_length": ("short", "medium", "long"),
+    "block_width": ("narrow", "wide"),
+    "block_height": ("low", "high"),
+    "mechanical_advantage": ("above_one", "below_one"),
+}
+"""Wedge-case spec properties and their values."""
+
+CLASS_LITERALS = {"hook": ("tool", "hook_like"), "stick": ("tool", "hook_like"),
+                  "block": ("object", "block")}
+"""Class literals every tool of a kind carries, besides ``hook``/``stick``/``block`` itself."""
+
+CONTEXT_FACTS: dict[str, int] = {
+    "tube_length_m": 2, "tube_inner_m": 3, "max_tool_length": 1, "door_gap_m": 2,
+    "min_wall_m": 1, "reach_margin_m": 1, "tube_clearance_m": 1,
+}
+"""Task facts the size model understands (name -> arity); see ``geometry_clp:size_constraints/4``."""
+
+_ATOM = re.compile(r"[a-z][a-zA-Z0-9_]*\Z")
+
+
+class InfeasibleSpec(ValueError):
+    """No tool has the spec's literals and also suits the task.
+
+    Attributes
+    ----------
+    name : str
+        The tool that was to be made.
+    conflicts : list of str
+        A minimal conflict, as Prolog text: spec literals and task facts that cannot
+        hold together (dropping any one of them makes the spec feasible).
+    """
+
+    def __init__(self, name: str, literals: Sequence[str], facts: Sequence[str]) -> None:
+        self.name = name
+        self.conflicts = list(literals) + list(facts)
+        parts = []
+        if literals:
+            parts.append("the spec's " + ", ".join(literals))
+        if facts:
+            parts.append("the task's " + ", ".join(facts))
+        super().__init__(
+            f"{name}: no tool satisfies {' together with '.join(parts)} (a minimal "
+            f"conflict: dropping any one of these makes the spec feasible)")
+
+
+@dataclass(frozen=True)
+class SizedTool:
+    """A new tool with its dimensions chosen.
+
+    Attributes
+    ----------
+    name : str
+        The tool's object name (a Prolog atom).
+    case : str
+        ``"hook"`` or ``"wedge"``.
+    kind : str
+        ``"hook"``, ``"stick"`` or ``"block"`` (the spec kind).
+    literals : tuple of str
+        The literals it was sized for, Prolog text, with the tool named ``name``.
+    dims : dict
+        Spec field -> value as the size model chose it (metres; ``hook_angle_deg`` in
+        whole degrees; ``hook_side`` and ``shape`` as names).
+    spec : HookSpec or BlockSpec
+        The spec built from ``dims`` (mass None: PLA density times volume).
+    seconds : float
+        Wall time of the sizing call, seconds.
+    """
+
+    name: str
+    case: str
+    kind: str
+    literals: tuple[str, ...]
+    dims: dict
+    spec: HookSpec | BlockSpec
+    seconds: float
+
+    def catalogue_facts(self) -> list[Compound]:
+        """Return the catalogue facts of the shared vocabulary for this tool (metres, degrees).
+
+        Hook case: ``object_kind/2``, ``handle_length_m/2``, ``handle_width_m/2``,
+        ``hook_length_m/2``, ``hook_width_m/2``, ``hook_side_is/2``, ``hook_angle_deg/2``;
+        wedge case: ``object_kind/2``, ``block_shape/2``, ``block_length_m/2``,
+        ``block_width_m/2``, ``block_height_m/2``. These let the knowledge base derive
+        the tool's structural literals as it does for the world's own objects.
+        """
+        s, n = self.spec, self.name
+        if isinstance(s, BlockSpec):
+            return [Compound("object_kind", (n, "block")), Compound("block_shape", (n, s.shape)),
+                    Compound("block_length_m", (n, s.length)),
+                    Compound("block_width_m", (n, s.width)),
+                    Compound("block_height_m", (n, s.height))]
+        return [Compound("object_kind", (n, self.kind)),
+                Compound("handle_length_m", (n, s.handle_length)),
+                Compound("handle_width_m", (n, s.handle_width)),
+                Compound("hook_length_m", (n, s.hook_length)),
+                Compound("hook_width_m", (n, s.hook_width)),
+                Compound("hook_side_is", (n, s.hook_side)),
+                Compound("hook_angle_deg", (n, s.hook_angle_deg))]
+
+
+def case_properties(case: str) -> dict[str, tuple[str, ...]]:
+    """Return the spec properties of ``case`` and their allowed values."""
+    _check_case(case)
+    return HOOK_PROPERTIES if case == "hook" else WEDGE_PROPERTIES
+
+
+def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL) -> list[Compound]:
+    """Return the structural literals of a command-line spec, class literals first.
+
+    Parameters
+    ----------
+    case : {"hook", "wedge"}
+        The task the tool is for.
+    text : str
+        Comma-separated ``property=value`` pairs, e.g.
+        ``"handle_length=long,hook_side=left,hook_length=long"`` or
+        ``"shape=triangular_prism,block_length=long"``. Hook case: ``kind=stick`` makes a
+        stick (no prong properties allowed then); anything else is a hook.
+    tool : str
+        The tool atom of the literals.
+
+    Returns
+    -------
+    list of Compound
+        e.g. ``[tool(new_tool), hook_like(new_tool), hook(new_tool),
+        handle_length(new_tool, long), hook_side(new_tool, left)]``.
+
+    Raises
+    ------
+    ValueError
+        An unknown property or value (the message lists the allowed ones), a malformed
+        or repeated pair, an empty spec, or prong properties for a stick.
+    """
+    props = case_properties(case)
+    allowed = "; ".join(f"{p}={'|'.join(vs)}" for p, vs in props.items())
+    if not isinstance(text, str) or not text.strip():
+        raise ValueError(f"{case} spec: empty; give property=value pairs separated by "
+                         f"commas, from: {allowed}")
+    chosen: dict[str, str] = {}
+    for item in text.split(","):
+        prop, sep, value = (s.strip() for s in item.partition("="))
+        if not sep or not prop or not value:
+            raise ValueError(f"{case} spec {text!r}: {item.strip()!r} is not property=value; "
+                             f"allowed: {allowed}")
+        if prop not in props:
+            raise ValueError(f"{case} spec {text!r}: unknown property {prop!r}"
+                             f"{_did_you_mean(prop, props)}; allowed properties: "
+                             f"{', '.join(props)}")
+        if value not in props[prop]:
+            raise ValueError(f"{case} spec {text!r}: {prop} cannot be {value!r}"
+                             f"{_did_you_mean(value, props[prop])}; allowed values: "
+                             f"{', '.join(props[prop])}")
+        if prop in chosen and chosen[prop] != value:
+            raise ValueError(f"{case} spec {text!r}: {prop} given twice ({chosen[prop]} "
+                             f"and {value})")
+        chosen[prop] = value
+    if case == "wedge":
+        kind = "block"
+    else:
+        kind = chosen.pop("kind", "hook")
+        prong = [p for p in PRONG_PROPERTIES if p in chosen]
+        if kind == "stick" and prong:
+            raise ValueError(f"{case} spec {text!r}: a stick has no prong, so "
+                             f"{', '.join(prong)} cannot be given with kind=stick")
+    _check_atom(tool, "tool")
+    classes = [Compound(c, (tool,)) for c in CLASS_LITERALS[kind] + (kind,)]
+    return classes + [Compound(p, (tool, v)) for p, v in chosen.items()]
+
+
+def parse_context(engine: Engine, text: str) -> list[Term]:
+    """Return the task facts of a command-line context such as
+    ``"max_tool_length(0.3), tube_length_m(tube1, 0.45)"`` (Prolog syntax, metres).
+
+    Raises
+    ------
+    ValueError
+        The text does not parse, a fact is not ground, or it is not one of
+        :data:`CONTEXT_FACTS` (the size model would silently ignore it).
+    """
+    try:
+        facts = engine.parse(f"[{text}]") if text.strip() else []
+    except PrologError as exc:
+        raise ValueError(f"context {text!r}: not Prolog facts ({exc})") from None
+    for fact in facts:
+        name = fact.name if isinstance(fact, Compound) else fact
+        arity = len(fact.args) if isinstance(fact, Compound) else 0
+        if CONTEXT_FACTS.get(name) != arity:
+            known = ", ".join(f"{n}/{a}" for n, a in CONTEXT_FACTS.items())
+            raise ValueError(f"context {text!r}: unknown task fact {fact}; the size model "
+                             f"understands {known}")
+        if not all(isinstance(a, (int, float, str)) for a in fact.args):
+            raise ValueError(f"context {text!r}: {fact} must be ground (atoms and numbers)")
+    return facts
+
+
+def default_context(case: str, variant: str = "standard", *,
+                    worlds_root: Path | str = WORLDS_ROOT) -> list[Compound]:
+    """Return the task facts the size model needs, read from the world files.
+
+    Hook case (``<root>/hook_tube/``): ``tube_length_m(Tube, L)`` from ``tasks.toml``
+    ``[variant.<variant>] tube_length`` and ``tube_inner_m(Tube, W, H)`` from
+    ``scene.toml`` ``[tube] name, inner_width, inner_height``. Wedge case
+    (``<root>/wedge_door/``): ``door_gap_m(Door, G)`` from ``scene.toml``
+    ``[door] name, bottom_gap``; ``variant`` must name a ``[[variant]]`` of ``tasks.toml``.
+    Metres. Without world files, build the list by hand (see :data:`CONTEXT_FACTS`).
+
+    Raises
+    ------
+    WorldFileError
+        A file is missing or lacks a field (the message names file and field).
+    ValueError
+        An unknown case or variant (the message lists the variants).
+    """
+    _check_case(case)
+    folder = Path(worlds_root) / ("hook_tube" if case == "hook" else "wedge_door")
+    scene_path, tasks_path = folder / "scene.toml", folder / "tasks.toml"
+    scene, tasks = load_toml(scene_path), load_toml(tasks_path)
+    if case == "hook":
+        variants = tasks.get("variant", {})
+        if not isinstance(variants, dict) or variant not in variants:
+            names = ", ".join(variants) if isinstance(variants, dict) else "none"
+            raise ValueError(f"{tasks_path}: no variant {variant!r}; variants: {names}")
+        length = _toml_number(variants[variant], "tube_length", tasks_path,
+                              f"variant.{variant}")
+        tube = _toml_table(scene, "tube", scene_path)
+        name = _toml_atom(tube, "name", scene_path, "tube")
+        width = _toml_number(tube, "inner_width", scene_path, "tube")
+        height = _toml_number(tube, "inner_height", scene_path, "tube")
+        return [Compound("tube_length_m", (name, length)),
+                Compound("tube_inner_m", (name, width, height))]
+    variants = tasks.get("variant", [])
+    names = [v.get("name") for v in variants if isinstance(v, dict)] \
+        if isinstance(variants, list) else []
+    if variant not in names:
+        raise ValueError(f"{tasks_path}: no variant {variant!r}; variants: "
+                         f"{', '.join(map(str, names)) or 'none'}")
+    door = _toml_table(scene, "door", scene_path)
+    name = _toml_atom(door, "name", scene_path, "door")
+    gap = _toml_number(door, "bottom_gap", scene_path, "door")
+    return [Compound("door_gap_m", (name, gap))]
+
+
+def size_tool(engine: Engine, case: str, literals: Sequence[Term],
+              context_facts: Sequence[Term], name: str, *,
+              settings: PrintSettings = PrintSettings()) -> SizedTool:
+    """Choose the dimensions of a new tool that has ``literals`` and suits the task.
+
+    Parameters
+    ----------
+    engine : Engine
+        The Prolog engine, with the ontology loaded (``engine.load_default_ontology()``).
+    case : {"hook", "wedge"}
+        The task.
+    literals : sequence of terms
+        The tool's literals (e.g. from :func:`parse_spec`, or the body of a hypothesis:
+        spatial and task literals are ignored). Their tool argument (an atom or a
+        variable) must be the same in all of them; it is renamed ``name``. The kind is
+        ``stick`` if ``stick(T)`` is among them, else ``hook`` (hook case) or ``block``.
+    context_facts : sequence of terms
+        Task facts (:data:`CONTEXT_FACTS`, e.g. :func:`default_context`); others are ignored.
+    name : str
+        The new tool's object name.
+    settings : PrintSettings
+        The printer: unless the context has a ``min_wall_m`` fact, every solid dimension
+        is kept at or above ``settings.min_feature``.
+
+    Returns
+    -------
+    SizedTool
+
+    Raises
+    ------
+    InfeasibleSpec
+        No size satisfies the literals and the task facts; the message names a minimal
+        conflict.
+    ValueError
+        A bad case or name, literals about two different tools, or a literal the
+        knowledge base does not know (is the ontology loaded?).
+    """
+    _check_case(case)
+    _check_atom(name, "tool name")
+    renamed = _rename_tool(case, literals, name)
+    kind = _kind(case, renamed, name)
+    context = list(context_facts)
+    if not any(isinstance(f, Compound) and f.name == "min_wall_m" for f in context):
+        context.append(Compound("min_wall_m", (settings.min_feature,)))
+    start = time.perf_counter()
+    try:
+        result = engine.solve_size(kind, renamed, context)
+    except PrologError as exc:
+        formal = exc.formal
+        if isinstance(formal, Compound) and formal.name == "domain_error":
+            raise ValueError(
+                f"{name}: the knowledge base does not know the literal {formal.args[1]} "
+                f"({exc}); load the ontology first (engine.load_default_ontology())") from None
+        raise
+    seconds = time.perf_counter() - start
+    if result.name == "infeasible":
+        conflict = result.args[0]
+        lits = [str(t) for t in conflict if t in renamed]
+        facts = [str(t) for t in conflict if t not in renamed]
+        raise InfeasibleSpec(name, lits, facts)
+    dims = {eq.args[0]: eq.args[1] for eq in result.args[0]}
+    spec = spec_from_dict({"kind": kind, "name": name, "mass": None, **dims},
+                          source=f"solve_size({kind}) for {name}")
+    log.info("sized %s %s in %.1f ms: %s", kind, name, 1e3 * seconds, dims)
+    return SizedTool(name=name, case=case, kind=kind, literals=tuple(str(t) for t in renamed),
+                     dims=dims, spec=spec, seconds=seconds)
+
+
+def make_tool(engine: Engine, case: str, literals: Sequence[Term],
+              context_facts: Sequence[Term], name: str, out_dir: Path | str, *,
+              settings: PrintSettings = PrintSettings(), overwrite: bool = False,
+              picture: bool = True) -> ToolFiles:
+    """Size a new tool (:func:`size_tool`) and write its files into ``out_dir/<name>/``.
+
+    The files are those of :func:`creative_py.mesh.export.write_tool_files` (URDF, SDF,
+    OpenSCAD, STL, manifest, optional PNG). Sizing happens first, and the writer is
+    atomic: on any error nothing of the tool is left in ``out_dir`` (and ``out_dir`` is
+    not created if sizing fails).
+
+    Raises
+    ------
+    InfeasibleSpec, ValueError
+        As :func:`size_tool`; or a dimension the printer cannot print.
+    FileExistsError
+        ``out_dir/<name>`` exists and ``overwrite`` is false.
+    """
+    sized = size_tool(engine, case, literals, context_facts, name, settings=settings)
+    start = time.perf_counter()
+    files = write_tool_files(sized.spec, out_dir, settings=settings, overwrite=overwrite,
+                             picture=picture)
+    log.info("made %s: sized in %.1f ms, written in %.1f ms", name, 1e3 * sized.seconds,
+             1e3 * (time.perf_counter() - start))
+    return files
+
+
+def _did_you_mean(word: str, choices) -> str:
+    close = difflib.get_close_matches(word, list(choices), n=1)
+    return f" (did you mean {close[0]!r}?)" if close else ""
+
+
+def _check_case(case: str) -> None:
+    if case not in CASES:
+        raise ValueError(f"case must be one of {', '.join(CASES)}, got {case!r}")
+
+
+def _check_atom(name: str, what: str) -> None:
+    if not (isinstance(name, str) and _ATOM.match(name)):
+        raise ValueError(f"{what} {name!r} must be a Prolog atom: a lower-case ASCII letter "
+                         "followed by letters, digits or underscores")
+
+
+def _subject_names(case: str) -> set[str]:
+    kinds = ("hook", "stick") if case == "hook" else ("block",)
+    names = {c for k in kinds for c in CLASS_LITERALS[k]} | set(kinds)
+    return names | (set(case_properties(case)) - {"kind"})
+
+
+def _rename_tool(case: str, literals: Sequence[Term], name: str) -> list[Term]:
+    """Return ``literals`` with their tool (first argument of class and structural
+    literals) replaced by the atom ``name`` everywhere."""
+    if isinstance(literals, (str, Compound)):
+        raise ValueError(f"{name}: literals must be a list of terms, got {literals!r}")
+    subjects = []
+    for lit in literals:
+        if not isinstance(lit, Compound):
+            raise ValueError(f"{name}: literal {lit!r} is not a compound term")
+        if lit.name in _subject_names(case) and lit.args and lit.args[0] not in subjects:
+            subjects.append(lit.args[0])
+    if len(subjects) > 1:
+        raise ValueError(f"{name}: the literals describe more than one tool: "
+                         f"{', '.join(str(s) for s in subjects)}")
+    if not subjects:
+        raise ValueError(f"{name}: no class or structural literal of the {case} case among "
+                         f"{', '.join(str(lit) for lit in literals) or 'no literals'}")
+    subject = subjects[0]
+    if isinstance(subject, Var) and subject.anonymous:
+        raise ValueError(f"{name}: the tool argument of the literals is the anonymous variable")
+    return [_replace(lit, subject, name) for lit in literals]
+
+
+def _replace(term: Term, old: Term, new: Term) -> Term:
+    if term == old and type(term) is type(old):
+        return new
+    if isinstance(term, Compound):
+        return Compound(term.name, tuple(_replace(a, old, new) for a in term.args))
+    if isinstance(term, list):
+        return [_replace(a, old, new) for a in term]
+    return term
+
+
+def _kind(case: str, literals: Sequence[Compound], name: str) -> str:
+    if case == "wedge":
+        return "block"
+    return "stick" if Compound("stick", (name,)) in literals else "hook"
+
+
+def _toml_table(data: dict, key: str, path: Path) -> dict:
+    table = data.get(key)
+    if not isinstance(table, dict):
+        raise WorldFileError(f"{path}: table [{key}] missing")
+    return table
+
+
+def _toml_number(table: dict, key: str, path: Path, where: str) -> float:
+    value = table.get(key)
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
+        raise WorldFileError(f"{path}: field {where}.{key} must be a positive number of "
+                             f"metres, got {value!r}")
+    return float(value)
+
+
+def _toml_atom(table: dict, key: str, path: Path, where: str) -> str:
+    value = table.get(key)
+    if not (isinstance(value, str) and _ATOM.match(value)):
+        raise WorldFileError(f"{path}: field {where}.{key} must be an object name "
+                             f"(a Prolog atom), got {value!r}")
+    return value
