@@ -1,0 +1,869 @@
+"""Case 2: hold a self-closing door open with an object that Baxter places on the floor.
+
+The world (``worlds/wedge_door/``) is read into frozen dataclasses; an episode builds
+the scene in a fresh :class:`~creative_py.sim.core.Sim` and offers the skills
+``pick_up`` (grip an object on the tray), ``position_tool`` (carry it and put it on
+the floor at a :class:`WedgePose` relative to the door) and ``act`` (release the door:
+its closer pushes it shut).
+
+Arrangement (world frame = Baxter's base frame, metres, radians)
+----------------------------------------------------------------
+Baxter cannot bring an object down to the real floor (z = -0.926), so the door stands
+on a raised stage whose top is at z = -0.10: the door room's floor ``floor1``. The
+hinge is front-left of the robot at (0.60, 0.40); closed, the door runs from the hinge
+towards the robot's right (heading ``closed_heading`` = -105 deg). The door opens
+counter-clockwise seen from above (door angle A >= 0, heading = closed_heading + A),
+is held open at A = 0.8 rad until ``act`` and then closes clockwise, towards the
+robot. The zone between the open door and the closed door's line is within reach of
+the right arm with the gripper pointing down; the tray with the objects and the arm's
+retreat point lie outside the door's sweep. A door frame stops the door at A = 0
+(a joint limit).
+
+Pose of the object relative to the door, :class:`WedgePose` ``(r, gap, yaw)``
+-----------------------------------------------------------------------------
+* ``r`` (m): distance from the hinge axis to the object's centre.
+* ``gap`` (m): arc length, along the door's closing sweep at radius ``r``, from the
+  open door's face to the object's tip: with Phi the heading of (object - hinge)
+  relative to the closed door, ``gap = r (A - Phi) - length / 2 - thickness / 2``.
+* ``yaw`` (rad): the object's heading (its block frame's +x, the tip of a prism) minus
+  the heading from the object towards the closing door (the counter-clockwise tangent,
+  closed_heading + Phi + pi / 2), wrapped to (-pi, pi]: 0 = tip pointing at the door.
+  This matches ``prolog/abstract_state.pl`` (pose_numbers/4).
+
+The physics decides
+-------------------
+After the release a closing torque (``closing_torque`` of the variant) acts on the door
+every step for ``held.duration`` seconds. The door is *held* (goal ``door_held(door1)``)
+when it touched the object, closed less than ``max_close_deg`` after the first contact
+and still stands open at least ``min_open_deg``. Nothing here looks at the object's
+shape: a wedge holds because the door's push on its slope presses it onto the floor.
+
+Settings and why (measured, 1/960 s, 100 solver iterations; at 1/240 s a light wedge
+sinks into the floor and flips): door 0.8 x 0.04 x 2.0 m, 15 kg, 1 cm bottom gap, joint
+damping 0.5, default motor freed; stage friction 0.3, objects 1.0 (pybullet multiplies
+the two). The door edge's friction is 0.0 (a low-friction glide strip): with 0.1 the
+door's friction on the slope adds about 6 degrees to the wedge's effective angle and a
+10 cm x 3 cm wedge slips at 1 N m (measured 2.6 degrees of closing), so that only the
+15 cm wedge holds any door. Door-only measurements (wedge 5 cm wide, r = 0.6 m,
+gap 0.03 m, tip towards the door), degrees the door closed after first contact:
+
+======================== ========== ==========
+wedge (length x height)   1 N m      5 N m
+======================== ========== ==========
+15 x 3 cm (11 deg)        0.3 held   0.5 held
+10 x 3 cm (17 deg)        0.4 held   12.7
+6 x 3 cm (27 deg)         77         547
+10 x 3 cm, tip away       97         573
+======================== ========== ==========
+
+Perception: the placed object's pose and size come from the cameras ([[camera]] in
+``scene.toml``) through :mod:`creative_py.perception`; the door's angle comes from its
+joint (the door's own sensor), the hinge and door size from the scene's description.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Any, NamedTuple
+
+import numpy as np
+import pybullet as pb
+
+from creative_py.mesh.spec import BlockSpec, Box, spec_from_dict
+from creative_py.sim.baxter import Baxter, BaxterConfig, MoveResult
+from creative_py.sim.bodies import Surface, frame_pose, spawn_parts, spawn_spec, yaw_of
+from creative_py.sim.core import Pose, Sim
+from creative_py.sim.trial import Fact, Observation, SkillOutcome, TrialResult
+from creative_py.world import (WORLDS_ROOT, Fields, PhysicsSettings, WorldFileError,
+                               load_toml, read_physics, world_file)
+
+log = logging.getLogger(__name__)
+
+SET_COLOURS = {"a": (0.95, 0.75, 0.1, 1.0), "b": (0.2, 0.6, 0.95, 1.0)}
+"""Colours of the two object sets (RGBA); other set names are grey."""
+
+
+class WedgePose(NamedTuple):
+    """The object's pose relative to the door: ``r``, ``gap`` (m) and ``yaw`` (rad)."""
+
+    r: float
+    gap: float
+    yaw: float
+
+
+# ---------------------------------------------------------------------------- world
+@dataclass(frozen=True)
+class StageSpec:
+    """The floor the door stands on (a static box): top face centre (x, y), size, z (m)."""
+
+    name: str
+    centre: tuple[float, float]
+    size: tuple[float, float]
+    top_z: float
+    thickness: float
+    friction: float
+
+
+@dataclass(frozen=True)
+class DoorSpec:
+    """The door: hinge (x, y) and closed heading (rad), panel size (m), mass (kg).
+
+    ``damping`` is the joint damping (N m s/rad), ``friction`` the panel's pybullet
+    friction, ``open_angle`` the angle (rad) at which the door is held until release,
+    ``hold_force`` the torque (N m) of the motor that holds it there.
+    """
+
+    name: str
+    hinge: tuple[float, float]
+    closed_heading: float
+    width: float
+    thickness: float
+    height: float
+    bottom_gap: float
+    mass: float
+    damping: float
+    friction: float
+    open_angle: float
+    hold_force: float
+
+
+@dataclass(frozen=True)
+class TraySpec:
+    """Where the objects lie: slot centre = origin + column * column_step + row * row_step."""
+
+    origin: tuple[float, float]
+    column_step: tuple[float, float]
+    row_step: tuple[float, float]
+    yaw: float
+
+
+@dataclass(frozen=True)
+class Handling:
+    """How the arm carries an object (metres, m/s, seconds, radians); see scene.toml."""
+
+    carry_height: float
+    grasp_clearance: float
+    release_height: float
+    place_gripper_yaw: float
+    retreat: tuple[float, float, float]
+    speed: float
+    steps_per_waypoint: int
+    settle_time: float
+
+
+@dataclass(frozen=True)
+class Variant:
+    """A task variant: the closer's torque (N m) and the door's mass (kg)."""
+
+    name: str
+    description: str
+    closing_torque: float
+    door_mass: float
+
+
+@dataclass(frozen=True)
+class HeldCriterion:
+    """When the door counts as held (seconds, degrees, metres); see tasks.toml."""
+
+    duration: float
+    max_close_deg: float
+    min_open_deg: float
+    contact_distance: float
+
+
+@dataclass(frozen=True)
+class WorldObject:
+    """An available object: its spec, set name, tray slot (row, column), friction."""
+
+    spec: BlockSpec
+    set: str
+    slot: tuple[int, int]
+    friction: float
+
+
+@dataclass(frozen=True)
+class Demonstration:
+    """The trainer's demonstration: object, variant and pose."""
+
+    object: str
+    variant: str
+    pose: WedgePose
+
+
+@dataclass(frozen=True)
+class WedgeWorld:
+    """Everything read from ``worlds/wedge_door/`` (see its TOML files for units)."""
+
+    directory: Path
+    physics: PhysicsSettings
+    arm_physics: PhysicsSettings
+    stage: StageSpec
+    door: DoorSpec
+    tray: TraySpec
+    handling: Handling
+    cameras: tuple
+    noise: Any
+    objects: dict[str, WorldObject]
+    variants: dict[str, Variant]
+    default_variant: str
+    held: HeldCriterion
+    demonstration: Demonstration
+
+    def object(self, name: str) -> WorldObject:
+        """Return the object ``name``; raise listing the available objects."""
+        if name not in self.objects:
+            raise KeyError(f"unknown object {name!r}; available objects: "
+                           f"{', '.join(self.objects)}")
+        return self.objects[name]
+
+    def variant(self, name: str) -> Variant:
+        """Return the variant ``name``; raise listing the variants."""
+        if name not in self.variants:
+            raise KeyError(f"unknown variant {name!r}; variants: {', '.join(self.variants)}")
+        return self.variants[name]
+
+    def slot_pose(self, name: str) -> tuple[float, float, float]:
+        """Return (x, y, yaw) of object ``name``'s block frame on the tray (m, rad)."""
+        row, col = self.object(name).slot
+        t = self.tray
+        return (t.origin[0] + col * t.column_step[0] + row * t.row_step[0],
+                t.origin[1] + col * t.column_step[1] + row * t.row_step[1], t.yaw)
+
+
+def _read_fields(f: Fields, spec: dict[str, Any]) -> dict[str, Any]:
+    """Read the fields named in ``spec`` (name -> "str" | "float" | "int" | n for a vector)."""
+    out: dict[str, Any] = {}
+    for name, kind in spec.items():
+        if kind == "str":
+            out[name] = f.str(name)
+        elif kind == "int":
+            out[name] = f.int(name, minimum=1)
+        elif kind == "float":
+            out[name] = f.float(name)
+        elif kind == "+float":
+            out[name] = f.float(name, minimum=0.0)
+        else:
+            out[name] = f.vec(name, kind)
+    f.done()
+    return out
+
+
+def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
+    """Read the wedge world from ``world_dir`` (default ``worlds/wedge_door``).
+
+    Raises :class:`~creative_py.world.WorldFileError` naming the file and the field
+    for a missing file or field, a wrong type, an unknown field (a typo) or a value
+    that makes no sense (a negative size, two objects in one tray slot).
+    """
+    from creative_py.perception.noise import NoiseModel
+    from creative_py.sim.camera import cameras_from_tables
+
+    d = Path(world_dir) if world_dir is not None else WORLDS_ROOT / "wedge_door"
+    # physics.toml
+    p = world_file(d, "physics.toml")
+    pf = Fields(load_toml(p), p)
+    arm = pf.table("arm")
+    physics = read_physics(pf)
+    pf.done()
+    arm_physics = PhysicsSettings(time_step=arm.float("time_step", minimum=1e-5, maximum=0.1),
+                                  solver_iterations=arm.int("solver_iterations", minimum=1),
+                                  gravity=physics.gravity)
+    arm.done()
+    # scene.toml
+    s = world_file(d, "scene.toml")
+    sf = Fields(load_toml(s), s)
+    stage = StageSpec(**_read_fields(sf.table("stage"), {
+        "name": "str", "centre": 2, "size": 2, "top_z": "float", "thickness": "+float",
+        "friction": "+float"}))
+    door = DoorSpec(**_read_fields(sf.table("door"), {
+        "name": "str", "hinge": 2, "closed_heading": "float", "width": "+float",
+        "thickness": "+float", "height": "+float", "bottom_gap": "+float", "mass": "+float",
+        "damping": "+float", "friction": "+float", "open_angle": "float",
+        "hold_force": "+float"}))
+    tray = TraySpec(**_read_fields(sf.table("tray"), {
+        "origin": 2, "column_step": 2, "row_step": 2, "yaw": "float"}))
+    handling = Handling(**_read_fields(sf.table("handling"), {
+        "carry_height": "+float", "grasp_clearance": "+float", "release_height": "+float",
+        "place_gripper_yaw": "float", "retreat": 3, "speed": "+float",
+        "steps_per_waypoint": "int", "settle_time": "+float"}))
+    perc = sf.table("perception")
+    try:
+        noise = NoiseModel(depth_sigma_m=perc.float("depth_sigma_m", minimum=0.0),
+                           dropout=perc.float("dropout", minimum=0.0, maximum=0.99))
+    except ValueError as exc:
+        raise WorldFileError(f"{s}: [perception]: {exc}") from None
+    perc.done()
+    try:
+        cameras = cameras_from_tables(sf.raw("camera"), str(s))
+    except (ValueError, TypeError) as exc:
+        raise WorldFileError(str(exc)) from None
+    sf.done()
+    for field_name, value in (("door.width", door.width), ("door.thickness", door.thickness),
+                              ("door.height", door.height), ("door.mass", door.mass),
+                              ("stage.thickness", stage.thickness),
+                              ("handling.speed", handling.speed)):
+        if value <= 0:
+            raise WorldFileError(f"{s}: field {field_name!r}: must be positive, got {value}")
+    if not 0.0 < door.open_angle < math.pi:
+        raise WorldFileError(f"{s}: field 'door.open_angle': must lie in (0, pi) rad, "
+                             f"got {door.open_angle}")
+    # objects.toml
+    o = world_file(d, "objects.toml")
+    of = Fields(load_toml(o), o)
+    objects: dict[str, WorldObject] = {}
+    slots: dict[tuple[int, int], str] = {}
+    for tf in of.tables("object"):
+        data = dict(tf.data)
+        obj_set = tf.str("set")
+        slot = tf.vec("slot", 2)
+        friction = tf.float("friction", minimum=0.0)
+        for extra in ("set", "slot", "friction"):
+            data.pop(extra)
+        try:
+            spec = spec_from_dict(data, source=f"{o}: {tf.prefix}")
+        except ValueError as exc:
+            raise WorldFileError(str(exc)) from None
+        if not isinstance(spec, BlockSpec):
+            raise tf.error("kind", "the wedge world takes block objects only")
+        if spec.name in objects:
+            raise tf.error("name", f"object name {spec.name!r} is used twice")
+        if any(v < 0 or v != int(v) for v in slot):
+            raise tf.error("slot", f"must be [row, column] with integers >= 0, got {list(slot)}")
+        key = (int(slot[0]), int(slot[1]))
+        if key in slots:
+            raise tf.error("slot", f"tray slot {list(key)} is taken by {slots[key]!r}")
+        slots[key] = spec.name
+        objects[spec.name] = WorldObject(spec, obj_set, key, friction)
+    of.done()
+    if not objects:
+        raise WorldFileError(f"{o}: field 'object': at least one [[object]] is needed")
+    # tasks.toml
+    t = world_file(d, "tasks.toml")
+    tf_ = Fields(load_toml(t), t)
+    variants: dict[str, Variant] = {}
+    for vf in tf_.tables("variant"):
+        v = Variant(name=vf.str("name"), description=vf.str("description", ""),
+                    closing_torque=vf.float("closing_torque", minimum=0.0),
+                    door_mass=vf.float("door_mass", minimum=1e-3))
+        vf.done()
+        if v.name in variants:
+            raise vf.error("name", f"variant name {v.name!r} is used twice")
+        variants[v.name] = v
+    if not variants:
+        raise tf_.error("variant", "at least one [[variant]] is needed")
+    default_variant = tf_.str("default_variant", choices=tuple(variants))
+    hf = tf_.table("held")
+    held = HeldCriterion(duration=hf.float("duration", minimum=0.01),
+                         max_close_deg=hf.float("max_close_deg", minimum=0.0),
+                         min_open_deg=hf.float("min_open_deg", minimum=0.0),
+                         contact_distance=hf.float("contact_distance", minimum=0.0))
+    hf.done()
+    tf_.done()
+    # demonstration.toml
+    m = world_file(d, "demonstration.toml")
+    mf = Fields(load_toml(m), m)
+    df = mf.table("demonstration")
+    demo = Demonstration(object=df.str("object", choices=tuple(objects)),
+                         variant=df.str("variant", choices=tuple(variants)),
+                         pose=WedgePose(df.float("r", minimum=0.0), df.float("gap"),
+                                        df.float("yaw")))
+    df.done()
+    mf.done()
+    return WedgeWorld(directory=d, physics=physics, arm_physics=arm_physics, stage=stage, door=door, tray=tray,
+                      handling=handling, cameras=cameras, noise=noise, objects=objects,
+                      variants=variants, default_variant=default_variant, held=held,
+                      demonstration=demo)
+
+
+def catalogue_facts(spec: BlockSpec) -> list[Fact]:
+    """Return the catalogue facts of a block (metres): kind, shape, length, width, height."""
+    n = spec.name
+    return [("object_kind", n, "block"), ("block_shape", n, spec.shape),
+            ("block_length_m", n, spec.length), ("block_width_m", n, spec.width),
+            ("block_height_m", n, spec.height)]
+
+
+def wrap_angle(a: float) -> float:
+    """Return ``a`` (rad) wrapped to (-pi, pi]."""
+    w = a - 2 * math.pi * math.floor((a + math.pi) / (2 * math.pi))
+    return w + 2 * math.pi if w <= -math.pi else w
+
+
+def place_from_pose(door: DoorSpec, angle: float, length: float,
+                    pose: WedgePose) -> tuple[float, float, float]:
+    """Return the object's centre (x, y) and heading (rad) for ``pose`` (world frame).
+
+    ``angle`` is the door's angle (rad) when the object is placed and ``length`` the
+    object's extent along its heading (m). The inverse of :func:`pose_from_place`.
+    """
+    if pose.r <= 0:
+        raise ValueError(f"wedge pose r must be positive metres, got {pose.r}")
+    phi = angle - (pose.gap + length / 2 + door.thickness / 2) / pose.r
+    heading = door.closed_heading + phi
+    x = door.hinge[0] + pose.r * math.cos(heading)
+    y = door.hinge[1] + pose.r * math.sin(heading)
+    return x, y, wrap_angle(heading + math.pi / 2 + pose.yaw)
+
+
+def pose_from_place(door: DoorSpec, angle: float, length: float, x: float, y: float,
+                    yaw: float) -> WedgePose:
+    """Return the :class:`WedgePose` of an object centred at (x, y) with heading ``yaw``."""
+    dx, dy = x - door.hinge[0], y - door.hinge[1]
+    r = math.hypot(dx, dy)
+    phi = wrap_angle(math.atan2(dy, dx) - door.closed_heading)
+    gap = r * (angle - phi) - length / 2 - door.thickness / 2
+    return WedgePose(r, gap, wrap_angle(yaw - (door.closed_heading + phi + math.pi / 2)))
+
+
+def gripper_down(yaw: float) -> tuple[float, float, float, float]:
+    """Return the orientation of ``right_gripper`` pointing down (-z) with its x axis at ``yaw``."""
+    return tuple(pb.getQuaternionFromEuler((math.pi, 0.0, yaw)))
+
+
+@dataclass(frozen=True)
+class DoorOutcome:
+    """What the door did after its release (degrees; None where it never happened)."""
+
+    touched: bool
+    contact_angle_deg: float | None
+    final_angle_deg: float
+    closed_after_contact_deg: float | None
+    held: bool
+
+    def describe(self) -> str:
+        """Return the outcome in words."""
+        if not self.touched:
+            return f"the door never touched the object and closed to {self.final_angle_deg:.1f} deg"
+        verdict = "held" if self.held else "not held"
+        return (f"door {verdict}: first contact at {self.contact_angle_deg:.1f} deg, closed "
+                f"{self.closed_after_contact_deg:.1f} deg more, stands at "
+                f"{self.final_angle_deg:.1f} deg")
+
+
+# -------------------------------------------------------------------------- episode
+class WedgeEpisode:
+    """One door-and-wedge scene in its own simulator, driven skill by skill.
+
+    Build it with :func:`open_wedge_episode` (or :func:`creative_py.sim.trial.open_episode`).
+    """
+
+    def __init__(self, world: WedgeWorld, variant: str, location: int, object_name: str,
+                 seed: int = 0, gui: bool = False, images_dir: Path | None = None) -> None:
+        self.variant = world.variant(variant)
+        if location != 1:
+            raise KeyError(f"unknown location {location!r}; the wedge task has one location: 1")
+        self.world = world
+        self.item = world.object(object_name)
+        self.spec = self.item.spec
+        self.rng = np.random.default_rng(seed)
+        self.images_dir = images_dir
+        self.render_time_s = 0.0
+        self._shots = 0
+        self.holding = False
+        self.door_outcome: DoorOutcome | None = None
+        self.robot_parked = False
+        self._time_before = 0.0
+        self._steps_at_switch = 0
+        self.sim = Sim(world.arm_physics, gui=gui)
+        try:
+            self._build()
+        except BaseException:
+            self.close()
+            raise
+
+    # ------------------------------------------------------------ scene building
+    def _build(self) -> None:
+        w, sim = self.world, self.sim
+        st = w.stage
+        spawn_parts(sim, [Box((0, 0, 0), (st.size[0], st.size[1], st.thickness))],
+                    ((st.centre[0], st.centre[1], st.top_z - st.thickness / 2), (0, 0, 0, 1)),
+                    0.0, Surface(st.friction, (0.55, 0.45, 0.35, 1.0)))
+        self.door_body = self._build_door()
+        # Only the episode's object lies on the tray (every object would cost physics
+        # time and none of the others takes part).
+        item = self.item
+        x, y, yaw = w.slot_pose(self.spec.name)
+        self.body = spawn_spec(sim, item.spec, ((x, y, st.top_z + 0.0005),
+                                                tuple(pb.getQuaternionFromEuler((0, 0, yaw)))),
+                               Surface(item.friction, SET_COLOURS.get(item.set,
+                                                                      (0.6, 0.6, 0.6, 1.0))))
+        h = w.handling
+        self.robot = Baxter(sim, BaxterConfig(speed=h.speed,
+                                              steps_per_waypoint=h.steps_per_waypoint))
+        home = (h.retreat, gripper_down(h.place_gripper_yaw))
+        q = self.robot.solve_ik_global(home)
+        if q is None:
+            raise WorldFileError(f"{w.directory / 'scene.toml'}: field 'handling.retreat': "
+                                 f"the arm cannot reach {list(h.retreat)} with the gripper down")
+        self.robot.reset_posture(q)
+        self._run(0.2)  # let the object settle
+
+    def _use_physics(self, physics: PhysicsSettings) -> None:
+        """Switch the client to ``physics`` (time step, iterations), keeping the clock."""
+        if physics == self.sim.physics:
+            return
+        self._time_before = self.sim_time()
+        self._steps_at_switch = self.sim.steps
+        self.sim.physics = physics
+        self.sim.configure()
+
+    def _run(self, seconds: float) -> None:
+        """Advance the physics by ``seconds`` at the current time step."""
+        self.sim.step(int(round(seconds / self.sim.physics.time_step)))
+
+    def _build_door(self) -> int:
+        d, c = self.world.door, self.sim.client
+        half = [d.width / 2, d.thickness / 2, d.height / 2]
+        col = pb.createCollisionShape(pb.GEOM_BOX, halfExtents=half,
+                                      collisionFramePosition=(d.width / 2, 0, 0),
+                                      physicsClientId=c)
+        vis = pb.createVisualShape(pb.GEOM_BOX, halfExtents=half,
+                                   visualFramePosition=(d.width / 2, 0, 0),
+                                   rgbaColor=(0.75, 0.7, 0.6, 1.0), physicsClientId=c)
+        base_z = self.world.stage.top_z + d.bottom_gap + d.height / 2
+        body = pb.createMultiBody(
+            baseMass=0.0, baseCollisionShapeIndex=-1, baseVisualShapeIndex=-1,
+            basePosition=(d.hinge[0], d.hinge[1], base_z),
+            baseOrientation=pb.getQuaternionFromEuler((0, 0, d.closed_heading)),
+            linkMasses=[self.variant.door_mass], linkCollisionShapeIndices=[col],
+            linkVisualShapeIndices=[vis], linkPositions=[(0, 0, 0)],
+            linkOrientations=[(0, 0, 0, 1)], linkInertialFramePositions=[(d.width / 2, 0, 0)],
+            linkInertialFrameOrientations=[(0, 0, 0, 1)], linkParentIndices=[0],
+            linkJointTypes=[pb.JOINT_REVOLUTE], linkJointAxis=[(0, 0, 1)],
+            physicsClientId=c)
+        # The door frame stops the door at 0 (closed); it opens up to 170 degrees.
+        pb.changeDynamics(body, 0, lateralFriction=d.friction, jointDamping=d.damping,
+                          linearDamping=0.0, angularDamping=0.0, jointLowerLimit=0.0,
+                          jointUpperLimit=math.radians(170), physicsClientId=c)
+        pb.resetJointState(body, 0, d.open_angle, 0.0, physicsClientId=c)
+        pb.setJointMotorControl2(body, 0, pb.POSITION_CONTROL, targetPosition=d.open_angle,
+                                 force=d.hold_force, physicsClientId=c)
+        self.door_released = False
+        return body
+
+    # ------------------------------------------------------------- perception
+    def door_angle(self) -> float:
+        """Return the door's angle (rad, 0 = closed) from its joint sensor."""
+        return float(pb.getJointState(self.door_body, 0, physicsClientId=self.sim.client)[0])
+
+    def _frames(self) -> tuple:
+        from creative_py.sim.camera import capture_all
+
+        frames = tuple(capture_all(self.sim.client, self.world.cameras))
+        self.render_time_s += sum(f.render_time_s for f in frames)
+        if self.images_dir is not None:
+            self._save(frames)
+        return frames
+
+    def _save(self, frames) -> None:
+        import matplotlib.image
+
+        self.images_dir.mkdir(parents=True, exist_ok=True)
+        for f in frames:
+            matplotlib.image.imsave(self.images_dir / f"{self._shots:02d}_{f.name}.png", f.rgb)
+        self._shots += 1
+
+    def perceive_object(self, frames=None):
+        """Return the camera estimate of the episode's object (None if unseen) and the frames."""
+        from creative_py.perception import estimate_objects
+
+        frames = self._frames() if frames is None else frames
+        n = self.spec.name
+        support = {} if self.holding else {n: self.world.stage.top_z}
+        est = estimate_objects(frames, {n: self.body}, self.world.noise, self.rng,
+                               support_z=support, heights={n: self.spec.height})
+        return est.get(n), frames
+
+    def observe(self) -> Observation:
+        """Return the facts the robot perceives now (see the module docstring)."""
+        from creative_py.perception import facts_from_estimates
+
+        w, d = self.world, self.world.door
+        est, frames = self.perceive_object()
+        facts: list[Fact] = []
+        if est is not None:
+            facts += facts_from_estimates([est])
+        if self.holding:
+            facts.append(("held", self.spec.name))
+        facts += [("hinge", d.name, d.hinge[0], d.hinge[1]),
+                  ("door_width_m", d.name, d.width),
+                  ("door_closed_heading", d.name, d.closed_heading),
+                  ("door_angle", d.name, self.door_angle()),
+                  ("door_gap_m", d.name, d.bottom_gap)]
+        if self.goal_reached():
+            facts.append(("door_held", d.name))
+        for item in w.objects.values():
+            facts += catalogue_facts(item.spec)
+        return Observation(facts=tuple(facts), frames=frames, truth=self.truth())
+
+    def truth(self) -> dict[str, tuple[float, float, float, float]]:
+        """Return ground truth ``name -> (x, y, z, yaw)``: the centre of the object's box.
+
+        (x, y, z) is the block frame's point (0, 0, height / 2), comparable with the
+        perceived pose; yaw the heading of the block's +x axis.
+        """
+        pos, quat = frame_pose(self.sim, self.body)
+        centre = pb.multiplyTransforms(pos, quat, (0, 0, self.spec.height / 2), (0, 0, 0, 1))[0]
+        return {self.spec.name: tuple(float(v) for v in (*centre, yaw_of(quat)))}
+
+    def placed_pose(self) -> WedgePose:
+        """Return the object's true :class:`WedgePose` now (ground truth, for tests and reports)."""
+        x, y, _, yaw = self.truth()[self.spec.name]
+        return pose_from_place(self.world.door, self.door_angle(), self.spec.length, x, y, yaw)
+
+    # ------------------------------------------------------------------- skills
+    def _move(self, pos, yaw: float, speed: float | None = None) -> MoveResult:
+        return self.robot.move_to((tuple(pos), gripper_down(yaw)), speed=speed,
+                                  watch=[self.body])
+
+    def _grip_z(self, base_z: float) -> float:
+        """Return the gripper height that holds the object's base at ``base_z`` (m)."""
+        return base_z + self.spec.height + self.world.handling.grasp_clearance
+
+    def pick_up(self) -> SkillOutcome:
+        """Grip the object from above on the tray and lift it to the carrying height."""
+        if self.holding:
+            return SkillOutcome("ok", "already holding the object")
+        w, h = self.world, self.world.handling
+        x, y, _ = w.slot_pose(self.spec.name)
+        base, _ = frame_pose(self.sim, self.body)
+        yaw = h.place_gripper_yaw
+        carry_z = self._grip_z(w.stage.top_z + h.carry_height)
+        for target in ((x, y, carry_z), (x, y, self._grip_z(base[2]))):
+            res = self._move(target, yaw)
+            if not res.ok:
+                return SkillOutcome(res.status, f"pick_up: {res.reason}")
+        g = self.robot.gripper_pose()
+        obj = frame_pose(self.sim, self.body)
+        inv = pb.invertTransform(*g)
+        rel = pb.multiplyTransforms(inv[0], inv[1], obj[0], obj[1])
+        self.grasp = (tuple(rel[0]), tuple(rel[1]))
+        self.robot.grasp(self.body, self.grasp)
+        self.holding = True
+        res = self._move((x, y, carry_z), yaw)
+        if not res.ok:
+            return SkillOutcome(res.status, f"pick_up: {res.reason}")
+        return SkillOutcome("ok")
+
+    def _gripper_for(self, x: float, y: float, base_z: float, yaw: float) -> Pose:
+        """Return the gripper pose that puts the held object's frame at (x, y, base_z, yaw)."""
+        obj_q = pb.getQuaternionFromEuler((0, 0, yaw))
+        inv = pb.invertTransform(*self.grasp)
+        pos, quat = pb.multiplyTransforms((x, y, base_z), obj_q, inv[0], inv[1])
+        return tuple(pos), tuple(quat)
+
+    def position_tool(self, pose: WedgePose | tuple) -> SkillOutcome:
+        """Carry the held object and put it on the floor at ``pose`` relative to the door.
+
+        The door's angle comes from its joint sensor. The arm lowers the object until
+        its base is ``release_height`` above the floor, lets go, waits ``settle_time``
+        and retreats out of the door's sweep. Returns ``blocked`` if the object or the
+        arm hits something on the way, ``unreachable`` if the arm cannot follow.
+        """
+        pose = WedgePose(*(float(v) for v in pose))
+        if not all(math.isfinite(v) for v in pose):
+            raise ValueError(f"pose numbers must be finite, got {pose}")
+        if pose.r <= 0:
+            raise ValueError(f"wedge pose r must be positive metres, got {pose.r}")
+        if not self.holding:
+            return SkillOutcome("blocked", "position_tool: no object is held (pick_up first)")
+        w, h = self.world, self.world.handling
+        x, y, yaw = place_from_pose(w.door, self.door_angle(), self.spec.length, pose)
+        top = w.stage.top_z
+        above = self._gripper_for(x, y, top + h.carry_height, yaw)
+        down = self._gripper_for(x, y, top + h.release_height, yaw)
+        for target, speed in ((above, None), (down, h.speed / 2)):
+            res = self.robot.move_to(target, speed=speed, watch=[self.body])
+            if not res.ok:
+                return SkillOutcome(res.status, f"position_tool: {res.reason}")
+        self._use_physics(w.physics)
+        self.robot.release()
+        self.holding = False
+        self._run(h.settle_time)
+        why = self.sim.blow_up(self.body)
+        if why:
+            return SkillOutcome("invalid", f"position_tool: {why}")
+        self._use_physics(w.arm_physics)
+        g = self.robot.gripper_pose()[0]
+        lift = (g[0], g[1], g[2] + 0.08)
+        for target in (lift, h.retreat):
+            res = self._move(target, h.place_gripper_yaw)
+            if not res.ok:
+                return SkillOutcome(res.status, f"position_tool: retreat: {res.reason}")
+        return SkillOutcome("ok")
+
+    def act(self) -> SkillOutcome:
+        """Release the door: its closer pushes it shut for ``held.duration`` seconds.
+
+        Records a :class:`DoorOutcome` in ``door_outcome``. Returns ``blocked`` if a
+        robot link stands in the door's sweep, ``invalid`` on a physics blow-up.
+        """
+        if self.door_released:
+            return SkillOutcome("blocked", "release_door: the door was already released")
+        w, c = self.world, self.sim.client
+        crit, door, body = w.held, self.door_body, self.body
+        tau = self.variant.closing_torque
+        in_sweep = self._robot_in_sweep()
+        if in_sweep:
+            return SkillOutcome("blocked", f"release_door: the robot's {in_sweep} is in the "
+                                "door's sweep")
+        self._park_robot()
+        self._use_physics(w.physics)
+        self.door_released = True
+        pb.setJointMotorControl2(door, 0, pb.VELOCITY_CONTROL, force=0.0, physicsClientId=c)
+        n = int(round(crit.duration / w.physics.time_step))
+        contact = None
+        for i in range(n):
+            pb.setJointMotorControl2(door, 0, pb.TORQUE_CONTROL, force=-tau, physicsClientId=c)
+            self.sim.step()
+            if contact is None and any(
+                    cp[8] <= crit.contact_distance
+                    for cp in pb.getContactPoints(door, body, physicsClientId=c)):
+                contact = self.door_angle()
+            if i % 32 == 31:
+                why = self.sim.blow_up(body)
+                if why:
+                    return SkillOutcome("invalid", f"release_door: {why}")
+        final = self.door_angle()
+        if not math.isfinite(final):
+            return SkillOutcome("invalid", "release_door: the door's angle is not finite")
+        closed = None if contact is None else math.degrees(contact - final)
+        held = (contact is not None and closed < crit.max_close_deg
+                and math.degrees(final) >= crit.min_open_deg)
+        self.door_outcome = DoorOutcome(
+            touched=contact is not None,
+            contact_angle_deg=None if contact is None else math.degrees(contact),
+            final_angle_deg=math.degrees(final), closed_after_contact_deg=closed,
+            held=bool(held))
+        log.info("%s/%s: %s", self.spec.name, self.variant.name, self.door_outcome.describe())
+        return SkillOutcome("ok")
+
+    release_door = act
+
+    def _robot_in_sweep(self) -> str:
+        """Return the name of a robot link that the closing door would touch, or "".
+
+        The door is put at angles from its current one down to 0 (closed) and the
+        robot's links are tested against it (1 cm margin); the state is restored.
+        """
+        c, door, robot = self.sim.client, self.door_body, self.robot.body
+        a0 = self.door_angle()
+        with self.sim.saved():
+            for a in np.linspace(a0, 0.0, 9):
+                pb.resetJointState(door, 0, float(a), 0.0, physicsClientId=c)
+                pb.performCollisionDetection(physicsClientId=c)
+                near = pb.getClosestPoints(door, robot, 0.01, physicsClientId=c)
+                if near:
+                    link = near[0][4]
+                    return (pb.getJointInfo(robot, link, physicsClientId=c)[12].decode()
+                            if link >= 0 else "base")
+        return ""
+
+    def _park_robot(self) -> None:
+        """Take the idle robot out of the physics for the door's closing.
+
+        Called only after :meth:`_robot_in_sweep` found every link clear of the door's
+        sweep: the robot stands still outside it and nothing else it could touch moves,
+        so the door and the object move exactly as with the robot present, while each
+        physics step costs 0.03 ms instead of 0.7 ms (Baxter's 56 joints).
+        """
+        if self.robot_parked:
+            return
+        pb.removeBody(self.robot.body, physicsClientId=self.sim.client)
+        self.robot.close()
+        self.robot_parked = True
+
+    def goal_reached(self) -> bool:
+        """Return whether the door is held open (simulated state, after :meth:`act`)."""
+        return self.door_outcome is not None and self.door_outcome.held
+
+    def sim_time(self) -> float:
+        """Return the simulated time so far, seconds (across time-step changes)."""
+        return (self._time_before
+                + (self.sim.steps - self._steps_at_switch) * self.sim.physics.time_step)
+
+    @property
+    def steps(self) -> int:
+        """Return the physics steps taken so far."""
+        return self.sim.steps
+
+    def close(self) -> None:
+        """Release the simulator (idempotent)."""
+        robot = getattr(self, "robot", None)
+        if robot is not None and not self.robot_parked:
+            robot.close()
+        self.sim.close()
+
+
+def open_wedge_episode(world: WedgeWorld, variant: str, location: int, object_name: str,
+                       seed: int = 0, gui: bool = False,
+                       images_dir: Path | None = None) -> WedgeEpisode:
+    """Return a new :class:`WedgeEpisode` (close it when done)."""
+    return WedgeEpisode(world, variant, location, object_name, seed, gui, images_dir)
+
+
+def run_wedge_trial(world: WedgeWorld, object_name: str, variant: str | None = None,
+                    pose: WedgePose | tuple | None = None, seed: int = 0,
+                    images_dir: Path | None = None, gui: bool = False) -> TrialResult:
+    """Run one door-and-wedge trial through :func:`creative_py.sim.trial.run_trial`.
+
+    ``variant=None`` is the world's default variant, ``pose=None`` the demonstration's.
+    """
+    from creative_py.sim.trial import run_trial
+
+    return run_trial("wedge", world, object_name, variant or world.default_variant, 1,
+                     None if pose is None else WedgePose(*pose), seed, images_dir, gui)
+
+
+class WedgeDoorCase:
+    """The wedge case for :mod:`creative_py.sim.trial`."""
+
+    name = "wedge"
+    object_option = "object"
+
+    def load_world(self, world_dir: Path | None) -> WedgeWorld:
+        """Return the wedge world (see :func:`load_wedge_world`)."""
+        return load_wedge_world(world_dir)
+
+    def open_episode(self, world: WedgeWorld, variant: str, location: int, object_name: str,
+                     seed: int, gui: bool, images_dir: Path | None) -> WedgeEpisode:
+        """Return a new episode."""
+        return open_wedge_episode(world, variant, location, object_name, seed, gui, images_dir)
+
+    def default_pose(self, world: WedgeWorld) -> WedgePose:
+        """Return the demonstration's pose."""
+        return world.demonstration.pose
+
+    def parse_pose(self, text: str) -> WedgePose:
+        """Parse ``"R,GAP,YAW"`` (m, m, rad)."""
+        parts = [p.strip() for p in text.split(",")]
+        try:
+            values = [float(p) for p in parts]
+        except ValueError:
+            values = []
+        if len(values) != 3 or not all(math.isfinite(v) for v in values) or values[0] <= 0:
+            raise ValueError(f"--pose must be R,GAP,YAW (metres > 0, metres, radians), "
+                             f"got {text!r}")
+        return WedgePose(*values)
+
+    def listing(self, world: WedgeWorld) -> dict[str, Any]:
+        """Return objects (spec fields, set, slot), locations, variants and default pose."""
+        objects = {}
+        for n, item in world.objects.items():
+            d = asdict(item.spec)
+            d.update(set=item.set, slot=list(item.slot), friction=item.friction)
+            objects[n] = d
+        return {
+            "case": self.name,
+            "objects": objects,
+            "locations": [{"index": 1, "door": world.door.name,
+                           "open_angle": world.door.open_angle}],
+            "variants": {k: asdict(v) for k, v in world.variants.items()},
+            "default_variant": world.default_variant,
+            "default_pose": dict(world.demonstration.pose._asdict()),
+            "demonstration": {"object": world.demonstration.object,
+                              "variant": world.demonstration.variant},
+        }
