@@ -76,7 +76,7 @@ WEDGE_PROPERTIES: dict[str, tuple[str, ...]] = {
 """Wedge-case spec properties and their values."""
 
 CLASS_LITERALS = {"hook": ("tool", "hook_like"), "stick": ("tool", "hook_like"),
-                  "block": ("object", "block")}
+                  "block": ("object",)}
 """Class literals every tool of a kind carries, besides ``hook``/``stick``/``block`` itself."""
 
 CONTEXT_FACTS: dict[str, int] = {
