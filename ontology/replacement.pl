@@ -9,18 +9,22 @@
     wedge experiment (a medium wedge is replaced by a short one first, then a long one).
 */
 
-replacement_operator(any_kind).
+%   The order of the operators is the order in which tool creation
+%   (prolog/creation.pl) tries properties: sizes first, because a task that grows (a
+%   longer tube, a stronger door closer) changes which sizes suffice, then side, angle,
+%   shape and kind.
 replacement_operator(any_length).
-replacement_operator(any_width).
 replacement_operator(any_hook_length).
+replacement_operator(any_width).
 replacement_operator(any_hook_width).
+replacement_operator(any_block_length).
+replacement_operator(any_block_height).
+replacement_operator(any_block_width).
+replacement_operator(any_advantage).
 replacement_operator(any_side).
 replacement_operator(any_angle).
 replacement_operator(any_shape).
-replacement_operator(any_block_length).
-replacement_operator(any_block_width).
-replacement_operator(any_block_height).
-replacement_operator(any_advantage).
+replacement_operator(any_kind).
 
 any_kind(X) :- hook(X).
 any_kind(X) :- stick(X).

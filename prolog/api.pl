@@ -22,8 +22,10 @@ name, a new one is named '_G0', '_G1', ... (skipping names the request uses), so
 clauses with variables travel back and forth with stable names. The reply is written
 as JSON for the Python decoder (creative_py/bridge/codec.py describes the schema):
 atoms as JSON strings, proper lists as arrays, numbers as numbers, strings as
-{"s":Text}, variables as {"v":Name}, compounds as {"f":Name,"a":Args}, blobs as
-{"b":Text}.
+{"s":Text}, variables as {"v":Name}, compounds as {"f":Name,"a":Args}, right-nested chains of one binary functor (clause
+bodies) flat as {"r":Name,"a":Items}, blobs and dicts
+(e.g. the stack_overflow{...} context of a resource error) as {"b":Text}, their
+printed form.
 
 To add an operation, add ONE row to api_op/3 (request term, result term, goal) and,
 if it needs a new module, its use_module/1 below.
@@ -49,8 +51,12 @@ if it needs a new module, its use_module/1 below.
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4]).
 :- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
-                           plan_experiment/4, label_trial/7]).
+                           plan_experiment/4, plan_use/5, label_trial/7]).
 :- use_module(creation, [next_tool/6, creation_candidates/3]).
+:- use_module(model_file, [write_model_file/4, load_model_file/1]).
+:- use_module(planner, [plan/5]).
+:- use_module(action_model, [innate_action_models/2]).
+:- use_module(pddl, [pddl_write_files/6]).
 
 %!  api_op(?Request, -Result, -Goal) is nondet.
 %
@@ -107,10 +113,18 @@ api_op(solve_size(Kind, Literals, Context), R, solve_size(Kind, Literals, Contex
 api_op(learn_from_demonstration(Case, Steps), R, learn_from_demonstration(Case, Steps, R)).
 api_op(observed_state(Case, Facts), S, observed_state(Case, Facts, S)).
 api_op(next_experiment(Case, VS, Facts), R, plan_experiment(Case, VS, Facts, R)).
+api_op(plan_use(Case, VS, Facts, Options), R, plan_use(Case, VS, Facts, Options, R)).
 api_op(label_trial(Case, VS0, Experiment, Facts, Label, Mode), VS,
        label_trial(Case, VS0, Experiment, Facts, Label, Mode, VS)).
 api_op(next_tool(Case, VS, Tried, Context), R, next_tool(Case, VS, Tried, Context, [], R)).
 api_op(creation_candidates(VS), Cs, creation_candidates(VS, [], Cs)).
+api_op(write_model_file(File, Case, Models, VS), true,
+       write_model_file(File, Case, Models, VS)).
+api_op(load_model_file(File), true, load_model_file(File)).
+api_op(plan(State, Goal, Models, Options), R, plan(State, Goal, Models, Options, R)).
+api_op(innate_action_models(Case), Ms, innate_action_models(Case, Ms)).
+api_op(pddl_write_files(Dom, Prob, Models, State, Goal, Options), true,
+       pddl_write_files(Dom, Prob, Models, State, Goal, Options)).
 
 %!  api_operation(?NameArity) is nondet.
 %
@@ -252,7 +266,7 @@ api_write_json_(T) :-
     ->  api_write_json_float_(T)
     ;   rational(T, Num, Den)
     ->  api_write_json_(rdiv(Num, Den))
-    ;   blob(T, _)
+    ;   ( blob(T, _) ; is_dict(T) )
     ->  format(string(Text), "~q", [T]),
         write('{"b":'),
         api_write_json_text_(Text),
@@ -268,12 +282,36 @@ api_write_json_(T) :-
         write('{"v":'),
         api_write_json_text_(Name),
         write('}')
+    ;   compound_name_arity(T, Name, 2),
+        arg(2, T, Right),
+        compound(Right),
+        compound_name_arity(Right, Name, 2)
+    ->  api_binary_chain_(T, Name, Items),
+        write('{"r":'),
+        api_write_json_text_(Name),
+        write(',"a":['),
+        api_write_json_items_(Items),
+        write(']}')
     ;   compound_name_arguments(T, Name, Args),
         write('{"f":'),
         api_write_json_text_(Name),
         write(',"a":['),
         api_write_json_items_(Args),
         write(']}')
+    ).
+
+%   api_binary_chain_(+Term, +Name, -Items) is det.
+%
+%   Items are the links of the right-nested chain Name(I1, Name(I2, ... In)): a long
+%   clause body travels as one flat JSON array instead of a deep nest.
+
+api_binary_chain_(T, Name, [Left|Items]) :-
+    arg(1, T, Left),
+    arg(2, T, Right),
+    (   compound(Right),
+        compound_name_arity(Right, Name, 2)
+    ->  api_binary_chain_(Right, Name, Items)
+    ;   Items = [Right]
     ).
 
 %   api_variable_name_(+Name) is semidet.

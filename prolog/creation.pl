@@ -17,11 +17,13 @@ Order of the candidates (creation_candidates/3):
 
   1. Properties whose literal is in h_g come first: the physics showed them necessary,
      so a different value of them is the change most likely to matter. Then the other
-     structural literals of h_s, in clause order.
-  2. Within a property, alternatives that a stored negative example refuted (a negative
+     structural literals of h_s.
+  2. Among those, properties in the order the ontology lists its replacement operators
+     (ontology/replacement.pl: sizes first, then side, angle, shape and kind).
+  3. Within a property, alternatives that a stored negative example refuted (a negative
      example whose only violated literal of h_s is this property and which had that
      alternative value, e.g. the short-handled hook that failed during tool-use
-     learning) come last; otherwise the ontology's order. This is where we depart from
+     learning) come after the others, which keep the ontology's order. This is where we depart from
      the paper, which tried the short wedge before the long one: the failure already
      told us which way to go.
 */
@@ -35,6 +37,7 @@ Order of the candidates (creation_candidates/3):
 :- use_module(replacement).
 :- use_module(geometry_clp).
 :- use_module(experiment).
+:- use_module(knowledge, [kb_clause/2]).
 
 %!  creation_candidates(+VS, +Options, -Candidates) is det.
 %
@@ -54,6 +57,7 @@ creation_candidates(VS, Options, Candidates) :-
             ( nth1(I, Struct, L),
               \+ ( member(X, Excluded), X =@= L ),
               replacement(L, General, Alts),
+              operator_rank_(General, Rank),
               (   memberchk_variant_(L, HGStruct)
               ->  Nec = 0
               ;   Nec = 1
@@ -63,12 +67,22 @@ creation_candidates(VS, Options, Candidates) :-
               ->  Ref = 1
               ;   Ref = 0
               ),
-              Key = k(Nec, I, Ref, J),
+              Key = k(Nec, Rank, Ref, I, J),
               replace_eq_(Struct, L, Alt, NewStruct)
             ),
             Keyed),
     keysort(Keyed, Sorted),
     pairs_values(Sorted, Candidates).
+
+%   The position of a replacement operator in the ontology: properties are tried in
+%   the order the ontology lists its operators.
+operator_rank_(General, Rank) :-
+    functor(General, Op, _),
+    findall(O, kb_clause(replacement_operator(O), true), Ops),
+    (   nth1(Rank, Ops, Op)
+    ->  true
+    ;   Rank = 0
+    ).
 
 memberchk_variant_(X, [Y|Ys]) :-
     (   X =@= Y

@@ -2,6 +2,7 @@
           [ learn_from_demonstration/3, % +Case, +Steps, -Result
             observed_state/3,      % +Case, +Primitive, -State
             plan_experiment/4,     % +Case, +VS, +Primitive, -Result
+            plan_use/5,            % +Case, +VS, +Primitive, +Options, -Result
             label_trial/7,         % +Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS
             task_objects/3,        % +Case, +State, -Objects
             next_experiment/6,     % +Case, +VS, +Objects, +Context, +Options, -Result
@@ -37,6 +38,7 @@ Roles of literals (literal_role/3), relative to the head tool_pose(Tool, Target,
 :- use_module(library(pairs)).
 :- use_module(library(error)).
 :- use_module(library(option)).
+:- use_module(library(yall)).
 :- use_module(version_space).
 :- use_module(lgg, []).
 :- use_module(geometry_clp).
@@ -140,6 +142,32 @@ plan_experiment(Case, VS, Primitive, Result) :-
     observed_state(Case, Primitive, State),
     task_objects(Case, State, Objects),
     next_experiment(Case, VS, Objects, Primitive, [target(Target), context(Ctx)], Result).
+
+%!  plan_use(+Case, +VS, +Primitive, +Options, -Result) is det.
+%
+%   Use the learned model without testing anything: the object that h_g covers and that
+%   violates the fewest literals of h_s, at a pose satisfying every spatial literal of
+%   h_s. Option tool(T) forces the object (a newly created tool, whose catalogue facts
+%   must be among Primitive). Result as the exploit/4 and no_experiment/1 results of
+%   next_experiment/6.
+
+plan_use(Case, VS, Primitive, Options, Result) :-
+    vs_examples(VS, [(tool_pose(_, Target, Ctx) :- _)|_], _),
+    observed_state(Case, Primitive, State),
+    task_objects(Case, State, Objects0),
+    (   option(tool(T), Options)
+    ->  include([object(O, _)]>>(O == T), Objects0, Objects),
+        (   Objects == []
+        ->  existence_error(object, T)
+        ;   true
+        )
+    ;   Objects = Objects0
+    ),
+    vs_bounds(VS, HS, HG),
+    clause_head_body_(HS, Head, _),
+    Head =.. [_, _, Target, Ctx],
+    hypothesis_parts(HS, _, Spatial, Task),
+    exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Primitive, Result).
 
 %!  label_trial(+Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS) is det.
 %

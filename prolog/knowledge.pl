@@ -8,6 +8,9 @@
             kb_assert_facts/1,        % +Facts
             kb_retract_facts/1,       % +Pattern
             kb_loaded_files/1,        % -Files
+            kb_assert_learned/1,      % +Term
+            learned_model/4,          % ?Task, ?Action, ?Pre, ?Eff
+            learned_hypothesis/3,     % ?Task, ?Bound, ?Clause
             kb_reset/0,
             kb_reset_all/0
           ]).
@@ -46,6 +49,8 @@ that callers keep their state in arguments.
 :- dynamic loaded_file_/1.
 %   world_fact_(Ref): Ref is a world fact asserted by kb_assert_facts/1.
 :- dynamic world_fact_/1.
+:- dynamic learned_model_/4.
+:- dynamic learned_hypothesis_/3.
 
 :- initialization(init_kb_module_).
 
@@ -418,7 +423,55 @@ kb_retract_facts(Pattern) :-
 %   true.
 %   ==
 kb_reset :-
-    forall(retract(world_fact_(Ref)), erase(Ref)).
+    forall(retract(world_fact_(Ref)), erase(Ref)),
+    retractall(learned_model_(_, _, _, _)),
+    retractall(learned_hypothesis_(_, _, _)).
+
+%!  kb_assert_learned(+Term) is det.
+%
+%   Add what a run learned: Term is learned_model(Task, Action, Pre, Eff) or
+%   learned_hypothesis(Task, Bound, Clause) (Bound is hs or hg), as written in a run's
+%   model.pl (model_file:load_model_file/1 reads it). Raises a domain_error for any
+%   other term. Removed by kb_reset/0.
+%
+%   ==
+%   ?- kb_assert_learned(learned_model(hook, pull_out(T, C, X), [hook(T)], [])),
+%      learned_model(hook, A, P, _).
+%   A = pull_out(_, _, _), P = [hook(_)].
+%   ==
+kb_assert_learned(Term) :-
+    (   Term = learned_model(Task, Action, Pre, Eff)
+    ->  must_be(atom, Task),
+        must_be(callable, Action),
+        must_be(list, Pre),
+        must_be(list, Eff),
+        assertz(learned_model_(Task, Action, Pre, Eff))
+    ;   Term = learned_hypothesis(Task, Bound, Clause)
+    ->  must_be(atom, Task),
+        must_be(oneof([hs, hg]), Bound),
+        assertz(learned_hypothesis_(Task, Bound, Clause))
+    ;   domain_error(learned_term, Term)
+    ).
+
+%!  learned_model(?Task, ?Action, ?Pre, ?Eff) is nondet.
+%
+%   A learned action model: Task (hook, wedge), the action term with its parameters,
+%   its precondition (the learned h_g, plus the skill's own preconditions) and effects
+%   (add(L) and del(L) terms). Empty until a run's model.pl is loaded.
+%
+%   ==
+%   ?- load_model_file('runs/hook-.../model.pl'), learned_model(hook, A, Pre, _).
+%   A = pull_out(_A, _B, _C), Pre = [holding(_A), hook(_A), ...].
+%   ==
+learned_model(Task, Action, Pre, Eff) :-
+    learned_model_(Task, Action, Pre, Eff).
+
+%!  learned_hypothesis(?Task, ?Bound, ?Clause) is nondet.
+%
+%   The final version-space boundaries of a run: Bound hs (most specific) or hg (most
+%   general), Clause a tool_pose(Tool, Target, Context) :- Body clause.
+learned_hypothesis(Task, Bound, Clause) :-
+    learned_hypothesis_(Task, Bound, Clause).
 
 %!  kb_reset_all is det.
 %

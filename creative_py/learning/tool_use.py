@@ -117,6 +117,99 @@ def term_text(t: Term) -> str:
 
 
 # --------------------------------------------------------------------------------------
+# The demonstration and the task's facts, from the simulator
+# --------------------------------------------------------------------------------------
+
+CASE_ROLES = {"hook": ("cube1", "tube1"), "wedge": ("door1", "floor1")}
+"""The target and the context object of each case (the head's 2nd and 3rd arguments)."""
+
+
+@dataclass(frozen=True)
+class DemoStep:
+    """One skill of the trainer's demonstration with the facts seen before and after."""
+
+    skill: str
+    args: tuple[str, ...]
+    facts_before: tuple[tuple, ...]
+    facts_after: tuple[tuple, ...]
+    outcome: str
+
+
+@dataclass(frozen=True)
+class Demonstration:
+    """The trainer's demonstration as run in the simulator."""
+
+    tool: str
+    variant: str
+    location: int
+    pose: Any
+    steps: tuple[DemoStep, ...]
+    goal_reached: bool
+
+
+def run_demonstration(case: str, world: Any, variant: Optional[str] = None, seed: int = 0,
+                      images_dir: Optional[Path] = None) -> Demonstration:
+    """Run the trainer's scripted demonstration and observe after every skill.
+
+    The skills and the pose come from the world's ``demonstration.toml``. Each step's
+    facts are what the robot perceives (cameras) and feels (arm proprioception).
+    """
+    from creative_py.sim.trial import get_case, list_case, open_episode
+
+    info = list_case(case, world)["demonstration"]
+    variant = variant or info["variant"]
+    tool, location = info["tool"], int(info["location"])
+    pose = get_case(case).default_pose(world)
+    target, ctx = CASE_ROLES[case]
+    steps: list[DemoStep] = []
+    with open_episode(case, world, variant, location, tool, seed=seed,
+                      images_dir=images_dir) as ep:
+        before = tuple(ep.observe().facts)
+        for skill in info["steps"]:
+            if skill == "pick_up":
+                res, args = ep.pick_up(), (tool,)
+            elif skill in ("position_tool", "place"):
+                res = ep.position_tool(pose)
+                args = (tool, target, ctx)
+            elif skill == "pull":
+                res, args = ep.act(), (tool, target, ctx)
+            elif skill == "release_door":
+                res, args = ep.act(), (target,)
+            else:
+                raise ValueError(f"{case} demonstration: unknown skill {skill!r}")
+            after = tuple(ep.observe().facts)
+            steps.append(DemoStep(skill, args, before, after, res.status))
+            if res.status != "ok":
+                raise RuntimeError(f"{case} demonstration: skill {skill} ended "
+                                   f"{res.status}: {res.reason}")
+            before = after
+        reached = ep.goal_reached()
+    if not reached:
+        raise RuntimeError(f"{case} demonstration with {tool} at location {location} did "
+                           "not reach the goal in the physics: nothing to learn from")
+    return Demonstration(tool, variant, location, pose, tuple(steps), reached)
+
+
+_TASK_FACTS: dict[tuple, list[tuple]] = {}
+
+
+def task_facts(case: str, world: Any, variant: str, location: int) -> list[tuple]:
+    """Return what the robot perceives of a task before acting: the catalogue of
+    available objects, the apparatus (tube or door) and the target's pose.
+
+    The scene is built and observed once per (world, variant, location); nothing moves.
+    """
+    from creative_py.sim.trial import list_case, open_episode
+
+    key = (case, id(world), variant, int(location))
+    if key not in _TASK_FACTS:
+        tool = list_case(case, world)["demonstration"]["tool"]
+        with open_episode(case, world, variant, int(location), tool, seed=0) as ep:
+            _TASK_FACTS[key] = list(ep.observe().facts)
+    return _TASK_FACTS[key]
+
+
+# --------------------------------------------------------------------------------------
 # Executing one trial in the physics
 # --------------------------------------------------------------------------------------
 
@@ -228,8 +321,6 @@ class ToolUseLearner:
         Returns the Prolog ``models(Matched, New, Example)`` term's parts: the new
         models, the example clause for the version space and the demonstrated tool.
         """
-        from creative_py.sim.trial import run_demonstration
-
         images = self.run.snapshot_dir("demo", 0) if self.run else None
         demo = run_demonstration(self.case, self.world, variant=variant,
                                  seed=self.options.seed, images_dir=images)
@@ -291,12 +382,19 @@ class ToolUseLearner:
         from creative_py.sim.trial import list_case
 
         info = list_case(self.case, self.world)
-        locs = tuple(int(x) for x in info["locations"])
+        locs = tuple(int(x["index"]) if isinstance(x, dict) else int(x)
+                     for x in info["locations"])
         return locs[0], locs
 
     def _run_experiment(self, n: int, phase: str, phase_trial: int, exp: Term, vs: Term,
-                        task: TaskState, decision: float) -> tuple[TrialRecord, Term]:
-        """Execute a planned experiment, label it and update the version space."""
+                        task: TaskState, decision: float, label: bool = True,
+                        label_failures: bool = True) -> tuple[TrialRecord, Term]:
+        """Execute a planned experiment, label it and update the version space.
+
+        ``label=False`` leaves the version space unchanged (evaluation trials);
+        ``label_failures=False`` learns from successes only (a created tool that fails
+        is Marvin's search state, not evidence about the learned model).
+        """
         kind = exp.name if isinstance(exp, Compound) else str(exp)
         if kind == "no_experiment":
             raise RuntimeError(f"{self.case}: no experiment is possible: {exp.args[0]}")
@@ -311,11 +409,13 @@ class ToolUseLearner:
         ex = execute_trial(self.case, self.world, tool, task.variant, task.location,
                            _pose_from_term(self.case, pose), seed, images)
         td = time.perf_counter()
-        label = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
-        if label is not None:
+        lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
+        if lab == "neg" and not label_failures:
+            lab = None
+        if lab is not None and label:
             facts = [fact_term(f) for f in ex.facts_before]
             planned = ex.outcome == "blocked"
-            vs = self.engine.call("label_trial", self.case, vs, exp, facts, label,
+            vs = self.engine.call("label_trial", self.case, vs, exp, facts, lab,
                                   "planned" if planned else "observed")
         hs, hg = self._bounds(vs)
         decision += time.perf_counter() - td
@@ -347,9 +447,10 @@ def _model_names(models: Term) -> str:
 
 def _pose_from_term(case: str, pose: Term) -> Any:
     """Return the sim's pose object for a ground pose term of the constraint solver."""
-    from creative_py.sim.trial import pose_from_numbers
+    from creative_py.sim.trial import get_case
 
-    return pose_from_numbers(case, [float(a) for a in pose.args])
+    text = ",".join(repr(float(a)) for a in pose.args)
+    return get_case(case).parse_pose(text)
 
 
 def _pose_dict(pose: Term) -> dict[str, float]:
