@@ -14,6 +14,8 @@ integer, float           number (``NaN``, ``Infinity``, ``-Infinity`` for the sp
 string ``"s"``           ``{"s": "s"}``
 variable                 ``{"v": "Name"}``
 compound ``f(a)``        ``{"f": "f", "a": ["a"]}``
+chain ``n(a, n(b, c))``  ``{"r": "n", "a": ["a", "b", "c"]}`` (a right-nested binary
+                         chain, e.g. a clause body, sent flat; decoded back to nesting)
 blob (stream, clause)    ``{"b": "<stream>(0x...)"}`` (decoded as an atom: its text)
 =======================  =========================================
 
@@ -146,15 +148,8 @@ def _encode(value: Any, operators: bool, max_priority: int, path: tuple = (),
             return "(" + text + ")"
         return text
     if isinstance(value, Compound):
-        if operators and len(value.args) == 2 and value.name in _INFIX:
-            priority, kind = _INFIX[value.name]
-            left_max = priority - 1
-            right_max = priority if kind == "xfy" else priority - 1
-            left = _encode(value.args[0], operators, left_max, (value, 0), True)
-            right = _encode(value.args[1], operators, right_max, (value, 1), True)
-            sep = ", " if value.name == "," else f" {value.name} "
-            text = left + sep + right
-            return "(" + text + ")" if priority > max_priority else text
+        if len(value.args) == 2:
+            return _encode_binary(value, operators, max_priority, operand)
         args = ",".join([
             _encode(arg, operators, _ARG_PRIORITY, (value, i))
             for i, arg in enumerate(value.args)
@@ -185,9 +180,52 @@ def _encode(value: Any, operators: bool, max_priority: int, path: tuple = (),
     )
 
 
+def _chain(value: Compound) -> list:
+    """Return the links of a right-nested chain ``n(a, n(b, n(c, d)))`` as [a, b, c, d].
+
+    A long clause body is such a chain; walking it in a loop keeps deep bodies clear
+    of Python's recursion limit.
+    """
+    name = value.name
+    items = []
+    while isinstance(value, Compound) and value.name == name and len(value.args) == 2:
+        items.append(value.args[0])
+        value = value.args[1]
+    items.append(value)
+    return items
+
+
+def _encode_binary(value: Compound, operators: bool, max_priority: int, operand: bool) -> str:
+    items = _chain(value)
+    links = len(items) - 1
+    if operators and value.name in _INFIX:
+        priority, kind = _INFIX[value.name]
+        if kind != "xfy":
+            items, links = [value.args[0], value.args[1]], 1
+        left_max = priority - 1
+        right_max = priority if kind == "xfy" else priority - 1
+        sep = ", " if value.name == "," else f" {value.name} "
+        parts = [_encode(item, operators, left_max, (value, 0), True) for item in items[:-1]]
+        parts.append(_encode(items[-1], operators, right_max, (value, 1), True))
+        text = sep.join(parts)
+        return "(" + text + ")" if priority > max_priority else text
+    functor = _atom(value.name) + "("
+    parts = [functor + _encode(item, operators, _ARG_PRIORITY, (value, 0)) + ","
+             for item in items[:-1]]
+    parts.append(_encode(items[-1], operators, _ARG_PRIORITY, (value, 1)))
+    parts.append(")" * links)
+    return "".join(parts)
+
+
 def _object_hook(obj: dict) -> Term:
     if "f" in obj:
         return Compound(obj["f"], tuple(obj["a"]))
+    if "r" in obj:
+        name, items = obj["r"], obj["a"]
+        result = items[-1]
+        for item in reversed(items[:-1]):
+            result = Compound(name, (item, result))
+        return result
     if "s" in obj:
         return PlString(obj["s"])
     if "v" in obj:

@@ -21,6 +21,8 @@ from creative_py.bridge import (
     Var,
     WrongThreadError,
     clause,
+    clause_parts,
+    encode,
     decode,
 )
 
@@ -265,3 +267,14 @@ def test_learning_operations_answer_through_the_bridge(engine: Engine) -> None:
     assert not engine.clause_covers(
         reduced, clause(Compound("p", ("n1",)), [Compound("a", ("n1",)), Compound("c", ("n1",))]))
     assert engine.clause_violations(Compound("p", (X,)), Compound("q", ("a",))) is None
+
+
+def test_a_clause_with_thousands_of_literals_crosses_without_recursion_errors(
+        engine: Engine) -> None:
+    body = [Compound("q", (i, X)) for i in range(5000)]
+    c = clause(Compound("p", (X,)), body)
+    back = engine.call("echo", c)
+    head, literals = clause_parts(back)
+    assert head == Compound("p", (X,)) and literals == body
+    assert clause_parts(engine.parse(encode(c, operators=True))) == (Compound("p", (X,)), body)
+    assert engine.theta_subsumes(Compound("p", (Y,)), c)

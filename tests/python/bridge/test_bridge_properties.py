@@ -5,13 +5,12 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from hypothesis import HealthCheck, given, settings
+from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from creative_py.bridge import FAILED, Compound, Engine, PlString, Var, clause, encode
 
-SETTINGS = settings(max_examples=200, deadline=None,
-                    suppress_health_check=[HealthCheck.function_scoped_fixture])
+SETTINGS = settings(max_examples=200, deadline=None)
 
 # ----------------------------------------------------------------- strict equality
 

@@ -70,6 +70,9 @@ def test_importing_the_bridge_starts_no_prolog() -> None:
         (Compound("f", ()), "f()"),
         (Compound("f", ("a", [1, X], PlString("s"))), 'f(a,[1,X],"s")'),
         (Compound(":-", ("h", Compound(",", ("a", "b")))), "':-'(h,','(a,b))"),
+        (Compound("f", (1, Compound("f", (2, Compound("f", (3, 4)))))), "f(1,f(2,f(3,4)))"),
+        (Compound("f", (1, Compound("f", (2, Compound("g", (3, 4)))))), "f(1,f(2,g(3,4)))"),
+        (Compound("f", (Compound("f", (1, 2)), 3)), "f(f(1,2),3)"),
     ],
 )
 def test_encode_writes_canonical_prolog_text(value, text) -> None:
@@ -83,6 +86,9 @@ def test_pretty_text_writes_clause_operators_with_needed_parentheses() -> None:
     nested = Compound("f", (Compound(",", ("a", "b")),))
     assert str(nested) == "f((a, b))"
     assert str(Compound(",", (Compound(",", ("a", "b")), "c"))) == "(a, b), c"
+    chain = Compound(":-", (Compound(":-", ("a", "b")), "c"))
+    assert str(chain) == "(a :- b) :- c"
+    assert str(Compound(":-", ("a", Compound(":-", ("b", "c"))))) == "a :- (b :- c)"
 
 
 @pytest.mark.parametrize("bad", [math.nan, math.inf, -math.inf, np.float64("nan")])
@@ -145,14 +151,15 @@ def test_clause_helpers_round_trip_bodies() -> None:
 def test_decode_reads_every_kind_of_reply_value() -> None:
     text = (
         '{"f":"ok","a":[["a",1,-2.5,NaN,Infinity,{"s":"x"},{"v":"_G0"},'
-        '{"f":"g","a":[]},{"b":"<stream>(0x1)"}]]}'
+        '{"f":"g","a":[]},{"b":"<stream>(0x1)"},{"r":",","a":["x","y","z"]}]]}'
     )
     reply = decode(text)
     assert reply.name == "ok"
     items = reply.args[0]
     assert items[:3] == ["a", 1, -2.5]
     assert math.isnan(items[3]) and items[4] == math.inf
-    assert items[5:] == [PlString("x"), Var("_G0"), Compound("g", ()), "<stream>(0x1)"]
+    assert items[5:] == [PlString("x"), Var("_G0"), Compound("g", ()), "<stream>(0x1)",
+                         Compound(",", ("x", Compound(",", ("y", "z"))))]
 
 
 @pytest.mark.parametrize("bad", ['{"f":"ok"', '{"zz": 1}', '{"v": "lower"}'])
