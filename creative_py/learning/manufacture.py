@@ -38,7 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Sequence
 
-from creative_py.bridge import Compound, Engine, PlString, PrologError, Term, Var
+from creative_py.bridge import Compound, Engine, PrologError, Term, Var
 from creative_py.mesh.export import ToolFiles, write_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict
