@@ -1,13 +1,13 @@
 """Measure perception error and render time; record them in bench/results/perception.json.
 
 Hook: every variant and cube location of ``worlds/hook_tube``, built by the world's own
-loader (:mod:`creative_py.sim.hook_tube`), seen by its downward camera. Wedge: the stage
-and the two cameras of ``worlds/wedge_door/scene.toml`` with each object of its
-``objects.toml`` at random placements (the door left out). Each view is estimated
+loader (:mod:`creative_py.sim.hook_tube`), seen by its downward camera. Wedge: every object
+of ``worlds/wedge_door`` in an episode of that world (:mod:`creative_py.sim.wedge_door`),
+put at door-relative placements and seen by its downward and side cameras. Each view is estimated
 without noise and with the world's ``[perception]`` depth noise over several seeds.
 Ground truth comes from pybullet and is used only here, to measure the error.
 
-    .venv/bin/python bench/perception_error.py [--seeds 5] [--placements 5] [--out ...]
+    .venv/bin/python bench/perception_error.py [--seeds 5] [--out bench/results/perception.json]
 """
 
 from __future__ import annotations
@@ -19,43 +19,25 @@ import math
 import platform
 import statistics
 import time
-import tomllib
 from pathlib import Path
 
 import numpy as np
 import pybullet as pb
 
-from creative_py.mesh.spec import BlockSpec, Box, spec_from_dict
-from creative_py.perception import NoiseModel, estimate_objects
-from creative_py.sim.bodies import Surface, frame_pose, set_frame_pose, spawn_parts, spawn_spec, yaw_of
-from creative_py.sim.camera import CameraSpec, cameras_from_tables, capture
-from creative_py.sim.core import Sim
-from creative_py.world import PhysicsSettings
+from creative_py.mesh.spec import BlockSpec
+from creative_py.perception import estimate_objects
+from creative_py.sim.bodies import frame_pose, set_frame_pose
+from creative_py.sim.camera import CameraSpec, capture
 
 ROOT = Path(__file__).resolve().parents[1]
 log = logging.getLogger("bench.perception")
 
-CUBE = BlockSpec("cube1", "box", 0.03, 0.03, 0.03, mass=0.05)
-WEDGE_OBJECTS = [
-    BlockSpec("wedge_a1", "triangular_prism", 0.15, 0.05, 0.03),
-    BlockSpec("wedge_a2", "triangular_prism", 0.10, 0.05, 0.03),
-    BlockSpec("wedge_a3", "triangular_prism", 0.06, 0.05, 0.03),
-    BlockSpec("wedge_b1", "triangular_prism", 0.04, 0.06, 0.03),
-    BlockSpec("box_a1", "box", 0.08, 0.05, 0.03),
-    BlockSpec("cylinder_b1", "cylinder", 0.06, 0.06, 0.04),
-]
 SYMMETRY_PERIOD = {"none": 2 * math.pi, "pi": math.pi, "half_pi": math.pi / 2, "round": None}
 
 
 def angle_diff(a: float, b: float, period: float) -> float:
     """Return a - b wrapped into (-period/2, period/2], radians."""
     return (a - b + period / 2) % period - period / 2
-
-
-def truth_of(sim: Sim, body: int, spec: BlockSpec) -> tuple[float, float, float, float]:
-    """Return the true box centre (x, y, z) and heading of an upright block, world frame."""
-    (x, y, z), quat = frame_pose(sim, body)
-    return x, y, z + spec.height / 2, yaw_of(quat)
 
 
 def errors(est, truth, spec: BlockSpec) -> dict:
@@ -134,67 +116,62 @@ def run_hook(seeds: int) -> dict:
             "rows": rows}
 
 
-def wedge_objects() -> list[BlockSpec]:
-    """Return the block specs of ``worlds/wedge_door/objects.toml``."""
-    path = ROOT / "worlds/wedge_door/objects.toml"
-    specs = []
-    for table in tomllib.loads(path.read_text())["object"]:
-        table = {k: v for k, v in table.items() if k not in ("set", "slot", "friction")}
-        specs.append(spec_from_dict(table, source=str(path)))
-    return specs
+WEDGE_POSES = [(0.55, 0.02, 0.0), (0.45, 0.05, 0.25), (0.65, 0.10, -0.25), (0.35, 0.0, 0.0),
+               (0.60, 0.30, 0.1), (0.50, 0.05, math.pi), (0.40, 0.15, -0.3)]
+"""Door-relative placements (r m, gap m, yaw rad) like those the experiments ask for."""
 
 
-def run_wedge(seeds: int, placements: int) -> dict:
-    """Measure block errors at random placements in the wedge zone of the door world.
+def run_wedge(seeds: int) -> dict:
+    """Measure object errors at door-relative placements in the wedge world's episodes.
 
-    The stage (the floor the door stands on) and the two cameras come from
-    ``worlds/wedge_door/scene.toml`` and the objects from its ``objects.toml``; the door
-    itself is left out (it would only hide objects behind it). Each object is placed at
-    random in a 0.4 m square around the downward camera's target with a random heading.
+    Each object of ``worlds/wedge_door`` gets its own episode (stage, door held open,
+    Baxter parked at its retreat pose) built by the world's loader; the object is put on
+    the stage at each of :data:`WEDGE_POSES` (converted with the world's own
+    ``place_from_pose``) and seen by both cameras, by the downward camera alone, and with
+    the world's depth noise. The estimate is called as the episode calls it (support at
+    the stage top, known height).
     """
-    path = ROOT / "worlds/wedge_door/scene.toml"
-    scene = tomllib.loads(path.read_text())
-    cameras = list(cameras_from_tables(scene["camera"], str(path)))
-    noise = NoiseModel.from_dict(scene.get("perception", {}), str(path))
-    stage = scene["stage"]
-    floor_z = stage["top_z"]
+    from creative_py.sim.wedge_door import WedgePose, load_wedge_world, open_wedge_episode, place_from_pose
+
+    world = load_wedge_world()
+    top_z = world.stage.top_z
     rows: dict[str, list] = {"noise_free": [], "noisy": [], "top_only": []}
-    rng = np.random.default_rng(1)
-    cx, cy = cameras[0].target[0], cameras[0].target[1]
-    objects = wedge_objects()
-    with Sim(PhysicsSettings()) as sim:
-        sx, sy = stage["size"]
-        spawn_parts(sim, [Box((0, 0, 0), (sx, sy, stage["thickness"]))],
-                    ((*stage["centre"], floor_z - stage["thickness"] / 2), (0, 0, 0, 1)), 0.0,
-                    Surface(stage["friction"], (0.5, 0.5, 0.5, 1.0)))
-        for spec in objects:
-            body = spawn_spec(sim, spec, ((cx, cy, floor_z), (0, 0, 0, 1)),
-                              Surface(1.0, (0.9, 0.6, 0.1, 1.0)))
-            for _ in range(placements):
-                x, y = cx + rng.uniform(-0.2, 0.2), cy + rng.uniform(-0.2, 0.2)
-                yaw = float(rng.uniform(-math.pi, math.pi))
-                set_frame_pose(sim, body, ((x, y, floor_z), pb.getQuaternionFromEuler((0, 0, yaw))))
-                truth = truth_of(sim, body, spec)
-                frames = [capture(sim.client, c) for c in cameras]
-                bodies, sup = {spec.name: body}, {spec.name: floor_z}
-                base = {"object": spec.name, "shape": spec.shape}
-                est = estimate_objects(frames, bodies, support_z=sup)[spec.name]
-                rows["noise_free"].append({**base, **errors(est, truth, spec)})
-                est = estimate_objects(frames[:1], bodies, support_z=sup)[spec.name]
-                rows["top_only"].append({**base, **errors(est, truth, spec)})
+    for name, item in world.objects.items():
+        spec = item.spec
+        ep = open_wedge_episode(world, world.default_variant, 1, name, seed=0)
+        try:
+            angle = ep.door_angle()
+            for pose in WEDGE_POSES:
+                x, y, yaw = place_from_pose(world.door, angle, spec.length, WedgePose(*pose))
+                set_frame_pose(ep.sim, ep.body, ((x, y, top_z), pb.getQuaternionFromEuler((0, 0, yaw))))
+                truth = ep.truth()[name]
+                frames = [capture(ep.sim.client, c) for c in world.cameras]
+                bodies, sup, known = {name: ep.body}, {name: top_z}, {name: spec.height}
+                base = {"object": name, "shape": spec.shape, "pose": list(pose)}
+                est = estimate_objects(frames, bodies, support_z=sup, heights=known)
+                if name not in est:
+                    rows["noise_free"].append({**base, "unseen": True})
+                    continue
+                rows["noise_free"].append({**base, **errors(est[name], truth, spec)})
+                est = estimate_objects(frames[:1], bodies, support_z=sup, heights=known)
+                if name in est:
+                    rows["top_only"].append({**base, **errors(est[name], truth, spec)})
                 for seed in range(seeds):
-                    est = estimate_objects(frames, bodies, noise, np.random.default_rng(seed),
-                                           support_z=sup)[spec.name]
-                    rows["noisy"].append({**base, "seed": seed, **errors(est, truth, spec)})
-            pb.removeBody(body, physicsClientId=sim.client)
+                    est = estimate_objects(frames, bodies, world.noise, np.random.default_rng(seed),
+                                           support_z=sup, heights=known)
+                    rows["noisy"].append({**base, "seed": seed, **errors(est[name], truth, spec)})
+        finally:
+            ep.close()
+    unseen = [r for r in rows["noise_free"] if r.get("unseen")]
+    rows = {k: [r for r in v if not r.get("unseen")] for k, v in rows.items()}
     wedges = {k: [r for r in v if r["shape"] == "triangular_prism"] for k, v in rows.items()}
     tip_wrong = sum(1 for v in wedges.values() for r in v if r["yaw_deg"] > 90)
-    return {"scene": "worlds/wedge_door/scene.toml stage and cameras, objects.toml objects, "
-                     "no door",
-            "cameras": [c.name for c in cameras], "resolution": [cameras[0].width, cameras[0].height],
-            "noise": {"depth_sigma_m": noise.depth_sigma_m, "dropout": noise.dropout},
-            "objects": [s.name for s in objects], "placements_per_object": placements,
-            "tip_direction_wrong": tip_wrong,
+    cam = world.cameras[0]
+    return {"scene": "worlds/wedge_door via creative_py.sim.wedge_door (door open, Baxter parked)",
+            "cameras": [c.name for c in world.cameras], "resolution": [cam.width, cam.height],
+            "noise": {"depth_sigma_m": world.noise.depth_sigma_m, "dropout": world.noise.dropout},
+            "objects": list(world.objects), "poses": WEDGE_POSES,
+            "unseen": unseen, "tip_direction_wrong": tip_wrong,
             "all_objects": {k: summarise(v) for k, v in rows.items()},
             "wedges_only": {k: summarise(v) for k, v in wedges.items()},
             "rows": rows}
@@ -233,13 +210,12 @@ def main() -> None:
     """Run the measurements and write the JSON file."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--seeds", type=int, default=5)
-    parser.add_argument("--placements", type=int, default=5)
     parser.add_argument("--repeats", type=int, default=10)
     parser.add_argument("--out", type=Path, default=ROOT / "bench/results/perception.json")
     args = parser.parse_args()
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     t0 = time.perf_counter()
-    result = {"hook": run_hook(args.seeds), "wedge": run_wedge(args.seeds, args.placements),
+    result = {"hook": run_hook(args.seeds), "wedge": run_wedge(args.seeds),
               "render": render_times(args.repeats),
               "machine": {"python": platform.python_version(), "processor": platform.machine(),
                           "pybullet": pb.getAPIVersion()},

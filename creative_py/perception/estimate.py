@@ -214,21 +214,23 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
         # noise model, draw the footprint from steep rays (a downward camera sees the
         # whole footprint of an object on a surface) if there are enough of them.
         footprint = np.ones(len(pts), bool)
-        if sigma_z > 0.0:
-            steep = tilt <= config.footprint_max_tilt
-            if steep.sum() >= config.min_points:
-                footprint = steep
-        est = _estimate_one(name, pts, z, footprint, tuple(cams), support_z.get(name),
+        steep = tilt <= config.footprint_max_tilt
+        if sigma_z > 0.0 and steep.sum() >= config.min_points:
+            footprint = steep
+        est = _estimate_one(name, pts, z, footprint, steep, tuple(cams), support_z.get(name),
                             heights.get(name), trim, sigma_z, config)
         out[name] = est
     return out
 
 
 def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, footprint: np.ndarray,
-                  cams: tuple[str, ...], support: float | None, height: float | None,
+                  steep: np.ndarray, cams: tuple[str, ...], support: float | None, height: float | None,
                   trim: float, sigma_z: float, cfg: EstimatorConfig) -> ObjectEstimate:
-    """Estimate one object from its fused points (N x 3), their (filtered) heights z and
-    the mask of points that may shape the footprint."""
+    """Estimate one object from its fused points (N x 3) and their (filtered) heights z.
+
+    ``footprint`` marks the points that may shape the footprint, ``steep`` those seen
+    along rays within ``cfg.footprint_max_tilt`` of vertical.
+    """
     xy_all = pts[:, :2]
     xy, z_fp = xy_all[footprint], z[footprint]
     theta = _min_area_heading(xy, cfg.yaw_step_deg)
@@ -253,15 +255,22 @@ def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, footprint: np.ndarr
     # Which footprint axis, if any, does the top slope along?
     k_slope = int(np.argmax([abs(r) for r in rises]))
     sloped = abs(rises[k_slope]) >= max(cfg.slope_rise_fraction * dz, cfg.slope_rise_min_m)
+    square = max(du, dv) - min(du, dv) <= cfg.square_tolerance * max(du, dv)
     if sloped:
         symmetry = "none"
+        if square:
+            # A square footprint leaves the least-area heading loose (a 5 cm wedge is
+            # 9 pixels across from 1.4 m): refine it with the angular moment of the
+            # points seen from above, which cover the footprint evenly.
+            from_above = xy_all[steep] if steep.sum() >= 8 else xy
+            fine = _square_heading(from_above, theta)
+            theta += _wrap(fine - theta, math.pi / 4)
         yaw = theta + k_slope * math.pi / 2
         if rises[k_slope] > 0:  # the top rises towards +axis: the tip (low end) is behind
             yaw += math.pi
         yaw = _wrap(yaw, math.pi)
     else:
-        longer, shorter = max(du, dv), min(du, dv)
-        if longer - shorter <= cfg.square_tolerance * longer:
+        if square:
             if _fill_ratio(xy, du * dv) < cfg.round_fill:
                 symmetry, yaw = "round", 0.0
             else:
