@@ -32,9 +32,21 @@ Yaw and symmetry (field ``symmetry`` of the estimate):
 * ``"round"`` - a round footprint (an upright cylinder): yaw is meaningless and set to 0.
 
 The footprint's axes come from the rectangle of least area around the points' top view
-(a fine scan of headings over the convex hull), refined for square footprints by the
-fourth-order angular moment of the top-face points, which averages over all pixels
-instead of relying on a few edge pixels.
+(a fine scan of headings over the convex hull), refined for square footprints (a cube,
+a 5 x 5 cm wedge) by the fourth-order angular moment of the points seen from above,
+which averages over all pixels instead of relying on a few edge pixels.
+
+Depth noise (when a :class:`~creative_py.perception.noise.NoiseModel` is given, its
+``depth_sigma_m`` is taken as the sensor's known noise): heights come from depth
+median-filtered within each object's mask; the footprint from points seen along steep
+rays (noise moves a point along its ray, so sideways only by sigma times the ray's
+tilt); the top from the highest bin of the height profile rather than the maximum.
+
+Measured (``bench/perception_error.py``, ``bench/results/perception.json``): the hook
+world's cube at all variants and locations 0.6 mm mean, 1.5 mm worst, 2.3 degrees worst
+(one pixel is 3.1 mm there, so an axis-aligned edge can lose half a pixel); the wedge
+world's wedges 0.3 mm mean, 0.9 mm worst, 1.5 degrees worst without noise and 1.9 mm,
+3.6 degrees worst with its 1 mm depth noise; no tip direction reversed.
 """
 
 from __future__ import annotations
@@ -66,9 +78,9 @@ class EstimatorConfig:
         Fewest fused points for an object to be reported.
     min_pixels_per_camera : int
         Fewest pixels for a camera to count as seeing the object.
-    extent_trim : float or None
+    extent_trim : float
         Fraction of points ignored at each end of every extent and of the heights
-        (robustness to outliers). None: 0. Trimming shortens the extents of small
+        (robustness to outliers), in [0, 0.5). Trimming shortens the extents of small
         objects (a 3 cm cube is 10 pixels across from 1 m at 320x240): the median
         filter is the better defence against depth noise.
     median_filter : bool or None
@@ -101,7 +113,7 @@ class EstimatorConfig:
 
     min_points: int = 12
     min_pixels_per_camera: int = 4
-    extent_trim: float | None = None
+    extent_trim: float = 0.0
     median_filter: bool | None = None
     yaw_step_deg: float = 0.25
     profile_bins: int = 8
@@ -177,7 +189,7 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
     noisy = noise is not None and not noise.is_zero
     if noisy:
         frames = [noise.apply(f, rng) for f in frames]
-    trim = config.extent_trim if config.extent_trim is not None else 0.0
+    trim = config.extent_trim
     smooth = (config.median_filter if config.median_filter is not None
               else noise is not None and noise.depth_sigma_m > 0.0)
     # The sensor's depth noise is known from its model; a 3x3 median leaves about half.
