@@ -47,6 +47,10 @@ READY_RIGHT = (0.3, -0.6, 0.4, 1.6, -0.3, 0.6, 0.0)
 
 EE_LINK = "right_gripper"
 
+WORKSPACE_LINK_PREFIXES = ("right_lower_elbow", "right_upper_forearm", "right_lower_forearm",
+                           "right_wrist", "right_hand", "right_gripper", "r_gripper")
+"""Links that keep their collision shapes: the right arm from the elbow on."""
+
 Status = Literal["ok", "blocked", "unreachable", "invalid"]
 
 
@@ -90,10 +94,14 @@ class BaxterConfig:
         Load the visual meshes (slow, 1.2 s) so cameras see the robot.
     speed : float
         Default Cartesian speed of the gripper, m/s.
+    turn_speed : float
+        Fastest rotation of the gripper during a move, rad/s.
     steps_per_waypoint : int
         Physics steps between two IK waypoints.
     max_tracking_error : float
         Gripper lag (m) beyond which a move stops as ``blocked``.
+    max_turn_error : float
+        Gripper orientation lag (rad) beyond which a move stops as ``blocked``.
     ik_position_tolerance : float
         Position error (m) an IK solution must reach to count as reachable.
     ik_orientation_tolerance : float
@@ -102,16 +110,21 @@ class BaxterConfig:
         Maximum force of the fixed grasp constraint, N.
     settle_steps : int
         Most physics steps spent at the end of a move waiting for the arm to converge.
+    max_body_speed : float
+        A held or watched body moving faster than this (m/s) is a physics blow-up.
     """
 
     visuals: bool = False
     speed: float = 0.10
+    turn_speed: float = 1.0
     steps_per_waypoint: int = 4
     max_tracking_error: float = 0.03
+    max_turn_error: float = 0.3
     ik_position_tolerance: float = 0.002
     ik_orientation_tolerance: float = 0.02
     grasp_max_force: float = 500.0
     settle_steps: int = 120
+    max_body_speed: float = 5.0
 
 
 @dataclass(frozen=True)
@@ -192,8 +205,9 @@ class _Model:
         self.arm_in_movable = [self.movable.index(j) for j in self.arm]
 
     def reset(self, joints: Sequence[int], q: Sequence[float]) -> None:
-        for j, v in zip(joints, q):
-            pb.resetJointState(self.body, j, v, 0.0, physicsClientId=self.client)
+        pb.resetJointStatesMultiDof(self.body, list(joints), [[float(v)] for v in q],
+                                    targetVelocities=[[0.0]] * len(joints),
+                                    physicsClientId=self.client)
 
     def ee_pose(self) -> Pose:
         st = pb.getLinkState(self.body, self.ee, computeForwardKinematics=True,
@@ -226,6 +240,18 @@ class Baxter:
         self.grasp_constraint: int | None = None
         self.held: int | None = None
         self.reset_posture(READY_RIGHT)
+        self._limit_collisions()
+
+    def _limit_collisions(self) -> None:
+        """Let only the links that can reach the workspace collide (a speed-up).
+
+        The torso, head, pedestal, left arm and right shoulder cannot touch anything
+        on the table; their collision meshes only cost time in every step.
+        """
+        m = self.model
+        for name, link in [("base", -1), *m.link.items()]:
+            if not name.startswith(WORKSPACE_LINK_PREFIXES):
+                pb.setCollisionFilterGroupMask(m.body, link, 0, 0, physicsClientId=m.client)
 
     # ------------------------------------------------------------------ state
     def reset_posture(self, right_q: Sequence[float]) -> None:
@@ -301,9 +327,77 @@ class Baxter:
             return None
         return [float(v) for v in q]
 
+    def solve_ik_global(self, target: Pose, restarts: int = 40, keep: int = 6,
+                        seeds: Sequence[Sequence[float]] = ()) -> list[float] | None:
+        """Return an arm posture (rad) reaching ``target``, chosen among several.
+
+        Solves from ``seeds``, the ready posture, the current posture and ``restarts``
+        random postures of a fixed-seed generator (deterministic), stops after
+        ``keep`` solutions and returns the one farthest from the joint limits (the
+        largest smallest margin, as a fraction of each joint's range), or None.
+        Margins matter: a joint at its limit cannot help against gravity or contact.
+        """
+        k = self.kin
+        lo = np.array([k.lower[i] for i in k.arm_in_movable])
+        hi = np.array([k.upper[i] for i in k.arm_in_movable])
+        rng = np.random.default_rng(0)
+        tries = [*map(list, seeds), list(READY_RIGHT), self.arm_q()]
+        tries += [list(rng.uniform(lo, hi)) for _ in range(restarts)]
+        found: list[list[float]] = []
+        for seed in tries:
+            sol = self.solve_ik(target, seed=seed)
+            if sol is not None:
+                found.append(sol)
+                if len(found) >= keep:
+                    break
+        if not found:
+            return None
+
+        def margin(q: list[float]) -> float:
+            qa = np.array(q)
+            return float(np.min(np.minimum(qa - lo, hi - qa) / (hi - lo)))
+
+        return max(found, key=margin)
+
+    def move_joints(self, q_goal: Sequence[float], joint_speed: float = 0.8,
+                    check: bool = True, watch: Sequence[int] = ()) -> MoveResult:
+        """Move the arm in joint space to ``q_goal`` (rad), fastest joint at ``joint_speed`` rad/s.
+
+        The tracking guard compares the gripper with the forward kinematics of the
+        commanded posture.
+        """
+        cfg = self.config
+        q0 = np.array(self.arm_q())
+        q1 = np.array(q_goal, dtype=float)
+        step = joint_speed * cfg.steps_per_waypoint * self.sim.physics.time_step
+        n = max(1, math.ceil(float(np.max(np.abs(q1 - q0))) / step))
+        k = self.kin
+        for i in range(1, n + cfg.settle_steps // cfg.steps_per_waypoint + 1):
+            q = q0 + min(1.0, i / n) * (q1 - q0)
+            self._command(q)
+            self.sim.step(cfg.steps_per_waypoint)
+            k.reset(k.arm, q)
+            commanded = k.ee_pose()[0]
+            bad = self._check(commanded, check, watch)
+            if bad is not None:
+                return bad
+            if i >= n and math.dist(self.gripper_pose()[0], commanded) < 0.001:
+                break
+        return MoveResult("ok")
+
+    def reach(self, target: Pose, joint_speed: float = 0.8,
+              watch: Sequence[int] = ()) -> MoveResult:
+        """Go to ``target`` (gripper pose) through joint space: for moves in free space."""
+        q = self.solve_ik_global(target)
+        if q is None:
+            p = target[0]
+            return MoveResult("unreachable", f"IK found no arm posture for gripper at "
+                              f"({p[0]:.3f}, {p[1]:.3f}, {p[2]:.3f}) m")
+        return self.move_joints(q, joint_speed, watch=watch)
+
     # ----------------------------------------------------------------- motion
-    def move_to(self, target: Pose, speed: float | None = None,
-                check: bool = True) -> MoveResult:
+    def move_to(self, target: Pose, speed: float | None = None, check: bool = True,
+                watch: Sequence[int] = ()) -> MoveResult:
         """Move the gripper in a straight line (slerped orientation) to ``target``.
 
         Parameters
@@ -311,10 +405,13 @@ class Baxter:
         target : Pose
             World pose of ``right_gripper``.
         speed : float or None
-            Cartesian speed, m/s (default ``config.speed``). Pure rotations advance
-            at ``speed`` rad/s scaled by 1 m/rad... i.e. at 10 x speed rad/s.
+            Cartesian speed, m/s (default ``config.speed``); the orientation turns at
+            most at ``config.turn_speed`` rad/s.
         check : bool
             Apply the tracking-error guard.
+        watch : sequence of int
+            Further bodies whose blow-up (NaN, thrown out of the scene, faster than
+            ``max_body_speed``) ends the move as ``invalid``.
         """
         cfg = self.config
         speed = speed or cfg.speed
@@ -322,7 +419,8 @@ class Baxter:
         dist = math.dist(start_pos, target[0])
         ang = quat_angle(start_quat, target[1])
         step_len = speed * cfg.steps_per_waypoint * self.sim.physics.time_step
-        n = max(1, math.ceil(max(dist / step_len, ang / (10 * step_len))))
+        turn_len = cfg.turn_speed * cfg.steps_per_waypoint * self.sim.physics.time_step
+        n = max(1, math.ceil(max(dist / step_len, ang / turn_len)))
         q = self.arm_q()
         # Continue from the last commanded solution, if any, to avoid wrist flips.
         for i in range(1, n + 1):
@@ -340,7 +438,7 @@ class Baxter:
             q = sol
             self._command(q)
             self.sim.step(cfg.steps_per_waypoint)
-            bad = self._check(pos, check)
+            bad = self._check(pos, check, watch) or self._check_turn(quat, check)
             if bad is not None:
                 return bad
         for _ in range(cfg.settle_steps // cfg.steps_per_waypoint):
@@ -348,17 +446,29 @@ class Baxter:
             if math.dist(actual, target[0]) < 0.001:
                 break
             self.sim.step(cfg.steps_per_waypoint)
-            bad = self._check(target[0], check)
+            bad = self._check(target[0], check, watch)
             if bad is not None:
                 return bad
         return MoveResult("ok")
 
-    def _check(self, commanded: Point, check: bool) -> MoveResult | None:
+    def _check_turn(self, commanded: Quat, check: bool) -> MoveResult | None:
+        err = quat_angle(self.gripper_pose()[1], commanded)
+        if check and err > self.config.max_turn_error:
+            return MoveResult("blocked", f"the gripper was twisted {math.degrees(err):.0f} "
+                              "degrees away from its commanded orientation: something is "
+                              "in the way")
+        return None
+
+    def _check(self, commanded: Point, check: bool,
+               watch: Sequence[int] = ()) -> MoveResult | None:
         actual = self.gripper_pose()[0]
         if not all(math.isfinite(v) for v in actual):
             return MoveResult("invalid", "the physics produced NaN in the arm's state")
-        if self.held is not None and not self.sim.body_is_sane(self.held):
-            return MoveResult("invalid", "the held tool left the scene (physics blow-up)")
+        bodies = ([self.held] if self.held is not None else []) + list(watch)
+        for body in bodies:
+            why = self.sim.blow_up(body, self.config.max_body_speed)
+            if why:
+                return MoveResult("invalid", why)
         err = math.dist(actual, commanded)
         if check and err > self.config.max_tracking_error:
             return MoveResult("blocked", f"gripper lagged its target by {err * 100:.1f} cm "
@@ -367,22 +477,26 @@ class Baxter:
         return None
 
     # ----------------------------------------------------------------- grasp
-    def grasp(self, body: int, body_in_gripper: Pose) -> None:
-        """Fix ``body`` to the gripper with ``body_in_gripper`` (its COM frame in the gripper frame).
+    def grasp(self, body: int, frame_in_gripper: Pose) -> None:
+        """Fix ``body`` to the gripper so that its own frame sits at ``frame_in_gripper``.
 
-        Collisions between the body and every robot link are switched off.
+        ``frame_in_gripper`` is the pose of the body's link frame (spec or URDF frame,
+        not its centre of mass) in the ``right_gripper`` frame. The constraint is
+        fixed, with ``grasp_max_force`` N; collisions between the body and every
+        robot link are switched off (the fingers are not simulated closing).
         """
         c = self.sim.client
         for link in range(-1, pb.getNumJoints(self.body, physicsClientId=c)):
             for blink in range(-1, pb.getNumJoints(body, physicsClientId=c)):
                 pb.setCollisionFilterPair(self.body, body, link, blink, 0, physicsClientId=c)
-        inv = pb.invertTransform(*body_in_gripper)
+        info = pb.getDynamicsInfo(body, -1, physicsClientId=c)
+        # The child frame is given relative to the body's centre-of-mass frame.
+        child_pos, child_quat = pb.invertTransform(info[3], info[4])
         self.grasp_constraint = pb.createConstraint(
             self.body, self.model.ee, body, -1, pb.JOINT_FIXED, (0, 0, 0),
-            parentFramePosition=body_in_gripper[0], childFramePosition=(0, 0, 0),
-            parentFrameOrientation=body_in_gripper[1], childFrameOrientation=(0, 0, 0, 1),
+            parentFramePosition=frame_in_gripper[0], childFramePosition=child_pos,
+            parentFrameOrientation=frame_in_gripper[1], childFrameOrientation=child_quat,
             physicsClientId=c)
-        del inv
         pb.changeConstraint(self.grasp_constraint, maxForce=self.config.grasp_max_force,
                             physicsClientId=c)
         self.held = body

@@ -127,7 +127,10 @@ def spawn_parts(sim: Sim, parts: Sequence[Part], pose: Pose, mass: float,
     c = sim.client
     com = centre_of_mass(parts) if mass > 0 else (0.0, 0.0, 0.0)
     cols = [_shape(sim, p, False, None) for p in parts]
-    vis = [(_shape(sim, p, True, surface.rgba) if visual and i not in hidden else -1)
+    # A part without a visual shape would be drawn from its collision shape by the
+    # renderer: a hidden part gets a fully transparent visual instead.
+    clear = (*surface.rgba[:3], 0.0)
+    vis = [(_shape(sim, p, True, clear if i in hidden else surface.rgba) if visual else -1)
            for i, p in enumerate(parts)]
     vols = np.array([p.volume for p in parts])
     masses = (mass * vols / vols.sum()).tolist()

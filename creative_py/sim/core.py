@@ -94,6 +94,20 @@ class Sim:
         pos, quat = self.pose(body)
         return all(math.isfinite(v) for v in (*pos, *quat)) and max(abs(v) for v in pos) < bound
 
+    def blow_up(self, body: int, max_speed: float = 5.0, bound: float = 20.0) -> str:
+        """Return why ``body`` looks like a physics blow-up, or "" if it looks sane.
+
+        A blow-up is a non-finite pose, a position beyond ``bound`` metres from the
+        origin, or a linear speed above ``max_speed`` m/s.
+        """
+        if not self.body_is_sane(body, bound):
+            return f"body {body} has a non-finite pose or left the scene (physics blow-up)"
+        vel, _ = pb.getBaseVelocity(body, physicsClientId=self.client)
+        speed = math.sqrt(sum(v * v for v in vel))
+        if not math.isfinite(speed) or speed > max_speed:
+            return f"body {body} moves at {speed:.1f} m/s (physics blow-up)"
+        return ""
+
     def save_state(self) -> int:
         """Save the whole physics state in memory; return its id."""
         return pb.saveState(physicsClientId=self.client)

@@ -1,0 +1,13 @@
+"""The registry of cases: name -> an object implementing :class:`creative_py.sim.trial.Case`.
+
+Add a case by importing its class and adding one entry.
+"""
+
+from __future__ import annotations
+
+from creative_py.sim.hook_tube import HookTubeCase
+from creative_py.sim.trial import Case
+
+CASES: dict[str, Case] = {
+    "hook": HookTubeCase(),
+}
