@@ -14,6 +14,7 @@
 :- use_module(library(assoc)).
 :- use_module(library(option)).
 :- use_module(library(pairs)).
+:- use_module(library(heaps)).
 
 /** <module> Theta-subsumption, Plotkin reduction and coverage of clauses
 
@@ -339,37 +340,49 @@ reduce_items_(Head, Items, Tests, Limit, Kept) :-
     copy_term_nat(Head-Items-Tests, CH-CItems-CTests),
     CH = SH,
     components_(CItems, CTests, Comps),
+    empty_assoc(NoExcl),
+    maplist(candidates_(Index, NoExcl), CItems, CandLists),
+    pairs_keys(Items, Idxs),
+    pairs_keys_values(CandPairs, Idxs, CandLists),
+    list_to_assoc(CandPairs, CandAll),
+    list_to_assoc(Items, ItemAssoc),
     empty_assoc(Removed0),
-    foldl(reduce_component_(Head, Items, Tests, SH, Index, Ranges, Limit),
-          Comps, Removed0, Removed),
+    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit),
+    foldl(reduce_component_(Ctx), Comps, Removed0, Removed),
     exclude(removed_item_(Removed), Items, Kept).
 
 removed_item_(Removed, I-_) :-
     get_assoc(I, Removed, _).
 
-reduce_component_(Head, Items, Tests, SH, Index, Ranges, Limit,
-                  comp(CItems, _), Removed0, Removed) :-
+reduce_component_(Ctx, comp(CItems, _), Removed0, Removed) :-
     pairs_keys(CItems, Idxs),
     (   CItems = [_-L],
         ground(L)
     ->  Removed = Removed0
-    ;   foldl(reduce_literal_(Head, Items, Tests, SH, Index, Ranges, Limit, Idxs),
-              Idxs, Removed0, Removed)
+    ;   foldl(reduce_literal_(Ctx, Idxs), Idxs, Removed0, Removed)
     ).
 
-reduce_literal_(Head, Items, Tests, SH, Index, Ranges, Limit, Idxs, I,
-                Removed0, Removed) :-
+%   Literal I goes when its component maps into the clause without I (and
+%   without the literals removed so far); a literal whose only possible
+%   image is itself is skipped at once.
+reduce_literal_(Ctx, Idxs, I, Removed0, Removed) :-
+    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit),
     (   get_assoc(I, Removed0, _)
+    ->  Removed = Removed0
+    ;   get_assoc(I, CandAll, OwnCands),
+        \+ ( member(J-_, OwnCands), J =\= I, \+ get_assoc(J, Removed0, _) )
     ->  Removed = Removed0
     ;   put_assoc(I, Removed0, true, Excl),
         exclude(removed_key_(Excl), Idxs, Alive0),
         Alive = [I|Alive0],
-        copy_term_nat(Head-Items-Tests, GH-GItems-GTests),
+        maplist(item_at_(ItemAssoc), Alive, KItems0),
+        copy_term_nat(Head-KItems0-Tests, GH-KItems-GTests),
         GH = SH,
-        include(alive_item_(Alive), GItems, KItems),
         term_variables(KItems, KVars),
         include(test_on_(KVars), GTests, KTests),
-        (   limited_(Limit, reduce_match_(KItems, KTests, Index, Ranges, Excl, Image))
+        maplist(live_candidates_(CandAll, Excl), Alive, CandLists),
+        (   \+ memberchk([], CandLists),
+            limited_(Limit, reduce_match_(KItems, CandLists, KTests, Ranges, Image))
         ->  subtract_idx_(Alive, Image, Gone),
             foldl(mark_removed_, Gone, Removed0, Removed)
         ;   Removed = Removed0
@@ -379,12 +392,19 @@ reduce_literal_(Head, Items, Tests, SH, Index, Ranges, Limit, Idxs, I,
 removed_key_(Removed, I) :-
     get_assoc(I, Removed, _).
 
-alive_item_(Alive, I-_) :-
-    memberchk(I, Alive).
+item_at_(ItemAssoc, I, I-L) :-
+    get_assoc(I, ItemAssoc, L).
 
-reduce_match_(KItems, KTests, Index, Ranges, Excl, Image) :-
-    order_steps_(KItems, KTests, Index, Excl, Steps),
-    once(match_steps_(Steps, Excl, Ranges)),
+live_candidates_(CandAll, Excl, I, Cands) :-
+    get_assoc(I, CandAll, All),
+    exclude(excluded_cand_(Excl), All, Cands).
+
+excluded_cand_(Excl, J-_) :-
+    get_assoc(J, Excl, _).
+
+reduce_match_(KItems, CandLists, KTests, Ranges, Image) :-
+    weave_(KItems, CandLists, KTests, Steps),
+    once(match_steps_(Steps, none, Ranges)),
     findall(J, member(lit(_, _, _, J), Steps), Image).
 
 subtract_idx_([], _, []).
@@ -421,10 +441,42 @@ limited_(Limit, Goal) :-
 skolemise_(Term) :-
     numbervars(Term, 0, _, [functor_name('$sk'), attvar(bind)]).
 
-dedupe_([], []).
-dedupe_([L|Ls], [L|Ds]) :-
-    exclude(==(L), Ls, Rest),
-    dedupe_(Rest, Ds).
+%   dedupe_(+Lits, -Unique): drop later copies (==) of a literal, keeping
+%   the first; O(n log n) through a numbered ground copy.
+dedupe_(Lits, Unique) :-
+    copy_term_nat(Lits, Copy),
+    numbervars(Copy, 0, _, [functor_name('$dd')]),
+    numbered_(Copy, 1, Keyed),
+    msort(Keyed, Sorted),
+    first_of_runs_(Sorted, FirstIdx0),
+    sort(FirstIdx0, FirstIdx),
+    pick_positions_(Lits, 1, FirstIdx, Unique).
+
+numbered_([], _, []).
+numbered_([L|Ls], I, [L-I|Ks]) :-
+    I1 is I + 1,
+    numbered_(Ls, I1, Ks).
+
+first_of_runs_([], []).
+first_of_runs_([K-I|Rest], [I|Is]) :-
+    skip_run_(Rest, K, Rest1),
+    first_of_runs_(Rest1, Is).
+
+skip_run_([], _, []).
+skip_run_([K1-I|Rest], K, Out) :-
+    (   K1 == K
+    ->  skip_run_(Rest, K, Out)
+    ;   Out = [K1-I|Rest]
+    ).
+
+pick_positions_([], _, _, []).
+pick_positions_([L|Ls], I, Keep, Out) :-
+    I1 is I + 1,
+    (   Keep = [I|Keep1]
+    ->  Out = [L|Out1],
+        pick_positions_(Ls, I1, Keep1, Out1)
+    ;   pick_positions_(Ls, I1, Keep, Out)
+    ).
 
 split_body_([], [], []).
 split_body_([L|Ls], Lits, Tests) :-
@@ -565,70 +617,156 @@ candidate_ok_(L, Excl, J-C) :-
     \+ get_assoc(J, Excl, _),
     \+ L \= C.
 
-%   Greedy static order on a working copy: pick the best literal, bind its
-%   variables in the copy to '$bound', emit the tests that became ready.
+%   Greedy static order: repeatedly take the literal with the best score
+%   (lower is better): all variables already bound (a pure check) first,
+%   then literals sharing a bound variable, then fewest candidates, then
+%   most bound variables, then body position. Scores change only for the
+%   neighbours of a newly bound variable, so a priority queue with lazy
+%   deletion keeps the ordering at O(occurrences * log n). Each test is
+%   emitted right after the literal that binds its variable.
 weave_(Items, Cands, Tests, Steps) :-
-    maplist(step_info_, Items, Cands, Infos),
-    copy_term_nat(Infos-Tests, CInfos-CTests),
-    pairs_keys_values(IP, Infos, CInfos),
-    pairs_keys_values(TP, Tests, CTests),
-    ready_tests_(TP, Ready, Pending),
+    length(Items, K),
+    positions_(1, K, Ps),
+    maplist(step_info_, Ps, Items, Cands, Infos),
+    copy_term_nat(Items-Tests, CItems-CTests),
+    numbervars(CItems-CTests, 0, _, [functor_name('$ov')]),
+    maplist(ov_ids_, CItems, LitIds),
+    var_occurrences_by_pos_(LitIds, Occ),
+    maplist(test_var_, Tests, CTests, Ready0, TestVars),
+    exclude(==(none), Ready0, Ready),
+    test_index_(TestVars, TestIdx),
     maplist(test_step_, Ready, Steps0),
-    pick_loop_(IP, Pending, Steps1),
-    append(Steps0, Steps1, Steps).
+    list_to_assoc_pos_(Infos, LitIds, State0),
+    pairs_keys_values(PosIds0, Ps, LitIds),
+    list_to_assoc(PosIds0, PosIds),
+    empty_heap(Heap00),
+    foldl(push_pos_(State0), Ps, Heap00, Heap0),
+    empty_assoc(Bound0),
+    order_loop_(Heap0, State0, ctx(Occ, PosIds, TestIdx), Bound0, Steps1, TailTests),
+    maplist(test_step_, TailTests, Steps2),
+    append([Steps0, Steps1, Steps2], Steps).
 
-step_info_(I-L, Cands, info(I, L, Cands, N)) :-
+positions_(I, K, Ps) :-
+    (   I > K
+    ->  Ps = []
+    ;   Ps = [I|Ps1],
+        I1 is I + 1,
+        positions_(I1, K, Ps1)
+    ).
+
+step_info_(P, I-L, Cands, P-info(I, L, Cands, N)) :-
     length(Cands, N).
 
-test_step_((I-in_range(V, Lo, Hi))-_, test(I, V, Lo, Hi)).
+ov_ids_(_-L, Ids) :-
+    findall(N, sub_term('$ov'(N), L), Ns),
+    sort(Ns, Ids).
 
-ready_tests_([], [], []).
-ready_tests_([T-C|TPs], Ready, Pending) :-
-    C = _-in_range(V, _, _),
-    (   nonvar(V)
-    ->  Ready = [T-C|Ready1],
-        ready_tests_(TPs, Ready1, Pending)
-    ;   Pending = [T-C|Pending1],
-        ready_tests_(TPs, Ready, Pending1)
+var_occurrences_by_pos_(LitIds, Occ) :-
+    findall(V-P, ( nth1(P, LitIds, Ids), member(V, Ids) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, Occ).
+
+%   Tests on a bound term are ready at once; others wait for their variable.
+test_var_(T, CT, Ready, TV) :-
+    CT = _-in_range(V, _, _),
+    (   V = '$ov'(N)
+    ->  Ready = none,
+        TV = N-T
+    ;   Ready = T,
+        TV = none
     ).
 
-pick_loop_([], Pending, Steps) :-
-    maplist(test_step_, Pending, Steps).
-pick_loop_([P|Ps], Pending0, [Step|Steps]) :-
-    best_info_(Ps, P, Best),
-    selectchk(Best, [P|Ps], Rest),
-    Best = info(I, L, Cands, _)-CInfo,
-    Step = lit(I, L, Cands, _),
-    term_variables(CInfo, CVs),
-    maplist(=('$bound'), CVs),
-    ready_tests_(Pending0, Ready, Pending),
-    maplist(test_step_, Ready, TSteps),
-    append(TSteps, Steps1, Steps),
-    pick_loop_(Rest, Pending, Steps1).
+test_index_(TestVars0, TestIdx) :-
+    exclude(==(none), TestVars0, TestVars),
+    keysort(TestVars, Sorted),
+    group_pairs_by_key(Sorted, Groups),
+    list_to_assoc(Groups, TestIdx).
 
-best_info_([], Best, Best).
-best_info_([P|Ps], Best0, Best) :-
-    info_score_(P, S),
-    info_score_(Best0, S0),
-    (   S @< S0
-    ->  best_info_(Ps, P, Best)
-    ;   best_info_(Ps, Best0, Best)
-    ).
+test_step_(I-in_range(V, Lo, Hi), test(I, V, Lo, Hi)).
 
-%   Lower is better: fully bound literals first (pure checks), then literals
-%   touching bound variables, then fewest candidates, then most bound.
-info_score_(info(_, _, _, N)-info(_, CL, _, _), s(Free, Unlinked, N, NegBound)) :-
-    term_variables(CL, Vs),
-    findall(x, sub_term('$bound', CL), Bs),
-    length(Bs, NBound),
-    NegBound is -NBound,
-    (   Vs == []
+list_to_assoc_pos_(Infos, LitIds, State) :-
+    maplist(initial_state_, Infos, LitIds, Pairs),
+    list_to_assoc(Pairs, State).
+
+initial_state_(P-Info, Ids, P-st(Info, U, 0, open)) :-
+    length(Ids, U).
+
+push_pos_(State, P, H0, H) :-
+    get_assoc(P, State, St),
+    score_(P, St, Score),
+    add_to_heap(H0, Score, P, H).
+
+score_(P, st(info(_, _, _, N), U, B, _), s(Free, Unlinked, N, NegB, P)) :-
+    (   U =:= 0
     ->  Free = 0
     ;   Free = 1
     ),
-    (   NBound > 0
+    (   B > 0
     ->  Unlinked = 0
     ;   Unlinked = 1
+    ),
+    NegB is -B.
+
+order_loop_(Heap0, State0, Ctx, Bound0, Steps, TailTests) :-
+    Ctx = ctx(Occ, PosIds, TestIdx),
+    (   get_from_heap(Heap0, Score, P, Heap1)
+    ->  get_assoc(P, State0, St),
+        (   arg(4, St, open),
+            score_(P, St, Score)
+        ->  St = st(info(I, L, Cands, _), _, _, _),
+            Steps = [lit(I, L, Cands, _)|Steps1],
+            put_assoc(P, State0, st(info(I, L, Cands, 0), 0, 0, done), State1),
+            get_assoc(P, PosIds, Vs),
+            exclude(bound_var_(Bound0), Vs, NewVs),
+            foldl(bind_var_(Occ), NewVs, State1-Heap1, State2-Heap2),
+            foldl(mark_bound_, NewVs, Bound0, Bound1),
+            foldl(new_tests_(TestIdx), NewVs, TSteps, Steps2),
+            Steps1 = TSteps,
+            order_loop_(Heap2, State2, Ctx, Bound1, Steps2, TailTests)
+        ;   order_loop_(Heap1, State0, Ctx, Bound0, Steps, TailTests)
+        )
+    ;   Steps = [],
+        assoc_to_list(TestIdx, Pending),
+        foldl(unbound_tests_(Bound0), Pending, TailTests, [])
+    ).
+
+unbound_tests_(Bound, V-Ts, Tail0, Tail) :-
+    (   get_assoc(V, Bound, _)
+    ->  Tail0 = Tail
+    ;   append(Ts, Tail, Tail0)
+    ).
+
+bound_var_(Bound, V) :-
+    get_assoc(V, Bound, _).
+
+mark_bound_(V, B0, B) :-
+    put_assoc(V, B0, true, B).
+
+bind_var_(Occ, V, State0-Heap0, State-Heap) :-
+    get_assoc(V, Occ, Ps),
+    foldl(bump_, Ps, State0-Heap0, State-Heap).
+
+bump_(P, State0-Heap0, State-Heap) :-
+    get_assoc(P, State0, st(Info, U, B, Status)),
+    (   Status == open
+    ->  U1 is U - 1,
+        B1 is B + 1,
+        St1 = st(Info, U1, B1, open),
+        put_assoc(P, State0, St1, State),
+        score_(P, St1, Score),
+        add_to_heap(Heap0, Score, P, Heap)
+    ;   State = State0,
+        Heap = Heap0
+    ).
+
+%   new_tests_(+TestIdx, +V, -Steps0, ?Steps): difference list of the test
+%   steps on variable V (no findall/3: the tests hold live variables).
+new_tests_(TestIdx, V, Steps0, Steps) :-
+    (   get_assoc(V, TestIdx, Ts)
+    ->  maplist(test_step_, Ts, TSteps),
+        append(TSteps, Steps, Steps0)
+    ;   Steps0 = Steps
     ).
 
 match_steps_([], _, _).
