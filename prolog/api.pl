@@ -53,7 +53,7 @@ if it needs a new module, its use_module/1 below.
 :- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
                            plan_experiment/4, plan_use/5, label_trial/7]).
 :- use_module(creation, [next_tool/6, creation_candidates/3]).
-:- use_module(model_file, [write_model_file/4, load_model_file/1]).
+:- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6]).
 :- use_module(planner, [plan/5]).
 :- use_module(action_model, [innate_action_models/2]).
 :- use_module(pddl, [pddl_write_files/6]).
@@ -121,6 +121,8 @@ api_op(creation_candidates(VS), Cs, creation_candidates(VS, [], Cs)).
 api_op(write_model_file(File, Case, Models, VS), true,
        write_model_file(File, Case, Models, VS)).
 api_op(load_model_file(File), true, load_model_file(File)).
+api_op(plan_task(Case, Models, VS, Facts, Options), R,
+       plan_task(Case, Models, VS, Facts, Options, R)).
 api_op(plan(State, Goal, Models, Options), R, plan(State, Goal, Models, Options, R)).
 api_op(innate_action_models(Case), Ms, innate_action_models(Case, Ms)).
 api_op(pddl_write_files(Dom, Prob, Models, State, Goal, Options), true,
@@ -349,8 +351,23 @@ api_write_json_items_([X|Xs]) :-
     ).
 
 api_write_json_text_(Text) :-
-    atom_string(Text, String),
-    json_write(current_output, String, [width(0)]).
+    api_json_specials_(Specials),
+    (   split_string(Text, Specials, "", [_]),
+        \+ sub_string(Text, _, _, _, "\x0\")
+    ->  put_char('"'),
+        write(Text),
+        put_char('"')
+    ;   atom_string(Text, String),
+        json_write(current_output, String, [width(0)])
+    ).
+
+%   api_json_specials_(-Chars) is det.
+%
+%   The characters a JSON string must escape: the quote, the backslash and the
+%   control characters but NUL (split_string/4 reads its separators as a C string;
+%   NUL is checked apart). Text without them is written as it is (the fast path).
+
+api_json_specials_("\"\\\x1\\x2\\x3\\x4\\x5\\x6\\x7\\x8\\x9\\xa\\xb\\xc\\xd\\xe\\xf\\x10\\x11\\x12\\x13\\x14\\x15\\x16\\x17\\x18\\x19\\x1a\\x1b\\x1c\\x1d\\x1e\\x1f\").
 
 api_write_json_float_(F) :-
     float_class(F, Class),

@@ -75,10 +75,16 @@ abstract_step_(Case, step(Skill, Args, P0, P1), step(Skill, Args, S0, S1)) :-
 %   The abstract state of the primitive facts (abstract_state/3) plus the robot-state
 %   literals the innate models speak of: holding(T) for a held tool (held/1 fact),
 %   gripper_empty when nothing is held, and on_table(O) for every catalogued object
-%   that is neither held nor placed (no spatial literal relates it to a target).
+%   that is neither held nor placed (no spatial literal relates it to a target). In
+%   the wedge case the spatial literals speak of a block resting on the floor, so those
+%   of a block still in the gripper are left out.
 
 observed_state(Case, Primitive, State) :-
-    abstract_state(Case, Primitive, Abstract),
+    abstract_state(Case, Primitive, Abstract0),
+    (   Case == wedge
+    ->  exclude(held_spatial_(Primitive), Abstract0, Abstract)
+    ;   Abstract = Abstract0
+    ),
     findall(holding(T), member(held(T), Primitive), Holding),
     (   Holding == []
     ->  Grip = [gripper_empty]
@@ -95,6 +101,12 @@ observed_state(Case, Primitive, State) :-
             OnTable),
     append([Abstract, Holding, Grip, OnTable], State0),
     sort(State0, State).
+
+held_spatial_(Primitive, L) :-
+    compound(L),
+    arg(1, L, O),
+    memberchk(held(O), Primitive),
+    spatial_any_(L).
 
 catalogued_(Abstract, O) :-
     member(L, Abstract),

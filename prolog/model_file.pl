@@ -1,6 +1,8 @@
 :- module(model_file,
           [ write_model_file/4,   % +File, +Case, +Models, +VS
-            load_model_file/1     % +File
+            load_model_file/1,    % +File
+            learned_action_models/3, % +Models, +VS, -Learned
+            plan_task/6           % +Case, +Models, +VS, +Primitive, +Options, -Result
           ]).
 
 /** <module> A run's learned model as a file a Prolog REPL can load
@@ -11,8 +13,8 @@ model.pl holds plain terms, one per clause, with a header comment:
     learned_hypothesis(Task, hs, Clause).         % the version space's boundaries
     learned_hypothesis(Task, hg, Clause).
 
-The learned model's precondition is the skill's own precondition (holding the tool),
-then h_g: the literals the physics showed necessary. load_model_file/1 reads the terms
+The learned model's precondition is the observed model's literals about the robot and
+the task (holding the tool, the cube in the tube, the door open), then h_g: the literals the physics showed necessary. load_model_file/1 reads the terms
 (raising on a syntax error, with file and line) and adds them to the knowledge base,
 where knowledge:learned_model/4 answers queries.
 */
@@ -23,7 +25,12 @@ where knowledge:learned_model/4 answers queries.
 :- use_module(library(readutil)).
 :- use_module(knowledge, [kb_assert_learned/1]).
 :- use_module(version_space, [vs_bounds/3]).
-:- use_module(experiment, [hypothesis_parts/4]).
+:- use_module(experiment, [hypothesis_parts/4, observed_state/3]).
+:- use_module(library(option)).
+:- use_module(action_model, [innate_action_models/2, action_task_goal/2,
+                              tool_literal_kind/3]).
+:- use_module(planner, [plan/5]).
+:- use_module(pddl, [pddl_write_files/6]).
 
 %!  write_model_file(+File, +Case, +Models, +VS) is det.
 %
@@ -48,28 +55,88 @@ write_model_file(File, Case, Models, VS) :-
         ),
         close(Out)).
 
-write_model_(Out, Case, action_model(Name, Params, Pre, Add, Del), HG) :-
+write_model_(Out, Case, Model, HG) :-
+    learned_model_(Model, HG, action_model(Name, Params, Pre1, Add, Del)),
     pairs_keys_(Params, Vars),
     Action =.. [Name|Vars],
-    copy_term(HG, (HGHead :- HGBody)),
-    (   Vars = [T, C, X | _]
-    ->  HGHead =.. [_, T, C, X]
-    ;   true
-    ),
-    conj_list_(HGBody, HGLits),
-    include(skill_literal_, Pre, Skill),
-    append(Skill, HGLits, Pre1),
     findall(add(L), member(L, Add), As),
     findall(del(L), member(L, Del), Ds),
     append(As, Ds, Eff),
     portray_clause(Out, learned_model(Case, Action, Pre1, Eff)).
 
+%   The observed model with its precondition rewritten: the skill's own literals, then
+%   h_g's body (interval literals left out: a planner has no use for them).
+learned_model_(action_model(Name, Params, Pre, Add, Del), HG,
+               action_model(Name, Params, Pre1, Add, Del)) :-
+    pairs_keys_(Params, Vars),
+    copy_term(HG, HG1),
+    (   HG1 = (HGHead :- HGBody)
+    ->  true
+    ;   HGHead = HG1, HGBody = true
+    ),
+    (   Vars = [T, C, X | _]
+    ->  HGHead =.. [_, T, C, X]
+    ;   true
+    ),
+    conj_list_(HGBody, HGLits0),
+    exclude(interval_literal_, HGLits0, HGLits),
+    (   Vars = [Tool|_]
+    ->  include(not_tool_literal_(Tool), Pre, Skill)
+    ;   Skill = Pre
+    ),
+    append(Skill, HGLits, Pre1).
+
+%   The model's own precondition literals that h_g does not speak of: the robot's
+%   state and the task's (holding(T), door_open(D), in_tube(C, Tube)).
+not_tool_literal_(Tool, L) :-
+    tool_literal_kind(Tool, L, Kind),
+    memberchk(Kind, [robot, other]).
+
+interval_literal_(in_range(_, _, _)).
+
+%!  learned_action_models(+Models, +VS, -Learned) is det.
+%
+%   The new action models of a demonstration with their preconditions rewritten from
+%   the final version space: the skill's own precondition, then h_g.
+
+learned_action_models(Models, VS, Learned) :-
+    vs_bounds(VS, _, HG),
+    learned_models_(Models, HG, Learned).
+
+learned_models_([], _, []).
+learned_models_([M|Ms], HG, [L|Ls]) :-
+    learned_model_(M, HG, L),
+    learned_models_(Ms, HG, Ls).
+
+%!  plan_task(+Case, +Models, +VS, +Primitive, +Options, -Result) is det.
+%
+%   Plan the case's task in the state described by the primitive facts, with the
+%   innate skills and the learned models (learned_action_models/3). Options:
+%   pddl(DomainFile, ProblemFile) also writes the PDDL files; the planner's own options
+%   (max_depth/1) are passed on. Result is planner:plan/5's: plan(Steps) or
+%   no_plan(Reason), no_plan(no_object_satisfies(Model, Failed)) being the trigger for
+%   tool creation.
+
+plan_task(Case, Models, VS, Primitive, Options, Result) :-
+    learned_action_models(Models, VS, Learned),
+    innate_action_models(Case, Innate),
+    append(Learned, Innate, All),
+    observed_state(Case, Primitive, State),
+    action_task_goal(Case, Goal),
+    extra_objects_(Case, Extra),
+    (   option(pddl(Dom, Prob), Options)
+    ->  pddl_write_files(Dom, Prob, All, State, Goal, [objects(Extra)])
+    ;   true
+    ),
+    plan(State, Goal, All, [objects(Extra)|Options], Result).
+
+%   Objects that appear in no literal of the state (the wedge's floor).
+extra_objects_(wedge, [floor1-site]) :- !.
+extra_objects_(_, []).
+
 pairs_keys_([], []).
 pairs_keys_([K-_|Ps], [K|Ks]) :-
     pairs_keys_(Ps, Ks).
-
-skill_literal_(holding(_)).
-skill_literal_(gripper_empty).
 
 conj_list_(true, []) :- !.
 conj_list_((A, B), [A|L]) :- !,

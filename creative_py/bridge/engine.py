@@ -49,7 +49,7 @@ from creative_py.bridge.errors import (
     PrologSyntaxError,
     WrongThreadError,
 )
-from creative_py.bridge.terms import Compound, Term
+from creative_py.bridge.terms import Compound, Term, rename_variables
 
 log = logging.getLogger(__name__)
 
@@ -240,8 +240,14 @@ class Engine:
 
     # ------------------------------------------------------------------ operations
 
-    def call(self, op: str, *args: Term) -> Union[Term, _Failed]:
+    def call(self, op: str, *args: Term, share_variables: bool = False) -> Union[Term, _Failed]:
         """Run the facade operation ``op(*args)`` and return its result.
+
+        The arguments' variables are kept apart: a variable ``X`` of the first argument
+        and a variable ``X`` of the second are different Prolog variables, because terms
+        obtained from separate replies reuse the names ``_G0``, ``_G1``, ... Pass
+        ``share_variables=True`` to make same-named variables of different arguments one
+        variable.
 
         Parameters
         ----------
@@ -266,6 +272,8 @@ class Engine:
         """
         if not isinstance(op, str):
             raise TypeError(f"operation name must be a str, got {type(op).__name__}")
+        if not share_variables and len(args) > 1:
+            args = tuple(rename_variables(a, f"_A{i}") for i, a in enumerate(args))
         request = Compound(op, args) if args else op
         reply = decode(self.request_text(encode(request)))
         if isinstance(reply, Compound) and len(reply.args) == 1:

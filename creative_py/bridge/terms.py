@@ -193,6 +193,21 @@ def variables(term: Term) -> list[Var]:
     return list(seen.values())
 
 
+def rename_variables(term: Term, suffix: str) -> Term:
+    """Return ``term`` with every named variable ``N`` renamed ``N<suffix>``.
+
+    Used to keep the variables of separately obtained terms apart when they travel in
+    one request (two replies may both name a variable ``_G0``).
+    """
+    if isinstance(term, Var):
+        return term if term.name is None else Var(term.name + suffix)
+    if isinstance(term, Compound):
+        return Compound(term.name, tuple(rename_variables(a, suffix) for a in term.args))
+    if isinstance(term, list):
+        return [rename_variables(a, suffix) for a in term]
+    return term
+
+
 def is_ground(term: Term) -> bool:
     """Return whether ``term`` contains no variable (named or anonymous)."""
     stack = [term]

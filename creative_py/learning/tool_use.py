@@ -123,6 +123,21 @@ def term_text(t: Term) -> str:
 CASE_ROLES = {"hook": ("cube1", "tube1"), "wedge": ("door1", "floor1")}
 """The target and the context object of each case (the head's 2nd and 3rd arguments)."""
 
+DEMO_STEPS = {"hook": ("pick_up", "position_tool", "pull"),
+              "wedge": ("pick_up", "place", "release_door")}
+"""The trainer's skills, when the world's demonstration.toml does not list them."""
+
+
+def demonstration_info(case: str, world: Any) -> dict[str, Any]:
+    """Return the demonstration's tool, variant, location and skills from the world."""
+    from creative_py.sim.trial import list_case
+
+    info = list_case(case, world)["demonstration"]
+    return {"tool": info.get("tool") or info["object"],
+            "variant": info.get("variant", "standard"),
+            "location": int(info.get("location", 1)),
+            "steps": tuple(info.get("steps") or DEMO_STEPS[case])}
+
 
 @dataclass(frozen=True)
 class DemoStep:
@@ -154,9 +169,9 @@ def run_demonstration(case: str, world: Any, variant: Optional[str] = None, seed
     The skills and the pose come from the world's ``demonstration.toml``. Each step's
     facts are what the robot perceives (cameras) and feels (arm proprioception).
     """
-    from creative_py.sim.trial import get_case, list_case, open_episode
+    from creative_py.sim.trial import get_case, open_episode
 
-    info = list_case(case, world)["demonstration"]
+    info = demonstration_info(case, world)
     variant = variant or info["variant"]
     tool, location = info["tool"], int(info["location"])
     pose = get_case(case).default_pose(world)
@@ -199,11 +214,11 @@ def task_facts(case: str, world: Any, variant: str, location: int) -> list[tuple
 
     The scene is built and observed once per (world, variant, location); nothing moves.
     """
-    from creative_py.sim.trial import list_case, open_episode
+    from creative_py.sim.trial import open_episode
 
     key = (case, id(world), variant, int(location))
     if key not in _TASK_FACTS:
-        tool = list_case(case, world)["demonstration"]["tool"]
+        tool = demonstration_info(case, world)["tool"]
         with open_episode(case, world, variant, int(location), tool, seed=0) as ep:
             _TASK_FACTS[key] = list(ep.observe().facts)
     return _TASK_FACTS[key]
@@ -246,7 +261,7 @@ def execute_trial(case: str, world: Any, tool: str, variant: str, location: int,
             res = skill()
             if res.status != "ok":
                 return Executed(res.status, f"{name}: {res.reason}", facts,
-                                ep.sim_time, time.perf_counter() - t0)
+                                ep.sim_time(), time.perf_counter() - t0)
         facts = list(ep.observe().facts)
         res = ep.act()
         if res.status not in ("ok",):
@@ -254,16 +269,16 @@ def execute_trial(case: str, world: Any, tool: str, variant: str, location: int,
                 # Blocked while acting: the tool could not carry out the action; the
                 # physics says the goal was not reached with this tool and pose.
                 outcome = "success" if ep.goal_reached() else "failure"
-                return Executed(outcome, f"act: {res.reason}", facts, ep.sim_time,
+                return Executed(outcome, f"act: {res.reason}", facts, ep.sim_time(),
                                 time.perf_counter() - t0)
-            return Executed(res.status, f"act: {res.reason}", facts, ep.sim_time,
+            return Executed(res.status, f"act: {res.reason}", facts, ep.sim_time(),
                             time.perf_counter() - t0)
         ok = ep.goal_reached()
         final = ep.observe()
         return Executed("success" if ok else "failure",
                         "goal reached" if ok else "goal not reached", facts,
-                        ep.sim_time, time.perf_counter() - t0,
-                        perceived_final=getattr(final, "perceived", {}) or {})
+                        ep.sim_time(), time.perf_counter() - t0,
+                        perceived_final=final.perceived_poses() if final.frames else {})
 
 
 # --------------------------------------------------------------------------------------
@@ -372,9 +387,7 @@ class ToolUseLearner:
 
     def task_facts(self, task: TaskState) -> list[Term]:
         """Return the primitive facts the planner needs before a trial: the catalogue
-        of available objects and the task's geometry (no physics is run)."""
-        from creative_py.sim.trial import task_facts
-
+        of available objects and the task's geometry."""
         return [fact_term(f) for f in task_facts(self.case, self.world, task.variant,
                                                   task.location)]
 
