@@ -30,7 +30,7 @@ import json
 import math
 import numbers
 import re
-from typing import Any
+from typing import Any, Sequence
 
 from creative_py.bridge.errors import BridgeProtocolError
 from creative_py.bridge.terms import Compound, PlString, Term, Var
@@ -128,6 +128,31 @@ def encode(value: Any, *, operators: bool = False) -> str:
     return _encode(value, operators, _TOP_PRIORITY)
 
 
+def argument_suffix(index: int) -> str:
+    """Return the suffix :func:`encode_request` gives the variables of argument ``index``."""
+    return f"_A{index}"
+
+
+def encode_request(op: str, args: Sequence[Any], *, separate_variables: bool = True) -> str:
+    """Return the wire text of the request ``op(args...)`` (canonical, as :func:`encode`).
+
+    With ``separate_variables`` (and more than one argument) each argument is its own
+    variable scope: a variable ``X`` of argument ``i`` is written ``X_A<i>``, so terms
+    that came from separate replies (which all name variables ``_G0``, ``_G1``, ...)
+    do not alias. Without it, equal names in different arguments are one variable.
+    """
+    if not args:
+        return _atom(op)
+    if not separate_variables or len(args) == 1:
+        return encode(Compound(op, tuple(args)))
+    parts = [
+        _encode(arg, False, _ARG_PRIORITY, (Compound(op, tuple(args)), i), False,
+                argument_suffix(i))
+        for i, arg in enumerate(args)
+    ]
+    return _atom(op) + "(" + ",".join(parts) + ")"
+
+
 def _where(path: tuple) -> str:
     if not path:
         return "term"
@@ -138,8 +163,9 @@ def _where(path: tuple) -> str:
 
 
 def _encode(value: Any, operators: bool, max_priority: int, path: tuple = (),
-            operand: bool = False) -> str:
-    # ``path`` is (parent, index) of value, turned into text only for an error message.
+            operand: bool = False, suffix: str = "") -> str:
+    # ``path`` is (parent, index) of value, turned into text only for an error message;
+    # ``suffix`` is appended to every variable name (see encode_request).
     if isinstance(value, str):
         if _PLAIN_ATOM.match(value):
             return value
@@ -149,21 +175,21 @@ def _encode(value: Any, operators: bool, max_priority: int, path: tuple = (),
         return text
     if isinstance(value, Compound):
         if len(value.args) == 2:
-            return _encode_binary(value, operators, max_priority, operand)
+            return _encode_binary(value, operators, max_priority, operand, suffix)
         args = ",".join([
-            _encode(arg, operators, _ARG_PRIORITY, (value, i))
+            _encode(arg, operators, _ARG_PRIORITY, (value, i), False, suffix)
             for i, arg in enumerate(value.args)
         ])
         return _atom(value.name) + "(" + args + ")"
     if isinstance(value, list):
         return "[" + ",".join([
-            _encode(item, operators, _ARG_PRIORITY, (value, i))
+            _encode(item, operators, _ARG_PRIORITY, (value, i), False, suffix)
             for i, item in enumerate(value)
         ]) + "]"
     if isinstance(value, float):
         return _float(value, path)
     if isinstance(value, Var):
-        return "_" if value.name is None else value.name
+        return "_" if value.name is None else value.name + suffix
     if isinstance(value, PlString):
         return '"' + _escape(value.value, '"') + '"'
     if isinstance(value, bool):
@@ -195,7 +221,8 @@ def _chain(value: Compound) -> list:
     return items
 
 
-def _encode_binary(value: Compound, operators: bool, max_priority: int, operand: bool) -> str:
+def _encode_binary(value: Compound, operators: bool, max_priority: int, operand: bool,
+                   suffix: str) -> str:
     items = _chain(value)
     links = len(items) - 1
     if operators and value.name in _INFIX:
@@ -205,14 +232,15 @@ def _encode_binary(value: Compound, operators: bool, max_priority: int, operand:
         left_max = priority - 1
         right_max = priority if kind == "xfy" else priority - 1
         sep = ", " if value.name == "," else f" {value.name} "
-        parts = [_encode(item, operators, left_max, (value, 0), True) for item in items[:-1]]
-        parts.append(_encode(items[-1], operators, right_max, (value, 1), True))
+        parts = [_encode(item, operators, left_max, (value, 0), True, suffix)
+                 for item in items[:-1]]
+        parts.append(_encode(items[-1], operators, right_max, (value, 1), True, suffix))
         text = sep.join(parts)
         return "(" + text + ")" if priority > max_priority else text
     functor = _atom(value.name) + "("
-    parts = [functor + _encode(item, operators, _ARG_PRIORITY, (value, 0)) + ","
+    parts = [functor + _encode(item, operators, _ARG_PRIORITY, (value, 0), False, suffix) + ","
              for item in items[:-1]]
-    parts.append(_encode(items[-1], operators, _ARG_PRIORITY, (value, 1)))
+    parts.append(_encode(items[-1], operators, _ARG_PRIORITY, (value, 1), False, suffix))
     parts.append(")" * links)
     return "".join(parts)
 

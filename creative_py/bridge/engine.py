@@ -36,7 +36,7 @@ from pathlib import Path
 from typing import ClassVar, Iterable, Optional, Sequence, Union
 
 from creative_py.bridge import _native
-from creative_py.bridge.codec import decode, encode
+from creative_py.bridge.codec import argument_suffix, decode, encode_request
 from creative_py.bridge.errors import (
     BridgeError,
     BridgeProtocolError,
@@ -49,7 +49,7 @@ from creative_py.bridge.errors import (
     PrologSyntaxError,
     WrongThreadError,
 )
-from creative_py.bridge.terms import Compound, Term, rename_variables
+from creative_py.bridge.terms import Compound, Term, Var, map_variables, variables
 
 log = logging.getLogger(__name__)
 
@@ -247,7 +247,10 @@ class Engine:
         and a variable ``X`` of the second are different Prolog variables, because terms
         obtained from separate replies reuse the names ``_G0``, ``_G1``, ... Pass
         ``share_variables=True`` to make same-named variables of different arguments one
-        variable.
+        variable. On the wire, argument ``i``'s variables carry the suffix ``_A<i>``;
+        request variables that come back in the result get their own names again
+        wherever that name is free (two different ``X`` in one result stay ``X_A0`` and
+        ``X_A1``).
 
         Parameters
         ----------
@@ -272,10 +275,11 @@ class Engine:
         """
         if not isinstance(op, str):
             raise TypeError(f"operation name must be a str, got {type(op).__name__}")
-        if not share_variables and len(args) > 1:
-            args = tuple(rename_variables(a, f"_A{i}") for i, a in enumerate(args))
-        request = Compound(op, args) if args else op
-        reply = decode(self.request_text(encode(request)))
+        separate = not share_variables and len(args) > 1
+        reply = decode(self.request_text(
+            encode_request(op, args, separate_variables=separate)))
+        if separate:
+            reply = _restore_variable_names(reply, args)
         if isinstance(reply, Compound) and len(reply.args) == 1:
             if reply.name == "ok":
                 return reply.args[0]
@@ -520,6 +524,28 @@ class Engine:
         """Return ``dims([Field=Value, ...])`` (metres, degrees where named ``_deg``) or
         ``infeasible(Conflict)`` for a new tool of ``kind`` (``geometry_clp:solve_size/4``)."""
         return self._must("solve_size", kind, list(literals), list(context))
+
+
+def _restore_variable_names(reply: Term, args: Sequence[Term]) -> Term:
+    """Give request variables that come back in ``reply`` their names without the
+    per-argument suffix, wherever that name is not taken by another variable."""
+    originals: dict[str, str] = {}
+    for i, arg in enumerate(args):
+        suffix = argument_suffix(i)
+        for var in variables(arg):
+            originals[var.name + suffix] = var.name
+    names = {var.name for var in variables(reply)}
+    wanted: dict[str, list[str]] = {}
+    for name in names:
+        if name in originals:
+            wanted.setdefault(originals[name], []).append(name)
+    mapping = {
+        sources[0]: target for target, sources in wanted.items()
+        if len(sources) == 1 and target not in names
+    }
+    if not mapping:
+        return reply
+    return map_variables(reply, lambda v: Var(mapping[v.name]) if v.name in mapping else v)
 
 
 def _load_message(term: Term) -> LoadMessage:

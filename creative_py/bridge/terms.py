@@ -33,7 +33,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
-from typing import Iterator, Optional, Sequence, Union
+from typing import Callable, Iterator, Optional, Sequence, Union
 
 _VAR_NAME = re.compile(r"[A-Z_][A-Za-z0-9_]*\Z")
 
@@ -193,19 +193,48 @@ def variables(term: Term) -> list[Var]:
     return list(seen.values())
 
 
+def map_variables(term: Term, fn: Callable[[Var], Term]) -> Term:
+    """Return ``term`` with every variable ``v`` (named or anonymous) replaced by ``fn(v)``.
+
+    Iterative, so a clause with thousands of body literals (a deep ``,``/2 chain) does
+    not reach Python's recursion limit.
+    """
+    out: list = []
+    stack: list = [(term, False)]
+    while stack:
+        node, built = stack.pop()
+        if isinstance(node, Compound):
+            if built:
+                n = len(node.args)
+                args = tuple(out[len(out) - n:]) if n else ()
+                del out[len(out) - n:]
+                out.append(Compound(node.name, args))
+            else:
+                stack.append((node, True))
+                stack.extend((arg, False) for arg in reversed(node.args))
+        elif isinstance(node, list):
+            if built:
+                n = len(node)
+                items = out[len(out) - n:] if n else []
+                del out[len(out) - n:]
+                out.append(items)
+            else:
+                stack.append((node, True))
+                stack.extend((item, False) for item in reversed(node))
+        elif isinstance(node, Var):
+            out.append(fn(node))
+        else:
+            out.append(node)
+    return out[0]
+
+
 def rename_variables(term: Term, suffix: str) -> Term:
     """Return ``term`` with every named variable ``N`` renamed ``N<suffix>``.
 
-    Used to keep the variables of separately obtained terms apart when they travel in
-    one request (two replies may both name a variable ``_G0``).
+    Keeps the variables of separately obtained terms apart when they travel in one
+    request (two replies may both name a variable ``_G0``).
     """
-    if isinstance(term, Var):
-        return term if term.name is None else Var(term.name + suffix)
-    if isinstance(term, Compound):
-        return Compound(term.name, tuple(rename_variables(a, suffix) for a in term.args))
-    if isinstance(term, list):
-        return [rename_variables(a, suffix) for a in term]
-    return term
+    return map_variables(term, lambda v: v if v.name is None else Var(v.name + suffix))
 
 
 def is_ground(term: Term) -> bool:

@@ -2,6 +2,7 @@
 
 :- use_module(library(plunit)).
 :- use_module(library(lists)).
+:- use_module(library(http/json), [json_read/2]).
 :- use_module('../../prolog/api').
 
 test(ping_is_ok_pong, Reply == ok(pong)) :-
@@ -37,6 +38,19 @@ test(fresh_names_skip_names_the_request_uses,
 test(json_escapes_quotes_backslashes_and_control_characters,
      Json == "{\"f\":\"ok\",\"a\":[[\"a\\\"b\\\\c\\n\",{\"s\":\"s\\u0000\"},\"[]\",[]]]}") :-
     api_request("echo(['a\"b\\\\c\\n', \"s\\x0\\\", '[]', []])", Json).
+
+test(control_characters_and_nul_are_escaped) :-
+    atom_codes(A, [0'x, 0, 0'y, 1, 0'z, 31, 0'", 0'\\, 127, 0'é]),
+    string_codes(Str, [0'n, 0]),
+    with_output_to(string(S), api:api_write_json_([A, Str, plain])),
+    assertion(sub_string(S, _, _, _, "x\\u0000y\\u0001z")),
+    assertion(sub_string(S, _, _, _, "n\\u0000")),
+    open_string(S, In),
+    json_read(In, Back),
+    assertion(Back = [AText, json([s=StrText]), plain]),
+    atom_string(A, AText0),
+    assertion(atom_string(AText, AText0)),
+    assertion(atom_string(StrText, Str)).
 
 test(special_floats_written_as_json_literals,
      S == "[NaN,Infinity,-Infinity,-1.5e-300,2,\"a\"]") :-

@@ -278,3 +278,27 @@ def test_a_clause_with_thousands_of_literals_crosses_without_recursion_errors(
     assert head == Compound("p", (X,)) and literals == body
     assert clause_parts(engine.parse(encode(c, operators=True))) == (Compound("p", (X,)), body)
     assert engine.theta_subsumes(Compound("p", (Y,)), c)
+
+
+def test_each_argument_is_its_own_variable_scope() -> None:
+    from creative_py.bridge.codec import encode_request
+
+    term = Compound("g", (X,))
+    assert encode_request("f", [X, term]) == "f(X_A0,g(X_A1))"
+    assert encode_request("f", [X, term], separate_variables=False) == "f(X,g(X))"
+    assert encode_request("f", [term]) == "g(X)".join(["f(", ")"])
+    assert encode_request("ping", []) == "ping"
+
+
+def test_request_variables_come_back_with_their_own_names(engine: Engine) -> None:
+    c = clause(Compound("p", (Var("T"),)), [Compound("q", (Var("T"), Var("U")))])
+    example = clause(Compound("p", ("a",)), [Compound("r", ("a",))])
+    assert engine.clause_violations(c, example) == [Compound("q", (Var("T"), Var("U")))]
+
+
+def test_two_different_variables_of_one_name_stay_apart_in_a_result() -> None:
+    from creative_py.bridge.engine import _restore_variable_names
+
+    reply = Compound("ok", ([Var("X_A0"), Var("X_A1"), Var("Y_A1"), Var("_G0")],))
+    restored = _restore_variable_names(reply, [Var("X"), Compound("f", (Var("X"), Var("Y")))])
+    assert restored.args[0] == [Var("X_A0"), Var("X_A1"), Var("Y"), Var("_G0")]

@@ -179,10 +179,12 @@ def reference_lgg(s: Any, t: Any, table: dict) -> Any:
 
 
 def canonical(t: Any, names: dict) -> Any:
-    """Rename the fresh variables (not X or Y, which come from the inputs) by first occurrence."""
+    """Rename every variable by first occurrence: equal results are then variants.
+
+    (lgg.pl returns a term that shares no variable with its inputs, so an input
+    variable comes back renamed; only the pattern of variables is compared.)
+    """
     if isinstance(t, Var):
-        if t.name in ("X", "Y"):
-            return t
         return names.setdefault(t.name, Var(f"V{len(names)}"))
     if isinstance(t, Compound):
         return Compound(t.name, tuple(canonical(a, names) for a in t.args))
