@@ -457,8 +457,10 @@ class HookEpisode:
         # Start with the gripper pointing +x above the stand's near end, prong-flat roll,
         # in the family of arm postures that works at the tube's mouth (found first,
         # farthest from the joint limits), so that Cartesian moves carry it over.
+        # Solved at roll 0, the margin rule centres the wrist's roll joint, so that
+        # both flat rolls (+-pi/2) stay within its limits.
         work = ((tb.mouth_x - 0.25, tb.axis_y, self.floor_z + tb.inner_height / 2),
-                gripper_orientation(lie_roll))
+                gripper_orientation(0.0))
         q_work = self.robot.solve_ik_global(work)
         home = ((st.butt_x - 0.1, st.axis_y, self._travel_z()), gripper_orientation(lie_roll))
         q = self.robot.solve_ik_global(home, keep=1, seeds=[q_work] if q_work else ())
