@@ -99,7 +99,10 @@ class Fields:
         self._used.add(name)
         if name not in self.data:
             if default is _MISSING:
-                raise self.error(name, "missing")
+                spare = [k for k in self.data if k not in self._used]
+                close = difflib.get_close_matches(name, spare, n=1, cutoff=0.6)
+                hint = f" (is {close[0]!r} a typo for it?)" if close else ""
+                raise self.error(name, "missing" + hint)
             return default
         return self.data[name]
 

@@ -67,15 +67,25 @@ def baxter_share_dir() -> Path:
                             "(pip install --no-deps example-robot-data)")
 
 
+_URDF_EDITS = "v2: absolute meshes, base inertial, optional visuals"
+"""Changes with the edits below, so that a stale cached URDF is never reused."""
+
+
 def baxter_urdf(visuals: bool = False) -> Path:
     """Return a cached Baxter URDF with absolute mesh paths, with or without visuals."""
     share = baxter_share_dir()
     src = share / "example-robot-data" / "robots" / "baxter_description" / "urdf" / "baxter.urdf"
     text = src.read_text()
-    key = hashlib.sha1((str(src) + text + str(visuals)).encode()).hexdigest()[:12]
+    key = hashlib.sha1((str(src) + text + str(visuals) + _URDF_EDITS).encode()).hexdigest()[:12]
     out = Path(tempfile.gettempdir()) / f"creative_py_baxter_{key}.urdf"
     if not out.is_file():
         text = text.replace("package://", str(share) + "/")
+        # The fixed base link has no inertial element; give it one so that pybullet
+        # does not print a warning on every load (its mass is irrelevant: it is fixed).
+        text = text.replace('<link name="base">\n  </link>',
+                            '<link name="base"><inertial><mass value="0.001"/><inertia '
+                            'ixx="1e-6" ixy="0" ixz="0" iyy="1e-6" iyz="0" izz="1e-6"/>'
+                            '</inertial></link>')
         if not visuals:
             text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
         tmp = out.with_suffix(f".{id(text)}.tmp")

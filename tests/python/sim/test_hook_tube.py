@@ -1,0 +1,131 @@
+"""The hook-and-tube world: frames, facts, and what the physics decides.
+
+The physics is the oracle: these tests run real trials (Baxter, IK, contacts) and check
+the discrimination the learner relies on, and that trials are deterministic.
+"""
+
+import math
+
+import pytest
+
+from creative_py.mesh.spec import HookSpec
+from creative_py.sim.hook_tube import (HookPose, catalogue_facts, prong_centre, roll_of,
+                                       tool_orientation)
+from creative_py.sim.trial import TRIAL_OUTCOMES, open_episode
+
+from _hook_runs import hook_trial, hook_world
+
+
+
+@pytest.mark.parametrize("side", ["left", "right", "none"])
+@pytest.mark.parametrize("roll", [-math.pi / 2, -0.3, 0.0, 1.0, math.pi / 2])
+def test_roll_is_measured_from_the_prong(side, roll):
+    spec = HookSpec("h", 0.3, hook_side=side, hook_length=0.0 if side == "none" else 0.03)
+    assert roll_of(spec, tool_orientation(spec, roll)) == pytest.approx(roll, abs=1e-6)
+
+
+def test_roll_zero_points_the_prong_down_and_half_pi_to_the_left():
+    import pybullet as pb
+
+    for side in ("left", "right"):
+        spec = HookSpec("h", 0.3, hook_side=side)
+        for roll, direction in ((0.0, (0, 0, -1)), (math.pi / 2, (0, 1, 0))):
+            c = prong_centre(spec)
+            pos = pb.multiplyTransforms((0, 0, 0), tool_orientation(spec, roll), c, (0, 0, 0, 1))[0]
+            lateral = (0.0, pos[1], pos[2])
+            norm = math.hypot(pos[1], pos[2])
+            assert tuple(v / norm for v in lateral) == pytest.approx(direction, abs=1e-6)
+
+
+def test_catalogue_facts_follow_the_vocabulary():
+    w = hook_world()
+    facts = catalogue_facts(w.tool("hook_a2"))
+    assert ("object_kind", "hook_a2", "hook") in facts
+    assert ("handle_length_m", "hook_a2", 0.35) in facts
+    assert ("hook_side_is", "hook_a2", "right") in facts
+    stick = catalogue_facts(w.tool("stick_a5"))
+    assert ("object_kind", "stick_a5", "stick") in stick
+    assert ("hook_side_is", "stick_a5", "none") in stick
+
+
+@pytest.mark.sim
+def test_observe_gives_perceived_cube_proprioception_and_catalogue():
+    w = hook_world()
+    with open_episode("hook", w, "standard", 2, "hook_b2", seed=0) as ep:
+        obs = ep.observe()
+        names = {f[0] for f in obs.facts}
+        assert {"pose", "size", "tube_mouth", "tube_length_m", "tube_inner_m",
+                "object_kind", "handle_length_m"} <= names
+        assert "held" not in names
+        seen = obs.perceived_poses()["cube1"]
+        true = obs.truth["cube1"]
+        assert math.dist(seen[:3], true[:3]) < 0.004  # perception, not ground truth
+        assert seen != true
+        assert len(obs.frames) == 1
+        assert sum(1 for f in obs.facts if f[0] == "object_kind") == len(w.tools)
+        assert ep.pick_up().ok
+        obs = ep.observe()
+        assert ("held", "hook_b2") in obs.facts
+        roll = next(f[2] for f in obs.facts if f[0] == "tool_roll")
+        assert roll == pytest.approx(-math.pi / 2, abs=0.05)  # lying prong-flat
+
+
+@pytest.mark.sim
+def test_medium_handle_succeeds_in_the_standard_tube():
+    r = hook_trial("hook_a2", "standard", 1)
+    assert r.outcome == "success", r.reason
+    assert r.true_final["cube1"][0] < hook_world().tube.mouth_x
+    assert r.perceived_final is not None and "cube1" in r.perceived_final
+
+
+@pytest.mark.sim
+def test_short_handle_cannot_reach_behind_the_cube():
+    r = hook_trial("hook_a1", "standard", 1)
+    assert r.outcome in ("blocked", "failure"), r
+    assert r.true_final["cube1"][0] > hook_world().tube.mouth_x
+
+
+@pytest.mark.sim
+def test_medium_handle_fails_in_the_long_tube_and_a_long_one_succeeds():
+    assert hook_trial("hook_a2", "long_tube", 1).outcome in ("blocked", "failure")
+    r = hook_trial("hook_a4", "long_tube", 1)
+    assert r.outcome == "success", r.reason
+
+
+@pytest.mark.sim
+@pytest.mark.parametrize("pose", [(0.03, 0.0, math.pi / 2),    # prong left flat
+                                  (-0.04, 0.0, 0.0)])          # lowered in front
+def test_wrong_pose_fails(pose):
+    r = hook_trial("hook_a2", "standard", 1, pose)
+    assert r.outcome == "failure", r
+    assert r.true_final["cube1"][0] > hook_world().tube.mouth_x
+
+
+@pytest.mark.sim
+def test_same_seed_same_result_bit_for_bit():
+    from creative_py.sim.trial import run_trial
+
+    first = hook_trial("hook_a2", "standard", 1)
+    again = run_trial("hook", hook_world(), "hook_a2", "standard", 1, seed=0)
+    assert again.outcome == first.outcome
+    assert again.true_final == first.true_final
+    assert again.perceived_final == first.perceived_final
+    assert again.steps == first.steps
+
+
+@pytest.mark.slow
+@pytest.mark.sim
+@pytest.mark.parametrize("variant", ["standard", "long_tube"])
+def test_full_table_every_trial_has_a_physical_outcome(variant):
+    w = hook_world()
+    for tool in w.tools:
+        for loc in range(1, len(w.locations) + 1):
+            r = hook_trial(tool, variant, loc)
+            assert r.outcome in TRIAL_OUTCOMES
+            if w.tools[tool].is_stick:
+                assert r.outcome != "success", (tool, variant, loc)
+            assert r.to_json()
+
+
+def test_hook_pose_is_a_plain_triple():
+    assert tuple(HookPose(0.03, 0.0, 0.0)) == (0.03, 0.0, 0.0)
