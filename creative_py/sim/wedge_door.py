@@ -74,7 +74,8 @@ import pybullet as pb
 
 from creative_py.mesh.spec import BlockSpec, Box, spec_from_dict
 from creative_py.sim.baxter import Baxter, BaxterConfig, MoveResult
-from creative_py.sim.bodies import Surface, frame_pose, spawn_parts, spawn_spec, yaw_of
+from creative_py.sim.bodies import (Surface, frame_pose, set_frame_pose, spawn_parts,
+                                    spawn_spec, yaw_of)
 from creative_py.sim.core import Pose, Sim
 from creative_py.sim.trial import Fact, Observation, SkillOutcome, TrialResult
 from creative_py.world import (WORLDS_ROOT, Fields, PhysicsSettings, WorldFileError,
@@ -112,8 +113,10 @@ class DoorSpec:
     """The door: hinge (x, y) and closed heading (rad), panel size (m), mass (kg).
 
     ``damping`` is the joint damping (N m s/rad), ``friction`` the panel's pybullet
-    friction, ``open_angle`` the angle (rad) at which the door is held until release,
-    ``hold_force`` the torque (N m) of the motor that holds it there.
+    friction, ``open_angle`` the angle (rad) at which the trial starts (the door is
+    released from rest there), ``place_angle`` the wider angle (rad) at which the door
+    is held while the arm works, ``swing_speed`` (rad/s) how fast the holder swings it
+    from there to ``open_angle``, ``hold_force`` the holder's torque (N m).
     """
 
     name: str
@@ -127,16 +130,16 @@ class DoorSpec:
     damping: float
     friction: float
     open_angle: float
+    place_angle: float
+    swing_speed: float
     hold_force: float
 
 
 @dataclass(frozen=True)
 class TraySpec:
-    """Where the objects lie: slot centre = origin + column * column_step + row * row_step."""
+    """Where the episode's object lies at the start: block-frame (x, y) in m, yaw in rad."""
 
-    origin: tuple[float, float]
-    column_step: tuple[float, float]
-    row_step: tuple[float, float]
+    position: tuple[float, float]
     yaw: float
 
 
@@ -176,11 +179,10 @@ class HeldCriterion:
 
 @dataclass(frozen=True)
 class WorldObject:
-    """An available object: its spec, set name, tray slot (row, column), friction."""
+    """An available object: its spec, set name and pybullet friction."""
 
     spec: BlockSpec
     set: str
-    slot: tuple[int, int]
     friction: float
 
 
@@ -200,6 +202,7 @@ class WedgeWorld:
     directory: Path
     physics: PhysicsSettings
     arm_physics: PhysicsSettings
+    ground_z: float
     stage: StageSpec
     door: DoorSpec
     tray: TraySpec
@@ -225,13 +228,6 @@ class WedgeWorld:
             raise KeyError(f"unknown variant {name!r}; variants: {', '.join(self.variants)}")
         return self.variants[name]
 
-    def slot_pose(self, name: str) -> tuple[float, float, float]:
-        """Return (x, y, yaw) of object ``name``'s block frame on the tray (m, rad)."""
-        row, col = self.object(name).slot
-        t = self.tray
-        return (t.origin[0] + col * t.column_step[0] + row * t.row_step[0],
-                t.origin[1] + col * t.column_step[1] + row * t.row_step[1], t.yaw)
-
 
 def _read_fields(f: Fields, spec: dict[str, Any]) -> dict[str, Any]:
     """Read the fields named in ``spec`` (name -> "str" | "float" | "int" | n for a vector)."""
@@ -256,7 +252,7 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
 
     Raises :class:`~creative_py.world.WorldFileError` naming the file and the field
     for a missing file or field, a wrong type, an unknown field (a typo) or a value
-    that makes no sense (a negative size, two objects in one tray slot).
+    that makes no sense (a negative size, an open angle beyond pi).
     """
     from creative_py.perception.noise import NoiseModel
     from creative_py.sim.camera import cameras_from_tables
@@ -278,13 +274,15 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
     stage = StageSpec(**_read_fields(sf.table("stage"), {
         "name": "str", "centre": 2, "size": 2, "top_z": "float", "thickness": "+float",
         "friction": "+float"}))
+    gf = sf.table("ground")
+    ground_z = gf.float("top_z")
+    gf.done()
     door = DoorSpec(**_read_fields(sf.table("door"), {
         "name": "str", "hinge": 2, "closed_heading": "float", "width": "+float",
         "thickness": "+float", "height": "+float", "bottom_gap": "+float", "mass": "+float",
         "damping": "+float", "friction": "+float", "open_angle": "float",
-        "hold_force": "+float"}))
-    tray = TraySpec(**_read_fields(sf.table("tray"), {
-        "origin": 2, "column_step": 2, "row_step": 2, "yaw": "float"}))
+        "place_angle": "float", "swing_speed": "+float", "hold_force": "+float"}))
+    tray = TraySpec(**_read_fields(sf.table("tray"), {"position": 2, "yaw": "float"}))
     handling = Handling(**_read_fields(sf.table("handling"), {
         "carry_height": "+float", "grasp_clearance": "+float", "release_height": "+float",
         "place_gripper_yaw": "float", "retreat": 3, "speed": "+float",
@@ -310,17 +308,18 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
     if not 0.0 < door.open_angle < math.pi:
         raise WorldFileError(f"{s}: field 'door.open_angle': must lie in (0, pi) rad, "
                              f"got {door.open_angle}")
+    if not door.open_angle <= door.place_angle < math.radians(170):
+        raise WorldFileError(f"{s}: field 'door.place_angle': must lie in [open_angle, "
+                             f"170 deg) rad, got {door.place_angle}")
     # objects.toml
     o = world_file(d, "objects.toml")
     of = Fields(load_toml(o), o)
     objects: dict[str, WorldObject] = {}
-    slots: dict[tuple[int, int], str] = {}
     for tf in of.tables("object"):
         data = dict(tf.data)
         obj_set = tf.str("set")
-        slot = tf.vec("slot", 2)
         friction = tf.float("friction", minimum=0.0)
-        for extra in ("set", "slot", "friction"):
+        for extra in ("set", "friction"):
             data.pop(extra)
         try:
             spec = spec_from_dict(data, source=f"{o}: {tf.prefix}")
@@ -330,13 +329,7 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
             raise tf.error("kind", "the wedge world takes block objects only")
         if spec.name in objects:
             raise tf.error("name", f"object name {spec.name!r} is used twice")
-        if any(v < 0 or v != int(v) for v in slot):
-            raise tf.error("slot", f"must be [row, column] with integers >= 0, got {list(slot)}")
-        key = (int(slot[0]), int(slot[1]))
-        if key in slots:
-            raise tf.error("slot", f"tray slot {list(key)} is taken by {slots[key]!r}")
-        slots[key] = spec.name
-        objects[spec.name] = WorldObject(spec, obj_set, key, friction)
+        objects[spec.name] = WorldObject(spec, obj_set, friction)
     of.done()
     if not objects:
         raise WorldFileError(f"{o}: field 'object': at least one [[object]] is needed")
@@ -372,7 +365,8 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
                                         df.float("yaw")))
     df.done()
     mf.done()
-    return WedgeWorld(directory=d, physics=physics, arm_physics=arm_physics, stage=stage, door=door, tray=tray,
+    return WedgeWorld(directory=d, physics=physics, arm_physics=arm_physics, ground_z=ground_z,
+                      stage=stage, door=door, tray=tray,
                       handling=handling, cameras=cameras, noise=noise, objects=objects,
                       variants=variants, default_variant=default_variant, held=held,
                       demonstration=demo)
@@ -448,10 +442,14 @@ class WedgeEpisode:
     """One door-and-wedge scene in its own simulator, driven skill by skill.
 
     Build it with :func:`open_wedge_episode` (or :func:`creative_py.sim.trial.open_episode`).
+    ``with_robot=False`` builds the scene without Baxter, for the trainer's placing
+    (:meth:`trainer_place`) and the door's physics alone; the robot's skills then
+    raise ``RuntimeError``.
     """
 
     def __init__(self, world: WedgeWorld, variant: str, location: int, object_name: str,
-                 seed: int = 0, gui: bool = False, images_dir: Path | None = None) -> None:
+                 seed: int = 0, gui: bool = False, images_dir: Path | None = None,
+                 with_robot: bool = True) -> None:
         self.variant = world.variant(variant)
         if location != 1:
             raise KeyError(f"unknown location {location!r}; the wedge task has one location: 1")
@@ -465,6 +463,8 @@ class WedgeEpisode:
         self.holding = False
         self.door_outcome: DoorOutcome | None = None
         self.robot_parked = False
+        self.with_robot = with_robot
+        self.robot = None
         self._time_before = 0.0
         self._steps_at_switch = 0
         self.sim = Sim(world.arm_physics, gui=gui)
@@ -478,6 +478,9 @@ class WedgeEpisode:
     def _build(self) -> None:
         w, sim = self.world, self.sim
         st = w.stage
+        spawn_parts(sim, [Box((0, 0, 0), (6.0, 6.0, 0.1))],
+                    ((0.0, 0.0, w.ground_z - 0.05), (0, 0, 0, 1)), 0.0,
+                    Surface(st.friction, (0.35, 0.35, 0.35, 1.0)))
         spawn_parts(sim, [Box((0, 0, 0), (st.size[0], st.size[1], st.thickness))],
                     ((st.centre[0], st.centre[1], st.top_z - st.thickness / 2), (0, 0, 0, 1)),
                     0.0, Surface(st.friction, (0.55, 0.45, 0.35, 1.0)))
@@ -485,20 +488,22 @@ class WedgeEpisode:
         # Only the episode's object lies on the tray (every object would cost physics
         # time and none of the others takes part).
         item = self.item
-        x, y, yaw = w.slot_pose(self.spec.name)
+        (x, y), yaw = w.tray.position, w.tray.yaw
         self.body = spawn_spec(sim, item.spec, ((x, y, st.top_z + 0.0005),
                                                 tuple(pb.getQuaternionFromEuler((0, 0, yaw)))),
                                Surface(item.friction, SET_COLOURS.get(item.set,
                                                                       (0.6, 0.6, 0.6, 1.0))))
         h = w.handling
-        self.robot = Baxter(sim, BaxterConfig(speed=h.speed,
-                                              steps_per_waypoint=h.steps_per_waypoint))
-        home = (h.retreat, gripper_down(h.place_gripper_yaw))
-        q = self.robot.solve_ik_global(home)
-        if q is None:
-            raise WorldFileError(f"{w.directory / 'scene.toml'}: field 'handling.retreat': "
-                                 f"the arm cannot reach {list(h.retreat)} with the gripper down")
-        self.robot.reset_posture(q)
+        if self.with_robot:
+            self.robot = Baxter(sim, BaxterConfig(speed=h.speed,
+                                                  steps_per_waypoint=h.steps_per_waypoint))
+            home = (h.retreat, gripper_down(h.place_gripper_yaw))
+            q = self.robot.solve_ik_global(home)
+            if q is None:
+                raise WorldFileError(f"{w.directory / 'scene.toml'}: field 'handling.retreat': "
+                                     f"the arm cannot reach {list(h.retreat)} with the "
+                                     "gripper down")
+            self.robot.reset_posture(q)
         self._run(0.2)  # let the object settle
 
     def _use_physics(self, physics: PhysicsSettings) -> None:
@@ -538,11 +543,23 @@ class WedgeEpisode:
         pb.changeDynamics(body, 0, lateralFriction=d.friction, jointDamping=d.damping,
                           linearDamping=0.0, angularDamping=0.0, jointLowerLimit=0.0,
                           jointUpperLimit=math.radians(170), physicsClientId=c)
-        pb.resetJointState(body, 0, d.open_angle, 0.0, physicsClientId=c)
-        pb.setJointMotorControl2(body, 0, pb.POSITION_CONTROL, targetPosition=d.open_angle,
+        pb.resetJointState(body, 0, d.place_angle, 0.0, physicsClientId=c)
+        pb.setJointMotorControl2(body, 0, pb.POSITION_CONTROL, targetPosition=d.place_angle,
                                  force=d.hold_force, physicsClientId=c)
         self.door_released = False
+        self.door_at_start = d.place_angle == d.open_angle
         return body
+
+    def _swing_door_to_start(self) -> None:
+        """Swing the held door from ``place_angle`` to ``open_angle`` and hold it there."""
+        if self.door_at_start:
+            return
+        d, c = self.world.door, self.sim.client
+        pb.setJointMotorControl2(self.door_body, 0, pb.POSITION_CONTROL,
+                                 targetPosition=d.open_angle, force=d.hold_force,
+                                 maxVelocity=d.swing_speed, physicsClientId=c)
+        self._run(abs(d.place_angle - d.open_angle) / d.swing_speed + 0.3)
+        self.door_at_start = True
 
     # ------------------------------------------------------------- perception
     def door_angle(self) -> float:
@@ -619,17 +636,23 @@ class WedgeEpisode:
         return self.robot.move_to((tuple(pos), gripper_down(yaw)), speed=speed,
                                   watch=[self.body])
 
+    def _need_robot(self, skill: str) -> None:
+        if self.robot is None or self.robot_parked:
+            raise RuntimeError(f"{skill}: this episode has no robot (built with_robot=False, "
+                               "or the robot was parked for the door's release)")
+
     def _grip_z(self, base_z: float) -> float:
         """Return the gripper height that holds the object's base at ``base_z`` (m)."""
         return base_z + self.spec.height + self.world.handling.grasp_clearance
 
     def pick_up(self) -> SkillOutcome:
         """Grip the object from above on the tray and lift it to the carrying height."""
+        self._need_robot("pick_up")
         if self.holding:
             return SkillOutcome("ok", "already holding the object")
         w, h = self.world, self.world.handling
-        x, y, _ = w.slot_pose(self.spec.name)
         base, _ = frame_pose(self.sim, self.body)
+        x, y = base[0], base[1]
         yaw = h.place_gripper_yaw
         carry_z = self._grip_z(w.stage.top_z + h.carry_height)
         for target in ((x, y, carry_z), (x, y, self._grip_z(base[2]))):
@@ -658,9 +681,11 @@ class WedgeEpisode:
     def position_tool(self, pose: WedgePose | tuple) -> SkillOutcome:
         """Carry the held object and put it on the floor at ``pose`` relative to the door.
 
-        The door's angle comes from its joint sensor. The arm lowers the object until
-        its base is ``release_height`` above the floor, lets go, waits ``settle_time``
-        and retreats out of the door's sweep. Returns ``blocked`` if the object or the
+        ``pose`` is relative to the door at ``open_angle``, where the trial starts. The
+        door is held wider open (``place_angle``) while the arm works: the arm lowers
+        the object until its base is ``release_height`` above the floor, lets go, waits
+        ``settle_time`` and retreats out of the door's sweep; then the door holder swings
+        the door to ``open_angle``. Returns ``blocked`` if the object or the
         arm hits something on the way, ``unreachable`` if the arm cannot follow.
         """
         pose = WedgePose(*(float(v) for v in pose))
@@ -668,10 +693,11 @@ class WedgeEpisode:
             raise ValueError(f"pose numbers must be finite, got {pose}")
         if pose.r <= 0:
             raise ValueError(f"wedge pose r must be positive metres, got {pose.r}")
+        self._need_robot("position_tool")
         if not self.holding:
             return SkillOutcome("blocked", "position_tool: no object is held (pick_up first)")
         w, h = self.world, self.world.handling
-        x, y, yaw = place_from_pose(w.door, self.door_angle(), self.spec.length, pose)
+        x, y, yaw = place_from_pose(w.door, w.door.open_angle, self.spec.length, pose)
         top = w.stage.top_z
         above = self._gripper_for(x, y, top + h.carry_height, yaw)
         down = self._gripper_for(x, y, top + h.release_height, yaw)
@@ -693,6 +719,37 @@ class WedgeEpisode:
             res = self._move(target, h.place_gripper_yaw)
             if not res.ok:
                 return SkillOutcome(res.status, f"position_tool: retreat: {res.reason}")
+        self._swing_door_to_start()
+        why = self.sim.blow_up(self.body)
+        if why:
+            return SkillOutcome("invalid", f"position_tool: {why}")
+        return SkillOutcome("ok")
+
+    def trainer_place(self, pose: WedgePose | tuple) -> SkillOutcome:
+        """Put the object on the floor at ``pose`` by hand, as the trainer does.
+
+        The demonstration's placing is done by the trainer, not the robot: the door is
+        swung to ``open_angle``, the object appears ``release_height`` above the floor at
+        the pose and settles for ``settle_time`` seconds; the arm stays at its retreat
+        point. Also the quick way to test the door's physics without the arm.
+        """
+        pose = WedgePose(*(float(v) for v in pose))
+        if not all(math.isfinite(v) for v in pose) or pose.r <= 0:
+            raise ValueError(f"pose numbers must be finite with r > 0 metres, got {pose}")
+        if self.holding:
+            self.robot.release()
+            self.holding = False
+        w = self.world
+        self._swing_door_to_start()
+        x, y, yaw = place_from_pose(w.door, w.door.open_angle, self.spec.length, pose)
+        set_frame_pose(self.sim, self.body,
+                       ((x, y, w.stage.top_z + w.handling.release_height),
+                        tuple(pb.getQuaternionFromEuler((0, 0, yaw)))))
+        self._use_physics(w.physics)
+        self._run(w.handling.settle_time)
+        why = self.sim.blow_up(self.body)
+        if why:
+            return SkillOutcome("invalid", f"trainer_place: {why}")
         return SkillOutcome("ok")
 
     def act(self) -> SkillOutcome:
@@ -706,10 +763,11 @@ class WedgeEpisode:
         w, c = self.world, self.sim.client
         crit, door, body = w.held, self.door_body, self.body
         tau = self.variant.closing_torque
-        in_sweep = self._robot_in_sweep()
+        in_sweep = self._robot_in_sweep() if self.robot is not None else ""
         if in_sweep:
             return SkillOutcome("blocked", f"release_door: the robot's {in_sweep} is in the "
                                 "door's sweep")
+        self._swing_door_to_start()
         self._park_robot()
         self._use_physics(w.physics)
         self.door_released = True
@@ -770,7 +828,7 @@ class WedgeEpisode:
         so the door and the object move exactly as with the robot present, while each
         physics step costs 0.03 ms instead of 0.7 ms (Baxter's 56 joints).
         """
-        if self.robot_parked:
+        if self.robot is None or self.robot_parked:
             return
         pb.removeBody(self.robot.body, physicsClientId=self.sim.client)
         self.robot.close()
@@ -799,10 +857,11 @@ class WedgeEpisode:
 
 
 def open_wedge_episode(world: WedgeWorld, variant: str, location: int, object_name: str,
-                       seed: int = 0, gui: bool = False,
-                       images_dir: Path | None = None) -> WedgeEpisode:
+                       seed: int = 0, gui: bool = False, images_dir: Path | None = None,
+                       with_robot: bool = True) -> WedgeEpisode:
     """Return a new :class:`WedgeEpisode` (close it when done)."""
-    return WedgeEpisode(world, variant, location, object_name, seed, gui, images_dir)
+    return WedgeEpisode(world, variant, location, object_name, seed, gui, images_dir,
+                        with_robot)
 
 
 def run_wedge_trial(world: WedgeWorld, object_name: str, variant: str | None = None,
@@ -850,11 +909,11 @@ class WedgeDoorCase:
         return WedgePose(*values)
 
     def listing(self, world: WedgeWorld) -> dict[str, Any]:
-        """Return objects (spec fields, set, slot), locations, variants and default pose."""
+        """Return objects (spec fields, set, friction), locations, variants and default pose."""
         objects = {}
         for n, item in world.objects.items():
             d = asdict(item.spec)
-            d.update(set=item.set, slot=list(item.slot), friction=item.friction)
+            d.update(set=item.set, friction=item.friction)
             objects[n] = d
         return {
             "case": self.name,
