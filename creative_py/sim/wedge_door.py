@@ -9,22 +9,28 @@ its closer pushes it shut).
 Arrangement (world frame = Baxter's base frame, metres, radians)
 ----------------------------------------------------------------
 Baxter cannot bring an object down to the real floor (z = -0.926), so the door stands
-on a raised stage whose top is at z = -0.10: the door room's floor ``floor1``. The
-hinge is front-left of the robot at (0.60, 0.40); closed, the door runs from the hinge
-towards the robot's right (heading ``closed_heading`` = -105 deg). The door opens
-counter-clockwise seen from above (door angle A >= 0, heading = closed_heading + A),
-is held open at A = 0.8 rad until ``act`` and then closes clockwise, towards the
-robot. The zone between the open door and the closed door's line is within reach of
-the right arm with the gripper pointing down; the tray with the objects and the arm's
-retreat point lie outside the door's sweep. A door frame stops the door at A = 0
-(a joint limit).
+on a raised stage whose top is at z = -0.10: the door room's floor ``floor1`` (the real
+floor is there too, for objects pushed off the stage). The hinge is front-left of the
+robot at (0.52, 0.42); closed, the door runs from the hinge towards the robot's right
+(heading ``closed_heading`` = -105 deg). The door opens counter-clockwise seen from
+above (door angle A >= 0, heading = closed_heading + A) and closes clockwise, towards
+the robot. A door frame stops it at A = 0 (a joint limit).
+
+A door holder keeps the door at ``place_angle`` (69 deg) while the arm works, because
+the hand (about 10 cm across) would hit a door 3 cm from the object; after the arm's
+retreat it swings the door to ``open_angle`` (40 deg), where the trial starts: ``act``
+releases it from rest there. The zone between the door at 40 deg and the closed door's
+line is within reach of the right arm with the gripper pointing down; the tray and the
+arm's retreat point lie outside the door's sweep, and before the release every robot
+link is checked against the sweep (a link in it makes ``act`` return ``blocked``).
 
 Pose of the object relative to the door, :class:`WedgePose` ``(r, gap, yaw)``
 -----------------------------------------------------------------------------
 * ``r`` (m): distance from the hinge axis to the object's centre.
 * ``gap`` (m): arc length, along the door's closing sweep at radius ``r``, from the
-  open door's face to the object's tip: with Phi the heading of (object - hinge)
-  relative to the closed door, ``gap = r (A - Phi) - length / 2 - thickness / 2``.
+  face of the door at ``open_angle`` to the object's tip: with Phi the heading of
+  (object - hinge) relative to the closed door,
+  ``gap = r (A - Phi) - length / 2 - thickness / 2``.
 * ``yaw`` (rad): the object's heading (its block frame's +x, the tip of a prism) minus
   the heading from the object towards the closing door (the counter-clockwise tangent,
   closed_heading + Phi + pi / 2), wrapped to (-pi, pi]: 0 = tip pointing at the door.
@@ -33,28 +39,47 @@ Pose of the object relative to the door, :class:`WedgePose` ``(r, gap, yaw)``
 The physics decides
 -------------------
 After the release a closing torque (``closing_torque`` of the variant) acts on the door
-every step for ``held.duration`` seconds. The door is *held* (goal ``door_held(door1)``)
-when it touched the object, closed less than ``max_close_deg`` after the first contact
-and still stands open at least ``min_open_deg``. Nothing here looks at the object's
-shape: a wedge holds because the door's push on its slope presses it onto the floor.
+every step for ``held.duration`` (4 s). The door is *held* (goal ``door_held(door1)``)
+when it touched the object, closed less than ``max_close_deg`` (2 deg) after the first
+contact and still stands open at least ``min_open_deg`` (20 deg: a door that closed
+most of the way before meeting the object is not held open). Nothing here looks at the
+object's shape: a wedge holds because the door's push on its slope presses it onto the
+floor; a box or a cylinder slides, a reversed prism is pushed by its vertical back.
 
-Settings and why (measured, 1/960 s, 100 solver iterations; at 1/240 s a light wedge
-sinks into the floor and flips): door 0.8 x 0.04 x 2.0 m, 15 kg, 1 cm bottom gap, joint
-damping 0.5, default motor freed; stage friction 0.3, objects 1.0 (pybullet multiplies
-the two). The door edge's friction is 0.0 (a low-friction glide strip): with 0.1 the
-door's friction on the slope adds about 6 degrees to the wedge's effective angle and a
-10 cm x 3 cm wedge slips at 1 N m (measured 2.6 degrees of closing), so that only the
-15 cm wedge holds any door. Door-only measurements (wedge 5 cm wide, r = 0.6 m,
-gap 0.03 m, tip towards the door), degrees the door closed after first contact:
+Settings and why (measured): 1/960 s and 100 solver iterations while an object rests
+on the floor (at 1/240 s a light wedge sinks into the floor and flips), 1/240 s while
+the arm carries it. Door 0.8 x 0.04 x 2.0 m, 1 cm bottom gap, joint damping 0.5,
+default motor freed; stage friction 0.3, objects 1.0 (pybullet multiplies the two).
+The door edge's friction is 0.0 (a low-friction glide strip): with 0.1 the door's
+friction on the slope adds about 6 degrees to the wedge's effective angle and a
+10 cm x 3 cm wedge slips at 1 N m (2.6 degrees), so that only the 15 cm wedge would
+hold any door. The medium prisms (slope 16.7 deg) sit at the floor's friction angle
+(atan 0.3 = 16.7 deg), where the wedge's weight decides: they hold the 1 N m door and
+slip under 8 N m (a2: 3 deg) to 20 N m (a2: 35 deg, b2: 12 deg), so the big door is a
+30 kg door with a 20 N m closer; the long prisms hold it with 0.5 deg. Degrees the
+door closed after first contact, object placed by the trainer at the demonstration's
+pose (r 0.6 m, gap 0.03 m, tip towards the door); H = held (see also
+``bench/results/sim_wedge.json`` for the same table with the arm placing):
 
-======================== ========== ==========
-wedge (length x height)   1 N m      5 N m
-======================== ========== ==========
-15 x 3 cm (11 deg)        0.3 held   0.5 held
-10 x 3 cm (17 deg)        0.4 held   12.7
-6 x 3 cm (27 deg)         77         547
-10 x 3 cm, tip away       97         573
-======================== ========== ==========
+============================== ============ ============
+object (length x width x h)     standard      big_door
+============================== ============ ============
+wedge_a1 prism 5 x 5 x 3 cm     36.1 shut    36.1 shut
+wedge_a2 prism 10 x 5 x 3 cm    0.4 H        34.9 shut
+wedge_a3 prism 15 x 5 x 3 cm    0.3 H        0.5 H
+box_a1 8 x 5 x 3 cm             37.5 shut    37.4 shut
+cylinder_a1 5 x 3 cm            37.3 shut    37.2 shut
+wedge_b1 prism 4 x 8 x 5 cm     36.9 shut    36.9 shut
+wedge_b2 prism 10 x 8 x 3 cm    0.2 H        11.7
+wedge_b3 prism 18 x 8 x 4 cm    0.2 H        0.5 H
+box_b1 10 x 8 x 4 cm            37.7 shut    37.6 shut
+cylinder_b1 8 x 4 cm            37.3 shut    37.3 shut
+============================== ============ ============
+
+("shut": the door pushed the object along and closed completely.) With the demonstrated
+wedge_a2 on the standard door: tip away from the door -> shut (37.6); r 0.75 m with
+gap 0.33 m (far) -> the door meets it at 11.5 deg and stops at 10.6 deg (< 20 deg,
+not held); r 0.28 m (near the hinge, 2.1 times the force) -> slips 3.4 deg (arm placing).
 
 Perception: the placed object's pose and size come from the cameras ([[camera]] in
 ``scene.toml``) through :mod:`creative_py.perception`; the door's angle comes from its
