@@ -16,10 +16,11 @@ robot at (0.52, 0.42); closed, the door runs from the hinge towards the robot's 
 above (door angle A >= 0, heading = closed_heading + A) and closes clockwise, towards
 the robot. A door frame stops it at A = 0 (a joint limit).
 
-A door holder keeps the door at ``place_angle`` (69 deg) while the arm works, because
-the hand (about 10 cm across) would hit a door 3 cm from the object; after the arm's
-retreat it swings the door to ``open_angle`` (40 deg), where the trial starts: ``act``
-releases it from rest there. The zone between the door at 40 deg and the closed door's
+The door stands at ``open_angle`` (40 deg), where the trial starts: ``act`` releases
+it from rest there, and every observation outside ``position_tool`` sees it there. A
+door holder swings it to ``place_angle`` (69 deg) while the arm places the object,
+because the hand (about 10 cm across) would hit a door 3 cm from the object, and back
+to ``open_angle`` after the arm's retreat. The zone between the door at 40 deg and the closed door's
 line is within reach of the right arm with the gripper pointing down; the tray and the
 arm's retreat point lie outside the door's sweep, and before the release every robot
 link is checked against the sweep (a link in it makes ``act`` return ``blocked``).
@@ -568,23 +569,23 @@ class WedgeEpisode:
         pb.changeDynamics(body, 0, lateralFriction=d.friction, jointDamping=d.damping,
                           linearDamping=0.0, angularDamping=0.0, jointLowerLimit=0.0,
                           jointUpperLimit=math.radians(170), physicsClientId=c)
-        pb.resetJointState(body, 0, d.place_angle, 0.0, physicsClientId=c)
-        pb.setJointMotorControl2(body, 0, pb.POSITION_CONTROL, targetPosition=d.place_angle,
+        pb.resetJointState(body, 0, d.open_angle, 0.0, physicsClientId=c)
+        pb.setJointMotorControl2(body, 0, pb.POSITION_CONTROL, targetPosition=d.open_angle,
                                  force=d.hold_force, physicsClientId=c)
         self.door_released = False
-        self.door_at_start = d.place_angle == d.open_angle
+        self.door_target = d.open_angle
         return body
 
-    def _swing_door_to_start(self) -> None:
-        """Swing the held door from ``place_angle`` to ``open_angle`` and hold it there."""
-        if self.door_at_start:
+    def _swing_door(self, angle: float) -> None:
+        """Let the door holder swing the door to ``angle`` (rad) and hold it there."""
+        if angle == self.door_target:
             return
         d, c = self.world.door, self.sim.client
         pb.setJointMotorControl2(self.door_body, 0, pb.POSITION_CONTROL,
-                                 targetPosition=d.open_angle, force=d.hold_force,
+                                 targetPosition=angle, force=d.hold_force,
                                  maxVelocity=d.swing_speed, physicsClientId=c)
-        self._run(abs(d.place_angle - d.open_angle) / d.swing_speed + 0.3)
-        self.door_at_start = True
+        self._run(abs(angle - self.door_target) / d.swing_speed + 0.3)
+        self.door_target = angle
 
     # ------------------------------------------------------------- perception
     def door_angle(self) -> float:
@@ -707,10 +708,10 @@ class WedgeEpisode:
         """Carry the held object and put it on the floor at ``pose`` relative to the door.
 
         ``pose`` is relative to the door at ``open_angle``, where the trial starts. The
-        door is held wider open (``place_angle``) while the arm works: the arm lowers
-        the object until its base is ``release_height`` above the floor, lets go, waits
-        ``settle_time`` and retreats out of the door's sweep; then the door holder swings
-        the door to ``open_angle``. Returns ``blocked`` if the object or the
+        door holder swings the door wider open (``place_angle``) while the arm works:
+        the arm lowers the object until its base is ``release_height`` above the
+        floor, lets go, waits ``settle_time`` and retreats out of the door's sweep; then
+        the holder swings the door back to ``open_angle``. Returns ``blocked`` if the object or the
         arm hits something on the way, ``unreachable`` if the arm cannot follow.
         """
         pose = WedgePose(*(float(v) for v in pose))
@@ -723,6 +724,7 @@ class WedgeEpisode:
             return SkillOutcome("blocked", "position_tool: no object is held (pick_up first)")
         w, h = self.world, self.world.handling
         x, y, yaw = place_from_pose(w.door, w.door.open_angle, self.spec.length, pose)
+        self._swing_door(w.door.place_angle)
         top = w.stage.top_z
         above = self._gripper_for(x, y, top + h.carry_height, yaw)
         down = self._gripper_for(x, y, top + h.release_height, yaw)
@@ -744,7 +746,7 @@ class WedgeEpisode:
             res = self._move(target, h.place_gripper_yaw)
             if not res.ok:
                 return SkillOutcome(res.status, f"position_tool: retreat: {res.reason}")
-        self._swing_door_to_start()
+        self._swing_door(w.door.open_angle)
         why = self.sim.blow_up(self.body)
         if why:
             return SkillOutcome("invalid", f"position_tool: {why}")
@@ -753,8 +755,8 @@ class WedgeEpisode:
     def trainer_place(self, pose: WedgePose | tuple) -> SkillOutcome:
         """Put the object on the floor at ``pose`` by hand, as the trainer does.
 
-        The demonstration's placing is done by the trainer, not the robot: the door is
-        swung to ``open_angle``, the object appears ``release_height`` above the floor at
+        The demonstration's placing is done by the trainer, not the robot: the object
+        appears ``release_height`` above the floor at
         the pose and settles for ``settle_time`` seconds; the arm stays at its retreat
         point. Also the quick way to test the door's physics without the arm.
         """
@@ -765,7 +767,7 @@ class WedgeEpisode:
             self.robot.release()
             self.holding = False
         w = self.world
-        self._swing_door_to_start()
+        self._swing_door(w.door.open_angle)
         x, y, yaw = place_from_pose(w.door, w.door.open_angle, self.spec.length, pose)
         set_frame_pose(self.sim, self.body,
                        ((x, y, w.stage.top_z + w.handling.release_height),
@@ -792,7 +794,7 @@ class WedgeEpisode:
         if in_sweep:
             return SkillOutcome("blocked", f"release_door: the robot's {in_sweep} is in the "
                                 "door's sweep")
-        self._swing_door_to_start()
+        self._swing_door(w.door.open_angle)
         self._park_robot()
         self._use_physics(w.physics)
         self.door_released = True
