@@ -51,9 +51,11 @@ if it needs a new module, its use_module/1 below.
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4]).
 :- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
-                           plan_experiment/4, plan_use/5, label_trial/7]).
+                           plan_experiment/4, plan_experiment/5, plan_use/5,
+                           label_trial/7]).
 :- use_module(creation, [next_tool/6, creation_candidates/3]).
-:- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6]).
+:- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6,
+                            created_models/5, write_model_file/5]).
 :- use_module(planner, [plan/5]).
 :- use_module(action_model, [innate_action_models/2]).
 :- use_module(pddl, [pddl_write_files/6]).
@@ -113,11 +115,16 @@ api_op(solve_size(Kind, Literals, Context), R, solve_size(Kind, Literals, Contex
 api_op(learn_from_demonstration(Case, Steps), R, learn_from_demonstration(Case, Steps, R)).
 api_op(observed_state(Case, Facts), S, observed_state(Case, Facts, S)).
 api_op(next_experiment(Case, VS, Facts), R, plan_experiment(Case, VS, Facts, R)).
+api_op(next_experiment(Case, VS, Facts, Skip), R, plan_experiment(Case, VS, Facts, Skip, R)).
+api_op(created_models(Models, VS, Replaced, Instance), Ms,
+       created_models(Models, VS, Replaced, Instance, Ms)).
 api_op(plan_use(Case, VS, Facts, Options), R, plan_use(Case, VS, Facts, Options, R)).
 api_op(label_trial(Case, VS0, Experiment, Facts, Label, Mode), VS,
        label_trial(Case, VS0, Experiment, Facts, Label, Mode, VS)).
 api_op(next_tool(Case, VS, Tried, Context), R, next_tool(Case, VS, Tried, Context, [], R)).
 api_op(creation_candidates(VS), Cs, creation_candidates(VS, [], Cs)).
+api_op(write_model_file(File, Case, Models, VS, Created), true,
+       write_model_file(File, Case, Models, VS, Created)).
 api_op(write_model_file(File, Case, Models, VS), true,
        write_model_file(File, Case, Models, VS)).
 api_op(load_model_file(File), true, load_model_file(File)).

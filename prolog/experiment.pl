@@ -2,6 +2,7 @@
           [ learn_from_demonstration/3, % +Case, +Steps, -Result
             observed_state/3,      % +Case, +Primitive, -State
             plan_experiment/4,     % +Case, +VS, +Primitive, -Result
+            plan_experiment/5,     % +Case, +VS, +Primitive, +Skip, -Result
             plan_use/5,            % +Case, +VS, +Primitive, +Options, -Result
             label_trial/7,         % +Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS
             task_objects/3,        % +Case, +State, -Objects
@@ -38,7 +39,6 @@ Roles of literals (literal_role/3), relative to the head tool_pose(Tool, Target,
 :- use_module(library(pairs)).
 :- use_module(library(error)).
 :- use_module(library(option)).
-:- use_module(library(yall)).
 :- use_module(version_space).
 :- use_module(lgg, []).
 :- use_module(geometry_clp).
@@ -150,17 +150,29 @@ robot_literal_(holding(_)).
 %   demonstration).
 
 plan_experiment(Case, VS, Primitive, Result) :-
+    plan_experiment(Case, VS, Primitive, [], Result).
+
+%!  plan_experiment(+Case, +VS, +Primitive, +Skip, -Result) is det.
+%
+%   As plan_experiment/4, leaving out the experiments skip(Object, Literal) of Skip:
+%   those the arm could not carry out (unreachable or invalid in the physics), which
+%   taught nothing and would be chosen again.
+
+plan_experiment(Case, VS, Primitive, Skip, Result) :-
+    must_be(list, Skip),
     vs_examples(VS, [(tool_pose(_, Target, Ctx) :- _)|_], _),
     observed_state(Case, Primitive, State),
     task_objects(Case, State, Objects),
-    next_experiment(Case, VS, Objects, Primitive, [target(Target), context(Ctx)], Result).
+    next_experiment(Case, VS, Objects, Primitive,
+                    [target(Target), context(Ctx), skip(Skip)], Result).
 
 %!  plan_use(+Case, +VS, +Primitive, +Options, -Result) is det.
 %
 %   Use the learned model without testing anything: the object that h_g covers and that
 %   violates the fewest literals of h_s, at a pose satisfying every spatial literal of
 %   h_s. Option tool(T) forces the object (a newly created tool, whose catalogue facts
-%   must be among Primitive). Result as the exploit/4 and no_experiment/1 results of
+%   must be among Primitive); h_g is then not required to cover it, since a created
+%   tool differs from the learned model in the replaced literal by design. Result as the exploit/4 and no_experiment/1 results of
 %   next_experiment/6.
 
 plan_use(Case, VS, Primitive, Options, Result) :-
@@ -168,16 +180,19 @@ plan_use(Case, VS, Primitive, Options, Result) :-
     observed_state(Case, Primitive, State),
     task_objects(Case, State, Objects0),
     (   option(tool(T), Options)
-    ->  include([object(O, _)]>>(O == T), Objects0, Objects),
-        (   Objects == []
-        ->  existence_error(object, T)
-        ;   true
+    ->  (   memberchk(object(T, Struct), Objects0)
+        ->  Objects = [object(T, Struct)]
+        ;   existence_error(object, T)
         )
     ;   Objects = Objects0
     ),
-    vs_bounds(VS, HS, HG),
+    vs_bounds(VS, HS, HG0),
     clause_head_body_(HS, Head, _),
     Head =.. [_, _, Target, Ctx],
+    (   option(tool(_), Options)
+    ->  HG = (Head :- true)      % a created tool violates h_g by design
+    ;   HG = HG0
+    ),
     hypothesis_parts(HS, _, Spatial, Task),
     exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Primitive, Result).
 
@@ -216,7 +231,7 @@ experiment_object_(exploit(Tool, _, _, Required), Tool, Required).
 %   primitive facts of the task (tube or door geometry, the target's pose). Options:
 %
 %     - target(Target), context(Ctx): the head's second and third arguments (required).
-%     - tested(Tested): literals tested before and found untestable (default []).
+%     - skip(Skip): experiments skip(Object, Literal) to leave out (default []).
 %
 %   Result is one of
 %
@@ -248,7 +263,9 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
             candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
                        L, O, Req, Neg, Viol, Score),
             Scored),
-    keysort(Scored, Sorted),
+    option(skip(Skip), Options, []),
+    exclude(skipped_(Skip), Scored, Scored1),
+    keysort(Scored1, Sorted),
     pairs_values(Sorted, Cands),
     (   first_feasible_(Case, Cands, Context, cand(L, O, Req, Neg, Viol), Pose)
     ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
@@ -280,6 +297,12 @@ candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
     memberchk_eq_(L, Viol),
     length(Viol, NV),
     Score = s(NV, Index, O).
+
+skipped_(Skip, _-cand(L, O, _, _, _)) :-
+    member(skip(O1, L1), Skip),
+    O1 == O,
+    L1 =@= L,
+    !.
 
 %   A spatial literal can be tested when the ontology defines it for the constraint
 %   solver (in_tube/2 of the tool, for example, is a precondition of the motion, not a

@@ -441,7 +441,7 @@ kb_reset :-
 %   ==
 kb_assert_learned(Term) :-
     (   Term = learned_model(Task, Action, Pre, Eff)
-    ->  must_be(atom, Task),
+    ->  must_be(ground, Task),
         must_be(callable, Action),
         must_be(list, Pre),
         must_be(list, Eff),

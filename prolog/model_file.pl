@@ -2,7 +2,9 @@
           [ write_model_file/4,   % +File, +Case, +Models, +VS
             load_model_file/1,    % +File
             learned_action_models/3, % +Models, +VS, -Learned
-            plan_task/6           % +Case, +Models, +VS, +Primitive, +Options, -Result
+            plan_task/6,          % +Case, +Models, +VS, +Primitive, +Options, -Result
+            created_models/5,     % +Models, +VS, +Replaced, +Instance, -Created
+            write_model_file/5    % +File, +Case, +Models, +VS, +Created
           ]).
 
 /** <module> A run's learned model as a file a Prolog REPL can load
@@ -142,6 +144,62 @@ conj_list_(true, []) :- !.
 conj_list_((A, B), [A|L]) :- !,
     conj_list_(B, L).
 conj_list_(A, [A]).
+
+%!  created_models(+Models, +VS, +Replaced, +Instance, -Created) is det.
+%
+%   The action models for a task that needed a created tool: the learned models
+%   (learned_action_models/3) with the replaced structural literal of the tool swapped
+%   for the created tool's value, e.g. block_length(W, medium) for block_length(W, long).
+%   This is the paper's "new category": the tool the harder task needs.
+
+created_models(Models, VS, Replaced, Instance, Created) :-
+    learned_action_models(Models, VS, Learned),
+    maplist(swap_literal_(Replaced, Instance), Learned, Created).
+
+swap_literal_(Replaced, Instance, action_model(N, Params, Pre0, Add, Del),
+              action_model(N, Params, Pre, Add, Del)) :-
+    Params = [Tool-_|_],
+    maplist(swap_one_(Tool, Replaced, Instance), Pre0, Pre1),
+    (   Pre1 == Pre0
+    ->  copy_term(Instance, I),
+        setarg(1, I, Tool),
+        append(Pre0, [I], Pre)
+    ;   Pre = Pre1
+    ).
+
+swap_one_(Tool, Replaced, Instance, L0, L) :-
+    (   compound(L0),
+        arg(1, L0, A), A == Tool,
+        copy_term(Replaced, R), R =.. [F|[_|RArgs]],
+        L0 =.. [F, _|LArgs], LArgs =@= RArgs
+    ->  copy_term(Instance, I),
+        I =.. [IF, _|IArgs],
+        L =.. [IF, Tool|IArgs]
+    ;   L = L0
+    ).
+
+%!  write_model_file(+File, +Case, +Models, +VS, +Created) is det.
+%
+%   As write_model_file/4, then the models of the harder task: Created is a list of
+%   created(Variant, Models) (created_models/5), written as learned_model(Case-Variant,
+%   ...) terms.
+
+write_model_file(File, Case, Models, VS, Created) :-
+    write_model_file(File, Case, Models, VS),
+    setup_call_cleanup(
+        open(File, append, Out, [encoding(utf8)]),
+        forall(member(created(Variant, Ms), Created),
+               ( format(Out, '~n%   The task variant ~w needed a created tool.~n', [Variant]),
+                 forall(member(action_model(N, Ps, Pre, Add, Del), Ms),
+                        ( pairs_keys_(Ps, Vs),
+                          A =.. [N|Vs],
+                          findall(add(L), member(L, Add), As),
+                          findall(del(L), member(L, Del), Ds),
+                          append(As, Ds, Eff),
+                          portray_clause(Out, learned_model(Case-Variant, A, Pre, Eff))
+                        ))
+               )),
+        close(Out)).
 
 %!  load_model_file(+File) is det.
 %

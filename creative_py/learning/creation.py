@@ -8,7 +8,7 @@ satisfies the model. Then, in a loop::
     spec  = HookSpec/BlockSpec(**Dims)                       # sized by CLP(R)/CLP(FD)
     files = write_tool_files(spec)                           # URDF, SDF, SCAD, STL, PNG
     outcome = physics(spec at the pose the model asks for)   # TC trial
-    success -> h_s := LGG(h_s, new positive); evaluate; stop
+    success -> the harder task's model: the learned one with the new value; evaluate
     failure -> tried += [Instance]; next instance, next property, until none is left
 
 Which property is generalised first and which value is tried first is Prolog's choice
@@ -59,6 +59,8 @@ class CreateResult:
     trials: list[TrialRecord]
     wall_time_s: float
     exhausted: Optional[str] = None
+    replaced: Optional[Term] = None
+    instance: Optional[Term] = None
 
 
 class ToolCreator(ToolUseLearner):
@@ -114,12 +116,13 @@ class ToolCreator(ToolUseLearner):
             self.progress(f"created {ct.name}: {ct.replaced} -> {ct.general} -> "
                           f"{ct.instance} {ct.dims}")
             n += 1
-            rec, vs = self._trial_with(tool.spec, n, vs, task, label_success=True)
+            rec, _ = self._trial_with(tool.spec, n, vs, task)
             ct.trial_outcome = rec.outcome
             if rec.outcome == "success":
                 ct.eval_outcomes = self._evaluate(tool.spec, vs, task)
                 return CreateResult(variant, True, created, ct, vs, self.trials[start:],
-                                    time.perf_counter() - t0)
+                                    time.perf_counter() - t0, replaced=replaced,
+                                    instance=instance)
         return CreateResult(variant, True, created, None, vs, self.trials[start:],
                             time.perf_counter() - t0, exhausted)
 
@@ -152,15 +155,22 @@ class ToolCreator(ToolUseLearner):
         self.world = _with_tool(self.world, spec, files.get("urdf"))
         return _Made(spec, values, files)
 
-    def _trial_with(self, spec: Any, n: int, vs: Term, task: TaskState,
-                    label_success: bool) -> tuple[TrialRecord, Term]:
+    def _trial_with(self, spec: Any, n: int, vs: Term,
+                    task: TaskState) -> tuple[TrialRecord, Term]:
+        """Test a created tool at the pose the learned model asks for.
+
+        The outcome is not added to the tool-use version space: the created tool differs
+        from the learned model in the replaced literal by design, and the harder task is
+        a different concept. A success gives the harder task's model instead
+        (:func:`created_models` in ``prolog/model_file.pl``).
+        """
         use = self.engine.call("plan_use", self.case, vs, self.task_facts(task),
                                [Compound("tool", (spec.name,))])
         if use.name != "exploit":
             raise RuntimeError(f"{self.case}: no pose for the created tool {spec.name}: "
                                f"{term_text(use)}")
         return self._run_experiment(len(self.trials) + 1, "create", n, use, vs, task, 0.0,
-                                    label=label_success, label_failures=False)
+                                    label=False)
 
     def _evaluate(self, spec: Any, vs: Term, task: TaskState) -> list[str]:
         """Run the paper's evaluation of the new tool: fresh trials over the locations."""
@@ -189,7 +199,12 @@ def _with_tool(world: Any, spec: Any, urdf: Any) -> Any:
     if "tools" in fields:
         changes["tools"] = {**world.tools, spec.name: spec}
     elif "objects" in fields:
-        changes["objects"] = {**world.objects, spec.name: spec}
+        # The wedge world keeps each object with its set and friction: a created object
+        # takes the friction of the existing ones (the same printed material).
+        template = next(iter(world.objects.values()))
+        item = (dataclasses.replace(template, spec=spec, set="created")
+                if hasattr(template, "spec") else spec)
+        changes["objects"] = {**world.objects, spec.name: item}
     else:
         raise TypeError(f"cannot add a tool to a {type(world).__name__}")
     if urdf is not None and "tool_urdfs" in fields:

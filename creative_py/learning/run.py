@@ -135,9 +135,12 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         vs = created.vs
         summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
         summary["create"] = _creation_summary(created)
-        use_final = UseResult(vs, use.models, creator.trials, use.converged,
-                              use.trials_to_converge, use.demo_tool, use.wall_time_s)
-        _write_model(engine, run, case, use_final)
+        if created.success is not None:
+            models = engine.call("created_models", use.models, use.vs, created.replaced,
+                                 created.instance)
+            engine.call("write_model_file", str(run.path / "model.pl"), case, use.models,
+                        use.vs, [Compound("created", (created.variant, models))])
+            summary["create"]["model"] = [term_text(m) for m in models]
         trials = creator.trials
     else:
         trials = learner.trials

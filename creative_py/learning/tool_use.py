@@ -212,11 +212,13 @@ def task_facts(case: str, world: Any, variant: str, location: int) -> list[tuple
     """Return what the robot perceives of a task before acting: the catalogue of
     available objects, the apparatus (tube or door) and the target's pose.
 
-    The scene is built and observed once per (world, variant, location); nothing moves.
+    The scene is built and observed once per (world folder, available objects, variant,
+    location); nothing moves.
     """
-    from creative_py.sim.trial import open_episode
+    from creative_py.sim.trial import list_case, open_episode
 
-    key = (case, id(world), variant, int(location))
+    names = tuple(sorted(list_case(case, world)["objects"]))
+    key = (case, str(getattr(world, "directory", "")), names, variant, int(location))
     if key not in _TASK_FACTS:
         tool = demonstration_info(case, world)["tool"]
         with open_episode(case, world, variant, int(location), tool, seed=0) as ep:
@@ -361,10 +363,11 @@ class ToolUseLearner:
         cons = 0
         converged_at = None
         opts = self.options
+        skip: list[Term] = []
         for i in range(1, opts.max_trials + 1):
             td = time.perf_counter()
             exp = self.engine.call("next_experiment", self.case, vs,
-                                   self.task_facts(task))
+                                   self.task_facts(task), skip)
             decision = time.perf_counter() - td
             if exp.name != "experiment":
                 # Nothing left that the available objects and poses can test.
@@ -378,8 +381,12 @@ class ToolUseLearner:
                 task.next_location()
             elif rec.outcome in ("failure", "blocked"):
                 cons = 0
+            elif exp.name == "experiment":
+                # The arm could not carry it out: it taught nothing; do not repeat it.
+                skip.append(Compound("skip", (exp.args[0], exp.args[1])))
         else:
-            exp = self.engine.call("next_experiment", self.case, vs, self.task_facts(task))
+            exp = self.engine.call("next_experiment", self.case, vs, self.task_facts(task),
+                                   skip)
             if exp.name != "experiment" and converged_at is None:
                 converged_at = opts.max_trials
         return UseResult(vs, models, self.trials, converged_at is not None, converged_at,
@@ -442,7 +449,8 @@ class ToolUseLearner:
         self.trials.append(rec)
         if self.run:
             self.run.append_trial(rec.as_dict())
-        self.progress(f"{'TUL' if phase == 'use' else 'TC'} {phase_trial:2d}  {tool:<14} "
+        tag = {"use": "TUL", "create": "TC", "eval": "EVAL"}[phase]
+        self.progress(f"{tag:<4} {phase_trial:2d}  {tool:<14} "
                       f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}")
         return rec, vs
 
