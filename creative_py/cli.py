@@ -1,5 +1,9 @@
 """The ``creative`` command line.
 
+``creative run CASE`` runs a case end to end (demonstration, tool-use learning, tool
+creation) and writes a run folder; ``creative repl [RUN]`` opens SWI-Prolog with the
+engine (and a run's learned model) loaded; ``creative report RUN`` summarises a run
+folder; ``creative make-tool CASE SPEC`` sizes and writes a tool from a qualitative spec.
 ``creative trial CASE ...`` runs one physical trial in pybullet and prints its result
 (JSON with ``--json``); ``creative trial CASE --list`` prints the case's objects,
 locations, variants and default pose as JSON. The command is generic over the cases
@@ -132,6 +136,143 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
                     if seen is not None else "not perceived")
         out.append(f"  {name}: true (" + ", ".join(f"{v:.3f}" for v in truth) + f"), {seen_txt}")
     return out
+
+
+@app.command()
+def run(
+    case: str = typer.Argument(..., help="The case: hook or wedge."),
+    seed: int = typer.Option(0, "--seed", help="Seed of the physics and sensor noise."),
+    out: Path = typer.Option(Path("runs"), "--out", help="Parent folder of the run folder."),
+    phase: str = typer.Option("all", "--phase", help="use (tool-use learning only), "
+                              "create or all (then tool creation on the harder task)."),
+    max_trials: Optional[int] = typer.Option(None, "--max-trials", help="N of Algorithm 1 "
+                                             "(default: the paper's 12 for hook, 9 for wedge)."),
+    consecutive: int = typer.Option(2, "--consecutive", help="K of Algorithm 1."),
+    eval_trials: int = typer.Option(4, "--eval-trials", help="Evaluation trials of the "
+                                    "learned model after tool-use learning."),
+    world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
+                                         "shipped worlds/<case>)."),
+) -> None:
+    """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot)."""
+    from rich.console import Console
+
+    from creative_py.learning.run import RunOptions, run_case
+    from creative_py.world import WorldFileError
+
+    console = Console(stderr=True)
+    opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
+                      consecutive=consecutive, eval_trials=eval_trials)
+    try:
+        with _stdout_to_stderr():
+            folder = run_case(case, out, opts, progress=lambda m: console.print(m, markup=False,
+                                                                               highlight=False),
+                              world_dir=world)
+    except (WorldFileError, ValueError) as exc:
+        _fail(str(exc))
+    typer.echo(str(folder.path))
+
+
+@app.command()
+def report(run_dir: Path = typer.Argument(..., help="A run folder.")) -> None:
+    """Summarise a run folder: trials per phase, the learned hypotheses, created tools."""
+    from rich.console import Console
+    from rich.table import Table
+
+    from creative_py.learning.run_folder import read_trials
+    from creative_py.report import plot_trials
+
+    try:
+        trials = read_trials(run_dir)
+    except FileNotFoundError as exc:
+        _fail(str(exc))
+    console = Console()
+    table = Table(title=f"{run_dir}")
+    for col in ("#", "phase", "variant", "loc", "tool", "tested", "outcome"):
+        table.add_column(col)
+    for t in trials:
+        table.add_row(str(t["trial"]), t["phase"], t["variant"], str(t["location"]), t["tool"],
+                      ", ".join(t.get("tested", [])) or "-", t["outcome"])
+    console.print(table)
+    summary = Path(run_dir) / "summary.json"
+    if summary.exists():
+        s = json.loads(summary.read_text())
+        for key in ("hs", "hg"):
+            console.print(f"{key}: {s.get('hypotheses', {}).get(key, '?')}", markup=False)
+        for tool in s.get("create", {}).get("created_tools", []):
+            console.print(f"created {tool['name']}: {tool['replaced']} -> {tool['instance']} "
+                          f"{tool['dims']} ({tool['trial_outcome']})", markup=False)
+    png = plot_trials(trials, Path(run_dir) / "trials.png", title=str(run_dir))
+    console.print(f"plot: {png}", markup=False)
+
+
+@app.command()
+def repl(run_dir: Optional[Path] = typer.Argument(None, help="A run folder whose model.pl "
+                                                   "is loaded.")) -> None:
+    """Open SWI-Prolog with the engine loaded (and a run's learned model)."""
+    import shutil
+
+    root = Path(__file__).resolve().parents[1]
+    goals = []
+    if run_dir is not None:
+        model = Path(run_dir) / "model.pl"
+        if not model.exists():
+            _fail(f"{model}: no such file (is {run_dir} a run folder?)")
+        goals.append(f"load_model_file({_quoted(str(model.resolve()))})")
+    banner = ("CREATIVE-py engine loaded. Try:\n"
+              "  ?- learned_model(Task, Action, Pre, Eff).\n"
+              "  ?- learned_hypothesis(Task, hg, Clause).\n"
+              "  ?- term_lgg(f(a, g(a)), f(b, g(b)), G).\n"
+              "  ?- replacement(handle_length(T, medium), G, Alternatives).\n"
+              "  ?- solve_size(hook, [hook(t), handle_length(t, long)], "
+              "[tube_length_m(tube1, 0.45)], R).\n")
+    goals.append(f"format({_quoted(banner)})")
+    swipl = shutil.which("swipl")
+    if swipl is None:
+        _fail("swipl is not installed (make setup installs it)")
+    # Options must precede the file: swipl passes what follows it to the program.
+    os.execv(swipl, [swipl, "-g", ", ".join(goals), str(root / "prolog" / "creative.pl")])
+
+
+def _quoted(text: str) -> str:
+    """Return ``text`` as a quoted Prolog atom (the bridge's encoder)."""
+    from creative_py.bridge.codec import encode
+
+    return encode(text)
+
+
+@app.command("make-tool")
+def make_tool_cmd(
+    case: str = typer.Argument(..., help="hook or wedge."),
+    spec: str = typer.Argument(..., help="Qualitative spec, e.g. "
+                               "handle_length=long,hook_side=left (hook) or "
+                               "shape=triangular_prism,block_length=long (wedge)."),
+    name: str = typer.Option("new_tool", "--name", help="Tool name (a Prolog atom)."),
+    out: Path = typer.Option(Path("tools"), "--out", help="Folder for the tool's files."),
+    variant: str = typer.Option("standard", "--variant", help="Task whose geometry bounds "
+                                "the sizes (hook: standard, long_tube; wedge: standard, "
+                                "big_door)."),
+    context: Optional[str] = typer.Option(None, "--context", help="Extra task facts, e.g. "
+                                          "'max_tool_length(0.5)'."),
+) -> None:
+    """Size a tool from a qualitative spec with CLP(R) and write URDF, SDF, SCAD, STL."""
+    from creative_py.bridge import Engine
+    from creative_py.learning.manufacture import (
+        InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
+    )
+    from creative_py.world import WorldFileError
+
+    try:
+        with _stdout_to_stderr():
+            engine = Engine.instance()
+            lits = parse_spec(case, spec)
+            ctx = default_context(case, variant)
+            if context:
+                ctx += parse_context(engine, context)
+            files = make_tool(engine, case, lits, ctx, name, out, picture=True)
+    except (InfeasibleSpec, ValueError, WorldFileError, FileExistsError) as exc:
+        _fail(str(exc))
+    for p in files.paths():
+        typer.echo(str(p))
 
 
 if __name__ == "__main__":  # pragma: no cover

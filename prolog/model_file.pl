@@ -25,6 +25,7 @@ where knowledge:learned_model/4 answers queries.
 :- use_module(library(apply)).
 :- use_module(library(error)).
 :- use_module(library(readutil)).
+:- use_module(library(yall)).
 :- use_module(knowledge, [kb_assert_learned/1]).
 :- use_module(version_space, [vs_bounds/3]).
 :- use_module(experiment, [hypothesis_parts/4, observed_state/3]).
@@ -61,10 +62,15 @@ write_model_(Out, Case, Model, HG) :-
     learned_model_(Model, HG, action_model(Name, Params, Pre1, Add, Del)),
     pairs_keys_(Params, Vars),
     Action =.. [Name|Vars],
-    findall(add(L), member(L, Add), As),
-    findall(del(L), member(L, Del), Ds),
-    append(As, Ds, Eff),
+    effects_(Add, Del, Eff),
     portray_clause(Out, learned_model(Case, Action, Pre1, Eff)).
+
+%   add(L) and del(L) terms; maplist/3, not findall/3, so that the effects keep sharing
+%   variables with the action's arguments.
+effects_(Add, Del, Eff) :-
+    maplist([L, add(L)]>>true, Add, As),
+    maplist([L, del(L)]>>true, Del, Ds),
+    append(As, Ds, Eff).
 
 %   The observed model with its precondition rewritten: the skill's own literals, then
 %   h_g's body (interval literals left out: a planner has no use for them).
@@ -193,9 +199,7 @@ write_model_file(File, Case, Models, VS, Created) :-
                  forall(member(action_model(N, Ps, Pre, Add, Del), Ms),
                         ( pairs_keys_(Ps, Vs),
                           A =.. [N|Vs],
-                          findall(add(L), member(L, Add), As),
-                          findall(del(L), member(L, Del), Ds),
-                          append(As, Ds, Eff),
+                          effects_(Add, Del, Eff),
                           portray_clause(Out, learned_model(Case-Variant, A, Pre, Eff))
                         ))
                )),
