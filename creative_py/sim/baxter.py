@@ -116,6 +116,9 @@ class BaxterConfig:
         Position error (m) an IK solution must reach to count as reachable.
     ik_orientation_tolerance : float
         Orientation error (rad) an IK solution must reach.
+    ik_centring : float
+        Gain (per iteration) of the null-space drift of the joints towards the
+        middle of their ranges.
     grasp_max_force : float
         Maximum force of the fixed grasp constraint, N.
     settle_steps : int
@@ -132,6 +135,7 @@ class BaxterConfig:
     max_turn_error: float = 0.3
     ik_position_tolerance: float = 0.002
     ik_orientation_tolerance: float = 0.02
+    ik_centring: float = 0.05
     grasp_max_force: float = 500.0
     settle_steps: int = 120
     max_body_speed: float = 5.0
@@ -307,6 +311,7 @@ class Baxter:
         lo = np.array([k.lower[i] for i in k.arm_in_movable])
         hi = np.array([k.upper[i] for i in k.arm_in_movable])
         q = np.clip(q, lo, hi)
+        mid = (lo + hi) / 2
         tpos = np.asarray(target[0], float)
         tquat = target[1]
         zeros = [0.0] * len(k.movable)
@@ -328,7 +333,21 @@ class Baxter:
             jac = np.vstack([np.asarray(lin)[:, k.arm_in_movable],
                              np.asarray(ang)[:, k.arm_in_movable]])
             err = np.concatenate([e_pos, e_rot])
-            dq = jac.T @ np.linalg.solve(jac @ jac.T + damping2 * np.eye(6), err)
+            # Joints pinned at a limit and pushed beyond it are taken out of the
+            # Jacobian (an active set), so the others do the work instead of the
+            # solver stalling against the clamp.
+            free = np.ones(7)
+            for _ in range(3):
+                jf = jac * free
+                pinv = jf.T @ np.linalg.inv(jf @ jf.T + damping2 * np.eye(6))
+                dq = pinv @ err
+                # Secondary task in the null space: drift towards mid-range, so that
+                # long Cartesian paths do not run the arm into a joint limit.
+                dq += (np.eye(7) - pinv @ jf) @ (self.config.ik_centring * (mid - q) * free)
+                pinned = ((q <= lo + 1e-6) & (dq < 0)) | ((q >= hi - 1e-6) & (dq > 0))
+                if not np.any(pinned & (free > 0)):
+                    break
+                free[pinned] = 0.0
             biggest = float(np.max(np.abs(dq)))
             if biggest > 0.2:
                 dq *= 0.2 / biggest
@@ -337,15 +356,12 @@ class Baxter:
             return None
         return [float(v) for v in q]
 
-    def solve_ik_global(self, target: Pose, restarts: int = 40, keep: int = 6,
-                        seeds: Sequence[Sequence[float]] = ()) -> list[float] | None:
-        """Return an arm posture (rad) reaching ``target``, chosen among several.
+    def ik_candidates(self, target: Pose, keep: int = 6, restarts: int = 40,
+                      seeds: Sequence[Sequence[float]] = ()) -> list[list[float]]:
+        """Return up to ``keep`` arm postures (rad) reaching ``target``.
 
         Solves from ``seeds``, the ready posture, the current posture and ``restarts``
-        random postures of a fixed-seed generator (deterministic), stops after
-        ``keep`` solutions and returns the one farthest from the joint limits (the
-        largest smallest margin, as a fraction of each joint's range), or None.
-        Margins matter: a joint at its limit cannot help against gravity or contact.
+        random postures of a fixed-seed generator (deterministic), in that order.
         """
         k = self.kin
         lo = np.array([k.lower[i] for i in k.arm_in_movable])
@@ -356,18 +372,58 @@ class Baxter:
         found: list[list[float]] = []
         for seed in tries:
             sol = self.solve_ik(target, seed=seed)
-            if sol is not None:
+            if sol is not None and all(max(abs(a - b) for a, b in zip(sol, f)) > 0.05
+                                       for f in found):
                 found.append(sol)
                 if len(found) >= keep:
                     break
+        return found
+
+    def solve_ik_global(self, target: Pose, restarts: int = 40, keep: int = 6,
+                        seeds: Sequence[Sequence[float]] = ()) -> list[float] | None:
+        """Return an arm posture (rad) reaching ``target``, chosen among several.
+
+        Among :meth:`ik_candidates` returns the one farthest from the joint limits
+        (the largest smallest margin, as a fraction of each joint's range), or None.
+        Margins matter: a joint at its limit cannot help against gravity or contact.
+        """
+        found = self.ik_candidates(target, keep, restarts, seeds)
         if not found:
             return None
+        k = self.kin
+        lo = np.array([k.lower[i] for i in k.arm_in_movable])
+        hi = np.array([k.upper[i] for i in k.arm_in_movable])
 
         def margin(q: list[float]) -> float:
             qa = np.array(q)
             return float(np.min(np.minimum(qa - lo, hi - qa) / (hi - lo)))
 
         return max(found, key=margin)
+
+    def dry_run(self, q_start: Sequence[float], path: Sequence[Pose],
+                max_step: float = 0.01) -> list[float] | None:
+        """Follow ``path`` (gripper poses joined by straight lines) in the kinematics client.
+
+        Starts at ``q_start``; returns the final posture, or None where IK loses the
+        path or the arm would have to jump (> 0.5 rad). Nothing moves in the physics.
+        """
+        q = list(q_start)
+        k = self.kin
+        k.reset(k.arm, q)
+        prev = k.ee_pose()
+        for target in path:
+            dist = math.dist(prev[0], target[0])
+            ang = quat_angle(prev[1], target[1])
+            n = max(1, math.ceil(max(dist / max_step, ang / (10 * max_step))))
+            for i in range(1, n + 1):
+                t = i / n
+                pos = tuple(a + t * (b - a) for a, b in zip(prev[0], target[0]))
+                sol = self.solve_ik((pos, slerp(prev[1], target[1], t)), seed=q)
+                if sol is None or max(abs(a - b) for a, b in zip(sol, q)) > 0.5:
+                    return None
+                q = sol
+            prev = target
+        return q
 
     def move_joints(self, q_goal: Sequence[float], joint_speed: float = 0.8,
                     check: bool = True, watch: Sequence[int] = ()) -> MoveResult:

@@ -56,7 +56,6 @@ def _hull_indices(vertices: np.ndarray) -> list[int]:
     from scipy.spatial import ConvexHull
 
     hull = ConvexHull(vertices)
-    centre = vertices.mean(axis=0)
     tris = []
     for simplex, eq in zip(hull.simplices, hull.equations):
         a, b, c = vertices[simplex]
@@ -64,7 +63,6 @@ def _hull_indices(vertices: np.ndarray) -> list[int]:
         if np.dot(np.cross(b - a, c - a), eq[:3]) < 0:
             simplex = simplex[[0, 2, 1]]
         tris.extend(int(i) for i in simplex)
-    del centre
     return tris
 
 
@@ -119,13 +117,12 @@ def spawn_parts(sim: Sim, parts: Sequence[Part], pose: Pose, mass: float,
         Indices of parts that collide but have no visual shape (clear acrylic).
 
     The first part is the base link; every further part is a link fixed to it, so any
-    mix of boxes, hulls and cylinders works. The centre of mass is the parts'
-    volume-weighted centroid.
+    mix of boxes, hulls and cylinders works. The mass is shared out by volume and
+    each part's mass sits at its own centroid.
     """
     if not parts:
         raise ValueError("a body needs at least one part")
     c = sim.client
-    com = centre_of_mass(parts) if mass > 0 else (0.0, 0.0, 0.0)
     cols = [_shape(sim, p, False, None) for p in parts]
     # A part without a visual shape would be drawn from its collision shape by the
     # renderer: a hidden part gets a fully transparent visual instead.
@@ -148,7 +145,6 @@ def spawn_parts(sim: Sim, parts: Sequence[Part], pose: Pose, mass: float,
         linkInertialFrameOrientations=[IDENTITY] * n, linkParentIndices=[0] * n,
         linkJointTypes=[pb.JOINT_FIXED] * n, linkJointAxis=[(0, 0, 1)] * n,
         physicsClientId=c)
-    del com
     for link in range(-1, n):
         pb.changeDynamics(body, link, lateralFriction=surface.lateral_friction,
                           physicsClientId=c)
@@ -173,7 +169,7 @@ def load_tool_urdf(sim: Sim, path: Path, pose: Pose, lateral_friction: float = 0
     if not path.is_file():
         raise FileNotFoundError(f"{path}: tool URDF not found")
     body = pb.loadURDF(str(path), basePosition=pose[0], baseOrientation=pose[1],
-                       physicsClientId=sim.client)
+                       flags=pb.URDF_USE_INERTIA_FROM_FILE, physicsClientId=sim.client)
     if body < 0:
         raise ValueError(f"{path}: pybullet could not load this URDF")
     for link in range(-1, pb.getNumJoints(body, physicsClientId=sim.client)):

@@ -39,7 +39,7 @@ from __future__ import annotations
 
 import logging
 import math
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
 from typing import Any, NamedTuple
 
@@ -48,7 +48,8 @@ import pybullet as pb
 
 from creative_py.mesh.spec import Box, HookSpec, spec_from_dict
 from creative_py.sim.baxter import Baxter, BaxterConfig, MoveResult
-from creative_py.sim.bodies import Surface, frame_pose, spawn_parts, spawn_spec, yaw_of
+from creative_py.sim.bodies import (Surface, frame_pose, load_tool_urdf, spawn_parts,
+                                    spawn_spec, yaw_of)
 from creative_py.sim.core import Pose, Sim
 from creative_py.sim.trial import Fact, Observation, SkillOutcome
 from creative_py.world import (WORLDS_ROOT, Fields, PhysicsSettings, WorldFileError,
@@ -112,6 +113,7 @@ class StandSpec:
 
     butt_x: float
     axis_y: float
+    roll: float
     top_z: float
     width: float
     friction: float
@@ -125,6 +127,7 @@ class SkillSettings:
     insert_speed: float
     pull_speed: float
     turn_speed: float
+    steps_per_waypoint: float
     lift: float
     clearance: float
     pull_beyond_mouth: float
@@ -162,7 +165,11 @@ class Demonstration:
 
 @dataclass(frozen=True)
 class HookWorld:
-    """Everything read from ``worlds/hook_tube/`` (see its TOML files for units)."""
+    """Everything read from ``worlds/hook_tube/`` (see its TOML files for units).
+
+    ``tool_urdfs`` maps created tools to their URDF files (spawned from the file
+    instead of the spec); add tools with :func:`with_tool`.
+    """
 
     directory: Path
     physics: PhysicsSettings
@@ -179,6 +186,8 @@ class HookWorld:
     locations: tuple[Location, ...]
     variants: dict[str, float]
     demonstration: Demonstration
+    robot_visuals: bool = False
+    tool_urdfs: dict[str, Path] = field(default_factory=dict)
 
     def tool(self, name: str) -> HookSpec:
         """Return the spec of tool ``name``; raise listing the available tools."""
@@ -222,8 +231,11 @@ def load_hook_world(world_dir: Path | None = None) -> HookWorld:
     table = _dataclass_from(TableSpec, sf.table("table"))
     riser = _dataclass_from(RiserSpec, sf.table("riser"))
     tube = _dataclass_from(TubeSpec, sf.table("tube"))
-    stand = _dataclass_from(StandSpec, sf.table("stand" if sf.has("stand") else "tool_stand"))
+    stand = _dataclass_from(StandSpec, sf.table("tool_stand"))
     skills = _dataclass_from(SkillSettings, sf.table("skills"))
+    robot_f = sf.table("robot")
+    robot_visuals = robot_f.bool("visuals")
+    robot_f.done()
     perc = sf.table("perception")
     try:
         noise = NoiseModel(depth_sigma_m=perc.float("depth_sigma_m", minimum=0.0),
@@ -301,7 +313,26 @@ def load_hook_world(world_dir: Path | None = None) -> HookWorld:
     return HookWorld(directory=d, physics=physics, table=table, riser=riser, tube=tube,
                      stand=stand, skills=skills, cameras=cameras, noise=noise, cube=cube,
                      tools=tools, tool_sets=sets, locations=locations, variants=variants,
-                     demonstration=demo)
+                     demonstration=demo, robot_visuals=robot_visuals)
+
+
+def with_tool(world: HookWorld, spec: HookSpec, urdf: Path | None = None,
+              tool_set: str = "created") -> HookWorld:
+    """Return ``world`` with one more available tool (a created one).
+
+    The tool's catalogue facts, grasp and skills come from ``spec``; its body comes
+    from ``urdf`` (a file written by :mod:`creative_py.mesh`, link frame = tool frame)
+    when given, otherwise from the spec's parts.
+    """
+    if not isinstance(spec, HookSpec):
+        raise TypeError(f"the hook world takes HookSpec tools, got {type(spec).__name__}")
+    if urdf is not None and not Path(urdf).is_file():
+        raise FileNotFoundError(f"{urdf}: tool URDF not found")
+    urdfs = dict(world.tool_urdfs)
+    if urdf is not None:
+        urdfs[spec.name] = Path(urdf)
+    return replace(world, tools={**world.tools, spec.name: spec},
+                   tool_sets={**world.tool_sets, spec.name: tool_set}, tool_urdfs=urdfs)
 
 
 def catalogue_facts(spec: HookSpec) -> list[Fact]:
@@ -437,7 +468,7 @@ class HookEpisode:
         self.cube_body = spawn_parts(sim, [Box((0, 0, c.size / 2), (c.size,) * 3)],
                                      ((cx, cy, self.floor_z), (0, 0, 0, 1)), c.mass,
                                      Surface(c.friction, (0.9, 0.2, 0.2, 1.0)))
-        # The tool on its stand, prong flat towards -y.
+        # The tool on its stand, prong flat.
         st, spec = w.stand, self.spec
         grip = spec.grip_offset
         x0 = st.butt_x + grip + 0.06
@@ -448,12 +479,16 @@ class HookEpisode:
         spawn_parts(sim, [Box((0, 0, 0), (x1 - x0, st.width, stand_h))],
                     (((x0 + x1) / 2, st.axis_y, t.top_z + stand_h / 2), (0, 0, 0, 1)), 0.0,
                     Surface(st.friction, (0.3, 0.3, 0.3, 1.0)))
-        lie_roll = -math.pi / 2
-        self.tool_body = spawn_spec(sim, spec, ((st.butt_x, st.axis_y,
-                                                 st.top_z + spec.handle_width / 2 + 0.0005),
-                                                tool_orientation(spec, lie_roll)),
-                                    Surface(0.5, (0.95, 0.8, 0.1, 1.0)))
-        self.robot = Baxter(sim, BaxterConfig(turn_speed=w.skills.turn_speed))
+        lie_roll = st.roll
+        lying = ((st.butt_x, st.axis_y, st.top_z + spec.handle_width / 2 + 0.0005),
+                 tool_orientation(spec, lie_roll))
+        if spec.name in w.tool_urdfs:
+            self.tool_body = load_tool_urdf(sim, w.tool_urdfs[spec.name], lying)
+        else:
+            self.tool_body = spawn_spec(sim, spec, lying, Surface(0.5, (0.95, 0.8, 0.1, 1.0)))
+        self.robot = Baxter(sim, BaxterConfig(
+            visuals=w.robot_visuals, turn_speed=w.skills.turn_speed,
+            steps_per_waypoint=int(w.skills.steps_per_waypoint)))
         # Start with the gripper pointing +x above the stand's near end, prong-flat roll,
         # in the family of arm postures that works at the tube's mouth (found first,
         # farthest from the joint limits), so that Cartesian moves carry it over.
@@ -547,8 +582,25 @@ class HookEpisode:
 
     # ------------------------------------------------------------------- skills
     def _move(self, pos, roll: float, speed: float) -> MoveResult:
-        return self.robot.move_to((tuple(pos), gripper_orientation(roll)), speed=speed,
-                                  watch=[self.cube_body])
+        """Move the gripper (pointing +x) to ``pos`` while turning the tool to ``roll``.
+
+        A big change of roll is split into pieces under 70 degrees, so that the
+        orientation turns through the intermediate rolls (about the handle axis)
+        instead of taking whichever way a half-turn slerp picks.
+        """
+        start_pos, start_quat = self.robot.gripper_pose()
+        start_roll = roll_of(self.spec, pb.multiplyTransforms(start_pos, start_quat,
+                                                              *self.grasp)[1])
+        n = max(1, math.ceil(abs(roll - start_roll) / math.radians(70)))
+        for i in range(1, n + 1):
+            t = i / n
+            p = tuple(a + t * (b - a) for a, b in zip(start_pos, pos))
+            r = start_roll + t * (roll - start_roll)
+            res = self.robot.move_to((p, gripper_orientation(r)), speed=speed,
+                                     watch=[self.cube_body])
+            if not res.ok:
+                return res
+        return res
 
     def _gripper_for_tool(self, tool_origin, roll: float) -> tuple[float, float, float]:
         """Return the gripper position that puts the tool frame's origin at ``tool_origin``."""
@@ -597,7 +649,7 @@ class HookEpisode:
         if est is None:
             return SkillOutcome("unreachable", "position_tool: the camera does not see "
                                 f"{self.world.cube.name}")
-        w, sk, spec, tb = self.world, self.world.skills, self.spec, self.world.tube
+        sk, spec, tb = self.world.skills, self.spec, self.world.tube
         cube_x, cube_y = est.x, est.y
         cube_top = est.z + est.size[2] / 2
         axis_y = cube_y + pose.dy
@@ -618,7 +670,9 @@ class HookEpisode:
         goal_origin_x = cube_x + pose.dx - tip_off[0]
         far_x = max(spec.handle_length, tip_local[0] + spec.hook_width)
         pre_origin_x = tb.mouth_x - 0.03 - far_x
+        carried = self.tool_roll()
         steps = [
+            ((pre_origin_x, axis_y, self._travel_z()), carried, sk.free_speed),
             ((pre_origin_x, axis_y, self._travel_z()), flat, sk.free_speed),
             ((pre_origin_x, axis_y, z_insert), flat, sk.free_speed),
             ((goal_origin_x, axis_y, z_insert), flat, sk.insert_speed),
@@ -628,13 +682,87 @@ class HookEpisode:
                      self.floor_z + tb.inner_height - half_t - 0.002)
         steps.append(((goal_origin_x, axis_y, z_down), flat, sk.insert_speed))
         steps.append(((goal_origin_x, axis_y, z_down), pose.roll, sk.insert_speed))
-        for origin, roll, speed in steps:
+        pull_dx = min(0.0, tb.mouth_x - sk.pull_beyond_mouth - (cube_x + pose.dx))
+        for i, (origin, roll, speed) in enumerate(steps):
             target = self._gripper_for_tool(origin, roll)
             res = self._move(target, roll, speed)
             if not res.ok:
                 return SkillOutcome(res.status, f"position_tool: {res.reason}")
+            if i == 0:
+                res = self._choose_posture(steps[1:], pull_dx)
+                if not res.ok:
+                    return SkillOutcome(res.status, f"position_tool: {res.reason}")
         self._pull_roll = pose.roll
+        log.info("position_tool %s at %s: ok", spec.name, pose)
         return SkillOutcome("ok")
+
+    def _gripper_path(self, steps, pull_dx: float) -> list[Pose]:
+        """Return the gripper poses of ``steps`` then the pull, rolls split as in :meth:`_move`."""
+        pos, quat = self.robot.gripper_pose()
+        roll = roll_of(self.spec, pb.multiplyTransforms(pos, quat, *self.grasp)[1])
+        path: list[Pose] = []
+        for origin, new_roll, _ in steps:
+            goal = self._gripper_for_tool(origin, new_roll)
+            n = max(1, math.ceil(abs(new_roll - roll) / math.radians(70)))
+            for i in range(1, n + 1):
+                t = i / n
+                p = tuple(a + t * (b - a) for a, b in zip(pos, goal))
+                path.append((p, gripper_orientation(roll + t * (new_roll - roll))))
+            pos, roll = goal, new_roll
+        path.append(((pos[0] + pull_dx, pos[1], pos[2]), gripper_orientation(roll)))
+        return path
+
+    def _start_candidates(self, here: Pose, path: list[Pose]):
+        """Yield start postures at ``here`` for following ``path``.
+
+        Direct IK solutions at ``here`` first; then, for key poses of the path (where
+        the tool turns flat, the deepest point, the last turn), IK solutions there
+        walked back along the path to ``here`` in the kinematics client: a posture
+        that can hold the hard poses and still reach the start.
+        """
+        rb = self.robot
+        yield from rb.ik_candidates(here, keep=4)
+        turned = path[:-1]  # every pose before the pull
+        deep = max(range(len(turned)), key=lambda i: turned[i][0][0])
+        for key in sorted({0, deep, len(turned) - 1}):
+            for cand in rb.ik_candidates(turned[key], keep=4):
+                q = rb.dry_run(cand, [*reversed(turned[:key]), here])
+                if q is not None:
+                    yield q
+
+    def _choose_posture(self, steps, pull_dx: float) -> MoveResult:
+        """Make sure the arm can follow the insertion and the pull; re-shape it if not.
+
+        The path is tried in the kinematics client from the current posture. If IK
+        would lose it (a joint limit on the way), other postures at the current
+        gripper pose are tried; the first that carries the whole path is reached by
+        lifting the tool clear, moving in joint space, and coming back down.
+        """
+        rb = self.robot
+        path = self._gripper_path(steps, pull_dx)
+        if rb.dry_run(rb.arm_q(), path) is not None:
+            return MoveResult("ok")
+        here = rb.gripper_pose()
+        for cand in self._start_candidates(here, path):
+            if rb.dry_run(cand, path) is None:
+                continue
+            for lift in (0.12, 0.06, 0.0):
+                high = ((here[0][0], here[0][1], here[0][2] + lift), here[1])
+                q_high = rb.dry_run(cand, [high])
+                if q_high is not None:
+                    break
+            else:
+                continue
+            for res in (rb.move_to(high, speed=self.world.skills.free_speed,
+                                   watch=[self.cube_body]),
+                        rb.move_joints(q_high, watch=[self.cube_body]),
+                        rb.move_to(here, speed=self.world.skills.free_speed,
+                                   watch=[self.cube_body])):
+                if not res.ok:
+                    return res
+            return MoveResult("ok")
+        return MoveResult("unreachable", "no arm posture can carry the tool along the "
+                          "insertion and the pull (joint limits)")
 
     def act(self) -> SkillOutcome:
         """Pull: move the tool straight back along -x until the prong is out of the tube."""
@@ -726,7 +854,9 @@ class HookTubeCase:
         tools = {}
         for n, spec in world.tools.items():
             d = asdict(spec)
-            d["set"] = world.tool_sets[n]
+            d["set"] = world.tool_sets.get(n, "created")
+            if n in world.tool_urdfs:
+                d["urdf"] = str(world.tool_urdfs[n])
             tools[n] = d
         return {
             "case": self.name,

@@ -129,3 +129,40 @@ def test_full_table_every_trial_has_a_physical_outcome(variant):
 
 def test_hook_pose_is_a_plain_triple():
     assert tuple(HookPose(0.03, 0.0, 0.0)) == (0.03, 0.0, 0.0)
+
+
+def _created_world(tmp_path):
+    from creative_py.mesh.export import write_tool_files
+    from creative_py.sim.hook_tube import with_tool
+
+    spec = HookSpec("hook_new1", 0.55, handle_width=0.01, hook_length=0.035, hook_width=0.012)
+    files = write_tool_files(spec, tmp_path, picture=False)
+    return with_tool(hook_world(), spec, files.urdf), files
+
+
+@pytest.mark.sim
+def test_a_created_tool_is_spawned_from_its_urdf_and_listed(tmp_path):
+    from creative_py.sim.trial import list_case
+
+    world, files = _created_world(tmp_path)
+    listing = list_case("hook", world)
+    assert listing["objects"]["hook_new1"]["set"] == "created"
+    assert listing["objects"]["hook_new1"]["urdf"] == str(files.urdf)
+    with open_episode("hook", world, "long_tube", 1, "hook_new1") as ep:
+        assert ep.pick_up().ok
+        tip = ep.tip_position()  # proprioception: FK + the known grasp
+        import pybullet as pb
+        from creative_py.sim.bodies import frame_pose
+        pos, quat = frame_pose(ep.sim, ep.tool_body)
+        true_tip = pb.multiplyTransforms(pos, quat, prong_centre(ep.spec), (0, 0, 0, 1))[0]
+        assert math.dist(tip, true_tip) < 0.003
+
+
+@pytest.mark.slow
+@pytest.mark.sim
+def test_a_created_long_hook_pulls_the_cube_from_the_long_tube(tmp_path):
+    from creative_py.sim.trial import run_trial
+
+    world, _ = _created_world(tmp_path)
+    r = run_trial("hook", world, "hook_new1", "long_tube", 1)
+    assert r.outcome == "success", r.reason
