@@ -202,8 +202,11 @@ def _with_tool(world: Any, spec: Any, urdf: Any) -> Any:
         # The wedge world keeps each object with its set and friction: a created object
         # takes the friction of the existing ones (the same printed material).
         template = next(iter(world.objects.values()))
-        item = (dataclasses.replace(template, spec=spec, set="created")
-                if hasattr(template, "spec") else spec)
+        if hasattr(template, "spec"):
+            extra = {"urdf": urdf} if hasattr(template, "urdf") else {}
+            item = dataclasses.replace(template, spec=spec, set="created", **extra)
+        else:
+            item = spec
         changes["objects"] = {**world.objects, spec.name: item}
     else:
         raise TypeError(f"cannot add a tool to a {type(world).__name__}")

@@ -93,7 +93,7 @@ import logging
 import math
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Optional, Any, NamedTuple
 
 import numpy as np
 import pybullet as pb
@@ -101,7 +101,7 @@ import pybullet as pb
 from creative_py.mesh.spec import BlockSpec, Box, spec_from_dict
 from creative_py.sim.baxter import Baxter, BaxterConfig, MoveResult
 from creative_py.sim.bodies import (Surface, frame_pose, set_frame_pose, spawn_parts,
-                                    spawn_spec, yaw_of)
+                                    load_tool_urdf, spawn_spec, yaw_of)
 from creative_py.sim.core import Pose, Sim
 from creative_py.sim.trial import Fact, Observation, SkillOutcome, TrialResult
 from creative_py.world import (WORLDS_ROOT, Fields, PhysicsSettings, WorldFileError,
@@ -205,11 +205,17 @@ class HeldCriterion:
 
 @dataclass(frozen=True)
 class WorldObject:
-    """An available object: its spec, set name and pybullet friction."""
+    """An available object: its spec, set name and pybullet friction.
+
+    ``urdf`` names the URDF file of a tool the robot created (written by
+    :mod:`creative_py.mesh`); such an object is loaded from that file, the others are
+    built from their spec.
+    """
 
     spec: BlockSpec
     set: str
     friction: float
+    urdf: Optional[Path] = None
 
 
 @dataclass(frozen=True)
@@ -515,10 +521,13 @@ class WedgeEpisode:
         # time and none of the others takes part).
         item = self.item
         (x, y), yaw = w.tray.position, w.tray.yaw
-        self.body = spawn_spec(sim, item.spec, ((x, y, st.top_z + 0.0005),
-                                                tuple(pb.getQuaternionFromEuler((0, 0, yaw)))),
-                               Surface(item.friction, SET_COLOURS.get(item.set,
-                                                                      (0.6, 0.6, 0.6, 1.0))))
+        start = ((x, y, st.top_z + 0.0005), tuple(pb.getQuaternionFromEuler((0, 0, yaw))))
+        if item.urdf is not None:
+            self.body = load_tool_urdf(sim, item.urdf, start, lateral_friction=item.friction)
+        else:
+            self.body = spawn_spec(sim, item.spec, start,
+                                   Surface(item.friction, SET_COLOURS.get(item.set,
+                                                                          (0.6, 0.6, 0.6, 1.0))))
         h = w.handling
         if self.with_robot:
             self.robot = Baxter(sim, BaxterConfig(speed=h.speed,

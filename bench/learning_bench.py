@@ -1,0 +1,96 @@
+"""Whole runs of both cases over several seeds: the paper's trial counts, and wall time.
+
+For each case and seed, one ``run_case`` (demonstration, tool-use learning, evaluation,
+tool creation) in its own process. Records, per case: tool-use trials and the trial at
+which the version space had nothing left to test (median and worst over the seeds),
+creation trials (failed and successful), created-tool evaluation successes, and wall
+time per phase. Writes bench/results/learning.json and prints a table next to the
+paper's numbers (hook: 12 TUL trials, TC 1 failed + 1 successful; wedge: 9 TUL trials,
+TC 2 failed + 1 successful).
+
+    .venv/bin/python bench/learning_bench.py [--seeds 10] [--cases hook wedge]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import statistics
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+PAPER = {"hook": {"use_trials": 12, "create_failed": 1, "create_success": 1},
+         "wedge": {"use_trials": 9, "create_failed": 2, "create_success": 1}}
+
+ONE_RUN = """
+import json, sys
+from pathlib import Path
+from creative_py.learning.run import RunOptions, run_case
+folder = run_case(sys.argv[1], Path(sys.argv[2]), RunOptions(seed=int(sys.argv[3])))
+print(json.dumps(json.loads((folder.path / "summary.json").read_text())))
+"""
+
+
+def one_run(case: str, seed: int, out: Path) -> dict:
+    """Run one case in a fresh process and return its summary.json."""
+    proc = subprocess.run([sys.executable, "-c", ONE_RUN, case, str(out), str(seed)],
+                          capture_output=True, text=True, cwd=HERE.parent)
+    if proc.returncode != 0:
+        return {"error": proc.stderr.strip().splitlines()[-1:] or ["?"]}
+    return json.loads(proc.stdout.strip().splitlines()[-1])
+
+
+def stats(values: list) -> dict:
+    """Return median and worst (max) of numbers, ignoring None."""
+    vs = [v for v in values if v is not None]
+    if not vs:
+        return {"median": None, "worst": None, "n": 0}
+    return {"median": statistics.median(vs), "worst": max(vs), "n": len(vs)}
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__,
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--seeds", type=int, default=10)
+    ap.add_argument("--cases", nargs="+", default=["hook", "wedge"])
+    args = ap.parse_args()
+    results = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for case in args.cases:
+            runs = []
+            for seed in range(args.seeds):
+                s = one_run(case, seed, Path(tmp))
+                runs.append(s)
+                print(f"{case} seed {seed}: " + (str(s["error"]) if "error" in s else
+                      f"TUL {s['use']['trials']} (nothing left to test after "
+                      f"{s['use']['trials_to_converge']}), TC {s.get('create', {}).get('trials')}"
+                      f", {s['wall_time_s']['total']} s"), flush=True)
+            ok = [r for r in runs if "error" not in r]
+            results[case] = {
+                "seeds": args.seeds,
+                "errors": [r["error"] for r in runs if "error" in r],
+                "use_trials": stats([r["use"]["trials"] for r in ok]),
+                "trials_to_converge": stats([r["use"]["trials_to_converge"] for r in ok]),
+                "create_failed": stats([r["create"]["failed_trials"] for r in ok
+                                        if "create" in r]),
+                "create_trials": stats([r["create"]["trials"] for r in ok if "create" in r]),
+                "created_tool_eval_successes": stats(
+                    [sum(o == "success" for o in r["create"]["eval"]) for r in ok
+                     if "create" in r]),
+                "learned_model_eval": stats([r["eval"]["successes"] for r in ok]),
+                "wall_time_s": {ph: stats([r["wall_time_s"].get(ph) for r in ok])
+                                for ph in ("use", "eval", "create", "total")},
+                "paper": PAPER[case],
+            }
+    out = HERE / "results" / "learning.json"
+    out.parent.mkdir(exist_ok=True)
+    out.write_text(json.dumps(results, indent=2) + "\n")
+    print(json.dumps(results, indent=2))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

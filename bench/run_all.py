@@ -1,0 +1,54 @@
+"""Run every benchmark and record its figures under bench/results/ (``make bench``).
+
+Each benchmark is a separate process (one embedded Prolog and one physics client per
+process); a failing one is reported and the others still run. The learning benchmark
+(several whole runs per case) is the long one: ``--quick`` leaves it out.
+"""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+
+BENCHES = [
+    ["swipl", str(HERE / "engine_bench.pl")],
+    [sys.executable, str(HERE / "bridge_bench.py")],
+    [sys.executable, str(HERE / "mesh_bench.py")],
+    [sys.executable, str(HERE / "perception_error.py")],
+    [sys.executable, str(HERE / "sim_bench.py")],
+    [sys.executable, str(HERE / "sim_wedge_bench.py")],
+]
+LEARNING = [sys.executable, str(HERE / "learning_bench.py")]
+
+
+def main() -> int:
+    """Run the benchmarks; return 1 if any failed."""
+    ap = argparse.ArgumentParser(description=__doc__)
+    ap.add_argument("--quick", action="store_true", help="leave out the learning runs")
+    args = ap.parse_args()
+    (HERE / "results").mkdir(exist_ok=True)
+    failed = []
+    for cmd in BENCHES + ([] if args.quick else [LEARNING]):
+        if not Path(cmd[1]).exists():
+            print(f"skip {cmd[1]}: not present")
+            continue
+        t0 = time.perf_counter()
+        print(f"== {Path(cmd[1]).name}", flush=True)
+        rc = subprocess.call(cmd, cwd=ROOT)
+        print(f"== {Path(cmd[1]).name}: exit {rc} in {time.perf_counter() - t0:.1f} s",
+              flush=True)
+        if rc != 0:
+            failed.append(Path(cmd[1]).name)
+    if failed:
+        print("failed: " + ", ".join(failed))
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())

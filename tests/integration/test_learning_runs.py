@@ -1,0 +1,55 @@
+"""Whole learning runs in the physics (Algorithms 1 and 2), one per case.
+
+These run many pybullet trials (a wedge run takes about two minutes, a hook run more), so
+they are marked ``slow`` and run by ``make test-all``; ``make test`` leaves them out.
+What they check is what a user of ``make hook`` / ``make wedge`` would notice: the trial
+budget of the paper, the learned model, the created tool and its files.
+"""
+
+import json
+
+import pytest
+
+from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.run_folder import read_trials
+
+pytestmark = [pytest.mark.slow, pytest.mark.sim]
+
+
+def _run(case, tmp_path, **kw):
+    folder = run_case(case, tmp_path, RunOptions(seed=0, **kw))
+    return folder.path, json.loads((folder.path / "summary.json").read_text())
+
+
+def test_wedge_case_end_to_end(tmp_path):
+    path, s = _run("wedge", tmp_path)
+    trials = read_trials(path)
+    use = [t for t in trials if t["phase"] == "use"]
+    assert len(use) <= 9                      # the paper's budget (Figure 6)
+    hg = s["hypotheses"]["hg"]
+    for literal in ("shape(_G3,triangular_prism)", "far_from_hinge(", "tip_towards("):
+        assert literal in hg
+    assert s["eval"]["successes"] >= s["eval"]["trials"] - 1
+    create = s["create"]
+    assert create["needed"] and create["success"] is not None
+    tool = create["created_tools"][-1]
+    assert tool["instance"].startswith("block_length(") and "long" in tool["instance"]
+    assert sum(o == "success" for o in create["eval"]) >= 4      # paper: 5 of 5
+    for ext in ("urdf", "sdf", "scad", "stl"):
+        assert (path / "tools" / tool["name"] / f"{tool['name']}.{ext}").exists()
+    model = (path / "model.pl").read_text()
+    assert "learned_model(wedge-big_door" in model and "block_length(A, long)" in model
+    for f in ("domain.pddl", "problem.pddl", "trials.png"):
+        assert (path / f).exists()
+
+
+def test_hook_case_end_to_end(tmp_path):
+    path, s = _run("hook", tmp_path)
+    use = [t for t in read_trials(path) if t["phase"] == "use"]
+    assert len(use) <= 12                     # the paper's budget (Figure 5)
+    assert "behind(" in s["hypotheses"]["hg"]
+    create = s["create"]
+    assert create["needed"] and create["success"] is not None
+    tool = create["created_tools"][-1]
+    assert tool["instance"].startswith("handle_length(") and "long" in tool["instance"]
+    assert sum(o == "success" for o in create["eval"]) >= 4      # paper: 5 of 5
