@@ -8,7 +8,9 @@
     of several runs of wall time). The clauses are generated with a fixed
     seed: scenes of objects with kinds, qualitative sizes, measured lengths
     (numbers), binary relations that share objects, and a few negated
-    literals, so every predicate occurs many times at the larger sizes.
+    literals, so every predicate occurs many times at the larger sizes. The
+    LGG pairs a scene with a perturbed copy of itself (objects renamed,
+    numbers moved, one literal in five replaced): two examples of one concept.
 */
 
 :- initialization(main, main).
@@ -81,6 +83,49 @@ literal_of_kind(9, A, B, attached(A, B, Side)) :- random_member(Side, [left, rig
 
 list_conj([L], L) :- !.
 list_conj([L|Ls], (L, C)) :- list_conj(Ls, C).
+
+%   perturbed(+Example, +Seed, -Other): a second example of the same
+%   concept: the objects renamed (o_i -> p_i, the head's objects too), every
+%   number moved by up to 20 %, and one literal in five replaced by a random
+%   one, so the two examples share most of their structure.
+perturbed(Example, Seed, Other) :-
+    clause_head_body(Example, H0, B0),
+    set_random(seed(Seed)),
+    length(B0, N),
+    K is max(4, N // 4),
+    maplist(perturb_literal(K), B0, B1),
+    clause_head_body(E1, H0, B1),
+    rename_objects(E1, Other).
+
+perturb_literal(K, L0, L) :-
+    random_between(1, 5, R),
+    (   R =:= 1
+    ->  random_literal(K, L)
+    ;   perturb_numbers(L0, L)
+    ).
+
+perturb_numbers(T0, T) :-
+    (   float(T0)
+    ->  random_between(80, 120, P),
+        T is T0 * P / 100
+    ;   compound(T0)
+    ->  T0 =.. [F|As0],
+        maplist(perturb_numbers, As0, As),
+        T =.. [F|As]
+    ;   T = T0
+    ).
+
+rename_objects(T0, T) :-
+    (   atom(T0),
+        atom_concat(o, Num, T0),
+        atom_number(Num, _)
+    ->  atom_concat(p, Num, T)
+    ;   compound(T0)
+    ->  T0 =.. [F|As0],
+        maplist(rename_objects, As0, As),
+        T =.. [F|As]
+    ;   T = T0
+    ).
 
 %   variabilise(+Ground, -Clause): every object constant becomes a variable.
 variabilise(Ground, Clause) :-
@@ -170,7 +215,7 @@ runs(N, Runs) :-
 bench_size(N, Row) :-
     runs(N, Runs),
     scene(1, N, E1),
-    scene(2, N, E2),
+    perturbed(E1, 2, E2),
     variabilise(E1, C1),
     median_ms(Runs, clause_lgg(E1, E2, _), Lgg),
     clause_lgg(E1, E2, G),

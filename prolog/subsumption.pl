@@ -15,6 +15,7 @@
 :- use_module(library(option)).
 :- use_module(library(pairs)).
 :- use_module(library(heaps)).
+:- use_module(library(ordsets)).
 
 /** <module> Theta-subsumption, Plotkin reduction and coverage of clauses
 
@@ -167,8 +168,8 @@ subsumes_body_(GH, GB, SH, Index, Ranges) :-
     maplist(match_component_(Index, Ranges, NoExclusion), Comps).
 
 match_component_(Index, Ranges, Excl, comp(Items, Tests)) :-
-    order_steps_(Items, Tests, Index, Excl, Steps),
-    once(match_steps_(Steps, Excl, Ranges)).
+    maplist(candidates_(Index, Excl), Items, Cands),
+    dyn_search_(Items, Cands, Tests, Ranges, Excl, _).
 
 %!  clause_covers(+Clause, +Example) is semidet.
 %
@@ -310,13 +311,21 @@ clause_reduce(Clause, Reduced) :-
 
 clause_reduce(Clause, Reduced, Options) :-
     must_be(list, Options),
-    inference_limit_(Options, Limit),
+    option(test_limit(TestLimit), Options, 20000),
+    (   TestLimit == infinite
+    ->  true
+    ;   must_be(positive_integer, TestLimit)
+    ),
+    option(on_limit(OnLimit), Options, keep),
+    must_be(oneof([keep, error]), OnLimit),
+    option(full_test_max(FullMax), Options, 60),
+    must_be(nonneg, FullMax),
     clause_head_body(Clause, Head, Body0),
     dedupe_(Body0, Body),
     split_body_(Body, Lits, Tests),
     number_items_(Lits, 1, Items),
     number_items_(Tests, 1, TestItems),
-    reduce_items_(Head, Items, TestItems, Limit, KeptItems),
+    reduce_items_(Head, Items, TestItems, TestLimit-FullMax-OnLimit, KeptItems),
     pairs_values(KeptItems, Kept),
     term_variables(Head-Kept, Live),
     include(live_test_(Live), Tests, KeptTests),
@@ -331,7 +340,7 @@ live_test_(Live, in_range(V, _, _)) :-
     ;   true
     ).
 
-reduce_items_(Head, Items, Tests, Limit, Kept) :-
+reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     copy_term_nat(Head-Items-Tests, SH-SItems-STests),
     skolemise_(SH-SItems-STests),
     spec_index_(SItems, Index),
@@ -346,8 +355,12 @@ reduce_items_(Head, Items, Tests, Limit, Kept) :-
     pairs_keys_values(CandPairs, Idxs, CandLists),
     list_to_assoc(CandPairs, CandAll),
     list_to_assoc(Items, ItemAssoc),
+    list_to_assoc(SItems, SAssoc),
+    skolem_occurrences_(SItems, SkOcc),
+    skolems_in_(SH, HeadSks),
     empty_assoc(Removed0),
-    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit),
+    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, TestLimit-FullMax, OnLimit,
+              local(SAssoc, SkOcc, HeadSks, STests)),
     foldl(reduce_component_(Ctx), Comps, Removed0, Removed),
     exclude(removed_item_(Removed), Items, Kept).
 
@@ -366,26 +379,113 @@ reduce_component_(Ctx, comp(CItems, _), Removed0, Removed) :-
 %   without the literals removed so far); a literal whose only possible
 %   image is itself is skipped at once.
 reduce_literal_(Ctx, Idxs, I, Removed0, Removed) :-
-    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit),
+    Ctx = red(_, _, _, _, CandAll, _, _, _, _),
     (   get_assoc(I, Removed0, _)
     ->  Removed = Removed0
     ;   get_assoc(I, CandAll, OwnCands),
         \+ ( member(J-_, OwnCands), J =\= I, \+ get_assoc(J, Removed0, _) )
     ->  Removed = Removed0
     ;   put_assoc(I, Removed0, true, Excl),
-        exclude(removed_key_(Excl), Idxs, Alive0),
+        (   redundant_literal_(Ctx, I, Idxs, Excl, Gone)
+        ->  foldl(mark_removed_, Gone, Removed0, Removed)
+        ;   Removed = Removed0
+        )
+    ).
+
+%   redundant_literal_(+Ctx, +I, +Idxs, +Excl, -Gone): some substitution
+%   maps the component Idxs (less the removed literals) into the clause without literal I; Gone are
+%   the literals of Alive outside its image (I among them). First the
+%   local test: every variable except the non-head variables of literal I
+%   stays itself, so only the literals that contain those variables are
+%   searched (cheap, and it finds most redundancies). Then, for components
+%   of at most full_test_max literals, the full test of the component,
+%   bounded by test_limit: when the bound is hit the literal is kept (the
+%   clause stays equivalent, only perhaps not minimal), unless
+%   on_limit(error) was given.
+redundant_literal_(Ctx, I, Idxs, Excl, Gone) :-
+    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit-FullMax, OnLimit, _),
+    (   findall(G, local_gone_(Ctx, I, Excl, G), [Gone0|_])
+    ->  Gone = Gone0
+    ;   exclude(removed_key_(Excl), Idxs, Alive0),
         Alive = [I|Alive0],
+        length(Alive, NAlive),
+        NAlive =< FullMax,
         maplist(item_at_(ItemAssoc), Alive, KItems0),
         copy_term_nat(Head-KItems0-Tests, GH-KItems-GTests),
         GH = SH,
         term_variables(KItems, KVars),
         include(test_on_(KVars), GTests, KTests),
-        maplist(live_candidates_(CandAll, Excl), Alive, CandLists),
-        (   \+ memberchk([], CandLists),
-            limited_(Limit, reduce_match_(KItems, CandLists, KTests, Ranges, Image))
-        ->  subtract_idx_(Alive, Image, Gone),
-            foldl(mark_removed_, Gone, Removed0, Removed)
-        ;   Removed = Removed0
+        maplist(all_candidates_(CandAll), Alive, CandLists),
+        bounded_test_(Limit, OnLimit,
+                      reduce_match_(KItems, CandLists, KTests, Ranges, Excl, Image)),
+        subtract_idx_(Alive, Image, Gone)
+    ).
+
+local_gone_(Ctx, I, Excl, Gone) :-
+    Ctx = red(_, _, _, _, CandAll, Ranges, Limit-_, _,
+              local(SAssoc, SkOcc, HeadSks, STests)),
+    get_assoc(I, SAssoc, SI),
+    skolems_in_(SI, Sks0),
+    ord_subtract(Sks0, HeadSks, Sks),
+    Sks \== [],
+    findall(J, ( member(Sk, Sks), get_assoc(Sk, SkOcc, Js), member(J, Js),
+                 J =\= I, \+ get_assoc(J, Excl, _) ), Near0),
+    sort(Near0, Near1),
+    NearIdx = [I|Near1],
+    length(Sks, NS),
+    length(Vars, NS),
+    pairs_keys_values(SkVars, Sks, Vars),
+    list_to_assoc(SkVars, Map),
+    maplist(general_item_(SAssoc, Map), NearIdx, NearItems),
+    maplist(all_candidates_(CandAll), NearIdx, CandLists),
+    pairs_values(STests, STestLits),
+    include(local_test_(Map), STestLits, NTests0),
+    maplist(unskolem_(Map), NTests0, NTests1),
+    number_items_(NTests1, 1, NTests),
+    bounded_test_(Limit, keep,
+                  reduce_match_(NearItems, CandLists, NTests, Ranges, Excl, NearImage)),
+    subtract_idx_(NearIdx, NearImage, Gone).
+
+general_item_(SAssoc, Map, J, J-L) :-
+    get_assoc(J, SAssoc, SL),
+    unskolem_(Map, SL, L).
+
+local_test_(Map, in_range(Sk, _, _)) :-
+    get_assoc(Sk, Map, _).
+
+unskolem_(Map, T0, T) :-
+    (   T0 = '$sk'(_)
+    ->  (   get_assoc(T0, Map, V)
+        ->  T = V
+        ;   T = T0
+        )
+    ;   compound(T0)
+    ->  compound_name_arguments(T0, Name, Args0),
+        maplist(unskolem_(Map), Args0, Args),
+        compound_name_arguments(T, Name, Args)
+    ;   T = T0
+    ).
+
+skolems_in_(T, Sks) :-
+    findall(Sk, ( sub_term(Sk, T), nonvar(Sk), Sk = '$sk'(_) ), Sks0),
+    sort(Sks0, Sks).
+
+skolem_occurrences_(SItems, SkOcc) :-
+    findall(Sk-J, ( member(J-SL, SItems), skolems_in_(SL, Sks), member(Sk, Sks) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, SkOcc).
+
+bounded_test_(Limit, OnLimit, Goal) :-
+    (   Limit == infinite
+    ->  once(Goal)
+    ;   call_with_inference_limit(once(Goal), Limit, Result),
+        (   Result == inference_limit_exceeded
+        ->  (   OnLimit == error
+            ->  resource_error(inference_limit(Limit))
+            ;   fail
+            )
+        ;   true
         )
     ).
 
@@ -395,17 +495,11 @@ removed_key_(Removed, I) :-
 item_at_(ItemAssoc, I, I-L) :-
     get_assoc(I, ItemAssoc, L).
 
-live_candidates_(CandAll, Excl, I, Cands) :-
-    get_assoc(I, CandAll, All),
-    exclude(excluded_cand_(Excl), All, Cands).
+all_candidates_(CandAll, I, Cands) :-
+    get_assoc(I, CandAll, Cands).
 
-excluded_cand_(Excl, J-_) :-
-    get_assoc(J, Excl, _).
-
-reduce_match_(KItems, CandLists, KTests, Ranges, Image) :-
-    weave_(KItems, CandLists, KTests, Steps),
-    once(match_steps_(Steps, none, Ranges)),
-    findall(J, member(lit(_, _, _, J), Steps), Image).
+reduce_match_(KItems, CandLists, KTests, Ranges, Excl, Image) :-
+    dyn_search_(KItems, CandLists, KTests, Ranges, Excl, Image).
 
 subtract_idx_([], _, []).
 subtract_idx_([I|Is], Image, Gone) :-
@@ -591,17 +685,10 @@ test_on_(Vars, _-in_range(V, _, _)) :-
     W == V,
     !.
 
-%   order_steps_(+Items, +Tests, +Index, +Excl, -Steps): the steps
-%   lit(I, L, Cands, J) and test(I, V, Lo, Hi) of one component in search
-%   order; J is bound to the index of the matched literal. Fails at once
-%   when a literal has no candidate.
-order_steps_(Items, Tests, Index, Excl, Steps) :-
-    maplist(candidates_(Index, Excl), Items, Cands),
-    \+ memberchk([], Cands),
-    weave_(Items, Cands, Tests, Steps).
-
-%   As order_steps_/5, but a literal without candidates is kept (it will be
-%   violated): used by clause_violations/4.
+%   order_steps_all_(+Items, +Tests, +Index, +Excl, -Steps): the steps
+%   lit(I, L, Cands, J) and test(I, V, Lo, Hi) of one component in a static
+%   search order for the branch and bound of clause_violations/4; a literal
+%   without candidates is kept (it will be violated).
 order_steps_all_(Items, Tests, Index, Excl, Steps) :-
     maplist(candidates_(Index, Excl), Items, Cands),
     weave_(Items, Cands, Tests, Steps).
@@ -721,8 +808,7 @@ order_loop_(Heap0, State0, Ctx, Bound0, Steps, TailTests) :-
             exclude(bound_var_(Bound0), Vs, NewVs),
             foldl(bind_var_(Occ), NewVs, State1-Heap1, State2-Heap2),
             foldl(mark_bound_, NewVs, Bound0, Bound1),
-            foldl(new_tests_(TestIdx), NewVs, TSteps, Steps2),
-            Steps1 = TSteps,
+            foldl(new_tests_(TestIdx), NewVs, Steps1, Steps2),
             order_loop_(Heap2, State2, Ctx, Bound1, Steps2, TailTests)
         ;   order_loop_(Heap1, State0, Ctx, Bound0, Steps, TailTests)
         )
@@ -769,13 +855,75 @@ new_tests_(TestIdx, V, Steps0, Steps) :-
     ;   Steps0 = Steps
     ).
 
-match_steps_([], _, _).
-match_steps_([S|Ss], Excl, Ranges) :-
-    match_step_(S, Ranges),
-    match_steps_(Ss, Excl, Ranges).
+%   dyn_search_(+Items, +Cands, +Tests, +Ranges, -Image): find one
+%   substitution that maps every literal I-L of a component onto one of its
+%   candidates J-C and passes the range tests; Image lists the J used.
+%   Forward checking with dynamic ordering: at each node every open literal's
+%   domain is cut to the candidates that still unify, a literal left with
+%   no candidate fails the node at once, literals made ground with a
+%   candidate left are settled without branching, and the branch is taken
+%   on the literal with the fewest candidates. Tests run as soon as their
+%   variable is bound.
+dyn_search_(Items, Cands, Tests, Ranges, Excl, Image) :-
+    maplist(dyn_lit_, Items, Cands, Lits),
+    pairs_values(Tests, TestLits),
+    once(dyn_(Lits, TestLits, Ranges-Excl)),
+    maplist(arg(4), Lits, Image).
 
-match_step_(lit(_, L, Cands, J), _) :-
-    member(J-C, Cands),
-    L = C.
-match_step_(test(_, V, Lo, Hi), Ranges) :-
+dyn_lit_(I-L, Cands, lit(I, L, Cands, _)).
+
+dyn_([], Tests, Ranges-_) :-
+    maplist(test_holds_(Ranges), Tests).
+dyn_([L0|Ls0], Tests0, Ranges-Excl) :-
+    bound_tests_(Tests0, Ranges, Tests),
+    narrow_([L0|Ls0], Excl, Open, none, Best),
+    (   Best == none
+    ->  dyn_([], Tests, Ranges-Excl)
+    ;   Best = lit(_, L, Cs, J)-_,
+        exclude(==(Best), Open, Rest0),
+        pairs_keys(Rest0, Rest),
+        member(J-C, Cs),
+        L = C,
+        dyn_(Rest, Tests, Ranges-Excl)
+    ).
+
+test_holds_(Ranges, in_range(V, Lo, Hi)) :-
     range_test_(V, Lo, Hi, Ranges).
+
+bound_tests_([], _, []).
+bound_tests_([T|Ts], Ranges, Out) :-
+    T = in_range(V, Lo, Hi),
+    (   var(V)
+    ->  Out = [T|Out1]
+    ;   range_test_(V, Lo, Hi, Ranges),
+        Out = Out1
+    ),
+    bound_tests_(Ts, Ranges, Out1).
+
+%   narrow_(+Lits, -Open, +Best0, -Best): Open are the literals still to
+%   branch on, each Lit-Size with its narrowed domain; settled ground
+%   literals bind their J and leave; fails when a domain is empty.
+narrow_([], _, [], Best, Best).
+narrow_([lit(I, L, Cands, J)|Ls], Excl, Open, Best0, Best) :-
+    include(unifiable_cand_(L, Excl), Cands, Cs),
+    Cs = [J1-_|_],
+    (   ground(L)
+    ->  J = J1,
+        narrow_(Ls, Excl, Open, Best0, Best)
+    ;   length(Cs, N),
+        Lit = lit(I, L, Cs, J)-N,
+        Open = [Lit|Open1],
+        (   Best0 == none
+        ->  Best1 = Lit
+        ;   Best0 = _-N0,
+            N < N0
+        ->  Best1 = Lit
+        ;   Best1 = Best0
+        ),
+        narrow_(Ls, Excl, Open1, Best1, Best)
+    ).
+
+unifiable_cand_(L, Excl, J-C) :-
+    \+ L \= C,
+    \+ get_assoc(J, Excl, _).
+
