@@ -34,9 +34,12 @@ the closed interval [Lo,Hi], or to a variable of the specific clause whose own
 The general clause's head is unified with the specific head first, so the head
 variables are fixed; the body then splits into *components*: sets of literals
 linked by variables that are not in the head. Components share no variables
-and are matched independently, each with its literals ordered most constrained
-first (fewest candidate literals, then most variables already bound), with
-every range test placed directly after the literal that binds its variable.
+and are matched independently. Each component is searched with forward
+checking and dynamic ordering: at every node the candidate literals of each
+open literal are cut to those that still unify, an empty set fails the node,
+literals that became ground are settled without branching, and the search
+branches on the literal with the fewest candidates left. A range test runs as
+soon as its variable is bound.
 
 *Bound.* Every search runs under call_with_inference_limit/3. The default
 limit is 10,000,000 inferences (about one second); set it with the option
@@ -296,11 +299,30 @@ pairs_at_([I|Is], Items, [L|Ls]) :-
 %   Reduced is the Plotkin reduction of Clause: duplicate body literals are
 %   removed, then a literal L is removed whenever Clause theta-subsumes
 %   Clause without L (the clauses are then equivalent), until no literal can
-%   go. The head is kept; only the component of L (its literals linked by
-%   non-head variables) has to be mapped, and a successful mapping removes
-%   every literal of that component outside its image at once. Range tests
-%   stay for the variables that still occur. Body order is kept. Options as
-%   for theta_subsumes/3 (the inference limit applies to each test).
+%   go. The head is kept (head variables map to themselves). Only the
+%   component of L (its literals linked by non-head variables) has to be
+%   mapped, and a successful mapping removes every literal of the component
+%   outside its image at once. Range tests stay for the variables that still
+%   occur; body order is kept.
+%
+%   Each redundancy test is first tried *locally* (only the variables of L
+%   move, everything else maps to itself: cheap, and it finds most
+%   redundancies), then, when the component has at most full_test_max
+%   literals, exactly. Options:
+%
+%     - test_limit(+N)
+%       Inference bound of one exact test, default 20,000 (or `infinite`).
+%     - full_test_max(+K)
+%       Largest component (in literals) given the exact test, default 60.
+%     - on_limit(+Action)
+%       `keep` (default): a test that hits test_limit keeps its literal;
+%       `error`: raise resource_error(inference_limit(N)).
+%
+%   With the defaults the result is always equivalent to Clause, and it is
+%   the exact Plotkin reduction whenever no component is larger than
+%   full_test_max and no test hit the limit (true of every clause of the
+%   hook and wedge cases; the LGG of two 200-literal relational examples is
+%   where the bounds start to matter, see bench/engine_bench.pl).
 %
 %   ==
 %   ?- clause_reduce((p(X) :- q(X, Y), q(X, a)), R).

@@ -149,6 +149,22 @@ test(reduction_ranges_not_merged,
      [true(R =@= (p(X) :- len(X, V), len(X, W), in_range(V, 0, 1), in_range(W, 0.5, 2)))]) :-
     clause_reduce((p(X) :- len(X, V), len(X, W), in_range(V, 0, 1), in_range(W, 0.5, 2)), R).
 
+%   A duplicated chain of three: removing any literal of the first copy
+%   needs all of Y, Z, W to move together, so the local test (only the
+%   literal's own variables move) fails and the exact test is needed.
+test(reduction_needs_exact_test,
+     [true(R =@= (p(X) :- q(X, A), r(A, B), s(B, _)))]) :-
+    clause_reduce((p(X) :- q(X, Y), r(Y, Z), s(Z, _), q(X, A), r(A, B), s(B, _)), R).
+
+test(reduction_without_exact_test_keeps_literals,
+     [true(R =@= (p(X) :- q(X, Y), r(Y, Z), s(Z, W), q(X, A), r(A, B), s(B, C)))]) :-
+    clause_reduce((p(X) :- q(X, Y), r(Y, Z), s(Z, W), q(X, A), r(A, B), s(B, C)), R,
+                  [full_test_max(0)]).
+
+test(reduction_limit_error, [error(resource_error(inference_limit(1)))]) :-
+    clause_reduce((p(X) :- q(X, Y), r(Y, Z), s(Z, _), q(X, A), r(A, B), s(B, _)), _,
+                  [test_limit(1), on_limit(error)]).
+
 test(reduction_not_a_clause, [error(type_error(clause, 1))]) :-
     clause_reduce(1, _).
 
