@@ -126,4 +126,41 @@ test(number_in_body, [error(type_error(clause, (p :- q, 1)))]) :-
 test(different_heads, [error(domain_error(clause_head(p/1), q(a)))]) :-
     clause_lgg(p(a), q(a), _).
 
+%   Laws on 40 seeded random pairs of relational examples with numbers:
+%   the LGG subsumes both inputs, and it is reduced (reducing it again
+%   changes nothing).
+test(laws_on_random_pairs) :-
+    forall(between(1, 40, Seed),
+           ( random_example_(Seed, E1),
+             Seed2 is Seed + 1000,
+             random_example_(Seed2, E2),
+             clause_lgg(E1, E2, G),
+             assertion(theta_subsumes(G, E1)),
+             assertion(theta_subsumes(G, E2)),
+             clause_reduce(G, R),
+             assertion(R =@= G) )).
+
+random_example_(Seed, E) :-
+    set_random(seed(Seed)),
+    random_between(2, 8, N),
+    length(Lits, N),
+    maplist(random_literal_, Lits),
+    clause_head_body(E, t(o0, o1), Lits).
+
+random_literal_(L) :-
+    random_between(0, 3, K),
+    random_member(A, [o0, o1, o2, o3]),
+    random_member(B, [o0, o1, o2, o3]),
+    (   K =:= 0
+    ->  random_member(V, [short, long]),
+        L = size(A, V)
+    ;   K =:= 1
+    ->  random_between(1, 9, C),
+        X is C / 10,
+        L = len(A, X)
+    ;   K =:= 2
+    ->  L = on(A, B)
+    ;   L = (\+ broken(A))
+    ).
+
 :- end_tests(lgg).
