@@ -70,13 +70,14 @@ example_body_((_ :- Body), List) :-
     clause_head_body((h :- Body), _, List).
 
 %   Algorithm 1 with every trial failing: plan, label negative from the plan, repeat.
-fail_every_trial_(VS0, Primitive, Tested, Final, VS) :-
-    plan_experiment(hook, VS0, Primitive, R),
-    (   R = experiment(_, L, _, _, _, _)
-    ->  Tested = [L|Ls],
-        label_trial(hook, VS0, R, Primitive, neg, planned, VS1),
-        fail_every_trial_(VS1, Primitive, Ls, Final, VS)
-    ;   Tested = [],
+%   Experiments lists the experiment/6 terms in order, Final the first other result.
+fail_every_trial_(Case, VS0, Primitive, Experiments, Final, VS) :-
+    plan_experiment(Case, VS0, Primitive, R),
+    (   R = experiment(_, _, _, _, _, _)
+    ->  Experiments = [R|Rs],
+        label_trial(Case, VS0, R, Primitive, neg, planned, VS1),
+        fail_every_trial_(Case, VS1, Primitive, Rs, Final, VS)
+    ;   Experiments = [],
         Final = R,
         VS = VS0
     ).
@@ -183,6 +184,19 @@ test(no_object_satisfies_hg) :-
                         [handle_length(T, medium), hook_side(T, right), behind(T, cube1),
                          centred_on(T, cube1), hook_down(T)]))).
 
+%   next_experiment/6 is documented det with target/1 and context/1 required, but
+%   without them it fails silently (option/2 fails) instead of naming the missing option.
+test(missing_target_option_is_an_error,
+     [ blocked('next_experiment/6 fails instead of raising when target/context is missing') ]) :-
+    demo_vs_(VS),
+    hook_objects_(Os),
+    fixture_task_context(hook, Context),
+    catch(( next_experiment(hook, VS, Os, Context, [], _) -> Outcome = succeeded
+          ; Outcome = failed ),
+          error(_, _),
+          Outcome = raised),
+    assertion(Outcome == raised).
+
 test(cube_at_the_tube_end_leaves_no_pose_behind_it) :-
     learned_vs_(VS),
     hook_objects_(Os),
@@ -194,7 +208,8 @@ test(cube_at_the_tube_end_leaves_no_pose_behind_it) :-
 test(algorithm_1_with_every_trial_failing) :-
     demo_vs_(VS0),
     fixture_primitive(hook, P),
-    fail_every_trial_(VS0, P, Tested, Final, VS),
+    fail_every_trial_(hook, VS0, P, Experiments, Final, VS),
+    maplist(arg(2), Experiments, Tested),
     assertion(Tested == [handle_length(hook_a1, medium), hook_side(hook_a4, right),
                          behind(hook_a2, cube1), centred_on(hook_a2, cube1),
                          hook_down(hook_a2)]),
@@ -202,6 +217,20 @@ test(algorithm_1_with_every_trial_failing) :-
     vs_bounds(VS, _, HG),
     assertion(HG =@= (tool_pose(T, C, _) :- handle_length(T, medium), hook_side(T, right),
                                            behind(T, C), centred_on(T, C), hook_down(T))).
+
+test(wedge_poses_are_tested_before_objects) :-
+    fixture_demonstration_vs(wedge, VS0, _),
+    fixture_primitive(wedge, P),
+    fail_every_trial_(wedge, VS0, P, Experiments, Final, _),
+    maplist(arg(2), Experiments, Tested),
+    assertion(Tested == [near(wedge_a2, door1), far_from_hinge(wedge_a2, door1),
+                         tip_towards(wedge_a2, door1), shape(box_a1, triangular_prism),
+                         block_length(wedge_a1, long)]),
+    assertion(Final = exploit(wedge_a2, [], _, _)),
+    pose_geometry(wedge, wedge_a2, door1, P, G),
+    forall(( member(experiment(wedge_a2, L, _, Pose, Required, [L]), Experiments) ),
+           ( assertion(\+ spatial_holds(wedge, L, Pose, G)),
+             forall(member(R, Required), assertion(spatial_holds(wedge, R, Pose, G))) )).
 
 test(plan_experiment_skips_what_the_arm_could_not_do) :-
     demo_vs_(VS),
@@ -250,6 +279,18 @@ test(observed_label_records_the_pose_reached) :-
     assertion(\+ memberchk(in_front(hook_a1, cube1), PBody)),
     vs_bounds(VS2, _, HG),
     assertion(HG =@= (tool_pose(T, _, _) :- handle_length(T, medium))).
+
+test(failed_exploit_of_the_demonstration_is_noted_as_noise) :-
+    learned_vs_(VS0),
+    fixture_primitive(hook, P),
+    plan_experiment(hook, VS0, P, Exploit),
+    assertion(Exploit = exploit(hook_a2, [], _, _)),
+    label_trial(hook, VS0, Exploit, P, neg, planned, VS),
+    vs_notes(VS, Notes),
+    assertion(Notes = [noisy_negative((tool_pose(hook_a2, cube1, tube1) :- _))]),
+    vs_bounds(VS0, _, HG0),
+    vs_bounds(VS, _, HG),
+    assertion(HG =@= HG0).
 
 test(label_must_be_pos_or_neg) :-
     demo_vs_(VS0),

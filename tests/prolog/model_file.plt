@@ -22,6 +22,24 @@ learned_hook_(VS, NewModels) :-
     fixture_variant_example(E, hook_a2, [hook_down(hook_a2)-hook_flat(hook_a2)], N5),
     foldl(add_negative_, [N1, N2, N3, N4, N5], VS0, VS).
 
+%   The wedge demonstration's version space after failures with the wedge not near the
+%   door, near the hinge, reversed, a box and a short wedge.
+learned_wedge_(VS, NewModels) :-
+    fixture_demonstration_vs(wedge, VS0, NewModels),
+    vs_examples(VS0, [E], _),
+    fixture_variant_example(E, wedge_a2, [near(wedge_a2, door1)-far(wedge_a2, door1)], N1),
+    fixture_variant_example(E, wedge_a2,
+                            [far_from_hinge(wedge_a2, door1)-near_hinge(wedge_a2, door1)],
+                            N2),
+    fixture_variant_example(E, wedge_a2,
+                            [tip_towards(wedge_a2, door1)-tip_away(wedge_a2, door1)], N3),
+    fixture_variant_example(E, box_a1, [shape(box_a1, triangular_prism)-shape(box_a1, box)],
+                            N4),
+    fixture_variant_example(E, wedge_a1,
+                            [block_length(wedge_a1, long)-block_length(wedge_a1, short)],
+                            N5),
+    foldl(add_negative_, [N1, N2, N3, N4, N5], VS0, VS).
+
 add_negative_(E, VS0, VS) :-
     vs_update(VS0, neg(E), VS).
 
@@ -147,6 +165,17 @@ test(plan_task_positions_the_tool_before_pulling) :-
     plan_task(hook, Models, VS, P, [], R),
     assertion(R == plan([pick_up(hook_a2), position_tool(hook_a2, cube1, tube1),
                          pull_out(hook_a2, cube1, tube1)])).
+
+test(plan_task_places_the_learned_wedge) :-
+    learned_wedge_(VS, Models),
+    vs_bounds(VS, _, HG),
+    assertion(HG =@= (tool_pose(W, D, _) :- near(W, D), far_from_hinge(W, D),
+                                           tip_towards(W, D), shape(W, triangular_prism),
+                                           block_length(W, long))),
+    fixture_primitive(wedge, P),
+    plan_task(wedge, Models, VS, P, [], R),
+    assertion(R == plan([pick_up(wedge_a2), place(wedge_a2, door1, floor1),
+                         hold_door(wedge_a2, door1, floor1)])).
 
 test(plan_task_without_a_suitable_tool) :-
     learned_hook_(VS, Models),
