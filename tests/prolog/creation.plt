@@ -116,6 +116,18 @@ test(wedge_without_refutation_keeps_the_ontology_order) :-
     assertion(C1 = candidate(_, _, block_length(_, short), _)),
     assertion(C2 = candidate(_, _, block_length(_, long), _)).
 
+test(negative_differing_in_two_properties_refutes_nothing) :-
+    medium_wedge_example_(E),
+    vs_init(E, VS0),
+    fixture_variant_example(E, wedge_s,
+                            [ block_length(wedge_s, medium)-block_length(wedge_s, short),
+                              block_height(wedge_s, low)-block_height(wedge_s, high) ],
+                            Neg),
+    vs_update(VS0, neg(Neg), VS),
+    creation_candidates(VS, [], [C1, C2|_]),
+    assertion(C1 = candidate(block_length(_, medium), _, block_length(_, short), _)),
+    assertion(C2 = candidate(block_length(_, medium), _, block_length(_, long), _)).
+
                  /*******************************
                  *           NEXT TOOL          *
                  *******************************/
