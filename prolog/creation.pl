@@ -68,11 +68,25 @@ creation_candidates(VS, Options, Candidates) :-
               ;   Ref = 0
               ),
               Key = k(Nec, Rank, Ref, I, J),
-              replace_eq_(Struct, L, Alt, NewStruct)
+              replace_eq_(Struct, L, Alt, NewStruct0),
+              kind_literals_(Alt, NewStruct0, NewStruct)
             ),
             Keyed),
     keysort(Keyed, Sorted),
     pairs_values(Sorted, Candidates).
+
+%   A stick has no prong: when the kind is replaced by stick(T), the prong's properties
+%   leave the new tool's structural literals.
+kind_literals_(Alt, Struct0, Struct) :-
+    (   Alt = stick(_)
+    ->  exclude(prong_literal_, Struct0, Struct)
+    ;   Struct = Struct0
+    ).
+
+prong_literal_(hook_length(_, _)).
+prong_literal_(hook_width(_, _)).
+prong_literal_(hook_side(_, _)).
+prong_literal_(hook_angle(_, _)).
 
 %   The position of a replacement operator in the ontology: properties are tried in
 %   the order the ontology lists its operators.

@@ -201,7 +201,8 @@ plan_use(Case, VS, Primitive, Options, Result) :-
 %   Update the version space with the outcome of a trial. Label is pos or neg. Mode
 %   observed builds the example from the primitive facts observed before the tool
 %   action (trial_example/6); Mode planned builds it from the experiment's plan (the
-%   object's structural literals and the required spatial literals), used when the
+%   object's structural literals, the required spatial literals and h_s's task
+%   literals), used when the
 %   motion was blocked and the observed state is not the one the experiment tested.
 
 label_trial(Case, VS0, Experiment, Primitive, Label, Mode, VS) :-
@@ -214,7 +215,10 @@ label_trial(Case, VS0, Experiment, Primitive, Label, Mode, VS) :-
     ;   observed_state(Case, Primitive, State),
         task_objects(Case, State, Objects),
         memberchk(object(Tool, Struct), Objects),
-        append(Struct, Required, Lits),
+        vs_bounds(VS0, HS, _),
+        clause_head_body_(HS, tool_pose(Tool, Target, Ctx), _),
+        hypothesis_parts(HS, _, _, Task),
+        append([Struct, Required, Task], Lits),
         list_to_conj_(Lits, Body),
         Example = (tool_pose(Tool, Target, Ctx) :- Body)
     ),
@@ -252,8 +256,12 @@ experiment_object_(exploit(Tool, _, _, Required), Tool, Required).
 
 next_experiment(Case, VS, Objects, Context, Options, Result) :-
     must_be(list, Objects),
-    option(target(Target), Options),
-    option(context(Ctx), Options),
+    must_be(list, Options),
+    (   option(target(Target), Options),
+        option(context(Ctx), Options)
+    ->  true
+    ;   domain_error(options_with(target(_), context(_)), Options)
+    ),
     vs_bounds(VS, HS, HG),
     clause_head_body_(HS, Head, _),
     Head =.. [_, _Tool, Target, Ctx],
@@ -407,7 +415,9 @@ is_in_range_(in_range(_, _, _)).
 
 literal_role(Head, L, Role) :-
     Head =.. [_, Tool|_],
-    (   spatial_any_(L)
+    (   spatial_any_(L),
+        arg(1, L, A),
+        A == Tool
     ->  Role = spatial
     ;   term_variables(L, _),
         mentions_(L, Tool)

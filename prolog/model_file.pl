@@ -51,15 +51,15 @@ write_model_file(File, Case, Models, VS) :-
           format(Out, '%   learned_model(Task, Action, Precondition, Effects): Precondition is~n', []),
           format(Out, '%   the skill\'s own precondition and the most general hypothesis h_g.~n', []),
           format(Out, '%   learned_hypothesis(Task, hs|hg, Clause): the version space\'s bounds.~n~n', []),
-          forall(member(M, Models), write_model_(Out, Case, M, HG)),
+          forall(member(M, Models), write_model_(Out, Case, M, HS-HG)),
           nl(Out),
           portray_clause(Out, learned_hypothesis(Case, hs, HS)),
           portray_clause(Out, learned_hypothesis(Case, hg, HG))
         ),
         close(Out)).
 
-write_model_(Out, Case, Model, HG) :-
-    learned_model_(Model, HG, action_model(Name, Params, Pre1, Add, Del)),
+write_model_(Out, Case, Model, HS-HG) :-
+    learned_model_(Model, HS-HG, action_model(Name, Params, Pre1, Add, Del)),
     pairs_keys_(Params, Vars),
     Action =.. [Name|Vars],
     effects_(Add, Del, Eff),
@@ -73,20 +73,24 @@ effects_(Add, Del, Eff) :-
     append(As, Ds, Eff).
 
 %   The observed model with its precondition rewritten: the skill's own literals, then
-%   h_g's body (interval literals left out: a planner has no use for them).
-learned_model_(action_model(Name, Params, Pre, Add, Del), HG,
+%   h_g's body, then the spatial literals of h_s that h_g lacks (the pose the robot
+%   puts the tool in: a pose must be chosen anyway, and h_s's is the one that worked).
+%   Interval literals are left out: a planner has no use for them.
+learned_model_(action_model(Name, Params, Pre, Add, Del), HS-HG,
                action_model(Name, Params, Pre1, Add, Del)) :-
     pairs_keys_(Params, Vars),
-    copy_term(HG, HG1),
-    (   HG1 = (HGHead :- HGBody)
-    ->  true
-    ;   HGHead = HG1, HGBody = true
-    ),
+    copy_term(HS-HG, HS1-HG1),
+    clause_parts_(HS1, HSHead, HSBody),
+    clause_parts_(HG1, HGHead, HGBody),
+    HSHead = HGHead,
     (   Vars = [T, C, X | _]
     ->  HGHead =.. [_, T, C, X]
     ;   true
     ),
-    conj_list_(HGBody, HGLits0),
+    conj_list_(HGBody, HGLits1),
+    hypothesis_parts((HSHead :- HSBody), _, HSSpatial, _),
+    exclude(in_list_eq_(HGLits1), HSSpatial, ExtraSpatial),
+    append(HGLits1, ExtraSpatial, HGLits0),
     exclude(interval_literal_, HGLits0, HGLits),
     (   Vars = [Tool|_]
     ->  include(not_tool_literal_(Tool), Pre, Skill)
@@ -102,14 +106,23 @@ not_tool_literal_(Tool, L) :-
 
 interval_literal_(in_range(_, _, _)).
 
+clause_parts_((H :- B), H, B) :- !.
+clause_parts_(H, H, true).
+
+in_list_eq_(List, X) :-
+    member(Y, List),
+    Y == X,
+    !.
+
 %!  learned_action_models(+Models, +VS, -Learned) is det.
 %
 %   The new action models of a demonstration with their preconditions rewritten from
-%   the final version space: the skill's own precondition, then h_g.
+%   the final version space: the skill's own precondition, then h_g, then the spatial
+%   literals of h_s that h_g lacks.
 
 learned_action_models(Models, VS, Learned) :-
-    vs_bounds(VS, _, HG),
-    learned_models_(Models, HG, Learned).
+    vs_bounds(VS, HS, HG),
+    learned_models_(Models, HS-HG, Learned).
 
 learned_models_([], _, []).
 learned_models_([M|Ms], HG, [L|Ls]) :-

@@ -211,11 +211,8 @@ test(wedge_creates_a_long_wedge) :-
     dim_(Dims, shape, Shape),
     assertion(Shape == triangular_prism).
 
-%   A stick keeps the hook's prong literals (hook_length, hook_width, hook_side,
-%   hook_angle) in its Structural list, so solve_size/4 always finds it infeasible and
-%   any_kind can never create a stick.
-test(stick_candidate_is_sized_as_a_stick,
-     [ blocked('creation keeps the prong literals in a stick candidate: always infeasible') ]) :-
+%   A stick candidate drops the hook's prong literals, so it can be sized as a stick.
+test(stick_candidate_is_sized_as_a_stick) :-
     short_hook_failed_vs_(VS),
     creation_candidates(VS, [], Cs),
     maplist(instance_, Cs, Tried0),

@@ -96,8 +96,7 @@ test(first_experiment_uses_the_short_handled_hook) :-
     assertion(Violated == [handle_length(hook_a1, medium)]),
     assertion(Negated == []),
     assertion(Required == [in_tube(hook_a1, tube1), behind(hook_a1, cube1),
-                           centred_on(hook_a1, cube1), hook_down(hook_a1),
-                           in_tube(cube1, tube1)]),
+                           centred_on(hook_a1, cube1), hook_down(hook_a1)]),
     forall(member(L, Required), assertion(holds_(hook_a1, Pose, L))),
     fixture_task_context(hook, Context),
     pose_world(hook, hook_a1, Context, Pose, tip(X, _, _)),
@@ -184,10 +183,9 @@ test(no_object_satisfies_hg) :-
                         [handle_length(T, medium), hook_side(T, right), behind(T, cube1),
                          centred_on(T, cube1), hook_down(T)]))).
 
-%   next_experiment/6 is documented det with target/1 and context/1 required, but
-%   without them it fails silently (option/2 fails) instead of naming the missing option.
-test(missing_target_option_is_an_error,
-     [ blocked('next_experiment/6 fails instead of raising when target/context is missing') ]) :-
+%   next_experiment/6 is documented det with target/1 and context/1 required: without
+%   them it raises, naming the options it needs.
+test(missing_target_option_is_an_error) :-
     demo_vs_(VS),
     hook_objects_(Os),
     fixture_task_context(hook, Context),
@@ -416,12 +414,9 @@ test(literal_roles) :-
            ( literal_role(H, L, R),
              assertion(R-L == Role-L) )).
 
-%   The module header says a literal that does not mention the tool is a task literal,
-%   naming in_tube(cube1, tube1); literal_role/3 returns spatial for it because the
-%   ontology defines in_tube(tool, context) and the check looks at the name only.
-test(literal_role_of_the_cube_in_the_tube,
-     [ blocked('literal_role/3 classifies in_tube(Cube, Tube) as spatial, its doc says task'),
-       Role == task ]) :-
+%   A literal that does not mention the tool is a task literal, even when the ontology
+%   defines a spatial literal of the same name for tools (in_tube(tool, context)).
+test(literal_role_of_the_cube_in_the_tube, [ Role == task ]) :-
     literal_role(tool_pose(_, C, X), in_tube(C, X), Role).
 
 test(hypothesis_parts_of_the_wedge_hs) :-

@@ -84,7 +84,8 @@ test(round_trip, [ setup(temp_file_(File)), cleanup(cleanup_(File)) ]) :-
     loaded_models_(File, hook, Loaded),
     assertion(Loaded =@= [learned_model(hook, pull_out(T, C, X),
                                         [holding(T), in_tube(C, X),
-                                         handle_length(T, medium)],
+                                         handle_length(T, medium), in_tube(T, X),
+                                         behind(T, C), centred_on(T, C), hook_down(T)],
                                         [add(out_of_tube(C, X)), del(in_tube(T, X)),
                                          del(in_tube(C, X))])]),
     findall(B, learned_hypothesis(hook, B, _), Bounds),
@@ -103,7 +104,7 @@ test(round_trip_keeps_every_hg_literal_in_the_precondition,
     assertion(Action-Pre-Eff =@=
               pull_out(T, C, X)-[holding(T), in_tube(C, X), handle_length(T, medium),
                                  hook_side(T, right), behind(T, C), centred_on(T, C),
-                                 hook_down(T)]-
+                                 hook_down(T), in_tube(T, X)]-
               [add(out_of_tube(C, X)), del(in_tube(T, X)), del(in_tube(C, X))]).
 
 test(model_file_is_readable_text, [ setup(temp_file_(File)), cleanup(cleanup_(File)) ]) :-
@@ -124,7 +125,8 @@ test(created_variant_is_written_after_the_learned_model,
     assertion(Tasks == [hook, hook-longer_tube]),
     learned_model(hook-longer_tube, Action, Pre, Eff),
     assertion(Action-Pre-Eff =@=
-              pull_out(T, C, X)-[holding(T), in_tube(C, X), handle_length(T, long)]-
+              pull_out(T, C, X)-[holding(T), in_tube(C, X), handle_length(T, long),
+                                 in_tube(T, X), behind(T, C), centred_on(T, C), hook_down(T)]-
               [add(out_of_tube(C, X)), del(in_tube(T, X)), del(in_tube(C, X))]).
 
 test(missing_file, error(existence_error(source_sink, File))) :-
@@ -149,13 +151,13 @@ test(other_terms_are_refused,
                  *     PLANNING WITH THE MODEL  *
                  *******************************/
 
-test(learned_action_models_take_hg_as_precondition) :-
+test(learned_action_models_take_hg_and_hs_pose_as_precondition) :-
     learned_hook_(VS, Models),
     learned_action_models(Models, VS, [Learned]),
     assertion(Learned =@= action_model(pull_out, [T-tool, C-target, X-site],
                                        [holding(T), in_tube(C, X), handle_length(T, medium),
                                         hook_side(T, right), behind(T, C), centred_on(T, C),
-                                        hook_down(T)],
+                                        hook_down(T), in_tube(T, X)],
                                        [out_of_tube(C, X)],
                                        [in_tube(T, X), in_tube(C, X)])).
 
@@ -205,7 +207,8 @@ test(created_models_swap_the_replaced_literal) :-
     short_hook_failed_(VS, Models),
     created_models(Models, VS, handle_length(_, medium), handle_length(_, long), [M]),
     assertion(M =@= action_model(pull_out, [T-tool, C-target, X-site],
-                                 [holding(T), in_tube(C, X), handle_length(T, long)],
+                                 [holding(T), in_tube(C, X), handle_length(T, long),
+                                  in_tube(T, X), behind(T, C), centred_on(T, C), hook_down(T)],
                                  [out_of_tube(C, X)], [in_tube(T, X), in_tube(C, X)])).
 
 test(created_models_add_an_instance_hg_did_not_hold) :-
@@ -213,7 +216,7 @@ test(created_models_add_an_instance_hg_did_not_hold) :-
     created_models(Models, VS, hook_length(_, long), hook_length(_, short), [M]),
     assertion(M =@= action_model(pull_out, [T-tool, C-target, X-site],
                                  [holding(T), in_tube(C, X), handle_length(T, medium),
-                                  hook_length(T, short)],
+                                  in_tube(T, X), behind(T, C), centred_on(T, C), hook_down(T), hook_length(T, short)],
                                  [out_of_tube(C, X)], [in_tube(T, X), in_tube(C, X)])).
 
 test(plan_with_created_models_needs_the_created_tool) :-
@@ -225,7 +228,8 @@ test(plan_with_created_models_needs_the_created_tool) :-
     append(Created, Innate, All),
     action_task_goal(hook, Goal),
     plan(State, Goal, All, [], R),
-    assertion(R = plan([pick_up(T), pull_out(T, cube1, tube1)])),
+    assertion(R = plan([pick_up(T), position_tool(T, cube1, tube1),
+                        pull_out(T, cube1, tube1)])),
     assertion(memberchk(T, [hook_a3, hook_a5])).
 
 :- end_tests(model_file).
