@@ -262,6 +262,9 @@ def execute_trial(case: str, world: Any, tool: str, variant: str, location: int,
         for name, skill in steps:
             res = skill()
             if res.status != "ok":
+                # What the robot sees where the motion stopped: the catalogue and the
+                # task's facts still describe the trial (a planned example needs them).
+                facts = list(ep.observe().facts) if res.status == "blocked" else facts
                 return Executed(res.status, f"{name}: {res.reason}", facts,
                                 ep.sim_time(), time.perf_counter() - t0)
         facts = list(ep.observe().facts)
@@ -435,8 +438,14 @@ class ToolUseLearner:
         if lab is not None and label:
             facts = [fact_term(f) for f in ex.facts_before]
             planned = ex.outcome == "blocked"
-            vs = self.engine.call("label_trial", self.case, vs, exp, facts, lab,
-                                  "planned" if planned else "observed")
+            if planned and not facts:
+                facts = self.task_facts(task)
+            vs1 = self.engine.call("label_trial", self.case, vs, exp, facts, lab,
+                                   "planned" if planned else "observed")
+            if not isinstance(vs1, Compound):
+                raise RuntimeError(f"{self.case} trial {n}: Prolog could not label the "
+                                   f"{ex.outcome} of {tool} ({term_text(exp)})")
+            vs = vs1
         hs, hg = self._bounds(vs)
         decision += time.perf_counter() - td
         rec = TrialRecord(
