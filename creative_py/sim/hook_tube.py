@@ -14,21 +14,25 @@ Pose of the tool relative to the cube, :class:`HookPose` ``(dx, dy, roll)``:
   measured from the prong, whatever side of the handle it is on.
 
 How the skill positions the tool (the pose has no height: the skill chooses it). The
-tool is inserted with the prong flat (horizontal) just above the cube, to the side of
-the handle with more room (or at the requested roll, if that is flat); once the prong
-is at ``dx`` the handle is raised, if needed, so that the lowered prong clears the
-tube's floor, and the tool turns to ``roll``. ``act`` pulls straight back along -x
-until the prong is outside the mouth. The goal holds when the cube's centre is more
-in front of the mouth.
+gripper carries the tool above the tube to in front of its mouth and turns it so the
+prong is flat (horizontal): towards the side of the handle with more room, or at the
+requested roll if that is flat. Before going down it tries the rest of the motion
+(insertion, turning, pull) in the kinematics client; if the arm would run into a joint
+limit on the way, it lifts the tool, re-shapes the arm in joint space into a posture
+that can follow the whole path, and comes back. It then lowers the tool to just above
+the cube, inserts it along +x until the prong is at ``dx``, raises the handle if needed
+so that the lowered prong clears the tube's floor, and turns the tool to ``roll``.
+``act`` pulls straight back along -x until the prong is outside the mouth. The goal
+holds when the cube's centre is in front of the mouth.
 
 Does the hook side matter? Not in this tube, and we say so rather than fake it: the
 prong's direction is set by the roll, which the wrist turns either way, so a left and
-a right hook are mirror images in use. A cube against a side wall (locations 3 and 4)
-only decides which way the skill lays the prong flat while inserting. What does
-matter physically: handle length (the wrist does not fit in the tube, so a short
-handle is blocked at the mouth), roll (a flat prong passes over the cube), dx (a prong
-lowered in front of the cube pushes nothing), dy (a prong beside the cube misses it),
-and hook length (a short prong catches little of the cube).
+a right hook are mirror images in use. A cube against a side wall (location 3) only
+decides which way the skill lays the prong flat while inserting. What does matter
+physically: handle length (the gripper's base does not fit in the mouth, only its
+fingers do, up to 0.10 m, so a short handle is blocked at the mouth or pushes
+nothing), roll (a flat prong passes over the cube), dx (a prong lowered in front of
+the cube pushes nothing) and dy (a prong beside the cube misses it).
 
 Perception: the cube's pose comes from the downward camera (``[[camera]]`` in
 ``scene.toml``) through :mod:`creative_py.perception`; the held tool's pose comes from
@@ -410,7 +414,8 @@ class HookEpisode:
     """
 
     def __init__(self, world: HookWorld, variant: str, location: int, tool: str,
-                 seed: int = 0, gui: bool = False, images_dir: Path | None = None) -> None:
+                 seed: int = 0, gui: bool = False, images_dir: Path | None = None,
+                 posture_cache: dict | None = None) -> None:
         if variant not in world.variants:
             raise KeyError(f"unknown variant {variant!r}; variants: {', '.join(world.variants)}")
         if not (isinstance(location, int) and 1 <= location <= len(world.locations)):
@@ -424,6 +429,7 @@ class HookEpisode:
         self.images_dir = images_dir
         self.render_time_s = 0.0
         self._shots = 0
+        self._postures = posture_cache
         self.sim = Sim(world.physics, gui=gui)
         try:
             self._build()
@@ -496,9 +502,15 @@ class HookEpisode:
         # both flat rolls (+-pi/2) stay within its limits.
         work = ((tb.mouth_x - 0.25, tb.axis_y, self.floor_z + tb.inner_height / 2),
                 gripper_orientation(0.0))
-        q_work = self.robot.solve_ik_global(work)
         home = ((st.butt_x - 0.1, st.axis_y, self._travel_z()), gripper_orientation(lie_roll))
-        q = self.robot.solve_ik_global(home, keep=1, seeds=[q_work] if q_work else ())
+        key = (work, home)
+        if self._postures is not None and key in self._postures:
+            q = self._postures[key]  # the same numbers the search below gives
+        else:
+            q_work = self.robot.solve_ik_global(work)
+            q = self.robot.solve_ik_global(home, keep=1, seeds=[q_work] if q_work else ())
+            if self._postures is not None and q is not None:
+                self._postures[key] = q
         if q is None:
             raise RuntimeError(f"{w.directory / 'scene.toml'}: field 'tool_stand': the arm "
                                f"cannot reach its start pose above the stand {home[0]}")
@@ -746,7 +758,8 @@ class HookEpisode:
         for cand in self._start_candidates(here, path):
             if rb.dry_run(cand, path) is None:
                 continue
-            for lift in (0.12, 0.06, 0.0):
+            # Re-shape high above everything: the held tool may swing on the way.
+            for lift in (0.30, 0.22, 0.15, 0.10, 0.05):
                 high = ((here[0][0], here[0][1], here[0][2] + lift), here[1])
                 q_high = rb.dry_run(cand, [high])
                 if q_high is not None:
@@ -811,10 +824,15 @@ class HookEpisode:
 
 
 def open_hook_episode(world: HookWorld, variant: str, location: int, tool: str,
-                      seed: int = 0, gui: bool = False,
-                      images_dir: Path | None = None) -> HookEpisode:
-    """Return a new :class:`HookEpisode` (close it when done)."""
-    return HookEpisode(world, variant, location, tool, seed, gui, images_dir)
+                      seed: int = 0, gui: bool = False, images_dir: Path | None = None,
+                      posture_cache: dict | None = None) -> HookEpisode:
+    """Return a new :class:`HookEpisode` (close it when done).
+
+    ``posture_cache`` (a dict kept by the caller) remembers the start posture found by
+    the IK search for a scene geometry, so later scenes start up faster; the search
+    is deterministic, so a cached posture equals a recomputed one.
+    """
+    return HookEpisode(world, variant, location, tool, seed, gui, images_dir, posture_cache)
 
 
 class HookTubeCase:
@@ -823,6 +841,9 @@ class HookTubeCase:
     name = "hook"
     object_option = "tool"
 
+    def __init__(self) -> None:
+        self._postures: dict = {}
+
     def load_world(self, world_dir: Path | None) -> HookWorld:
         """Return the hook world (see :func:`load_hook_world`)."""
         return load_hook_world(world_dir)
@@ -830,7 +851,8 @@ class HookTubeCase:
     def open_episode(self, world: HookWorld, variant: str, location: int, object_name: str,
                      seed: int, gui: bool, images_dir: Path | None) -> HookEpisode:
         """Return a new episode."""
-        return open_hook_episode(world, variant, location, object_name, seed, gui, images_dir)
+        return open_hook_episode(world, variant, location, object_name, seed, gui, images_dir,
+                                 posture_cache=self._postures)
 
     def default_pose(self, world: HookWorld) -> HookPose:
         """Return the demonstration's pose."""
