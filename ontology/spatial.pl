@@ -62,9 +62,12 @@ spatial_definition(wedge, tip_away(tool, target), wedge_pose(_R, _Gap, Yaw),
 %   pose_domain(?Case, ?PoseTerm, ?Constraints): where a pose can be at all.  Posted by
 %   the CLP(R) models under every query (never named in a conflict); keeps every pose
 %   variable bounded so that a midpoint exists.
+%   The hook's roll stays within +-pi/2 (prong down to prong flat on either side): a
+%   prong rolled further points up, away from anything it could pull, and the arm's
+%   insertion motion is planned for that range.
 pose_domain(hook, hook_pose(Dx, Dy, Roll),
             [Dx >= -tube_length, Dx =< tube_length, Dy >= -dy_room, Dy =< dy_room,
-             Roll >= -pi, Roll =< pi]).
+             Roll >= -pi/2, Roll =< pi/2]).
 %   The wedge lies under the door's sweep, ahead of the open door (Gap >= 0), and not
 %   beyond the closed door's line: Gap =< A * R - wedge_half - door_half_thickness.
 pose_domain(wedge, wedge_pose(R, Gap, Yaw),

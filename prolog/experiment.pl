@@ -235,7 +235,8 @@ experiment_object_(exploit(Tool, _, _, Required), Tool, Required).
 %   primitive facts of the task (tube or door geometry, the target's pose). Options:
 %
 %     - target(Target), context(Ctx): the head's second and third arguments (required).
-%     - skip(Skip): experiments skip(Object, Literal) to leave out (default []).
+%     - skip(Skip): experiments skip(Object, Literal) to leave out (default []);
+%       skip(any, Literal) leaves out the literal whatever the object.
 %
 %   Result is one of
 %
@@ -308,9 +309,19 @@ candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
 
 skipped_(Skip, _-cand(L, O, _, _, _)) :-
     member(skip(O1, L1), Skip),
-    O1 == O,
-    L1 =@= L,
+    (   O1 == any
+    ->  same_literal_any_tool_(L1, L)
+    ;   O1 == O,
+        L1 =@= L
+    ),
     !.
+
+%   skip(any, L): the literal L whatever the tool (a pose the arm cannot reach is
+%   unreachable with every tool).
+same_literal_any_tool_(L1, L) :-
+    L1 =.. [F, _|As1],
+    L =.. [F, _|As],
+    As1 =@= As.
 
 %   A spatial literal can be tested when the ontology defines it for the constraint
 %   solver (in_tube/2 of the tool, for example, is a precondition of the motion, not a

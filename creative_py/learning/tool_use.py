@@ -385,8 +385,10 @@ class ToolUseLearner:
             elif rec.outcome in ("failure", "blocked"):
                 cons = 0
             elif exp.name == "experiment":
-                # The arm could not carry it out: it taught nothing; do not repeat it.
-                skip.append(Compound("skip", (exp.args[0], exp.args[1])))
+                # The arm could not carry it out: it taught nothing; do not repeat it. A
+                # pose test (a negated spatial literal) is skipped whatever the tool.
+                who = "any" if exp.args[5] else exp.args[0]
+                skip.append(Compound("skip", (who, exp.args[1])))
         else:
             exp = self.engine.call("next_experiment", self.case, vs, self.task_facts(task),
                                    skip)
