@@ -29,14 +29,16 @@ ONE_RUN = """
 import json, sys
 from pathlib import Path
 from creative_py.learning.run import RunOptions, run_case
-folder = run_case(sys.argv[1], Path(sys.argv[2]), RunOptions(seed=int(sys.argv[3])))
+folder = run_case(sys.argv[1], Path(sys.argv[2]),
+                  RunOptions(seed=int(sys.argv[3]), eval_trials=int(sys.argv[4])))
 print(json.dumps(json.loads((folder.path / "summary.json").read_text())))
 """
 
 
-def one_run(case: str, seed: int, out: Path) -> dict:
+def one_run(case: str, seed: int, out: Path, eval_trials: int) -> dict:
     """Run one case in a fresh process and return its summary.json."""
-    proc = subprocess.run([sys.executable, "-c", ONE_RUN, case, str(out), str(seed)],
+    proc = subprocess.run([sys.executable, "-c", ONE_RUN, case, str(out), str(seed),
+                           str(eval_trials)],
                           capture_output=True, text=True, cwd=HERE.parent)
     if proc.returncode != 0:
         return {"error": proc.stderr.strip().splitlines()[-1:] or ["?"]}
@@ -56,13 +58,16 @@ def main() -> int:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--seeds", type=int, default=10)
     ap.add_argument("--cases", nargs="+", default=["hook", "wedge"])
+    ap.add_argument("--eval-trials", type=int, default=5,
+                    help="evaluation trials of the learned model per run")
+    ap.add_argument("--out", type=Path, default=HERE / "results" / "learning.json")
     args = ap.parse_args()
     results = {}
     with tempfile.TemporaryDirectory() as tmp:
         for case in args.cases:
             runs = []
             for seed in range(args.seeds):
-                s = one_run(case, seed, Path(tmp))
+                s = one_run(case, seed, Path(tmp), args.eval_trials)
                 runs.append(s)
                 print(f"{case} seed {seed}: " + (str(s["error"]) if "error" in s else
                       f"TUL {s['use']['trials']} (nothing left to test after "
@@ -80,12 +85,18 @@ def main() -> int:
                 "created_tool_eval_successes": stats(
                     [sum(o == "success" for o in r["create"]["eval"]) for r in ok
                      if "create" in r]),
-                "learned_model_eval": stats([r["eval"]["successes"] for r in ok]),
+                "learned_model_eval": {
+                    "trials": sum(r["eval"]["trials"] for r in ok),
+                    "successes": sum(r["eval"]["successes"] for r in ok)},
                 "wall_time_s": {ph: stats([r["wall_time_s"].get(ph) for r in ok])
                                 for ph in ("use", "eval", "create", "total")},
                 "paper": PAPER[case],
             }
-    out = HERE / "results" / "learning.json"
+    out = args.out
+    if out.exists():  # keep the other cases' figures when only some were run
+        previous = json.loads(out.read_text())
+        previous.update(results)
+        results = previous
     out.parent.mkdir(exist_ok=True)
     out.write_text(json.dumps(results, indent=2) + "\n")
     print(json.dumps(results, indent=2))

@@ -23,6 +23,7 @@ BENCHES = [
     [sys.executable, str(HERE / "perception_error.py")],
     [sys.executable, str(HERE / "sim_bench.py")],
     [sys.executable, str(HERE / "sim_wedge_bench.py")],
+    [sys.executable, str(HERE / "decision_bench.py")],
 ]
 LEARNING = [sys.executable, str(HERE / "learning_bench.py")]
 

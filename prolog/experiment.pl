@@ -283,29 +283,43 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
 
 candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
            L, O, Req, Neg, Viol, Score) :-
+    objects_as_planned_(HS, HG, Head, Spatial, Task, Objects, Planned),
     nth1(Index, Unknown, L0),
     literal_role(Head, L0, Role),
     Role \== task,
     \+ untestable_(Case, L0),
-    member(object(O, Struct), Objects),
-    copy_term(Head-(L0-Spatial-Task), HeadC-(L-SpatialC-TaskC)),
-    HeadC =.. [_, O|_],
+    member(planned(O, HeadC, SpatialC, Viol0), Planned),
+    copy_term(Head-L0, HeadC-L),
     (   Role == spatial
     ->  testable_spatial_(Case, L),
         exclude(==(L), SpatialC, Req),
-        Neg = [L]
+        Neg = [L],
+        append(Viol0, [L], Viol)     % the pose leaves out L, and only L
     ;   Req = SpatialC,
-        Neg = []
+        Neg = [],
+        Viol = Viol0
     ),
-    append([Struct, Req, TaskC], Body),
-    list_to_conj_(Body, Conj),
-    Example = (HeadC :- Conj),
-    clause_covers_hg_(HG, Example),
-    clause_violations(HS, Example, Viol0),
-    instantiate_violations_(HS, Example, Viol0, Viol),
     memberchk_eq_(L, Viol),
     length(Viol, NV),
     Score = s(NV, Index, O).
+
+%   The example each object would give at an h_s pose, and the literals of h_s it
+%   violates, computed once per object (the experiments of one object differ only in
+%   the one spatial literal they negate). Objects h_g does not cover are left out: their
+%   outcome is already known.
+objects_as_planned_(HS, HG, Head, Spatial, Task, Objects, Planned) :-
+    findall(planned(O, HeadC, SpatialC, Viol),
+            ( member(object(O, Struct), Objects),
+              copy_term(Head-(Spatial-Task), HeadC-(SpatialC-TaskC)),
+              HeadC =.. [_, O|_],
+              append([Struct, SpatialC, TaskC], Body),
+              list_to_conj_(Body, Conj),
+              Example = (HeadC :- Conj),
+              clause_covers_hg_(HG, Example),
+              clause_violations(HS, Example, Viol0),
+              instantiate_violations_(HS, Example, Viol0, Viol)
+            ),
+            Planned).
 
 skipped_(Skip, _-cand(L, O, _, _, _)) :-
     member(skip(O1, L1), Skip),

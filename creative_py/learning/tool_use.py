@@ -368,9 +368,9 @@ class ToolUseLearner:
         opts = self.options
         skip: list[Term] = []
         for i in range(1, opts.max_trials + 1):
+            facts = self.task_facts(task)
             td = time.perf_counter()
-            exp = self.engine.call("next_experiment", self.case, vs,
-                                   self.task_facts(task), skip)
+            exp = self.engine.call("next_experiment", self.case, vs, facts, skip)
             decision = time.perf_counter() - td
             if exp.name != "experiment":
                 # Nothing left that the available objects and poses can test.

@@ -1,0 +1,63 @@
+"""Time the learning decisions of one trial at the sizes the two cases produce.
+
+For each case: run the demonstration once in the physics, build the version space, then
+time (median and worst of 30 calls, through the bridge) the three Prolog decisions a
+trial needs: next_experiment (which literal, which object, which pose), label_trial
+(build the example and update the version space) and vs_bounds. Writes
+bench/results/decisions.json. Aim: every learning decision of a trial under 50 ms.
+"""
+
+from __future__ import annotations
+
+import json
+import statistics
+import time
+from pathlib import Path
+
+from creative_py.bridge import Compound, Engine
+from creative_py.learning.tool_use import fact_term, run_demonstration, task_facts
+from creative_py.sim.trial import load_case_world
+
+N = 30
+
+
+def timed(fn, n: int = N) -> dict:
+    """Return median and worst milliseconds of ``n`` calls of ``fn``."""
+    ts = []
+    for _ in range(n):
+        t0 = time.perf_counter()
+        fn()
+        ts.append((time.perf_counter() - t0) * 1000)
+    return {"median_ms": round(statistics.median(ts), 2), "worst_ms": round(max(ts), 2), "n": n}
+
+
+def main() -> int:
+    engine = Engine.instance()
+    out = {}
+    for case in ("hook", "wedge"):
+        world = load_case_world(case)
+        demo = run_demonstration(case, world)
+        steps = [Compound("step", (s.skill, list(s.args), [fact_term(f) for f in s.facts_before],
+                                   [fact_term(f) for f in s.facts_after])) for s in demo.steps]
+        models = engine.call("learn_from_demonstration", case, steps)
+        vs = engine.call("vs_init", models.args[2])
+        facts = [fact_term(f) for f in task_facts(case, world, "standard", 1)]
+        exp = engine.call("next_experiment", case, vs, facts, [])
+        hs, _ = engine.vs_bounds(vs)
+        out[case] = {
+            "h_s_literals": str(hs).count("),") + 1,
+            "available_objects": sum(1 for f in facts if getattr(f, "name", "") == "object_kind"),
+            "next_experiment": timed(lambda: engine.call("next_experiment", case, vs, facts, [])),
+            "label_trial": timed(lambda: engine.call("label_trial", case, vs, exp, facts,
+                                                     "neg", "planned")),
+            "vs_bounds": timed(lambda: engine.call("vs_bounds", vs)),
+        }
+        print(case, json.dumps(out[case]))
+    path = Path(__file__).resolve().parent / "results" / "decisions.json"
+    path.parent.mkdir(exist_ok=True)
+    path.write_text(json.dumps(out, indent=2) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
