@@ -19,7 +19,8 @@ help:  ## List the targets.
 	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq swi-prolog-nox openscad >/dev/null
 
 $(STAMP): pyproject.toml | /usr/bin/swipl
-	@command -v openscad >/dev/null || (DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq openscad >/dev/null)
+	@command -v openscad >/dev/null || ($(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq openscad >/dev/null)
 	python3 -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q -e '.[test]'
@@ -48,7 +49,7 @@ wedge: $(STAMP)  ## Case 2 end to end: demonstration, tool-use learning, wedge c
 repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads its model.pl).
 	$(VENV)/bin/creative repl $(RUN)
 
-bench: $(STAMP)  ## Run the benchmarks and record their figures under bench/results/.
+bench: $(STAMP)  ## Run the benchmarks (about 40 min) and record their figures in bench/results/.
 	$(PY) bench/run_all.py
 
 clean:  ## Remove the environment and run folders.

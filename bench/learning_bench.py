@@ -45,12 +45,30 @@ def one_run(case: str, seed: int, out: Path, eval_trials: int) -> dict:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
-def stats(values: list) -> dict:
-    """Return median and worst (max) of numbers, ignoring None."""
+def stats(values: list, worst=max) -> dict:
+    """Return the median and the worst of numbers (``worst=min`` for success counts),
+    ignoring None."""
     vs = [v for v in values if v is not None]
     if not vs:
         return {"median": None, "worst": None, "n": 0}
-    return {"median": statistics.median(vs), "worst": max(vs), "n": len(vs)}
+    return {"median": statistics.median(vs), "worst": worst(vs), "n": len(vs)}
+
+
+def per_seed(seed: int, r: dict) -> dict:
+    """Return the figures of one run, for the record."""
+    if "error" in r:
+        return {"seed": seed, "error": r["error"]}
+    c = r.get("create", {})
+    return {"seed": seed, "use_trials": r["use"]["trials"],
+            "trials_to_converge": r["use"]["trials_to_converge"],
+            "use_outcomes": r["trials"]["use"]["outcomes"],
+            "hg": r["hypotheses"]["hg"],
+            "create_outcomes": r["trials"]["create"]["outcomes"],
+            "created": [(t["name"], t["instance"], t["trial_outcome"])
+                        for t in c.get("created_tools", [])],
+            "created_eval": c.get("eval"), "exhausted": c.get("exhausted"),
+            "learned_model_eval": r["eval"]["outcomes"],
+            "wall_time_s": r["wall_time_s"]["total"]}
 
 
 def main() -> int:
@@ -84,7 +102,8 @@ def main() -> int:
                 "create_trials": stats([r["create"]["trials"] for r in ok if "create" in r]),
                 "created_tool_eval_successes": stats(
                     [sum(o == "success" for o in r["create"]["eval"]) for r in ok
-                     if "create" in r]),
+                     if "create" in r], worst=min),
+                "runs": [per_seed(i, r) for i, r in enumerate(runs)],
                 "learned_model_eval": {
                     "trials": sum(r["eval"]["trials"] for r in ok),
                     "successes": sum(r["eval"]["successes"] for r in ok)},
