@@ -10,6 +10,8 @@ satisfies the model. Then, in a loop::
     outcome = physics(spec at the pose the model asks for)   # TC trial
     success -> the harder task's model: the learned one with the new value; evaluate
     failure -> tried += [Instance]; next instance, next property, until none is left
+    blocked, unreachable, invalid -> the same tool once more (the motion, not the design,
+    failed), then as a failure
 
 Which property is generalised first and which value is tried first is Prolog's choice
 (prolog/creation.pl explains the order).
@@ -117,6 +119,13 @@ class ToolCreator(ToolUseLearner):
                           f"{ct.instance} {ct.dims}")
             n += 1
             rec, _ = self._trial_with(tool.spec, n, vs, task)
+            if rec.outcome in ("blocked", "unreachable", "invalid"):
+                # The motion did not happen as planned: that says nothing about the
+                # design, so the trial is repeated once (the paper repeats a task after
+                # a failure to confirm the result).
+                n += 1
+                self.progress(f"{ct.name}: {rec.outcome}, trying once more")
+                rec, _ = self._trial_with(tool.spec, n, vs, task)
             ct.trial_outcome = rec.outcome
             if rec.outcome == "success":
                 ct.eval_outcomes = self._evaluate(tool.spec, vs, task)
