@@ -3,7 +3,8 @@
 The trial plot follows the paper's Figures 5 and 6: trial number on the x axis (tool-use
 learning trials "TUL", then tool-creation trials "TC"), the tool used on the y axis, and
 each trial drawn as a filled marker (success) or a cross (failure), with blocked,
-unreachable and invalid outcomes marked separately.
+unreachable and invalid outcomes marked separately. Evaluation trials (no learning) are
+labelled "EV".
 """
 
 from __future__ import annotations
@@ -51,7 +52,8 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
         y = tools.index(t["tool"])
         ax.scatter([i], [y], s=70, label=None if label in seen else label, **style)
         seen.add(label)
-        labels.append(("TUL" if t["phase"] == "use" else "TC") + f" {t.get('phase_trial', i)}")
+        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t["phase"], t["phase"])
+        labels.append(f"{tag} {t.get('phase_trial', i)}")
     # Shade the tool-creation trials and mark the task variant changes.
     tc = [i for i, t in enumerate(trials, start=1) if t["phase"] == "create"]
     if tc:
