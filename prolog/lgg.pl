@@ -121,7 +121,7 @@ clause_lgg(C1, C2, G) :-
     body_index_(Lits2, Index2),
     foldl(pair_literal_(Ctx, Index2), Lits1, GLits0, S1, s(_, Ranges)),
     append(GLits0, GLits1),
-    dedupe_(GLits1, GLits),
+    list_to_set(GLits1, GLits),
     reverse(Ranges, RangesInOrder),
     maplist(range_literal_, RangesInOrder, RangeLits),
     unskolemise_(GH-GLits-RangeLits, Vars, UH-ULits-URanges),
@@ -245,43 +245,6 @@ pair_literal_(Ctx, Index2, L1, GLits, S0, S) :-
 
 lgg_lit_(Ctx, L1, L2, G, S0, S) :-
     lgg_(L1, L2, G, Ctx, S0, S).
-
-%   dedupe_(+Lits, -Unique): drop later copies (==) of a literal, keeping
-%   the first; O(n log n) through a numbered ground copy.
-dedupe_(Lits, Unique) :-
-    copy_term_nat(Lits, Copy),
-    numbervars(Copy, 0, _, [functor_name('$dd')]),
-    numbered_(Copy, 1, Keyed),
-    msort(Keyed, Sorted),
-    first_of_runs_(Sorted, FirstIdx0),
-    sort(FirstIdx0, FirstIdx),
-    pick_positions_(Lits, 1, FirstIdx, Unique).
-
-numbered_([], _, []).
-numbered_([L|Ls], I, [L-I|Ks]) :-
-    I1 is I + 1,
-    numbered_(Ls, I1, Ks).
-
-first_of_runs_([], []).
-first_of_runs_([K-I|Rest], [I|Is]) :-
-    skip_run_(Rest, K, Rest1),
-    first_of_runs_(Rest1, Is).
-
-skip_run_([], _, []).
-skip_run_([K1-I|Rest], K, Out) :-
-    (   K1 == K
-    ->  skip_run_(Rest, K, Out)
-    ;   Out = [K1-I|Rest]
-    ).
-
-pick_positions_([], _, _, []).
-pick_positions_([L|Ls], I, Keep, Out) :-
-    I1 is I + 1,
-    (   Keep = [I|Keep1]
-    ->  Out = [L|Out1],
-        pick_positions_(Ls, I1, Keep1, Out1)
-    ;   pick_positions_(Ls, I1, Keep, Out)
-    ).
 
 unskolemise_(T0, Vars, T) :-
     (   var(T0)

@@ -343,7 +343,7 @@ clause_reduce(Clause, Reduced, Options) :-
     option(full_test_max(FullMax), Options, 60),
     must_be(nonneg, FullMax),
     clause_head_body(Clause, Head, Body0),
-    dedupe_(Body0, Body),
+    list_to_set(Body0, Body),
     split_body_(Body, Lits, Tests),
     number_items_(Lits, 1, Items),
     number_items_(Tests, 1, TestItems),
@@ -556,43 +556,6 @@ limited_(Limit, Goal) :-
 
 skolemise_(Term) :-
     numbervars(Term, 0, _, [functor_name('$sk'), attvar(bind)]).
-
-%   dedupe_(+Lits, -Unique): drop later copies (==) of a literal, keeping
-%   the first; O(n log n) through a numbered ground copy.
-dedupe_(Lits, Unique) :-
-    copy_term_nat(Lits, Copy),
-    numbervars(Copy, 0, _, [functor_name('$dd')]),
-    numbered_(Copy, 1, Keyed),
-    msort(Keyed, Sorted),
-    first_of_runs_(Sorted, FirstIdx0),
-    sort(FirstIdx0, FirstIdx),
-    pick_positions_(Lits, 1, FirstIdx, Unique).
-
-numbered_([], _, []).
-numbered_([L|Ls], I, [L-I|Ks]) :-
-    I1 is I + 1,
-    numbered_(Ls, I1, Ks).
-
-first_of_runs_([], []).
-first_of_runs_([K-I|Rest], [I|Is]) :-
-    skip_run_(Rest, K, Rest1),
-    first_of_runs_(Rest1, Is).
-
-skip_run_([], _, []).
-skip_run_([K1-I|Rest], K, Out) :-
-    (   K1 == K
-    ->  skip_run_(Rest, K, Out)
-    ;   Out = [K1-I|Rest]
-    ).
-
-pick_positions_([], _, _, []).
-pick_positions_([L|Ls], I, Keep, Out) :-
-    I1 is I + 1,
-    (   Keep = [I|Keep1]
-    ->  Out = [L|Out1],
-        pick_positions_(Ls, I1, Keep1, Out1)
-    ;   pick_positions_(Ls, I1, Keep, Out)
-    ).
 
 split_body_([], [], []).
 split_body_([L|Ls], Lits, Tests) :-
