@@ -191,6 +191,20 @@ def capture_all(client_id: int, specs: Iterable[CameraSpec]) -> list[Frame]:
     return [capture(client_id, s) for s in specs]
 
 
+def capture_frames(client_id: int, specs: Iterable[CameraSpec], images_dir=None,
+                   shot: int = 0) -> tuple[Frame, ...]:
+    """Render every camera; with ``images_dir``, also save each RGB image there as
+    ``<shot>_<camera>.png`` (two digits for ``shot``)."""
+    frames = tuple(capture_all(client_id, specs))
+    if images_dir is not None:
+        import matplotlib.image
+
+        images_dir.mkdir(parents=True, exist_ok=True)
+        for f in frames:
+            matplotlib.image.imsave(images_dir / f"{shot:02d}_{f.name}.png", f.rgb)
+    return frames
+
+
 def _vec3(value: Any, where: str, key: str) -> tuple[float, float, float]:
     if (not isinstance(value, (list, tuple)) or len(value) != 3
             or not all(isinstance(v, (int, float)) and not isinstance(v, bool)

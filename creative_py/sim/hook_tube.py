@@ -536,21 +536,13 @@ class HookEpisode:
         return roll_of(self.spec, self.tool_pose()[1])
 
     def _frames(self) -> tuple:
-        from creative_py.sim.camera import capture_all
+        from creative_py.sim.camera import capture_frames
 
-        frames = tuple(capture_all(self.sim.client, self.world.cameras))
+        frames = capture_frames(self.sim.client, self.world.cameras, self.images_dir,
+                                self._shots)
         self.render_time_s += sum(f.render_time_s for f in frames)
-        if self.images_dir is not None:
-            self._save(frames)
+        self._shots += self.images_dir is not None
         return frames
-
-    def _save(self, frames) -> None:
-        import matplotlib.image
-
-        self.images_dir.mkdir(parents=True, exist_ok=True)
-        for f in frames:
-            matplotlib.image.imsave(self.images_dir / f"{self._shots:02d}_{f.name}.png", f.rgb)
-        self._shots += 1
 
     def perceive_cube(self, frames=None):
         """Return the camera estimate of the cube (or None if no camera sees it)."""

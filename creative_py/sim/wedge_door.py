@@ -602,21 +602,13 @@ class WedgeEpisode:
         return float(pb.getJointState(self.door_body, 0, physicsClientId=self.sim.client)[0])
 
     def _frames(self) -> tuple:
-        from creative_py.sim.camera import capture_all
+        from creative_py.sim.camera import capture_frames
 
-        frames = tuple(capture_all(self.sim.client, self.world.cameras))
+        frames = capture_frames(self.sim.client, self.world.cameras, self.images_dir,
+                                self._shots)
         self.render_time_s += sum(f.render_time_s for f in frames)
-        if self.images_dir is not None:
-            self._save(frames)
+        self._shots += self.images_dir is not None
         return frames
-
-    def _save(self, frames) -> None:
-        import matplotlib.image
-
-        self.images_dir.mkdir(parents=True, exist_ok=True)
-        for f in frames:
-            matplotlib.image.imsave(self.images_dir / f"{self._shots:02d}_{f.name}.png", f.rgb)
-        self._shots += 1
 
     def perceive_object(self, frames=None):
         """Return the camera estimate of the episode's object (None if unseen) and the frames."""
