@@ -1,0 +1,296 @@
+"""A case is data: the manifest ``worlds/<folder>/case.toml`` read into one value.
+
+Every tool-use task (the paper's hook and wedge cases, and any a researcher adds) is a
+world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``):
+
+* ``id``, ``title``, ``ontology`` (the file ``ontology/cases/<ontology>.pl`` that holds
+  the case's knowledge), ``trial_budget`` (N of Algorithm 1);
+* ``[roles]``: which ``objects.toml`` tables are the candidate tools, the target and
+  the context object; ``goal``: the task's goal literals;
+* ``[[skill]]``: the innate skills in plan order, each bound to a simulator primitive,
+  with the roles of its arguments; one takes the pose, one is the tool action;
+* ``[pose]``: the pose term's name and its parameters (name, unit, bounds);
+* ``[[variant]]``: task variants with the scene values they set, one marked ``harder``;
+* ``[demonstration]``: the trainer's tool, variant, location, skills and pose.
+
+Nothing here knows any particular case: :func:`load_cases` finds every manifest under
+``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field
+(:class:`~creative_py.world.WorldFileError`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from creative_py.world import WORLDS_ROOT, Fields, WorldFileError, load_toml
+
+MANIFEST = "case.toml"
+"""The manifest's file name in a world folder."""
+
+ROLES = ("tool", "target", "context")
+"""The roles a skill argument can take."""
+
+_ID = re.compile(r"[a-z][a-z0-9_]*\Z")
+
+
+@dataclass(frozen=True)
+class SkillBinding:
+    """One innate skill and the simulator primitive that carries it out."""
+
+    name: str
+    primitive: str
+    args: tuple[str, ...]
+    pose: bool = False
+    tool_action: bool = False
+    options: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass(frozen=True)
+class PoseParam:
+    """One number of the pose term: name, unit and the bounds a trial may use."""
+
+    name: str
+    unit: str
+    min: float
+    max: float
+    doc: str = ""
+
+
+@dataclass(frozen=True)
+class Variant:
+    """A task variant: the scene values it sets (dotted keys) and whether it is harder."""
+
+    name: str
+    description: str
+    harder: bool
+    set: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class DemonstrationSpec:
+    """The trainer's demonstration: tool, variant, location, skills and pose numbers."""
+
+    tool: str
+    variant: str
+    location: int
+    steps: tuple[str, ...]
+    pose: tuple[float, ...]
+
+
+@dataclass(frozen=True)
+class CaseManifest:
+    """Everything ``worlds/<folder>/case.toml`` says about one case."""
+
+    id: str
+    title: str
+    folder: Path
+    ontology: str
+    trial_budget: int
+    tools_table: str
+    target: str
+    context: str
+    goal: tuple[str, ...]
+    skills: tuple[SkillBinding, ...]
+    pose_term: str
+    pose_params: tuple[PoseParam, ...]
+    variants: tuple[Variant, ...]
+    demonstration: DemonstrationSpec
+
+    @property
+    def harder_variant(self) -> str:
+        """Return the variant that needs a new tool."""
+        return next(v.name for v in self.variants if v.harder)
+
+    @property
+    def variant_names(self) -> tuple[str, ...]:
+        """Return the variants' names in manifest order."""
+        return tuple(v.name for v in self.variants)
+
+    def variant(self, name: str) -> Variant:
+        """Return variant ``name``; raise listing the known ones."""
+        for v in self.variants:
+            if v.name == name:
+                return v
+        raise KeyError(f"unknown variant {name!r} of case {self.id}; variants: "
+                       f"{', '.join(self.variant_names)}")
+
+    def skill(self, name: str) -> SkillBinding:
+        """Return the skill ``name``; raise listing the case's skills."""
+        for s in self.skills:
+            if s.name == name:
+                return s
+        raise KeyError(f"unknown skill {name!r} of case {self.id}; skills: "
+                       f"{', '.join(s.name for s in self.skills)}")
+
+    def role_object(self, role: str, tool: str) -> str:
+        """Return the object that plays ``role`` when ``tool`` is the tool."""
+        return {"tool": tool, "target": self.target, "context": self.context}[role]
+
+    def skill_args(self, skill: SkillBinding, tool: str) -> tuple[str, ...]:
+        """Return the ground arguments of ``skill`` (its STRIPS parameters)."""
+        return tuple(self.role_object(r, tool) for r in skill.args)
+
+    @property
+    def pose_names(self) -> tuple[str, ...]:
+        """Return the names of the pose numbers, in the pose term's order."""
+        return tuple(p.name for p in self.pose_params)
+
+    def check_pose(self, values: tuple[float, ...], source: str = "pose") -> tuple[float, ...]:
+        """Return ``values`` as floats if they fit the pose parameters; raise ValueError."""
+        if len(values) != len(self.pose_params):
+            raise ValueError(f"{source}: {self.id} poses have {len(self.pose_params)} numbers "
+                             f"({','.join(self.pose_names)}), got {len(values)}")
+        out = []
+        for p, v in zip(self.pose_params, values):
+            v = float(v)
+            if not math.isfinite(v) or not p.min <= v <= p.max:
+                raise ValueError(f"{source}: {p.name} must be within [{p.min}, {p.max}] "
+                                 f"{p.unit}, got {v}")
+            out.append(v)
+        return tuple(out)
+
+    def parse_pose(self, text: str) -> tuple[float, ...]:
+        """Parse ``"A,B,C"`` into pose numbers within their bounds; raise ValueError."""
+        try:
+            values = tuple(float(p) for p in text.split(","))
+        except ValueError:
+            raise ValueError(f"--pose must be {','.join(n.upper() for n in self.pose_names)} "
+                             f"({', '.join(p.unit for p in self.pose_params)}), "
+                             f"got {text!r}") from None
+        return self.check_pose(values, "--pose")
+
+    def listing(self) -> dict[str, Any]:
+        """Return the manifest as plain JSON-ready data (``creative cases --json``)."""
+        return {"id": self.id, "title": self.title, "world": str(self.folder),
+                "ontology": self.ontology, "trial_budget": self.trial_budget,
+                "variants": [{"name": v.name, "harder": v.harder,
+                              "description": v.description} for v in self.variants],
+                "harder_variant": self.harder_variant,
+                "skills": [s.name for s in self.skills],
+                "pose": {"term": self.pose_term, "params": list(self.pose_names)}}
+
+
+def read_manifest(folder: Path) -> CaseManifest:
+    """Read and check ``folder/case.toml``; errors name the file and the field."""
+    folder = Path(folder)
+    path = folder / MANIFEST
+    if not path.is_file():
+        raise WorldFileError(f"{path}: file not found (a case folder needs a {MANIFEST})")
+    f = Fields(load_toml(path), path)
+    cid = f.str("id")
+    if not _ID.match(cid):
+        raise f.error("id", f"must be a lower-case Prolog atom, got {cid!r}")
+    title = f.str("title")
+    ontology = f.str("ontology")
+    budget = f.int("trial_budget", minimum=1)
+    roles = f.table("roles")
+    tools_table, target, context = roles.str("tools"), roles.str("target"), roles.str("context")
+    roles.done()
+    goal = f.raw("goal")
+    if not isinstance(goal, list) or not goal or not all(isinstance(g, str) for g in goal):
+        raise f.error("goal", "must be a non-empty list of literals written as text")
+    skills = []
+    for sf in f.tables("skill"):
+        args = sf.raw("args")
+        if not isinstance(args, list) or not all(a in ROLES for a in args):
+            raise sf.error("args", f"must be a list of roles among {', '.join(ROLES)}, "
+                           f"got {args!r}")
+        options = sf.raw("options", {})
+        if not isinstance(options, dict):
+            raise sf.error("options", "must be a table")
+        skills.append(SkillBinding(sf.str("name"), sf.str("primitive"), tuple(args),
+                                   sf.bool("pose", False), sf.bool("tool_action", False),
+                                   dict(options)))
+        sf.done()
+    if not skills:
+        raise f.error("skill", "at least one [[skill]] is needed")
+    for flag in ("pose", "tool_action"):
+        marked = [s.name for s in skills if getattr(s, flag)]
+        if len(marked) != 1:
+            raise f.error("skill", f"exactly one skill must set {flag} = true, got "
+                          f"{len(marked)} ({', '.join(marked) or 'none'})")
+    pf = f.table("pose")
+    pose_term = pf.str("term")
+    params = []
+    for p in pf.tables("param"):
+        lo, hi = p.float("min"), p.float("max")
+        if lo > hi:
+            raise p.error("max", f"must be >= min ({lo}), got {hi}")
+        params.append(PoseParam(p.str("name"), p.str("unit"), lo, hi, p.str("doc", "")))
+        p.done()
+    if not params:
+        raise pf.error("param", "at least one [[pose.param]] is needed")
+    pf.done()
+    variants = []
+    for vf in f.tables("variant"):
+        values = vf.raw("set", {})
+        if not isinstance(values, dict):
+            raise vf.error("set", "must be a table of dotted scene keys and values")
+        variants.append(Variant(vf.str("name"), vf.str("description", ""),
+                                vf.bool("harder", False), dict(values)))
+        vf.done()
+    names = [v.name for v in variants]
+    if not variants or len(set(names)) != len(names):
+        raise f.error("variant", f"needs at least one [[variant]] with unique names, got {names}")
+    if sum(v.harder for v in variants) != 1:
+        raise f.error("variant", "exactly one variant must be marked harder = true")
+    df = f.table("demonstration")
+    steps = df.raw("steps")
+    known = [s.name for s in skills]
+    if not isinstance(steps, list) or not all(s in known for s in steps):
+        raise df.error("steps", f"must be a list of the case's skills ({', '.join(known)}), "
+                       f"got {steps!r}")
+    demo_variant = df.str("variant", choices=tuple(names))
+    pose_f = df.table("pose")
+    pose = tuple(pose_f.float(p.name) for p in params)
+    pose_f.done()
+    demo = DemonstrationSpec(df.str("tool"), demo_variant, df.int("location", minimum=1),
+                             tuple(steps), pose)
+    df.done()
+    f.done()
+    manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
+                            context, tuple(goal), tuple(skills), pose_term, tuple(params),
+                            tuple(variants), demo)
+    try:
+        manifest.check_pose(pose, "demonstration.pose")
+    except ValueError as exc:
+        raise WorldFileError(f"{path}: field 'demonstration.pose': {exc}") from None
+    return manifest
+
+
+_CASES: dict[Path, dict[str, CaseManifest]] = {}
+
+
+def load_cases(root: Path | None = None) -> dict[str, CaseManifest]:
+    """Return ``id -> manifest`` for every ``<root>/*/case.toml`` (default ``worlds/``).
+
+    Two folders declaring the same id are an error naming both.
+    """
+    root = Path(root) if root is not None else WORLDS_ROOT
+    if root not in _CASES:
+        cases: dict[str, CaseManifest] = {}
+        for path in sorted(root.glob(f"*/{MANIFEST}")):
+            m = read_manifest(path.parent)
+            if m.id in cases:
+                raise WorldFileError(f"{path}: field 'id': case {m.id!r} is already "
+                                     f"declared by {cases[m.id].folder / MANIFEST}")
+            cases[m.id] = m
+        _CASES[root] = cases
+    return dict(_CASES[root])
+
+
+def get_case(case: str, root: Path | None = None) -> CaseManifest:
+    """Return the manifest of case ``case``; raise KeyError listing the known cases."""
+    cases = load_cases(root)
+    if case not in cases:
+        raise KeyError(f"unknown case {case!r}; known cases: {', '.join(sorted(cases))}")
+    return cases[case]
+
+
+def manifest_of_folder(folder: Path) -> CaseManifest:
+    """Return the manifest of a world folder (a user's copy of a shipped world)."""
+    return read_manifest(Path(folder))
