@@ -235,7 +235,7 @@ def repl(run_dir: Optional[Path] = typer.Argument(None, help="A run folder whose
 
 def _quoted(text: str) -> str:
     """Return ``text`` as a quoted Prolog atom (the bridge's encoder)."""
-    from creative_py.bridge.codec import encode
+    from creative_py.bridge.text import encode
 
     return encode(text)
 

@@ -6,7 +6,8 @@ Terms are plain Python values (:mod:`creative_py.bridge.terms`); one encoder and
 decoder (:mod:`creative_py.bridge.codec`) carry them across.
 """
 
-from creative_py.bridge.codec import decode, encode
+from creative_py.bridge.codec import decode
+from creative_py.bridge.text import encode
 from creative_py.bridge.engine import FAILED, Engine, LoadReport
 from creative_py.bridge.errors import (
     BridgeError,

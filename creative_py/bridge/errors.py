@@ -17,6 +17,9 @@ from __future__ import annotations
 import errno
 from typing import Any, Optional, Sequence
 
+from creative_py.bridge.terms import Compound
+from creative_py.bridge.text import encode
+
 
 class BridgeError(Exception):
     """Base class of every error raised by the bridge."""
@@ -59,8 +62,6 @@ class PrologError(BridgeError):
     @property
     def formal(self) -> Any:
         """Return the formal part of an ISO ``error(Formal, Context)`` term, else the term."""
-        from creative_py.bridge.terms import Compound
-
         term = self.error_term
         if isinstance(term, Compound) and term.name == "error" and len(term.args) == 2:
             return term.args[0]
@@ -139,8 +140,6 @@ class PrologSyntaxError(PrologLoadError):
 
 
 def _show(term: Any) -> str:
-    from creative_py.bridge.codec import encode
-
     try:
         return encode(term, operators=True)
     except (TypeError, ValueError):

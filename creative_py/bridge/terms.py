@@ -26,7 +26,7 @@ right-nested ``","`` conjunction as body; :func:`clause`, :func:`conj` and
 
 ``str()`` of a :class:`Compound`, :class:`Var` or :class:`PlString` is Prolog syntax
 (the clause operators ``:-``, ``,``, ``;`` and ``->`` written infix), produced by the
-bridge's one encoder, :func:`creative_py.bridge.codec.encode`.
+bridge's one writer, :func:`creative_py.bridge.text.encode`.
 """
 
 from __future__ import annotations
@@ -34,6 +34,21 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from typing import Callable, Iterator, Optional, Sequence, Union
+
+_TEXT_WRITER: list[Callable[[object], str]] = []
+"""The Prolog-text writer, set by :mod:`creative_py.bridge.text` when it is imported
+(the package imports it), so that ``str()`` of a term is its Prolog text and this
+module stays the leaf of the bridge."""
+
+
+def set_text_writer(writer: Callable[[object], str]) -> None:
+    """Make ``str()`` of every term write its Prolog text with ``writer``."""
+    _TEXT_WRITER[:] = [writer]
+
+
+def _write(term: object) -> str:
+    # Importing any module of the package runs its __init__, which imports the writer.
+    return _TEXT_WRITER[0](term)
 
 _VAR_NAME = re.compile(r"[A-Z_][A-Za-z0-9_]*\Z")
 
@@ -49,9 +64,7 @@ class PlString:
             raise TypeError(f"PlString.value must be a str, got {type(self.value).__name__}")
 
     def __str__(self) -> str:
-        from creative_py.bridge.codec import encode
-
-        return encode(self, operators=True)
+        return _write(self)
 
 
 @dataclass(frozen=True)
@@ -117,9 +130,7 @@ class Compound:
         return f"{self.name}/{len(self.args)}"
 
     def __str__(self) -> str:
-        from creative_py.bridge.codec import encode
-
-        return encode(self, operators=True)
+        return _write(self)
 
 
 Term = Union[str, int, float, PlString, Var, Compound, list]
