@@ -22,8 +22,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-WORLD_FILES = ("scene.toml", "physics.toml", "objects.toml", "tasks.toml",
-               "demonstration.toml")
+WORLD_FILES = ("scene.toml", "physics.toml", "objects.toml", "tasks.toml", "case.toml")
 """The file names every world folder holds."""
 
 WORLDS_ROOT = Path(__file__).resolve().parent.parent / "worlds"

@@ -24,12 +24,13 @@ import re
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Literal, Sequence
+from typing import Sequence
 
 import numpy as np
 import pybullet as pb
 
 from creative_py.sim.core import Point, Pose, Quat, Sim
+from creative_py.sim.types import SkillOutcome, SkillStatus
 
 log = logging.getLogger(__name__)
 
@@ -51,7 +52,7 @@ WORKSPACE_LINK_PREFIXES = ("right_lower_elbow", "right_upper_forearm", "right_lo
                            "right_wrist", "right_hand", "right_gripper", "r_gripper")
 """Links that keep their collision shapes: the right arm from the elbow on."""
 
-Status = Literal["ok", "blocked", "unreachable", "invalid"]
+Status = SkillStatus
 
 
 def baxter_share_dir() -> Path:
@@ -141,17 +142,8 @@ class BaxterConfig:
     max_body_speed: float = 5.0
 
 
-@dataclass(frozen=True)
-class MoveResult:
-    """How a motion ended: ``status`` in ok/blocked/unreachable/invalid, and why."""
-
-    status: Status
-    reason: str = ""
-
-    @property
-    def ok(self) -> bool:
-        """Return whether the motion completed."""
-        return self.status == "ok"
+MoveResult = SkillOutcome
+"""How a motion ended (the one :class:`~creative_py.sim.types.SkillOutcome` type)."""
 
 
 def quat_angle(q1: Sequence[float], q2: Sequence[float]) -> float:

@@ -285,35 +285,33 @@ def load_hook_world(world_dir: Path | None = None) -> HookWorld:
     locations = tuple(_dataclass_from(Location, lf) for lf in tf_.tables("location"))
     if not locations:
         raise tf_.error("location", "at least one [[location]] is needed")
-    vf = tf_.table("variant")
-    variants = {}
-    for vname in list(vf.data):
-        v = vf.table(vname)
-        variants[vname] = v.float("tube_length", minimum=0.1)
-        v.done()
-    vf.done()
     tf_.done()
     for i, loc in enumerate(locations, 1):
         if abs(loc.lateral) > tube.inner_width / 2 - cube.size / 2 + 1e-9:
             raise WorldFileError(f"{t}: field 'location[{i - 1}].lateral': the cube would "
                                  f"stick into the tube's side wall ({loc.lateral} m)")
-    # demonstration.toml
-    m = world_file(d, "demonstration.toml")
-    mf = Fields(load_toml(m), m)
-    pose_f = mf.table("pose")
-    pose = HookPose(pose_f.float("dx"), pose_f.float("dy"), pose_f.float("roll"))
-    pose_f.done()
-    steps = mf.raw("steps")
-    if not isinstance(steps, list) or not all(isinstance(x, str) for x in steps):
-        raise mf.error("steps", "must be a list of step names")
-    demo = Demonstration(tool=mf.str("tool", choices=tuple(tools)),
-                         variant=mf.str("variant", choices=tuple(variants)),
-                         location=mf.int("location", minimum=1), pose=pose,
-                         steps=tuple(steps))
-    mf.done()
+    # case.toml: the variants' tube lengths and the demonstration
+    from creative_py.case import manifest_of_folder
+
+    manifest = manifest_of_folder(d)
+    c = d / "case.toml"
+    variants = {}
+    for v in manifest.variants:
+        length = v.set.get("tube.length")
+        if isinstance(length, bool) or not isinstance(length, (int, float)) or length < 0.1:
+            raise WorldFileError(f"{c}: field 'variant.{v.name}.set.tube.length': must be "
+                                 f"a number >= 0.1 (m), got {length!r}")
+        variants[v.name] = float(length)
+    dm = manifest.demonstration
+    if dm.tool not in tools:
+        raise WorldFileError(f"{c}: field 'demonstration.tool': must be one of "
+                             f"{', '.join(tools)}, got {dm.tool!r}")
+    demo = Demonstration(tool=dm.tool, variant=dm.variant, location=dm.location,
+                         pose=HookPose(*dm.pose), steps=dm.steps)
     if demo.location > len(locations):
-        raise mf.error("location", f"must be at most {len(locations)} (tasks.toml has "
-                       f"{len(locations)} locations), got {demo.location}")
+        raise WorldFileError(f"{c}: field 'demonstration.location': must be at most "
+                             f"{len(locations)} (tasks.toml has {len(locations)} "
+                             f"locations), got {demo.location}")
     return HookWorld(directory=d, physics=physics, table=table, riser=riser, tube=tube,
                      stand=stand, skills=skills, cameras=cameras, noise=noise, cube=cube,
                      tools=tools, tool_sets=sets, locations=locations, variants=variants,

@@ -23,114 +23,15 @@ NaN, an object thrown out of the scene).
 
 from __future__ import annotations
 
-import json
 import math
 import time
 from contextlib import contextmanager
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import replace
 from pathlib import Path
-from typing import Any, Iterator, Literal, Protocol
+from typing import Any, Iterator, Protocol
 
-SkillStatus = Literal["ok", "blocked", "unreachable", "invalid"]
-TrialOutcome = Literal["success", "failure", "blocked", "unreachable", "invalid"]
-TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
-
-Fact = tuple[Any, ...]
-"""A primitive fact as a tuple: predicate name then arguments, e.g. ``("held", "hook_a2")``."""
-
-
-@dataclass(frozen=True)
-class SkillOutcome:
-    """How one skill ended: ``status`` in ok/blocked/unreachable/invalid, and why."""
-
-    status: SkillStatus
-    reason: str = ""
-
-    @property
-    def ok(self) -> bool:
-        """Return whether the skill completed."""
-        return self.status == "ok"
-
-
-@dataclass(frozen=True)
-class Observation:
-    """What the robot perceives at one instant, plus ground truth for error reports.
-
-    Attributes
-    ----------
-    facts : tuple of Fact
-        Primitive facts: perceived poses/sizes (cameras), proprioception (held tool,
-        tip position, roll), fixed scene facts and the catalogue of every available
-        object. Frames and units per the shared vocabulary (world frame, metres,
-        radians).
-    frames : tuple
-        The camera frames (:class:`creative_py.perception.frame.Frame`) behind the
-        perceived facts.
-    truth : dict
-        Ground-truth ``name -> (x, y, z, yaw)`` from the simulator, for measuring
-        perception error only; never used to decide anything.
-    """
-
-    facts: tuple[Fact, ...]
-    frames: tuple = ()
-    truth: dict[str, tuple[float, float, float, float]] = field(default_factory=dict)
-
-    def perceived_poses(self) -> dict[str, tuple[float, float, float, float]]:
-        """Return ``name -> (x, y, z, yaw)`` from the perceived ``pose`` facts."""
-        return {f[1]: tuple(float(v) for v in f[2:6]) for f in self.facts if f[0] == "pose"}
-
-
-@dataclass(frozen=True)
-class TrialResult:
-    """The record of one physical trial (one line of ``trials.jsonl``).
-
-    Attributes
-    ----------
-    case, object, variant : str
-        What was tried: case name, object (tool) name, task variant.
-    location : int
-        Index of the predefined target location (1-based).
-    pose : tuple of float
-        The pose numbers tried (hook: dx, dy, roll in m, m, rad).
-    outcome : str
-        One of :data:`TRIAL_OUTCOMES`.
-    reason : str
-        Why, in words (empty for a plain success).
-    perceived_final : dict or None
-        ``name -> (x, y, z, yaw)`` perceived by the cameras after the trial; None when
-        the case has no cameras.
-    true_final : dict
-        ``name -> (x, y, z, yaw)`` ground truth after the trial.
-    sim_time_s, wall_time_s, render_time_s : float
-        Simulated time, wall time of the whole trial, and the part spent rendering.
-    steps : int
-        Physics steps taken.
-    seed : int
-        The seed of the trial.
-    """
-
-    case: str
-    object: str
-    variant: str
-    location: int
-    pose: tuple[float, ...]
-    outcome: str
-    reason: str
-    perceived_final: dict[str, tuple[float, ...]] | None
-    true_final: dict[str, tuple[float, ...]]
-    sim_time_s: float
-    wall_time_s: float
-    render_time_s: float
-    steps: int
-    seed: int = 0
-
-    def to_dict(self) -> dict[str, Any]:
-        """Return the result as plain JSON-ready data (tuples become lists)."""
-        return json.loads(json.dumps(asdict(self)))
-
-    def to_json(self) -> str:
-        """Return the result as one line of JSON."""
-        return json.dumps(asdict(self), sort_keys=True)
+from creative_py.sim.types import (TRIAL_OUTCOMES, Fact, Observation, SkillOutcome,  # noqa: F401
+                                   SkillStatus, TrialOutcome, TrialResult)
 
 
 class Episode(Protocol):

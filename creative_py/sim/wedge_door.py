@@ -368,18 +368,22 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
     # tasks.toml
     t = world_file(d, "tasks.toml")
     tf_ = Fields(load_toml(t), t)
+    from creative_py.case import manifest_of_folder
+
+    manifest = manifest_of_folder(d)
+    c = d / "case.toml"
     variants: dict[str, Variant] = {}
-    for vf in tf_.tables("variant"):
-        v = Variant(name=vf.str("name"), description=vf.str("description", ""),
-                    closing_torque=vf.float("closing_torque", minimum=0.0),
-                    door_mass=vf.float("door_mass", minimum=1e-3))
-        vf.done()
-        if v.name in variants:
-            raise vf.error("name", f"variant name {v.name!r} is used twice")
-        variants[v.name] = v
-    if not variants:
-        raise tf_.error("variant", "at least one [[variant]] is needed")
-    default_variant = tf_.str("default_variant", choices=tuple(variants))
+    for mv in manifest.variants:
+        values = {}
+        for key, minimum in (("door.closing_torque", 0.0), ("door.mass", 1e-3)):
+            x = mv.set.get(key)
+            if isinstance(x, bool) or not isinstance(x, (int, float)) or x < minimum:
+                raise WorldFileError(f"{c}: field 'variant.{mv.name}.set.{key}': must be a "
+                                     f"number >= {minimum}, got {x!r}")
+            values[key] = float(x)
+        variants[mv.name] = Variant(mv.name, mv.description, values["door.closing_torque"],
+                                    values["door.mass"])
+    default_variant = manifest.demonstration.variant
     hf = tf_.table("held")
     held = HeldCriterion(duration=hf.float("duration", minimum=0.01),
                          max_close_deg=hf.float("max_close_deg", minimum=0.0),
@@ -387,16 +391,11 @@ def load_wedge_world(world_dir: Path | None = None) -> WedgeWorld:
                          contact_distance=hf.float("contact_distance", minimum=0.0))
     hf.done()
     tf_.done()
-    # demonstration.toml
-    m = world_file(d, "demonstration.toml")
-    mf = Fields(load_toml(m), m)
-    df = mf.table("demonstration")
-    demo = Demonstration(object=df.str("object", choices=tuple(objects)),
-                         variant=df.str("variant", choices=tuple(variants)),
-                         pose=WedgePose(df.float("r", minimum=0.0), df.float("gap"),
-                                        df.float("yaw")))
-    df.done()
-    mf.done()
+    dm = manifest.demonstration
+    if dm.tool not in objects:
+        raise WorldFileError(f"{c}: field 'demonstration.tool': must be one of "
+                             f"{', '.join(objects)}, got {dm.tool!r}")
+    demo = Demonstration(object=dm.tool, variant=dm.variant, pose=WedgePose(*dm.pose))
     return WedgeWorld(directory=d, physics=physics, arm_physics=arm_physics, ground_z=ground_z,
                       stage=stage, door=door, tray=tray,
                       handling=handling, cameras=cameras, noise=noise, objects=objects,

@@ -70,9 +70,9 @@ def test_missing_world_file_is_named(tmp_path):
 
 def test_demonstration_must_name_a_known_object(tmp_path):
     d = _copy_world(tmp_path)
-    demo = d / "demonstration.toml"
-    demo.write_text(demo.read_text().replace('"wedge_a2"', '"wedge_z9"'))
-    with pytest.raises(WorldFileError, match=r"demonstration\.toml.*demonstration\.object"):
+    demo = d / "case.toml"
+    demo.write_text(demo.read_text().replace('tool = "wedge_a2"', 'tool = "wedge_z9"'))
+    with pytest.raises(WorldFileError, match=r"case\.toml.*demonstration\.tool"):
         load_wedge_world(d)
 
 

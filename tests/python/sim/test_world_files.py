@@ -53,9 +53,9 @@ def test_an_unknown_extra_field_is_rejected_with_a_suggestion(world_dir):
 
 
 def test_a_wrong_type_names_the_field(world_dir):
-    _edit(world_dir / "tasks.toml", "tube_length = 0.30", 'tube_length = "long"')
-    with pytest.raises(WorldFileError, match=r"tasks\.toml: field 'variant\.standard\."
-                                             r"tube_length': must be a number"):
+    _edit(world_dir / "scene.toml", "inner_height = 0.07", 'inner_height = "tall"')
+    with pytest.raises(WorldFileError, match=r"scene\.toml: field 'tube\.inner_height': "
+                                             r"must be a number"):
         load_case_world("hook", world_dir)
 
 
@@ -78,9 +78,9 @@ def test_broken_toml_names_the_file(world_dir):
 
 
 def test_the_demonstration_must_name_a_known_tool(world_dir):
-    _edit(world_dir / "demonstration.toml", 'tool = "hook_a2"', 'tool = "hook_z9"')
-    with pytest.raises(WorldFileError, match=r"demonstration\.toml: field 'tool': must be one "
-                                             r"of hook_a1"):
+    _edit(world_dir / "case.toml", 'tool = "hook_a2"', 'tool = "hook_z9"')
+    with pytest.raises(WorldFileError, match=r"case\.toml: field 'demonstration\.tool': must "
+                                             r"be one of hook_a1"):
         load_case_world("hook", world_dir)
 
 
