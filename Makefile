@@ -7,9 +7,10 @@ STAMP := $(VENV)/.installed
 SUDO  := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 RUN   ?=
 SEED  ?= 0
+CASE  ?= hook
 OUT   ?= runs
 
-.PHONY: help setup test test-prolog test-python test-all hook wedge repl bench clean
+.PHONY: help setup test test-prolog test-python test-all run cases hook wedge rake repl bench clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -40,11 +41,17 @@ test-python: $(STAMP)  ## Run pytest without the slow tests.
 test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs included.
 	$(PY) -m pytest -q
 
+run: $(STAMP)  ## Any case end to end (CASE=<id>, see make cases).
+	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT)
+
+cases: $(STAMP)  ## List the cases (every worlds/*/case.toml).
+	$(VENV)/bin/creative cases
+
 hook: $(STAMP)  ## Case 1 end to end: demonstration, tool-use learning, hook creation.
-	$(VENV)/bin/creative run hook --seed $(SEED) --out $(OUT)
+	$(MAKE) --no-print-directory run CASE=hook
 
 wedge: $(STAMP)  ## Case 2 end to end: demonstration, tool-use learning, wedge creation.
-	$(VENV)/bin/creative run wedge --seed $(SEED) --out $(OUT)
+	$(MAKE) --no-print-directory run CASE=wedge
 
 repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads its model.pl).
 	$(VENV)/bin/creative repl $(RUN)

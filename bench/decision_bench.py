@@ -1,6 +1,6 @@
 """Time the learning decisions of one trial at the sizes the two cases produce.
 
-For each case: run the demonstration once in the physics, build the version space, then
+For each case (every worlds/*/case.toml): run the demonstration once in the physics, build the version space, then
 time (median and worst of 30 calls, through the bridge) the three Prolog decisions a
 trial needs: next_experiment (which literal, which object, which pose), label_trial
 (build the example and update the version space) and vs_bounds. Writes
@@ -15,8 +15,10 @@ import time
 from pathlib import Path
 
 from creative_py.bridge import Compound, Engine
-from creative_py.learning.tool_use import fact_term, run_demonstration, task_facts
-from creative_py.sim.trial import load_case_world
+from creative_py.case import load_cases
+from creative_py.learning.tool_use import run_demonstration
+from creative_py.learning.trials import fact_term, task_facts
+from creative_py.sim import load_world
 
 N = 30
 
@@ -34,14 +36,15 @@ def timed(fn, n: int = N) -> dict:
 def main() -> int:
     engine = Engine.instance()
     out = {}
-    for case in ("hook", "wedge"):
-        world = load_case_world(case)
-        demo = run_demonstration(case, world)
+    for case, manifest in load_cases().items():
+        world = load_world(manifest)
+        demo = run_demonstration(world)
         steps = [Compound("step", (s.skill, list(s.args), [fact_term(f) for f in s.facts_before],
                                    [fact_term(f) for f in s.facts_after])) for s in demo.steps]
         models = engine.call("learn_from_demonstration", case, steps)
         vs = engine.call("vs_init", models.args[2])
-        facts = [fact_term(f) for f in task_facts(case, world, "standard", 1)]
+        facts = [fact_term(f) for f in task_facts(world, manifest.demonstration.variant,
+                                                   manifest.demonstration.location)]
         exp = engine.call("next_experiment", case, vs, facts, [])
         hs, _ = engine.vs_bounds(vs)
         out[case] = {

@@ -6,8 +6,9 @@ engine (and a run's learned model) loaded; ``creative report RUN`` summarises a 
 folder; ``creative make-tool CASE SPEC`` sizes and writes a tool from a qualitative spec.
 ``creative trial CASE ...`` runs one physical trial in pybullet and prints its result
 (JSON with ``--json``); ``creative trial CASE --list`` prints the case's objects,
-locations, variants and default pose as JSON. The command is generic over the cases
-registered in :data:`creative_py.sim.cases.CASES`.
+locations, variants and default pose as JSON; ``creative cases`` lists the cases. The
+command is generic: a case is a world folder with a ``case.toml`` manifest
+(:mod:`creative_py.case`).
 """
 
 from __future__ import annotations
@@ -54,25 +55,62 @@ def _fail(message: str) -> None:
 
 
 @app.command()
+def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as JSON.")) -> None:
+    """List the cases: id, world folder, variants (the harder one marked) and trial budget."""
+    from creative_py.case import load_cases
+    from creative_py.world import WorldFileError
+
+    try:
+        found = load_cases()
+    except WorldFileError as exc:
+        _fail(str(exc))
+    listing = [m.listing() for m in found.values()]
+    if as_json:
+        typer.echo(json.dumps(listing, indent=2))
+        return
+    for c in listing:
+        variants = ", ".join(v["name"] + (" (harder)" if v["harder"] else "")
+                             for v in c["variants"])
+        typer.echo(f"{c['id']:<8} {c['title']}\n         world {c['world']}; variants "
+                   f"{variants}; trial budget {c['trial_budget']}")
+
+
+def _manifest(case: str, world: Optional[Path]):
+    """Return the manifest of ``case`` (from ``world`` if given), or fail in one line."""
+    from creative_py.case import get_case, read_manifest
+    from creative_py.world import WorldFileError
+
+    try:
+        m = get_case(case) if world is None else read_manifest(world)
+    except KeyError as exc:
+        _fail(exc.args[0])
+    except WorldFileError as exc:
+        _fail(str(exc))
+    if m.id != case:
+        _fail(f"{world / 'case.toml'}: declares case {m.id!r}, not {case!r}")
+    return m
+
+
+@app.command()
 def trial(
-    case: str = typer.Argument(..., help="The case: hook or wedge."),
+    case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
     tool: Optional[str] = typer.Option(None, "--tool", "--object", "-t",
                                        help="The object used as a tool (--object is a synonym)."),
     location: int = typer.Option(1, "--location", "-l", help="Predefined target location, 1-based."),
     variant: Optional[str] = typer.Option(None, "--variant",
-                                          help="Task variant (hook: standard, long_tube); "
-                                               "default: the demonstration's."),
+                                          help="Task variant; default: the demonstration's."),
     pose: Optional[str] = typer.Option(None, "--pose",
                                        help="Pose numbers relative to the target, comma "
-                                            "separated (hook: DX,DY,ROLL in m, m, rad); "
-                                            "default: the demonstration's."),
+                                            "separated, as the case manifest's [pose] names "
+                                            "them (hook: DX,DY,ROLL in m, m, rad); default: "
+                                            "the demonstration's."),
     seed: int = typer.Option(0, "--seed", help="Seed of every random choice (sensor noise)."),
     as_json: bool = typer.Option(False, "--json", help="Print the result as one JSON line."),
     save_images: Optional[Path] = typer.Option(None, "--save-images",
                                                help="Save camera snapshots in this folder."),
     gui: bool = typer.Option(False, "--gui", help="Show the pybullet GUI (needs a display)."),
     world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
-                                         "shipped worlds/<case>)."),
+                                         "shipped one of the case)."),
     list_: bool = typer.Option(False, "--list", help="Print objects, locations, variants "
                                "and the default pose as JSON, and exit."),
 ) -> None:
@@ -88,40 +126,33 @@ def trial(
 def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui, world,
            list_) -> list[str]:
     out: list[str] = []
-    from creative_py.sim.cases import CASES
-    from creative_py.sim.trial import get_case, list_case, load_case_world, run_trial
+    from creative_py.sim import load_world, run_trial
     from creative_py.world import WorldFileError
 
-    if case not in CASES:
-        _fail(f"unknown case {case!r}; known cases: {', '.join(sorted(CASES))}")
+    m = _manifest(case, world)
     try:
-        w = load_case_world(case, world)
+        w = load_world(m)
     except WorldFileError as exc:
         _fail(str(exc))
     if list_:
-        return [json.dumps(list_case(case, w), indent=2, sort_keys=True)]
-    c = get_case(case)
-    listing = list_case(case, w)
-    objects = list(listing["objects"])
-    demo = listing.get("demonstration", {})
+        return [json.dumps(w.listing(), indent=2, sort_keys=True)]
+    objects = list(w.catalogue)
     if tool is None:
-        _fail(f"--{c.object_option} is required; available: {', '.join(objects)}")
+        _fail(f"--tool is required; available: {', '.join(objects)}")
     if tool not in objects:
-        _fail(f"unknown {c.object_option} {tool!r}; available: {', '.join(objects)}")
-    variants = list(listing["variants"])
-    variant = variant or demo.get("variant") or variants[0]
-    if variant not in variants:
-        _fail(f"unknown variant {variant!r}; variants: {', '.join(variants)}")
-    n_loc = len(listing["locations"])
-    if not 1 <= location <= n_loc:
-        _fail(f"--location must lie in 1..{n_loc}, got {location}")
+        _fail(f"unknown tool {tool!r}; available: {', '.join(objects)}")
+    variant = variant or m.demonstration.variant
+    if variant not in m.variant_names:
+        _fail(f"unknown variant {variant!r}; variants: {', '.join(m.variant_names)}")
+    if location not in w.locations:
+        _fail(f"--location must lie in 1..{len(w.locations)}, got {location}")
     parsed = None
     if pose is not None:
         try:
-            parsed = c.parse_pose(pose)
+            parsed = m.parse_pose(pose)
         except ValueError as exc:
             _fail(str(exc))
-    result = run_trial(case, w, tool, variant, location, pose=parsed, seed=seed,
+    result = run_trial(w, tool, variant, location, pose=parsed, seed=seed,
                        images_dir=save_images, gui=gui)
     if as_json:
         return [result.to_json()]
@@ -140,18 +171,18 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
 
 @app.command()
 def run(
-    case: str = typer.Argument(..., help="The case: hook or wedge."),
+    case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
     seed: int = typer.Option(0, "--seed", help="Seed of the physics and sensor noise."),
     out: Path = typer.Option(Path("runs"), "--out", help="Parent folder of the run folder."),
     phase: str = typer.Option("all", "--phase", help="use (tool-use learning only), "
                               "create or all (then tool creation on the harder task)."),
     max_trials: Optional[int] = typer.Option(None, "--max-trials", help="N of Algorithm 1 "
-                                             "(default: the paper's 12 for hook, 9 for wedge)."),
+                                             "(default: the case manifest's trial_budget)."),
     consecutive: int = typer.Option(2, "--consecutive", help="K of Algorithm 1."),
     eval_trials: int = typer.Option(4, "--eval-trials", help="Evaluation trials of the "
                                     "learned model after tool-use learning."),
     world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
-                                         "shipped worlds/<case>)."),
+                                         "shipped one of the case)."),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot)."""
     from rich.console import Console
@@ -160,6 +191,7 @@ def run(
     from creative_py.world import WorldFileError
 
     console = Console(stderr=True)
+    _manifest(case, world)
     opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
                       consecutive=consecutive, eval_trials=eval_trials)
     try:

@@ -526,6 +526,75 @@ class Engine:
         ``infeasible(Conflict)`` for a new tool of ``kind`` (``geometry_clp:solve_size/4``)."""
         return self._must("solve_size", kind, list(literals), list(context))
 
+    # ------------------------------------------------------------------ learning ops
+    # The operations of the learning loop (Algorithms 1 and 2). ``case`` is a case id
+    # of a manifest (``worlds/<folder>/case.toml``); the ontology answers for it.
+
+    def case_info(self, case: str) -> Term:
+        """Return ``case(Skills, Goal, Target, Context, PoseTerm)``: what the ontology
+        says of ``case`` (skill names in plan order, goal literals, the target and
+        context objects, the pose term's name)."""
+        return self._must("case_info", case)
+
+    def learn_from_demonstration(self, case: str, steps: Sequence[Term]) -> tuple[Term, Term, Term]:
+        """Return ``(matched, new_models, example)`` learned from the demonstration's
+        ``step(Skill, Args, FactsBefore, FactsAfter)`` terms."""
+        reply = self._must("learn_from_demonstration", case, list(steps))
+        if not (isinstance(reply, Compound) and reply.name == "models" and len(reply.args) == 3):
+            raise BridgeProtocolError(f"learn_from_demonstration: unexpected reply {reply!r}")
+        return reply.args[0], reply.args[1], reply.args[2]
+
+    def next_experiment(self, case: str, vs: Term, facts: Sequence[Term],
+                        skip: Sequence[Term] = ()) -> Term:
+        """Return ``experiment(Tool, Tested, Violated, Pose, Required, Negated)``, an
+        ``exploit(Tool, Violated, Pose, Required)`` when nothing is left to test, or
+        ``no_experiment(Why)`` (Algorithm 1's choice, ``experiment:plan_experiment/5``)."""
+        return self._must("next_experiment", case, vs, list(facts), list(skip))
+
+    def label_trial(self, case: str, vs: Term, experiment: Term, facts: Sequence[Term],
+                    label: str, mode: str) -> Term:
+        """Return the version space after a trial labelled ``pos``/``neg``; ``mode`` is
+        ``observed`` (the example from ``facts``) or ``planned`` (from the experiment)."""
+        return self._must("label_trial", case, vs, experiment, list(facts), label, mode)
+
+    def plan_use(self, case: str, vs: Term, facts: Sequence[Term],
+                 options: Sequence[Term] = ()) -> Term:
+        """Return ``exploit(Tool, Violated, Pose, Required)`` for the learned model's best
+        tool and pose in the task ``facts`` (option ``tool(T)`` fixes the tool), or a
+        reason term when there is none."""
+        return self._must("plan_use", case, vs, list(facts), list(options))
+
+    def next_tool(self, case: str, vs: Term, tried: Sequence[Term],
+                  facts: Sequence[Term]) -> Term:
+        """Return ``create(Replaced, General, Instance, Structural, Dims)`` or
+        ``exhausted(Why)`` (Algorithm 2's choice, ``creation:next_tool/6``)."""
+        return self._must("next_tool", case, vs, list(tried), list(facts))
+
+    def created_models(self, models: Term, vs: Term, replaced: Term, instance: Term) -> list:
+        """Return the harder task's action models: the learned ones with ``replaced``
+        swapped for ``instance``."""
+        return self._must("created_models", models, vs, replaced, instance)
+
+    def plan_task(self, case: str, models: Term, vs: Term, facts: Sequence[Term],
+                  options: Sequence[Term] = ()) -> Term:
+        """Return ``plan(Steps)`` (or a reason) for the case's goal with the learned
+        models; option ``pddl(Domain, Problem)`` also writes the PDDL files."""
+        return self._must("plan_task", case, models, vs, list(facts), list(options))
+
+    def write_model_file(self, path: PathLike, case: str, models: Term, vs: Term,
+                         created: Sequence[Term] = ()) -> None:
+        """Write ``model.pl`` (learned models and hypotheses, and ``created(Variant,
+        Models)`` of the harder task) to ``path``."""
+        if created:
+            self._must("write_model_file", str(path), case, models, vs, list(created))
+        else:
+            self._must("write_model_file", str(path), case, models, vs)
+
+    def pose_target(self, case: str, tool: str, facts: Sequence[Term], pose: Term) -> Term:
+        """Return the world-frame target of a pose term (the ontology's pose geometry),
+        e.g. ``tip(X, Y, Roll)`` or ``place(X, Y, Heading)``, from the perceived ``facts``."""
+        return self._must("pose_target", case, tool, list(facts), pose)
+
 
 def _restore_variable_names(reply: Term, args: Sequence[Term]) -> Term:
     """Give request variables that come back in ``reply`` their names without the

@@ -36,13 +36,12 @@ import re
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Sequence
+from typing import Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, PrologError, Term, Var
 from creative_py.mesh.export import ToolFiles, write_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict
-from creative_py.world import WORLDS_ROOT, WorldFileError, load_toml
 
 log = logging.getLogger(__name__)
 
@@ -263,51 +262,36 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
     return facts
 
 
-def default_context(case: str, variant: str = "standard", *,
-                    worlds_root: Path | str = WORLDS_ROOT) -> list[Compound]:
-    """Return the task facts the size model needs, read from the world files.
+def default_context(case: str, variant: Optional[str] = None, *,
+                    world_dir: Path | str | None = None) -> list[Compound]:
+    """Return the task facts the size model needs, as the robot perceives the task.
 
-    Hook case (``<root>/hook_tube/``): ``tube_length_m(Tube, L)`` from ``tasks.toml``
-    ``[variant.<variant>] tube_length`` and ``tube_inner_m(Tube, W, H)`` from
-    ``scene.toml`` ``[tube] name, inner_width, inner_height``. Wedge case
-    (``<root>/wedge_door/``): ``door_gap_m(Door, G)`` from ``scene.toml``
-    ``[door] name, bottom_gap``; ``variant`` must name a ``[[variant]]`` of ``tasks.toml``.
-    Metres. Without world files, build the list by hand (see :data:`CONTEXT_FACTS`).
+    The scene of ``variant`` (default: the demonstration's) is built in the simulator
+    and observed once at its first location; of what the robot perceives, the facts the
+    size model understands (:data:`CONTEXT_FACTS`, e.g. ``tube_length_m(Tube, L)`` or
+    ``door_gap_m(Door, G)``, metres) are returned. ``world_dir`` names a world folder
+    with its own ``case.toml`` (default: the shipped one of ``case``).
 
     Raises
     ------
     WorldFileError
-        A file is missing or lacks a field (the message names file and field).
+        A world file is missing or lacks a field (the message names file and field).
     ValueError
-        An unknown case or variant (the message lists the variants).
+        An unknown case or variant (the message lists the known ones).
     """
-    _check_case(case)
-    folder = Path(worlds_root) / ("hook_tube" if case == "hook" else "wedge_door")
-    scene_path, tasks_path = folder / "scene.toml", folder / "tasks.toml"
-    scene, tasks = load_toml(scene_path), load_toml(tasks_path)
-    if case == "hook":
-        variants = tasks.get("variant", {})
-        if not isinstance(variants, dict) or variant not in variants:
-            names = ", ".join(variants) if isinstance(variants, dict) else "none"
-            raise ValueError(f"{tasks_path}: no variant {variant!r}; variants: {names}")
-        length = _toml_number(variants[variant], "tube_length", tasks_path,
-                              f"variant.{variant}")
-        tube = _toml_table(scene, "tube", scene_path)
-        name = _toml_atom(tube, "name", scene_path, "tube")
-        width = _toml_number(tube, "inner_width", scene_path, "tube")
-        height = _toml_number(tube, "inner_height", scene_path, "tube")
-        return [Compound("tube_length_m", (name, length)),
-                Compound("tube_inner_m", (name, width, height))]
-    variants = tasks.get("variant", [])
-    names = [v.get("name") for v in variants if isinstance(v, dict)] \
-        if isinstance(variants, list) else []
-    if variant not in names:
-        raise ValueError(f"{tasks_path}: no variant {variant!r}; variants: "
-                         f"{', '.join(map(str, names)) or 'none'}")
-    door = _toml_table(scene, "door", scene_path)
-    name = _toml_atom(door, "name", scene_path, "door")
-    gap = _toml_number(door, "bottom_gap", scene_path, "door")
-    return [Compound("door_gap_m", (name, gap))]
+    from creative_py.case import get_case, read_manifest
+    from creative_py.learning.trials import fact_term, task_facts
+    from creative_py.sim import load_world
+
+    try:
+        manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
+        variant = variant or manifest.demonstration.variant
+        manifest.variant(variant)
+    except KeyError as exc:
+        raise ValueError(exc.args[0]) from None
+    world = load_world(manifest)
+    facts = task_facts(world, variant, world.locations[0])
+    return [fact_term(f) for f in facts if CONTEXT_FACTS.get(f[0]) == len(f) - 1]
 
 
 def size_tool(engine: Engine, case: str, literals: Sequence[Term],
@@ -464,26 +448,3 @@ def _kind(case: str, literals: Sequence[Compound], name: str) -> str:
     if case == "wedge":
         return "block"
     return "stick" if Compound("stick", (name,)) in literals else "hook"
-
-
-def _toml_table(data: dict, key: str, path: Path) -> dict:
-    table = data.get(key)
-    if not isinstance(table, dict):
-        raise WorldFileError(f"{path}: table [{key}] missing")
-    return table
-
-
-def _toml_number(table: dict, key: str, path: Path, where: str) -> float:
-    value = table.get(key)
-    if isinstance(value, bool) or not isinstance(value, (int, float)) or value <= 0:
-        raise WorldFileError(f"{path}: field {where}.{key} must be a positive number of "
-                             f"metres, got {value!r}")
-    return float(value)
-
-
-def _toml_atom(table: dict, key: str, path: Path, where: str) -> str:
-    value = table.get(key)
-    if not (isinstance(value, str) and _ATOM.match(value)):
-        raise WorldFileError(f"{path}: field {where}.{key} must be an object name "
-                             f"(a Prolog atom), got {value!r}")
-    return value

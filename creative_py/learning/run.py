@@ -16,18 +16,11 @@ from typing import Any, Callable, Optional
 from creative_py.bridge import Compound, Engine
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.run_folder import RunFolder
-from creative_py.learning.tool_use import (
-    LearningOptions, TaskState, ToolUseLearner, UseResult, term_text,
-)
+from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
+from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 
 log = logging.getLogger(__name__)
-
-HARDER_VARIANT = {"hook": "long_tube", "wedge": "big_door"}
-"""The task variant that needs a new tool in each case."""
-
-DEFAULT_TRIALS = {"hook": 12, "wedge": 9}
-"""The paper's tool-use trial budget per case (Figures 5 and 6): N of Algorithm 1."""
 
 PHASES = ("use", "create", "all")
 
@@ -44,7 +37,7 @@ class RunOptions:
         ``use``: demonstration and tool-use learning only; ``create`` and ``all``: then
         tool creation on the harder variant.
     max_trials : int or None
-        N of Algorithm 1 (default: the paper's budget, 12 for the hook, 9 for the wedge).
+        N of Algorithm 1 (default: the case manifest's ``trial_budget``).
     consecutive : int
         K of Algorithm 1: consecutive successes needed once nothing is left to test.
     eval_trials : int
@@ -69,81 +62,78 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
 
     Parameters
     ----------
-    case : {"hook", "wedge"}
+    case : str
+        A case id of a manifest ``worlds/<folder>/case.toml`` (``creative cases``).
     out : Path
         Parent folder of the run folder.
     options : RunOptions
     progress : callable or None
         Receives one line of text per step (the CLI shows it).
     world_dir : Path or None
-        A world folder other than the shipped ``worlds/<case>``.
+        A world folder other than the shipped one (with its own ``case.toml``).
     """
-    from creative_py.sim.trial import load_case_world
+    from creative_py.case import get_case, read_manifest
+    from creative_py.sim import load_world
 
-    if case not in HARDER_VARIANT:
-        raise ValueError(f"unknown case {case!r}; cases: {', '.join(HARDER_VARIANT)}")
     if options.phase not in PHASES:
         raise ValueError(f"unknown phase {options.phase!r}; phases: {', '.join(PHASES)}")
+    manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
+    if manifest.id != case:
+        raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "
+                         f"not {case!r}")
     say = progress or (lambda _m: None)
     t_start = time.perf_counter()
-    world = load_case_world(case, world_dir)
+    world = load_world(manifest)
     run = RunFolder.create(Path(out), case, options.seed, run_name)
     say(f"run folder {run.path}")
     engine = Engine.instance()
-    lopts = LearningOptions(max_trials=options.max_trials or DEFAULT_TRIALS[case],
-                            consecutive=options.consecutive, seed=options.seed)
+    runner = TrialRunner(engine, world, run, options.seed, say)
+    lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
+                            consecutive=options.consecutive)
     summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                "options": asdict(options), "wall_time_s": {}}
 
     # Demonstration and tool-use learning (Algorithm 1).
     t0 = time.perf_counter()
-    learner = ToolUseLearner(engine, case, world, run, lopts, say)
-    use = learner.learn()
+    use = ToolUseLearner(runner, lopts).learn()
     summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
     summary["demonstration"] = {"tool": use.demo_tool}
     summary["use"] = {"trials": len(use.trials), "converged": use.converged,
                       "trials_to_converge": use.trials_to_converge}
-    _write_model(engine, run, case, use)
-    hs, hg = learner._bounds(use.vs)
+    engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
+    hs, hg = runner.bounds(use.vs)
     summary["hypotheses"] = {"hs": hs, "hg": hg}
     say(f"h_s: {hs}")
     say(f"h_g: {hg}")
 
-    # The learned model planning the standard task (PDDL written for every run).
-    task = TaskState(use.trials[-1].variant if use.trials else "standard",
-                     *learner._locations())
-    facts = learner.task_facts(task)
-    plan = engine.call("plan_task", case, use.models, use.vs, facts,
-                       [Compound("pddl", (str(run.path / "domain.pddl"),
-                                          str(run.path / "problem.pddl")))])
+    # The learned model planning the task (PDDL written for every run).
+    task = runner.task(use.trials[-1].variant if use.trials
+                       else manifest.demonstration.variant)
+    plan = engine.plan_task(case, use.models, use.vs, runner.task_facts(task),
+                            [Compound("pddl", (str(run.path / "domain.pddl"),
+                                               str(run.path / "problem.pddl")))])
     summary["plan"] = term_text(plan)
     say(f"plan: {term_text(plan)}")
 
     # Evaluation of the learned model: the planner's own tool and pose choice.
     t0 = time.perf_counter()
-    summary["eval"] = _evaluate(learner, use, options.eval_trials)
+    summary["eval"] = _evaluate(runner, use, options.eval_trials)
     summary["wall_time_s"]["eval"] = round(time.perf_counter() - t0, 2)
 
     # Tool creation (Algorithm 2) on the harder variant.
-    vs = use.vs
     if options.phase in ("create", "all"):
         t0 = time.perf_counter()
-        creator = ToolCreator(engine, case, learner.world, run, lopts, say,
-                              previous=learner.trials,
-                              eval_trials=options.create_eval_trials)
-        created = creator.create(use.vs, HARDER_VARIANT[case])
-        vs = created.vs
+        creator = ToolCreator(runner, eval_trials=options.create_eval_trials)
+        created = creator.create(use.vs, manifest.harder_variant)
         summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
         summary["create"] = _creation_summary(created)
         if created.success is not None:
-            models = engine.call("created_models", use.models, use.vs, created.replaced,
-                                 created.instance)
-            engine.call("write_model_file", str(run.path / "model.pl"), case, use.models,
-                        use.vs, [Compound("created", (created.variant, models))])
+            models = engine.created_models(use.models, use.vs, created.replaced,
+                                           created.instance)
+            engine.write_model_file(run.path / "model.pl", case, use.models, use.vs,
+                                    [Compound("created", (created.variant, models))])
             summary["create"]["model"] = [term_text(m) for m in models]
-        trials = creator.trials
-    else:
-        trials = learner.trials
+    trials = runner.trials
     summary["trials"] = summarise_trials([t.as_dict() for t in trials])
     summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
     plot_trials([t.as_dict() for t in trials], run.path / "trials.png",
@@ -153,22 +143,16 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     return run
 
 
-def _write_model(engine: Engine, run: RunFolder, case: str, use: UseResult) -> None:
-    engine.call("write_model_file", str(run.path / "model.pl"), case, use.models, use.vs)
-
-
-def _evaluate(learner: ToolUseLearner, use: UseResult, n: int) -> dict[str, Any]:
+def _evaluate(runner: TrialRunner, use: UseResult, n: int) -> dict[str, Any]:
     """Run ``n`` trials of the learned model over the locations, no learning."""
     outcomes = []
-    task = TaskState("standard", *learner._locations())
+    task = runner.task(runner.manifest.demonstration.variant)
     for i in range(1, n + 1):
-        plan = learner.engine.call("plan_use", learner.case, use.vs,
-                                   learner.task_facts(task), [])
+        plan = runner.engine.plan_use(runner.case, use.vs, runner.task_facts(task))
         if not isinstance(plan, Compound) or plan.name != "exploit":
             outcomes.append("no_plan")
             continue
-        rec, _ = learner._run_experiment(len(learner.trials) + 1, "eval", i, plan, use.vs,
-                                         task, 0.0, label=False)
+        rec, _ = runner.run(plan, "eval", i, use.vs, task, 0.0, label=False)
         outcomes.append(rec.outcome)
         task.next_location()
     return {"trials": n, "successes": outcomes.count("success"), "outcomes": outcomes}

@@ -243,11 +243,16 @@ def spec_mass(spec: ToolSpec) -> float:
     return spec.mass if spec.mass is not None else PLA_DENSITY * spec_volume(spec)
 
 
+SPEC_KINDS: dict[str, type] = {"hook": HookSpec, "stick": HookSpec, "block": BlockSpec}
+"""The tool kinds a spec can have (the ``kind`` field), each with its spec class; a
+kind's name is also the ontology's class literal of a tool of that kind (``hook(T)``)."""
+
+
 def spec_from_dict(data: dict, *, source: str = "<dict>") -> ToolSpec:
     """Build a spec from a TOML table; errors name ``source`` and the offending field."""
     data = dict(data)
     kind = data.pop("kind", None)
-    cls = {"hook": HookSpec, "stick": HookSpec, "block": BlockSpec}.get(kind)
+    cls = SPEC_KINDS.get(kind)
     if cls is None:
         raise ValueError(f"{source}: object {data.get('name', '?')!r}: field 'kind' must be "
                          f"hook, stick or block, got {kind!r}")

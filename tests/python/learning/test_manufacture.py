@@ -201,35 +201,31 @@ def test_literals_about_two_tools_or_none_are_refused(engine):
 
 # ---------------------------------------------------------------- context
 
-def _world(root, case, scene, tasks):
-    folder = root / case
-    folder.mkdir(parents=True)
-    (folder / "scene.toml").write_text(scene, encoding="utf-8")
-    (folder / "tasks.toml").write_text(tasks, encoding="utf-8")
+@pytest.mark.sim
+def test_default_context_is_what_the_robot_perceives_of_the_variant():
+    assert default_context("hook", "long_tube") == [
+        C("tube_length_m", "tube1", 0.45), C("tube_inner_m", "tube1", 0.1, 0.07)]
+    assert default_context("hook") == [
+        C("tube_length_m", "tube1", 0.3), C("tube_inner_m", "tube1", 0.1, 0.07)]
+    assert default_context("wedge", "big_door") == [C("door_gap_m", "door1", 0.01)]
+    with pytest.raises(ValueError, match="unknown variant 'huge' of case hook; variants: "
+                                         "standard, long_tube"):
+        default_context("hook", "huge")
+    with pytest.raises(ValueError, match="unknown case 'rack'"):
+        default_context("rack")
 
 
-def test_default_context_reads_the_world_files(tmp_path):
-    _world(tmp_path, "hook_tube",
-           '[tube]\nname = "tube7"\ninner_width = 0.09\ninner_height = 0.06\n',
-           "[variant.standard]\ntube_length = 0.3\n[variant.long_tube]\ntube_length = 0.5\n")
-    _world(tmp_path, "wedge_door", '[door]\nname = "door2"\nbottom_gap = 0.012\n',
-           '[[variant]]\nname = "standard"\n[[variant]]\nname = "big_door"\n')
-    assert default_context("hook", "long_tube", worlds_root=tmp_path) == [
-        C("tube_length_m", "tube7", 0.5), C("tube_inner_m", "tube7", 0.09, 0.06)]
-    assert default_context("wedge", "big_door", worlds_root=tmp_path) == [
-        C("door_gap_m", "door2", 0.012)]
-    with pytest.raises(ValueError, match="no variant 'huge'; variants: standard, long_tube"):
-        default_context("hook", "huge", worlds_root=tmp_path)
-    with pytest.raises(ValueError, match="variants: standard, big_door"):
-        default_context("wedge", "huge", worlds_root=tmp_path)
+@pytest.mark.sim
+def test_default_context_names_a_missing_file_of_a_world_folder(tmp_path):
+    import shutil
 
+    from creative_py.world import WORLDS_ROOT
 
-def test_default_context_names_a_missing_file_or_field(tmp_path):
-    with pytest.raises(WorldFileError, match=r"hook_tube/scene.toml: file not found"):
-        default_context("hook", worlds_root=tmp_path)
-    _world(tmp_path, "wedge_door", '[door]\nname = "door2"\n', '[[variant]]\nname = "standard"\n')
-    with pytest.raises(WorldFileError, match=r"scene.toml: field door.bottom_gap"):
-        default_context("wedge", worlds_root=tmp_path)
+    folder = tmp_path / "mine"
+    shutil.copytree(WORLDS_ROOT / "hook_tube", folder)
+    (folder / "scene.toml").unlink()
+    with pytest.raises(WorldFileError, match=r"mine/scene.toml: file not found"):
+        default_context("hook", world_dir=folder)
 
 
 def test_parse_context_reads_task_facts_and_refuses_unknown_ones(engine):

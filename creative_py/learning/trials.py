@@ -1,0 +1,291 @@
+"""One trial of any case: run a planned experiment in the physics, label it, record it.
+
+The learner (Algorithm 1) and the creator (Algorithm 2) share a :class:`TrialRunner`
+by composition. A trial::
+
+    runner.task_facts(task)                 # what the robot sees of the task: catalogue,
+                                            # apparatus, target (one observation per scene)
+    runner.run(experiment, "use", 3, vs, task, decision_s)
+        -> execute(tool, task, pose)        # the manifest's skills, in order, in pybullet;
+                                            # the facts before the tool action are observed
+        -> engine.label_trial(...)          # success: pos; failure or blocked: neg
+        -> TrialRecord                      # one line of trials.jsonl
+
+Which skills run, with which arguments and which of them takes the pose, comes from the
+case manifest (``[[skill]]`` of ``worlds/<folder>/case.toml``); nothing here names a
+case. The physics alone decides the outcome.
+
+Outcomes ``blocked`` (the arm could not carry out the motion, e.g. a short handle whose
+gripper hits the tube mouth before the prong is behind the cube) count as failures of
+the *planned* example, so they are evidence about the tested literal only; outcomes
+``unreachable`` and ``invalid`` are recorded with their reason and leave the version
+space unchanged.
+"""
+
+from __future__ import annotations
+
+import logging
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Optional
+
+from creative_py.bridge import Compound, Engine, Term
+from creative_py.case import CaseManifest
+from creative_py.learning.run_folder import RunFolder
+
+log = logging.getLogger(__name__)
+
+PHASE_TAGS = {"use": "TUL", "create": "TC", "eval": "EVAL"}
+"""How the progress lines and the plot name the phases (the paper's TUL and TC)."""
+
+
+@dataclass
+class TaskState:
+    """The current task: variant and target location (1-based)."""
+
+    variant: str
+    location: int
+    locations: tuple[int, ...]
+
+    def next_location(self) -> None:
+        """Move to the next predefined location (the task changes after a success)."""
+        i = self.locations.index(self.location)
+        self.location = self.locations[(i + 1) % len(self.locations)]
+
+
+@dataclass
+class TrialRecord:
+    """One executed trial, as written to ``trials.jsonl``."""
+
+    trial: int
+    phase: str
+    phase_trial: int
+    variant: str
+    location: int
+    tool: str
+    kind: str
+    tested: list[str]
+    violated: list[str]
+    pose: dict[str, float]
+    outcome: str
+    reason: str
+    hs: str = ""
+    hg: str = ""
+    wall_time_s: float = 0.0
+    sim_time_s: float = 0.0
+    decision_time_s: float = 0.0
+    extra: dict[str, Any] = field(default_factory=dict)
+
+    def as_dict(self) -> dict[str, Any]:
+        """Return the record as a JSON-ready dict."""
+        d = dict(self.__dict__)
+        d.update(d.pop("extra"))
+        return d
+
+
+@dataclass
+class Executed:
+    """What the physics did with one planned trial."""
+
+    outcome: str
+    reason: str
+    facts_before: list[tuple]
+    sim_time_s: float
+    wall_time_s: float
+    perceived_final: dict[str, Any] = field(default_factory=dict)
+
+
+def fact_term(fact: tuple) -> Term:
+    """Return a primitive fact given as a tuple ``("pose", "cube1", x, ...)`` as a term."""
+    name, *args = fact
+    return Compound(name, tuple(_plain(a) for a in args)) if args else name
+
+
+def _plain(a: Any) -> Any:
+    if isinstance(a, bool):
+        return "true" if a else "false"
+    if hasattr(a, "item"):  # numpy scalars
+        return a.item()
+    return a
+
+
+def term_text(t: Term) -> str:
+    """Return a term as Prolog text (for logs and JSON)."""
+    return str(t)
+
+
+def pose_numbers(pose: Term) -> tuple[float, ...]:
+    """Return the numbers of a ground pose term of the constraint solver."""
+    if not isinstance(pose, Compound):
+        raise ValueError(f"not a pose term: {pose!r}")
+    return tuple(float(a) for a in pose.args)
+
+
+_TASK_FACTS: dict[tuple, list[tuple]] = {}
+
+
+def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
+    """Return what the robot perceives of a task before acting: the catalogue of
+    available objects, the apparatus and the target's pose.
+
+    The scene is built and observed once per (world folder, available objects, variant,
+    location); nothing moves.
+    """
+    from creative_py.sim import open_episode
+
+    m: CaseManifest = world.manifest
+    key = (m.id, str(m.folder), tuple(sorted(world.catalogue)), variant, int(location))
+    if key not in _TASK_FACTS:
+        with open_episode(world, variant, int(location), m.demonstration.tool, seed=0) as ep:
+            _TASK_FACTS[key] = list(ep.observe().facts)
+    return _TASK_FACTS[key]
+
+
+def execute_trial(world: Any, tool: str, variant: str, location: int,
+                  pose: tuple[float, ...], seed: int, images_dir: Optional[Path]) -> Executed:
+    """Run one tool-use trial in pybullet and report the outcome the physics gave.
+
+    The manifest's skills run in order up to the tool action (the pose skill puts the
+    tool at ``pose`` relative to the target). The observation used for learning is
+    taken then, before the tool action: the state the action model's precondition
+    speaks of.
+    """
+    from creative_py.sim import open_episode
+
+    m: CaseManifest = world.manifest
+    t0 = time.perf_counter()
+    facts: list[tuple] = []
+    action = next(s for s in m.skills if s.tool_action)
+    with open_episode(world, variant, location, tool, seed=seed, images_dir=images_dir) as ep:
+        for skill in m.skills[:m.skills.index(action)]:
+            res = ep.run_skill(skill.name, pose=pose if skill.pose else None)
+            if res.status != "ok":
+                # What the robot sees where the motion stopped: the catalogue and the
+                # task's facts still describe the trial (a planned example needs them).
+                facts = list(ep.observe().facts) if res.status == "blocked" else facts
+                return Executed(res.status, f"{skill.name}: {res.reason}", facts,
+                                ep.sim_time(), time.perf_counter() - t0)
+        facts = list(ep.observe().facts)
+        res = ep.run_skill(action.name)
+        if res.status != "ok":
+            if res.status == "blocked":
+                # Blocked while acting: the tool could not carry out the action; the
+                # physics says whether the goal was reached with this tool and pose.
+                outcome = "success" if ep.goal_reached() else "failure"
+                return Executed(outcome, f"act: {res.reason}", facts, ep.sim_time(),
+                                time.perf_counter() - t0)
+            return Executed(res.status, f"act: {res.reason}", facts, ep.sim_time(),
+                            time.perf_counter() - t0)
+        ok = ep.goal_reached()
+        final = ep.observe()
+        return Executed("success" if ok else "failure",
+                        "goal reached" if ok else "goal not reached", facts,
+                        ep.sim_time(), time.perf_counter() - t0,
+                        perceived_final=final.perceived_poses() if final.frames else {})
+
+
+class TrialRunner:
+    """Runs planned experiments of one case in the physics and keeps their records.
+
+    Parameters
+    ----------
+    engine : Engine
+        The Prolog engine (bridge).
+    world : World
+        The case's world (:func:`creative_py.sim.load_world`); its manifest names the
+        case, the skills and the pose.
+    run : RunFolder or None
+        Where trials are logged; None logs nowhere.
+    seed : int
+        Seed of the run; trial ``n`` uses seed ``seed * 1000 + n`` in the physics.
+    progress : callable or None
+        Called with one line of text per trial.
+    """
+
+    def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
+                 progress: Optional[Callable[[str], None]] = None) -> None:
+        self.engine = engine
+        self.world = world
+        self.run_folder = run
+        self.seed = seed
+        self.progress = progress or (lambda _msg: None)
+        self.trials: list[TrialRecord] = []
+
+    @property
+    def manifest(self) -> CaseManifest:
+        """Return the case manifest of the world."""
+        return self.world.manifest
+
+    @property
+    def case(self) -> str:
+        """Return the case id."""
+        return self.world.manifest.id
+
+    def task(self, variant: str) -> TaskState:
+        """Return a task of ``variant`` at the first location."""
+        locs = tuple(self.world.locations)
+        return TaskState(variant, locs[0], locs)
+
+    def task_facts(self, task: TaskState) -> list[Term]:
+        """Return the primitive facts the planner needs before a trial: the catalogue
+        of available objects and the task's geometry."""
+        return [fact_term(f) for f in task_facts(self.world, task.variant, task.location)]
+
+    def bounds(self, vs: Term) -> tuple[str, str]:
+        """Return h_s and h_g of the version space as text."""
+        hs, hg = self.engine.vs_bounds(vs)
+        return term_text(hs), term_text(hg)
+
+    def run(self, exp: Term, phase: str, phase_trial: int, vs: Term, task: TaskState,
+            decision: float, label: bool = True) -> tuple[TrialRecord, Term]:
+        """Execute a planned experiment, label it and update the version space.
+
+        ``exp`` is an ``experiment/6`` or ``exploit/4`` term of the engine.
+        ``label=False`` leaves the version space unchanged (evaluation trials, created
+        tools). Returns the trial's record and the version space after it.
+        """
+        n = len(self.trials) + 1
+        kind = exp.name if isinstance(exp, Compound) else str(exp)
+        if kind == "no_experiment":
+            raise RuntimeError(f"{self.case}: no experiment is possible: {exp.args[0]}")
+        if kind == "experiment":
+            tool, tested, violated, pose, _req, _neg = exp.args
+            tested_l = [term_text(tested)]
+        else:  # exploit
+            tool, violated, pose, _req = exp.args
+            tested_l = []
+        images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
+        ex = execute_trial(self.world, str(tool), task.variant, task.location,
+                           pose_numbers(pose), self.seed * 1000 + n, images)
+        td = time.perf_counter()
+        lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
+        if lab is not None and label:
+            facts = [fact_term(f) for f in ex.facts_before]
+            planned = ex.outcome == "blocked"
+            if planned and not facts:
+                facts = self.task_facts(task)
+            vs = self.engine.label_trial(self.case, vs, exp, facts, lab,
+                                         "planned" if planned else "observed")
+        hs, hg = self.bounds(vs)
+        decision += time.perf_counter() - td
+        rec = TrialRecord(
+            trial=n, phase=phase, phase_trial=phase_trial, variant=task.variant,
+            location=task.location, tool=str(tool), kind=kind, tested=tested_l,
+            violated=[term_text(v) for v in violated], pose=self._pose_dict(pose),
+            outcome=ex.outcome, reason=ex.reason, hs=hs, hg=hg,
+            wall_time_s=round(ex.wall_time_s, 3), sim_time_s=round(ex.sim_time_s, 3),
+            decision_time_s=round(decision, 4))
+        self.trials.append(rec)
+        if self.run_folder:
+            self.run_folder.append_trial(rec.as_dict())
+        self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
+                      f"loc {task.location}  {ex.outcome:<11} "
+                      f"tested {', '.join(tested_l) or '-'}")
+        return rec, vs
+
+    def _pose_dict(self, pose: Term) -> dict[str, float]:
+        m = self.manifest
+        if isinstance(pose, Compound) and pose.name == m.pose_term:
+            return dict(zip(m.pose_names, (round(float(a), 5) for a in pose.args)))
+        return {"pose": term_text(pose)}
