@@ -33,21 +33,21 @@ from creative_py.bridge import Compound, Engine, clause, clause_parts, decode, e
 
 
 def example_clause(rng: random.Random, tool: str, n_literals: int = 20) -> Compound:
-    """Return a ground tool-use example ``tool_pose(Tool, cube1, tube1) :- 20 literals``."""
+    """Return a ground tool-use example ``tool_pose(Tool, target1, context1) :- 20 literals``."""
     body = [Compound("hook_like", (tool,)), Compound("hook", (tool,))]
     kinds = [
         lambda: Compound("handle_length_m", (tool, round(rng.uniform(0.1, 0.7), 3))),
         lambda: Compound("hook_side", (tool, rng.choice(["left", "right"]))),
-        lambda: Compound("pose", ("cube1", round(rng.uniform(0.8, 1.0), 4),
+        lambda: Compound("pose", ("target1", round(rng.uniform(0.8, 1.0), 4),
                                   round(rng.uniform(-0.01, 0.01), 4), -0.01, 0.0)),
-        lambda: Compound("behind", (tool, "cube1")),
-        lambda: Compound("near", (tool, rng.choice(["cube1", "tube1"]))),
-        lambda: Compound("size", ("cube1", 0.03, 0.03, 0.03)),
+        lambda: Compound("behind", (tool, "target1")),
+        lambda: Compound("near", (tool, rng.choice(["target1", "context1"]))),
+        lambda: Compound("size", ("target1", 0.03, 0.03, 0.03)),
         lambda: Compound("tip_position", (tool, round(rng.uniform(0.9, 1.1), 4), 0.0, 0.0)),
     ]
     while len(body) < n_literals:
         body.append(rng.choice(kinds)())
-    return clause(Compound("tool_pose", (tool, "cube1", "tube1")), body)
+    return clause(Compound("tool_pose", (tool, "target1", "context1")), body)
 
 
 def timed(fn, repeat: int) -> dict:
@@ -91,8 +91,8 @@ def main() -> None:
     startup_s = time.perf_counter() - start
 
     rng = random.Random(0)
-    c1 = example_clause(rng, "hook_a1")
-    c2 = example_clause(rng, "hook_a2")
+    c1 = example_clause(rng, "tool_1")
+    c2 = example_clause(rng, "tool_2")
     c1_text = encode(c1)
     reply_text = engine.request_text(encode(Compound("echo", (c1,))))
     lgg_reply_text = engine.request_text(encode(Compound("clause_lgg", (c1, c2))))

@@ -254,15 +254,15 @@ hook_example(Tool, HL, HLm, Spatial, E) :-
              handle_width(Tool, thin), hook_length(Tool, long), hook_width(Tool, wide),
              hook_side(Tool, right), hook_angle(Tool, right), handle_length_m(Tool, HLm),
              handle_width_m(Tool, 0.01), hook_length_m(Tool, 0.03), hook_width_m(Tool, 0.01),
-             hook_angle_deg(Tool, 90), in_tube(Tool, tube1), in_tube(cube1, tube1),
-             size(cube1, 0.03, 0.03, 0.03), tube_length_m(tube1, 0.3) | Spatial ],
-    clause_head_body(E, tool_pose(Tool, cube1, tube1), Lits).
+             hook_angle_deg(Tool, 90), in_tube(Tool, context1), in_tube(target1, context1),
+             size(target1, 0.03, 0.03, 0.03), tube_length_m(context1, 0.3) | Spatial ],
+    clause_head_body(E, tool_pose(Tool, target1, context1), Lits).
 
 bench_vs_update(Row) :-
-    hook_example(hook_a2, medium, 0.35, [behind(hook_a2, cube1), hook_down(hook_a2), centred_on(hook_a2, cube1)], E0),
-    hook_example(hook_a3, long, 0.5, [behind(hook_a3, cube1), hook_down(hook_a3), centred_on(hook_a3, cube1)], P),
-    hook_example(hook_a2, medium, 0.35, [in_front(hook_a2, cube1), hook_down(hook_a2), centred_on(hook_a2, cube1)], N1),
-    hook_example(hook_b1, medium, 0.3, [behind(hook_b1, cube1), hook_flat(hook_b1), centred_on(hook_b1, cube1)], N2),
+    hook_example(tool_2, medium, 0.35, [behind(tool_2, target1), hook_down(tool_2), centred_on(tool_2, target1)], E0),
+    hook_example(tool_3, long, 0.5, [behind(tool_3, target1), hook_down(tool_3), centred_on(tool_3, target1)], P),
+    hook_example(tool_2, medium, 0.35, [in_front(tool_2, target1), hook_down(tool_2), centred_on(tool_2, target1)], N1),
+    hook_example(tool_4, medium, 0.3, [behind(tool_4, target1), hook_flat(tool_4), centred_on(tool_4, target1)], N2),
     clause_head_body(E0, _, B0),
     length(B0, Len),
     vs_init(E0, VS0),
