@@ -13,31 +13,46 @@ abstract state is the list of qualitative literals that hold in it:
 
   - *structural* literals of every catalogued object (tool/1, handle_length/2,
     shape/2, ...), by the ontology's rules and qualitative ranges;
-  - *task* literals (in_tube(cube1, tube1), out_of_tube/2, door_open/1, door_held/1),
-    by the ontology's task rules;
+  - *task* literals (in_tube(cube1, tube1), door_open(door1), ...), by the case's task
+    rules;
   - *spatial* literals of each tool in use with respect to the task's target, by the
-    ontology's spatial definitions evaluated on the pose numbers (pose_numbers/4).
+    case's spatial definitions evaluated on the pose numbers (pose_numbers/4).
 
-Tools in use: in the hook case every held(T) tool whose tip lies inside the tube's
-inner box (so the tube's facts tube_mouth/4, tube_length_m/2 and tube_inner_m/3 must be
-given for any hook spatial literal); in the wedge case every held block and
-every block that lies in the door's sweep (0 =< Phi =< A, R =< door width).
+Everything about a case comes from its ontology file (ontology/cases/<case>.pl) through
+these hook predicates (case.pl says how a missing one is reported).  "Proved on the
+state" means proved by knowledge:kb_prove/2 with the primitive facts of the state:
 
-The ontology is read from the knowledge base (knowledge:load_default_ontology/0); the
-facts are never asserted: they travel in the argument.
+  - case_tool_class(?Case, ?Class): the case's tools belong to the hierarchy Class
+    (hook_like, block); its structural literals are those of
+    structural_predicate(?Class, ?Name/Arity) (ontology/kinds/<class>.pl).
+  - task_predicate(?Case, ?Name/Arity): a task literal of the case, proved on the
+    state.
+  - tool_in_use(?Case, ?Tool), proved on the state: Tool has spatial literals (the
+    hook: a held tool whose tip is inside the tube; the wedge: a held block or one lying
+    in the door's sweep).
+  - relative_pose(?Case, ?Tool, ?Target, +Geometry, -Pose), proved on the state: the
+    pose term of Tool relative to Target (hook_pose(Dx, Dy, Roll), wedge_pose(R, Gap,
+    Yaw)); Geometry is geometry_clp:pose_geometry/5's list.
+  - pose_target(?Case, +Pose, ?Target, +Geometry, -World), proved on the state: the
+    inverse, the world-frame target of the ground pose Pose (tip(X, Y, Roll),
+    place(X, Y, Heading)).
+
+The facts are never asserted: they travel in the argument.
 */
 
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(knowledge).
+:- use_module(case).
 :- use_module(geometry_clp).
 
 %!  abstract_state(+Case, +PrimitiveFacts:list, -Abstract:list) is det.
 %
 %   Abstract is the sorted, duplicate-free list of qualitative literals that hold in the
-%   primitive state PrimitiveFacts of Case (hook or wedge).
+%   primitive state PrimitiveFacts of Case (a case of ontology/cases/, e.g. hook).
 %
+%   @error existence_error(case, Case) for a case no ontology file declares.
 %   @error type_error(list, F) if PrimitiveFacts is not a list;
 %          instantiation_error if a fact is not ground.
 %
@@ -52,30 +67,45 @@ facts are never asserted: they travel in the argument.
 %        in_tube(h, tube1)].          % standard order: arity first
 %   ==
 abstract_state(Case, Facts, Abstract) :-
-    must_be_oneof_([hook, wedge], Case),
+    must_be_case(Case),
     must_be(list, Facts),
     maplist(must_be(ground), Facts),
-    findall(L, derived_literal_(Case, structural_predicate, Facts, L), Structural),
-    findall(L, derived_literal_(Case, task_predicate, Facts, L), Task),
+    findall(L, structural_literal_(Case, Facts, L), Structural),
+    findall(L, task_literal_(Case, Facts, L), Task),
     findall(L, spatial_literal_(Case, Facts, L), Spatial),
     append([Structural, Task, Spatial], All),
     sort(All, Abstract).
 
-derived_literal_(Case, Kind, Facts, Literal) :-
-    Decl =.. [Kind, Case, N/A],
-    kb_clause(Decl, true),
+structural_literal_(Case, Facts, Literal) :-
+    case_holds(case_tool_class(Case, Class)),
+    kb_clause(structural_predicate(Class, N/A), true),
+    functor(Literal, N, A),
+    kb_prove(Literal, Facts).
+
+task_literal_(Case, Facts, Literal) :-
+    case_holds(task_predicate(Case, N/A)),
     functor(Literal, N, A),
     kb_prove(Literal, Facts).
 
 spatial_literal_(Case, Facts, Literal) :-
-    once(kb_clause(task_roles(Case, Target, Context), true)),
-    tool_in_use_(Case, Facts, Tool),
-    pose_numbers(Case, Tool, Facts, Pose),
+    case_roles(Case, Target, Context),
+    tools_in_use_(Case, Facts, Tools),
+    member(Tool, Tools),
     pose_geometry(Case, Tool, Target, Facts, Geometry),
+    relative_pose_(Case, Tool, Target, Facts, Geometry, Pose),
     spatial_templates_(Case, Templates),
     member(Template, Templates),
     role_literal_(Template, Tool, Target, Context, Literal),
     spatial_holds(Case, Literal, Pose, Geometry).
+
+%   The tools in use, each once, in the order the case's rules find them.
+tools_in_use_(Case, Facts, Tools) :-
+    findall(T, case_prove(tool_in_use(Case, T), Facts), Tools0),
+    list_to_set(Tools0, Tools).
+
+relative_pose_(Case, Tool, Target, Facts, Geometry, Pose) :-
+    findall(P, once(case_prove(relative_pose(Case, Tool, Target, Geometry, P), Facts)),
+            [Pose]).
 
 spatial_templates_(Case, Templates) :-
     findall(T, kb_clause(spatial_definition(Case, T, _, _), true), Ts),
@@ -90,54 +120,15 @@ role_object_(Tool, _, _, tool, Tool).
 role_object_(_, Target, _, target, Target).
 role_object_(_, _, Context, context, Context).
 
-tool_in_use_(hook, Facts, Tool) :-
-    member(held(Tool), Facts),
-    tip_in_tube_(Tool, Facts).
-tool_in_use_(wedge, Facts, Tool) :-
-    findall(T, member(held(T), Facts), Held),
-    findall(W, ( member(object_kind(W, block), Facts),
-                 \+ memberchk(W, Held),
-                 block_in_sweep_(W, Facts) ),
-            Placed),
-    append(Held, Placed, Tools),
-    member(Tool, Tools).
-
-%   The held tool's tip is inside the tube's inner box.
-tip_in_tube_(Tool, Facts) :-
-    memberchk(tube_mouth(Tube, MX, MY, MZ), Facts),
-    memberchk(tube_length_m(Tube, L), Facts),
-    memberchk(tube_inner_m(Tube, W, H), Facts),
-    memberchk(tip_position(Tool, X, Y, Z), Facts),
-    X >= MX,
-    X =< MX + L,
-    abs(Y - MY) =< W / 2,
-    abs(Z - MZ) =< H / 2.
-
-block_in_sweep_(W, Facts) :-
-    once(kb_clause(task_roles(wedge, Door, _), true)),
-    door_polar_(W, Door, Facts, R, Phi, A),
-    memberchk(door_width_m(Door, Width), Facts),
-    R =< Width,
-    Phi >= 0,
-    Phi =< A.
-
 %!  pose_numbers(+Case, +Tool, +PrimitiveFacts:list, -Pose) is semidet.
 %
 %   Pose is the pose of Tool relative to the task's target, computed from the
-%   primitive facts; fails if a needed fact is missing.
+%   primitive facts by the case's relative_pose/5; fails if a needed fact is missing.
 %
 %   Hook: hook_pose(Dx, Dy, Roll) with Dx = TipX - CubeX, Dy = TipY - CubeY (metres,
 %   from tip_position/4 and the cube's pose/5) and Roll from tool_roll/2 (radians,
-%   0 = prong down).
-%
-%   Wedge: wedge_pose(R, Gap, Yaw) from hinge/3, door_closed_heading/2, door_angle/2
-%   and the wedge's pose/5 and size/4 (or block_length_m/2): R is the distance from
-%   the hinge to the wedge's centre; Phi the heading of (wedge - hinge) relative to the
-%   closed door; Gap = R * (A - Phi) - length / 2 - door half thickness (0.02, from the
-%   ontology's geometry_default/4); Yaw the wedge's heading (its tip's direction, +x of
-%   the block frame) minus the heading from the wedge towards the closing door (the
-%   counter-clockwise tangent, Theta0 + Phi + pi/2), wrapped to (-pi, pi], so that
-%   0 = tip pointing at the door.
+%   0 = prong down).  Wedge: wedge_pose(R, Gap, Yaw) from the hinge, the door and the
+%   wedge's pose and size (ontology/cases/wedge.pl).
 %
 %   ==
 %   ?- pose_numbers(wedge, w, [hinge(door1, 0.0, 0.0), door_closed_heading(door1, 0.0),
@@ -146,35 +137,16 @@ block_in_sweep_(W, Facts) :-
 %   P = wedge_pose(0.6082762530298219, 0.10868210782431094, 0.004054995790476523).
 %   ==
 pose_numbers(Case, Tool, Facts, Pose) :-
-    must_be_oneof_([hook, wedge], Case),
+    case_roles(Case, Target, _),
     must_be(list, Facts),
-    pose_numbers_(Case, Tool, Facts, Pose).
-
-pose_numbers_(hook, Tool, Facts, hook_pose(Dx, Dy, Roll)) :-
-    once(kb_clause(task_roles(hook, Target, _), true)),
-    memberchk(tip_position(Tool, TX, TY, _), Facts),
-    memberchk(tool_roll(Tool, Roll), Facts),
-    memberchk(pose(Target, CX, CY, _, _), Facts),
-    Dx is TX - CX,
-    Dy is TY - CY.
-pose_numbers_(wedge, Tool, Facts, wedge_pose(R, Gap, Yaw)) :-
-    once(kb_clause(task_roles(wedge, Door, _), true)),
-    door_polar_(Tool, Door, Facts, R, Phi, A),
-    memberchk(door_closed_heading(Door, Theta0), Facts),
-    memberchk(pose(Tool, _, _, _, Heading), Facts),
-    pose_geometry(wedge, Tool, Door, Facts, Geometry),
-    memberchk(wedge_half=Half, Geometry),
-    memberchk(door_half_thickness=Thick, Geometry),
-    Gap is R * (A - Phi) - Half - Thick,
-    Towards is Theta0 + Phi + pi / 2,
-    wrap_angle_(Heading - Towards, Yaw).
+    pose_geometry(Case, Tool, Target, Facts, Geometry),
+    relative_pose_(Case, Tool, Target, Facts, Geometry, Pose).
 
 %!  pose_world(+Case, +Tool, +PrimitiveFacts:list, +Pose, -World) is semidet.
 %
-%   World is where the ground relative pose Pose (hook_pose/3 or wedge_pose/3, e.g.
-%   from geometry_clp:solve_pose/5) puts Tool in the world frame, the inverse of
-%   pose_numbers/4 in the current state PrimitiveFacts; fails if a needed fact is
-%   missing.
+%   World is where the ground relative pose Pose (e.g. from geometry_clp:solve_pose/5)
+%   puts Tool in the world frame, the inverse of pose_numbers/4 in the current state
+%   PrimitiveFacts, by the case's pose_target/5; fails if a needed fact is missing.
 %
 %   Hook: World = tip(X, Y, Roll), the prong centre's world X and Y (metres; its
 %   height is the skill's choice) and the roll (radians, 0 = prong down).
@@ -188,52 +160,9 @@ pose_numbers_(wedge, Tool, Facts, wedge_pose(R, Gap, Yaw)) :-
 %   W = tip(0.9400000000000001, -0.25, 0.0).
 %   ==
 pose_world(Case, Tool, Facts, Pose, World) :-
-    must_be_oneof_([hook, wedge], Case),
+    case_roles(Case, Target, _),
     must_be(list, Facts),
     must_be(ground, Pose),
-    pose_world_(Case, Tool, Facts, Pose, World).
-
-pose_world_(hook, _Tool, Facts, hook_pose(Dx, Dy, Roll), tip(X, Y, Roll)) :-
-    once(kb_clause(task_roles(hook, Target, _), true)),
-    memberchk(pose(Target, CX, CY, _, _), Facts),
-    X is CX + Dx,
-    Y is CY + Dy.
-pose_world_(wedge, Tool, Facts, wedge_pose(R, Gap, Yaw), place(X, Y, Heading)) :-
-    once(kb_clause(task_roles(wedge, Door, _), true)),
-    memberchk(hinge(Door, HX, HY), Facts),
-    memberchk(door_closed_heading(Door, Theta0), Facts),
-    memberchk(door_angle(Door, A), Facts),
-    R > 0,
-    pose_geometry(wedge, Tool, Door, Facts, Geometry),
-    memberchk(wedge_half=Half, Geometry),
-    memberchk(door_half_thickness=Thick, Geometry),
-    Phi is A - (Gap + Half + Thick) / R,
-    X is HX + R * cos(Theta0 + Phi),
-    Y is HY + R * sin(Theta0 + Phi),
-    wrap_angle_(Yaw + Theta0 + Phi + pi / 2, Heading).
-
-%   door_polar_(+W, +Door, +Facts, -R, -Phi, -A): W's centre in polar coordinates about
-%   the hinge, Phi relative to the closed door's heading, wrapped to (-pi, pi].
-door_polar_(W, Door, Facts, R, Phi, A) :-
-    memberchk(hinge(Door, HX, HY), Facts),
-    memberchk(door_closed_heading(Door, Theta0), Facts),
-    memberchk(door_angle(Door, A), Facts),
-    memberchk(pose(W, X, Y, _, _), Facts),
-    R is sqrt((X - HX)**2 + (Y - HY)**2),
-    wrap_angle_(atan2(Y - HY, X - HX) - Theta0, Phi).
-
-wrap_angle_(Expr, Wrapped) :-
-    A is Expr,
-    W0 is A - 2 * pi * floor((A + pi) / (2 * pi)),
-    (   W0 =< -pi
-    ->  Wrapped is W0 + 2 * pi
-    ;   Wrapped = W0
-    ).
-
-%   must_be_oneof_(+Values, +X): X is one of the atoms Values, else a domain error.
-must_be_oneof_(Values, X) :-
-    must_be(atom, X),
-    (   memberchk(X, Values)
-    ->  true
-    ;   domain_error(oneof(Values), X)
-    ).
+    pose_geometry(Case, Tool, Target, Facts, Geometry),
+    findall(W, once(case_prove(pose_target(Case, Pose, Target, Geometry, W), Facts)),
+            [World]).

@@ -7,7 +7,8 @@
             action_tool_model/2,        % +Model, -Tool
             tool_literal_kind/3,        % +Tool, +Literal, -Kind
             action_models_compile/2,    % +Models, -Compiled
-            action_objects/4            % +Models, +Literals, +Extra, -Objects
+            action_objects/4,           % +Models, +Literals, +Extra, -Objects
+            catalogued_object/2         % +Literal, -Object
           ]).
 
 /** <module> STRIPS action models: the robot's innate skills and learned tool actions
@@ -35,7 +36,16 @@ such changes of T's spatial literals; planning (planner.pl) and PDDL (pddl.pl) f
 the spatial literals some learned model's precondition needs
 (action_models_compile/2).
 
-The innate models (the robot's skills, given, not learned):
+The innate models (the robot's skills, given, not learned) are data of the ontology,
+asked through these hook predicates (case.pl says how a missing one is reported):
+
+  - case_skills(?Case, ?Names): the innate skills of Case, in plan order.
+  - innate_skill(?Case, ?Name, ?Model): the STRIPS model of a skill (a clause with an
+    unbound Case, like the robot's pick_up/1 in ontology/skills.pl, holds for every
+    case).
+  - case_goal(?Case, ?Goal): the goal literals of the case's task.
+
+For the two cases of the paper (ontology/cases/hook.pl, ontology/cases/wedge.pl):
 
   | case  | skill                        | pre                            | add / del |
   |-------|------------------------------|--------------------------------|-----------|
@@ -45,89 +55,60 @@ The innate models (the robot's skills, given, not learned):
   | wedge | place(W, D, Floor)           | holding(W), door_open(D)       | motion: spatial_of(W); +gripper_empty -holding(W) |
   | wedge | release_door(D)              | door_open(D)                   | none (the door's closing is the world's response) |
 
-Literals are classified relative to a tool (tool_literal_kind/3): *structural*
-(tool/1, hook_like/1, hook/1, stick/1, handle_length/2, handle_width/2, hook_length/2,
-hook_width/2, hook_side/2, hook_angle/2, object/1, block/1, shape/2, block_length/2,
-block_width/2, block_height/2, mechanical_advantage/2) and *spatial* (in_tube/2,
-behind/2, in_front/2, centred_on/2, hook_down/1, hook_flat/1, near/2, far/2,
-far_from_hinge/2, near_hinge/2, tip_towards/2, tip_away/2) when their first argument
-is the tool; *robot* (gripper_empty/0, holding/1, on_table/1);
-*catalogue* (the numeric facts object_kind/2, handle_length_m/2, handle_width_m/2,
-hook_length_m/2, hook_width_m/2, hook_side_is/2, hook_angle_deg/2, block_shape/2,
-block_length_m/2, block_width_m/2, block_height_m/2) when their first argument is the
-tool; anything else is *other* (task literals such as in_tube(cube1, tube1),
-door_held(door1)).
-The lists follow the shared vocabulary and ontology/tools_*.pl, ontology/spatial.pl.
+Literals are classified relative to a tool (tool_literal_kind/3) by the ontology, whatever
+the case: *structural* (structural_predicate(?Class, ?Name/Arity) of a tool class:
+tool/1, handle_length/2, shape/2, ...) and *spatial* (a spatial_definition/4 of some
+case: behind/2, hook_down/1, near/2, ...) when their first argument is the tool;
+*robot* (gripper_empty/0, holding/1, on_table/1, the robot's own state);
+*catalogue* (catalogue_predicate(?Class, ?Name/Arity): the numeric facts
+object_kind/2, handle_length_m/2, block_length_m/2, ...) when their first argument is
+the tool; anything else is *other* (task literals such as in_tube(cube1, tube1),
+door_held(door1)).  An object is *catalogued* (catalogued_object/2) when a literal of
+a hierarchy's root class (a class without a superclass in subclass_of/2: tool/1,
+object/1) names it.
 */
 
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
 :- use_module(library(error)).
+:- use_module(knowledge, [kb_clause/2]).
+:- use_module(case).
 
 %!  innate_action_models(+Case, -Models) is det.
 %
-%   Models is the list of the robot's innate action models for Case (`hook` or
-%   `wedge`), with fresh variables.
+%   Models is the list of the robot's innate action models for Case (a case of
+%   ontology/cases/), in the order of case_skills/2, with fresh variables.
 %
 %       ?- innate_action_models(hook, Ms), length(Ms, N).
 %       N = 3.
 %
-%   @error domain_error(case, Case) for another case.
+%   @error existence_error(case, Case) for a case no ontology file declares.
+%   @error existence_error(innate_skill(Case), Name) for a listed skill without a model.
 
 innate_action_models(Case, Models) :-
-    must_be(atom, Case),
-    (   case_skills_(Case, Names)
-    ->  maplist(innate_model_, Names, Models)
-    ;   domain_error(case, Case)
+    must_be_case(Case),
+    case_answer(case_skills(Case, Names)),
+    maplist(innate_model_(Case), Names, Models).
+
+innate_model_(Case, Name, Model) :-
+    (   case_answer(innate_skill(Case, Name, Model0))
+    ->  Model = Model0
+    ;   existence_error(innate_skill(Case), Name)
     ).
-
-case_skills_(hook, [pick_up, position_tool, pull]).
-case_skills_(wedge, [pick_up, place, release_door]).
-
-innate_model_(pick_up,
-              action_model(pick_up, [T-tool],
-                           [gripper_empty, on_table(T)],
-                           [holding(T)],
-                           [gripper_empty, on_table(T)])).
-innate_model_(position_tool,
-              action_model(position_tool, [T-tool, C-target, Tube-site],
-                           [holding(T), in_tube(C, Tube)],
-                           [spatial_of(T)],
-                           [spatial_of(T)])).
-innate_model_(pull,
-              action_model(pull, [T-tool, _C-target, Tube-site],
-                           [holding(T)],
-                           [],
-                           [in_tube(T, Tube), spatial_of(T)])).
-innate_model_(place,
-              action_model(place, [W-tool, D-target, _Floor-site],
-                           [holding(W), door_open(D)],
-                           [gripper_empty, spatial_of(W)],
-                           [holding(W), spatial_of(W)])).
-innate_model_(release_door,
-              action_model(release_door, [D-target],
-                           [door_open(D)],
-                           [],
-                           [])).
 
 %!  action_task_goal(+Case, -Goal) is det.
 %
-%   Goal is the list of literals the task of Case asks for (the world files' object
-%   names of the shared vocabulary).
+%   Goal is the list of literals the task of Case asks for (case_goal/2, the world
+%   files' object names).
 %
 %       ?- action_task_goal(wedge, G).
 %       G = [door_held(door1)].
+%
+%   @error existence_error(case, Case) for a case no ontology file declares.
 
 action_task_goal(Case, Goal) :-
-    must_be(atom, Case),
-    (   task_goal_(Case, Goal0)
-    ->  Goal = Goal0
-    ;   domain_error(case, Case)
-    ).
-
-task_goal_(hook, [out_of_tube(cube1, tube1)]).
-task_goal_(wedge, [door_held(door1)]).
+    case_answer(case_goal(Case, Goal)).
 
 %!  must_be_action_model(+Model) is det.
 %
@@ -242,48 +223,31 @@ robot_predicate_(gripper_empty/0).
 robot_predicate_(holding/1).
 robot_predicate_(on_table/1).
 
-structural_predicate_(tool/1).
-structural_predicate_(hook_like/1).
-structural_predicate_(hook/1).
-structural_predicate_(stick/1).
-structural_predicate_(handle_length/2).
-structural_predicate_(handle_width/2).
-structural_predicate_(hook_length/2).
-structural_predicate_(hook_width/2).
-structural_predicate_(hook_side/2).
-structural_predicate_(hook_angle/2).
-structural_predicate_(object/1).
-structural_predicate_(block/1).
-structural_predicate_(shape/2).
-structural_predicate_(block_length/2).
-structural_predicate_(block_width/2).
-structural_predicate_(block_height/2).
-structural_predicate_(mechanical_advantage/2).
+structural_predicate_(PI) :-
+    once(kb_clause(structural_predicate(_, PI), true)).
 
-catalogue_predicate_(object_kind/2).
-catalogue_predicate_(handle_length_m/2).
-catalogue_predicate_(handle_width_m/2).
-catalogue_predicate_(hook_length_m/2).
-catalogue_predicate_(hook_width_m/2).
-catalogue_predicate_(hook_side_is/2).
-catalogue_predicate_(hook_angle_deg/2).
-catalogue_predicate_(block_shape/2).
-catalogue_predicate_(block_length_m/2).
-catalogue_predicate_(block_width_m/2).
-catalogue_predicate_(block_height_m/2).
+catalogue_predicate_(PI) :-
+    once(kb_clause(catalogue_predicate(_, PI), true)).
 
-spatial_predicate_(in_tube/2).
-spatial_predicate_(behind/2).
-spatial_predicate_(in_front/2).
-spatial_predicate_(centred_on/2).
-spatial_predicate_(hook_down/1).
-spatial_predicate_(hook_flat/1).
-spatial_predicate_(near/2).
-spatial_predicate_(far/2).
-spatial_predicate_(far_from_hinge/2).
-spatial_predicate_(near_hinge/2).
-spatial_predicate_(tip_towards/2).
-spatial_predicate_(tip_away/2).
+spatial_predicate_(N/A) :-
+    functor(Template, N, A),
+    once(kb_clause(spatial_definition(_, Template, _, _), true)).
+
+%!  catalogued_object(+Literal, -Object) is semidet.
+%
+%   Literal is C(Object) with C the root class of a tool hierarchy (tool/1, object/1):
+%   Object is a catalogued object the robot may use.
+%
+%       ?- catalogued_object(tool(hook_a2), O).
+%       O = hook_a2.
+%       ?- catalogued_object(hook(hook_a2), O).
+%       false.
+
+catalogued_object(Literal, Object) :-
+    compound(Literal),
+    compound_name_arguments(Literal, Class, [Object]),
+    once(kb_clause(subclass_of(_, Class), true)),
+    \+ kb_clause(subclass_of(Class, _), true).
 
 %!  action_models_compile(+Models, -Compiled) is det.
 %
@@ -404,7 +368,8 @@ dedupe_([X|Xs], Ys) :-
 %
 %   Objects is the sorted list of Name-Type for every constant of the ground
 %   Literals, plus Extra (a list of Name-Type that wins over inference).  A constant
-%   is a `tool` if tool(X) or object(X) is among Literals; otherwise it takes the
+%   is a `tool` if it is catalogued (catalogued_object/2: tool(X) or object(X) is among
+%   Literals); otherwise it takes the
 %   type, other than `tool`, of a model parameter that occupies the same argument position of the same
 %   predicate in some model (precondition, add or delete list, models in order);
 %   otherwise it is a `value` (a qualitative value such as `medium`).
@@ -435,7 +400,9 @@ must_be_ground_literal_(L) :-
 
 constant_type_(Models, Literals, C, C-Type) :-
     must_be(atom, C),
-    (   ( memberchk(tool(C), Literals) ; memberchk(object(C), Literals) )
+    (   member(L, Literals),
+        catalogued_object(L, O),
+        O == C
     ->  Type = tool
     ;   member(M, Models),
         M = action_model(_, Params, Pre, Add, Del),

@@ -26,6 +26,18 @@ Order of the candidates (creation_candidates/3):
      learning) come after the others, which keep the ontology's order. This is where we depart from
      the paper, which tried the short wedge before the long one: the failure already
      told us which way to go.
+
+A new tool keeps only the properties of its class: when the replaced literal is a
+class literal (hook(T) -> stick(T)), the structural literals of properties that neither
+the new class nor its superclasses have (class_property/2: the prong's hook_length/2,
+...) leave it.  The kind it is sized as comes from the case's tool class through these
+hook predicates (case.pl says how a missing one is reported):
+
+  - case_tool_class(?Case, ?Class): the hierarchy of the case's tools (hook_like,
+    block).
+  - new_tool_kind(?Class, +Structural, -Kind): the size kind (geometry_clp:solve_size/4)
+    of a new tool with the structural literals Structural (hook_like: stick when
+    stick(T) is among them, else hook).
 */
 
 :- use_module(library(lists)).
@@ -38,6 +50,7 @@ Order of the candidates (creation_candidates/3):
 :- use_module(geometry_clp).
 :- use_module(experiment).
 :- use_module(knowledge, [kb_clause/2]).
+:- use_module(case).
 
 %!  creation_candidates(+VS, +Options, -Candidates) is det.
 %
@@ -75,18 +88,31 @@ creation_candidates(VS, Options, Candidates) :-
     keysort(Keyed, Sorted),
     pairs_values(Sorted, Candidates).
 
-%   A stick has no prong: when the kind is replaced by stick(T), the prong's properties
+%   A new tool keeps only the properties of its class: when Alt is a class literal
+%   (stick(T)), the literals of properties that only other classes have (the prong's)
 %   leave the new tool's structural literals.
 kind_literals_(Alt, Struct0, Struct) :-
-    (   Alt = stick(_)
-    ->  exclude(prong_literal_, Struct0, Struct)
+    (   compound(Alt),
+        compound_name_arity(Alt, Class, 1),
+        kb_clause(subclass_of(Class, _), true)
+    ->  exclude(foreign_property_(Class), Struct0, Struct)
     ;   Struct = Struct0
     ).
 
-prong_literal_(hook_length(_, _)).
-prong_literal_(hook_width(_, _)).
-prong_literal_(hook_side(_, _)).
-prong_literal_(hook_angle(_, _)).
+%   L is P(T, V) with P a property of some class that is neither Class nor above it.
+foreign_property_(Class, L) :-
+    compound(L),
+    compound_name_arity(L, P, 2),
+    kb_clause(class_property(Owner, P), true),
+    \+ is_a_(Class, Owner),
+    !.
+
+%   is_a_(+Class, +Super): Class is Super or below it.
+is_a_(C, C) :- !.
+is_a_(C, Super) :-
+    kb_clause(subclass_of(C, C1), true),
+    is_a_(C1, Super),
+    !.
 
 %   The position of a replacement operator in the ontology: properties are tried in
 %   the order the ontology lists its operators.
@@ -112,14 +138,13 @@ replace_eq_([X|Xs], L, Alt, [Y|Ys]) :-
     ),
     replace_eq_(Xs, L, Alt, Ys).
 
-%   The kind of tool solve_size/4 sizes: a hook case tool is a stick when its
-%   structural literals say so.
-size_kind_(hook, Struct, Kind) :-
-    (   member(L, Struct), L = stick(_)
-    ->  Kind = stick
-    ;   Kind = hook
+%   The kind of tool solve_size/4 sizes, from the case's tool class.
+size_kind_(Case, Struct, Kind) :-
+    case_answer(case_tool_class(Case, Class)),
+    (   class_answer(new_tool_kind(Class, Struct, Kind0))
+    ->  Kind = Kind0
+    ;   domain_error(new_tool_kind(Class), Struct)
     ).
-size_kind_(wedge, _, block).
 
 %   A negative example refutes Alt if the only literal of h_s it violates is L and its
 %   body contains Alt (for its own tool).

@@ -32,6 +32,19 @@ Roles of literals (literal_role/3), relative to the head tool_pose(Tool, Target,
   - spatial: a literal with a spatial definition in the ontology (geometry_clp);
   - structural: mentions Tool and neither Target nor Ctx;
   - task: does not mention Tool (e.g. in_tube(cube1, tube1)).
+
+The case's knowledge comes through these hook predicates of the ontology (case.pl says
+how a missing one is reported), besides those of action_model.pl and abstract_state.pl:
+
+  - untestable_literals(?Case, ?Patterns): spatial literals that are preconditions of
+    the motion rather than pose choices, never tested (the hook: in_tube(_, _), the
+    hook is always used inside the tube).
+  - tool_acts_when(?Case, ?When): `held` if the tool acts in the robot's hand (the
+    hook), `placed` if it acts once put down (the wedge: the spatial literals of a tool
+    still in the gripper are left out of observed states).
+  - learned_action_names(?Case, ?Names): name(Skill, Effect, Name) terms naming the
+    action learned from the demonstration (observe:observe_demonstration/4's
+    action_names/1 option).
 */
 
 :- use_module(library(lists)).
@@ -45,11 +58,7 @@ Roles of literals (literal_role/3), relative to the head tool_pose(Tool, Target,
 :- use_module(abstract_state).
 :- use_module(observe).
 :- use_module(action_model).
-
-%   Spatial literals that are preconditions of the motion rather than pose choices: the
-%   hook is always used inside the tube, so in_tube/2 of the tool is never tested by
-%   placing the tool outside it.
-untestable_(hook, in_tube(_, _)).
+:- use_module(case).
 
 %!  learn_from_demonstration(+Case, +Steps, -Result) is det.
 %
@@ -64,7 +73,8 @@ learn_from_demonstration(Case, Steps, Result) :-
     maplist(abstract_step_(Case), Steps, AbstractSteps),
     innate_action_models(Case, Models),
     action_task_goal(Case, Goal),
-    observe_demonstration(AbstractSteps, Models, [goal(Goal)], Result).
+    case_answer(learned_action_names(Case, Names)),
+    observe_demonstration(AbstractSteps, Models, [goal(Goal), action_names(Names)], Result).
 
 abstract_step_(Case, step(Skill, Args, P0, P1), step(Skill, Args, S0, S1)) :-
     observed_state(Case, P0, S0),
@@ -75,13 +85,16 @@ abstract_step_(Case, step(Skill, Args, P0, P1), step(Skill, Args, S0, S1)) :-
 %   The abstract state of the primitive facts (abstract_state/3) plus the robot-state
 %   literals the innate models speak of: holding(T) for a held tool (held/1 fact),
 %   gripper_empty when nothing is held, and on_table(O) for every catalogued object
-%   that is neither held nor placed (no spatial literal relates it to a target). In
-%   the wedge case the spatial literals speak of a block resting on the floor, so those
-%   of a block still in the gripper are left out.
+%   that is neither held nor placed (no spatial literal relates it to a target). In a
+%   case whose tool acts once placed (tool_acts_when(Case, placed): the wedge) the
+%   spatial literals speak of a tool put down, so those of a tool still in the gripper
+%   are left out.
 
 observed_state(Case, Primitive, State) :-
     abstract_state(Case, Primitive, Abstract0),
-    (   Case == wedge
+    case_answer(tool_acts_when(Case, When)),
+    must_be(oneof([held, placed]), When),
+    (   When == placed
     ->  exclude(held_spatial_(Primitive), Abstract0, Abstract)
     ;   Abstract = Abstract0
     ),
@@ -110,15 +123,10 @@ held_spatial_(Primitive, L) :-
 
 catalogued_(Abstract, O) :-
     member(L, Abstract),
-    (   L = tool(O)
-    ;   L = object(O)
-    ).
+    catalogued_object(L, O).
 
 spatial_any_(L) :-
-    (   geometry_clp:spatial_literal(hook, L)
-    ->  true
-    ;   geometry_clp:spatial_literal(wedge, L)
-    ).
+    geometry_clp:spatial_literal(L).
 
 %!  task_objects(+Case, +State, -Objects) is det.
 %
@@ -268,8 +276,9 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
     Head =.. [_, _Tool, Target, Ctx],
     unknown_literals_(HS, HG, Unknown),
     hypothesis_parts(HS, _Struct, Spatial, Task),
+    case_answer(untestable_literals(Case, Untestable)),
     findall(Score-cand(L, O, Req, Neg, Viol),
-            candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
+            candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
                        L, O, Req, Neg, Viol, Score),
             Scored),
     option(skip(Skip), Options, []),
@@ -281,13 +290,13 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
     ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
     ).
 
-candidate_(Case, HS, HG, Head, Unknown, Spatial, Task, Objects,
+candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
            L, O, Req, Neg, Viol, Score) :-
     objects_as_planned_(HS, HG, Head, Spatial, Task, Objects, Planned),
     nth1(Index, Unknown, L0),
     literal_role(Head, L0, Role),
     Role \== task,
-    \+ untestable_(Case, L0),
+    \+ ( member(Pattern, Untestable), Pattern = L0 ),
     member(planned(O, HeadC, SpatialC, Viol0), Planned),
     copy_term(Head-L0, HeadC-L),
     (   Role == spatial

@@ -1,5 +1,6 @@
 :- module(geometry_clp,
           [ spatial_literal/2,        % +Case, +Literal
+            spatial_literal/1,        % +Literal
             pose_geometry/5,          % +Case, +Tool, +Target, +Facts, -Geometry
             spatial_holds/4,          % +Case, +Literal, +Pose, +Geometry
             pose_constraints/5,       % +Case, +Required, +Negated, +Context, -Pose
@@ -25,10 +26,43 @@ constraints and a *search* that picks values:
     (creative_py/mesh/spec.py).  size_constraints/4 posts, size_search/2 labels,
     solve_size/4 does both.
 
-The definitions are data of the knowledge base (module knowledge): spatial_definition/4,
-pose_domain/3, geometry_default/4, qualitative_range/5, size_field/3, size_choice/4,
-size_parameter/3.  Metres are CLP(R) variables; the hook angle is a CLP(FD) integer
-(whole degrees).
+The definitions are data of the knowledge base (module knowledge), asked through these
+hook predicates (case.pl says how a missing one is reported):
+
+  - spatial_definition(?Case, ?Literal, ?PoseTerm, ?Constraints): Literal (its
+    arguments the roles tool, target, context) holds when every linear comparison of
+    Constraints holds for the numbers of PoseTerm; several clauses are alternatives.
+    Right-hand sides may name geometry parameters.
+  - pose_domain(?Case, ?PoseTerm, ?Constraints): where a pose can be at all, posted
+    under every query (never named in a conflict).
+  - geometry_default(?Case, ?Name, ?Value, ?Meaning): the geometry parameters, in the
+    order they are computed, with the values used when the state does not give them.
+  - geometry_value(?Case, ?Name, ?Tool, ?Target, +Geometry, -Value), proved on the
+    state (knowledge:kb_prove/2), optional: the parameter Name from the facts; Geometry
+    holds the parameters listed before it.
+  - task_roles/3 (case.pl), task_predicate/2 (abstract_state.pl): the default target,
+    and the task literals a size query ignores.
+
+and for the size model, keyed by the kind of the new tool (ontology/kinds/):
+
+  - qualitative_range(?Property, ?Value, ?Low, ?High, ?Bounds) (ontology/ranges.pl);
+  - size_field(?Kind, ?Field, ?Property): a number field and the property it carries;
+  - size_choice(?Kind, ?Field, ?Property, ?Values): a symbolic field, its values in
+    the order tried; size_choice_constraint(?Field, ?Value, ?Constraints) what a value
+    adds (a cylinder: width =:= length);
+  - size_fixed(?Kind, ?Field, ?Value): a field the kind does not size;
+  - size_integer_field(?Field): a field in whole units (CLP(FD));
+  - size_ratio(?Kind, ?Property, ?Numerator, ?Denominator): a property that bounds a
+    ratio of two fields;
+  - size_constraint(?Kind, ?ContextFact, ?Constraints): what a fact of the sizing
+    context asks of a new tool of Kind, linear comparisons over field names,
+    size_parameter/3 names and the fact's numbers;
+  - size_parameter(?Name, ?Value, ?Meaning): a margin, overridden by a context fact
+    Name(Value);
+  - subclass_of(?Class, ?Super) and structural_predicate(?Class, ?Name/1): a class
+    literal C(T) agrees with the kinds that are C or below it.
+
+Metres are CLP(R) variables; angles in whole degrees are CLP(FD) integers.
 
 **Search.** Each variable in turn, in the order of the pose or dims term, is bound to
 the midpoint of its current interval (clpr inf/2 and sup/2, clpfd fd_inf/2 and
@@ -59,6 +93,7 @@ qualitative ranges) are always posted and never named.
 :- use_module(library(clpfd), [ (#>=)/2, (#=<)/2, (#>)/2, (#<)/2, (#=)/2,
                                 fd_inf/2, fd_sup/2, op(_, _, _) ]).
 :- use_module(knowledge).
+:- use_module(case).
 
                  /*******************************
                  *     SPATIAL DEFINITIONS      *
@@ -66,26 +101,41 @@ qualitative ranges) are always posted and never named.
 
 %!  spatial_literal(+Case, +Literal) is semidet.
 %
-%   Literal is a spatial literal of Case (hook or wedge): the ontology defines it over
-%   the case's pose numbers.
+%   Literal is a spatial literal of Case: the case's ontology defines it over the
+%   case's pose numbers (spatial_definition/4).
 %
 %   ==
 %   ?- spatial_literal(hook, behind(hook_a2, cube1)).
 %   true.
 %   ==
 spatial_literal(Case, Literal) :-
-    must_be_oneof_([hook, wedge], Case),
+    must_be_case(Case),
     must_be(callable, Literal),
     functor(Literal, N, A),
     functor(Template, N, A),
     once(kb_clause(spatial_definition(Case, Template, _, _), true)).
 
+%!  spatial_literal(+Literal) is semidet.
+%
+%   Literal is a spatial literal of some case.
+%
+%   ==
+%   ?- spatial_literal(near(wedge_a2, door1)).
+%   true.
+%   ==
+spatial_literal(Literal) :-
+    callable(Literal),
+    functor(Literal, N, A),
+    functor(Template, N, A),
+    once(kb_clause(spatial_definition(_, Template, _, _), true)).
+
 %!  pose_geometry(+Case, +Tool, +Target, +Facts:list, -Geometry:list) is det.
 %
 %   Geometry lists Name=Value for every geometry parameter of Case
-%   (ontology/spatial.pl, geometry_default/4), taken from the primitive facts Facts
-%   where they say it, else the default.  Tool and Target may be unbound (then only
-%   facts naming no tool or target are used).
+%   (geometry_default/4), in the order the case lists them, each taken from the
+%   primitive facts Facts by the case's geometry_value/6 rule where it has one that
+%   succeeds, else the default.  Tool and Target may be unbound (then only facts naming
+%   no tool or target are used).
 %
 %   Hook: cube_half from size(Target, Sx, _, _); prong_half from hook_width_m(Tool, W)
 %   (a stick: handle_width_m); handle_half from handle_width_m(Tool, W);
@@ -100,77 +150,28 @@ spatial_literal(Case, Literal) :-
 %   C = 0.02.
 %   ==
 pose_geometry(Case, Tool, Target, Facts, Geometry) :-
-    must_be_oneof_([hook, wedge], Case),
     must_be(list, Facts),
-    findall(Name=Value,
-            ( kb_clause(geometry_default(Case, Name, Default, _), true),
-              Value0 = Default,
-              geometry_value_(Case, Name, Tool, Target, Facts, Value0, Value)
-            ),
-            Geometry0),
-    derived_geometry_(Case, Tool, Target, Facts, Geometry0, Geometry).
-
-geometry_value_(hook, cube_half, _, Target, Facts, _, V) :-
-    nonvar(Target),
-    memberchk(size(Target, Sx, _, _), Facts),
-    !,
-    V is Sx / 2.
-geometry_value_(hook, prong_half, Tool, _, Facts, _, V) :-
-    nonvar(Tool),
-    (   memberchk(hook_width_m(Tool, W), Facts)
-    ->  true
-    ;   memberchk(handle_width_m(Tool, W), Facts)
+    findall(Name-Default,
+            case_holds(geometry_default(Case, Name, Default, _)),
+            Defaults),
+    (   current_predicate(kb:geometry_value/6)
+    ->  Rules = true
+    ;   Rules = false
     ),
-    !,
-    V is W / 2.
-geometry_value_(hook, handle_half, Tool, _, Facts, _, V) :-
-    nonvar(Tool),
-    memberchk(handle_width_m(Tool, W), Facts),
-    !,
-    V is W / 2.
-geometry_value_(hook, tube_length, _, _, Facts, _, L) :-
-    memberchk(tube_length_m(_, L), Facts),
-    !.
-geometry_value_(wedge, door_width, _, Target, Facts, _, W) :-
-    memberchk(door_width_m(Target, W), Facts),
-    !.
-geometry_value_(wedge, door_angle, _, Target, Facts, _, A) :-
-    memberchk(door_angle(Target, A), Facts),
-    !.
-geometry_value_(wedge, wedge_half, Tool, _, Facts, _, V) :-
-    nonvar(Tool),
-    (   memberchk(size(Tool, Sx, _, _), Facts)
-    ->  true
-    ;   memberchk(block_length_m(Tool, Sx), Facts)
-    ),
-    !,
-    V is Sx / 2.
-geometry_value_(_, _, _, _, _, V, V).
+    foldl(geometry_param_(Rules, Case, Tool, Target, Facts), Defaults, [], Reversed),
+    reverse(Reversed, Geometry).
 
-%   The tube bounds depend on the other parameters: computed after them.
-derived_geometry_(hook, _Tool, Target, Facts, G0, G) :-
-    nonvar(Target),
-    memberchk(tube_mouth(Tube, MX, MY, _), Facts),
-    memberchk(tube_length_m(Tube, L), Facts),
-    memberchk(pose(Target, CX, CY, _, _), Facts),
-    !,
-    memberchk(prong_half=PH, G0),
-    memberchk(handle_half=HH, G0),
-    memberchk(clearance=C, G0),
-    DxMax is MX + L - CX - PH,
-    DxMin is MX - CX + PH,
-    (   memberchk(tube_inner_m(Tube, W, _), Facts)
-    ->  Room is W / 2 - HH - C,
-        DyMax is MY - CY + Room,
-        DyMin is MY - CY - Room,
-        Set = [dx_max=DxMax, dx_min=DxMin, dy_max=DyMax, dy_min=DyMin]
-    ;   Set = [dx_max=DxMax, dx_min=DxMin]
-    ),
-    foldl(set_param_, Set, G0, G).
-derived_geometry_(_, _, _, _, G, G).
-
-set_param_(Name=Value, G0, G) :-
-    selectchk(Name=_, G0, Name=Value, G).
+%   geometry_param_(+Rules, +Case, +Tool, +Target, +Facts, +Name-Default, +G0, -G): G0
+%   holds the parameters computed so far, last first.
+geometry_param_(Rules, Case, Tool, Target, Facts, Name-Default, G0, [Name=Value|G0]) :-
+    reverse(G0, Before),
+    (   Rules == true,
+        findall(V, once(kb_prove(geometry_value(Case, Name, Tool, Target, Before, V),
+                                 Facts)),
+                [V1])
+    ->  Value = V1
+    ;   Value = Default
+    ).
 
 %!  spatial_holds(+Case, +Literal, +Pose, +Geometry) is semidet.
 %
@@ -208,14 +209,16 @@ definition_clauses_(Case, Literal, Pose, Clauses) :-
 
 pose_clause_(Pose, Pose-Cs, Cs).
 
-%   instantiate_(+Comparison, +Geometry, -Numeric): geometry parameter names replaced
-%   by their values, ground subexpressions evaluated.
-instantiate_(Comparison, Geometry, Numeric) :-
+%   instantiate_(+Comparison, +Env, -Numeric): parameter names replaced by their
+%   values, ground subexpressions evaluated.  Env is a pose geometry (a list
+%   Name=Value) or size(Dims, Context) (field names to their variables, then size
+%   parameters).
+instantiate_(Comparison, Env, Numeric) :-
     Comparison =.. [Op, L0, R0],
     comparison_(Op),
     !,
-    expr_(L0, Geometry, L),
-    expr_(R0, Geometry, R),
+    expr_(L0, Env, L),
+    expr_(R0, Env, R),
     Numeric =.. [Op, L, R].
 instantiate_(Comparison, _, _) :-
     domain_error(linear_comparison, Comparison).
@@ -224,6 +227,7 @@ comparison_(>=).
 comparison_(=<).
 comparison_(>).
 comparison_(<).
+comparison_(=:=).
 
 expr_(V, _, V) :-
     var(V),
@@ -231,19 +235,14 @@ expr_(V, _, V) :-
 expr_(N, _, N) :-
     number(N),
     !.
-expr_(A, Geometry, V) :-
+expr_(A, Env, V) :-
     atom(A),
     !,
-    (   memberchk(A=V, Geometry)
-    ->  true
-    ;   A == pi
-    ->  V is pi
-    ;   existence_error(geometry_parameter, A)
-    ).
-expr_(E0, Geometry, E) :-
+    env_value_(Env, A, V).
+expr_(E0, Env, E) :-
     compound(E0),
     E0 =.. [F|Args0],
-    exprs_(Args0, Geometry, Args),
+    exprs_(Args0, Env, Args),
     E1 =.. [F|Args],
     (   ground(E1)
     ->  E is E1
@@ -251,9 +250,25 @@ expr_(E0, Geometry, E) :-
     ).
 
 exprs_([], _, []).
-exprs_([E0|Es0], Geometry, [E|Es]) :-
-    expr_(E0, Geometry, E),
-    exprs_(Es0, Geometry, Es).
+exprs_([E0|Es0], Env, [E|Es]) :-
+    expr_(E0, Env, E),
+    exprs_(Es0, Env, Es).
+
+env_value_(size(Dims, Context), A, V) :-
+    !,
+    (   memberchk(A=V0, Dims)
+    ->  V = V0
+    ;   A == pi
+    ->  V is pi
+    ;   size_parameter_(A, Context, V)
+    ).
+env_value_(Geometry, A, V) :-
+    (   memberchk(A=V0, Geometry)
+    ->  V = V0
+    ;   A == pi
+    ->  V is pi
+    ;   existence_error(geometry_parameter, A)
+    ).
 
 negate_(>=, <).
 negate_(=<, >).
@@ -283,21 +298,20 @@ negate_(<, >=).
 %   I = 0.025.
 %   ==
 pose_constraints(Case, Required, Negated, Context, Pose) :-
-    must_be_oneof_([hook, wedge], Case),
+    must_be_case(Case),
     must_be(list, Required),
     must_be(list, Negated),
     must_be(list, Context),
     append(Required, Negated, All),
     roles_(Case, All, Tool, Target),
     pose_geometry(Case, Tool, Target, Context, Geometry),
-    kb_clause(pose_domain(Case, Pose, Domain), true),
-    !,
+    case_answer(pose_domain(Case, Pose, Domain)),
     post_all_(Domain, Geometry),
     maplist(post_required_(Case, Pose, Geometry), Required),
     maplist(post_negated_(Case, Pose, Geometry), Negated).
 
 roles_(Case, Literals, Tool, Target) :-
-    once(kb_clause(task_roles(Case, Target0, _), true)),
+    case_roles(Case, Target0, _),
     (   member(L, Literals),
         literal_role_(Case, L, tool, Tool0)
     ->  Tool = Tool0
@@ -437,26 +451,30 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 
 %!  size_constraints(+Kind, +Literals:list, +Context:list, -Dims:list) is semidet.
 %
-%   Dims lists Field=Value for the spec fields of a new tool of Kind (hook, stick or
-%   block), Value a constrained variable or a fixed value, such that the structural
-%   Literals hold and the tool suits the task Context.  Fails if they cannot.
+%   Dims lists Field=Value for the spec fields of a new tool of Kind (a kind with
+%   size_field/3 facts: hook, stick, block), Value a constrained variable or a fixed
+%   value, such that the structural Literals hold and the tool suits the task Context.
+%   Fails if they cannot.  Dims holds the number fields (size_field/3), then the
+%   symbolic ones (size_choice/4, unbound if no literal fixes them), then the fixed
+%   ones (size_fixed/3), each in the ontology's order.
 %
 %   Fields: hook: handle_length, handle_width, hook_length, hook_width (CLP(R), metres),
-%   hook_angle_deg (CLP(FD), whole degrees), hook_side (left or right, unbound if no
-%   literal fixes it).  stick: handle_length, handle_width; hook_length = 0.0,
-%   hook_width = 0.0, hook_side = none, hook_angle_deg = 90.  block: length, width,
-%   height (metres), shape (unbound if no literal fixes it).
+%   hook_angle_deg (CLP(FD), whole degrees), hook_side (left or right).  stick:
+%   handle_length, handle_width; hook_length = 0.0, hook_width = 0.0, hook_side = none,
+%   hook_angle_deg = 90.  block: length, width, height (metres), shape.
 %
 %   Structural literals: those of the ontology (handle_length(T, long), hook_side(T,
 %   left), shape(W, box), mechanical_advantage(W, above_one), ...); class literals
-%   (tool/1, hook_like/1, hook/1, stick/1, object/1, block/1) must agree with Kind;
-%   spatial and task literals are ignored.  Context facts used (others are ignored):
+%   (unary structural literals: tool/1, hook_like/1, hook/1, stick/1, object/1, block/1)
+%   must agree with Kind (Kind is the class or below it); spatial and task literals are
+%   ignored.  Context facts are posted by the ontology's size_constraint/3 for Kind
+%   (others are ignored), for example:
 %
-%     - tube_length_m(Tube, L): handle_length >= L + reach margin (reach_margin_m,
-%       0.05 m unless a reach_margin_m(M) fact says otherwise), so that the prong
-%       reaches behind a cube at the tube's far end with the gripper outside.
-%     - tube_inner_m(Tube, W, H): handle_width + hook_length + clearance =< min(W, H)
-%       (tube_clearance_m, 0.005 m): the tool turns inside the tube.
+%     - tube_length_m(Tube, L): handle_length >= L + reach_margin_m (0.05 m unless a
+%       reach_margin_m(M) fact says otherwise), so that the prong reaches behind a cube
+%       at the tube's far end with the gripper outside.
+%     - tube_inner_m(Tube, W, H): handle_width + hook_length =< min(W, H) -
+%       tube_clearance_m (0.005 m): the tool turns inside the tube.
 %     - max_tool_length(M): handle_length =< M (block: length and width =< M).
 %     - door_gap_m(Door, G): height > G (the wedge must reach under the door).
 %     - min_wall_m(M): every solid dimension >= M (printable).
@@ -464,6 +482,7 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 %   A literal of a property that Kind does not have (hook_length/2 for a block) makes
 %   the spec infeasible.
 %
+%   @error domain_error(oneof(Kinds), Kind) for a kind without size fields.
 %   @error domain_error(structural_literal(Kind), L) for an unknown literal or value.
 %
 %   ==
@@ -473,11 +492,20 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 %   I = 0.5.
 %   ==
 size_constraints(Kind, Literals, Context, Dims) :-
-    must_be_oneof_([hook, stick, block], Kind),
+    must_be_size_kind_(Kind),
     must_be(list, Literals),
     must_be(list, Context),
     size_items_(Kind, Literals, Context, Items),
     size_model_(Kind, Context, Items, Dims).
+
+must_be_size_kind_(Kind) :-
+    must_be(atom, Kind),
+    (   kb_clause(size_field(Kind, _, _), true)
+    ->  true
+    ;   findall(K, kb_clause(size_field(K, _, _), true), Ks0),
+        list_to_set(Ks0, Ks),
+        domain_error(oneof(Ks), Kind)
+    ).
 
 size_items_(Kind, Literals, Context, Items) :-
     foldl(literal_item_(Kind), Literals, Items, Items1),
@@ -492,8 +520,7 @@ literal_item_(Kind, L, Items0, Items) :-
     ).
 
 ignored_literal_(L) :-
-    (   spatial_literal(hook, L)
-    ;   spatial_literal(wedge, L)
+    (   spatial_literal(L)
     ;   functor(L, N, A),
         kb_clause(task_predicate(_, N/A), true)
     ),
@@ -510,19 +537,33 @@ check_structural_(Kind, L) :-
             memberchk(V, Vs)
         )
     ->  true
-    ;   L =.. [mechanical_advantage, _, V],
+    ;   L =.. [P, _, V],
+        kb_clause(size_ratio(_, P, _, _), true),
         nonvar(V),
-        kb_clause(qualitative_range(mechanical_advantage, V, _, _, _), true)
+        kb_clause(qualitative_range(P, V, _, _, _), true)
     ->  true
     ;   domain_error(structural_literal(Kind), L)
     ).
 
-class_literal_(tool(_), [hook, stick]).
-class_literal_(hook_like(_), [hook, stick]).
-class_literal_(hook(_), [hook]).
-class_literal_(stick(_), [stick]).
-class_literal_(object(_), [block]).
-class_literal_(block(_), [block]).
+%   class_literal_(+L, -Kinds): L is a class literal C(T) (a unary structural
+%   literal); Kinds are the size kinds that are C or below it in the hierarchy.
+class_literal_(L, Kinds) :-
+    compound(L),
+    compound_name_arity(L, C, 1),
+    once(kb_clause(structural_predicate(_, C/1), true)),
+    findall(K, ( size_kind_(K), is_a_(K, C) ), Kinds).
+
+size_kind_(Kind) :-
+    findall(K, kb_clause(size_field(K, _, _), true), Ks),
+    list_to_set(Ks, Kinds),
+    member(Kind, Kinds).
+
+%   is_a_(+Class, +Super): Class is Super or below it.
+is_a_(C, C) :- !.
+is_a_(C, Super) :-
+    kb_clause(subclass_of(C, C1), true),
+    is_a_(C1, Super),
+    !.
 
 %   P is a property some kind of tool has a spec field for.
 property_field_(P) :-
@@ -531,29 +572,20 @@ property_field_(P) :-
     ),
     !.
 
-context_item_(hook, tube_length_m(_, _)).
-context_item_(hook, tube_inner_m(_, _, _)).
-context_item_(stick, tube_length_m(_, _)).
-context_item_(stick, tube_inner_m(_, _, _)).
-context_item_(_, max_tool_length(_)).
-context_item_(block, door_gap_m(_, _)).
-context_item_(_, min_wall_m(_)).
+context_item_(Kind, F) :-
+    once(kb_clause(size_constraint(Kind, F, _), true)).
 
 %   size_model_(+Kind, +Context, +Items, -Dims): post the property domains and every item.
 size_model_(Kind, Context, Items, Dims) :-
     findall(F-P, kb_clause(size_field(Kind, F, P), true), FieldProps),
     maplist(field_var_, FieldProps, NumDims),
     findall(F=_, kb_clause(size_choice(Kind, F, _, _), true), ChoiceDims),
-    fixed_fields_(Kind, Fixed),
+    findall(F=V, kb_clause(size_fixed(Kind, F, V), true), Fixed),
     append([NumDims, ChoiceDims, Fixed], Dims),
     maplist(post_domain_(FieldProps, Dims), FieldProps),
     maplist(post_size_item_(Kind, Context, Dims), Items).
 
 field_var_(F-_, F=_).
-
-fixed_fields_(stick, [hook_length=0.0, hook_width=0.0, hook_side=none, hook_angle_deg=90]).
-fixed_fields_(hook, []).
-fixed_fields_(block, []).
 
 %   The domain of a field: the union of its property's qualitative ranges.
 post_domain_(_, Dims, F-P) :-
@@ -568,7 +600,9 @@ post_domain_(_, Dims, F-P) :-
     ;   {V >= Min, V =< Max}
     ).
 
-integer_field_(hook_angle_deg).
+integer_field_(F) :-
+    kb_clause(size_integer_field(F), true),
+    !.
 
 post_size_item_(Kind, _, _, lit(L)) :-
     class_literal_(L, Kinds),
@@ -579,12 +613,14 @@ post_size_item_(Kind, _, Dims, lit(L)) :-
     kb_clause(size_choice(Kind, F, P, _), true),
     !,
     memberchk(F=Value, Dims).
-post_size_item_(block, _, Dims, lit(mechanical_advantage(_, Value))) :-
+post_size_item_(Kind, _, Dims, lit(L)) :-
+    L =.. [P, _, Value],
+    kb_clause(size_ratio(Kind, P, NumField, DenField), true),
     !,
-    kb_clause(qualitative_range(mechanical_advantage, Value, Lo, Hi, Bounds), true),
-    memberchk(length=L, Dims),
-    memberchk(height=H, Dims),
-    range_constraint_(Bounds, L, Lo * H, Hi * H).
+    kb_clause(qualitative_range(P, Value, Lo, Hi, Bounds), true),
+    memberchk(NumField=N, Dims),
+    memberchk(DenField=D, Dims),
+    range_constraint_(Bounds, N, Lo * D, Hi * D).
 post_size_item_(Kind, _, Dims, lit(L)) :-
     L =.. [P, _, Value],
     kb_clause(size_field(Kind, F, P), true),
@@ -598,48 +634,10 @@ post_size_item_(Kind, _, Dims, lit(L)) :-
 post_size_item_(_, _, _, lit(_)) :-
     !,
     fail.
-post_size_item_(Kind, Context, Dims, ctx(tube_length_m(_, Length))) :-
-    !,
-    size_parameter_(reach_margin_m, Context, Margin),
-    (   memberchk(Kind, [hook, stick])
-    ->  memberchk(handle_length=HL, Dims),
-        {HL >= Length + Margin}
-    ;   true
-    ).
-post_size_item_(Kind, Context, Dims, ctx(tube_inner_m(_, W, H))) :-
-    !,
-    size_parameter_(tube_clearance_m, Context, C),
-    Free is min(W, H) - C,
-    memberchk(handle_width=HW, Dims),
-    (   Kind == hook
-    ->  memberchk(hook_length=KL, Dims),
-        {HW + KL =< Free}
-    ;   {HW =< Free}
-    ).
-post_size_item_(Kind, _, Dims, ctx(max_tool_length(M))) :-
-    !,
-    (   Kind == block
-    ->  memberchk(length=L, Dims),
-        memberchk(width=W, Dims),
-        {L =< M, W =< M}
-    ;   memberchk(handle_length=HL, Dims),
-        {HL =< M}
-    ).
-post_size_item_(block, _, Dims, ctx(door_gap_m(_, G))) :-
-    !,
-    memberchk(height=H, Dims),
-    {H > G}.
-post_size_item_(Kind, _, Dims, ctx(min_wall_m(M))) :-
-    !,
-    solid_fields_(Kind, Fields),
-    forall(member(F, Fields),
-           ( memberchk(F=V, Dims),
-             {V >= M} )).
-post_size_item_(_, _, _, _).
-
-solid_fields_(hook, [handle_width, hook_length, hook_width]).
-solid_fields_(stick, [handle_width]).
-solid_fields_(block, [length, width, height]).
+post_size_item_(Kind, Context, Dims, ctx(F)) :-
+    findall(Cs, kb_clause(size_constraint(Kind, F, Cs), true), Css),
+    append(Css, Comparisons),
+    maplist(post_(size(Dims, Context)), Comparisons).
 
 size_parameter_(Name, Context, Value) :-
     Fact =.. [Name, V],
@@ -702,16 +700,15 @@ label_choice_(Dims, F-Values) :-
         ->  member(V, Values)
         ;   true
         ),
-        shape_constraint_(F, V, Dims)
+        choice_constraints_(F, V, Dims)
     ;   true
     ).
 
-shape_constraint_(shape, cylinder, Dims) :-
-    !,
-    memberchk(length=L, Dims),
-    memberchk(width=W, Dims),
-    {W =:= L}.
-shape_constraint_(_, _, _).
+%   The constraints a symbolic field's value adds (size_choice_constraint/3).
+choice_constraints_(F, V, Dims) :-
+    findall(Cs, kb_clause(size_choice_constraint(F, V, Cs), true), Css),
+    append(Css, Comparisons),
+    maplist(post_(size(Dims, [])), Comparisons).
 
 label_field_(F=V) :-
     (   var(V),
@@ -740,7 +737,7 @@ label_field_(F=V) :-
 %   R = infeasible([handle_length(t, long), max_tool_length(0.3)]).
 %   ==
 solve_size(Kind, Literals, Context, Result) :-
-    must_be_oneof_([hook, stick, block], Kind),
+    must_be_size_kind_(Kind),
     size_items_(Kind, Literals, Context, Items),
     (   size_point_(Kind, Context, Items, Ground)
     ->  Result = dims(Ground)
@@ -760,11 +757,3 @@ size_items_feasible_(Kind, Context, Items) :-
 
 size_item_term_(lit(L), L).
 size_item_term_(ctx(F), F).
-
-%   must_be_oneof_(+Values, +X): X is one of the atoms Values, else a domain error.
-must_be_oneof_(Values, X) :-
-    must_be(atom, X),
-    (   memberchk(X, Values)
-    ->  true
-    ;   domain_error(oneof(Values), X)
-    ).

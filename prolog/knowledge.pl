@@ -21,8 +21,9 @@ This is the one module that owns the dynamic database (DESIGN.md, STYLE.md).  Kn
 lives in the module `kb`, kept apart from this module's own predicates, whose only
 default import is `system`:
 
-  - the *ontology*: plain Prolog files (the .pl files of ontology/, no directives) read clause by
-    clause by load_ontology/1 and asserted into `kb`;
+  - the *ontology*: plain Prolog files (the .pl files of ontology/ and its
+    subdirectories, no directives) read clause by clause by load_ontology/1 and
+    asserted into `kb`;
   - *world facts*: ground facts added by kb_assert_facts/1 (perception's primitive
     facts, a catalogue, a learned model), removed by kb_retract_facts/1 or kb_reset/0.
 
@@ -62,7 +63,7 @@ init_kb_module_ :-
 %!  load_ontology(+File) is det.
 %
 %   Read the plain Prolog file File (a path or an alias such as
-%   ontology(tools_hook)) and assert its clauses into the knowledge base.  Calls in
+%   ontology(kinds/hook_like)) and assert its clauses into the knowledge base.  Calls in
 %   clause bodies are checked against the whole knowledge base after the load.
 %
 %   @error existence_error(source_sink, File) if File does not exist.
@@ -85,7 +86,7 @@ load_ontology(File) :-
 %   file is missing or wrong.
 %
 %   ==
-%   ?- load_ontology_files([ontology(ranges), ontology(tools_hook)]).
+%   ?- load_ontology_files([ontology(ranges), ontology(world), ontology(kinds/hook_like)]).
 %   true.
 %   ==
 load_ontology_files(Files) :-
@@ -101,7 +102,10 @@ load_ontology_files(Files) :-
 %!  load_default_ontology is det.
 %
 %   Load every `.pl` file of the ontology directory (the `ontology` file search path
-%   set by prolog/creative.pl, else ../ontology relative to this module), in name order.
+%   set by prolog/creative.pl, else ../ontology relative to this module) and of its
+%   subdirectories (cases/, kinds/, ...), in a fixed order: a directory's files in name
+%   order, then each subdirectory in name order, depth first.  The order is the order of
+%   the clauses of a predicate that several files define.
 %
 %   ==
 %   ?- load_default_ontology, kb_holds(subclass_of(hook, C)).
@@ -109,15 +113,30 @@ load_ontology_files(Files) :-
 %   ==
 load_default_ontology :-
     ontology_directory_(Dir),
+    ontology_files_(Dir, Paths),
+    load_ontology_files(Paths).
+
+%   ontology_files_(+Dir, -Paths): the .pl files of Dir in name order, then those of
+%   its subdirectories (hidden ones left out), each in turn.
+ontology_files_(Dir, Paths) :-
     directory_files(Dir, Entries),
     msort(Entries, Sorted),
     findall(Path,
             ( member(E, Sorted),
               file_name_extension(_, pl, E),
-              directory_file_path(Dir, E, Path)
+              directory_file_path(Dir, E, Path),
+              exists_file(Path)
             ),
-            Paths),
-    load_ontology_files(Paths).
+            Files),
+    findall(Sub,
+            ( member(E, Sorted),
+              \+ sub_atom(E, 0, _, _, '.'),
+              directory_file_path(Dir, E, Sub),
+              exists_directory(Sub)
+            ),
+            Subs),
+    maplist(ontology_files_, Subs, SubPaths),
+    append([Files|SubPaths], Paths).
 
 ontology_directory_(Dir) :-
     (   absolute_file_name(ontology(.), Dir0,

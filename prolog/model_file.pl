@@ -34,6 +34,7 @@ where knowledge:learned_model/4 answers queries.
                               tool_literal_kind/3]).
 :- use_module(planner, [plan/5]).
 :- use_module(pddl, [pddl_write_files/6]).
+:- use_module(case, [case_answer/1]).
 
 %!  write_model_file(+File, +Case, +Models, +VS) is det.
 %
@@ -145,16 +146,12 @@ plan_task(Case, Models, VS, Primitive, Options, Result) :-
     append(Learned, Innate, All),
     observed_state(Case, Primitive, State),
     action_task_goal(Case, Goal),
-    extra_objects_(Case, Extra),
+    case_answer(case_extra_objects(Case, Extra)),
     (   option(pddl(Dom, Prob), Options)
     ->  pddl_write_files(Dom, Prob, All, State, Goal, [objects(Extra)])
     ;   true
     ),
     plan(State, Goal, All, [objects(Extra)|Options], Result).
-
-%   Objects that appear in no literal of the state (the wedge's floor).
-extra_objects_(wedge, [floor1-site]) :- !.
-extra_objects_(_, []).
 
 pairs_keys_([], []).
 pairs_keys_([K-_|Ps], [K|Ks]) :-

@@ -24,9 +24,11 @@ transition is matched against the innate model of its skill (action_model.pl):
 The unexplained changes of a transition are what the trainer's tool use did beyond the
 skill: they become a **new action model**.
 
-  - Name: from the skill and the first unexplained added literal: pull +
-    out_of_tube gives `pull_out`, release_door + door_held gives `hold_door`; other
-    pairs give Skill_for_Predicate (e.g. `pull_for_on_floor`).
+  - Name: from the skill and the first unexplained added literal (else `not_` and
+    the first deleted one), as the action_names/1 option says (the case's
+    learned_action_names/2: pull + out_of_tube gives `pull_out`, release_door +
+    door_held gives `hold_door`); other pairs give Skill_for_Predicate (e.g.
+    `pull_for_on_floor`).
   - Tool, target and context: the skill's tool argument and its other two arguments
     if it has a tool parameter (pull(T, C, Tube)); otherwise (release_door(door1)) the
     tool, target and context of the most recent earlier step whose skill has all
@@ -56,6 +58,7 @@ did nothing teaches nothing), so it is matched even if the precondition was not 
 :- use_module(library(option)).
 :- use_module(library(error)).
 :- use_module(action_model).
+:- use_module(knowledge, [kb_clause/2]).
 
 %!  observe_demonstration(+Steps, +InnateModels, -Result) is det.
 %
@@ -87,8 +90,14 @@ observe_demonstration(Steps, InnateModels, Result) :-
 %       no earlier step names a tool, target and context), nothing_to_learn (every
 %       transition is explained).
 %
-%   Options: goal(Goal), Goal a list of ground literals the demonstration must
-%   reach (checked on the last S1).
+%   Options:
+%
+%     - goal(Goal): Goal a list of ground literals the demonstration must reach
+%       (checked on the last S1);
+%     - action_names(Names): Names a list of name(Skill, Effect, Name): the new model
+%       of a step of Skill whose first unexplained effect has the predicate Effect is
+%       called Name, other pairs Skill_for_Effect (default: the names of every case,
+%       the ontology's learned_action_names/2).
 %
 %       ?- innate_action_models(hook, Ms),
 %          observe_demonstration([], Ms, [goal([out_of_tube(cube1, tube1)])], R).
@@ -107,13 +116,17 @@ observe_demonstration(Steps, InnateModels, Options, Result) :-
     maplist(must_be_step_, Steps),
     option(goal(Goal), Options, []),
     must_be(list, Goal),
+    (   option(action_names(Names), Options)
+    ->  must_be(list, Names)
+    ;   ontology_action_names_(Names)
+    ),
     (   Steps == []
     ->  Result = no_model(empty_demonstration)
     ;   last(Steps, step(_, _, _, SFinal)),
         subtract_eq_(Goal, SFinal, Missing),
         Missing \== []
     ->  Result = no_model(goal_not_reached(Goal))
-    ;   observe_steps_(Steps, 1, InnateModels, none, Outcomes),
+    ;   observe_steps_(Steps, 1, InnateModels, Names, none, Outcomes),
         outcomes_result_(Outcomes, Result)
     ).
 
@@ -125,22 +138,22 @@ must_be_step_(Step) :-
     ;   type_error(demonstration_step, Step)
     ).
 
-%   observe_steps_(+Steps, +I, +Models, +Frame, -Outcomes): Outcomes lists one
+%   observe_steps_(+Steps, +I, +Models, +Names, +Frame, -Outcomes): Outcomes lists one
 %   matched(I, Skill, Args), new(Model, Example) or failed(Reason) per step, stopping
 %   at the first failed/1.  Frame is the last frame(Tool, Target, Context) seen.
-observe_steps_([], _, _, _, []).
-observe_steps_([Step|Steps], I, Models, Frame0, [Outcome|Outcomes]) :-
+observe_steps_([], _, _, _, _, []).
+observe_steps_([Step|Steps], I, Models, Names, Frame0, [Outcome|Outcomes]) :-
     Step = step(Skill, Args, _, _),
     (   model_named_(Models, Skill, Model)
     ->  step_frame_(Model, Args, Frame0, Frame),
-        observe_step_(Step, I, Model, Frame, Outcome)
+        observe_step_(Step, I, Model, Names, Frame, Outcome)
     ;   Frame = Frame0,
         Outcome = failed(unknown_skill(I, Skill))
     ),
     (   Outcome = failed(_)
     ->  Outcomes = []
     ;   I1 is I + 1,
-        observe_steps_(Steps, I1, Models, Frame, Outcomes)
+        observe_steps_(Steps, I1, Models, Names, Frame, Outcomes)
     ).
 
 model_named_(Models, Name, Model) :-
@@ -165,7 +178,7 @@ bound_model_(Model, Args, Bound) :-
     Bound = action_model(_, Params, _, _, _),
     pairs_keys_(Params, Args).
 
-observe_step_(step(Skill, Args, S0, S1), I, Model, Frame, Outcome) :-
+observe_step_(step(Skill, Args, S0, S1), I, Model, Names, Frame, Outcome) :-
     observe_transition(step(Skill, Args, S0, S1), Model, Added, Deleted),
     action_model_instance(Model, Args, _, Pre, _, _),
     (   Added == [], Deleted == []
@@ -179,7 +192,7 @@ observe_step_(step(Skill, Args, S0, S1), I, Model, Frame, Outcome) :-
     ;   Frame == none
     ->  Outcome = failed(no_tool_for_step(I, Skill))
     ;   unexplained_(Model, Args, Added, Deleted, UAdd, UDel),
-        new_model_(Skill, Args, S0, Model, Frame, UAdd, UDel, Outcome)
+        new_model_(Skill, Args, S0, Model, Names, Frame, UAdd, UDel, Outcome)
     ).
 
 %!  observe_transition(+Step, +Model, -Added, -Deleted) is det.
@@ -213,7 +226,7 @@ explained_(Effects, L) :-
     ->  true
     ).
 
-new_model_(Skill, Args, S0, Model, frame(Tool, Target, Context), UAdd, UDel,
+new_model_(Skill, Args, S0, Model, Names, frame(Tool, Target, Context), UAdd, UDel,
            new(NewModel, Example)) :-
     action_model_instance(Model, Args, _, Pre0, Add0, Del0),
     exclude(is_schema_, Add0, Add1),
@@ -234,7 +247,7 @@ new_model_(Skill, Args, S0, Model, frame(Tool, Target, Context), UAdd, UDel,
     extra_params_(Extra, Model, Args, ExtraParams),
     Objects = [Tool-tool, Target-target, Context-site|ExtraParams],
     effect_name_(UAdd, UDel, EffectName),
-    new_model_name_(Skill, EffectName, Name),
+    new_model_name_(Names, Skill, EffectName, Name),
     variablise_(Objects, action_model(Name, Objects, Pre, Add, Del), NewModel).
 
 effect_name_(UAdd, UDel, Name) :-
@@ -262,10 +275,16 @@ extra_params_([A|As], Model, Args, [A-Type|Ps]) :-
     memberchk(A-Type, Params),
     extra_params_(As, Model, Args, Ps).
 
-new_model_name_(pull, out_of_tube, pull_out) :- !.
-new_model_name_(release_door, door_held, hold_door) :- !.
-new_model_name_(Skill, Effect, Name) :-
-    atomic_list_concat([Skill, '_for_', Effect], Name).
+%   Every case's names of learned actions (hook predicate learned_action_names/2).
+ontology_action_names_(Names) :-
+    findall(Ns, kb_clause(learned_action_names(_, Ns), true), Nss),
+    append(Nss, Names).
+
+new_model_name_(Names, Skill, Effect, Name) :-
+    (   memberchk(name(Skill, Effect, Name0), Names)
+    ->  Name = Name0
+    ;   atomic_list_concat([Skill, '_for_', Effect], Name)
+    ).
 
 %   Replace each object constant of Objects (Name-Type) by one fresh variable.
 variablise_(Objects, Term0, Term) :-

@@ -1,7 +1,8 @@
-/*  Blocks of the wedge case: the object hierarchy and the rules that turn the
-    catalogue (metres) into qualitative structural literals.
+/*  Blocks: the object hierarchy, the rules that turn the catalogue (metres) into
+    qualitative structural literals, and the size model of a new block.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
+    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.  A
+    case whose tools are blocks says so with case_tool_class(Case, block).
 
         object
         └── block                     block_length, block_width, block_height,
@@ -11,6 +12,7 @@
             └── cylinder              upright; length = width = diameter
 */
 
+% The hierarchy (object is its root: object(O) marks O as a catalogued object).
 subclass_of(block, object).
 subclass_of(triangular_prism, block).
 subclass_of(box, block).
@@ -28,13 +30,19 @@ primitive_predicate(block_length_m/2).
 primitive_predicate(block_width_m/2).
 primitive_predicate(block_height_m/2).
 
-structural_predicate(wedge, object/1).
-structural_predicate(wedge, block/1).
-structural_predicate(wedge, shape/2).
-structural_predicate(wedge, block_length/2).
-structural_predicate(wedge, block_width/2).
-structural_predicate(wedge, block_height/2).
-structural_predicate(wedge, mechanical_advantage/2).
+catalogue_predicate(block, object_kind/2).
+catalogue_predicate(block, block_shape/2).
+catalogue_predicate(block, block_length_m/2).
+catalogue_predicate(block, block_width_m/2).
+catalogue_predicate(block, block_height_m/2).
+
+structural_predicate(block, object/1).
+structural_predicate(block, block/1).
+structural_predicate(block, shape/2).
+structural_predicate(block, block_length/2).
+structural_predicate(block, block_width/2).
+structural_predicate(block, block_height/2).
+structural_predicate(block, mechanical_advantage/2).
 
 object(W) :-
     block(W).
@@ -70,3 +78,28 @@ mechanical_advantage(W, Value) :-
     H > 0,
     Ratio is L / H,
     qualitative_value(mechanical_advantage, Ratio, Value).
+
+%   new_tool_kind(?Class, +Structural, -Kind): a new block is sized as a block.
+new_tool_kind(block, _, block).
+
+                 /*******************************
+                 *     SIZING A NEW BLOCK       *
+                 *******************************/
+
+%   Field names are those of BlockSpec in creative_py/mesh/spec.py (metres).
+size_field(block, length, block_length).
+size_field(block, width, block_width).
+size_field(block, height, block_height).
+
+size_choice(block, shape, shape, [triangular_prism, box, cylinder]).
+
+%   size_choice_constraint(?Field, ?Value, ?Constraints): the constraints a symbolic
+%   field's value adds (an upright cylinder is as wide as it is long).
+size_choice_constraint(shape, cylinder, [width =:= length]).
+
+%   size_ratio(?Kind, ?Property, ?Numerator, ?Denominator): Property is the ratio of two
+%   fields, its qualitative ranges bound Numerator / Denominator.
+size_ratio(block, mechanical_advantage, length, height).
+
+size_constraint(block, max_tool_length(M), [length =< M, width =< M]).
+size_constraint(block, min_wall_m(M), [length >= M, width >= M, height >= M]).

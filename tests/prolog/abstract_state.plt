@@ -110,7 +110,7 @@ test(wedge_reversed_is_tip_away) :-
     assertion(memberchk(tip_away(wedge_a2, door1), A)),
     assertion(\+ memberchk(tip_towards(wedge_a2, door1), A)).
 
-test(bad_case, [error(domain_error(oneof([hook, wedge]), door))]) :-
+test(bad_case, [error(existence_error(case, door))]) :-
     abstract_state(door, [], _).
 
 test(non_ground_fact, [error(instantiation_error)]) :-

@@ -19,7 +19,7 @@ test(innate_wedge_skills, Names == [pick_up, place, release_door]) :-
     innate_action_models(wedge, Ms),
     model_names_(Ms, Names).
 
-test(unknown_case, error(domain_error(case, kitchen))) :-
+test(unknown_case, error(existence_error(case, kitchen))) :-
     innate_action_models(kitchen, _).
 
 test(task_goals, [G1, G2] == [[out_of_tube(cube1, tube1)], [door_held(door1)]]) :-

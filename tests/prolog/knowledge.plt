@@ -14,8 +14,24 @@ test(default_ontology_loads, [setup(load_default_ontology)]) :-
     kb_loaded_files(Files),
     length(Files, N),
     assertion(N >= 6),
-    kb_holds(subclass_of(hook, hook_like)),
-    kb_holds(qualitative_range(handle_length, medium, 0.25, 0.45)).
+    assertion(kb_holds(subclass_of(hook, hook_like))),
+    assertion(kb_holds(qualitative_range(handle_length, medium, 0.25, 0.45))).
+
+%   The files of ontology/ first, then each subfolder's, in name order.
+test(default_ontology_reads_subfolders_in_order, [setup(load_default_ontology)]) :-
+    kb_loaded_files(Files),
+    maplist([F, Rel]>>( file_base_name(F, Base),
+                        file_directory_name(F, D),
+                        file_base_name(D, Dir),
+                        atomic_list_concat([Dir, Base], /, Rel) ),
+            Files, Rels),
+    once(nth1(IHook, Rels, 'cases/hook.pl')),
+    once(nth1(IWedge, Rels, 'cases/wedge.pl')),
+    once(nth1(IBlock, Rels, 'kinds/block.pl')),
+    once(nth1(IRanges, Rels, 'ontology/ranges.pl')),
+    assertion(IRanges < IHook),
+    assertion(IHook < IWedge),
+    assertion(IWedge < IBlock).
 
 test(reload_replaces_clauses, [setup(load_default_ontology)]) :-
     aggregate_all(count, kb_clause(any_length(_), _), N0),

@@ -1,0 +1,255 @@
+/*  The hook case (paper, case 1): pull a cube out of a closed tube with a hook-like
+    tool.  Everything the engine knows about this case is here; the engine asks for it
+    through the hook predicates of ontology/README.md ("Hook predicates").
+
+    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
+    Rules marked "proved on the state" are proved by knowledge:kb_prove/2: their
+    primitive facts (pose/5, tube_mouth/4, ...) come from the state the engine hands
+    over, never from the database.
+
+    The apparatus: a tube whose axis runs along +x from its mouth, the cube (cube1) lying
+    inside it, the tool's prong reaching behind the cube to pull it out.
+*/
+
+case(hook).
+
+%   The case's tools are hook-like (ontology/kinds/hook_like.pl): their structural
+%   literals, catalogue and size models come from that hierarchy.
+case_tool_class(hook, hook_like).
+
+                 /*******************************
+                 *     TASK AND SKILLS          *
+                 *******************************/
+
+%   task_roles(?Case, ?Target, ?Context): the object the tool acts on and the object or
+%   place the action happens in (the world files' names).
+task_roles(hook, cube1, tube1).
+
+case_goal(hook, [out_of_tube(cube1, tube1)]).
+
+%   Objects a plan needs that no literal of the state names.
+case_extra_objects(hook, []).
+
+%   The innate skills, in the order a plan uses them (pick_up: ontology/skills.pl).
+case_skills(hook, [pick_up, position_tool, pull]).
+
+%   position_tool(T, C, Tube): move the held tool to a pose relative to the cube inside
+%   the tube; which spatial literals become true is the pose's business (spatial_of/1).
+innate_skill(hook, position_tool,
+             action_model(position_tool, [T-tool, C-target, Tube-site],
+                          [holding(T), in_tube(C, Tube)],
+                          [spatial_of(T)],
+                          [spatial_of(T)])).
+%   pull(T, C, Tube): draw the held tool back out of the tube along its axis.
+innate_skill(hook, pull,
+             action_model(pull, [T-tool, _C-target, Tube-site],
+                          [holding(T)],
+                          [],
+                          [in_tube(T, Tube), spatial_of(T)])).
+
+%   The name of the action learned from the demonstration: the pull whose unexplained
+%   effect is out_of_tube/2 is pull_out.
+learned_action_names(hook, [name(pull, out_of_tube, pull_out)]).
+
+%   The tool acts while the robot holds it (its spatial literals count when held).
+tool_acts_when(hook, held).
+
+%   Spatial literals that are preconditions of the motion rather than pose choices:
+%   the hook is always used inside the tube, never tested by placing it outside.
+untestable_literals(hook, [in_tube(_, _)]).
+
+                 /*******************************
+                 *     STATE                    *
+                 *******************************/
+
+%   The tube: mouth centre (world x, y, z), inner length along +x, inner width and
+%   height (metres).
+primitive_predicate(tube_mouth/4).
+primitive_predicate(tube_length_m/2).
+primitive_predicate(tube_inner_m/3).
+
+task_predicate(hook, in_tube/2).
+task_predicate(hook, out_of_tube/2).
+
+%   in_tube(?Object, ?Tube): an uncatalogued object (the cube) whose centre lies inside
+%   the tube's inner box.
+in_tube(C, Tube) :-
+    tube_mouth(Tube, MX, MY, MZ),
+    tube_length_m(Tube, L),
+    tube_inner_m(Tube, W, H),
+    pose(C, X, Y, Z, _Yaw),
+    \+ object_kind(C, _),
+    X >= MX,
+    X =< MX + L,
+    abs(Y - MY) =< W / 2,
+    abs(Z - MZ) =< H / 2.
+
+out_of_tube(C, Tube) :-
+    tube_mouth(Tube, _, _, _),
+    pose(C, _, _, _, _),
+    \+ object_kind(C, _),
+    \+ in_tube(C, Tube).
+
+%   tool_in_use(?Case, ?Tool), proved on the state: a held tool whose tip lies inside
+%   the tube's inner box has spatial literals.
+tool_in_use(hook, Tool) :-
+    held(Tool),
+    tip_in_tube(Tool).
+
+tip_in_tube(Tool) :-
+    tube_mouth(Tube, MX, MY, MZ),
+    tube_length_m(Tube, L),
+    tube_inner_m(Tube, W, H),
+    tip_position(Tool, X, Y, Z),
+    X >= MX,
+    X =< MX + L,
+    abs(Y - MY) =< W / 2,
+    abs(Z - MZ) =< H / 2.
+
+                 /*******************************
+                 *     POSE                     *
+                 *******************************/
+
+/*  The pose term hook_pose(Dx, Dy, Roll) (metres, metres, radians):
+        Dx   prong centre minus cube centre along the tube axis (+x, away from the robot)
+        Dy   lateral offset of the handle axis from the cube centre (+y)
+        Roll rotation about the handle axis, 0 = prong down, +-pi/2 = prong flat
+
+    spatial_definition(?Case, ?Literal, ?PoseTerm, ?Constraints): Literal holds when
+    every linear comparison of Constraints holds for the numbers of PoseTerm; several
+    clauses are alternatives.  Literal's arguments are the roles tool, target, context.
+    The complement of a clause tries its comparisons in the order written: the first is
+    the meaningful "other side".  The prong must clear the cube (half its size plus half
+    the prong's thickness plus 5 mm) and stay inside the tube (dx_min .. dx_max).
+*/
+spatial_definition(hook, in_tube(tool, context), hook_pose(Dx, Dy, _Roll),
+                   [Dx =< dx_max, Dx >= dx_min, Dy =< dy_max, Dy >= dy_min]).
+spatial_definition(hook, behind(tool, target), hook_pose(Dx, _Dy, _Roll),
+                   [Dx >= cube_half + prong_half + clearance, Dx =< dx_max]).
+spatial_definition(hook, in_front(tool, target), hook_pose(Dx, _Dy, _Roll),
+                   [Dx =< -(cube_half + prong_half + clearance), Dx >= dx_min]).
+spatial_definition(hook, centred_on(tool, target), hook_pose(_Dx, Dy, _Roll),
+                   [Dy =< 0.005, Dy >= -0.005]).
+spatial_definition(hook, hook_down(tool), hook_pose(_Dx, _Dy, Roll),
+                   [Roll =< 0.35, Roll >= -0.35]).
+spatial_definition(hook, hook_flat(tool), hook_pose(_Dx, _Dy, Roll),
+                   [Roll >= 1.2]).
+spatial_definition(hook, hook_flat(tool), hook_pose(_Dx, _Dy, Roll),
+                   [Roll =< -1.2]).
+
+%   pose_domain(?Case, ?PoseTerm, ?Constraints): where a pose can be at all.  The roll
+%   stays within +-pi/2 (prong down to prong flat on either side): a prong rolled
+%   further points up, away from anything it could pull, and the arm's insertion motion
+%   is planned for that range.
+pose_domain(hook, hook_pose(Dx, Dy, Roll),
+            [Dx >= -tube_length, Dx =< tube_length, Dy >= -dy_room, Dy =< dy_room,
+             Roll >= -pi/2, Roll =< pi/2]).
+
+%   geometry_default(?Case, ?Name, ?Value, ?Meaning): the geometry parameters, with the
+%   values used when the state does not give them (metres), in the order they are
+%   computed: a parameter's geometry_value/6 rule sees those listed before it.
+geometry_default(hook, cube_half, 0.015, 'half the cube side (3 cm cube)').
+geometry_default(hook, prong_half, 0.005, 'half the prong thickness along the handle (1 cm prong)').
+geometry_default(hook, clearance, 0.005, 'clearance between prong and cube').
+geometry_default(hook, handle_half, 0.005, 'half the handle width (1 cm handle)').
+geometry_default(hook, tube_length, 0.30, 'tube length (inner)').
+geometry_default(hook, dy_room, 0.10, 'lateral bound of any hook pose').
+geometry_default(hook, dx_max, 0.07, 'room behind the cube centre to the tube end, minus half the prong').
+geometry_default(hook, dx_min, -0.25, 'mouth to cube centre, negated, plus half the prong').
+geometry_default(hook, dy_max, 0.01, 'largest Dy keeping the handle in the tube: tube axis minus cube centre, plus inner half width minus handle half width minus clearance').
+geometry_default(hook, dy_min, -0.01, 'smallest Dy keeping the handle in the tube').
+
+%   geometry_value(?Case, ?Name, ?Tool, ?Target, +Geometry, -Value), proved on the
+%   state: the parameter's value from the facts.  Tool and Target may be unbound (then
+%   only facts naming neither are used).
+geometry_value(hook, cube_half, _Tool, Target, _G, V) :-
+    nonvar(Target),
+    size(Target, Sx, _, _),
+    V is Sx / 2.
+geometry_value(hook, prong_half, Tool, _Target, _G, V) :-
+    nonvar(Tool),
+    (   hook_width_m(Tool, W)
+    ->  true
+    ;   handle_width_m(Tool, W)
+    ),
+    V is W / 2.
+geometry_value(hook, handle_half, Tool, _Target, _G, V) :-
+    nonvar(Tool),
+    handle_width_m(Tool, W),
+    V is W / 2.
+geometry_value(hook, tube_length, _Tool, _Target, _G, L) :-
+    tube_length_m(_, L).
+%   The prong stays inside the tube: from the mouth to the far end, relative to the cube.
+geometry_value(hook, dx_max, _Tool, Target, G, DxMax) :-
+    nonvar(Target),
+    tube_mouth(Tube, MX, _, _),
+    tube_length_m(Tube, L),
+    pose(Target, CX, _, _, _),
+    memberchk(prong_half=PH, G),
+    DxMax is MX + L - CX - PH.
+geometry_value(hook, dx_min, _Tool, Target, G, DxMin) :-
+    nonvar(Target),
+    tube_mouth(Tube, MX, _, _),
+    tube_length_m(Tube, _),
+    pose(Target, CX, _, _, _),
+    memberchk(prong_half=PH, G),
+    DxMin is MX - CX + PH.
+geometry_value(hook, dy_max, _Tool, Target, G, DyMax) :-
+    nonvar(Target),
+    tube_mouth(Tube, _, MY, _),
+    tube_length_m(Tube, _),
+    tube_inner_m(Tube, W, _),
+    pose(Target, _, CY, _, _),
+    memberchk(handle_half=HH, G),
+    memberchk(clearance=C, G),
+    Room is W / 2 - HH - C,
+    DyMax is MY - CY + Room.
+geometry_value(hook, dy_min, _Tool, Target, G, DyMin) :-
+    nonvar(Target),
+    tube_mouth(Tube, _, MY, _),
+    tube_length_m(Tube, _),
+    tube_inner_m(Tube, W, _),
+    pose(Target, _, CY, _, _),
+    memberchk(handle_half=HH, G),
+    memberchk(clearance=C, G),
+    Room is W / 2 - HH - C,
+    DyMin is MY - CY - Room.
+
+%   relative_pose(?Case, ?Tool, ?Target, +Geometry, -Pose), proved on the state: the
+%   held tool's pose relative to the cube, from the tip's position and the roll
+%   (proprioception) and the cube's pose (camera).
+relative_pose(hook, Tool, Target, _G, hook_pose(Dx, Dy, Roll)) :-
+    tip_position(Tool, TX, TY, _),
+    tool_roll(Tool, Roll),
+    pose(Target, CX, CY, _, _),
+    Dx is TX - CX,
+    Dy is TY - CY.
+
+%   pose_target(?Case, +Pose, ?Target, +Geometry, -World), proved on the state: where
+%   the pose puts the tool in the world, tip(X, Y, Roll): the prong centre's world X
+%   and Y (its height is the skill's choice) and the roll.
+pose_target(hook, hook_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
+    pose(Target, CX, CY, _, _),
+    X is CX + Dx,
+    Y is CY + Dy.
+
+                 /*******************************
+                 *     SIZING A NEW TOOL        *
+                 *******************************/
+
+%   The tube bounds a new hook-like tool (ontology/kinds/hook_like.pl has the rest).
+%   The handle reaches behind a cube at the tube's far end with the gripper outside;
+%   the tool turns inside the tube.
+size_constraint(hook, tube_length_m(_, L), [handle_length >= L + reach_margin_m]).
+size_constraint(stick, tube_length_m(_, L), [handle_length >= L + reach_margin_m]).
+size_constraint(hook, tube_inner_m(_, W, H),
+                [handle_width + hook_length =< min(W, H) - tube_clearance_m]).
+size_constraint(stick, tube_inner_m(_, W, H),
+                [handle_width =< min(W, H) - tube_clearance_m]).
+
+%   size_parameter(?Name, ?Value, ?Meaning): margins used by the size constraints
+%   (metres); a context fact Name(Value) overrides the value.
+size_parameter(reach_margin_m, 0.05,
+               'handle length beyond the tube length: the grip and the gripper stay outside the mouth').
+size_parameter(tube_clearance_m, 0.005,
+               'free space left between the tool cross-section and the tube walls').

@@ -1,0 +1,172 @@
+:- module(case,
+          [ must_be_case/1,           % +Case
+            case_roles/3,             % +Case, -Target, -Context
+            case_answer/1,            % +Hook
+            case_holds/1,             % +Hook
+            case_prove/2,             % +Hook, +Facts
+            class_answer/1,           % +Hook
+            case_info/2               % +Case, -Info
+          ]).
+
+/** <module> How the engine asks a case: hook predicates of the ontology
+
+A tool-use case (the hook and tube, the wedge and door, ...) is data: one file
+ontology/cases/<case>.pl that answers the engine's *hook predicates*, plain predicates
+of the knowledge base (module `kb`, knowledge.pl) whose first argument is the case, as
+SWI-Prolog's libraries call the `multifile` hooks their clients define.  The engine
+modules never name a case, a tool class or a scene object: each asks the ontology
+through this module, and each documents the hooks it calls (ontology/README.md has the
+table).  Tool classes answer the hooks whose first argument is a class
+(ontology/kinds/<class>.pl).
+
+A hook that a case (class) does not answer at all, no clause of the predicate having
+that case (class) as its first argument, raises
+
+    error(existence_error(case_hook(Case), Name/Arity), _)
+    error(existence_error(class_hook(Class), Name/Arity), _)
+
+never a silent failure; an undeclared case raises existence_error(case, Case).  A hook
+clause whose first argument is a variable (the robot's own pick_up/1 skill) answers
+for every case.
+
+The hooks read here:
+
+  - case(?Case): Case is a tool-use case (one fact per case file).
+  - task_roles(?Case, ?Target, ?Context): the object a tool acts on and the object or
+    place the action happens in, e.g. task_roles(hook, cube1, tube1).
+*/
+
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(knowledge, [kb_clause/2, kb_holds/1, kb_prove/2]).
+
+%!  must_be_case(+Case) is det.
+%
+%   Case is a case the ontology declares (case/1).
+%
+%   @error instantiation_error or type_error(atom, Case) if Case is not an atom.
+%   @error existence_error(case, Case) if no ontology file declares it.
+%
+%   ==
+%   ?- must_be_case(hook).
+%   true.
+%   ?- must_be_case(kitchen).
+%   ERROR: case `kitchen' does not exist
+%   ==
+must_be_case(Case) :-
+    must_be(atom, Case),
+    (   kb_clause(case(Case), true)
+    ->  true
+    ;   existence_error(case, Case)
+    ).
+
+%!  case_roles(+Case, -Target, -Context) is det.
+%
+%   The target and context objects of Case (task_roles/3).
+%
+%   ==
+%   ?- case_roles(wedge, T, C).
+%   T = door1, C = floor1.
+%   ==
+case_roles(Case, Target, Context) :-
+    must_be_case(Case),
+    case_answer(task_roles(Case, Target, Context)).
+
+%!  case_answer(+Hook) is semidet.
+%
+%   The first answer of the hook goal Hook, whose first argument is a declared case.
+%   Fails if the case's clauses have no answer.
+%
+%   @error existence_error(case_hook(Case), Name/Arity) if no clause of Hook's
+%          predicate is about Case.
+%
+%   ==
+%   ?- case_answer(case_goal(hook, G)).
+%   G = [out_of_tube(cube1, tube1)].
+%   ==
+case_answer(Hook) :-
+    must_have_hook_(case, Hook),
+    once(kb_holds(Hook)).
+
+%!  case_holds(+Hook) is nondet.
+%
+%   Every answer of the hook goal Hook (first argument: a declared case), in clause
+%   order.
+%
+%   @error existence_error(case_hook(Case), Name/Arity) as case_answer/1.
+case_holds(Hook) :-
+    must_have_hook_(case, Hook),
+    kb_holds(Hook).
+
+%!  case_prove(+Hook, +Facts:list) is nondet.
+%
+%   Prove the hook goal Hook (first argument: a declared case) with kb_prove/2: the
+%   primitive facts its rules use come from Facts, the state at hand.
+%
+%   @error existence_error(case_hook(Case), Name/Arity) as case_answer/1.
+%
+%   ==
+%   ?- case_prove(tool_in_use(hook, T), [held(h), tip_position(h, 0.95, 0.0, 0.0),
+%                 tube_mouth(tube1, 0.7, 0.0, 0.0), tube_length_m(tube1, 0.3),
+%                 tube_inner_m(tube1, 0.08, 0.07)]).
+%   T = h.
+%   ==
+case_prove(Hook, Facts) :-
+    must_have_hook_(case, Hook),
+    kb_prove(Hook, Facts).
+
+%!  class_answer(+Hook) is semidet.
+%
+%   The first answer of the hook goal Hook whose first argument is a tool class
+%   (ontology/kinds/).
+%
+%   @error existence_error(class_hook(Class), Name/Arity) if no clause of Hook's
+%          predicate is about Class.
+%
+%   ==
+%   ?- class_answer(new_tool_kind(hook_like, [tool(t), stick(t)], K)).
+%   K = stick.
+%   ==
+class_answer(Hook) :-
+    must_have_hook_(class, Hook),
+    once(kb_holds(Hook)).
+
+%   must_have_hook_(+Type, +Hook): some clause of Hook's predicate has Hook's first
+%   argument (or a variable) as its own first argument.
+must_have_hook_(Type, Hook) :-
+    must_be(compound, Hook),
+    compound_name_arity(Hook, Name, Arity),
+    arg(1, Hook, Key),
+    (   Type == case
+    ->  must_be_case(Key)
+    ;   must_be(atom, Key)
+    ),
+    functor(Template, Name, Arity),
+    arg(1, Template, Key),
+    (   kb_clause(Template, _)
+    ->  true
+    ;   hook_error_type_(Type, Key, ErrorType),
+        existence_error(ErrorType, Name/Arity)
+    ).
+
+hook_error_type_(case, Case, case_hook(Case)).
+hook_error_type_(class, Class, class_hook(Class)).
+
+%!  case_info(+Case, -Info) is det.
+%
+%   Info = case(Skills, Goal, Target, Context, PoseTerm): what a case manifest
+%   (worlds/<case>/case.toml) must agree with.  Skills are the innate skill names in
+%   plan order (case_skills/2), Goal the goal literals (case_goal/2), Target and Context
+%   the role objects (task_roles/3), PoseTerm the name of the pose term (pose_domain/3).
+%
+%   ==
+%   ?- case_info(hook, I).
+%   I = case([pick_up, position_tool, pull], [out_of_tube(cube1, tube1)],
+%            cube1, tube1, hook_pose).
+%   ==
+case_info(Case, case(Skills, Goal, Target, Context, PoseTerm)) :-
+    case_roles(Case, Target, Context),
+    case_answer(case_skills(Case, Skills)),
+    case_answer(case_goal(Case, Goal)),
+    case_answer(pose_domain(Case, Pose, _)),
+    functor(Pose, PoseTerm, _).
