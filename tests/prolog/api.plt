@@ -77,6 +77,20 @@ test(variant_is_structural_equality_up_to_renaming) :-
 test(parse_keeps_variable_names, Reply == ok((p('$VAR'('X')) :- q('$VAR'('X'), "s")))) :-
     api_call(parse("p(X) :- q(X, \"s\")"), Reply).
 
+test(case_info_for_a_manifest,
+     Reply == ok(case([pick_up, place, release_door], [door_held(door1)], door1, floor1,
+                      wedge_pose))) :-
+    api_call(case_info(wedge), Reply).
+
+test(case_info_of_an_unknown_case_is_an_error) :-
+    api_call(case_info(kitchen), Reply),
+    assertion(Reply = error(error(existence_error(case, kitchen), _))).
+
+test(pose_target_gives_the_world_target, Reply == ok(tip(0.9400000000000001, -0.25, 0.0))) :-
+    api_call(pose_target(hook, h, [pose(cube1, 0.9, -0.25, -0.0125, 0.0)],
+                         hook_pose(0.04, 0.0, 0.0)),
+             Reply).
+
 test(every_dispatched_goal_is_defined) :-
     forall(clause(api:api_op(Request, _, Goal), true),
            (   functor(Goal, Name, Arity),

@@ -1,0 +1,186 @@
+:- begin_tests(case).
+
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module('fixtures/primitive_fixtures').
+
+%   write_temp_ontology_(+Text, -Path): a temporary .pl file holding Text.
+write_case_file_(Text, Path) :-
+    tmp_file_stream(text, Path0, S0),
+    close(S0),
+    delete_file(Path0),
+    file_name_extension(Path0, pl, Path),
+    setup_call_cleanup(open(Path, write, S), write(S, Text), close(S)).
+
+%   Load an extra ontology file beside the default ontology; restore the default.
+load_extra_(File) :-
+    load_ontology(File).
+
+restore_default_ :-
+    kb_reset_all,
+    load_default_ontology.
+
+ledge_file_(F) :-
+    module_property(plunit_case, file(Here)),
+    file_directory_name(Here, Dir),
+    directory_file_path(Dir, 'fixtures/ledge_case.pl', F).
+
+                 /*******************************
+                 *     THE PAPER'S CASES        *
+                 *******************************/
+
+test(case_info_hook, I == case([pick_up, position_tool, pull], [out_of_tube(cube1, tube1)],
+                               cube1, tube1, hook_pose)) :-
+    case_info(hook, I).
+
+test(case_info_wedge, I == case([pick_up, place, release_door], [door_held(door1)],
+                                door1, floor1, wedge_pose)) :-
+    case_info(wedge, I).
+
+test(unknown_case, error(existence_error(case, kitchen))) :-
+    case_info(kitchen, _).
+
+test(case_must_be_an_atom, error(type_error(atom, f(x)))) :-
+    must_be_case(f(x)).
+
+test(roles, [T, C] == [door1, floor1]) :-
+    case_roles(wedge, T, C).
+
+test(pose_target_inverts_pose_numbers) :-
+    fixture_primitive(hook, P0),
+    append(P0, [held(hook_a2), tip_position(hook_a2, 0.94, 0.003, 0.0),
+                tool_roll(hook_a2, 0.1)], P),
+    pose_numbers(hook, hook_a2, P, Pose),
+    pose_world(hook, hook_a2, P, Pose, tip(X, Y, R)),
+    assertion(abs(X - 0.94) < 1.0e-12),
+    assertion(abs(Y - 0.003) < 1.0e-12),
+    assertion(R =:= 0.1).
+
+test(tool_class_answers_the_new_tool_kind, [K1, K2] == [stick, hook]) :-
+    class_answer(new_tool_kind(hook_like, [tool(t), stick(t)], K1)),
+    class_answer(new_tool_kind(hook_like, [tool(t), hook(t)], K2)).
+
+test(unknown_class_hook, error(existence_error(class_hook(spoon), new_tool_kind/3))) :-
+    class_answer(new_tool_kind(spoon, [], _)).
+
+                 /*******************************
+                 *     A CASE MISSING A HOOK    *
+                 *******************************/
+
+test(missing_goal_names_case_and_predicate,
+     [ setup(( write_case_file_("case(bare_toy).\n", F), load_extra_(F) )),
+       cleanup(( restore_default_, delete_file(F) )),
+       error(existence_error(case_hook(bare_toy), case_goal/2)) ]) :-
+    action_task_goal(bare_toy, _).
+
+test(missing_tool_class_is_not_a_silent_empty_state,
+     [ setup(( write_case_file_("case(bare_toy).\n", F), load_extra_(F) )),
+       cleanup(( restore_default_, delete_file(F) )),
+       error(existence_error(case_hook(bare_toy), case_tool_class/2)) ]) :-
+    abstract_state(bare_toy, [], _).
+
+test(missing_skill_model,
+     [ setup(( write_case_file_("case(bare_toy).\ncase_skills(bare_toy, [pick_up, fly]).\n", F),
+               load_extra_(F) )),
+       cleanup(( restore_default_, delete_file(F) )),
+       error(existence_error(innate_skill(bare_toy), fly)) ]) :-
+    innate_action_models(bare_toy, _).
+
+test(shared_skill_answers_every_case,
+     [ setup(( write_case_file_("case(bare_toy).\ncase_skills(bare_toy, [pick_up]).\n", F),
+               load_extra_(F) )),
+       cleanup(( restore_default_, delete_file(F) )),
+       Names == [pick_up] ]) :-
+    innate_action_models(bare_toy, Ms),
+    maplist([action_model(N, _, _, _, _), N]>>true, Ms, Names).
+
+                 /*******************************
+                 *     A NEW CASE AS DATA       *
+                 *******************************/
+
+%   The ledge case (fixtures/ledge_case.pl): the box at x = 0.95 under a ledge whose
+%   front edge is at x = 0.80, 0.40 m deep and 3 cm above the table.
+ledge_context_([ ledge_m(ledge9, 0.80, 0.40, 0.03),
+                 pose(box9, 0.95, 0.0, 0.02, 0.0),
+                 size(box9, 0.04, 0.04, 0.04) ]).
+
+ledge_state_(Extra, Facts) :-
+    fixture_catalogue(hook, Catalogue),
+    ledge_context_(Context),
+    append([Catalogue, Context, Extra], Facts).
+
+%   The trainer's demonstration with hook_a2: pick it up, reach under the ledge behind
+%   the box, drag the box out.
+ledge_demonstration_([ step(pick_up, [hook_a2], S0, S1),
+                       step(reach_under, [hook_a2, box9, ledge9], S1, S2),
+                       step(drag, [hook_a2, box9, ledge9], S2, S3) ]) :-
+    ledge_state_([], S0),
+    ledge_state_([held(hook_a2), tip_position(hook_a2, 0.5, 0.0, 0.1),
+                  tool_roll(hook_a2, 0.0)], S1),
+    ledge_state_([held(hook_a2), tip_position(hook_a2, 0.99, 0.0, 0.01),
+                  tool_roll(hook_a2, 0.0)], S2),
+    fixture_catalogue(hook, Catalogue),
+    append(Catalogue, [ ledge_m(ledge9, 0.80, 0.40, 0.03),
+                        pose(box9, 0.55, 0.0, 0.02, 0.0),
+                        size(box9, 0.04, 0.04, 0.04),
+                        held(hook_a2), tip_position(hook_a2, 0.59, 0.0, 0.01),
+                        tool_roll(hook_a2, 0.0) ], S3).
+
+ledge_vs_(VS, Models) :-
+    ledge_demonstration_(Steps),
+    learn_from_demonstration(ledge_toy, Steps, models(_, Models, Example)),
+    vs_init(Example, VS).
+
+test(ledge_abstract_state,
+     [ setup(( ledge_file_(F), load_extra_(F) )),
+       cleanup(restore_default_) ]) :-
+    ledge_state_([held(hook_a2), tip_position(hook_a2, 0.99, 0.0, 0.01),
+                  tool_roll(hook_a2, 0.1)], Facts),
+    abstract_state(ledge_toy, Facts, A),
+    assertion(subset([under_ledge(box9, ledge9), behind(hook_a2, box9),
+                      centred_on(hook_a2, box9), hook_down(hook_a2),
+                      handle_length(hook_a2, medium)], A)),
+    assertion(\+ memberchk(in_tube(_, _), A)).
+
+test(ledge_pose_solved_and_placed,
+     [ setup(( ledge_file_(F), load_extra_(F) )),
+       cleanup(restore_default_) ]) :-
+    ledge_context_(Context),
+    solve_pose(ledge_toy, [behind(h, box9), hook_down(h)], [centred_on(h, box9)],
+               Context, R),
+    assertion(R = pose(toy_pose(_, _, _))),
+    R = pose(Pose),
+    Pose = toy_pose(Dx, Dy, _),
+    assertion(Dx >= 0.03),
+    assertion(abs(Dy) > 0.005),
+    pose_world(ledge_toy, h, Context, Pose, tip(X, _, _)),
+    assertion(abs(X - (0.95 + Dx)) < 1.0e-12).
+
+test(ledge_learned_model_and_experiment,
+     [ setup(( ledge_file_(F), load_extra_(F) )),
+       cleanup(restore_default_) ]) :-
+    ledge_vs_(VS, [Model]),
+    assertion(Model = action_model(drag_out, [_-tool, _-target, _-site|_], _,
+                                   [out_from_ledge(_, _)], _)),
+    ledge_state_([], P),
+    plan_experiment(ledge_toy, VS, P, R),
+    assertion(R = experiment(_, _, _, toy_pose(_, _, _), _, _)).
+
+%   The ledge's size constraint is data too: the created hook's handle reaches the back
+%   of the ledge and its long prong (0.025 m or more) still passes under the 3 cm
+%   ledge (unconstrained, the prong would be 0.0375 m, the middle of its range).
+test(ledge_new_tool_sized_by_the_ledge,
+     [ setup(( ledge_file_(F), load_extra_(F) )),
+       cleanup(restore_default_) ]) :-
+    ledge_vs_(VS, _),
+    ledge_context_(Context),
+    next_tool(ledge_toy, VS, [], [max_tool_length(0.7)|Context], [], R),
+    assertion(R = create(_, _, _, _, _)),
+    R = create(_, _, _, Struct, Dims),
+    memberchk(handle_length=HL, Dims),
+    memberchk(hook_length=KL, Dims),
+    assertion(HL >= 0.5),
+    assertion(KL =< 0.03),
+    assertion(memberchk(hook(_), Struct)).
+
+:- end_tests(case).
