@@ -2,7 +2,7 @@
 
 Every world folder (``worlds/<case>/``) holds the same five files, listed in
 :data:`WORLD_FILES`. This module only knows how to read TOML safely; what the fields
-mean belongs to the case that reads them (``creative_py/sim/hook_tube.py`` ...).
+mean belongs to the simulator that reads them (:mod:`creative_py.sim.world`).
 
 A :class:`Fields` reader wraps one TOML table. Each accessor names the file and the
 dotted field path in its error, and :meth:`Fields.done` rejects fields nobody asked
@@ -26,7 +26,7 @@ WORLD_FILES = ("scene.toml", "physics.toml", "objects.toml", "tasks.toml", "case
 """The file names every world folder holds."""
 
 WORLDS_ROOT = Path(__file__).resolve().parent.parent / "worlds"
-"""The folder holding the shipped worlds (``worlds/hook_tube`` ...)."""
+"""The folder holding the shipped worlds (one folder per case)."""
 
 
 class WorldFileError(ValueError):

@@ -146,6 +146,25 @@ MoveResult = SkillOutcome
 """How a motion ended (the one :class:`~creative_py.sim.types.SkillOutcome` type)."""
 
 
+GRIPPER_FORWARD: Quat = tuple(pb.getQuaternionFromEuler((0.0, math.pi / 2, 0.0)))
+"""Orientation of ``right_gripper`` pointing along +x world (its +z axis), roll 0."""
+
+
+def gripper_forward(roll: float) -> Quat:
+    """Return the gripper orientation pointing +x world, turned by ``roll`` (rad) about x."""
+    return tuple(pb.multiplyTransforms((0, 0, 0), pb.getQuaternionFromEuler((roll, 0, 0)),
+                                       (0, 0, 0), GRIPPER_FORWARD)[1])
+
+
+def gripper_down(yaw: float) -> Quat:
+    """Return the gripper orientation pointing down (-z) with its x axis at ``yaw`` (rad)."""
+    return tuple(pb.getQuaternionFromEuler((math.pi, 0.0, yaw)))
+
+
+GRIPPER_ATTITUDES = {"forward": gripper_forward, "down": gripper_down}
+"""Gripper orientations by name, each a function of one angle (rad)."""
+
+
 def quat_angle(q1: Sequence[float], q2: Sequence[float]) -> float:
     """Return the rotation angle (rad) between two quaternions (x, y, z, w)."""
     d = abs(float(np.dot(q1, q2)))

@@ -1,4 +1,4 @@
-"""The simulator's public API: load a case's world, open an episode, run a trial.
+"""The simulator's public API: open an episode of a case's world, run a trial.
 
 Every case is driven the same way, by the skill names of its manifest
 (``worlds/<folder>/case.toml``)::
@@ -14,13 +14,23 @@ Every case is driven the same way, by the skill names of its manifest
         ep.goal_reached()                            # the physics oracle
         ep.observe()                                 # Observation(facts, frames, truth)
 
-:func:`run_trial` runs the manifest's skills in order and returns a
-:class:`~creative_py.sim.types.TrialResult`. The physics decides the outcome; nothing
-here looks at tool properties.
+An episode builds the scene in a fresh :class:`~creative_py.sim.core.Sim`: the bodies of
+``scene.toml`` with the variant's and the location's values, the tool where its kind
+starts, Baxter at its start posture. A skill runs the primitive its manifest entry
+binds (:mod:`creative_py.sim.primitives`); the pose skill's world target comes from
+``pose_target``, the engine's pose solution, applied to what the robot perceives at
+that moment. :func:`run_trial` runs the manifest's skills in order and asks the oracle
+(:mod:`creative_py.sim.oracles`). The physics decides the outcome; nothing here looks
+at tool properties.
+
+Perception: the objects of ``[[perception.object]]`` come from the cameras through
+:mod:`creative_py.perception`; a held tool is known by proprioception (forward
+kinematics and the grasp); bodies report their fixed geometry and sensors.
 """
 
 from __future__ import annotations
 
+import logging
 import math
 import time
 from contextlib import contextmanager
@@ -28,27 +38,34 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Iterator, Sequence
 
+import numpy as np
+import pybullet as pb
+
 from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult
-from creative_py.sim.world import World
+from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
+                                   _oracle_words)
+from creative_py.world import PhysicsSettings, WorldFileError
+
+log = logging.getLogger(__name__)
 
 PoseTarget = Callable[[list[Fact], str, tuple[float, ...]], tuple]
 """``(facts, tool, pose) -> world target`` of a pose, e.g. ``("tip", x, y, roll)``."""
 
 
 def prolog_pose_target(case_id: str, pose_term: str) -> PoseTarget:
-    """Return a :data:`PoseTarget` that asks the engine (``api:pose_target``).
+    """Return a :data:`PoseTarget` that asks the engine (``api`` operation ``pose_target``).
 
     The engine turns the relative pose numbers into the world target of the case's
-    pose-taking skill (``abstract_state:pose_world/5``); the answer comes back as a
-    tuple ``(name, numbers...)``.
+    pose-taking skill (``abstract_state:pose_world/5``) in the perceived state; the
+    answer comes back as a tuple ``(name, numbers...)``, or ``()`` if the state lacks
+    what it needs.
     """
 
     def target(facts: list[Fact], tool: str, pose: tuple[float, ...]) -> tuple:
         from creative_py.bridge import FAILED, Compound, Engine
 
         engine = Engine.instance()
-        terms = [_fact_term(f) for f in facts]
-        answer = engine.call("pose_target", case_id, tool, terms,
+        answer = engine.call("pose_target", case_id, tool, [_fact_term(f) for f in facts],
                              Compound(pose_term, tuple(float(v) for v in pose)))
         if answer is FAILED:
             return ()
@@ -71,7 +88,8 @@ def _fact_term(fact: Fact) -> Any:
 @contextmanager
 def open_episode(world: World, variant: str, location: int, tool: str, seed: int = 0,
                  gui: bool = False, images_dir: Path | None = None,
-                 pose_target: PoseTarget | None = None) -> Iterator["Episode"]:
+                 pose_target: PoseTarget | None = None, *,
+                 robot: bool = True) -> Iterator["Episode"]:
     """Build the scene and yield an :class:`Episode`; close it on exit.
 
     Parameters
@@ -91,11 +109,14 @@ def open_episode(world: World, variant: str, location: int, tool: str, seed: int
     images_dir : Path or None
         Save camera snapshots there.
     pose_target : callable or None
-        ``(facts, tool, pose) -> target``: the world target of a pose (Prolog's pose
-        solution); None asks the engine (:func:`prolog_pose_target`).
+        ``(facts, tool, pose) -> target``: the world target of a pose (the engine's
+        pose solution); None asks the engine (:func:`prolog_pose_target`).
+    robot : bool
+        Build Baxter (default); without it only by-hand placing and the scene's own
+        physics run (for tests of the physics alone).
     """
     ep = Episode(world, variant, location, tool, seed, gui,
-                 None if images_dir is None else Path(images_dir), pose_target)
+                 None if images_dir is None else Path(images_dir), pose_target, robot=robot)
     try:
         yield ep
     finally:
@@ -103,59 +124,328 @@ def open_episode(world: World, variant: str, location: int, tool: str, seed: int
 
 
 class Episode:
-    """One scene of a case in its own simulator, driven skill by skill by name."""
+    """One scene of a case in its own simulator, driven skill by skill by name.
+
+    Attributes a primitive uses: ``sim``, ``robot`` (None without one), ``spec`` and
+    ``kind`` of the tool, ``item`` (its catalogue entry), ``tool_body``, ``grasp`` (the
+    tool frame in the gripper frame), ``held``, ``bodies`` (name -> scene body),
+    ``watch`` (bodies whose blow-up ends a motion), ``state`` (what a skill leaves for
+    the next, e.g. the tool's attitude) and ``records`` (what an oracle reads).
+    """
 
     def __init__(self, world: World, variant: str, location: int, tool: str, seed: int = 0,
                  gui: bool = False, images_dir: Path | None = None,
-                 pose_target: PoseTarget | None = None) -> None:
-        self.world = world
-        self.manifest = world.manifest
-        self.tool = tool
-        self.pose_target = pose_target or prolog_pose_target(world.manifest.id,
-                                                             world.manifest.pose_term)
-        self._ep = world.impl_open(variant, location, tool, seed, gui, images_dir)
+                 pose_target: PoseTarget | None = None, *, robot: bool = True) -> None:
+        from creative_py.sim.core import Sim
+        from creative_py.sim.scene import make_bodies
+        from creative_py.sim.tools import tool_kind
 
-    def run_skill(self, name: str, pose: Sequence[float] | None = None) -> SkillOutcome:
-        """Run the manifest's skill ``name`` (with ``pose`` numbers for the pose skill)."""
-        skill = self.manifest.skill(name)
-        if skill.pose:
+        m = world.manifest
+        self.world, self.manifest = world, m
+        self.variant, self.location = variant, location
+        self.item = world.item(tool)
+        self.spec = self.item.spec
+        self.kind = tool_kind(self.spec)
+        self.ns = world.namespace(variant, location, tool)
+        self.bodies = make_bodies(world.scene.bodies, self.ns)
+        self.target_name, self.context_name = m.target, m.context
+        self.pose_target = pose_target or prolog_pose_target(m.id, m.pose_term)
+        self.rng = np.random.default_rng(seed)
+        self.images_dir = images_dir
+        self.render_time_s = 0.0
+        self._shots = 0
+        self.held = False
+        self.grasp = self.kind.initial_grasp(self.spec)
+        self.state: dict[str, Any] = {}
+        self.records: dict[str, Any] = {}
+        self.robot = None
+        self.robot_parked = False
+        self.with_robot = robot
+        self._time_before = 0.0
+        self._steps_at_switch = 0
+        self.sim = Sim(world.physics["arm"], gui=gui)
+        try:
+            self._build()
+        except BaseException:
+            self.close()
+            raise
+
+    # ------------------------------------------------------------ scene building
+    def _build(self) -> None:
+        from creative_py.sim.baxter import Baxter, BaxterConfig
+
+        w = self.world
+        for body in self.bodies.values():
+            body.build(self.sim)
+        self.tool_body = self.kind.spawn(self, resolve_start(w, self.ns))
+        self.perceived = []
+        for p in w.scene.perceived:
+            name = object_name(self.manifest, p.name, self.spec.name)
+            support = None if p.support_z is None else self.ns.evaluate(p.support_z, name)
+            self.perceived.append((name, support))
+        self.watch = [self._body_id(n) for n, _ in self.perceived]
+        if self.with_robot:
+            rs = w.scene.robot
+            self.robot = Baxter(self.sim, BaxterConfig(
+                visuals=rs.visuals, speed=rs.speed, turn_speed=rs.turn_speed,
+                steps_per_waypoint=rs.steps_per_waypoint))
+            self.robot.reset_posture(self._start_posture())
+        self.run(w.scene.settle_time)
+
+    def _pose_of(self, table: dict[str, Any]):
+        from creative_py.sim.baxter import GRIPPER_ATTITUDES
+
+        pos = self.ns.evaluate(table["position"], "robot.start.position")
+        angle = self.ns.evaluate(table["angle"], "robot.start.angle")
+        return (tuple(pos), GRIPPER_ATTITUDES[table["gripper"]](angle))
+
+    def _start_posture(self) -> list[float]:
+        """Return the arm's start posture (searched once per scene geometry, then cached)."""
+        rs = self.world.scene.robot
+        home = self._pose_of(rs.start)
+        via = None if rs.via is None else self._pose_of(rs.via)
+        key = (via, home)
+        cache = self.world.postures
+        if key in cache:
+            return cache[key]  # the same numbers the search below gives
+        seeds = ()
+        if via is not None:
+            q_via = self.robot.solve_ik_global(via)
+            seeds = [q_via] if q_via else ()
+        q = self.robot.solve_ik_global(home, keep=rs.keep, seeds=seeds)
+        if q is None:
+            raise WorldFileError(f"{self.world.directory / 'scene.toml'}: field "
+                                 f"'robot.start': the arm cannot reach {list(home[0])}")
+        cache[key] = q
+        return q
+
+    def _body_id(self, name: str) -> int:
+        if name == self.spec.name:
+            return self.tool_body
+        if name in self.bodies:
+            return self.bodies[name].id
+        raise KeyError(f"no object {name!r} in the scene")
+
+    # ------------------------------------------------------------------ helpers
+    @property
+    def tool(self) -> str:
+        """Return the tool's name."""
+        return self.spec.name
+
+    @property
+    def context_body(self):
+        """Return the scene body of the case's context object."""
+        return self.bodies[self.context_name]
+
+    def object_name(self, name: str) -> str:
+        """Return the object a role (``tool``, ``target``, ``context``) or a name denotes."""
+        return object_name(self.manifest, name, self.spec.name)
+
+    def need_robot(self, what: str) -> None:
+        """Raise if the episode has no robot (built without, or parked)."""
+        if self.robot is None or self.robot_parked:
+            raise RuntimeError(f"{what}: this episode has no robot (built with robot=False, "
+                               "or the robot was parked for a joint's release)")
+
+    def use_physics(self, profile: str) -> None:
+        """Switch to the ``rest`` or ``arm`` physics (time step, iterations), keeping time."""
+        physics: PhysicsSettings = self.world.physics[profile]
+        if physics == self.sim.physics:
+            return
+        self._time_before = self.sim_time()
+        self._steps_at_switch = self.sim.steps
+        self.sim.physics = physics
+        self.sim.configure()
+
+    def run(self, seconds: float) -> None:
+        """Advance the physics by ``seconds`` at the current time step."""
+        self.sim.step(int(round(seconds / self.sim.physics.time_step)))
+
+    def park_robot(self) -> None:
+        """Take the idle robot out of the physics (it must stand clear of what moves)."""
+        if self.robot is None or self.robot_parked:
+            return
+        pb.removeBody(self.robot.body, physicsClientId=self.sim.client)
+        self.robot.close()
+        self.robot_parked = True
+
+    def tool_pose(self):
+        """Return the held tool's frame pose by proprioception (FK + the grasp)."""
+        g = self.robot.gripper_pose()
+        pos, quat = pb.multiplyTransforms(g[0], g[1], *self.grasp)
+        return tuple(pos), tuple(quat)
+
+    def gripper_for_tool_at(self, x: float, y: float, z: float, yaw: float):
+        """Return the gripper pose that puts the held tool's frame at (x, y, z), heading yaw."""
+        obj_q = pb.getQuaternionFromEuler((0, 0, yaw))
+        inv = pb.invertTransform(*self.grasp)
+        pos, quat = pb.multiplyTransforms((x, y, z), obj_q, inv[0], inv[1])
+        return tuple(pos), tuple(quat)
+
+    def perceived_top(self, name: str) -> float | None:
+        """Return the top (m) of ``name`` as last perceived by :meth:`run_skill`, or None."""
+        facts = self.state.get("facts", ())
+        pose = next((f for f in facts if f[0] == "pose" and f[1] == name), None)
+        size = next((f for f in facts if f[0] == "size" and f[1] == name), None)
+        if pose is None or size is None:
+            return None
+        return pose[4] + size[4] / 2
+
+    # ------------------------------------------------------------------- skills
+    def run_skill(self, name: str, pose: Sequence[float] | None = None,
+                  **options: Any) -> SkillOutcome:
+        """Run the manifest's skill ``name`` (with the ``pose`` numbers for the pose skill).
+
+        ``options`` override the skill's primitive options of ``case.toml`` for this
+        call (e.g. ``by_hand=True`` for the trainer's placing). Returns how it ended; a
+        reason names the skill. Raises ValueError for missing or non-finite pose
+        numbers, KeyError for a skill the manifest does not have.
+        """
+        binding = self.manifest.skill(name)
+        skill = self.world.skills[name]
+        if binding.pose:
             if pose is None:
                 raise ValueError(f"skill {name} needs the pose numbers "
                                  f"({', '.join(self.manifest.pose_names)})")
-            return self._ep.position_tool(tuple(float(v) for v in pose))
-        if skill.tool_action:
-            return self._ep.act()
-        return self._ep.pick_up()
+            pose = tuple(float(v) for v in pose)
+            if not all(math.isfinite(v) for v in pose):
+                raise ValueError(f"pose numbers must be finite, got {pose}")
+        res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
+        if not res.ok:
+            return SkillOutcome(res.status, f"{name}: {res.reason}")
+        return res
 
-    def goal_reached(self) -> bool:
-        """Return whether the case's goal holds in the simulated state (the oracle)."""
-        return bool(self._ep.goal_reached())
+    def run_primitive(self, primitive: str, pose: Sequence[float] | None = None,
+                      **options: Any) -> SkillOutcome:
+        """Run a primitive with ``options`` (raw: numbers or scene expressions).
 
-    def observe(self) -> Observation:
-        """Return the facts the robot perceives now, the frames and the ground truth."""
-        return self._ep.observe()
+        A primitive that takes a world target gets it from :attr:`pose_target` applied
+        to what the robot perceives now (the cameras only if the target's facts need
+        them, i.e. when the case tracks objects with cameras).
+        """
+        from creative_py.sim.primitives import primitive as lookup
+
+        prim = lookup(primitive)
+        opts = resolve_options(options, self.ns, f"primitive {primitive}")
+        target: tuple = ()
+        if prim.target:
+            if prim.needs_held_tool(opts) and not self.held:
+                return SkillOutcome("blocked", "no tool is held (pick it up first)")
+            facts = list(self.observe(cameras=opts.get("perceive", True)).facts)
+            self.state["facts"] = facts
+            target = tuple(self.pose_target(facts, self.spec.name, tuple(pose)))
+            if not target:
+                seen = {f[1] for f in facts if f[0] == "pose"}
+                missing = [n for n, _ in self.perceived if n not in seen]
+                why = (f"the camera does not see {', '.join(missing)}" if missing
+                       else "the pose has no world target in this state")
+                return SkillOutcome("unreachable", why)
+            if target[0] != prim.target:
+                raise ValueError(f"{primitive} needs a {prim.target}(...) target, the "
+                                 f"pose solution gave {target[0]}(...)")
+        return prim.run(self, opts, target)
+
+    # ---------------------------------------------------------------- perception
+    def _frames(self) -> tuple:
+        from creative_py.sim.camera import capture_frames
+
+        frames = capture_frames(self.sim.client, self.world.scene.cameras, self.images_dir,
+                                self._shots)
+        self.render_time_s += sum(f.render_time_s for f in frames)
+        self._shots += self.images_dir is not None
+        return frames
+
+    def _estimates(self):
+        from creative_py.perception import estimate_objects
+
+        if not self.perceived:
+            return {}, ()
+        frames = self._frames()
+        bodies, support, heights = {}, {}, {}
+        for name, support_z in self.perceived:
+            bodies[name] = self._body_id(name)
+            held = self.held and name == self.spec.name
+            if support_z is not None and not held:
+                support[name] = support_z
+            h = (self.kind.height(self.spec) if name == self.spec.name
+                 else self.bodies[name].height)
+            if h is not None:
+                heights[name] = h
+        est = estimate_objects(frames, bodies, self.world.scene.noise, self.rng,
+                               support_z=support, heights=heights)
+        return est, frames
+
+    def observe(self, cameras: bool = True) -> Observation:
+        """Return the facts the robot perceives now, the frames and the ground truth.
+
+        Facts: the tracked objects' ``pose/5`` and ``size/4`` (cameras, unless
+        ``cameras`` is false: then nothing is rendered and no noise drawn), ``held/1`` and
+        the tool kind's proprioception, every scene body's facts, the oracle's fact
+        while the goal holds, and the catalogue of every available object.
+        """
+        from creative_py.perception import facts_from_estimates
+        from creative_py.sim.tools import catalogue_facts
+
+        est, frames = self._estimates() if cameras else ({}, ())
+        facts: list[Fact] = list(facts_from_estimates(est))
+        if self.held:
+            facts.append(("held", self.spec.name))
+            facts += self.kind.proprioception(self)
+        for body in self.bodies.values():
+            facts += body.facts(self.sim)
+        fact = self.world.oracle.options.get("fact")
+        if fact and self.goal_reached():
+            subject = self.world.oracle.oracle.subject
+            facts.append((fact, self.object_name(self.world.oracle.options[subject])))
+        for item in self.world.items.values():
+            facts += catalogue_facts(item.spec)
+        return Observation(facts=tuple(facts), frames=frames, truth=self.truth())
+
+    def true_centre(self, name: str) -> tuple[float, float, float, float]:
+        """Return the true ``(x, y, z, yaw)`` of an object's centre (oracles, reports)."""
+        from creative_py.sim.bodies import frame_pose, yaw_of
+
+        if name == self.spec.name:
+            pos, quat = frame_pose(self.sim, self.tool_body)
+            centre = pb.multiplyTransforms(pos, quat, self.kind.centre(self.spec),
+                                           (0, 0, 0, 1))[0]
+            return (*centre, yaw_of(quat))
+        return self.bodies[name].centre(self.sim)
 
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
-        """Return ground-truth ``name -> (x, y, z, yaw)`` (for error reports only)."""
-        return self._ep.truth()
+        """Return ground-truth ``name -> (x, y, z, yaw)`` of the tracked objects and the
+        tool (its frame), for error reports only."""
+        out = {n: self.true_centre(n) for n, _ in self.perceived}
+        if self.spec.name not in out:
+            from creative_py.sim.bodies import frame_pose, yaw_of
+
+            pos, quat = frame_pose(self.sim, self.tool_body)
+            out[self.spec.name] = (*pos, yaw_of(quat))
+        return {k: tuple(float(v) for v in p) for k, p in out.items()}
+
+    # ------------------------------------------------------------------- oracle
+    def goal_reached(self) -> bool:
+        """Return whether the case's goal holds in the simulated state (the oracle)."""
+        spec = self.world.oracle
+        opts = resolve_options(spec.options, self.ns, "oracle", words=_oracle_words(self.world))
+        return bool(spec.oracle.holds(self, opts))
 
     def sim_time(self) -> float:
-        """Return the simulated time so far, seconds."""
-        return self._ep.sim_time()
+        """Return the simulated time so far, seconds (across time-step changes)."""
+        return (self._time_before
+                + (self.sim.steps - self._steps_at_switch) * self.sim.physics.time_step)
 
     @property
     def steps(self) -> int:
         """Return the physics steps taken so far."""
-        return self._ep.steps
-
-    @property
-    def render_time_s(self) -> float:
-        """Return the wall time spent rendering camera frames so far, seconds."""
-        return self._ep.render_time_s
+        return self.sim.steps
 
     def close(self) -> None:
         """Release the simulator (idempotent)."""
-        self._ep.close()
+        robot = getattr(self, "robot", None)
+        if robot is not None and not self.robot_parked:
+            robot.close()
+        self.sim.close()
 
 
 def run_trial(world: World, tool: str, variant: str, location: int,

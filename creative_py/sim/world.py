@@ -1,16 +1,101 @@
 """A case's simulated world: the manifest, the catalogue of tools and the scene files.
 
-:func:`load_world` reads ``worlds/<folder>/`` (or a copy of it) for a
+:func:`load_world` reads a world folder (``worlds/<folder>/`` or a copy) for a
 :class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool.
+The folder holds, besides ``case.toml``:
+
+``physics.toml``
+    ``time_step`` (s), ``solver_iterations``, ``gravity`` (m/s^2): the physics while
+    objects rest on surfaces; an optional ``[arm]`` table (``time_step``,
+    ``solver_iterations``) for the arm's motions.
+``scene.toml``
+    ``settle_time`` (s of physics after building); ``[robot]`` (``visuals``, ``speed``
+    m/s, ``turn_speed`` rad/s, ``steps_per_waypoint``) and ``[robot.start]`` (the
+    gripper's start ``position``, ``gripper`` attitude ``forward`` or ``down`` at
+    ``angle`` rad, ``keep`` IK candidates, optional ``via`` pose whose posture seeds
+    the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.sim.scene`);
+    ``[tool_start]`` (where the tool lies: the fields of its kind,
+    :mod:`creative_py.sim.tools`); ``[perception]`` (noise and the
+    ``[[perception.object]]`` the cameras track); ``[[camera]]``.
+``objects.toml``
+    The catalogue: one table per object in the array named by the manifest's
+    ``roles.tools`` (``[[tool]]``, ``[[object]]``), with the spec fields of
+    :mod:`creative_py.mesh.spec`, its ``set`` and ``friction``.
+``tasks.toml``
+    ``[[location]]`` (``set = {...}``: scene values of the target's predefined
+    locations) and ``[oracle]`` (:mod:`creative_py.sim.oracles`).
+
+Every number of the scene, the start, the skills' options and the oracle may be a
+scene expression; the loader resolves them all for every variant and location, so a
+bad value is reported by file and field before any physics runs.
 """
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, replace
+from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any
+from typing import Any, Mapping
 
 from creative_py.case import CaseManifest
+from creative_py.world import (Fields, PhysicsSettings, WorldFileError, load_toml,
+                               read_physics, world_file)
+
+_ROLES = ("tool", "target", "context")
+
+
+@dataclass(frozen=True)
+class CatalogueItem:
+    """An available object: its spec, set name, pybullet friction and (for a created
+    tool) the URDF file its body is loaded from."""
+
+    spec: Any
+    set: str
+    friction: float = 0.5
+    urdf: Path | None = None
+
+
+@dataclass(frozen=True)
+class RobotSpec:
+    """Baxter's settings and start pose (raw numbers or expressions; see module doc)."""
+
+    visuals: bool
+    speed: float
+    turn_speed: float
+    steps_per_waypoint: int
+    start: dict[str, Any]
+    via: dict[str, Any] | None
+    keep: int
+
+
+@dataclass(frozen=True)
+class PerceivedObject:
+    """An object the cameras track: a role or a name, and the support it rests on."""
+
+    name: str
+    support_z: Any = None
+
+
+@dataclass(frozen=True)
+class SceneSpec:
+    """Everything ``scene.toml`` says (bodies raw: resolved per episode)."""
+
+    settle_time: float
+    robot: RobotSpec
+    values: dict[str, Any]
+    bodies: tuple
+    tool_start: dict[str, Any]
+    noise: Any
+    perceived: tuple[PerceivedObject, ...]
+    cameras: tuple
+
+
+@dataclass(frozen=True)
+class SkillSpec:
+    """A manifest skill bound to its primitive, options raw (resolved per episode)."""
+
+    name: str
+    primitive: str
+    options: dict[str, Any]
 
 
 @dataclass(frozen=True)
@@ -21,86 +106,327 @@ class World:
     ----------
     manifest : CaseManifest
         The case (roles, skills, pose parameters, variants, demonstration).
-    impl : object
-        The scene description read from the world folder.
+    directory : Path
+        The world folder.
+    physics : dict
+        ``"rest"`` and ``"arm"`` :class:`~creative_py.world.PhysicsSettings`.
+    scene : SceneSpec
+        The scene description.
+    items : dict
+        ``name -> CatalogueItem`` of every available object, created ones included.
+    location_sets : tuple of dict
+        The scene values of each predefined location, in order.
+    oracle : OracleSpec
+        The success oracle.
+    skills : dict
+        ``skill name -> SkillSpec``.
     """
 
     manifest: CaseManifest
-    impl: Any
-
-    @property
-    def directory(self) -> Path:
-        """Return the world folder the scene was read from."""
-        return Path(self.impl.directory)
+    directory: Path
+    physics: dict[str, PhysicsSettings]
+    scene: SceneSpec
+    items: dict[str, CatalogueItem]
+    location_sets: tuple[dict[str, Any], ...]
+    oracle: Any
+    skills: dict[str, SkillSpec]
+    postures: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
     def catalogue(self) -> dict[str, Any]:
         """Return the candidate tools, ``name -> spec`` (HookSpec, BlockSpec ...)."""
-        if hasattr(self.impl, "tools"):
-            return dict(self.impl.tools)
-        return {n: item.spec for n, item in self.impl.objects.items()}
+        return {n: item.spec for n, item in self.items.items()}
 
     @property
     def locations(self) -> tuple[int, ...]:
         """Return the 1-based indices of the target's predefined locations."""
-        n = len(self.impl.locations) if hasattr(self.impl, "locations") else 1
-        return tuple(range(1, n + 1))
+        return tuple(range(1, len(self.location_sets) + 1))
+
+    def item(self, name: str) -> CatalogueItem:
+        """Return the catalogued object ``name``; raise listing the available ones."""
+        if name not in self.items:
+            raise KeyError(f"unknown tool {name!r}; available tools: {', '.join(self.items)}")
+        return self.items[name]
 
     def with_tool(self, spec: Any, urdf: Path | None = None) -> "World":
         """Return this world with one more available tool (a created one).
 
-        Its catalogue facts, grasp and skills come from ``spec``; its body from ``urdf``
-        (written by :mod:`creative_py.mesh`, link frame = tool frame) when given,
-        otherwise from the spec's parts.
+        Its catalogue facts, grasp and skills come from ``spec`` (its kind); its body
+        from ``urdf`` (written by :mod:`creative_py.mesh`, link frame = tool frame)
+        when given, otherwise from the spec's parts. It takes the friction of the
+        catalogue's first object (the same printed material).
         """
+        from creative_py.sim.tools import tool_kind
+
+        tool_kind(spec)
         if urdf is not None and not Path(urdf).is_file():
             raise FileNotFoundError(f"{urdf}: tool URDF not found")
-        impl = self.impl
-        if hasattr(impl, "tools"):
-            from creative_py.sim.hook_tube import with_tool
-
-            return replace(self, impl=with_tool(impl, spec, urdf))
-        template = next(iter(impl.objects.values()))
-        item = replace(template, spec=spec, set="created",
-                       urdf=None if urdf is None else Path(urdf))
-        return replace(self, impl=replace(impl, objects={**impl.objects, spec.name: item}))
+        friction = next(iter(self.items.values())).friction
+        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
+        return replace(self, items={**self.items, spec.name: item})
 
     def listing(self) -> dict[str, Any]:
-        """Return JSON-ready data: objects (spec fields, set), locations, variants,
-        the default pose and the demonstration."""
-        from creative_py.sim.cases import CASES
-
+        """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created
+        tool), locations, variants, the default pose and the demonstration."""
         m = self.manifest
-        legacy = CASES[m.id].listing(self.impl)
+        objects = {}
+        for n, item in self.items.items():
+            d = asdict(item.spec)
+            d.update(set=item.set, friction=item.friction)
+            if item.urdf is not None:
+                d["urdf"] = str(item.urdf)
+            objects[n] = d
+        pose = dict(zip(m.pose_names, m.demonstration.pose))
         return {
             "case": m.id,
-            "objects": legacy["objects"],
-            "locations": legacy["locations"],
+            "objects": objects,
+            "locations": [{"index": i, **s} for i, s in enumerate(self.location_sets, 1)],
             "variants": {v.name: {"description": v.description, "harder": v.harder,
                                   "set": dict(v.set)} for v in m.variants},
-            "default_pose": dict(zip(m.pose_names, m.demonstration.pose)),
+            "default_pose": pose,
             "demonstration": {"tool": m.demonstration.tool,
                               "variant": m.demonstration.variant,
                               "location": m.demonstration.location,
-                              "steps": list(m.demonstration.steps),
-                              "pose": dict(zip(m.pose_names, m.demonstration.pose))},
+                              "steps": list(m.demonstration.steps), "pose": pose},
         }
 
-    def impl_open(self, variant, location, tool, seed, gui, images_dir):
-        """Return a new scene episode of the underlying world (close it when done)."""
-        from creative_py.sim.cases import CASES
+    def namespace(self, variant: str, location: int, tool: str):
+        """Return the scene values of one episode (variant and location applied)."""
+        from creative_py.sim.scene import Namespace
+        from creative_py.sim.tools import tool_kind
 
-        self.manifest.variant(variant)
-        return CASES[self.manifest.id].open_episode(self.impl, variant, location, tool, seed,
-                                                    gui, images_dir)
+        v = self.manifest.variant(variant)
+        if not (isinstance(location, int) and 1 <= location <= len(self.location_sets)):
+            raise KeyError(f"unknown location {location!r}; locations: "
+                           f"1..{len(self.location_sets)}")
+        spec = self.item(tool).spec
+        ns = Namespace(self.scene.values, {b.name: b.fields for b in self.scene.bodies},
+                       tool_kind(spec).quantities(spec), str(self.directory / "scene.toml"))
+        ns.override(v.set, f"{self.manifest.folder / 'case.toml'}: variant {v.name!r}: set")
+        ns.override(self.location_sets[location - 1],
+                    f"{self.directory / 'tasks.toml'}: location[{location - 1}]: set")
+        return ns
+
+
+def _read_robot(rf: Fields) -> RobotSpec:
+    visuals = rf.bool("visuals", False)
+    speed = rf.float("speed", 0.10, minimum=1e-3)
+    turn = rf.float("turn_speed", 1.0, minimum=1e-3)
+    spw = rf.int("steps_per_waypoint", 4, minimum=1)
+    sf = rf.table("start")
+    start = {"position": sf.raw("position"),
+             "gripper": sf.str("gripper", choices=("forward", "down")),
+             "angle": sf.raw("angle", 0.0)}
+    keep = sf.int("keep", 6, minimum=1)
+    via = None
+    if sf.has("via"):
+        vf = sf.table("via")
+        via = {"position": vf.raw("position"),
+               "gripper": vf.str("gripper", choices=("forward", "down")),
+               "angle": vf.raw("angle", 0.0)}
+        vf.done()
+    sf.done()
+    rf.done()
+    return RobotSpec(visuals, speed, turn, spw, start, via, keep)
+
+
+def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
+    from creative_py.perception.noise import NoiseModel
+    from creative_py.sim.camera import cameras_from_tables
+    from creative_py.sim.scene import read_bodies
+    from creative_py.sim.tools import TOOL_KINDS
+
+    f = Fields(load_toml(path), path)
+    settle = f.float("settle_time", minimum=0.0)
+    robot = _read_robot(f.table("robot"))
+    vf = f.table("values", {})
+    values = dict(vf.data)
+    for k in values:
+        vf.raw(k)
+    vf.done()
+    bodies = read_bodies(f.tables("body"))
+    tf = f.table("tool_start")
+    tool_start: dict[str, Any] = {}
+    for kind in sorted(kinds):
+        for name, default in TOOL_KINDS[kind].START_FIELDS.items():
+            if name not in tool_start:
+                tool_start[name] = tf.raw(name) if default is None else tf.raw(name, default)
+    tf.done()
+    pf = f.table("perception")
+    try:
+        noise = NoiseModel(depth_sigma_m=pf.float("depth_sigma_m", minimum=0.0),
+                           dropout=pf.float("dropout", minimum=0.0, maximum=0.99))
+    except ValueError as exc:
+        raise WorldFileError(f"{path}: [perception]: {exc}") from None
+    perceived = []
+    for of in pf.tables("object", []):
+        perceived.append(PerceivedObject(of.str("object"), of.raw("support_z", None)))
+        of.done()
+    pf.done()
+    try:
+        cameras = cameras_from_tables(f.raw("camera", []), str(path))
+    except (ValueError, TypeError) as exc:
+        raise WorldFileError(str(exc)) from None
+    f.done()
+    return SceneSpec(settle, robot, values, bodies, tool_start, noise, tuple(perceived),
+                     cameras)
+
+
+def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
+    from creative_py.mesh.spec import spec_from_dict
+    from creative_py.sim.tools import TOOL_KINDS
+
+    f = Fields(load_toml(path), path)
+    items: dict[str, CatalogueItem] = {}
+    for tf in f.tables(table):
+        data = dict(tf.data)
+        obj_set = tf.str("set")
+        friction = tf.float("friction", 0.5, minimum=0.0)
+        data.pop("set")
+        data.pop("friction", None)
+        try:
+            spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
+        except ValueError as exc:
+            raise WorldFileError(str(exc)) from None
+        if spec.kind not in TOOL_KINDS:
+            raise tf.error("kind", f"the simulator has no tool kind {spec.kind!r}")
+        if spec.name in items:
+            raise tf.error("name", f"object name {spec.name!r} is used twice")
+        items[spec.name] = CatalogueItem(spec, obj_set, friction)
+    f.done()
+    if not items:
+        raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")
+    return items
+
+
+def _read_tasks(path: Path):
+    from creative_py.sim.oracles import ORACLES, OracleSpec
+
+    f = Fields(load_toml(path), path)
+    locations = []
+    for lf in f.tables("location"):
+        values = lf.raw("set", {})
+        if not isinstance(values, dict):
+            raise lf.error("set", "must be a table of scene values")
+        lf.str("description", "")
+        lf.done()
+        locations.append(dict(values))
+    if not locations:
+        raise f.error("location", "at least one [[location]] is needed")
+    of = f.table("oracle")
+    kind = of.str("kind", choices=tuple(ORACLES))
+    options = {}
+    for name, default in ORACLES[kind].options.items():
+        options[name] = of.raw(name) if default is None else of.raw(name, default)
+    of.done()
+    f.done()
+    return tuple(locations), OracleSpec(kind, options)
+
+
+def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
+    from creative_py.sim.primitives import PRIMITIVES, REQUIRED
+
+    path = manifest.folder / "case.toml"
+    out = {}
+    for i, s in enumerate(manifest.skills):
+        where = f"{path}: field 'skill[{i}]"
+        if s.primitive not in PRIMITIVES:
+            raise WorldFileError(f"{where}.primitive': unknown primitive {s.primitive!r}; "
+                                 f"primitives: {', '.join(PRIMITIVES)}")
+        known = PRIMITIVES[s.primitive].options
+        for name in s.options:
+            if name not in known:
+                raise WorldFileError(f"{where}.options.{name}': unknown option of "
+                                     f"{s.primitive}; options: {', '.join(known)}")
+        options = {}
+        for name, default in known.items():
+            if name in s.options:
+                options[name] = s.options[name]
+            elif default is not REQUIRED:
+                options[name] = default
+        out[s.name] = SkillSpec(s.name, s.primitive, options)
+    return out
 
 
 def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
     """Return the world of ``manifest`` read from ``world_dir`` (default: its folder).
 
-    Errors name the world file and the field (:class:`creative_py.world.WorldFileError`).
+    Errors name the world file and the field (:class:`creative_py.world.WorldFileError`):
+    a missing file or field, a wrong type, an unknown field (with a suggestion), an
+    expression that does not resolve in some variant or location.
     """
-    from creative_py.sim.cases import CASES
-
     d = Path(world_dir) if world_dir is not None else Path(manifest.folder)
-    return World(manifest, CASES[manifest.id].load_world(d))
+    p = world_file(d, "physics.toml")
+    pf = Fields(load_toml(p), p)
+    rest = read_physics(pf)
+    arm = rest
+    if pf.has("arm"):
+        af = pf.table("arm")
+        arm = PhysicsSettings(time_step=af.float("time_step", minimum=1e-5, maximum=0.1),
+                              solver_iterations=af.int("solver_iterations", minimum=1),
+                              gravity=rest.gravity)
+        af.done()
+    pf.done()
+    items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
+    scene = _read_scene(world_file(d, "scene.toml"), {i.spec.kind for i in items.values()})
+    locations, oracle = _read_tasks(world_file(d, "tasks.toml"))
+    world = World(manifest, d, {"rest": rest, "arm": arm}, scene, items, locations, oracle,
+                  _read_skills(manifest))
+    demo = manifest.demonstration
+    case_file = manifest.folder / "case.toml"
+    if demo.tool not in items:
+        raise WorldFileError(f"{case_file}: field 'demonstration.tool': must be one of "
+                             f"{', '.join(items)}, got {demo.tool!r}")
+    if demo.location > len(locations):
+        raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
+                             f"{len(locations)} (tasks.toml has {len(locations)} locations), "
+                             f"got {demo.location}")
+    for v in manifest.variants:
+        for loc in world.locations:
+            check_values(world, v.name, loc, demo.tool)
+    return world
+
+
+def check_values(world: World, variant: str, location: int, tool: str) -> None:
+    """Resolve every scene value of one episode; raise :class:`WorldFileError` if one fails."""
+    from creative_py.sim.scene import make_bodies
+
+    ns = world.namespace(variant, location, tool)
+    bodies = make_bodies(world.scene.bodies, ns)
+    resolve_start(world, ns)
+    for s in world.skills.values():
+        resolve_options(s.options, ns, f"skill {s.name} options")
+    resolve_options(world.oracle.options, ns, "oracle", words=_oracle_words(world))
+    for p in world.scene.perceived:
+        if p.support_z is not None:
+            ns.evaluate(p.support_z, f"perception.object {p.name} support_z")
+        object_name(world.manifest, p.name, tool)
+    for role in _ROLES[1:]:
+        name = getattr(world.manifest, role)
+        if name not in bodies:
+            raise WorldFileError(f"{world.directory / 'scene.toml'}: the {role} "
+                                 f"{name!r} of case.toml is not a [[body]] of the scene")
+
+
+def _oracle_words(world: World) -> set[str]:
+    from creative_py.sim.oracles import ORACLES
+
+    o = ORACLES[world.oracle.kind]
+    return {o.subject, "axis", "fact"}
+
+
+def resolve_start(world: World, ns) -> dict[str, Any]:
+    """Return the tool's start fields resolved (numbers, tuples, tables as written)."""
+    return {k: ns.evaluate(v, f"tool_start.{k}") for k, v in world.scene.tool_start.items()}
+
+
+def resolve_options(options: Mapping[str, Any], ns, where: str,
+                    words: set[str] = frozenset()) -> dict[str, Any]:
+    """Return ``options`` with numbers and expressions resolved (``words`` left as text)."""
+    return {k: (v if k in words else ns.evaluate(v, f"{where}: {k}"))
+            for k, v in options.items()}
+
+
+def object_name(manifest: CaseManifest, name: str, tool: str) -> str:
+    """Return the object a role (``tool``, ``target``, ``context``) or a name denotes."""
+    return manifest.role_object(name, tool) if name in _ROLES else name

@@ -1,4 +1,4 @@
-"""Perception inside the real worlds, through their own loaders and observe()."""
+"""Perception inside the real worlds, through the generic simulator's observe()."""
 
 from __future__ import annotations
 
@@ -9,23 +9,26 @@ import pytest
 pytestmark = pytest.mark.sim
 
 
+def _world(case):
+    from creative_py.case import get_case
+    from creative_py.sim import load_world
+
+    return load_world(get_case(case))
+
+
 @pytest.fixture(scope="module")
 def hook_world():
-    from creative_py.sim.hook_tube import load_hook_world
-
-    return load_hook_world()
+    return _world("hook")
 
 
 @pytest.mark.parametrize("location", [1, 2, 3, 4])
 def test_hook_world_observation_places_the_cube_within_2_mm(hook_world, angle_error, location):
-    from creative_py.sim.hook_tube import open_hook_episode
+    from creative_py.sim import open_episode
 
-    ep = open_hook_episode(hook_world, "standard", location, hook_world.demonstration.tool, seed=3)
-    try:
+    m = hook_world.manifest
+    with open_episode(hook_world, "standard", location, m.demonstration.tool, seed=3) as ep:
         obs = ep.observe()
-    finally:
-        ep.close()
-    name = hook_world.cube.name
+    name = m.target
     x, y, z, yaw = obs.perceived_poses()[name]
     tx, ty, tz, tyaw = obs.truth[name]
     # bench/perception_error.py: 0.6 mm mean, 1.5 mm worst (one pixel is 3.1 mm here),
@@ -39,9 +42,7 @@ def test_hook_world_observation_places_the_cube_within_2_mm(hook_world, angle_er
 
 @pytest.fixture(scope="module")
 def wedge_world():
-    from creative_py.sim.wedge_door import load_wedge_world
-
-    return load_wedge_world()
+    return _world("wedge")
 
 
 # Door-relative placements (r m, gap m, yaw rad): tip towards the door, and reversed.
@@ -50,19 +51,12 @@ WEDGE_PLACES = [(0.55, 0.02, 0.0), (0.45, 0.10, math.pi)]
 
 @pytest.mark.parametrize("name", ["wedge_a2", "wedge_b1"])
 def test_wedge_world_observation_finds_the_tip_direction(wedge_world, angle_error, name):
-    import pybullet as pb
+    from creative_py.sim import open_episode
 
-    from creative_py.sim.bodies import set_frame_pose
-    from creative_py.sim.wedge_door import WedgePose, open_wedge_episode, place_from_pose
-
-    spec = wedge_world.object(name).spec
-    ep = open_wedge_episode(wedge_world, wedge_world.default_variant, 1, name, seed=5)
-    try:
+    place = wedge_world.manifest.demonstration.steps[1]
+    with open_episode(wedge_world, "standard", 1, name, seed=5, robot=False) as ep:
         for pose in WEDGE_PLACES:
-            x, y, yaw = place_from_pose(wedge_world.door, ep.door_angle(), spec.length,
-                                        WedgePose(*pose))
-            set_frame_pose(ep.sim, ep.body, ((x, y, wedge_world.stage.top_z),
-                                             pb.getQuaternionFromEuler((0, 0, yaw))))
+            assert ep.run_skill(place, pose, by_hand=True).ok
             obs = ep.observe()
             px, py, pz, pyaw = obs.perceived_poses()[name]
             tx, ty, tz, tyaw = obs.truth[name]
@@ -71,5 +65,3 @@ def test_wedge_world_observation_finds_the_tip_direction(wedge_world, angle_erro
             assert abs(math.degrees(angle_error(pyaw, tyaw, 2 * math.pi))) < 6.0
             assert math.hypot(px - tx, py - ty) < 0.003
             assert abs(pz - tz) < 0.003
-    finally:
-        ep.close()

@@ -9,7 +9,8 @@ from creative_py.mesh.spec import Box, HookSpec
 from creative_py.sim.baxter import Baxter, baxter_urdf
 from creative_py.sim.bodies import Surface, frame_pose, spawn_parts, spawn_spec
 from creative_py.sim.core import Sim
-from creative_py.sim.hook_tube import gripper_orientation, tool_in_gripper
+from creative_py.sim.baxter import gripper_forward as gripper_orientation
+from creative_py.sim.tools import tool_in_gripper
 from creative_py.world import PhysicsSettings
 
 pytestmark = pytest.mark.sim

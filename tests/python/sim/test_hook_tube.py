@@ -9,12 +9,10 @@ import math
 import pytest
 
 from creative_py.mesh.spec import HookSpec
-from creative_py.sim.hook_tube import (HookPose, catalogue_facts, prong_centre, roll_of,
-                                       tool_orientation)
-from creative_py.sim.trial import TRIAL_OUTCOMES, open_episode
+from creative_py.sim import TRIAL_OUTCOMES, open_episode, run_trial
+from creative_py.sim.tools import catalogue_facts, prong_centre, roll_of, tool_orientation
 
-from _hook_runs import hook_trial, hook_world
-
+from _hook_runs import hook_trial, hook_world, tube
 
 
 @pytest.mark.parametrize("side", ["left", "right", "none"])
@@ -39,11 +37,11 @@ def test_roll_zero_points_the_prong_down_and_half_pi_to_the_left():
 
 def test_catalogue_facts_follow_the_vocabulary():
     w = hook_world()
-    facts = catalogue_facts(w.tool("hook_a2"))
+    facts = catalogue_facts(w.catalogue["hook_a2"])
     assert ("object_kind", "hook_a2", "hook") in facts
     assert ("handle_length_m", "hook_a2", 0.35) in facts
     assert ("hook_side_is", "hook_a2", "right") in facts
-    stick = catalogue_facts(w.tool("stick_a5"))
+    stick = catalogue_facts(w.catalogue["stick_a5"])
     assert ("object_kind", "stick_a5", "stick") in stick
     assert ("hook_side_is", "stick_a5", "none") in stick
 
@@ -51,7 +49,7 @@ def test_catalogue_facts_follow_the_vocabulary():
 @pytest.mark.sim
 def test_observe_gives_perceived_cube_proprioception_and_catalogue():
     w = hook_world()
-    with open_episode("hook", w, "standard", 2, "hook_b2", seed=0) as ep:
+    with open_episode(w, "standard", 2, "hook_b2", seed=0) as ep:
         obs = ep.observe()
         names = {f[0] for f in obs.facts}
         assert {"pose", "size", "tube_mouth", "tube_length_m", "tube_inner_m",
@@ -62,8 +60,8 @@ def test_observe_gives_perceived_cube_proprioception_and_catalogue():
         assert math.dist(seen[:3], true[:3]) < 0.004  # perception, not ground truth
         assert seen != true
         assert len(obs.frames) == 1
-        assert sum(1 for f in obs.facts if f[0] == "object_kind") == len(w.tools)
-        assert ep.pick_up().ok
+        assert sum(1 for f in obs.facts if f[0] == "object_kind") == len(w.catalogue)
+        assert ep.run_skill("pick_up").ok
         obs = ep.observe()
         assert ("held", "hook_b2") in obs.facts
         roll = next(f[2] for f in obs.facts if f[0] == "tool_roll")
@@ -74,7 +72,7 @@ def test_observe_gives_perceived_cube_proprioception_and_catalogue():
 def test_medium_handle_succeeds_in_the_standard_tube():
     r = hook_trial("hook_a2", "standard", 1)
     assert r.outcome == "success", r.reason
-    assert r.true_final["cube1"][0] < hook_world().tube.mouth_x
+    assert r.true_final["cube1"][0] < tube(hook_world()).mouth_x
     assert r.perceived_final is not None and "cube1" in r.perceived_final
 
 
@@ -82,7 +80,7 @@ def test_medium_handle_succeeds_in_the_standard_tube():
 def test_short_handle_cannot_reach_behind_the_cube():
     r = hook_trial("hook_a1", "standard", 1)
     assert r.outcome in ("blocked", "failure"), r
-    assert r.true_final["cube1"][0] > hook_world().tube.mouth_x
+    assert r.true_final["cube1"][0] > tube(hook_world()).mouth_x
 
 
 @pytest.mark.sim
@@ -98,15 +96,13 @@ def test_medium_handle_fails_in_the_long_tube_and_a_long_one_succeeds():
 def test_wrong_pose_fails(pose):
     r = hook_trial("hook_a2", "standard", 1, pose)
     assert r.outcome == "failure", r
-    assert r.true_final["cube1"][0] > hook_world().tube.mouth_x
+    assert r.true_final["cube1"][0] > tube(hook_world()).mouth_x
 
 
 @pytest.mark.sim
 def test_same_seed_same_result_bit_for_bit():
-    from creative_py.sim.trial import run_trial
-
     first = hook_trial("hook_a2", "standard", 1)
-    again = run_trial("hook", hook_world(), "hook_a2", "standard", 1, seed=0)
+    again = run_trial(hook_world(), "hook_a2", "standard", 1, seed=0)
     assert again.outcome == first.outcome
     assert again.true_final == first.true_final
     assert again.perceived_final == first.perceived_final
@@ -118,39 +114,50 @@ def test_same_seed_same_result_bit_for_bit():
 @pytest.mark.parametrize("variant", ["standard", "long_tube"])
 def test_full_table_every_trial_has_a_physical_outcome(variant):
     w = hook_world()
-    for tool in w.tools:
-        for loc in range(1, len(w.locations) + 1):
+    for tool in w.catalogue:
+        for loc in w.locations:
             r = hook_trial(tool, variant, loc)
             assert r.outcome in TRIAL_OUTCOMES
-            if w.tools[tool].is_stick:
+            if w.catalogue[tool].is_stick:
                 assert r.outcome != "success", (tool, variant, loc)
             assert r.to_json()
 
 
-def test_hook_pose_is_a_plain_triple():
-    assert tuple(HookPose(0.03, 0.0, 0.0)) == (0.03, 0.0, 0.0)
+@pytest.mark.sim
+def test_the_pose_skill_needs_its_numbers():
+    w = hook_world()
+    with open_episode(w, "standard", 1, "hook_a2") as ep:
+        with pytest.raises(ValueError, match="needs the pose numbers"):
+            ep.run_skill("position_tool")
+        with pytest.raises(ValueError, match="finite"):
+            ep.run_skill("position_tool", pose=(math.nan, 0.0, 0.0))
+
+
+@pytest.mark.sim
+def test_positioning_without_a_held_tool_is_blocked():
+    w = hook_world()
+    with open_episode(w, "standard", 1, "hook_a2") as ep:
+        res = ep.run_skill("position_tool", pose=(0.03, 0.0, 0.0))
+        assert res.status == "blocked" and "position_tool: no tool is held" in res.reason
 
 
 def _created_world(tmp_path):
     from creative_py.mesh.export import write_tool_files
-    from creative_py.sim.hook_tube import with_tool
 
     spec = HookSpec("hook_new1", 0.55, handle_width=0.01, hook_length=0.035, hook_width=0.012)
     files = write_tool_files(spec, tmp_path, picture=False)
-    return with_tool(hook_world(), spec, files.urdf), files
+    return hook_world().with_tool(spec, files.urdf), files
 
 
 @pytest.mark.sim
 def test_a_created_tool_is_spawned_from_its_urdf_and_listed(tmp_path):
-    from creative_py.sim.trial import list_case
-
     world, files = _created_world(tmp_path)
-    listing = list_case("hook", world)
+    listing = world.listing()
     assert listing["objects"]["hook_new1"]["set"] == "created"
     assert listing["objects"]["hook_new1"]["urdf"] == str(files.urdf)
-    with open_episode("hook", world, "long_tube", 1, "hook_new1") as ep:
-        assert ep.pick_up().ok
-        tip = ep.tip_position()  # proprioception: FK + the known grasp
+    with open_episode(world, "long_tube", 1, "hook_new1") as ep:
+        assert ep.run_skill("pick_up").ok
+        tip = next(f[2:5] for f in ep.observe().facts if f[0] == "tip_position")
         import pybullet as pb
         from creative_py.sim.bodies import frame_pose
         pos, quat = frame_pose(ep.sim, ep.tool_body)
@@ -161,8 +168,6 @@ def test_a_created_tool_is_spawned_from_its_urdf_and_listed(tmp_path):
 @pytest.mark.slow
 @pytest.mark.sim
 def test_a_created_long_hook_pulls_the_cube_from_the_long_tube(tmp_path):
-    from creative_py.sim.trial import run_trial
-
     world, _ = _created_world(tmp_path)
-    r = run_trial("hook", world, "hook_new1", "long_tube", 1)
+    r = run_trial(world, "hook_new1", "long_tube", 1)
     assert r.outcome == "success", r.reason
