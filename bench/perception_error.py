@@ -1,11 +1,14 @@
 """Measure perception error and render time; record them in bench/results/perception.json.
 
-Hook: every variant and cube location of ``worlds/hook_tube``, built by the world's own
-loader (:mod:`creative_py.sim.hook_tube`), seen by its downward camera. Wedge: every object
-of ``worlds/wedge_door`` in an episode of that world (:mod:`creative_py.sim.wedge_door`),
-put at door-relative placements and seen by its downward and side cameras. Each view is estimated
-without noise and with the world's ``[perception]`` depth noise over several seeds.
-Ground truth comes from pybullet and is used only here, to measure the error.
+For every case (``worlds/*/case.toml``), every variant and location is built by the
+generic simulator (:mod:`creative_py.sim`) and each object its cameras track
+(``[[perception.object]]`` of ``scene.toml``) is measured: a scene body as it lies and
+turned by a random yaw in place; a tracked tool, for every catalogued tool, put by hand
+at the demonstration's pose and at poses around it (when the pose skill can be done
+by hand). Each view is estimated as the episode estimates it (support and known
+height), without noise, with the first camera alone, and with the world's
+``[perception]`` depth noise over several seeds. Ground truth comes from pybullet and
+is used only here, to measure the error.
 
     .venv/bin/python bench/perception_error.py [--seeds 5] [--out bench/results/perception.json]
 """
@@ -24,7 +27,6 @@ from pathlib import Path
 import numpy as np
 import pybullet as pb
 
-from creative_py.mesh.spec import BlockSpec
 from creative_py.perception import estimate_objects
 from creative_py.sim.bodies import frame_pose, set_frame_pose
 from creative_py.sim.camera import CameraSpec, capture
@@ -40,11 +42,13 @@ def angle_diff(a: float, b: float, period: float) -> float:
     return (a - b + period / 2) % period - period / 2
 
 
-def errors(est, truth, spec: BlockSpec) -> dict:
-    """Return the position (mm), height (mm), heading (deg) and size (mm) errors."""
+def errors(est, truth, size: tuple[float, float, float]) -> dict:
+    """Return the position (mm), height (mm), heading (deg) and size (mm) errors.
+
+    ``size`` is the object's true extents along its own x, y, z (m).
+    """
     x, y, z, yaw = truth
     period = SYMMETRY_PERIOD[est.symmetry]
-    size = (spec.length, spec.width, spec.height)
     return {
         "xy_mm": 1000 * math.hypot(est.x - x, est.y - y),
         "z_mm": 1000 * (est.z - z),
@@ -70,125 +74,118 @@ def summarise(rows: list[dict]) -> dict:
             "size_mm_mean": statistics.fmean(size), "size_mm_worst": max(size)}
 
 
-def run_hook(seeds: int) -> dict:
-    """Measure the cube's perception error in the hook world's episodes.
-
-    Every variant and location of ``worlds/hook_tube`` is built by the world's own loader
-    (Baxter, table, riser, tube, the cube settled for 60 steps); the cube is seen as it
-    lies (yaw 0) and turned by a random yaw in place. The estimate is called as the
-    episode calls it (known cube height), without and with the world's depth noise.
-    """
-    from creative_py.sim.hook_tube import load_hook_world, open_hook_episode
-
-    world = load_hook_world()
-    name = world.cube.name
-    spec = BlockSpec(name, "box", world.cube.size, world.cube.size, world.cube.size)
-    tool = world.demonstration.tool
-    rows: dict[str, list] = {"noise_free": [], "noisy": []}
-    rng_yaw = np.random.default_rng(0)
-    for variant in world.variants:
-        for location in range(1, len(world.locations) + 1):
-            ep = open_hook_episode(world, variant, location, tool, seed=0)
-            try:
-                pos, _ = frame_pose(ep.sim, ep.cube_body)
-                for yaw in (None, float(rng_yaw.uniform(-0.6, 0.6))):
-                    if yaw is not None:
-                        set_frame_pose(ep.sim, ep.cube_body,
-                                       (pos, pb.getQuaternionFromEuler((0, 0, yaw))))
-                    truth = ep.truth()[name]
-                    frames = [capture(ep.sim.client, c) for c in world.cameras]
-                    bodies, known = {name: ep.cube_body}, {name: world.cube.size}
-                    base = {"variant": variant, "location": location, "true_yaw": truth[3]}
-                    est = estimate_objects(frames, bodies, heights=known)
-                    rows["noise_free"].append({**base, **errors(est[name], truth, spec)})
-                    for seed in range(seeds):
-                        est = estimate_objects(frames, bodies, world.noise,
-                                               np.random.default_rng(seed), heights=known)
-                        rows["noisy"].append({**base, "seed": seed,
-                                              **errors(est[name], truth, spec)})
-            finally:
-                ep.close()
-    cam = world.cameras[0]
-    return {"scene": "worlds/hook_tube via creative_py.sim.hook_tube (every variant and location)",
-            "cameras": [c.name for c in world.cameras], "resolution": [cam.width, cam.height],
-            "noise": {"depth_sigma_m": world.noise.depth_sigma_m, "dropout": world.noise.dropout},
-            "noise_free": summarise(rows["noise_free"]), "noisy": summarise(rows["noisy"]),
-            "rows": rows}
+def _true_size(ep, name: str) -> tuple[float, float, float] | None:
+    """Return the object's true extents (m) along its own axes, or None if unknown."""
+    if name == ep.spec.name:
+        spec = ep.spec
+        if all(hasattr(spec, a) for a in ("length", "width", "height")):
+            return (spec.length, spec.width, spec.height)
+        return None
+    size = getattr(ep.bodies[name], "size", None)
+    return None if size is None else tuple(size)
 
 
-WEDGE_POSES = [(0.55, 0.02, 0.0), (0.45, 0.05, 0.25), (0.65, 0.10, -0.25), (0.35, 0.0, 0.0),
-               (0.60, 0.30, 0.1), (0.50, 0.05, math.pi), (0.40, 0.15, -0.3)]
-"""Door-relative placements (r m, gap m, yaw rad) like those the experiments ask for."""
+def _views(ep, world, name: str, size, seeds: int, base: dict, rows: dict) -> None:
+    """Estimate ``name`` in the current scene as the episode does; append the errors."""
+    support = {n: z for n, z in ep.perceived if z is not None and n == name}
+    height = ep.kind.height(ep.spec) if name == ep.spec.name else ep.bodies[name].height
+    known = {} if height is None else {name: height}
+    bodies = {name: ep._body_id(name)}
+    truth = ep.truth()[name]
+    cams = world.scene.cameras
+    frames = [capture(ep.sim.client, c) for c in cams]
+    est = estimate_objects(frames, bodies, support_z=support, heights=known)
+    if name not in est:
+        rows["unseen"].append(base)
+        return
+    rows["noise_free"].append({**base, **errors(est[name], truth, size)})
+    if len(frames) > 1:
+        est = estimate_objects(frames[:1], bodies, support_z=support, heights=known)
+        if name in est:
+            rows["top_only"].append({**base, **errors(est[name], truth, size)})
+    for seed in range(seeds):
+        est = estimate_objects(frames, bodies, world.scene.noise, np.random.default_rng(seed),
+                               support_z=support, heights=known)
+        if name in est:
+            rows["noisy"].append({**base, "seed": seed, **errors(est[name], truth, size)})
 
 
-def run_wedge(seeds: int) -> dict:
-    """Measure object errors at door-relative placements in the wedge world's episodes.
+def _poses_around(manifest, n: int, rng) -> list[tuple[float, ...]]:
+    """Return the demonstration's pose and ``n`` poses around it (15 % of each range)."""
+    demo = manifest.demonstration.pose
+    out = [tuple(demo)]
+    for _ in range(n):
+        pose = []
+        for p, v in zip(manifest.pose_params, demo):
+            span = 0.15 * (p.max - p.min)
+            pose.append(float(min(p.max, max(p.min, v + rng.uniform(-span, span)))))
+        out.append(tuple(pose))
+    return out
 
-    Each object of ``worlds/wedge_door`` gets its own episode (stage, door held open,
-    Baxter parked at its retreat pose) built by the world's loader; the object is put on
-    the stage at each of :data:`WEDGE_POSES` (converted with the world's own
-    ``place_from_pose``) and seen by both cameras, by the downward camera alone, and with
-    the world's depth noise. The estimate is called as the episode calls it (support at
-    the stage top, known height).
-    """
-    from creative_py.sim.wedge_door import WedgePose, load_wedge_world, open_wedge_episode, place_from_pose
 
-    world = load_wedge_world()
-    top_z = world.stage.top_z
-    rows: dict[str, list] = {"noise_free": [], "noisy": [], "top_only": []}
-    for name, item in world.objects.items():
-        spec = item.spec
-        ep = open_wedge_episode(world, world.default_variant, 1, name, seed=0)
-        try:
-            angle = ep.door_angle()
-            for pose in WEDGE_POSES:
-                x, y, yaw = place_from_pose(world.door, angle, spec.length, WedgePose(*pose))
-                set_frame_pose(ep.sim, ep.body, ((x, y, top_z), pb.getQuaternionFromEuler((0, 0, yaw))))
-                truth = ep.truth()[name]
-                frames = [capture(ep.sim.client, c) for c in world.cameras]
-                bodies, sup, known = {name: ep.body}, {name: top_z}, {name: spec.height}
-                base = {"object": name, "shape": spec.shape, "pose": list(pose)}
-                est = estimate_objects(frames, bodies, support_z=sup, heights=known)
-                if name not in est:
-                    rows["noise_free"].append({**base, "unseen": True})
-                    continue
-                rows["noise_free"].append({**base, **errors(est[name], truth, spec)})
-                est = estimate_objects(frames[:1], bodies, support_z=sup, heights=known)
-                if name in est:
-                    rows["top_only"].append({**base, **errors(est[name], truth, spec)})
-                for seed in range(seeds):
-                    est = estimate_objects(frames, bodies, world.noise, np.random.default_rng(seed),
-                                           support_z=sup, heights=known)
-                    rows["noisy"].append({**base, "seed": seed, **errors(est[name], truth, spec)})
-        finally:
-            ep.close()
-    unseen = [r for r in rows["noise_free"] if r.get("unseen")]
-    rows = {k: [r for r in v if not r.get("unseen")] for k, v in rows.items()}
-    wedges = {k: [r for r in v if r["shape"] == "triangular_prism"] for k, v in rows.items()}
-    tip_wrong = sum(1 for v in wedges.values() for r in v if r["yaw_deg"] > 90)
-    cam = world.cameras[0]
-    return {"scene": "worlds/wedge_door via creative_py.sim.wedge_door (door open, Baxter parked)",
-            "cameras": [c.name for c in world.cameras], "resolution": [cam.width, cam.height],
-            "noise": {"depth_sigma_m": world.noise.depth_sigma_m, "dropout": world.noise.dropout},
-            "objects": list(world.objects), "poses": WEDGE_POSES,
-            "unseen": unseen, "tip_direction_wrong": tip_wrong,
-            "all_objects": {k: summarise(v) for k, v in rows.items()},
-            "wedges_only": {k: summarise(v) for k, v in wedges.items()},
-            "rows": rows}
+def run_case(manifest, seeds: int) -> dict:
+    """Measure every tracked object of one case's world (see the module docstring)."""
+    from creative_py.sim import load_world, open_episode
+    from creative_py.sim.primitives import PRIMITIVES
+
+    world = load_world(manifest)
+    pose_skill = next(s for s in manifest.skills if s.pose)
+    by_hand = "by_hand" in PRIMITIVES[world.skills[pose_skill.name].primitive].options
+    tracks_tool = any(p.name == "tool" for p in world.scene.perceived)
+    tools = list(world.catalogue) if tracks_tool else [manifest.demonstration.tool]
+    rng = np.random.default_rng(0)
+    rows: dict[str, list] = {"noise_free": [], "noisy": [], "top_only": [], "unseen": []}
+    for variant in manifest.variant_names:
+        for location in world.locations:
+            for tool in tools:
+                with open_episode(world, variant, location, tool, seed=0,
+                                  robot=not by_hand) as ep:
+                    for name, _ in ep.perceived:
+                        size = _true_size(ep, name)
+                        if size is None:
+                            continue
+                        base = {"variant": variant, "location": location, "object": name}
+                        if name == ep.spec.name:
+                            if not by_hand:
+                                _views(ep, world, name, size, seeds, base, rows)
+                                continue
+                            for pose in _poses_around(manifest, 4, rng):
+                                if ep.run_skill(pose_skill.name, pose, by_hand=True).ok:
+                                    _views(ep, world, name, size, seeds,
+                                           {**base, "pose": list(pose)}, rows)
+                            continue
+                        _views(ep, world, name, size, seeds, base, rows)
+                        body = ep._body_id(name)
+                        pos, _ = frame_pose(ep.sim, body)
+                        yaw = float(rng.uniform(-0.6, 0.6))
+                        set_frame_pose(ep.sim, body, (pos, pb.getQuaternionFromEuler((0, 0, yaw))))
+                        _views(ep, world, name, size, seeds, {**base, "turned": yaw}, rows)
+    cam = world.scene.cameras[0]
+    noise = world.scene.noise
+    return {"world": str(world.directory.name), "cameras": [c.name for c in world.scene.cameras],
+            "resolution": [cam.width, cam.height],
+            "noise": {"depth_sigma_m": noise.depth_sigma_m, "dropout": noise.dropout},
+            "unseen": rows.pop("unseen"),
+            "tip_direction_wrong": sum(1 for v in rows.values() for r in v
+                                       if r["yaw_deg"] is not None and r["yaw_deg"] > 90),
+            **{k: summarise(v) for k, v in rows.items() if v}, "rows": rows}
 
 
 def render_times(repeats: int) -> dict:
-    """Return ms per frame of the hook world's camera at three resolutions (CPU renderer).
+    """Return ms per frame of the first case's first camera at three resolutions.
 
-    The scene is a hook episode (Baxter without visuals, table, tube, cube, tool).
+    The scene is that case's demonstration scene (Baxter without visuals); the
+    estimate time is for every tracked object in a 320 x 240 view.
     """
-    from creative_py.sim.hook_tube import load_hook_world, open_hook_episode
+    from creative_py.case import load_cases
+    from creative_py.sim import load_world, open_episode
 
-    world = load_hook_world()
-    cam = world.cameras[0]
-    out = {}
-    ep = open_hook_episode(world, "standard", 1, world.demonstration.tool)
-    try:
+    manifest = load_cases()[sorted(load_cases())[0]]
+    world = load_world(manifest)
+    cam = world.scene.cameras[0]
+    demo = manifest.demonstration
+    out = {"case": manifest.id}
+    with open_episode(world, demo.variant, demo.location, demo.tool) as ep:
         for w, h in ((160, 120), (320, 240), (640, 480)):
             spec = CameraSpec(cam.name, cam.eye, cam.target, cam.up, cam.fov_deg, w, h,
                               cam.near, cam.far)
@@ -196,13 +193,10 @@ def render_times(repeats: int) -> dict:
             times = [capture(ep.sim.client, spec).render_time_s for _ in range(repeats)]
             frame = capture(ep.sim.client, spec)
             t0 = time.perf_counter()
-            estimate_objects([frame], {world.cube.name: ep.cube_body},
-                             heights={world.cube.name: world.cube.size})
+            estimate_objects([frame], {n: ep._body_id(n) for n, _ in ep.perceived})
             out[f"{w}x{h}"] = {"render_ms_median": 1000 * statistics.median(times),
                                "render_ms_worst": 1000 * max(times),
                                "estimate_ms": 1000 * (time.perf_counter() - t0)}
-    finally:
-        ep.close()
     return out
 
 
@@ -214,27 +208,29 @@ def main() -> None:
     parser.add_argument("--out", type=Path, default=ROOT / "bench/results/perception.json")
     args = parser.parse_args()
     logging.basicConfig(level=logging.INFO, format="%(message)s")
+    from creative_py.case import load_cases
+
     t0 = time.perf_counter()
-    result = {"hook": run_hook(args.seeds), "wedge": run_wedge(args.seeds),
-              "render": render_times(args.repeats),
-              "machine": {"python": platform.python_version(), "processor": platform.machine(),
-                          "pybullet": pb.getAPIVersion()},
-              "wall_time_s": 0.0}
+    result = {cid: run_case(m, args.seeds) for cid, m in sorted(load_cases().items())}
+    result["render"] = render_times(args.repeats)
+    result["machine"] = {"python": platform.python_version(), "processor": platform.machine(),
+                         "pybullet": pb.getAPIVersion()}
     result["wall_time_s"] = time.perf_counter() - t0
     args.out.parent.mkdir(parents=True, exist_ok=True)
     args.out.write_text(json.dumps(result, indent=1) + "\n")
-    h, w = result["hook"], result["wedge"]
-    log.info("hook cube, noise-free: %.2f mm mean, %.2f mm worst, %.2f deg worst",
-             h["noise_free"]["xy_mm_mean"], h["noise_free"]["xy_mm_worst"],
-             h["noise_free"]["yaw_deg_worst"])
-    log.info("hook cube, noisy: %.2f mm mean, %.2f mm worst, %.2f deg worst",
-             h["noisy"]["xy_mm_mean"], h["noisy"]["xy_mm_worst"], h["noisy"]["yaw_deg_worst"])
-    for k, v in w["all_objects"].items():
-        log.info("wedge scene, %s: %.2f mm mean, %.2f mm worst, %.2f deg worst", k,
-                 v["xy_mm_mean"], v["xy_mm_worst"], v["yaw_deg_worst"])
-    log.info("wedge tip direction wrong: %d", w["tip_direction_wrong"])
+    for cid, r in result.items():
+        if not isinstance(r, dict) or "noise_free" not in r:
+            continue
+        for k in ("noise_free", "top_only", "noisy"):
+            if k in r:
+                v = r[k]
+                log.info("%s, %s: %.2f mm mean, %.2f mm worst, %s deg worst", cid, k,
+                         v["xy_mm_mean"], v["xy_mm_worst"], v["yaw_deg_worst"])
+        log.info("%s: tip direction wrong %d, unseen %d", cid, r["tip_direction_wrong"],
+                 len(r["unseen"]))
     for k, v in result["render"].items():
-        log.info("render %s: %.1f ms median", k, v["render_ms_median"])
+        if isinstance(v, dict):
+            log.info("render %s: %.1f ms median", k, v["render_ms_median"])
     log.info("wrote %s in %.1f s", args.out, result["wall_time_s"])
 
 

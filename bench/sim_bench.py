@@ -1,15 +1,21 @@
-"""Benchmark the hook-and-tube world: the outcome table and the simulator's speed.
+"""Benchmark the simulated worlds: the outcome tables and the simulator's speed.
 
-Runs every tool of ``worlds/hook_tube`` at every cube location in both tube variants at
-the demonstration's pose, plus the demonstrated hook at wrong poses (prong flat, prong
-in front of the cube, handle beside the cube). Records per trial the outcome, its
-reason, the physics steps, simulated time, wall time, CPU time, simulated / wall time
-and the camera render time; and the world start-up time (building the scene: first
-and later). Writes ``bench/results/sim.json`` and prints the outcome table as markdown.
+For each case (default: every ``worlds/*/case.toml``) runs every catalogued tool in
+every variant at every location at the demonstration's pose, skill by skill through
+the manifest, plus any ``--extra NAME=A,B,C`` pose with the demonstrated tool. Records
+per trial the outcome, its reason, the wall time of each skill, the physics steps,
+simulated time, CPU time and camera render time, and what a released joint did (the
+degrees it moved on after touching the tool); and the scene start-up time (first and
+later builds). Writes ``bench/results/sim_<case>.json`` and prints the outcome table
+as markdown (S success, F failure, B blocked, U unreachable, I invalid).
 
-    .venv/bin/python bench/sim_bench.py [--quick] [--out bench/results/sim.json]
+``--by-hand`` lets the trainer put the tool at the pose (the pose skill's ``by_hand``
+option, no robot): the physics of the tool action alone, one location per variant.
 
-``--quick`` runs only the demonstration location (1). The machine is shared: CPU time
+    .venv/bin/python bench/sim_bench.py [CASE ...] [--quick] [--by-hand]
+        [--extra flat=0.03,0,1.5708] [--out-dir bench/results]
+
+``--quick`` runs only the demonstration's location. The machine is shared: CPU time
 (``process_time``) is recorded next to wall time so load from other processes shows.
 """
 
@@ -18,122 +24,158 @@ from __future__ import annotations
 import argparse
 import json
 import logging
-import math
 import platform
 import statistics
+import sys
 import time
 from pathlib import Path
 
-from creative_py.sim.hook_tube import open_hook_episode
-from creative_py.sim.trial import load_case_world, run_trial
+from creative_py.case import load_cases
+from creative_py.sim import load_world, open_episode
 
-RESULTS = Path(__file__).resolve().parent / "results" / "sim.json"
-
-WRONG_POSES = {
-    "flat": (0.03, 0.0, math.pi / 2),
-    "in_front": (-0.04, 0.0, 0.0),
-    "beside": (0.03, 0.03, 0.0),
-}
+RESULTS = Path(__file__).resolve().parent / "results"
+SHORT = {"success": "S", "failure": "F", "blocked": "B", "unreachable": "U", "invalid": "I"}
 
 
 def startup_times(world, n: int = 4) -> list[float]:
-    """Return the wall times (s) of building the scene ``n`` times (Baxter, tube, cube, tool).
+    """Return the wall times (s) of building the demonstration's scene ``n`` times.
 
-    Later builds reuse the start posture found by the first (as the case object does).
+    Later builds reuse the start posture the first one searched (cached in the world).
     """
+    demo = world.manifest.demonstration
     times = []
-    cache: dict = {}
     for _ in range(n):
         t0 = time.perf_counter()
-        ep = open_hook_episode(world, "standard", 1, world.demonstration.tool,
-                               posture_cache=cache)
-        times.append(time.perf_counter() - t0)
-        ep.close()
+        with open_episode(world, demo.variant, demo.location, demo.tool):
+            times.append(time.perf_counter() - t0)
     return times
 
 
-def one_trial(world, tool: str, variant: str, location: int, pose=None) -> dict:
-    """Run one trial; return its record with CPU time added."""
-    c0 = time.process_time()
-    r = run_trial("hook", world, tool, variant, location, pose=pose)
-    cpu = time.process_time() - c0
-    rec = r.to_dict()
-    rec["cpu_time_s"] = cpu
-    rec["sim_over_wall"] = r.sim_time_s / r.wall_time_s if r.wall_time_s > 0 else None
+def one_trial(world, tool: str, variant: str, location: int, pose, by_hand: bool) -> dict:
+    """Run one trial skill by skill; return its outcome, timings and joint records."""
+    m = world.manifest
+    t0, c0 = time.perf_counter(), time.process_time()
+    phases: dict[str, float] = {}
+    with open_episode(world, variant, location, tool, robot=not by_hand) as ep:
+        phases["build_s"] = time.perf_counter() - t0
+        outcome, reason = "success", ""
+        skills = [s for s in m.skills if not by_hand or s.pose or s.tool_action]
+        for skill in skills:
+            ts = time.perf_counter()
+            extra = {"by_hand": True} if by_hand and skill.pose else {}
+            res = ep.run_skill(skill.name, pose if skill.pose else None, **extra)
+            phases[f"{skill.name}_s"] = time.perf_counter() - ts
+            if not res.ok:
+                outcome, reason = res.status, res.reason
+                break
+        else:
+            if not ep.goal_reached():
+                outcome, reason = "failure", "the goal was not reached"
+        records = {k: {"contact_angle": r.contact_angle, "final_angle": r.final_angle,
+                       "closed_after_contact_deg": r.closed_after_contact_deg}
+                   for k, r in ep.records.items()}
+        rec = {"case": m.id, "object": tool, "variant": variant, "location": location,
+               "pose": list(pose), "outcome": outcome, "reason": reason, "phases": phases,
+               "records": records, "steps": ep.steps, "sim_time_s": ep.sim_time(),
+               "render_time_s": ep.render_time_s, "truth": ep.truth()}
+    rec["wall_time_s"] = time.perf_counter() - t0
+    rec["cpu_time_s"] = time.process_time() - c0
+    rec["sim_over_wall"] = rec["sim_time_s"] / rec["wall_time_s"]
     return rec
 
 
 def markdown_table(world, trials: list[dict], variants, locations) -> str:
-    """Return the tool x (variant, location) outcome table as markdown."""
+    """Return the tool x (variant, location) outcome table at the demonstration's pose."""
     head = "| tool | " + " | ".join(f"{v} L{loc}" for v in variants for loc in locations) + " |"
-    rule = "|---" * (1 + len(variants) * len(locations)) + "|"
-    short = {"success": "S", "failure": "F", "blocked": "B", "unreachable": "U", "invalid": "I"}
-    rows = [head, rule]
-    for tool, spec in world.tools.items():
+    rows = [head, "|---" * (1 + len(variants) * len(locations)) + "|"]
+    for tool in world.catalogue:
         cells = []
         for v in variants:
             for loc in locations:
                 hit = [t for t in trials if t["object"] == tool and t["variant"] == v
-                       and t["location"] == loc and t.get("label") == "demo_pose"]
-                cells.append(short[hit[0]["outcome"]] if hit else "-")
-        label = f"{tool} ({spec.handle_length:.2f} m{'' if spec.is_stick else ', ' + spec.hook_side})"
-        rows.append(f"| {label} | " + " | ".join(cells) + " |")
+                       and t["location"] == loc and t["label"] == "demo_pose"]
+                if not hit:
+                    cells.append("-")
+                    continue
+                t = hit[0]
+                closed = [r["closed_after_contact_deg"] for r in t["records"].values()
+                          if r["closed_after_contact_deg"] is not None]
+                cells.append(SHORT[t["outcome"]] + (f" ({closed[0]:.1f})" if closed else ""))
+        rows.append(f"| {tool} | " + " | ".join(cells) + " |")
     return "\n".join(rows)
 
 
-def main() -> None:
-    """Run the benchmark and write its results."""
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--quick", action="store_true", help="only location 1")
-    ap.add_argument("--out", type=Path, default=RESULTS)
-    args = ap.parse_args()
-    logging.basicConfig(level=logging.WARNING)
-
-    world = load_case_world("hook")
-    starts = startup_times(world)
-    variants = list(world.variants)
-    locations = [1] if args.quick else list(range(1, len(world.locations) + 1))
+def bench_case(manifest, args) -> dict:
+    """Run one case's table and extra poses; return the JSON record."""
+    world = load_world(manifest)
+    demo = manifest.demonstration
+    starts = [] if args.by_hand else startup_times(world)
+    variants = list(manifest.variant_names)
+    locations = [demo.location] if (args.quick or args.by_hand) else list(world.locations)
     trials: list[dict] = []
     for v in variants:
         for loc in locations:
-            for tool in world.tools:
-                rec = one_trial(world, tool, v, loc)
+            for tool in world.catalogue:
+                rec = one_trial(world, tool, v, loc, demo.pose, args.by_hand)
                 rec["label"] = "demo_pose"
                 trials.append(rec)
-                print(f"{v:9s} L{loc} {tool:9s} {rec['outcome']:11s} "
+                print(f"{manifest.id} {v:9s} L{loc} {tool:12s} {rec['outcome']:11s} "
                       f"{rec['wall_time_s']:.2f} s wall {rec['cpu_time_s']:.2f} s cpu "
                       f"{rec['reason'][:70]}", flush=True)
-    demo = world.demonstration
-    for label, pose in WRONG_POSES.items():
-        rec = one_trial(world, demo.tool, demo.variant, demo.location, pose)
+    for text in args.extra:
+        label, _, numbers = text.partition("=")
+        pose = manifest.parse_pose(numbers)
+        rec = one_trial(world, demo.tool, demo.variant, demo.location, pose, args.by_hand)
         rec["label"] = label
         trials.append(rec)
-        print(f"wrong pose {label:9s} {rec['outcome']:11s} {rec['reason'][:70]}", flush=True)
-
+        print(f"{manifest.id} extra pose {label:12s} {rec['outcome']:11s} {rec['reason'][:70]}",
+              flush=True)
+    again = one_trial(world, demo.tool, demo.variant, demo.location, demo.pose, args.by_hand)
+    first = next(t for t in trials if t["object"] == demo.tool and t["variant"] == demo.variant
+                 and t["location"] == demo.location and t["label"] == "demo_pose")
     walls = [t["wall_time_s"] for t in trials]
-    cpus = [t["cpu_time_s"] for t in trials]
-    ratios = [t["sim_over_wall"] for t in trials if t["sim_over_wall"]]
-    summary = {
+    return {
+        "case": manifest.id, "by_hand": args.by_hand,
         "machine": {"platform": platform.platform(), "python": platform.python_version(),
                     "processor": platform.processor() or platform.machine()},
-        "startup_s": {"first": starts[0], "later_median": statistics.median(starts[1:]),
-                      "all": starts},
+        "startup_s": ({"first": starts[0], "later_median": statistics.median(starts[1:]),
+                       "all": starts} if starts else None),
         "trial_wall_s": {"median": statistics.median(walls), "max": max(walls),
                          "min": min(walls)},
-        "trial_cpu_s": {"median": statistics.median(cpus), "max": max(cpus)},
-        "sim_over_wall": {"median": statistics.median(ratios), "min": min(ratios)},
+        "trial_cpu_s": {"median": statistics.median(t["cpu_time_s"] for t in trials)},
+        "sim_over_wall": {"median": statistics.median(t["sim_over_wall"] for t in trials)},
         "render_s_per_trial": {"median": statistics.median(t["render_time_s"] for t in trials)},
-        "steps": {"median": statistics.median(t["steps"] for t in trials)},
-        "outcomes": {o: sum(1 for t in trials if t["outcome"] == o)
-                     for o in ("success", "failure", "blocked", "unreachable", "invalid")},
+        "outcomes": {o: sum(1 for t in trials if t["outcome"] == o) for o in SHORT},
+        "deterministic_same_seed": (again["truth"] == first["truth"]
+                                    and again["outcome"] == first["outcome"]),
         "table_markdown": markdown_table(world, trials, variants, locations),
         "trials": trials,
     }
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text(json.dumps(summary, indent=1, sort_keys=True) + "\n")
-    print(summary["table_markdown"])
-    print(json.dumps({k: v for k, v in summary.items()
-                      if k not in ("trials", "table_markdown")}, indent=1))
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Run the benchmark and write its results."""
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("cases", nargs="*", help="case ids (default: every case)")
+    ap.add_argument("--quick", action="store_true", help="only the demonstration's location")
+    ap.add_argument("--by-hand", action="store_true",
+                    help="the trainer places the tool; no robot")
+    ap.add_argument("--extra", action="append", default=[], metavar="NAME=POSE",
+                    help="one more pose for the demonstrated tool, e.g. flat=0.03,0,1.5708")
+    ap.add_argument("--out-dir", type=Path, default=RESULTS)
+    args = ap.parse_args(argv)
+    logging.basicConfig(level=logging.WARNING)
+    cases = load_cases()
+    for cid in args.cases or sorted(cases):
+        if cid not in cases:
+            sys.exit(f"unknown case {cid!r}; cases: {', '.join(sorted(cases))}")
+        record = bench_case(cases[cid], args)
+        out = args.out_dir / f"sim_{cid}{'_by_hand' if args.by_hand else ''}.json"
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text(json.dumps(record, indent=1, sort_keys=True) + "\n")
+        print(record["table_markdown"])
+        print(json.dumps({k: v for k, v in record.items()
+                          if k not in ("trials", "table_markdown")}, indent=1))
 
 
 if __name__ == "__main__":
