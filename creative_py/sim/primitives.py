@@ -13,7 +13,8 @@ primitive            world target              what it does
                                                (options of the kind: hook-like ``approach``
                                                ``free_speed`` ``speed`` ``lift_to``; block
                                                ``carry_z`` ``clearance`` ``gripper_yaw``)
-``insert_at_pose``   ``tip(X, Y, Roll)``       carry a hook-like tool into the context tube
+``insert_at_pose``   ``tip(X, Y, Roll)``       carry a hook-like tool into the context's
+                                               passage (a tube, the space under a shelf)
                                                and put its prong centre at (X, Y), turned to
                                                Roll; the arm's posture search is an option
 ``place_on_floor``   ``place(X, Y, Heading)``  put the held tool down on the context's top
@@ -78,9 +79,11 @@ def grasp(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
 
 # ------------------------------------------------------------------ insert at pose
 def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
-    """Insert the held hook-like tool into the context tube, prong centre at (X, Y).
+    """Insert the held hook-like tool into the context's passage, prong centre at (X, Y).
 
-    The gripper carries the tool above the tube to in front of its mouth and turns it
+    The context is a body with a passage along +x (a ``tube``, or the space under a
+    ``shelf``: its ``mouth_x``, ``axis_y``, ``floor_z``, ``inner_width`` and
+    ``inner_height``). The gripper carries the tool above it to in front of its mouth and turns it
     so the prong is flat: at the requested roll if that is flat, otherwise towards the
     side of the handle with more room. With ``posture_search`` it first tries the rest
     of the motion (insertion, turning, the pull back to ``pull_to_x``) in the

@@ -34,6 +34,10 @@ Body kinds
     A closed tube of five box walls along +x, frame at the mouth on the axis on the
     inner floor; the top wall collides but is clear (cameras see in). Facts:
     ``tube_mouth/4``, ``tube_length_m/2``, ``tube_inner_m/3``.
+``shelf``
+    A low board on two side panels, the space under it a passage along +x like a
+    tube's (for a tool pushed under it). Facts: ``shelf_front/4``,
+    ``shelf_depth_m/2``, ``shelf_clearance_m/3``.
 ``door``
     A panel on a vertical revolute hinge with a holder (a position motor that keeps it
     at ``open_angle`` and swings it for the arm) and a closer (``closing_torque``,
@@ -320,6 +324,56 @@ class TubeBody(SceneBody):
                 ("tube_inner_m", self.name, self.inner_width, self.inner_height)]
 
 
+class ShelfBody(SceneBody):
+    """A low shelf: a board ``clearance`` m above ``floor_z`` on two side panels.
+
+    The space under it is a passage along +x like a tube's (frame at the front edge,
+    on the axis, on the floor): ``mouth_x`` is its front edge, ``inner_width`` the
+    width between the panels, ``inner_height`` the clearance. The board collides but is
+    clear (cameras see under it) unless ``clear_board`` is false. Facts:
+    ``shelf_front/4`` (front edge's x, the axis's y, mid-clearance z),
+    ``shelf_depth_m/2``, ``shelf_clearance_m/3`` (width, height).
+    """
+
+    FIELDS = {"mouth_x": REQUIRED, "axis_y": REQUIRED, "floor_z": REQUIRED,
+              "depth": REQUIRED, "inner_width": REQUIRED, "inner_height": REQUIRED,
+              "board": 0.02, "friction": 0.5, "clear_board": True,
+              "colour": (0.6, 0.5, 0.35, 1.0)}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        for f in ("depth", "inner_width", "inner_height", "board"):
+            if self.v[f] <= 0:
+                raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
+
+    @property
+    def length(self) -> float:
+        """Return the passage's length along +x (the shelf's depth), metres."""
+        return self.depth
+
+    @property
+    def wall(self) -> float:
+        """Return the board's thickness, metres."""
+        return self.board
+
+    def build(self, sim: Sim) -> int:
+        D, W, H, k = self.depth, self.inner_width, self.inner_height, self.board
+        parts = [BoxPart((D / 2, 0, H + k / 2), (D, W + 2 * k, k)),              # board
+                 BoxPart((D / 2, W / 2 + k / 2, H / 2), (D, k, H)),              # left side
+                 BoxPart((D / 2, -W / 2 - k / 2, H / 2), (D, k, H))]             # right side
+        self.id = spawn_parts(sim, parts, ((self.mouth_x, self.axis_y, self.floor_z),
+                                           (0, 0, 0, 1)), 0.0,
+                              Surface(self.friction, tuple(self.colour)),
+                              hidden=[0] if self.clear_board else [])
+        return self.id
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        return [("shelf_front", self.name, self.mouth_x, self.axis_y,
+                 self.floor_z + self.inner_height / 2),
+                ("shelf_depth_m", self.name, self.depth),
+                ("shelf_clearance_m", self.name, self.inner_width, self.inner_height)]
+
+
 class DoorBody(SceneBody):
     """A door panel on a revolute hinge about +z, with a holder and a closer.
 
@@ -406,7 +460,8 @@ class DoorBody(SceneBody):
                 ("door_gap_m", self.name, self.bottom_gap)]
 
 
-BODY_KINDS: dict[str, type[SceneBody]] = {"box": BoxBody, "tube": TubeBody, "door": DoorBody}
+BODY_KINDS: dict[str, type[SceneBody]] = {"box": BoxBody, "tube": TubeBody, "shelf": ShelfBody,
+                                          "door": DoorBody}
 """The body kinds a ``[[body]]`` table may name."""
 
 
