@@ -90,7 +90,7 @@ def _views(ep, world, name: str, size, seeds: int, base: dict, rows: dict) -> No
     support = {n: z for n, z in ep.perceived if z is not None and n == name}
     height = ep.kind.height(ep.spec) if name == ep.spec.name else ep.bodies[name].height
     known = {} if height is None else {name: height}
-    bodies = {name: ep._body_id(name)}
+    bodies = {name: ep.body_id(name)}
     truth = ep.truth()[name]
     cams = world.scene.cameras
     frames = [capture(ep.sim.client, c) for c in cams]
@@ -155,7 +155,7 @@ def run_case(manifest, seeds: int) -> dict:
                                            {**base, "pose": list(pose)}, rows)
                             continue
                         _views(ep, world, name, size, seeds, base, rows)
-                        body = ep._body_id(name)
+                        body = ep.body_id(name)
                         pos, _ = frame_pose(ep.sim, body)
                         yaw = float(rng.uniform(-0.6, 0.6))
                         set_frame_pose(ep.sim, body, (pos, pb.getQuaternionFromEuler((0, 0, yaw))))
@@ -193,7 +193,7 @@ def render_times(repeats: int) -> dict:
             times = [capture(ep.sim.client, spec).render_time_s for _ in range(repeats)]
             frame = capture(ep.sim.client, spec)
             t0 = time.perf_counter()
-            estimate_objects([frame], {n: ep._body_id(n) for n, _ in ep.perceived})
+            estimate_objects([frame], {n: ep.body_id(n) for n, _ in ep.perceived})
             out[f"{w}x{h}"] = {"render_ms_median": 1000 * statistics.median(times),
                                "render_ms_worst": 1000 * max(times),
                                "estimate_ms": 1000 * (time.perf_counter() - t0)}

@@ -43,7 +43,7 @@ import pybullet as pb
 
 from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult
 from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
-                                   _oracle_words)
+                                   oracle_words)
 from creative_py.world import PhysicsSettings, WorldFileError
 
 log = logging.getLogger(__name__)
@@ -183,7 +183,7 @@ class Episode:
             name = object_name(self.manifest, p.name, self.spec.name)
             support = None if p.support_z is None else self.ns.evaluate(p.support_z, name)
             self.perceived.append((name, support))
-        self.watch = [self._body_id(n) for n, _ in self.perceived]
+        self.watch = [self.body_id(n) for n, _ in self.perceived]
         if self.with_robot:
             rs = w.scene.robot
             self.robot = Baxter(self.sim, BaxterConfig(
@@ -219,7 +219,8 @@ class Episode:
         cache[key] = q
         return q
 
-    def _body_id(self, name: str) -> int:
+    def body_id(self, name: str) -> int:
+        """Return the pybullet body of the tool or of a scene body ``name``."""
         if name == self.spec.name:
             return self.tool_body
         if name in self.bodies:
@@ -320,8 +321,9 @@ class Episode:
         """Run a primitive with ``options`` (raw: numbers or scene expressions).
 
         A primitive that takes a world target gets it from :attr:`pose_target` applied
-        to what the robot perceives now (the cameras only if the target's facts need
-        them, i.e. when the case tracks objects with cameras).
+        to what the robot perceives now; its ``perceive`` option says whether the
+        cameras are used for that (a target relative to a tracked object) or only the
+        scene's own facts (a target relative to a hinge, no rendering, no noise drawn).
         """
         from creative_py.sim.primitives import primitive as lookup
 
@@ -363,7 +365,7 @@ class Episode:
         frames = self._frames()
         bodies, support, heights = {}, {}, {}
         for name, support_z in self.perceived:
-            bodies[name] = self._body_id(name)
+            bodies[name] = self.body_id(name)
             held = self.held and name == self.spec.name
             if support_z is not None and not held:
                 support[name] = support_z
@@ -427,7 +429,7 @@ class Episode:
     def goal_reached(self) -> bool:
         """Return whether the case's goal holds in the simulated state (the oracle)."""
         spec = self.world.oracle
-        opts = resolve_options(spec.options, self.ns, "oracle", words=_oracle_words(self.world))
+        opts = resolve_options(spec.options, self.ns, "oracle", words=oracle_words(self.world))
         return bool(spec.oracle.holds(self, opts))
 
     def sim_time(self) -> float:

@@ -396,7 +396,7 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     resolve_start(world, ns)
     for s in world.skills.values():
         resolve_options(s.options, ns, f"skill {s.name} options")
-    resolve_options(world.oracle.options, ns, "oracle", words=_oracle_words(world))
+    resolve_options(world.oracle.options, ns, "oracle", words=oracle_words(world))
     for p in world.scene.perceived:
         if p.support_z is not None:
             ns.evaluate(p.support_z, f"perception.object {p.name} support_z")
@@ -408,7 +408,8 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
                                  f"{name!r} of case.toml is not a [[body]] of the scene")
 
 
-def _oracle_words(world: World) -> set[str]:
+def oracle_words(world: World) -> set[str]:
+    """Return the oracle options that are words (object names, an axis), not numbers."""
     from creative_py.sim.oracles import ORACLES
 
     o = ORACLES[world.oracle.kind]
