@@ -255,8 +255,7 @@ def repl(run_dir: Optional[Path] = typer.Argument(None, help="A run folder whose
               "  ?- learned_hypothesis(Task, hg, Clause).\n"
               "  ?- term_lgg(f(a, g(a)), f(b, g(b)), G).\n"
               "  ?- replacement(handle_length(T, medium), G, Alternatives).\n"
-              "  ?- solve_size(hook, [hook(t), handle_length(t, long)], "
-              "[tube_length_m(tube1, 0.45)], R).\n")
+              "  ?- case_info(Case, Info).\n")
     goals.append(f"format({_quoted(banner)})")
     swipl = shutil.which("swipl")
     if swipl is None:
@@ -274,15 +273,16 @@ def _quoted(text: str) -> str:
 
 @app.command("make-tool")
 def make_tool_cmd(
-    case: str = typer.Argument(..., help="hook or wedge."),
-    spec: str = typer.Argument(..., help="Qualitative spec, e.g. "
+    case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
+    spec: str = typer.Argument(..., help="Qualitative spec in the case's vocabulary, e.g. "
                                "handle_length=long,hook_side=left (hook) or "
-                               "shape=triangular_prism,block_length=long (wedge)."),
+                               "shape=triangular_prism,block_length=long (wedge); a wrong "
+                               "property lists the allowed ones."),
     name: str = typer.Option("new_tool", "--name", help="Tool name (a Prolog atom)."),
     out: Path = typer.Option(Path("tools"), "--out", help="Folder for the tool's files."),
-    variant: str = typer.Option("standard", "--variant", help="Task whose geometry bounds "
-                                "the sizes (hook: standard, long_tube; wedge: standard, "
-                                "big_door)."),
+    variant: Optional[str] = typer.Option(None, "--variant", help="Task variant whose "
+                                          "perceived geometry bounds the sizes (default: "
+                                          "the demonstration's)."),
     context: Optional[str] = typer.Option(None, "--context", help="Extra task facts, e.g. "
                                           "'max_tool_length(0.5)'."),
 ) -> None:

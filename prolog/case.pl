@@ -5,7 +5,8 @@
             case_holds/1,             % +Hook
             case_prove/2,             % +Hook, +Facts
             class_answer/1,           % +Hook
-            case_info/2               % +Case, -Info
+            case_info/2,              % +Case, -Info
+            tool_vocabulary/2         % +Case, -Classes
           ]).
 
 /** <module> How the engine asks a case: hook predicates of the ontology
@@ -170,3 +171,59 @@ case_info(Case, case(Skills, Goal, Target, Context, PoseTerm)) :-
     case_answer(case_goal(Case, Goal)),
     case_answer(pose_domain(Case, Pose, _)),
     functor(Pose, PoseTerm, _).
+
+
+%!  tool_vocabulary(+Case, -Classes:list) is det.
+%
+%   Classes lists class(Class, Ancestors, Properties) for the case's tool class
+%   (case_tool_class/2) and every class below it (subclass_of/2), in the order the
+%   ontology declares them: Ancestors are the classes above Class, outermost first (the
+%   class literals every tool of Class carries besides Class itself); Properties are
+%   Property-Values pairs for every class_property/2 of Class and its ancestors, the
+%   values from qualitative_range/5, else from size_choice/4.  This is the vocabulary
+%   of a qualitative tool spec (``creative make-tool``).
+%
+%   ==
+%   ?- tool_vocabulary(wedge, [class(block, [object], Ps)|_]).
+%   Ps = [shape-[triangular_prism, box, cylinder], block_length-[short, medium, long], ...].
+%   ==
+tool_vocabulary(Case, Classes) :-
+    must_be_case(Case),
+    case_answer(case_tool_class(Case, Root)),
+    findall(C, class_below_(Root, C), Below),
+    findall(class(C, Ancestors, Properties),
+            ( member(C, [Root|Below]),
+              class_ancestors_(C, Ancestors),
+              class_properties_(C, Ancestors, Properties) ),
+            Classes).
+
+class_below_(Root, C) :-
+    kb_holds(subclass_of(C1, Root)),
+    (   C = C1
+    ;   class_below_(C1, C)
+    ).
+
+class_ancestors_(C, Ancestors) :-
+    (   kb_holds(subclass_of(C, Parent))
+    ->  class_ancestors_(Parent, Above),
+        append(Above, [Parent], Ancestors)
+    ;   Ancestors = []
+    ).
+
+class_properties_(C, Ancestors, Properties) :-
+    append(Ancestors, [C], Chain),
+    findall(P-Values,
+            ( member(K, Chain),
+              kb_holds(class_property(K, P)),
+              property_values_(P, Values) ),
+            Properties).
+
+property_values_(P, Values) :-
+    findall(V, kb_holds(qualitative_range(P, V, _, _, _)), Vs0),
+    (   Vs0 \== []
+    ->  Values = Vs0
+    ;   once(kb_holds(size_choice(_, _, P, Values)))
+    ->  true
+    ;   Values = []
+    ).
+

@@ -536,6 +536,11 @@ class Engine:
         context objects, the pose term's name)."""
         return self._must("case_info", case)
 
+    def tool_vocabulary(self, case: str) -> list:
+        """Return ``class(Class, Ancestors, [Property-Values, ...])`` for the case's tool
+        class and every class below it: the vocabulary of a new tool's spec."""
+        return self._must("tool_vocabulary", case)
+
     def learn_from_demonstration(self, case: str, steps: Sequence[Term]) -> tuple[Term, Term, Term]:
         """Return ``(matched, new_models, example)`` learned from the demonstration's
         ``step(Skill, Args, FactsBefore, FactsAfter)`` terms."""

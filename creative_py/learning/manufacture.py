@@ -7,7 +7,7 @@ This is the path of ``creative make-tool`` and of steps 3-9 of the paper's Algor
 written as URDF, SDF, OpenSCAD, STL and a manifest by
 :func:`creative_py.mesh.export.write_tool_files`::
 
-    engine = Engine.instance(); engine.load_default_ontology()
+    engine = Engine.instance()
     literals = parse_spec("hook", "handle_length=long,hook_side=left")
     sized = size_tool(engine, "hook", literals, default_context("hook", "long_tube"),
                       "hook_new1")                     # or raises InfeasibleSpec
@@ -21,11 +21,10 @@ Sizing always happens before anything is written, and the writer is atomic: when
 :func:`make_tool` raises, no file or folder of the tool exists (the output folder
 itself is not even created when sizing fails).
 
-The qualitative vocabulary (property names and values, :data:`HOOK_PROPERTIES`,
-:data:`WEDGE_PROPERTIES`) mirrors the ontology (``ontology/ranges.pl``,
-``ontology/sizes.pl``, ``ontology/replacement.pl``); it lives here too so that a
-command line can be checked before Prolog starts. The tests compare it with the
-knowledge base.
+The qualitative vocabulary of a case (its tool kinds, their class literals, property
+names and values) is the ontology's (:func:`tool_vocabulary`: the case's tool class in
+``ontology/kinds/``, its ``class_property/2``, ``qualitative_range/5`` and
+``size_choice/4`` facts); nothing here names a case or a property.
 """
 
 from __future__ import annotations
@@ -45,38 +44,8 @@ from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict
 
 log = logging.getLogger(__name__)
 
-CASES = ("hook", "wedge")
-"""The two tasks of the paper: hook-and-tube, wedge-and-door."""
-
 PLACEHOLDER_TOOL = "new_tool"
 """The tool atom of the literals :func:`parse_spec` returns (renamed by :func:`size_tool`)."""
-
-HOOK_PROPERTIES: dict[str, tuple[str, ...]] = {
-    "kind": ("hook", "stick"),
-    "handle_length": ("short", "medium", "long"),
-    "handle_width": ("thin", "thick"),
-    "hook_length": ("short", "long"),
-    "hook_width": ("narrow", "wide"),
-    "hook_side": ("left", "right"),
-    "hook_angle": ("acute", "right", "obtuse"),
-}
-"""Hook-case spec properties and their values; ``kind`` selects ``hook(T)`` or ``stick(T)``."""
-
-PRONG_PROPERTIES = ("hook_length", "hook_width", "hook_side", "hook_angle")
-"""Hook-case properties of the prong, which a stick does not have."""
-
-WEDGE_PROPERTIES: dict[str, tuple[str, ...]] = {
-    "shape": ("triangular_prism", "box", "cylinder"),
-    "block_length": ("short", "medium", "long"),
-    "block_width": ("narrow", "wide"),
-    "block_height": ("low", "high"),
-    "mechanical_advantage": ("above_one", "below_one"),
-}
-"""Wedge-case spec properties and their values."""
-
-CLASS_LITERALS = {"hook": ("tool", "hook_like"), "stick": ("tool", "hook_like"),
-                  "block": ("object",)}
-"""Class literals every tool of a kind carries, besides ``hook``/``stick``/``block`` itself."""
 
 CONTEXT_FACTS: dict[str, int] = {
     "tube_length_m": 2, "tube_inner_m": 3, "max_tool_length": 1, "door_gap_m": 2,
@@ -143,50 +112,112 @@ class SizedTool:
     spec: HookSpec | BlockSpec
     seconds: float
 
-    def catalogue_facts(self) -> list[Compound]:
-        """Return the catalogue facts of the shared vocabulary for this tool (metres, degrees).
+    def catalogue_facts(self) -> list[Term]:
+        """Return the tool's catalogue facts (metres, degrees), as the simulator gives
+        them for its own objects (:func:`creative_py.sim.tools.catalogue_facts`), so the
+        knowledge base derives the tool's structural literals the same way."""
+        from creative_py.learning.trials import fact_term
+        from creative_py.sim.tools import catalogue_facts
 
-        Hook case: ``object_kind/2``, ``handle_length_m/2``, ``handle_width_m/2``,
-        ``hook_length_m/2``, ``hook_width_m/2``, ``hook_side_is/2``, ``hook_angle_deg/2``;
-        wedge case: ``object_kind/2``, ``block_shape/2``, ``block_length_m/2``,
-        ``block_width_m/2``, ``block_height_m/2``. These let the knowledge base derive
-        the tool's structural literals as it does for the world's own objects.
-        """
-        s, n = self.spec, self.name
-        if isinstance(s, BlockSpec):
-            return [Compound("object_kind", (n, "block")), Compound("block_shape", (n, s.shape)),
-                    Compound("block_length_m", (n, s.length)),
-                    Compound("block_width_m", (n, s.width)),
-                    Compound("block_height_m", (n, s.height))]
-        return [Compound("object_kind", (n, self.kind)),
-                Compound("handle_length_m", (n, s.handle_length)),
-                Compound("handle_width_m", (n, s.handle_width)),
-                Compound("hook_length_m", (n, s.hook_length)),
-                Compound("hook_width_m", (n, s.hook_width)),
-                Compound("hook_side_is", (n, s.hook_side)),
-                Compound("hook_angle_deg", (n, s.hook_angle_deg))]
+        return [fact_term(f) for f in catalogue_facts(self.spec)]
 
 
-def case_properties(case: str) -> dict[str, tuple[str, ...]]:
-    """Return the spec properties of ``case`` and their allowed values."""
-    _check_case(case)
-    return HOOK_PROPERTIES if case == "hook" else WEDGE_PROPERTIES
+@dataclass(frozen=True)
+class ToolVocabulary:
+    """What a qualitative spec of a case's new tool may say, from the ontology.
+
+    Attributes
+    ----------
+    case : str
+        The case id.
+    kinds : dict
+        Spec kind (:data:`creative_py.mesh.spec.SPEC_KINDS`, e.g. ``hook``, ``stick``)
+        -> ``(class_literals, properties)``: the class literal names every tool of that
+        kind carries (outermost first, the kind last) and ``property -> values``.
+    """
+
+    case: str
+    kinds: dict[str, tuple[tuple[str, ...], dict[str, tuple[str, ...]]]]
+
+    @property
+    def default_kind(self) -> str:
+        """Return the kind a spec has when it names none (the first the ontology lists)."""
+        return next(iter(self.kinds))
+
+    @property
+    def properties(self) -> dict[str, tuple[str, ...]]:
+        """Return every property a spec may give and its values; ``kind`` when the case
+        has several kinds."""
+        out: dict[str, tuple[str, ...]] = {}
+        if len(self.kinds) > 1:
+            out["kind"] = tuple(self.kinds)
+        for _classes, props in self.kinds.values():
+            for p, values in props.items():
+                out.setdefault(p, values)
+        return out
+
+    def subject_names(self) -> set[str]:
+        """Return the names of the literals whose first argument is the tool."""
+        names = set(self.kinds)
+        for classes, props in self.kinds.values():
+            names |= set(classes) | set(props)
+        return names
 
 
-def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL) -> list[Compound]:
+_VOCABULARIES: dict[tuple[int, str], ToolVocabulary] = {}
+
+
+def tool_vocabulary(engine: Engine, case: str) -> ToolVocabulary:
+    """Return the qualitative vocabulary of ``case``'s new tools (asked once per engine).
+
+    Raises
+    ------
+    ValueError
+        ``case`` is not a case of the ontology (the message lists the known ones).
+    """
+    from creative_py.case import load_cases
+    from creative_py.mesh.spec import SPEC_KINDS
+
+    key = (id(engine), case)
+    if key not in _VOCABULARIES:
+        try:
+            classes = engine.tool_vocabulary(case)
+        except PrologError:
+            known = ", ".join(sorted(load_cases()))
+            raise ValueError(f"unknown case {case!r}; known cases: {known}") from None
+        kinds = {}
+        for cls in classes:
+            name, ancestors, props = cls.args
+            if name in SPEC_KINDS:
+                kinds[str(name)] = (tuple(str(a) for a in ancestors) + (str(name),),
+                                    {str(p.args[0]): tuple(str(v) for v in p.args[1])
+                                     for p in props})
+        if not kinds:
+            raise ValueError(f"case {case}: the ontology's tool classes name no spec kind "
+                             f"({', '.join(SPEC_KINDS)})")
+        _VOCABULARIES[key] = ToolVocabulary(case, kinds)
+    return _VOCABULARIES[key]
+
+
+def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL, *,
+               engine: Optional[Engine] = None) -> list[Compound]:
     """Return the structural literals of a command-line spec, class literals first.
 
     Parameters
     ----------
-    case : {"hook", "wedge"}
-        The task the tool is for.
+    case : str
+        The case the tool is for; its vocabulary is the ontology's
+        (:func:`tool_vocabulary`).
     text : str
         Comma-separated ``property=value`` pairs, e.g.
         ``"handle_length=long,hook_side=left,hook_length=long"`` or
-        ``"shape=triangular_prism,block_length=long"``. Hook case: ``kind=stick`` makes a
-        stick (no prong properties allowed then); anything else is a hook.
+        ``"shape=triangular_prism,block_length=long"``. When the case has several tool
+        kinds, ``kind=<kind>`` chooses one (default: the first); a property the kind
+        does not have (a stick's prong) is refused.
     tool : str
         The tool atom of the literals.
+    engine : Engine or None
+        The Prolog engine (default: the process's one).
 
     Returns
     -------
@@ -197,10 +228,11 @@ def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL) -> list[Compo
     Raises
     ------
     ValueError
-        An unknown property or value (the message lists the allowed ones), a malformed
-        or repeated pair, an empty spec, or prong properties for a stick.
+        An unknown case, property or value (the message lists the allowed ones), a
+        malformed or repeated pair, an empty spec, or a property the kind lacks.
     """
-    props = case_properties(case)
+    vocab = tool_vocabulary(engine or Engine.instance(), case)
+    props = vocab.properties
     allowed = "; ".join(f"{p}={'|'.join(vs)}" for p, vs in props.items())
     if not isinstance(text, str) or not text.strip():
         raise ValueError(f"{case} spec: empty; give property=value pairs separated by "
@@ -223,17 +255,15 @@ def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL) -> list[Compo
             raise ValueError(f"{case} spec {text!r}: {prop} given twice ({chosen[prop]} "
                              f"and {value})")
         chosen[prop] = value
-    if case == "wedge":
-        kind = "block"
-    else:
-        kind = chosen.pop("kind", "hook")
-        prong = [p for p in PRONG_PROPERTIES if p in chosen]
-        if kind == "stick" and prong:
-            raise ValueError(f"{case} spec {text!r}: a stick has no prong, so "
-                             f"{', '.join(prong)} cannot be given with kind=stick")
+    kind = chosen.pop("kind", vocab.default_kind)
+    classes, kind_props = vocab.kinds[kind]
+    lacking = [p for p in chosen if p not in kind_props]
+    if lacking:
+        raise ValueError(f"{case} spec {text!r}: a {kind} has no {', '.join(lacking)} "
+                         f"(its properties: {', '.join(kind_props)})")
     _check_atom(tool, "tool")
-    classes = [Compound(c, (tool,)) for c in CLASS_LITERALS[kind] + (kind,)]
-    return classes + [Compound(p, (tool, v)) for p, v in chosen.items()]
+    return ([Compound(c, (tool,)) for c in classes]
+            + [Compound(p, (tool, v)) for p, v in chosen.items()])
 
 
 def parse_context(engine: Engine, text: str) -> list[Term]:
@@ -303,13 +333,14 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
     ----------
     engine : Engine
         The Prolog engine, with the ontology loaded (``engine.load_default_ontology()``).
-    case : {"hook", "wedge"}
-        The task.
+    case : str
+        The case the tool is for (its tool vocabulary, :func:`tool_vocabulary`).
     literals : sequence of terms
         The tool's literals (e.g. from :func:`parse_spec`, or the body of a hypothesis:
         spatial and task literals are ignored). Their tool argument (an atom or a
         variable) must be the same in all of them; it is renamed ``name``. The kind is
-        ``stick`` if ``stick(T)`` is among them, else ``hook`` (hook case) or ``block``.
+        the spec kind whose class literal is among them (``stick(T)``), else the case's
+        first kind.
     context_facts : sequence of terms
         Task facts (:data:`CONTEXT_FACTS`, e.g. :func:`default_context`); others are ignored.
     name : str
@@ -331,10 +362,11 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
         A bad case or name, literals about two different tools, or a literal the
         knowledge base does not know (is the ontology loaded?).
     """
-    _check_case(case)
+    vocab = tool_vocabulary(engine, case)
     _check_atom(name, "tool name")
-    renamed = _rename_tool(case, literals, name)
-    kind = _kind(case, renamed, name)
+    renamed = _rename_tool(vocab, literals, name)
+    kind = next((lit.name for lit in renamed if lit.name in vocab.kinds
+                 and lit.args == (name,)), vocab.default_kind)
     context = list(context_facts)
     if not any(isinstance(f, Compound) and f.name == "min_wall_m" for f in context):
         context.append(Compound("min_wall_m", (settings.min_feature,)))
@@ -394,39 +426,29 @@ def _did_you_mean(word: str, choices) -> str:
     return f" (did you mean {close[0]!r}?)" if close else ""
 
 
-def _check_case(case: str) -> None:
-    if case not in CASES:
-        raise ValueError(f"case must be one of {', '.join(CASES)}, got {case!r}")
-
-
 def _check_atom(name: str, what: str) -> None:
     if not (isinstance(name, str) and _ATOM.match(name)):
         raise ValueError(f"{what} {name!r} must be a Prolog atom: a lower-case ASCII letter "
                          "followed by letters, digits or underscores")
 
 
-def _subject_names(case: str) -> set[str]:
-    kinds = ("hook", "stick") if case == "hook" else ("block",)
-    names = {c for k in kinds for c in CLASS_LITERALS[k]} | set(kinds)
-    return names | (set(case_properties(case)) - {"kind"})
-
-
-def _rename_tool(case: str, literals: Sequence[Term], name: str) -> list[Term]:
+def _rename_tool(vocab: ToolVocabulary, literals: Sequence[Term], name: str) -> list[Term]:
     """Return ``literals`` with their tool (first argument of class and structural
     literals) replaced by the atom ``name`` everywhere."""
     if isinstance(literals, (str, Compound)):
         raise ValueError(f"{name}: literals must be a list of terms, got {literals!r}")
     subjects = []
+    subjects_of = vocab.subject_names()
     for lit in literals:
         if not isinstance(lit, Compound):
             raise ValueError(f"{name}: literal {lit!r} is not a compound term")
-        if lit.name in _subject_names(case) and lit.args and lit.args[0] not in subjects:
+        if lit.name in subjects_of and lit.args and lit.args[0] not in subjects:
             subjects.append(lit.args[0])
     if len(subjects) > 1:
         raise ValueError(f"{name}: the literals describe more than one tool: "
                          f"{', '.join(str(s) for s in subjects)}")
     if not subjects:
-        raise ValueError(f"{name}: no class or structural literal of the {case} case among "
+        raise ValueError(f"{name}: no class or structural literal of the {vocab.case} case among "
                          f"{', '.join(str(lit) for lit in literals) or 'no literals'}")
     subject = subjects[0]
     if isinstance(subject, Var) and subject.anonymous:
@@ -442,9 +464,3 @@ def _replace(term: Term, old: Term, new: Term) -> Term:
     if isinstance(term, list):
         return [_replace(a, old, new) for a in term]
     return term
-
-
-def _kind(case: str, literals: Sequence[Compound], name: str) -> str:
-    if case == "wedge":
-        return "block"
-    return "stick" if Compound("stick", (name,)) in literals else "hook"

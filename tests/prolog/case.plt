@@ -60,6 +60,19 @@ test(tool_class_answers_the_new_tool_kind, [K1, K2] == [stick, hook]) :-
     class_answer(new_tool_kind(hook_like, [tool(t), stick(t)], K1)),
     class_answer(new_tool_kind(hook_like, [tool(t), hook(t)], K2)).
 
+test(tool_vocabulary_of_hook_like_tools) :-
+    tool_vocabulary(hook, Classes),
+    findall(C-As, member(class(C, As, _), Classes), Chains),
+    assertion(Chains == [hook_like-[tool], hook-[tool, hook_like], stick-[tool, hook_like]]),
+    memberchk(class(stick, _, StickProps), Classes),
+    assertion(StickProps == [handle_length-[short, medium, long], handle_width-[thin, thick]]),
+    memberchk(class(hook, _, HookProps), Classes),
+    assertion(memberchk(hook_side-[right, left], HookProps)).
+
+test(tool_vocabulary_of_blocks, Shapes == [triangular_prism, box, cylinder]) :-
+    tool_vocabulary(wedge, [class(block, [object], Props)|_]),
+    memberchk(shape-Shapes, Props).
+
 test(unknown_class_hook, error(existence_error(class_hook(spoon), new_tool_kind/3))) :-
     class_answer(new_tool_kind(spoon, [], _)).
 

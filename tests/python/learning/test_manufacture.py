@@ -10,9 +10,9 @@ from __future__ import annotations
 import pytest
 
 from creative_py.bridge import Compound, Engine, Var
-from creative_py.learning.manufacture import (HOOK_PROPERTIES, WEDGE_PROPERTIES,
-                                              InfeasibleSpec, default_context, make_tool,
-                                              parse_context, parse_spec, size_tool)
+from creative_py.learning.manufacture import (InfeasibleSpec, default_context, make_tool,
+                                              parse_context, parse_spec, size_tool,
+                                              tool_vocabulary)
 from creative_py.mesh.check import check_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import BlockSpec, HookSpec
@@ -71,17 +71,19 @@ def test_parse_spec_gives_stick_and_block_classes():
     ("hook", "handle_length=long,,hook_side=left", r"'' is not property=value"),
     ("hook", "  ", r"empty"),
     ("hook", "handle_length=long,handle_length=short", r"handle_length given twice"),
-    ("hook", "kind=stick,hook_length=long", r"a stick has no prong"),
-    ("door", "shape=box", r"case must be one of hook, wedge"),
+    ("hook", "kind=stick,hook_length=long", r"a stick has no hook_length"),
+    ("door", "shape=box", r"unknown case .door.; known cases: .*hook.*wedge"),
 ])
 def test_parse_spec_refuses_bad_text_naming_what_is_allowed(case, text, expected):
     with pytest.raises(ValueError, match=expected):
         parse_spec(case, text)
 
 
-@pytest.mark.parametrize("props", [HOOK_PROPERTIES, WEDGE_PROPERTIES])
-def test_vocabulary_is_the_knowledge_base_s(engine, props):
+@pytest.mark.parametrize("case", ["hook", "wedge"])
+def test_vocabulary_agrees_with_the_replacement_operators(engine, case):
     # Each replacement operator of the ontology lists all values of one property.
+    props = tool_vocabulary(engine, case).properties
+    assert len(props) >= 5
     for prop, values in props.items():
         literal = C(values[0], "t") if prop == "kind" else C(prop, "t", values[0])
         _, alternatives = engine.replacement(literal)
