@@ -6,7 +6,8 @@
             case_prove/2,             % +Hook, +Facts
             class_answer/1,           % +Hook
             case_info/2,              % +Case, -Info
-            tool_vocabulary/2         % +Case, -Classes
+            tool_vocabulary/2,        % +Case, -Classes
+            size_context_facts/1      % -Indicators
           ]).
 
 /** <module> How the engine asks a case: hook predicates of the ontology
@@ -226,4 +227,22 @@ property_values_(P, Values) :-
     ->  true
     ;   Values = []
     ).
+
+
+%!  size_context_facts(-Indicators:list) is det.
+%
+%   Indicators are the Name/Arity of every task fact the size model reads from a
+%   context: the facts size_constraint/3 of the tool kinds and cases are about (a
+%   tube's length, a door's gap, ...) and the margins of size_parameter/3, in the order
+%   the ontology declares them.
+%
+%   ==
+%   ?- size_context_facts(Fs), memberchk(max_tool_length/1, Fs).
+%   true.
+%   ==
+size_context_facts(Indicators) :-
+    findall(N/A, ( kb_holds(size_constraint(_, Fact, _)), functor(Fact, N, A) ), Is0),
+    findall(N/1, kb_holds(size_parameter(N, _, _)), Is1),
+    append(Is0, Is1, Is),
+    list_to_set(Is, Indicators).
 

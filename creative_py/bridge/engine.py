@@ -541,6 +541,10 @@ class Engine:
         class and every class below it: the vocabulary of a new tool's spec."""
         return self._must("tool_vocabulary", case)
 
+    def size_context_facts(self) -> list:
+        """Return the ``Name/Arity`` terms of the task facts the size model reads."""
+        return self._must("size_context_facts")
+
     def learn_from_demonstration(self, case: str, steps: Sequence[Term]) -> tuple[Term, Term, Term]:
         """Return ``(matched, new_models, example)`` learned from the demonstration's
         ``step(Skill, Args, FactsBefore, FactsAfter)`` terms."""

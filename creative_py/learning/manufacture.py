@@ -47,11 +47,10 @@ log = logging.getLogger(__name__)
 PLACEHOLDER_TOOL = "new_tool"
 """The tool atom of the literals :func:`parse_spec` returns (renamed by :func:`size_tool`)."""
 
-CONTEXT_FACTS: dict[str, int] = {
-    "tube_length_m": 2, "tube_inner_m": 3, "max_tool_length": 1, "door_gap_m": 2,
-    "min_wall_m": 1, "reach_margin_m": 1, "tube_clearance_m": 1,
-}
-"""Task facts the size model understands (name -> arity); see ``geometry_clp:size_constraints/4``."""
+def context_facts(engine: Engine) -> dict[str, int]:
+    """Return ``name -> arity`` of the task facts the size model reads (the ontology's
+    ``size_constraint/3`` and ``size_parameter/3``, e.g. ``tube_length_m/2``)."""
+    return {str(i.args[0]): int(i.args[1]) for i in engine.size_context_facts()}
 
 _ATOM = re.compile(r"[a-z][a-zA-Z0-9_]*\Z")
 
@@ -274,17 +273,18 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
     ------
     ValueError
         The text does not parse, a fact is not ground, or it is not one of
-        :data:`CONTEXT_FACTS` (the size model would silently ignore it).
+        one the size model reads (:func:`context_facts`; it would silently ignore it).
     """
     try:
         facts = engine.parse(f"[{text}]") if text.strip() else []
     except PrologError as exc:
         raise ValueError(f"context {text!r}: not Prolog facts ({exc})") from None
+    known_facts = context_facts(engine)
     for fact in facts:
         name = fact.name if isinstance(fact, Compound) else fact
         arity = len(fact.args) if isinstance(fact, Compound) else 0
-        if CONTEXT_FACTS.get(name) != arity:
-            known = ", ".join(f"{n}/{a}" for n, a in CONTEXT_FACTS.items())
+        if known_facts.get(name) != arity:
+            known = ", ".join(f"{n}/{a}" for n, a in known_facts.items())
             raise ValueError(f"context {text!r}: unknown task fact {fact}; the size model "
                              f"understands {known}")
         if not all(isinstance(a, (int, float, str)) for a in fact.args):
@@ -298,7 +298,7 @@ def default_context(case: str, variant: Optional[str] = None, *,
 
     The scene of ``variant`` (default: the demonstration's) is built in the simulator
     and observed once at its first location; of what the robot perceives, the facts the
-    size model understands (:data:`CONTEXT_FACTS`, e.g. ``tube_length_m(Tube, L)`` or
+    size model reads (:func:`context_facts`, e.g. ``tube_length_m(Tube, L)`` or
     ``door_gap_m(Door, G)``, metres) are returned. ``world_dir`` names a world folder
     with its own ``case.toml`` (default: the shipped one of ``case``).
 
@@ -321,7 +321,8 @@ def default_context(case: str, variant: Optional[str] = None, *,
         raise ValueError(exc.args[0]) from None
     world = load_world(manifest)
     facts = task_facts(world, variant, world.locations[0])
-    return [fact_term(f) for f in facts if CONTEXT_FACTS.get(f[0]) == len(f) - 1]
+    known = context_facts(Engine.instance())
+    return [fact_term(f) for f in facts if known.get(f[0]) == len(f) - 1]
 
 
 def size_tool(engine: Engine, case: str, literals: Sequence[Term],
@@ -342,7 +343,7 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
         the spec kind whose class literal is among them (``stick(T)``), else the case's
         first kind.
     context_facts : sequence of terms
-        Task facts (:data:`CONTEXT_FACTS`, e.g. :func:`default_context`); others are ignored.
+        Task facts (:func:`context_facts`, e.g. :func:`default_context`); others are ignored.
     name : str
         The new tool's object name.
     settings : PrintSettings

@@ -73,6 +73,10 @@ test(tool_vocabulary_of_blocks, Shapes == [triangular_prism, box, cylinder]) :-
     tool_vocabulary(wedge, [class(block, [object], Props)|_]),
     memberchk(shape-Shapes, Props).
 
+test(size_context_facts_come_from_the_size_model) :-
+    size_context_facts(Fs),
+    assertion(subset([tube_length_m/2, door_gap_m/2, max_tool_length/1, min_wall_m/1], Fs)).
+
 test(unknown_class_hook, error(existence_error(class_hook(spoon), new_tool_kind/3))) :-
     class_answer(new_tool_kind(spoon, [], _)).
 
