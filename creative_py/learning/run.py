@@ -84,9 +84,10 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     say = progress or (lambda _m: None)
     t_start = time.perf_counter()
     world = load_world(manifest)
+    engine = Engine.instance()
+    check_manifest(engine, manifest)
     run = RunFolder.create(Path(out), case, options.seed, run_name)
     say(f"run folder {run.path}")
-    engine = Engine.instance()
     runner = TrialRunner(engine, world, run, options.seed, say)
     lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
                             consecutive=options.consecutive)
@@ -141,6 +142,37 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     run.write_json("summary.json", summary)
     say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
     return run
+
+
+def check_manifest(engine: Engine, manifest: Any) -> None:
+    """Check that a case manifest agrees with its ontology file; raise ValueError naming
+    the manifest's file and field where they differ.
+
+    The manifest binds the skills to simulator primitives and names the goal, the roles
+    and the pose; the ontology (``ontology/cases/<case>.pl``) holds the knowledge behind
+    the same names, so the two must say the same.
+    """
+    from creative_py.bridge import PrologError
+
+    where = manifest.folder / "case.toml"
+    try:
+        info = engine.case_info(manifest.id)
+    except PrologError as exc:
+        raise ValueError(f"{where}: field 'id': the ontology does not know case "
+                         f"{manifest.id!r} (add ontology/cases/{manifest.ontology}.pl): "
+                         f"{exc}") from None
+    skills, goal, target, context, pose_term = info.args
+    checks = [
+        ("skill", [s.name for s in manifest.skills], [str(s) for s in skills]),
+        ("goal", [str(engine.parse(g)) for g in manifest.goal], [str(g) for g in goal]),
+        ("roles.target", manifest.target, str(target)),
+        ("roles.context", manifest.context, str(context)),
+        ("pose.term", manifest.pose_term, str(pose_term)),
+    ]
+    for field, mine, theirs in checks:
+        if mine != theirs:
+            raise ValueError(f"{where}: field {field!r}: {mine} differs from the ontology's "
+                             f"{theirs} (ontology/cases/{manifest.ontology}.pl)")
 
 
 def _evaluate(runner: TrialRunner, use: UseResult, n: int) -> dict[str, Any]:

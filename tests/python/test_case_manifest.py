@@ -1,0 +1,106 @@
+"""The case manifest (worlds/<folder>/case.toml): reading, errors, listing, and its
+agreement with the ontology."""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+
+import pytest
+
+from creative_py.case import get_case, load_cases, read_manifest
+from creative_py.world import WORLDS_ROOT, WorldFileError
+
+
+def _copy(tmp_path, folder="hook_tube"):
+    dst = tmp_path / folder
+    shutil.copytree(WORLDS_ROOT / folder, dst)
+    return dst
+
+
+def _edit(path, old, new):
+    text = (path / "case.toml").read_text()
+    assert old in text
+    (path / "case.toml").write_text(text.replace(old, new, 1))
+
+
+def test_the_shipped_cases_are_found_with_their_harder_variants():
+    cases = load_cases()
+    assert {"hook", "wedge"} <= set(cases)
+    assert cases["hook"].harder_variant == "long_tube"
+    assert cases["wedge"].harder_variant == "big_door"
+    assert cases["hook"].trial_budget == 12 and cases["wedge"].trial_budget == 9
+    hook = get_case("hook")
+    assert [s.name for s in hook.skills] == ["pick_up", "position_tool", "pull"]
+    assert hook.skill_args(hook.skill("pull"), "t9") == ("t9", "cube1", "tube1")
+    assert hook.demonstration.pose == (0.03, 0.0, 0.0)
+
+
+def test_a_pose_is_parsed_and_bounded_by_the_manifest():
+    hook = get_case("hook")
+    assert hook.parse_pose("0.04, 0, 0.1") == (0.04, 0.0, 0.1)
+    with pytest.raises(ValueError, match=r"--pose: roll must be within \[-1.57\d*, 1.57\d*\] rad"):
+        hook.parse_pose("0.03,0,1e9")
+    with pytest.raises(ValueError, match="--pose must be DX,DY,ROLL"):
+        hook.parse_pose("0.03,zero,0")
+    with pytest.raises(ValueError, match="poses have 3 numbers"):
+        hook.parse_pose("0.03,0")
+
+
+def test_unknown_case_lists_the_known_ones():
+    with pytest.raises(KeyError, match="unknown case 'hok'; known cases: .*hook"):
+        get_case("hok")
+
+
+@pytest.mark.parametrize("old, new, message", [
+    ('trial_budget = 12', 'trial_budgt = 12', r"field 'trial_budget': missing \(is 'trial_budgt' a typo"),
+    ('harder = true', 'harder = false', "exactly one variant must be marked harder"),
+    ('tool_action = true', 'tool_action = false', "exactly one skill must set tool_action"),
+    ('args = ["tool", "target", "context"]\npose = true', 'args = ["tool", "goal"]\npose = true',
+     r"field 'skill\[1\].args': must be a list of roles"),
+    ('steps = ["pick_up", "position_tool", "pull"]', 'steps = ["pick_up", "push"]',
+     "field 'demonstration.steps'"),
+    ('dx = 0.03', 'dx = 3.0', r"field 'demonstration.pose': .*dx must be within"),
+    ('id = "hook"', 'id = "Hook"', "must be a lower-case Prolog atom"),
+])
+def test_a_bad_manifest_names_its_file_and_field(tmp_path, old, new, message):
+    folder = _copy(tmp_path)
+    _edit(folder, old, new)
+    with pytest.raises(WorldFileError, match=message) as err:
+        read_manifest(folder)
+    assert str(folder / "case.toml") in str(err.value)
+
+
+def test_two_folders_with_one_id_are_refused(tmp_path):
+    _copy(tmp_path, "hook_tube")
+    shutil.copytree(WORLDS_ROOT / "hook_tube", tmp_path / "another")
+    with pytest.raises(WorldFileError, match="case 'hook' is already declared by"):
+        load_cases(tmp_path)
+
+
+def test_the_manifest_must_agree_with_the_ontology(tmp_path):
+    from creative_py.bridge import Engine
+    from creative_py.learning.run import check_manifest
+
+    engine = Engine.instance()
+    check_manifest(engine, get_case("hook"))
+    folder = _copy(tmp_path)
+    _edit(folder, 'goal = ["out_of_tube(cube1, tube1)"]', 'goal = ["out_of_tube(tube1, cube1)"]')
+    with pytest.raises(ValueError, match=r"case.toml: field 'goal': .* differs from the "
+                                         r"ontology's \['out_of_tube\(cube1,tube1\)'\]"):
+        check_manifest(engine, read_manifest(folder))
+    _edit(folder, 'id = "hook"', 'id = "kitchen"')
+    with pytest.raises(ValueError, match="the ontology does not know case 'kitchen'"):
+        check_manifest(engine, read_manifest(folder))
+
+
+def test_creative_cases_lists_every_case_as_json():
+    out = subprocess.run([sys.executable, "-m", "creative_py.cli", "cases", "--json"],
+                         capture_output=True, text=True, check=True).stdout
+    cases = {c["id"]: c for c in json.loads(out)}
+    assert cases["hook"]["world"].endswith("hook_tube")
+    assert cases["hook"]["trial_budget"] == 12
+    assert [v["name"] for v in cases["wedge"]["variants"]] == ["standard", "big_door"]
+    assert cases["wedge"]["harder_variant"] == "big_door"
