@@ -327,8 +327,15 @@ class Episode:
         """
         from creative_py.sim.primitives import primitive as lookup
 
+        from creative_py.sim.primitives import REQUIRED
+
         prim = lookup(primitive)
-        opts = resolve_options(options, self.ns, f"primitive {primitive}")
+        unknown = sorted(set(options) - set(prim.options))
+        if unknown:
+            raise ValueError(f"primitive {primitive}: unknown options {unknown}; options: "
+                             f"{', '.join(prim.options)}")
+        defaults = {k: v for k, v in prim.options.items() if v is not REQUIRED}
+        opts = resolve_options({**defaults, **options}, self.ns, f"primitive {primitive}")
         target: tuple = ()
         if prim.target:
             if prim.needs_held_tool(opts) and not self.held:

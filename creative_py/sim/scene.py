@@ -35,7 +35,7 @@ Body kinds
     inner floor; the top wall collides but is clear (cameras see in). Facts:
     ``tube_mouth/4``, ``tube_length_m/2``, ``tube_inner_m/3``.
 ``shelf``
-    A low board on two side panels, the space under it a passage along +x like a
+    A low plate on four corner legs, the space under it a passage along +x like a
     tube's (for a tool pushed under it). Facts: ``shelf_front/4``,
     ``shelf_depth_m/2``, ``shelf_clearance_m/3``.
 ``door``
@@ -325,24 +325,25 @@ class TubeBody(SceneBody):
 
 
 class ShelfBody(SceneBody):
-    """A low shelf: a board ``clearance`` m above ``floor_z`` on two side panels.
+    """A low shelf: a plate ``inner_height`` m above ``floor_z`` on four corner legs.
 
     The space under it is a passage along +x like a tube's (frame at the front edge,
-    on the axis, on the floor): ``mouth_x`` is its front edge, ``inner_width`` the
-    width between the panels, ``inner_height`` the clearance. The board collides but is
-    clear (cameras see under it) unless ``clear_board`` is false. Facts:
-    ``shelf_front/4`` (front edge's x, the axis's y, mid-clearance z),
-    ``shelf_depth_m/2``, ``shelf_clearance_m/3`` (width, height).
+    on the axis, on the floor), open at the back and at the sides between the legs:
+    ``mouth_x`` is its front edge, ``inner_width`` the room between the legs (the legs,
+    ``leg`` m square, stand outside it), ``inner_height`` the clearance under the plate
+    (``board`` m thick). The plate collides but is clear (cameras see under it) unless
+    ``clear_board`` is false. Facts: ``shelf_front/4`` (front edge's x, the axis's y,
+    mid-clearance z), ``shelf_depth_m/2``, ``shelf_clearance_m/3`` (width, height).
     """
 
     FIELDS = {"mouth_x": REQUIRED, "axis_y": REQUIRED, "floor_z": REQUIRED,
               "depth": REQUIRED, "inner_width": REQUIRED, "inner_height": REQUIRED,
-              "board": 0.02, "friction": 0.5, "clear_board": True,
+              "board": 0.006, "leg": 0.012, "friction": 0.5, "clear_board": True,
               "colour": (0.6, 0.5, 0.35, 1.0)}
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         super().__init__(name, values)
-        for f in ("depth", "inner_width", "inner_height", "board"):
+        for f in ("depth", "inner_width", "inner_height", "board", "leg"):
             if self.v[f] <= 0:
                 raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
 
@@ -353,14 +354,15 @@ class ShelfBody(SceneBody):
 
     @property
     def wall(self) -> float:
-        """Return the board's thickness, metres."""
+        """Return the plate's thickness, metres."""
         return self.board
 
     def build(self, sim: Sim) -> int:
-        D, W, H, k = self.depth, self.inner_width, self.inner_height, self.board
-        parts = [BoxPart((D / 2, 0, H + k / 2), (D, W + 2 * k, k)),              # board
-                 BoxPart((D / 2, W / 2 + k / 2, H / 2), (D, k, H)),              # left side
-                 BoxPart((D / 2, -W / 2 - k / 2, H / 2), (D, k, H))]             # right side
+        D, W, H, k, g = self.depth, self.inner_width, self.inner_height, self.board, self.leg
+        parts = [BoxPart((D / 2, 0, H + k / 2), (D, W + 2 * g, k))]             # plate
+        for x in (g / 2, D - g / 2):
+            for y in (W / 2 + g / 2, -W / 2 - g / 2):
+                parts.append(BoxPart((x, y, H / 2), (g, g, H)))                 # legs
         self.id = spawn_parts(sim, parts, ((self.mouth_x, self.axis_y, self.floor_z),
                                            (0, 0, 0, 1)), 0.0,
                               Surface(self.friction, tuple(self.colour)),

@@ -171,3 +171,16 @@ def test_a_created_long_hook_pulls_the_cube_from_the_long_tube(tmp_path):
     world, _ = _created_world(tmp_path)
     r = run_trial(world, "hook_new1", "long_tube", 1)
     assert r.outcome == "success", r.reason
+
+
+@pytest.mark.sim
+def test_a_push_moves_the_held_tool_along_x_and_keeps_its_roll():
+    w = hook_world()
+    with open_episode(w, "standard", 1, "hook_a2") as ep:
+        assert ep.run_skill("pick_up").ok
+        before = {f[0]: f for f in ep.observe().facts}
+        res = ep.run_primitive("push_along_axis", distance=0.05, speed=0.2)
+        assert res.ok, res.reason
+        after = {f[0]: f for f in ep.observe().facts}
+    assert after["tip_position"][2] - before["tip_position"][2] == pytest.approx(0.05, abs=0.005)
+    assert after["tool_roll"][2] == pytest.approx(before["tool_roll"][2], abs=0.05)

@@ -60,7 +60,7 @@ def test_a_box_with_top_z_has_its_top_there():
 
 def test_a_shelf_is_a_passage_with_its_facts():
     defaults = {k: v for k, v in BODY_KINDS["shelf"].FIELDS.items()
-                if k in ("board", "friction", "clear_board", "colour")}
+                if k in ("board", "leg", "friction", "clear_board", "colour")}
     fields = {**defaults, "mouth_x": 0.8, "axis_y": -0.2, "floor_z": -0.2, "depth": 0.3,
               "inner_width": 0.4, "inner_height": 0.05}
     shelf = _build("shelf", **fields)
