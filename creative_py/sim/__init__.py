@@ -3,9 +3,22 @@
 Public API::
 
     from creative_py.sim import load_world, open_episode, run_trial
-    world = load_world(manifest)                # World
+    world = load_world(manifest)                # World (creative_py.case.CaseManifest)
     with open_episode(world, variant, location, tool) as ep:
         ep.run_skill("pick_up")                 # SkillOutcome
+    run_trial(world, tool, variant, location)   # TrialResult
+
+Modules, from the data to the physics:
+
+``types``       value types shared by everything (SkillOutcome, Observation, TrialResult)
+``world``       a world folder read for a manifest (World, load_world)
+``scene``       ``[[body]]`` tables and scene expressions; body kinds (box, tube, shelf, door)
+``tools``       tool kinds (hook-like, block): start, grasp, motion, proprioception,
+                catalogue facts
+``primitives``  the skill primitives a manifest binds by name
+``oracles``     the success oracles a world's ``tasks.toml`` configures
+``episode``     one scene driven skill by skill (open_episode, run_trial)
+``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
 """
 
 from creative_py.sim.episode import Episode, PoseTarget, open_episode, run_trial
