@@ -17,7 +17,8 @@ numbers may be scene expressions (:mod:`creative_py.sim.scene`)::
     min_open_deg = 20.0
     fact = "door_held"
 
-An oracle may also name a ``fact`` that the observation reports (with the object's
+An oracle is called as ``holds(ep, options)`` with the running
+:class:`~creative_py.sim.episode.Episode`. An oracle may also name a ``fact`` that the observation reports (with the object's
 name) while the goal holds.
 """
 

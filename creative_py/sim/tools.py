@@ -6,6 +6,9 @@ starts (the ``[tool_start]`` table of ``scene.toml``), the grasp, how the held t
 moved and what the arm's proprioception says about it. :func:`catalogue_facts` is the
 one place that writes the catalogue facts of an object.
 
+A kind's methods take the running :class:`~creative_py.sim.episode.Episode` as
+``ep`` (typed ``Any``: the episode imports this module).
+
 Hook-like tools (``HookSpec``: hooks and sticks) are held by the butt end with the
 gripper along the handle (+x); their *roll* is the rotation about the handle axis
 (0 = prong down, +pi/2 = prong towards +y, measured from the prong whatever side of
