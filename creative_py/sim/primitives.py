@@ -29,9 +29,9 @@ primitive            world target              what it does
 
 A primitive is called as ``run(ep, options, target)`` with the running
 :class:`~creative_py.sim.episode.Episode` (typed ``Any`` here: this module must not
-import the episode, which imports it). Each returns a :class:`~creative_py.sim.types.SkillOutcome`; a motion stopped by the
-tracking guard is ``blocked``, an arm that cannot follow ``unreachable``, a physics
-blow-up ``invalid``.
+import the episode, which imports it). Each returns a
+:class:`~creative_py.sim.types.SkillOutcome`; a motion stopped by the tracking guard is
+``blocked``, an arm that cannot follow ``unreachable``, a physics blow-up ``invalid``.
 """
 
 from __future__ import annotations
