@@ -24,7 +24,7 @@ import re
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 import pybullet as pb
@@ -474,7 +474,8 @@ class Baxter:
 
     # ----------------------------------------------------------------- motion
     def move_to(self, target: Pose, speed: float | None = None, check: bool = True,
-                watch: Sequence[int] = ()) -> MoveResult:
+                watch: Sequence[int] = (),
+                guard: Callable[[], MoveResult | None] | None = None) -> MoveResult:
         """Move the gripper in a straight line (slerped orientation) to ``target``.
 
         Parameters
@@ -489,6 +490,9 @@ class Baxter:
         watch : sequence of int
             Further bodies whose blow-up (NaN, thrown out of the scene, faster than
             ``max_body_speed``) ends the move as ``invalid``.
+        guard : callable or None
+            A further check run after every guarded step (with ``check``): a
+            :class:`MoveResult` it returns ends the move (e.g. a grasp-slip guard).
         """
         cfg = self.config
         speed = speed or cfg.speed
@@ -516,6 +520,8 @@ class Baxter:
             self._command(q)
             self.sim.step(cfg.steps_per_waypoint)
             bad = self._check(pos, check, watch) or self._check_turn(quat, check)
+            if bad is None and check and guard is not None:
+                bad = guard()
             if bad is not None:
                 return bad
         for _ in range(cfg.settle_steps // cfg.steps_per_waypoint):
@@ -524,6 +530,8 @@ class Baxter:
                 break
             self.sim.step(cfg.steps_per_waypoint)
             bad = self._check(target[0], check, watch)
+            if bad is None and check and guard is not None:
+                bad = guard()
             if bad is not None:
                 return bad
         return MoveResult("ok")

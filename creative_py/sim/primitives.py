@@ -27,6 +27,14 @@ primitive            world target              what it does
                                                oracle)
 ==================== ========================= =============================================
 
+The primitives that move a held tool under or into something (``insert_at_pose``,
+``pull_along_axis``) take a grasp-slip guard: with ``grasp_slip_max_rad`` or
+``grasp_slip_max_m`` above 0 (the default 0 turns it off), every guarded step compares
+the tool's pose with the pose the grasp holds it in (:func:`~creative_py.sim.tools.grasp_slip`)
+and ends the motion ``blocked`` beyond either limit: a tool jammed against a static
+body twists in pybullet's soft grasp constraint while the gripper follows its
+commands, so the arm's tracking guard does not see it.
+
 A primitive is called as ``run(ep, options, target)`` with the running
 :class:`~creative_py.sim.episode.Episode` (typed ``Any`` here: this module must not
 import the episode, which imports it). Each returns a
@@ -47,8 +55,8 @@ import pybullet as pb
 from creative_py.sim.bodies import set_frame_pose
 from creative_py.sim.core import Pose
 from creative_py.sim.types import SkillOutcome
-from creative_py.sim.tools import (HookLike, prong_centre, prong_reach, roll_of,
-                                   tool_orientation)
+from creative_py.sim.tools import (HookLike, grasp_slip, prong_centre, prong_reach,
+                                   roll_of, tool_orientation)
 
 
 log = logging.getLogger(__name__)
@@ -77,6 +85,30 @@ def grasp(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
     """Grasp the episode's tool the way its kind is grasped, and lift it."""
     ep.need_robot("grasp")
     return ep.kind.grasp(ep, opts)
+
+
+# ------------------------------------------------------------------ grasp slip
+SLIP_OPTIONS = {"grasp_slip_max_rad": 0.0, "grasp_slip_max_m": 0.0}
+"""The grasp-slip guard's options (0 = no check of that limit)."""
+
+
+def slip_guard(ep: Any, opts: Mapping[str, Any]) -> Callable[[], SkillOutcome | None] | None:
+    """Return the grasp-slip check of ``opts`` for the held tool, or None if it is off."""
+    max_rad = float(opts.get("grasp_slip_max_rad", 0.0) or 0.0)
+    max_m = float(opts.get("grasp_slip_max_m", 0.0) or 0.0)
+    if max_rad <= 0.0 and max_m <= 0.0:
+        return None
+
+    def check() -> SkillOutcome | None:
+        if not ep.held:
+            return None
+        angle, offset = grasp_slip(ep)
+        if (max_rad > 0.0 and angle > max_rad) or (max_m > 0.0 and offset > max_m):
+            return SkillOutcome("blocked", f"the tool slipped in the grasp by "
+                                f"{angle:.3f} rad, {offset * 1000:.1f} mm: it is jammed")
+        return None
+
+    return check
 
 
 # ------------------------------------------------------------------ insert at pose
@@ -127,8 +159,9 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     steps.append(((goal_origin_x, y_goal, z_down), flat, opts["speed"]))
     steps.append(((goal_origin_x, y_goal, z_down), roll, opts["speed"]))
     pull_dx = min(0.0, opts["pull_to_x"] - x_goal)
+    guard = slip_guard(ep, opts)
     for i, (origin, r, speed) in enumerate(steps):
-        res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed)
+        res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed, guard)
         if not res.ok:
             return res
         if i == 0 and opts["posture_search"]:
@@ -283,7 +316,7 @@ def pull_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOut
     if attitude is None:
         attitude = ep.kind.attitude(ep)
     res = ep.kind.move(ep, (g_pos[0] + min(dx, 0.0), g_pos[1], g_pos[2]), attitude,
-                       opts["speed"])
+                       opts["speed"], slip_guard(ep, opts))
     if not res.ok:
         return res
     ep.sim.step(int(opts["settle_steps"]))
@@ -410,14 +443,15 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("grasp", grasp, _kind_grasp_options()),
     Primitive("insert_at_pose", insert_at_pose,
               {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
-               "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True},
+               "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
+               **SLIP_OPTIONS},
               target="tip"),
     Primitive("place_on_floor", place_on_floor,
               {"hold_angle": REQUIRED, "carry_height": 0.10, "release_height": 0.003,
                "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
                "settle_time": 0.25, "by_hand": False, "perceive": False}, target="place"),
     Primitive("pull_along_axis", pull_along_axis,
-              {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60}),
+              {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60, **SLIP_OPTIONS}),
     Primitive("push_along_axis", push_along_axis,
               {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
     Primitive("release_joint", release_joint,

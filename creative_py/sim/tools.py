@@ -18,13 +18,13 @@ the handle it is on). Blocks (``BlockSpec``) are gripped from above, gripper dow
 from __future__ import annotations
 
 import math
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 import numpy as np
 import pybullet as pb
 
 from creative_py.mesh.spec import BlockSpec, Box, HookSpec
-from creative_py.sim.baxter import gripper_down, gripper_forward
+from creative_py.sim.baxter import gripper_down, gripper_forward, quat_angle
 from creative_py.sim.bodies import Surface, frame_pose, load_tool_urdf, spawn_parts, spawn_spec
 from creative_py.sim.core import Pose
 from creative_py.sim.types import Fact, SkillOutcome
@@ -75,6 +75,19 @@ def roll_of(spec: HookSpec, quat) -> float:
     return math.atan2(float(d[1]), float(-d[2]))
 
 
+def grasp_slip(ep: Any) -> tuple[float, float]:
+    """Return how far the held tool has slipped in the grasp: (angle rad, offset m).
+
+    Compares the tool body's own frame (simulator state) with where the grasp holds
+    it, the gripper's pose times the grasp frame (:attr:`Episode.grasp`). pybullet's
+    fixed grasp constraint is soft against contacts with static bodies: a jammed tool
+    twists in the hand while the gripper follows its commands.
+    """
+    want = ep.tool_pose()
+    have = frame_pose(ep.sim, ep.tool_body)
+    return quat_angle(want[1], have[1]), math.dist(want[0], have[0])
+
+
 # ------------------------------------------------------------------------- the kinds
 class ToolKind:
     """What the simulator knows about one kind of tool (subclass per kind).
@@ -111,8 +124,13 @@ class ToolKind:
         """Return the held tool's attitude angle (rad) that :meth:`move` keeps."""
         raise NotImplementedError
 
-    def move(self, ep: Any, pos, attitude: float, speed: float | None) -> SkillOutcome:
-        """Move the gripper to ``pos`` (m) holding the tool at ``attitude`` (rad)."""
+    def move(self, ep: Any, pos, attitude: float, speed: float | None,
+             guard: Callable[[], SkillOutcome | None] | None = None) -> SkillOutcome:
+        """Move the gripper to ``pos`` (m) holding the tool at ``attitude`` (rad).
+
+        ``guard`` is run after every guarded step of the motion; an outcome it returns
+        ends the move (:meth:`creative_py.sim.baxter.Baxter.move_to`).
+        """
         raise NotImplementedError
 
     def working_point(self, ep: Any) -> tuple[float, float, float]:
@@ -191,7 +209,8 @@ class HookLike(ToolKind):
         """Return the held tool's roll (rad, 0 = prong down) by proprioception."""
         return roll_of(ep.spec, ep.tool_pose()[1])
 
-    def move(self, ep: Any, pos, roll: float, speed: float | None) -> SkillOutcome:
+    def move(self, ep: Any, pos, roll: float, speed: float | None,
+             guard: Callable[[], SkillOutcome | None] | None = None) -> SkillOutcome:
         """Move the gripper (pointing +x) to ``pos`` while turning the tool to ``roll``.
 
         A big change of roll is split into pieces under 70 degrees, so that the
@@ -206,7 +225,8 @@ class HookLike(ToolKind):
             t = i / n
             p = tuple(a + t * (b - a) for a, b in zip(start_pos, pos))
             r = start_roll + t * (roll - start_roll)
-            res = ep.robot.move_to((p, gripper_forward(r)), speed=speed, watch=ep.watch)
+            res = ep.robot.move_to((p, gripper_forward(r)), speed=speed, watch=ep.watch,
+                                   guard=guard)
             if not res.ok:
                 return res
         return res
@@ -281,9 +301,11 @@ class BlockKind(ToolKind):
         quat = ep.robot.gripper_pose()[1]
         return float(pb.getEulerFromQuaternion(quat)[2])
 
-    def move(self, ep: Any, pos, yaw: float, speed: float | None) -> SkillOutcome:
+    def move(self, ep: Any, pos, yaw: float, speed: float | None,
+             guard: Callable[[], SkillOutcome | None] | None = None) -> SkillOutcome:
         """Move the gripper, pointing down with its x axis at ``yaw``, to ``pos``."""
-        return ep.robot.move_to((tuple(pos), gripper_down(yaw)), speed=speed, watch=ep.watch)
+        return ep.robot.move_to((tuple(pos), gripper_down(yaw)), speed=speed, watch=ep.watch,
+                                guard=guard)
 
     def grasp(self, ep: Any, opts: Mapping[str, Any]) -> SkillOutcome:
         """Come down on the block from ``carry_z`` (its base height when carried), grip
