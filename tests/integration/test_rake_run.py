@@ -1,0 +1,35 @@
+"""The rake case end to end (Algorithms 1 and 2 in the physics), added as data only:
+worlds/rake_shelf/ and ontology/cases/rake.pl. Marked slow (about half a minute)."""
+
+import json
+
+import pytest
+
+from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.run_folder import read_trials
+
+pytestmark = [pytest.mark.slow, pytest.mark.sim]
+
+
+def test_rake_case_end_to_end(tmp_path):
+    folder = run_case("rake", tmp_path, RunOptions(seed=0))
+    s = json.loads((folder.path / "summary.json").read_text())
+    use = [t for t in read_trials(folder.path) if t["phase"] == "use"]
+    assert len(use) <= 10                     # the manifest's trial budget
+    hg = s["hypotheses"]["hg"]
+    for literal in ("handle_length(_G3,medium)", "hook_length(_G3,short)", "hook_down(_G3)",
+                    "behind(_G3,_G4)", "centred_on(_G3,_G4)"):
+        assert literal in hg
+    create = s["create"]
+    assert create["needed"] and create["success"] is not None
+    tool = create["created_tools"][-1]
+    assert tool["instance"] == "handle_length(_G0,long)"
+    assert "hook_length(_G0,short)" in tool["structural"]
+    dims = tool["dims"]
+    assert dims["handle_length"] >= 0.45 and dims["hook_length"] < 0.025
+    assert dims["hook_length"] + dims["handle_width"] <= 0.030     # under the deep plate
+    assert create["eval"] == ["success"] * 5
+    for ext in ("urdf", "sdf", "scad", "stl"):
+        assert (folder.path / "tools" / tool["name"] / f"{tool['name']}.{ext}").exists()
+    model = (folder.path / "model.pl").read_text()
+    assert "learned_model(rake-deep_shelf" in model
