@@ -53,6 +53,9 @@ hook: $(STAMP)  ## Case 1 end to end: demonstration, tool-use learning, hook cre
 wedge: $(STAMP)  ## Case 2 end to end: demonstration, tool-use learning, wedge creation.
 	$(MAKE) --no-print-directory run CASE=wedge
 
+rake: $(STAMP)  ## Case 3 end to end: a rake pulls a box from under a shelf, rake creation.
+	$(MAKE) --no-print-directory run CASE=rake
+
 repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads its model.pl).
 	$(VENV)/bin/creative repl $(RUN)
 
