@@ -164,7 +164,7 @@ def execute_trial(world: Any, tool: str, variant: str, location: int,
                 # What the robot sees where the motion stopped: the catalogue and the
                 # task's facts still describe the trial (a planned example needs them).
                 facts = list(ep.observe().facts) if res.status == "blocked" else facts
-                return Executed(res.status, f"{skill.name}: {res.reason}", facts,
+                return Executed(res.status, res.reason, facts,
                                 ep.sim_time(), time.perf_counter() - t0)
         facts = list(ep.observe().facts)
         res = ep.run_skill(action.name)
@@ -173,9 +173,9 @@ def execute_trial(world: Any, tool: str, variant: str, location: int,
                 # Blocked while acting: the tool could not carry out the action; the
                 # physics says whether the goal was reached with this tool and pose.
                 outcome = "success" if ep.goal_reached() else "failure"
-                return Executed(outcome, f"act: {res.reason}", facts, ep.sim_time(),
+                return Executed(outcome, res.reason, facts, ep.sim_time(),
                                 time.perf_counter() - t0)
-            return Executed(res.status, f"act: {res.reason}", facts, ep.sim_time(),
+            return Executed(res.status, res.reason, facts, ep.sim_time(),
                             time.perf_counter() - t0)
         ok = ep.goal_reached()
         final = ep.observe()
