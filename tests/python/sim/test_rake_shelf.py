@@ -40,3 +40,14 @@ def test_the_physics_discriminates_the_tools_at_the_demonstration_pose(
     result = run_trial(_world(), tool, variant, location)
     assert result.outcome == outcome, result.reason
     assert why in result.reason
+
+
+@pytest.mark.parametrize("pose, why", [
+    ((0.035, 0.0, -1.5707963267948966), "prong laid flat passes over the box"),
+    ((0.035, 0.0, 0.96), "prong half-raised passes over the box"),
+    ((-0.04, 0.0, 0.0), "prong lowered in front of the box pushes it deeper"),
+    ((0.035, 0.01, 0.0), "1 cm off centre the box turns off the prong"),
+])
+def test_the_demonstrated_rake_fails_at_the_wrong_poses(pose, why):
+    result = run_trial(_world(), "rake_a2", "standard", 1, pose=pose)
+    assert result.outcome == "failure", f"{why}: {result.outcome} {result.reason}"
