@@ -35,11 +35,11 @@ test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pyte
 test-prolog: $(STAMP)  ## Run the plunit tests under --on-warning=status.
 	$(SWIPL) --on-warning=status -q -g run_all -t halt tests/prolog/run_tests.pl
 
-test-python: $(STAMP)  ## Run pytest without the slow tests.
-	$(PY) -m pytest -q -m "not slow"
+test-python: $(STAMP)  ## Run pytest without the slow tests, one worker a core.
+	$(PY) -m pytest -q -m "not slow" -n auto
 
 test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs included.
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q -n auto
 
 run: $(STAMP)  ## Any case end to end (CASE=<id>, see make cases).
 	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT)
