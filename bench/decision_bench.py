@@ -14,10 +14,10 @@ import statistics
 import time
 from pathlib import Path
 
-from creative_py.bridge import Compound, Engine
+from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.case import load_cases
 from creative_py.learning.tool_use import run_demonstration
-from creative_py.learning.trials import fact_term, task_facts
+from creative_py.learning.trials import task_facts
 from creative_py.sim import load_world
 
 N = 30

@@ -30,12 +30,13 @@ from creative_py.bridge.terms import (
     clause_parts,
     conj,
     conj_to_list,
+    fact_term,
     is_ground,
     variables,
 )
 
 __all__ = [
-    "FAILED", "BridgeError", "BridgeProtocolError", "Compound", "Engine",
+    "FAILED", "BridgeError", "fact_term", "BridgeProtocolError", "Compound", "Engine",
     "EngineStateError", "LoadMessage", "LoadReport", "PlString", "PrologError",
     "PrologFailed", "PrologFileNotFoundError", "PrologLoadError", "PrologSyntaxError",
     "Term", "Var", "WrongThreadError", "clause", "clause_parts", "conj", "conj_to_list",

@@ -599,10 +599,13 @@ class Engine:
         else:
             self._must("write_model_file", str(path), case, models, vs)
 
-    def pose_target(self, case: str, tool: str, facts: Sequence[Term], pose: Term) -> Term:
+    def pose_target(self, case: str, tool: str, facts: Sequence[Term],
+                    pose: Term) -> Optional[Term]:
         """Return the world-frame target of a pose term (the ontology's pose geometry),
-        e.g. ``tip(X, Y, Roll)`` or ``place(X, Y, Heading)``, from the perceived ``facts``."""
-        return self._must("pose_target", case, tool, list(facts), pose)
+        e.g. ``tip(X, Y, Roll)`` or ``place(X, Y, Heading)``, from the perceived ``facts``;
+        None if the facts lack what it needs (the target is not seen)."""
+        result = self.call("pose_target", case, tool, list(facts), pose)
+        return None if result is FAILED else result
 
 
 def _restore_variable_names(reply: Term, args: Sequence[Term]) -> Term:

@@ -260,3 +260,14 @@ def is_ground(term: Term) -> bool:
         elif isinstance(item, list):
             stack.extend(item)
     return True
+
+
+def fact_term(fact: tuple) -> Term:
+    """Return a primitive fact given as a tuple, ``("pose", "cube1", x, y, z, yaw)``, as a
+    term: the first item is the predicate name; ``bool`` becomes the atom ``true`` or
+    ``false`` and a numpy scalar its Python number."""
+    name, *args = fact
+    plain = tuple(("true" if a else "false") if isinstance(a, bool)
+                  else (a.item() if hasattr(a, "item") else a) for a in args)
+    return Compound(name, plain) if plain else name
+

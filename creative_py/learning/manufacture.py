@@ -37,7 +37,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional, Sequence
 
-from creative_py.bridge import Compound, Engine, PrologError, Term, Var
+from creative_py.bridge import Compound, Engine, PrologError, Term, Var, fact_term
 from creative_py.mesh.export import ToolFiles, write_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict
@@ -115,7 +115,6 @@ class SizedTool:
         """Return the tool's catalogue facts (metres, degrees), as the simulator gives
         them for its own objects (:func:`creative_py.sim.tools.catalogue_facts`), so the
         knowledge base derives the tool's structural literals the same way."""
-        from creative_py.learning.trials import fact_term
         from creative_py.sim.tools import catalogue_facts
 
         return [fact_term(f) for f in catalogue_facts(self.spec)]
@@ -310,7 +309,7 @@ def default_context(case: str, variant: Optional[str] = None, *,
         An unknown case or variant (the message lists the known ones).
     """
     from creative_py.case import get_case, read_manifest
-    from creative_py.learning.trials import fact_term, task_facts
+    from creative_py.learning.trials import task_facts
     from creative_py.sim import load_world
 
     try:

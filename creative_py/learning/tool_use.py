@@ -17,11 +17,10 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import Any, Optional
 
-from creative_py.bridge import Compound, Engine, Term
-from creative_py.learning.run_folder import RunFolder
-from creative_py.learning.trials import TrialRecord, TrialRunner, _plain, fact_term
+from creative_py.bridge import Compound, Engine, Term, fact_term
+from creative_py.learning.trials import TrialRecord, TrialRunner
 
 
 @dataclass(frozen=True)
@@ -137,7 +136,7 @@ class ToolUseLearner:
         run = self.runner.run_folder
         demo = run_demonstration(self.runner.world, seed=self.runner.seed,
                                  images_dir=run.snapshot_dir("demo", 0) if run else None)
-        steps = [Compound("step", (s.skill, [_plain(a) for a in s.args],
+        steps = [Compound("step", (s.skill, list(s.args),
                                    [fact_term(f) for f in s.facts_before],
                                    [fact_term(f) for f in s.facts_after]))
                  for s in demo.steps]

@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable, Optional
 
-from creative_py.bridge import Compound, Engine, Term
+from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.case import CaseManifest
 from creative_py.learning.run_folder import RunFolder
 
@@ -94,20 +94,6 @@ class Executed:
     sim_time_s: float
     wall_time_s: float
     perceived_final: dict[str, Any] = field(default_factory=dict)
-
-
-def fact_term(fact: tuple) -> Term:
-    """Return a primitive fact given as a tuple ``("pose", "cube1", x, ...)`` as a term."""
-    name, *args = fact
-    return Compound(name, tuple(_plain(a) for a in args)) if args else name
-
-
-def _plain(a: Any) -> Any:
-    if isinstance(a, bool):
-        return "true" if a else "false"
-    if hasattr(a, "item"):  # numpy scalars
-        return a.item()
-    return a
 
 
 def term_text(t: Term) -> str:

@@ -62,27 +62,18 @@ def prolog_pose_target(case_id: str, pose_term: str) -> PoseTarget:
     """
 
     def target(facts: list[Fact], tool: str, pose: tuple[float, ...]) -> tuple:
-        from creative_py.bridge import FAILED, Compound, Engine
+        from creative_py.bridge import Compound, Engine, fact_term
 
-        engine = Engine.instance()
-        answer = engine.call("pose_target", case_id, tool, [_fact_term(f) for f in facts],
-                             Compound(pose_term, tuple(float(v) for v in pose)))
-        if answer is FAILED:
+        answer = Engine.instance().pose_target(
+            case_id, tool, [fact_term(f) for f in facts],
+            Compound(pose_term, tuple(float(v) for v in pose)))
+        if answer is None:
             return ()
         if isinstance(answer, Compound):
             return (answer.name, *answer.args)
         return (answer,)
 
     return target
-
-
-def _fact_term(fact: Fact) -> Any:
-    from creative_py.bridge import Compound
-
-    name, *args = fact
-    plain = [("true" if a else "false") if isinstance(a, bool)
-             else (a.item() if hasattr(a, "item") else a) for a in args]
-    return Compound(name, tuple(plain)) if plain else name
 
 
 @contextmanager
