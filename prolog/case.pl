@@ -7,7 +7,8 @@
             class_answer/1,           % +Hook
             case_info/2,              % +Case, -Info
             tool_vocabulary/2,        % +Case, -Classes
-            size_context_facts/1      % -Indicators
+            size_context_facts/1,     % -Indicators
+            catalogue_predicates/2    % +Case, -Indicators
           ]).
 
 /** <module> How the engine asks a case: hook predicates of the ontology
@@ -245,4 +246,21 @@ size_context_facts(Indicators) :-
     findall(N/1, kb_holds(size_parameter(N, _, _)), Is1),
     append(Is0, Is1, Is),
     list_to_set(Is, Indicators).
+
+
+%!  catalogue_predicates(+Case, -Indicators:list) is det.
+%
+%   Indicators are the Name/Arity of the catalogue facts of the case's tool class
+%   (catalogue_predicate/2 of case_tool_class/2): the vocabulary in which the world
+%   describes its objects to the robot (object_kind/2, handle_length_m/2, ...).
+%
+%   ==
+%   ?- catalogue_predicates(wedge, Is).
+%   Is = [object_kind/2, block_shape/2, block_length_m/2, block_width_m/2,
+%         block_height_m/2].
+%   ==
+catalogue_predicates(Case, Indicators) :-
+    must_be_case(Case),
+    case_answer(case_tool_class(Case, Class)),
+    findall(PI, kb_holds(catalogue_predicate(Class, PI)), Indicators).
 

@@ -541,6 +541,11 @@ class Engine:
         class and every class below it: the vocabulary of a new tool's spec."""
         return self._must("tool_vocabulary", case)
 
+    def catalogue_predicates(self, case: str) -> list:
+        """Return the ``Name/Arity`` terms of the catalogue facts of the case's tool class
+        (the ontology's vocabulary for describing a catalogued object)."""
+        return self._must("catalogue_predicates", case)
+
     def size_context_facts(self) -> list:
         """Return the ``Name/Arity`` terms of the task facts the size model reads."""
         return self._must("size_context_facts")

@@ -86,6 +86,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     world = load_world(manifest)
     engine = Engine.instance()
     check_manifest(engine, manifest)
+    check_catalogue(engine, world)
     run = RunFolder.create(Path(out), case, options.seed, run_name)
     say(f"run folder {run.path}")
     runner = TrialRunner(engine, world, run, options.seed, say)
@@ -173,6 +174,23 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
         if mine != theirs:
             raise ValueError(f"{where}: field {field!r}: {mine} differs from the ontology's "
                              f"{theirs} (ontology/cases/{manifest.ontology}.pl)")
+
+
+def check_catalogue(engine: Engine, world: Any) -> None:
+    """Check that the simulator describes every catalogued object in the ontology's
+    vocabulary (the catalogue predicates of the case's tool class); raise ValueError
+    naming the object and the fact otherwise."""
+    from creative_py.sim.tools import catalogue_facts
+
+    m = world.manifest
+    known = {(str(i.args[0]), int(i.args[1])) for i in engine.catalogue_predicates(m.id)}
+    for name, spec in world.catalogue.items():
+        for fact in catalogue_facts(spec):
+            if (fact[0], len(fact) - 1) not in known:
+                raise ValueError(
+                    f"{m.folder / 'objects.toml'}: {name}: the catalogue fact "
+                    f"{fact[0]}/{len(fact) - 1} is not in the ontology's vocabulary of the "
+                    f"case's tools ({', '.join(f'{n}/{a}' for n, a in sorted(known))})")
 
 
 def _evaluate(runner: TrialRunner, use: UseResult, n: int) -> dict[str, Any]:

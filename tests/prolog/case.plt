@@ -77,6 +77,11 @@ test(size_context_facts_come_from_the_size_model) :-
     size_context_facts(Fs),
     assertion(subset([tube_length_m/2, door_gap_m/2, max_tool_length/1, min_wall_m/1], Fs)).
 
+test(catalogue_predicates_of_the_case_s_tool_class,
+     Is == [object_kind/2, block_shape/2, block_length_m/2, block_width_m/2,
+            block_height_m/2]) :-
+    catalogue_predicates(wedge, Is).
+
 test(unknown_class_hook, error(existence_error(class_hook(spoon), new_tool_kind/3))) :-
     class_answer(new_tool_kind(spoon, [], _)).
 

@@ -96,6 +96,23 @@ def test_the_manifest_must_agree_with_the_ontology(tmp_path):
         check_manifest(engine, read_manifest(folder))
 
 
+@pytest.mark.sim
+def test_every_catalogue_is_described_in_the_ontology_s_vocabulary():
+    from creative_py.bridge import Engine
+    from creative_py.learning.run import check_catalogue
+    from creative_py.sim import load_world
+
+    engine = Engine.instance()
+    for manifest in load_cases().values():
+        check_catalogue(engine, load_world(manifest))
+    wedge = load_world(get_case("wedge"))
+    hook_tools = load_world(get_case("hook")).catalogue
+    mixed = wedge.with_tool(hook_tools["hook_a2"])
+    with pytest.raises(ValueError, match=r"objects.toml: hook_a2: the catalogue fact "
+                                         r"handle_length_m/2 is not in the ontology's"):
+        check_catalogue(engine, mixed)
+
+
 def test_creative_cases_lists_every_case_as_json():
     out = subprocess.run([sys.executable, "-m", "creative_py.cli", "cases", "--json"],
                          capture_output=True, text=True, check=True).stdout
