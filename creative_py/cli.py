@@ -130,6 +130,10 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     from creative_py.world import WorldFileError
 
     m = _manifest(case, world)
+    if seed < 0:
+        _fail(f"--seed must be at least 0, got {seed}")
+    if save_images is not None and save_images.exists() and not save_images.is_dir():
+        _fail(f"--save-images {save_images}: not a folder")
     try:
         w = load_world(m)
     except WorldFileError as exc:
@@ -192,8 +196,18 @@ def run(
 
     console = Console(stderr=True)
     _manifest(case, world)
-    opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
-                      consecutive=consecutive, eval_trials=eval_trials)
+    for option, value, least in (("--seed", seed, 0), ("--max-trials", max_trials, 1),
+                                 ("--consecutive", consecutive, 1),
+                                 ("--eval-trials", eval_trials, 0)):
+        if value is not None and value < least:
+            _fail(f"{option} must be at least {least}, got {value}")
+    if out.exists() and not out.is_dir():
+        _fail(f"--out {out}: not a folder")
+    try:
+        opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
+                          consecutive=consecutive, eval_trials=eval_trials)
+    except ValueError as exc:
+        _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
     try:
         with _stdout_to_stderr():
             folder = run_case(case, out, opts, progress=lambda m: console.print(m, markup=False,
@@ -201,40 +215,54 @@ def run(
                               world_dir=world)
     except (WorldFileError, ValueError) as exc:
         _fail(str(exc))
+    except OSError as exc:
+        _fail(f"{exc.filename or out}: {exc.strerror or exc}")
     typer.echo(str(folder.path))
 
 
 @app.command()
-def report(run_dir: Path = typer.Argument(..., help="A run folder.")) -> None:
-    """Summarise a run folder: trials per phase, the learned hypotheses, created tools."""
+def report(run_dir: Path = typer.Argument(..., help="A run folder."),
+           plot: bool = typer.Option(False, "--plot", help="Also redraw trials.png from "
+                                     "the readable trials.")) -> None:
+    """Summarise a run folder: every readable trial with its reason, the learned
+    hypotheses, created tools. Writes nothing unless --plot is given."""
     from rich.console import Console
     from rich.table import Table
 
     from creative_py.learning.run_folder import read_trials
     from creative_py.report import plot_trials
 
+    warnings: list[str] = []
     try:
-        trials = read_trials(run_dir)
+        trials = read_trials(run_dir, warn=warnings.append)
     except FileNotFoundError as exc:
         _fail(str(exc))
-    console = Console()
+    for w in warnings:
+        typer.echo(f"warning: {w}", err=True)
+    console = Console(width=max(160, Console().width))
     table = Table(title=f"{run_dir}")
-    for col in ("#", "phase", "variant", "loc", "tool", "tested", "outcome"):
-        table.add_column(col)
+    for col in ("#", "phase", "variant", "loc", "tool", "tested", "outcome", "reason"):
+        table.add_column(col, overflow="fold")
     for t in trials:
-        table.add_row(str(t["trial"]), t["phase"], t["variant"], str(t["location"]), t["tool"],
-                      ", ".join(t.get("tested", [])) or "-", t["outcome"])
+        table.add_row(str(t["trial"]), str(t["phase"]), str(t["variant"]), str(t["location"]),
+                      str(t["tool"]), ", ".join(t.get("tested") or []) or "-",
+                      str(t["outcome"]), str(t.get("reason", "")))
     console.print(table)
     summary = Path(run_dir) / "summary.json"
     if summary.exists():
-        s = json.loads(summary.read_text())
+        try:
+            s = json.loads(summary.read_text())
+        except json.JSONDecodeError as exc:
+            typer.echo(f"warning: {summary}: not JSON ({exc.msg}); no summary shown", err=True)
+            s = {}
         for key in ("hs", "hg"):
             console.print(f"{key}: {s.get('hypotheses', {}).get(key, '?')}", markup=False)
         for tool in s.get("create", {}).get("created_tools", []):
             console.print(f"created {tool['name']}: {tool['replaced']} -> {tool['instance']} "
                           f"{tool['dims']} ({tool['trial_outcome']})", markup=False)
-    png = plot_trials(trials, Path(run_dir) / "trials.png", title=str(run_dir))
-    console.print(f"plot: {png}", markup=False)
+    if plot:
+        png = plot_trials(trials, Path(run_dir) / "trials.png", title=str(run_dir))
+        console.print(f"plot: {png}", markup=False)
 
 
 @app.command()
@@ -285,9 +313,11 @@ def make_tool_cmd(
                                           "the demonstration's)."),
     context: Optional[str] = typer.Option(None, "--context", help="Extra task facts, e.g. "
                                           "'max_tool_length(0.5)'."),
+    overwrite: bool = typer.Option(False, "--overwrite", help="Replace the tool's folder "
+                                   "if it exists."),
 ) -> None:
     """Size a tool from a qualitative spec with CLP(R) and write URDF, SDF, SCAD, STL."""
-    from creative_py.bridge import Engine
+    from creative_py.bridge import Engine, PrologError
     from creative_py.learning.manufacture import (
         InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
     )
@@ -300,9 +330,16 @@ def make_tool_cmd(
             ctx = default_context(case, variant)
             if context:
                 ctx += parse_context(engine, context)
-            files = make_tool(engine, case, lits, ctx, name, out, picture=True)
-    except (InfeasibleSpec, ValueError, WorldFileError, FileExistsError) as exc:
+            files = make_tool(engine, case, lits, ctx, name, out, picture=True,
+                              overwrite=overwrite)
+    except FileExistsError as exc:
+        _fail(f"{exc.filename or out}: the tool's folder exists (--overwrite replaces it)")
+    except (InfeasibleSpec, ValueError, WorldFileError) as exc:
         _fail(str(exc))
+    except PrologError as exc:
+        _fail(f"--context {context!r}: the size model cannot use it: {exc.formal}")
+    except OSError as exc:
+        _fail(f"--out {out}: {exc.strerror or exc}")
     for p in files.paths():
         typer.echo(str(p))
 

@@ -37,7 +37,7 @@ class RunOptions:
         ``use``: demonstration and tool-use learning only; ``create`` and ``all``: then
         tool creation on the harder variant.
     max_trials : int or None
-        N of Algorithm 1 (default: the case manifest's ``trial_budget``).
+        N of Algorithm 1, at least 1 (default: the case manifest's ``trial_budget``).
     consecutive : int
         K of Algorithm 1: consecutive successes needed once nothing is left to test.
     eval_trials : int
@@ -53,6 +53,20 @@ class RunOptions:
     consecutive: int = 2
     eval_trials: int = 4
     create_eval_trials: int = 5
+
+    def __post_init__(self) -> None:
+        checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
+                  ("consecutive", self.consecutive, 1), ("eval_trials", self.eval_trials, 0),
+                  ("create_eval_trials", self.create_eval_trials, 0)]
+        for name, value, least in checks:
+            if value is None and name == "max_trials":
+                continue
+            if isinstance(value, bool) or not isinstance(value, int) or value < least:
+                raise ValueError(f"option {name} must be a whole number >= {least}, "
+                                 f"got {value!r}")
+        if self.phase not in PHASES:
+            raise ValueError(f"option phase must be one of {', '.join(PHASES)}, "
+                             f"got {self.phase!r}")
 
 
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
@@ -75,8 +89,6 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     from creative_py.case import get_case, read_manifest
     from creative_py.sim import load_world
 
-    if options.phase not in PHASES:
-        raise ValueError(f"unknown phase {options.phase!r}; phases: {', '.join(PHASES)}")
     manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
     if manifest.id != case:
         raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "

@@ -1,6 +1,6 @@
 """The run folder: everything one run leaves behind, written as it goes.
 
-Layout (DESIGN.md §3 step 8)::
+Layout (docs/architecture.md, section 5)::
 
     <run>/trials.jsonl        one JSON object per finished trial, flushed at once, so an
                               interrupted run leaves a readable file of the finished trials
@@ -22,7 +22,7 @@ import tempfile
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable
 
 
 @dataclass
@@ -38,12 +38,16 @@ class RunFolder:
         if name is None:
             stamp = datetime.now(timezone.utc).strftime("%Y%m%d-%H%M%S")
             name = f"{case}-{stamp}-s{seed}"
-        path = Path(parent) / name
-        n = 1
-        while path.exists():
-            n += 1
-            path = Path(parent) / f"{name}-{n}"
-        path.mkdir(parents=True)
+        parent = Path(parent)
+        parent.mkdir(parents=True, exist_ok=True)
+        path, n = parent / name, 1
+        while True:  # mkdir is the atomic test: two runs never share a folder
+            try:
+                path.mkdir()
+                break
+            except FileExistsError:
+                n += 1
+                path = parent / f"{name}-{n}"
         (path / "snapshots").mkdir()
         return cls(path)
 
@@ -82,19 +86,36 @@ class RunFolder:
         return write_atomic(self.path / name, json.dumps(_jsonable(data), indent=2) + "\n")
 
 
-def read_trials(run_dir: Path) -> list[dict[str, Any]]:
-    """Return the trials of a run folder; a torn last line (killed mid-write) is skipped."""
+TRIAL_KEYS = ("trial", "phase", "variant", "location", "tool", "outcome")
+"""The keys every line of ``trials.jsonl`` has (the report and the plot need them)."""
+
+
+def read_trials(run_dir: Path, warn: Callable[[str], None] | None = None) -> list[dict[str, Any]]:
+    """Return every readable trial of a run folder.
+
+    A line that is not JSON (a torn last line of a killed run, a corrupt one) or lacks
+    one of :data:`TRIAL_KEYS` is skipped, and ``warn`` is called with one sentence
+    naming the file and the line.
+    """
     out = []
     path = Path(run_dir) / "trials.jsonl"
     if not path.exists():
         raise FileNotFoundError(f"{path}: no trials.jsonl in this run folder")
-    for line in path.read_text(encoding="utf-8").splitlines():
+    for n, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
         if not line.strip():
             continue
         try:
-            out.append(json.loads(line))
-        except json.JSONDecodeError:
-            break
+            record = json.loads(line)
+        except json.JSONDecodeError as exc:
+            if warn:
+                warn(f"{path}: line {n} is not a JSON object ({exc.msg}); skipped")
+            continue
+        missing = [k for k in TRIAL_KEYS if not isinstance(record, dict) or k not in record]
+        if missing:
+            if warn:
+                warn(f"{path}: line {n} lacks {', '.join(missing)}; skipped")
+            continue
+        out.append(record)
     return out
 
 
@@ -105,12 +126,19 @@ def write_atomic(path: Path, text: str) -> Path:
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as fh:
             fh.write(text)
+        os.chmod(tmp, 0o666 & ~_umask())  # as open() would: mkstemp makes it 0600
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
             os.unlink(tmp)
         raise
     return path
+
+
+def _umask() -> int:
+    mask = os.umask(0)
+    os.umask(mask)
+    return mask
 
 
 def _jsonable(value: Any) -> Any:

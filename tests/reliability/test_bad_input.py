@@ -1,0 +1,91 @@
+"""Bad input is refused in one line, with exit code 2, quickly, and nothing is lost.
+
+Each row of :data:`CORPUS` is a command a user might type; the test runs the real
+``creative`` command line in its own process and checks what the user sees: exit code
+2, one line ``error: ...`` on stderr naming the option or file and the cause, no
+traceback, within 10 s. (pybullet's import banner, which it prints itself, is the one
+other line a command may show.)
+"""
+
+from __future__ import annotations
+
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+BANNER = "pybullet build time"
+
+
+def creative(*args: str, cwd: Path | None = None) -> subprocess.CompletedProcess:
+    return subprocess.run([sys.executable, "-m", "creative_py.cli", *args],
+                          capture_output=True, text=True, timeout=60, cwd=cwd)
+
+
+@pytest.fixture()
+def a_file(tmp_path) -> Path:
+    path = tmp_path / "a_file"
+    path.write_text("not a folder\n")
+    return path
+
+
+CORPUS = [
+    (["run", "hok"], "unknown case 'hok'; known cases:"),
+    (["run", "hook", "--max-trials", "0"], "--max-trials must be at least 1, got 0"),
+    (["run", "hook", "--max-trials", "-1"], "--max-trials must be at least 1, got -1"),
+    (["run", "hook", "--consecutive", "-1"], "--consecutive must be at least 1"),
+    (["run", "hook", "--eval-trials", "-2"], "--eval-trials must be at least 0"),
+    (["run", "hook", "--seed", "-1"], "--seed must be at least 0"),
+    (["run", "hook", "--phase", "sometimes"], "--phase: option phase must be one of"),
+    (["run", "hook", "--out", "{a_file}"], "not a folder"),
+    (["run", "hook", "--world", "{tmp}/nowhere"], "nowhere/case.toml: file not found"),
+    (["trial", "hook", "--tool", "hook_a2", "--pose", "0.03,0,1e9"],
+     "--pose: roll must be within"),
+    (["trial", "hook", "--tool", "hook_a2", "--pose", "0.03,zero,0"],
+     "--pose must be DX,DY,ROLL"),
+    (["trial", "hook", "--tool", "hook_a2", "--seed", "-1"], "--seed must be at least 0"),
+    (["trial", "hook", "--tool", "hook_a2", "--save-images", "{a_file}"], "not a folder"),
+    (["trial", "hook", "--tool", "spoon"], "unknown tool 'spoon'; available:"),
+    (["trial", "hook", "--tool", "hook_a2", "--location", "9"], "--location must lie in 1..4"),
+    (["trial", "wedge", "--tool", "wedge_a2", "--variant", "huge"], "unknown variant 'huge'"),
+    (["make-tool", "wedge", "shape=box,hook_side=left", "--out", "{tmp}/t"],
+     "unknown property 'hook_side'"),
+    (["make-tool", "hook", "handle_length=long", "--context", "max_tool_length((0.3",
+      "--out", "{tmp}/t"], "not Prolog facts"),
+    (["make-tool", "hook", "handle_length=long", "--context", "max_tool_length(foo)",
+      "--out", "{tmp}/t"], "--context 'max_tool_length(foo)': the size model cannot use it"),
+    (["report", "{tmp}"], "no trials.jsonl in this run folder"),
+]
+
+
+@pytest.mark.parametrize("args, message", CORPUS, ids=[" ".join(a) for a, _ in CORPUS])
+def test_bad_input_is_one_line_with_exit_code_2(tmp_path, a_file, args, message):
+    args = [a.format(tmp=tmp_path, a_file=a_file) for a in args]
+    t0 = time.perf_counter()
+    proc = creative(*args)
+    seconds = time.perf_counter() - t0
+    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    assert proc.returncode == 2, proc.stderr
+    assert len(lines) == 1 and lines[0].startswith("error: "), proc.stderr
+    assert message in lines[0]
+    assert "Traceback" not in proc.stderr + proc.stdout
+    assert seconds < 10
+    assert not (tmp_path / "t").exists()          # nothing written for a refused tool
+
+
+def test_make_tool_refuses_an_existing_tool_folder_unless_told_to_overwrite(tmp_path):
+    first = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
+                     "--out", str(tmp_path), "--name", "h1")
+    assert first.returncode == 0, first.stderr
+    stl = tmp_path / "h1" / "h1.stl"
+    before = stl.read_bytes()
+    again = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
+                     "--out", str(tmp_path), "--name", "h1")
+    assert again.returncode == 2
+    assert "the tool's folder exists (--overwrite replaces it)" in again.stderr
+    assert stl.read_bytes() == before                 # nothing already written is lost
+    forced = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
+                      "--out", str(tmp_path), "--name", "h1", "--overwrite")
+    assert forced.returncode == 0, forced.stderr
