@@ -8,6 +8,7 @@ run leaves a readable ``trials.jsonl`` of the finished trials.
 from __future__ import annotations
 
 import logging
+import shutil
 import time
 from dataclasses import asdict, dataclass
 from pathlib import Path
@@ -101,59 +102,66 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     check_catalogue(engine, world)
     run = RunFolder.create(Path(out), case, options.seed, run_name)
     say(f"run folder {run.path}")
-    runner = TrialRunner(engine, world, run, options.seed, say)
-    lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
-                            consecutive=options.consecutive)
-    summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
-                               "options": asdict(options), "wall_time_s": {}}
+    try:
+        runner = TrialRunner(engine, world, run, options.seed, say)
+        lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
+                                consecutive=options.consecutive)
+        summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
+                                   "options": asdict(options), "wall_time_s": {}}
 
-    # Demonstration and tool-use learning (Algorithm 1).
-    t0 = time.perf_counter()
-    use = ToolUseLearner(runner, lopts).learn()
-    summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
-    summary["demonstration"] = {"tool": use.demo_tool}
-    summary["use"] = {"trials": len(use.trials), "converged": use.converged,
-                      "trials_to_converge": use.trials_to_converge}
-    engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
-    hs, hg = runner.bounds(use.vs)
-    summary["hypotheses"] = {"hs": hs, "hg": hg}
-    say(f"h_s: {hs}")
-    say(f"h_g: {hg}")
-
-    # The learned model planning the task (PDDL written for every run).
-    task = runner.task(use.trials[-1].variant if use.trials
-                       else manifest.demonstration.variant)
-    plan = engine.plan_task(case, use.models, use.vs, runner.task_facts(task),
-                            [Compound("pddl", (str(run.path / "domain.pddl"),
-                                               str(run.path / "problem.pddl")))])
-    summary["plan"] = term_text(plan)
-    say(f"plan: {term_text(plan)}")
-
-    # Evaluation of the learned model: the planner's own tool and pose choice.
-    t0 = time.perf_counter()
-    summary["eval"] = _evaluate(runner, use, options.eval_trials)
-    summary["wall_time_s"]["eval"] = round(time.perf_counter() - t0, 2)
-
-    # Tool creation (Algorithm 2) on the harder variant.
-    if options.phase in ("create", "all"):
+        # Demonstration and tool-use learning (Algorithm 1).
         t0 = time.perf_counter()
-        creator = ToolCreator(runner, eval_trials=options.create_eval_trials)
-        created = creator.create(use.vs, manifest.harder_variant)
-        summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
-        summary["create"] = _creation_summary(created)
-        if created.success is not None:
-            models = engine.created_models(use.models, use.vs, created.replaced,
-                                           created.instance)
-            engine.write_model_file(run.path / "model.pl", case, use.models, use.vs,
-                                    [Compound("created", (created.variant, models))])
-            summary["create"]["model"] = [term_text(m) for m in models]
-    trials = runner.trials
-    summary["trials"] = summarise_trials([t.as_dict() for t in trials])
-    summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
-    plot_trials([t.as_dict() for t in trials], run.path / "trials.png",
-                title=f"CREATIVE-py, {case} case, seed {options.seed}")
-    run.write_json("summary.json", summary)
-    say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
+        use = ToolUseLearner(runner, lopts).learn()
+        summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
+        summary["demonstration"] = {"tool": use.demo_tool}
+        summary["use"] = {"trials": len(use.trials), "converged": use.converged,
+                          "trials_to_converge": use.trials_to_converge}
+        engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
+        hs, hg = runner.bounds(use.vs)
+        summary["hypotheses"] = {"hs": hs, "hg": hg}
+        say(f"h_s: {hs}")
+        say(f"h_g: {hg}")
+
+        # The learned model planning the task (PDDL written for every run).
+        task = runner.task(use.trials[-1].variant if use.trials
+                           else manifest.demonstration.variant)
+        plan = engine.plan_task(case, use.models, use.vs, runner.task_facts(task),
+                                [Compound("pddl", (str(run.path / "domain.pddl"),
+                                                   str(run.path / "problem.pddl")))])
+        summary["plan"] = term_text(plan)
+        say(f"plan: {term_text(plan)}")
+
+        # Evaluation of the learned model: the planner's own tool and pose choice.
+        t0 = time.perf_counter()
+        summary["eval"] = _evaluate(runner, use, options.eval_trials)
+        summary["wall_time_s"]["eval"] = round(time.perf_counter() - t0, 2)
+
+        # Tool creation (Algorithm 2) on the harder variant.
+        if options.phase in ("create", "all"):
+            t0 = time.perf_counter()
+            creator = ToolCreator(runner, eval_trials=options.create_eval_trials)
+            created = creator.create(use.vs, manifest.harder_variant)
+            summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
+            summary["create"] = _creation_summary(created)
+            if created.success is not None:
+                models = engine.created_models(use.models, use.vs, created.replaced,
+                                               created.instance)
+                engine.write_model_file(run.path / "model.pl", case, use.models, use.vs,
+                                        [Compound("created", (created.variant, models))])
+                summary["create"]["model"] = [term_text(m) for m in models]
+        trials = runner.trials
+        summary["trials"] = summarise_trials([t.as_dict() for t in trials])
+        summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
+        plot_trials([t.as_dict() for t in trials], run.path / "trials.png",
+                    title=f"CREATIVE-py, {case} case, seed {options.seed}")
+        run.write_json("summary.json", summary)
+        say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
+    except BaseException:
+        # Nothing learned yet (the demonstration failed, the run was interrupted before
+        # its first trial): leave no empty folder behind.
+        if not run.trials:
+            shutil.rmtree(run.path, ignore_errors=True)
+        raise
     return run
 
 

@@ -69,7 +69,8 @@ def run_demonstration(world: Any, seed: int = 0,
 
     The tool, variant, location, skills and pose come from the manifest's
     ``[demonstration]``. Each step's facts are what the robot perceives (cameras) and
-    feels (arm proprioception).
+    feels (arm proprioception). A demonstration that fails in the physics raises
+    ValueError naming the manifest: there is nothing to learn from.
     """
     from creative_py.sim import open_episode
 
@@ -86,14 +87,15 @@ def run_demonstration(world: Any, seed: int = 0,
             steps.append(DemoStep(name, m.skill_args(skill, demo.tool), before, after,
                                   res.status))
             if res.status != "ok":
-                raise RuntimeError(f"{m.id} demonstration: skill {name} ended "
-                                   f"{res.status}: {res.reason}")
+                raise ValueError(f"{m.folder / 'case.toml'}: field 'demonstration': the "
+                                 f"trainer's skill {name} ended {res.status} in the physics: "
+                                 f"{res.reason}")
             before = after
         reached = ep.goal_reached()
     if not reached:
-        raise RuntimeError(f"{m.id} demonstration with {demo.tool} at location "
-                           f"{demo.location} did not reach the goal in the physics: "
-                           "nothing to learn from")
+        raise ValueError(f"{m.folder / 'case.toml'}: field 'demonstration': {demo.tool} at "
+                         f"location {demo.location} did not reach the goal in the physics: "
+                         "nothing to learn from")
     return Demonstration(demo.tool, demo.variant, demo.location, demo.pose, tuple(steps),
                          reached)
 

@@ -89,3 +89,23 @@ def test_make_tool_refuses_an_existing_tool_folder_unless_told_to_overwrite(tmp_
     forced = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
                       "--out", str(tmp_path), "--name", "h1", "--overwrite")
     assert forced.returncode == 0, forced.stderr
+
+
+def test_a_run_whose_demonstration_fails_is_one_line_and_leaves_no_folder(tmp_path):
+    import shutil
+
+    from creative_py.world import WORLDS_ROOT
+
+    world = tmp_path / "hook_tube"
+    shutil.copytree(WORLDS_ROOT / "hook_tube", world)
+    manifest = world / "case.toml"
+    manifest.write_text(manifest.read_text().replace('tool = "hook_a2"', 'tool = "stick_a5"'))
+    out = tmp_path / "runs"
+    proc = creative("run", "hook", "--world", str(world), "--out", str(out))
+    lines = [line for line in proc.stderr.splitlines()
+             if line.startswith(("error", "Traceback"))]
+    assert proc.returncode == 2, proc.stderr
+    assert len(lines) == 1
+    assert "case.toml: field 'demonstration': stick_a5 at location 1 did not reach the " \
+           "goal in the physics" in lines[0]
+    assert not out.exists() or list(out.iterdir()) == []
