@@ -14,7 +14,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any, Callable, Optional
 
-from creative_py.bridge import Compound, Engine
+from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.run_folder import RunFolder
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
@@ -202,15 +202,31 @@ def check_catalogue(engine: Engine, world: Any) -> None:
     naming the object and the fact otherwise."""
     from creative_py.sim.tools import catalogue_facts
 
+    from creative_py.learning.manufacture import tool_vocabulary
+
     m = world.manifest
     known = {(str(i.args[0]), int(i.args[1])) for i in engine.catalogue_predicates(m.id)}
+    kinds = tool_vocabulary(engine, m.id).kinds
+    where = m.folder / "objects.toml"
     for name, spec in world.catalogue.items():
-        for fact in catalogue_facts(spec):
+        facts = catalogue_facts(spec)
+        for fact in facts:
             if (fact[0], len(fact) - 1) not in known:
                 raise ValueError(
-                    f"{m.folder / 'objects.toml'}: {name}: the catalogue fact "
-                    f"{fact[0]}/{len(fact) - 1} is not in the ontology's vocabulary of the "
-                    f"case's tools ({', '.join(f'{n}/{a}' for n, a in sorted(known))})")
+                    f"{where}: {name}: the catalogue fact {fact[0]}/{len(fact) - 1} is not "
+                    f"in the ontology's vocabulary of the case's tools "
+                    f"({', '.join(f'{n}/{a}' for n, a in sorted(known))})")
+        # Every property of the object's kind must take a qualitative value: a number
+        # outside every range of the ontology would leave the learner blind to it.
+        literals = engine.abstract_state(m.id, [fact_term(f) for f in facts])
+        have = {lit.name for lit in literals
+                if isinstance(lit, Compound) and lit.args and lit.args[0] == name}
+        kind = str(facts[0][2]) if facts and facts[0][0] == "object_kind" else None
+        missing = [p for p in kinds.get(kind, ((), {}))[1] if p not in have]
+        if missing:
+            raise ValueError(
+                f"{where}: {name}: {', '.join(missing)} outside every qualitative range of "
+                f"the ontology (ontology/ranges.pl); the learner could not tell its value")
 
 
 def _evaluate(runner: TrialRunner, use: UseResult, n: int) -> dict[str, Any]:

@@ -381,6 +381,11 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
         raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
                              f"{len(locations)} (tasks.toml has {len(locations)} locations), "
                              f"got {demo.location}")
+    bodies = {b.name for b in scene.bodies}
+    for name in items:
+        if name in bodies:
+            raise WorldFileError(f"{d / 'objects.toml'}: object {name!r}: the name is "
+                                 f"already a [[body]] of scene.toml; names must be unique")
     for v in manifest.variants:
         for loc in world.locations:
             check_values(world, v.name, loc, demo.tool)

@@ -109,3 +109,36 @@ def test_a_run_whose_demonstration_fails_is_one_line_and_leaves_no_folder(tmp_pa
     assert "case.toml: field 'demonstration': stick_a5 at location 1 did not reach the " \
            "goal in the physics" in lines[0]
     assert not out.exists() or list(out.iterdir()) == []
+
+
+def _world_copy(tmp_path, old: str, new: str, file: str = "objects.toml") -> Path:
+    import shutil
+
+    from creative_py.world import WORLDS_ROOT
+
+    world = tmp_path / "hook_tube"
+    shutil.copytree(WORLDS_ROOT / "hook_tube", world)
+    text = (world / file).read_text()
+    assert old in text
+    (world / file).write_text(text.replace(old, new, 1))
+    return world
+
+
+def test_a_catalogued_tool_named_like_a_scene_object_is_refused(tmp_path):
+    world = _world_copy(tmp_path, 'name = "hook_a1"', 'name = "cube1"')
+    proc = creative("trial", "hook", "--world", str(world), "--tool", "hook_a2")
+    assert proc.returncode == 2, proc.stderr
+    assert "objects.toml: object 'cube1': the name is already a [[body]] of scene.toml" \
+        in proc.stderr
+    assert "Traceback" not in proc.stderr
+
+
+def test_a_dimension_outside_the_ontology_s_ranges_is_refused_before_any_trial(tmp_path):
+    world = _world_copy(tmp_path, "handle_length = 0.20", "handle_length = 5.0")
+    out = tmp_path / "runs"
+    proc = creative("run", "hook", "--world", str(world), "--out", str(out))
+    assert proc.returncode == 2, proc.stderr
+    assert "objects.toml: hook_a1: handle_length outside every qualitative range" \
+        in proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert not out.exists()
