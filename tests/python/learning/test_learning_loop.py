@@ -1,0 +1,87 @@
+"""The learning loop's Python, exercised on a short real run (Algorithm 1's first trials).
+
+A run of the rake case limited to three tool-use trials: the demonstration, then the
+experiments Prolog chooses, executed in the physics, labelled and fed back. The checks
+are on the version space after each trial, not only on the outcomes: a failure (here a
+blocked motion, labelled as the planned example) must make exactly the tested literal
+necessary in h_g.
+"""
+
+import json
+
+import pytest
+
+from creative_py.learning.run import RunOptions, run_case
+
+pytestmark = pytest.mark.sim
+
+
+@pytest.fixture(scope="module")
+def short_run(tmp_path_factory):
+    out = tmp_path_factory.mktemp("runs")
+    folder = run_case("rake", out, RunOptions(seed=0, phase="use", max_trials=3,
+                                              eval_trials=0))
+    trials = [json.loads(line) for line in (folder.path / "trials.jsonl").read_text()
+              .splitlines()]
+    summary = json.loads((folder.path / "summary.json").read_text())
+    return folder.path, trials, summary
+
+
+def test_the_budget_bounds_the_trials_and_each_tests_one_literal(short_run):
+    _, trials, summary = short_run
+    assert [t["phase"] for t in trials] == ["use"] * 3
+    assert summary["use"]["trials"] == 3
+    assert all(len(t["tested"]) == 1 for t in trials)
+
+
+def test_a_blocked_trial_makes_its_tested_literal_necessary(short_run):
+    _, trials, _ = short_run
+    first, second = trials[0], trials[1]
+    assert (first["tool"], first["outcome"]) == ("rake_a1", "blocked")
+    assert first["tested"] == ["handle_length(rake_a1,medium)"]
+    assert first["hg"] == "tool_pose(_G3,_G4,_G5) :- handle_length(_G3,medium)"
+    assert (second["tool"], second["outcome"]) == ("hook_a3", "blocked")
+    assert second["hg"] == ("tool_pose(_G3,_G4,_G5) :- handle_length(_G3,medium), "
+                            "hook_length(_G3,short)")
+    # A failure specialises h_g only: h_s, the demonstration's, is unchanged.
+    assert first["hs"] == second["hs"] == trials[2]["hs"]
+
+
+def test_a_failed_pose_test_adds_the_spatial_literal(short_run):
+    _, trials, _ = short_run
+    third = trials[2]
+    assert third["outcome"] == "failure"
+    literal = third["tested"][0].split("(")[0]
+    assert literal in third["hg"] and literal not in trials[1]["hg"]
+
+
+def test_the_short_run_writes_its_model_and_plan(short_run):
+    path, _, summary = short_run
+    assert "learned_model(rake, pull_out(" in (path / "model.pl").read_text()
+    assert summary["plan"].startswith("plan([pick_up(")
+    assert (path / "domain.pddl").exists() and (path / "problem.pddl").exists()
+
+
+def test_a_blocked_trial_is_labelled_with_the_planned_example():
+    # The motion stopped before the tool reached its pose, so what the cameras see then
+    # says nothing about the pose: the negative example is the planned one, which has
+    # the pose's spatial literals (the prong behind the box, down, centred).
+    from creative_py.bridge import Compound, Engine, clause_parts
+    from creative_py.case import get_case
+    from creative_py.learning.tool_use import LearningOptions, ToolUseLearner
+    from creative_py.learning.trials import TrialRunner
+    from creative_py.sim import load_world
+
+    engine = Engine.instance()
+    runner = TrialRunner(engine, load_world(get_case("rake")), None, seed=0)
+    _models, example, _tool = ToolUseLearner(runner, LearningOptions()).observe_demonstration()
+    vs = engine.vs_init(example)
+    task = runner.task("standard")
+    exp = engine.next_experiment("rake", vs, runner.task_facts(task), [])
+    rec, vs = runner.run(exp, "use", 1, vs, task, 0.0)
+    assert (rec.tool, rec.outcome) == ("rake_a1", "blocked")
+    _pos, neg = engine.vs_examples(vs)
+    assert len(neg) == 1
+    _head, body = clause_parts(neg[0])
+    assert Compound("behind", ("rake_a1", "box1")) in body
+    assert Compound("hook_down", ("rake_a1",)) in body
