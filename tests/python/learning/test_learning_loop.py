@@ -85,3 +85,26 @@ def test_a_blocked_trial_is_labelled_with_the_planned_example():
     _head, body = clause_parts(neg[0])
     assert Compound("behind", ("rake_a1", "box1")) in body
     assert Compound("hook_down", ("rake_a1",)) in body
+
+
+def test_the_learned_action_s_preconditions_are_in_domain_pddl(short_run):
+    # Read back by a real PDDL parser: the learned action's preconditions are exactly
+    # those of the learned model in model.pl (the skill's, h_g's, h_s's pose literals).
+    import re
+
+    from unified_planning.io import PDDLReader
+
+    path, _, _ = short_run
+    problem = PDDLReader().parse_problem(str(path / "domain.pddl"),
+                                         str(path / "problem.pddl"))
+    pre = str(problem.action("pull_out").preconditions[0])
+    pre = pre[1:-1] if pre.startswith("(") and pre.endswith(")") else pre
+    in_pddl = sorted(p.strip() for p in pre.split(" and "))
+    model = (path / "model.pl").read_text()
+    found = re.search(r"learned_model\(rake, pull_out\(A, B, C\),\s*\[(.*?)\],", model, re.S)
+    assert found, model
+    names = {"A": "tool", "B": "target", "C": "site"}
+    in_model = sorted(re.sub(r"\b[ABC]\b", lambda m: names[m.group(0)], lit.strip())
+                      for lit in re.findall(r"\w+\([^)]*\)", found.group(1)))
+    assert in_pddl == in_model
+    assert len(in_model) >= 6
