@@ -194,3 +194,20 @@ def test_unknown_object_and_variant_in_an_episode_are_refused(world):
     with pytest.raises(KeyError, match="variants: standard, big_door"):
         with open_episode(world, "huge_door", 1, "wedge_a2", seed=0):
             pass
+
+
+@pytest.mark.sim
+def test_each_condition_of_the_held_oracle_decides_a_scenario(world):
+    # A wedge the stronger closer pushes along: the door stays well open but moves on
+    # more than max_close_deg after touching it; only the closing limit says "not held".
+    demo = world.manifest.demonstration.pose
+    held, door, _ = _door_trial(world, "wedge_b2", "big_door", demo)
+    assert door.touched and not held
+    assert door.closed_after_contact_deg > 2.0
+    assert math.degrees(door.final_angle) >= 20.0
+    # A wedge far from the door: it stops the door at once, but nearly closed; only the
+    # minimum opening says "not held".
+    held, door, _ = _door_trial(world, "wedge_a3", "standard", (0.75, 0.33, 0.0))
+    assert door.touched and not held
+    assert door.closed_after_contact_deg < 2.0
+    assert math.degrees(door.final_angle) < 20.0
