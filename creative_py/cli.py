@@ -27,11 +27,36 @@ app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="CREATIVE: learn to use tools from one demonstration, and create new ones.")
 
 
+_DEBUG = {"on": False}
+"""Whether ``--debug`` was given: then an error shows its traceback."""
+
+
 @app.callback()
-def main(verbose: bool = typer.Option(False, "--verbose", "-v", help="Log progress.")) -> None:
+def main(verbose: bool = typer.Option(False, "--verbose", "-v", help="Log progress."),
+         debug: bool = typer.Option(False, "--debug", help="Show the traceback of an "
+                                    "error instead of its one-line message.")) -> None:
     """CREATIVE in Python and Prolog (Wicaksono & Sammut, IJECE 2020)."""
+    _DEBUG["on"] = debug
     logging.basicConfig(level=logging.INFO if verbose else logging.WARNING,
                         format="%(levelname)s %(name)s: %(message)s")
+
+
+@contextmanager
+def _one_line_errors() -> Iterator[None]:
+    """Turn what user data can cause (a world or ontology file, Prolog's answer to it, the
+    file system) into one line ``error: ...`` and exit code 2; ``--debug`` re-raises."""
+    from creative_py.bridge import BridgeError
+    from creative_py.world import WorldFileError
+
+    try:
+        yield
+    except (BridgeError, WorldFileError, OSError) as exc:
+        if _DEBUG["on"]:
+            raise
+        text = " ".join(str(exc).split())
+        if isinstance(exc, OSError) and exc.filename:
+            text = f"{exc.filename}: {exc.strerror or exc}"
+        _fail(text)
 
 
 @contextmanager
@@ -116,7 +141,7 @@ def trial(
 ) -> None:
     """Run one physical trial and report its outcome (success, failure, blocked,
     unreachable or invalid)."""
-    with _stdout_to_stderr():
+    with _one_line_errors(), _stdout_to_stderr():
         lines = _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
                        world, list_)
     for line in lines:
@@ -209,7 +234,7 @@ def run(
     except ValueError as exc:
         _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
     try:
-        with _stdout_to_stderr():
+        with _one_line_errors(), _stdout_to_stderr():
             folder = run_case(case, out, opts, progress=lambda m: console.print(m, markup=False,
                                                                                highlight=False),
                               world_dir=world)
@@ -324,7 +349,7 @@ def make_tool_cmd(
     from creative_py.world import WorldFileError
 
     try:
-        with _stdout_to_stderr():
+        with _one_line_errors(), _stdout_to_stderr():
             engine = Engine.instance()
             lits = parse_spec(case, spec)
             ctx = default_context(case, variant)

@@ -142,3 +142,34 @@ def test_a_dimension_outside_the_ontology_s_ranges_is_refused_before_any_trial(t
         in proc.stderr
     assert "Traceback" not in proc.stderr
     assert not out.exists()
+
+
+@pytest.mark.parametrize("bad, message", [
+    ("broken(:- .", "rake.pl:"),
+    ("p(X) :- undefined_thing(X).", "Unknown procedure: undefined_thing/1"),
+])
+def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_path, bad,
+                                                                           message):
+    import os
+    import shutil
+
+    root = Path(__file__).resolve().parents[2]
+    copy = tmp_path / "tree"
+    for folder in ("creative_py", "prolog", "ontology", "worlds"):
+        shutil.copytree(root / folder, copy / folder,
+                        ignore=shutil.ignore_patterns("__pycache__"))
+    with open(copy / "ontology" / "cases" / "rake.pl", "a") as fh:
+        fh.write("\n" + bad + "\n")
+    env = {**os.environ, "PYTHONPATH": str(copy)}
+    out = tmp_path / "runs"
+    cmd = [sys.executable, "-m", "creative_py.cli", "run", "rake", "--out", str(out)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, timeout=60, env=env,
+                          cwd=tmp_path)
+    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    assert proc.returncode == 2, proc.stderr
+    assert len(lines) == 1 and lines[0].startswith("error: ") and message in lines[0]
+    assert str(copy / "ontology" / "cases" / "rake.pl") in lines[0]
+    assert not out.exists()
+    debug = subprocess.run(cmd[:3] + ["--debug"] + cmd[3:], capture_output=True, text=True,
+                           timeout=60, env=env, cwd=tmp_path)
+    assert debug.returncode != 0 and "Traceback" in debug.stderr
