@@ -109,6 +109,7 @@ class UseResult:
     trials: list[TrialRecord]
     converged: bool
     trials_to_converge: Optional[int]
+    """The trials after which nothing was left to test (None: something still was)."""
     demo_tool: str
     wall_time_s: float
 
@@ -170,19 +171,23 @@ class ToolUseLearner:
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
-            elif rec.outcome in ("failure", "blocked"):
+            else:
                 cons = 0
-            elif exp.name == "experiment":
-                # The arm could not carry it out: it taught nothing; do not repeat it. A
-                # pose test (a negated spatial literal) is skipped whatever the tool.
-                who = "any" if exp.args[5] else exp.args[0]
-                skip.append(Compound("skip", (who, exp.args[1])))
+                if rec.outcome not in ("failure", "blocked") and exp.name == "experiment":
+                    # The arm could not carry it out: it taught nothing; do not repeat
+                    # it. A pose test (a negated spatial literal) is skipped whatever
+                    # the tool.
+                    who = "any" if exp.args[5] else exp.args[0]
+                    skip.append(Compound("skip", (who, exp.args[1])))
         else:
             exp = self.engine.next_experiment(self.case, vs, runner.task_facts(task), skip)
             if exp.name != "experiment" and converged_at is None:
                 converged_at = opts.max_trials
-        return UseResult(vs, models, list(runner.trials), converged_at is not None,
-                         converged_at, demo_tool, time.perf_counter() - t0)
+        # Converged: nothing is left to test, and the model's last K trials succeeded
+        # (a budget spent on trials the arm could not carry out is not convergence).
+        converged = converged_at is not None and cons >= opts.consecutive
+        return UseResult(vs, models, list(runner.trials), converged, converged_at,
+                         demo_tool, time.perf_counter() - t0)
 
 
 def _model_names(models: Term) -> str:
