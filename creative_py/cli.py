@@ -212,14 +212,31 @@ def run(
                                     "learned model after tool-use learning."),
     world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
                                          "shipped one of the case)."),
+    resume: Optional[Path] = typer.Option(None, "--resume", help="Resume this interrupted "
+                                          "run folder: replay its recorded trials without "
+                                          "physics, then go on (its own options apply)."),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot)."""
     from rich.console import Console
 
-    from creative_py.learning.run import RunOptions, run_case
+    from creative_py.learning.run import RunOptions, resume_run, run_case
     from creative_py.world import WorldFileError
 
     console = Console(stderr=True)
+    if resume is not None:
+        meta = resume / "run.json"
+        if not meta.is_file():
+            _fail(f"--resume {resume}: not a resumable run folder (no run.json)")
+        if json.loads(meta.read_text()).get("case") != case:
+            _fail(f"--resume {resume}: the run is not of case {case!r}")
+        try:
+            with _one_line_errors(), _stdout_to_stderr():
+                folder = resume_run(resume, progress=lambda m: console.print(
+                    m, markup=False, highlight=False))
+        except (WorldFileError, ValueError) as exc:
+            _fail(str(exc))
+        typer.echo(str(folder.path))
+        return
     _manifest(case, world)
     for option, value, least in (("--seed", seed, 0), ("--max-trials", max_trials, 1),
                                  ("--consecutive", consecutive, 1),
@@ -348,23 +365,24 @@ def make_tool_cmd(
     )
     from creative_py.world import WorldFileError
 
-    try:
-        with _one_line_errors(), _stdout_to_stderr():
-            engine = Engine.instance()
-            lits = parse_spec(case, spec)
-            ctx = default_context(case, variant)
-            if context:
-                ctx += parse_context(engine, context)
-            files = make_tool(engine, case, lits, ctx, name, out, picture=True,
-                              overwrite=overwrite)
-    except FileExistsError as exc:
-        _fail(f"{exc.filename or out}: the tool's folder exists (--overwrite replaces it)")
-    except (InfeasibleSpec, ValueError, WorldFileError) as exc:
-        _fail(str(exc))
-    except PrologError as exc:
-        _fail(f"--context {context!r}: the size model cannot use it: {exc.formal}")
-    except OSError as exc:
-        _fail(f"--out {out}: {exc.strerror or exc}")
+    with _one_line_errors():  # what the specific messages below do not cover
+        try:
+            with _stdout_to_stderr():
+                engine = Engine.instance()
+                lits = parse_spec(case, spec)
+                ctx = default_context(case, variant)
+                if context:
+                    ctx += parse_context(engine, context)
+                files = make_tool(engine, case, lits, ctx, name, out, picture=True,
+                                  overwrite=overwrite)
+        except FileExistsError as exc:
+            _fail(f"{exc.filename or out}: the tool's folder exists (--overwrite replaces it)")
+        except (InfeasibleSpec, ValueError, WorldFileError) as exc:
+            _fail(str(exc))
+        except PrologError as exc:
+            if not context:
+                raise
+            _fail(f"--context {context!r}: the size model cannot use it: {exc.formal}")
     for p in files.paths():
         typer.echo(str(p))
 

@@ -7,6 +7,7 @@ run leaves a readable ``trials.jsonl`` of the finished trials.
 
 from __future__ import annotations
 
+import json
 import logging
 import shutil
 import time
@@ -16,7 +17,7 @@ from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.learning.creation import CreateResult, ToolCreator
-from creative_py.learning.run_folder import RunFolder
+from creative_py.learning.run_folder import RunFolder, read_trials
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
@@ -70,9 +71,41 @@ class RunOptions:
                              f"got {self.phase!r}")
 
 
+def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
+    """Resume a run that was interrupted (killed, out of power) and return its folder.
+
+    The run's case, options and world come from its ``run.json``; the trials already in
+    ``trials.jsonl`` are replayed into the version space without physics (a torn last
+    line is dropped), then the run goes on from the next trial. Runs are deterministic,
+    so the result equals an uninterrupted run of the same seed, timings aside.
+
+    Raises
+    ------
+    ValueError
+        ``run_dir`` is not a run folder that can be resumed (no ``run.json``), or the
+        recorded trials are not those the learner decides now.
+    """
+    run_dir = Path(run_dir)
+    meta_path = run_dir / "run.json"
+    if not meta_path.is_file():
+        raise ValueError(f"{run_dir}: not a resumable run folder (no run.json)")
+    meta = json.loads(meta_path.read_text())
+    warnings: list[str] = []
+    trials = read_trials(run_dir, warn=warnings.append)
+    for w in warnings:
+        log.warning("%s", w)
+    # Keep the readable trials only, so that the run appends after them.
+    RunFolder(run_dir).rewrite_trials(trials)
+    options = RunOptions(**meta["options"])
+    world_dir = Path(meta["world"]) if meta.get("world") else None
+    return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
+                    resume=(run_dir, trials))
+
+
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
              progress: Optional[Callable[[str], None]] = None,
-             world_dir: Optional[Path] = None, run_name: Optional[str] = None) -> RunFolder:
+             world_dir: Optional[Path] = None, run_name: Optional[str] = None,
+             resume: Optional[tuple[Path, list]] = None) -> RunFolder:
     """Run one case end to end and return its run folder.
 
     Parameters
@@ -86,6 +119,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Receives one line of text per step (the CLI shows it).
     world_dir : Path or None
         A world folder other than the shipped one (with its own ``case.toml``).
+    resume : (Path, list of dict) or None
+        Used by :func:`resume_run`: the run folder and its recorded trials.
     """
     from creative_py.case import get_case, read_manifest
     from creative_py.sim import load_world
@@ -100,10 +135,17 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     engine = Engine.instance()
     check_manifest(engine, manifest)
     check_catalogue(engine, world)
-    run = RunFolder.create(Path(out), case, options.seed, run_name)
+    if resume is None:
+        run = RunFolder.create(Path(out), case, options.seed, run_name)
+        run.write_json("run.json", {"case": case, "options": asdict(options),
+                                    "world": str(world_dir) if world_dir else None})
+        replay: list = []
+    else:
+        run, replay = RunFolder(resume[0]), resume[1]
+        say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
     say(f"run folder {run.path}")
     try:
-        runner = TrialRunner(engine, world, run, options.seed, say)
+        runner = TrialRunner(engine, world, run, options.seed, say, replay=replay)
         lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
                                 consecutive=options.consecutive)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
@@ -159,7 +201,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     except BaseException:
         # Nothing learned yet (the demonstration failed, the run was interrupted before
         # its first trial): leave no empty folder behind.
-        if not run.trials:
+        if not run.trials and resume is None:
             shutil.rmtree(run.path, ignore_errors=True)
         raise
     return run

@@ -77,6 +77,13 @@ class RunFolder:
             os.fsync(fh.fileno())
         self.trials.append(record)
 
+    def rewrite_trials(self, records: list[dict[str, Any]]) -> None:
+        """Replace ``trials.jsonl`` by ``records`` (atomically): a resumed run keeps its
+        readable trials and drops a torn or corrupt line."""
+        text = "".join(json.dumps(_jsonable(r)) + "\n" for r in records)
+        write_atomic(self.trials_path, text)
+        self.trials = list(records)
+
     def write_text(self, name: str, text: str) -> Path:
         """Write a text file of the run atomically (temp file, then rename)."""
         return write_atomic(self.path / name, text)

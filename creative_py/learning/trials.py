@@ -28,7 +28,7 @@ import logging
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.case import CaseManifest
@@ -187,16 +187,23 @@ class TrialRunner:
         Seed of the run; trial ``n`` uses seed ``seed * 1000 + n`` in the physics.
     progress : callable or None
         Called with one line of text per trial.
+    replay : sequence of dict
+        Trials already recorded in ``trials.jsonl`` (a resumed run): the first
+        ``len(replay)`` trials take their outcome and observed facts from these records
+        instead of the physics, so the version space is rebuilt exactly; the decisions
+        are Prolog's again and must name the recorded tool and pose.
     """
 
     def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
-                 progress: Optional[Callable[[str], None]] = None) -> None:
+                 progress: Optional[Callable[[str], None]] = None,
+                 replay: Sequence[dict[str, Any]] = ()) -> None:
         self.engine = engine
         self.world = world
         self.run_folder = run
         self.seed = seed
         self.progress = progress or (lambda _msg: None)
         self.trials: list[TrialRecord] = []
+        self.replay = list(replay)
 
     @property
     def manifest(self) -> CaseManifest:
@@ -241,9 +248,12 @@ class TrialRunner:
         else:  # exploit
             tool, violated, pose, _req = exp.args
             tested_l = []
-        images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
-        ex = execute_trial(self.world, str(tool), task.variant, task.location,
-                           pose_numbers(pose), self.seed * 1000 + n, images)
+        if n <= len(self.replay):
+            ex = self._replayed(self.replay[n - 1], str(tool), task, pose, phase)
+        else:
+            images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
+            ex = execute_trial(self.world, str(tool), task.variant, task.location,
+                               pose_numbers(pose), self.seed * 1000 + n, images)
         td = time.perf_counter()
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is not None and label:
@@ -262,13 +272,31 @@ class TrialRunner:
             outcome=ex.outcome, reason=ex.reason, hs=hs, hg=hg,
             wall_time_s=round(ex.wall_time_s, 3), sim_time_s=round(ex.sim_time_s, 3),
             decision_time_s=round(decision, 4))
+        # What the robot observed before the tool action: a resumed run labels it again.
+        rec.extra["facts"] = [[a.item() if hasattr(a, "item") else a for a in f]
+                              for f in ex.facts_before]
         self.trials.append(rec)
-        if self.run_folder:
+        if self.run_folder and n > len(self.replay):
             self.run_folder.append_trial(rec.as_dict())
         self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
                       f"loc {task.location}  {ex.outcome:<11} "
                       f"tested {', '.join(tested_l) or '-'}")
         return rec, vs
+
+    def _replayed(self, record: dict[str, Any], tool: str, task: TaskState, pose: Term,
+                  phase: str) -> Executed:
+        """Return what a recorded trial did, after checking it is the trial decided now."""
+        planned = (phase, tool, task.variant, task.location, self._pose_dict(pose))
+        recorded = (record["phase"], record["tool"], record["variant"], record["location"],
+                    record.get("pose"))
+        if planned != recorded:
+            raise ValueError(f"trial {record['trial']} of the run being resumed was "
+                             f"{recorded}, but the learner now plans {planned}: the run "
+                             f"cannot be resumed with this code or these files")
+        return Executed(record["outcome"], record.get("reason", ""),
+                        [tuple(f) for f in record.get("facts", [])],
+                        float(record.get("sim_time_s", 0.0)),
+                        float(record.get("wall_time_s", 0.0)))
 
     def _pose_dict(self, pose: Term) -> dict[str, float]:
         m = self.manifest
