@@ -249,6 +249,12 @@ def check_catalogue(engine: Engine, world: Any) -> None:
     m = world.manifest
     known = {(str(i.args[0]), int(i.args[1])) for i in engine.catalogue_predicates(m.id)}
     kinds = tool_vocabulary(engine, m.id).kinds
+    for kind, (_classes, properties) in kinds.items():
+        for prop, values in properties.items():
+            if not values:
+                raise ValueError(f"ontology: the property {prop} of a {kind} has no values "
+                                 f"(no qualitative_range/5 in ontology/ranges.pl, nor a "
+                                 f"size_choice/4 in ontology/kinds/)")
     where = m.folder / "objects.toml"
     for name, spec in world.catalogue.items():
         facts = catalogue_facts(spec)

@@ -144,13 +144,7 @@ def test_a_dimension_outside_the_ontology_s_ranges_is_refused_before_any_trial(t
     assert not out.exists()
 
 
-@pytest.mark.parametrize("bad, message", [
-    ("broken(:- .", "rake.pl:"),
-    ("p(X) :- undefined_thing(X).", "Unknown procedure: undefined_thing/1"),
-])
-def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_path, bad,
-                                                                           message):
-    import os
+def _tree_copy(tmp_path) -> Path:
     import shutil
 
     root = Path(__file__).resolve().parents[2]
@@ -158,6 +152,37 @@ def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_pa
     for folder in ("creative_py", "prolog", "ontology", "worlds"):
         shutil.copytree(root / folder, copy / folder,
                         ignore=shutil.ignore_patterns("__pycache__"))
+    return copy
+
+
+def test_an_ontology_missing_a_property_s_ranges_is_named(tmp_path):
+    import os
+
+    copy = _tree_copy(tmp_path)
+    ranges = copy / "ontology" / "ranges.pl"
+    ranges.write_text("\n".join(line for line in ranges.read_text().splitlines()
+                                if not line.startswith("qualitative_range(handle_length")))
+    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", "run", "hook", "--out",
+                           str(tmp_path / "runs")], capture_output=True, text=True,
+                          timeout=60, env={**os.environ, "PYTHONPATH": str(copy)},
+                          cwd=tmp_path)
+    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    assert proc.returncode == 2, proc.stderr
+    assert lines == ["error: ontology: the property handle_length of a hook has no values "
+                     "(no qualitative_range/5 in ontology/ranges.pl, nor a size_choice/4 in "
+                     "ontology/kinds/)"]
+    assert not (tmp_path / "runs").exists()
+
+
+@pytest.mark.parametrize("bad, message", [
+    ("broken(:- .", "rake.pl:"),
+    ("p(X) :- undefined_thing(X).", "Unknown procedure: undefined_thing/1"),
+])
+def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_path, bad,
+                                                                           message):
+    import os
+
+    copy = _tree_copy(tmp_path)
     with open(copy / "ontology" / "cases" / "rake.pl", "a") as fh:
         fh.write("\n" + bad + "\n")
     env = {**os.environ, "PYTHONPATH": str(copy)}
