@@ -33,7 +33,7 @@ import threading
 from ctypes import byref, c_size_t
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar, Iterable, Optional, Sequence, Union
+from typing import ClassVar, Optional, Sequence, Union
 
 from creative_py.bridge import _native
 from creative_py.bridge.codec import decode
