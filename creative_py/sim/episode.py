@@ -169,6 +169,9 @@ class Episode:
         for body in self.bodies.values():
             body.build(self.sim)
         self.tool_body = self.kind.spawn(self, resolve_start(w, self.ns))
+        from creative_py.sim.bodies import frame_pose
+
+        self.tool_spawn_z = frame_pose(self.sim, self.tool_body)[0][2]
         self.perceived = []
         for p in w.scene.perceived:
             name = object_name(self.manifest, p.name, self.spec.name)

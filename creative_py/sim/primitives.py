@@ -52,7 +52,7 @@ from typing import Any, Callable, Mapping, Sequence
 import numpy as np
 import pybullet as pb
 
-from creative_py.sim.bodies import set_frame_pose
+from creative_py.sim.bodies import frame_pose, set_frame_pose
 from creative_py.sim.core import Pose
 from creative_py.sim.types import SkillOutcome
 from creative_py.sim.tools import (HookLike, grasp_slip, prong_centre, prong_reach,
@@ -81,10 +81,34 @@ class Primitive:
 
 
 # -------------------------------------------------------------------------- grasp
+FELL_M = 0.02
+"""How far (m) below where it was spawned a tool may lie at a grasp: further, it is
+falling off its stand or the table (a tool at rest settles by under a millimetre), and
+the trial is ``invalid``."""
+
+
 def grasp(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
-    """Grasp the episode's tool the way its kind is grasped, and lift it."""
+    """Grasp the episode's tool the way its kind is grasped, and lift it.
+
+    A tool that fell from where it lay (off its stand, off the table), before the grasp
+    or while the arm reached for it, cannot be picked up as the skill assumes: the
+    trial is ``invalid``, with that reason.
+    """
     ep.need_robot("grasp")
-    return ep.kind.grasp(ep, opts)
+    res = _fell(ep)
+    if res is None:
+        res = ep.kind.grasp(ep, opts)
+        if not res.ok:
+            res = _fell(ep) or res
+    return res
+
+
+def _fell(ep: Any) -> SkillOutcome | None:
+    drop = ep.tool_spawn_z - frame_pose(ep.sim, ep.tool_body)[0][2]
+    if drop > FELL_M:
+        return SkillOutcome("invalid", f"the tool fell {drop:.2f} m from where it lay "
+                                       "(off its stand or the table)")
+    return None
 
 
 # ------------------------------------------------------------------ grasp slip

@@ -184,3 +184,17 @@ def test_a_push_moves_the_held_tool_along_x_and_keeps_its_roll():
         after = {f[0]: f for f in ep.observe().facts}
     assert after["tip_position"][2] - before["tip_position"][2] == pytest.approx(0.05, abs=0.005)
     assert after["tool_roll"][2] == pytest.approx(before["tool_roll"][2], abs=0.05)
+
+
+@pytest.mark.sim
+def test_a_tool_that_falls_off_the_table_makes_the_trial_invalid():
+    # A 5 m handle (outside every range of the ontology, which a run refuses before
+    # any physics) tips off its stand and the table: the skill cannot pick it up.
+    from creative_py.case import get_case
+    from creative_py.mesh.spec import HookSpec
+    from creative_py.sim import load_world, run_trial
+
+    world = load_world(get_case("hook")).with_tool(HookSpec("pole", handle_length=5.0))
+    result = run_trial(world, "pole", "standard", 1)
+    assert result.outcome == "invalid"
+    assert "the tool fell" in result.reason
