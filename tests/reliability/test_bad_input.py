@@ -41,6 +41,10 @@ CORPUS = [
     (["run", "hook", "--phase", "sometimes"], "--phase: option phase must be one of"),
     (["run", "hook", "--out", "{a_file}"], "not a folder"),
     (["run", "hook", "--world", "{tmp}/nowhere"], "nowhere/case.toml: file not found"),
+    # a folder nothing can be created in (root ignores permission bits; /proc refuses)
+    (["run", "hook", "--out", "/proc/creative_runs"], "/proc/creative_runs: "),
+    (["make-tool", "hook", "handle_length=long", "--out", "/proc/creative_tools"],
+     "/proc/creative_tools"),
     (["trial", "hook", "--tool", "hook_a2", "--pose", "0.03,0,1e9"],
      "--pose: roll must be within"),
     (["trial", "hook", "--tool", "hook_a2", "--pose", "0.03,zero,0"],
