@@ -271,10 +271,11 @@ def check_catalogue(engine: Engine, world: Any) -> None:
                 if isinstance(lit, Compound) and lit.args and lit.args[0] == name}
         kind = str(facts[0][2]) if facts and facts[0][0] == "object_kind" else None
         missing = [p for p in kinds.get(kind, ((), {}))[1] if p not in have]
-        if missing:
+        if missing and not world.items[name].outside_ranges:
             raise ValueError(
                 f"{where}: {name}: {', '.join(missing)} outside every qualitative range of "
-                f"the ontology (ontology/ranges.pl); the learner could not tell its value")
+                f"the ontology (ontology/ranges.pl); the learner could not tell its value "
+                f"(write outside_ranges = true in its table if that is meant)")
 
 
 def _evaluate(runner: TrialRunner, use: UseResult, n: int) -> dict[str, Any]:

@@ -52,6 +52,9 @@ class CatalogueItem:
     set: str
     friction: float = 0.5
     urdf: Path | None = None
+    outside_ranges: bool = False
+    """Set by ``outside_ranges = true`` in objects.toml: the user knows a dimension lies
+    outside the ontology's qualitative ranges (a run refuses such an object otherwise)."""
 
 
 @dataclass(frozen=True)
@@ -282,8 +285,10 @@ def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
         data = dict(tf.data)
         obj_set = tf.str("set")
         friction = tf.float("friction", 0.5, minimum=0.0)
+        outside = tf.bool("outside_ranges", False)
         data.pop("set")
         data.pop("friction", None)
+        data.pop("outside_ranges", None)
         try:
             spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
         except ValueError as exc:
@@ -292,7 +297,7 @@ def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
             raise tf.error("kind", f"the simulator has no tool kind {spec.kind!r}")
         if spec.name in items:
             raise tf.error("name", f"object name {spec.name!r} is used twice")
-        items[spec.name] = CatalogueItem(spec, obj_set, friction)
+        items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside)
     f.done()
     if not items:
         raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")

@@ -144,8 +144,20 @@ def test_a_dimension_outside_the_ontology_s_ranges_is_refused_before_any_trial(t
     assert proc.returncode == 2, proc.stderr
     assert "objects.toml: hook_a1: handle_length outside every qualitative range" \
         in proc.stderr
+    assert "outside_ranges = true" in proc.stderr
     assert "Traceback" not in proc.stderr
     assert not out.exists()
+
+
+def test_a_dimension_outside_the_ranges_is_accepted_when_the_world_says_so(tmp_path):
+    from creative_py.bridge import Engine
+    from creative_py.case import read_manifest
+    from creative_py.learning.run import check_catalogue
+    from creative_py.sim import load_world
+
+    world = _world_copy(tmp_path, 'handle_length = 0.20',
+                        'handle_length = 0.90\noutside_ranges = true')
+    check_catalogue(Engine.instance(), load_world(read_manifest(world)))
 
 
 def _tree_copy(tmp_path) -> Path:
