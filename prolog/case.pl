@@ -8,7 +8,8 @@
             case_info/2,              % +Case, -Info
             tool_vocabulary/2,        % +Case, -Classes
             size_context_facts/1,     % -Indicators
-            catalogue_predicates/2    % +Case, -Indicators
+            catalogue_predicates/2,   % +Case, -Indicators
+            case_missing_hooks/2      % +Case, -Indicators
           ]).
 
 /** <module> How the engine asks a case: hook predicates of the ontology
@@ -263,4 +264,42 @@ catalogue_predicates(Case, Indicators) :-
     must_be_case(Case),
     case_answer(case_tool_class(Case, Class)),
     findall(PI, kb_holds(catalogue_predicate(Class, PI)), Indicators).
+
+
+%!  case_missing_hooks(+Case, -Missing:list) is det.
+%
+%   Missing are the Name/Arity of the hook predicates the engine asks of every case
+%   (required_hook_/1) that Case does not answer: no clause of the predicate has Case,
+%   or a variable, as its first argument.  Checked once before a run, so that a case
+%   file lacking a hook is named at once instead of when the engine first needs it.
+%
+%   ==
+%   ?- case_missing_hooks(hook, M).
+%   M = [].
+%   ==
+case_missing_hooks(Case, Missing) :-
+    must_be_case(Case),
+    findall(Name/Arity,
+            ( required_hook_(Name/Arity),
+              functor(Template, Name, Arity),
+              arg(1, Template, Case),
+              \+ kb_clause(Template, _) ),
+            Missing).
+
+required_hook_(task_roles/3).
+required_hook_(case_goal/2).
+required_hook_(case_skills/2).
+required_hook_(case_tool_class/2).
+required_hook_(case_extra_objects/2).
+required_hook_(innate_skill/3).
+required_hook_(learned_action_names/2).
+required_hook_(tool_acts_when/2).
+required_hook_(untestable_literals/2).
+required_hook_(task_predicate/2).
+required_hook_(tool_in_use/2).
+required_hook_(relative_pose/5).
+required_hook_(pose_target/5).
+required_hook_(spatial_definition/4).
+required_hook_(pose_domain/3).
+required_hook_(geometry_default/4).
 

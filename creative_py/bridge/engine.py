@@ -541,6 +541,11 @@ class Engine:
         class and every class below it: the vocabulary of a new tool's spec."""
         return self._must("tool_vocabulary", case)
 
+    def case_missing_hooks(self, case: str) -> list:
+        """Return the ``Name/Arity`` terms of the engine's hook predicates that the case's
+        ontology file does not answer (empty when it answers them all)."""
+        return self._must("case_missing_hooks", case)
+
     def catalogue_predicates(self, case: str) -> list:
         """Return the ``Name/Arity`` terms of the catalogue facts of the case's tool class
         (the ontology's vocabulary for describing a catalogued object)."""

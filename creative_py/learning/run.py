@@ -224,6 +224,11 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
         raise ValueError(f"{where}: field 'id': the ontology does not know case "
                          f"{manifest.id!r} (add ontology/cases/{manifest.ontology}.pl): "
                          f"{exc}") from None
+    missing = [f"{i.args[0]}/{i.args[1]}" for i in engine.case_missing_hooks(manifest.id)]
+    if missing:
+        raise ValueError(f"ontology/cases/{manifest.ontology}.pl: case {manifest.id} does "
+                         f"not answer the engine's hook predicate(s) {', '.join(missing)} "
+                         f"(ontology/README.md lists them)")
     skills, goal, target, context, pose_term = info.args
     checks = [
         ("skill", [s.name for s in manifest.skills], [str(s) for s in skills]),

@@ -82,6 +82,10 @@ test(catalogue_predicates_of_the_case_s_tool_class,
             block_height_m/2]) :-
     catalogue_predicates(wedge, Is).
 
+test(every_shipped_case_answers_every_required_hook) :-
+    forall(member(C, [hook, wedge, rake]),
+           ( case_missing_hooks(C, M), assertion(M == []) )).
+
 test(unknown_class_hook, error(existence_error(class_hook(spoon), new_tool_kind/3))) :-
     class_answer(new_tool_kind(spoon, [], _)).
 

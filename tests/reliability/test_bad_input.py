@@ -214,3 +214,20 @@ def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_pa
     debug = subprocess.run(cmd[:3] + ["--debug"] + cmd[3:], capture_output=True, text=True,
                            timeout=60, env=env, cwd=tmp_path)
     assert debug.returncode != 0 and "Traceback" in debug.stderr
+
+
+def test_a_case_file_lacking_a_hook_predicate_is_named_before_the_run(tmp_path):
+    import os
+
+    copy = _tree_copy(tmp_path)
+    rake = copy / "ontology" / "cases" / "rake.pl"
+    rake.write_text(rake.read_text().replace("relative_pose(rake,", "relative_pose_x(rake,"))
+    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", "run", "rake", "--out",
+                           str(tmp_path / "runs")], capture_output=True, text=True,
+                          timeout=60, env={**os.environ, "PYTHONPATH": str(copy)},
+                          cwd=tmp_path)
+    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    assert proc.returncode == 2, proc.stderr
+    assert lines == ["error: ontology/cases/rake.pl: case rake does not answer the engine's "
+                     "hook predicate(s) relative_pose/5 (ontology/README.md lists them)"]
+    assert not (tmp_path / "runs").exists()
