@@ -171,18 +171,23 @@ def _tree_copy(tmp_path) -> Path:
     return copy
 
 
-def test_an_ontology_missing_a_property_s_ranges_is_named(tmp_path):
+def _run_in_tree(copy: Path, tmp_path: Path, *args: str) -> tuple[subprocess.CompletedProcess,
+                                                                 list[str]]:
+    """Run ``creative`` from the copy of the tree; return the process and its error lines."""
     import os
 
+    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", *args],
+                          capture_output=True, text=True, timeout=60,
+                          env={**os.environ, "PYTHONPATH": str(copy)}, cwd=tmp_path)
+    return proc, [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+
+
+def test_an_ontology_missing_a_property_s_ranges_is_named(tmp_path):
     copy = _tree_copy(tmp_path)
     ranges = copy / "ontology" / "ranges.pl"
     ranges.write_text("\n".join(line for line in ranges.read_text().splitlines()
                                 if not line.startswith("qualitative_range(handle_length")))
-    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", "run", "hook", "--out",
-                           str(tmp_path / "runs")], capture_output=True, text=True,
-                          timeout=60, env={**os.environ, "PYTHONPATH": str(copy)},
-                          cwd=tmp_path)
-    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    proc, lines = _run_in_tree(copy, tmp_path, "run", "hook", "--out", str(tmp_path / "runs"))
     assert proc.returncode == 2, proc.stderr
     assert lines == ["error: ontology: the property handle_length of a hook has no values "
                      "(no qualitative_range/5 in ontology/ranges.pl, nor a size_choice/4 in "
@@ -217,16 +222,10 @@ def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_pa
 
 
 def test_a_case_file_lacking_a_hook_predicate_is_named_before_the_run(tmp_path):
-    import os
-
     copy = _tree_copy(tmp_path)
     rake = copy / "ontology" / "cases" / "rake.pl"
     rake.write_text(rake.read_text().replace("relative_pose(rake,", "relative_pose_x(rake,"))
-    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", "run", "rake", "--out",
-                           str(tmp_path / "runs")], capture_output=True, text=True,
-                          timeout=60, env={**os.environ, "PYTHONPATH": str(copy)},
-                          cwd=tmp_path)
-    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    proc, lines = _run_in_tree(copy, tmp_path, "run", "rake", "--out", str(tmp_path / "runs"))
     assert proc.returncode == 2, proc.stderr
     assert lines == ["error: ontology/cases/rake.pl: case rake does not answer the engine's "
                      "hook predicate(s) relative_pose/5 (ontology/README.md lists them)"]
