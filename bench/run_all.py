@@ -24,6 +24,7 @@ BENCHES = [
     [sys.executable, str(HERE / "sim_bench.py")],
     [sys.executable, str(HERE / "sim_wedge_bench.py")],
     [sys.executable, str(HERE / "decision_bench.py")],
+    [sys.executable, str(HERE / "soak_bench.py")],
 ]
 LEARNING = [sys.executable, str(HERE / "learning_bench.py")]
 
