@@ -19,30 +19,29 @@
    forall(( member(E, Sorted), file_name_extension(_, plt, E) ),
           ( directory_file_path(Dir, E, Path), load_files(user:Path, []) )).
 
-%   run_all: every unit in turn, each under a time limit (UNIT_LIMIT_S seconds), so a
-%   test whose predicate loops fails its unit instead of hanging the run (SWI-Prolog
-%   9.0's plunit has no per-test time limit).  Fails (exit status 1 under -g) if a unit
-%   failed or ran out of time.
-unit_limit_s(120).
+%   run_all: every test in turn, each under a time limit (test_limit_s/1 seconds), so a
+%   test whose predicate loops fails instead of hanging the run (SWI-Prolog 9.0's
+%   plunit has no time limit of its own).  Fails (exit status 1 under -g) if a test
+%   failed or ran out of time, naming them.
+test_limit_s(60).
 
 run_all :-
-    findall(U, current_test_unit(U, _), Units0),
-    sort(Units0, Units),
-    unit_limit_s(Limit),
-    foldl(run_unit_limited_(Limit), Units, [], Bad),
+    findall(U:T, current_test(U, T, _, _, _), Tests),
+    test_limit_s(Limit),
+    foldl(run_test_limited_(Limit), Tests, [], Bad),
     (   Bad == []
     ->  true
     ;   reverse(Bad, Failed),
-        format(user_error, "plunit units failed or out of time: ~w~n", [Failed]),
+        format(user_error, "plunit tests failed or out of time: ~w~n", [Failed]),
         fail
     ).
 
-run_unit_limited_(Limit, Unit, Bad0, Bad) :-
-    (   catch(call_with_time_limit(Limit, run_tests(Unit)),
+run_test_limited_(Limit, Test, Bad0, Bad) :-
+    (   catch(call_with_time_limit(Limit, run_tests(Test)),
               time_limit_exceeded,
-              ( format(user_error, "plunit unit ~w ran over ~w s: a test loops~n",
-                       [Unit, Limit]),
+              ( format(user_error, "plunit test ~w ran over ~w s: it loops~n",
+                       [Test, Limit]),
                 fail ))
     ->  Bad = Bad0
-    ;   Bad = [Unit|Bad0]
+    ;   Bad = [Test|Bad0]
     ).
