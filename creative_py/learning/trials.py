@@ -123,7 +123,11 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
     m: CaseManifest = world.manifest
     key = (m.id, str(m.folder), tuple(sorted(world.catalogue)), variant, int(location))
     if key not in _TASK_FACTS:
-        with open_episode(world, variant, int(location), m.demonstration.tool, seed=0) as ep:
+        # The robot is not built: it is invisible to the cameras and holds nothing yet,
+        # so the facts are the same (checked for every case, variant and location) and
+        # the scene builds seven times faster.
+        with open_episode(world, variant, int(location), m.demonstration.tool, seed=0,
+                          robot=False) as ep:
             _TASK_FACTS[key] = list(ep.observe().facts)
     return _TASK_FACTS[key]
 

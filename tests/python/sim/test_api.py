@@ -50,3 +50,21 @@ def test_run_skill_returns_a_skill_outcome_and_unknown_skills_are_named():
         assert isinstance(out, SkillOutcome) and out.ok
         with pytest.raises(KeyError, match="unknown skill"):
             ep.run_skill("juggle")
+
+
+@pytest.mark.sim
+@pytest.mark.parametrize("case", ["hook", "wedge", "rake"])
+def test_a_scene_without_the_robot_is_perceived_as_with_it(case):
+    # The learner observes a task without building Baxter (learning/trials.task_facts).
+    from creative_py.case import get_case
+    from creative_py.sim import load_world, open_episode
+
+    m = get_case(case)
+    world = load_world(m)
+    variant = m.harder_variant
+    seen = []
+    for robot in (True, False):
+        with open_episode(world, variant, world.locations[-1], m.demonstration.tool, seed=0,
+                          robot=robot) as ep:
+            seen.append(list(ep.observe().facts))
+    assert seen[0] == seen[1]
