@@ -15,20 +15,26 @@ OUT   ?= runs
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
 
+# System packages: the Prolog engine, OpenSCAD (the .scad check), PrusaSlicer (G-code of
+# every printable piece), ffmpeg (video), Chromium (the HTML report's browser test).
+APT_PACKAGES := swi-prolog-nox openscad prusa-slicer ffmpeg chromium
+APT_PROGRAMS := swipl openscad prusa-slicer ffmpeg chromium
+
 /usr/bin/swipl:
 	$(SUDO) apt-get update -qq
-	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq swi-prolog-nox openscad >/dev/null
+	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(APT_PACKAGES) >/dev/null
 
 $(STAMP): pyproject.toml | /usr/bin/swipl
-	@command -v openscad >/dev/null || ($(SUDO) apt-get update -qq && \
-	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq openscad >/dev/null)
+	@for p in $(APT_PROGRAMS); do command -v $$p >/dev/null || missing=1; done; \
+	  [ -z "$$missing" ] || ($(SUDO) apt-get update -qq && \
+	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(APT_PACKAGES) >/dev/null)
 	python3 -m venv $(VENV)
 	$(PY) -m pip install -q --upgrade pip
 	$(PY) -m pip install -q -e '.[test]'
 	$(PY) -m pip install -q --no-deps example-robot-data
 	touch $(STAMP)
 
-setup: $(STAMP)  ## Install SWI-Prolog, OpenSCAD and the Python environment.
+setup: $(STAMP)  ## Install SWI-Prolog, OpenSCAD, PrusaSlicer, ffmpeg, Chromium and the Python environment.
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 
