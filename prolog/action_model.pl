@@ -8,7 +8,8 @@
             tool_literal_kind/3,        % +Tool, +Literal, -Kind
             action_models_compile/2,    % +Models, -Compiled
             action_objects/4,           % +Models, +Literals, +Extra, -Objects
-            catalogued_object/2         % +Literal, -Object
+            catalogued_object/2,        % +Literal, -Object
+            case_tool_objects/3         % +Case, +Literals, -Tools
           ]).
 
 /** <module> STRIPS action models: the robot's innate skills and learned tool actions
@@ -248,6 +249,37 @@ catalogued_object(Literal, Object) :-
     compound_name_arguments(Literal, Class, [Object]),
     once(kb_clause(subclass_of(_, Class), true)),
     \+ kb_clause(subclass_of(Class, _), true).
+
+%!  case_tool_objects(+Case, +Literals, -Tools) is det.
+%
+%   Tools is the sorted list of the objects of Literals that can be a tool of Case:
+%   every X of a class literal C(X) with C a class of the case's tool hierarchy
+%   (case:tool_vocabulary/2: the case's tool class, case_tool_class/2, the classes
+%   below it and the classes above it by subclass_of/2), or a catalogued object
+%   (catalogued_object/2).  What h_g keeps of the class literals does not matter:
+%   the types come from the ontology and the catalogue's literals of the state.
+%
+%       ?- case_tool_objects(hook, [hook_like(h1), stick(s1), in_tube(cube1, tube1),
+%                                   handle_length(h1, medium)], Ts).
+%       Ts = [h1, s1].
+%
+%   @error existence_error(case, Case) for a case no ontology file declares.
+
+case_tool_objects(Case, Literals, Tools) :-
+    must_be(list, Literals),
+    tool_vocabulary(Case, Classes),
+    findall(C, ( member(class(K, Above, _), Classes), member(C, [K|Above]) ), Cs0),
+    sort(Cs0, Cs),
+    findall(X, ( member(L, Literals),
+                 compound(L),
+                 compound_name_arguments(L, C, [X]),
+                 atom(X),
+                 (   memberchk(C, Cs)
+                 ->  true
+                 ;   catalogued_object(L, X)
+                 ) ),
+            Xs),
+    sort(Xs, Tools).
 
 %!  action_models_compile(+Models, -Compiled) is det.
 %

@@ -57,7 +57,7 @@ if it needs a new module, its use_module/1 below.
                            label_trial/7]).
 :- use_module(creation, [next_tool/6, creation_candidates/3]).
 :- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6,
-                            created_models/5, write_model_file/5]).
+                            plan_models/5, created_models/5, write_model_file/5]).
 :- use_module(planner, [plan/5]).
 :- use_module(action_model, [innate_action_models/2]).
 :- use_module(pddl, [pddl_write_files/6]).
@@ -139,6 +139,8 @@ api_op(write_model_file(File, Case, Models, VS), true,
 api_op(load_model_file(File), true, load_model_file(File)).
 api_op(plan_task(Case, Models, VS, Facts, Options), R,
        plan_task(Case, Models, VS, Facts, Options, R)).
+api_op(plan_models(Case, Learned, Facts, Options), R,
+       plan_models(Case, Learned, Facts, Options, R)).
 api_op(plan(State, Goal, Models, Options), R, plan(State, Goal, Models, Options, R)).
 api_op(innate_action_models(Case), Ms, innate_action_models(Case, Ms)).
 api_op(pddl_write_files(Dom, Prob, Models, State, Goal, Options), true,

@@ -3,6 +3,7 @@
             load_model_file/1,    % +File
             learned_action_models/3, % +Models, +VS, -Learned
             plan_task/6,          % +Case, +Models, +VS, +Primitive, +Options, -Result
+            plan_models/5,        % +Case, +Learned, +Primitive, +Options, -Result
             created_models/5,     % +Models, +VS, +Replaced, +Instance, -Created
             write_model_file/5    % +File, +Case, +Models, +VS, +Created
           ]).
@@ -142,16 +143,39 @@ learned_models_([M|Ms], HG, [L|Ls]) :-
 
 plan_task(Case, Models, VS, Primitive, Options, Result) :-
     learned_action_models(Models, VS, Learned),
+    plan_models(Case, Learned, Primitive, Options, Result).
+
+%!  plan_models(+Case, +Learned, +Primitive, +Options, -Result) is det.
+%
+%   As plan_task/6, with the learned action models given as they are (Learned, e.g.
+%   the harder task's models of created_models/5) instead of rewritten from a version
+%   space: plan the case's task in the state of the primitive facts with Learned and
+%   the innate skills. Option pddl(DomainFile, ProblemFile) also writes the PDDL files
+%   (pddl:pddl_write_files/6 with the case's tool typing), named after the options
+%   domain_name(N) (default `creative`) and problem_name(N) (default `task`); the
+%   planner's own options are passed on.
+
+plan_models(Case, Learned, Primitive, Options, Result) :-
+    must_be(list, Learned),
     innate_action_models(Case, Innate),
     append(Learned, Innate, All),
     observed_state(Case, Primitive, State),
     action_task_goal(Case, Goal),
     case_answer(case_extra_objects(Case, Extra)),
     (   option(pddl(Dom, Prob), Options)
-    ->  pddl_write_files(Dom, Prob, All, State, Goal, [objects(Extra)])
+    ->  option(domain_name(DomainName), Options, creative),
+        option(problem_name(ProblemName), Options, task),
+        pddl_write_files(Dom, Prob, All, State, Goal,
+                         [objects(Extra), case(Case), domain_name(DomainName),
+                          problem_name(ProblemName)])
     ;   true
     ),
-    plan(State, Goal, All, [objects(Extra)|Options], Result).
+    exclude(pddl_option_, Options, PlanOptions),
+    plan(State, Goal, All, [objects(Extra)|PlanOptions], Result).
+
+pddl_option_(pddl(_, _)).
+pddl_option_(domain_name(_)).
+pddl_option_(problem_name(_)).
 
 pairs_keys_([], []).
 pairs_keys_([K-_|Ps], [K|Ks]) :-

@@ -328,8 +328,17 @@ write_text_(File, Text) :-
 %   Models and Goal; the problem's :init keeps the literals of State whose predicate
 %   the domain declares, and its objects are every constant of that init and Goal
 %   (typed by action_model:action_objects/4) that is not a domain constant, plus the
-%   objects(List) option.  Options: domain_name(N) (default `creative`),
-%   problem_name(N) (default `task`), objects(List) (Name-Type, e.g. [floor1-site]).
+%   objects(List) option.
+%
+%   Tool typing.  Every object of the whole State that can be a tool is of type
+%   `tool_object`, whether or not the literal that says so is declared by the domain
+%   (a learned h_g seldom keeps tool/1): with the option case(Case), an object of a
+%   class literal of the case's tool hierarchy (action_model:case_tool_objects/3,
+%   asked of the ontology); without it, a catalogued object
+%   (action_model:catalogued_object/2: tool(X), object(X) in State).
+%
+%   Options: domain_name(N) (default `creative`), problem_name(N) (default `task`),
+%   objects(List) (Name-Type, e.g. [floor1-site]; wins over inference), case(Case).
 %
 %       ?- innate_action_models(hook, Ms),
 %          pddl_write_files('/tmp/d.pddl', '/tmp/p.pddl', Ms,
@@ -340,7 +349,12 @@ pddl_write_files(DomainFile, ProblemFile, Models, State, Goal, Options) :-
     must_be(list, Options),
     option(domain_name(DomainName), Options, creative),
     option(problem_name(ProblemName), Options, task),
-    option(objects(Extra), Options, []),
+    option(objects(Extra0), Options, []),
+    must_be(list, Extra0),
+    state_tools_(Options, State, Tools),
+    pairs_keys(Extra0, ExtraNames),
+    findall(T-tool, ( member(T, Tools), \+ memberchk(T, ExtraNames) ), ToolObjects),
+    append(Extra0, ToolObjects, Extra),
     pddl_domain(DomainName, Models, [extra_literals(Goal)], DomainText),
     action_models_compile(Models, Actions),
     maplist(action_literals_, Actions, LiteralLists),
@@ -354,6 +368,14 @@ pddl_write_files(DomainFile, ProblemFile, Models, State, Goal, Options) :-
     pddl_problem(ProblemName, DomainName, Objects, Init, Goal, ProblemText),
     write_text_(DomainFile, DomainText),
     write_text_(ProblemFile, ProblemText).
+
+%   The objects of State that can be a tool (see pddl_write_files/6).
+state_tools_(Options, State, Tools) :-
+    (   option(case(Case), Options)
+    ->  case_tool_objects(Case, State, Tools)
+    ;   findall(X, ( member(L, State), catalogued_object(L, X) ), Xs),
+        sort(Xs, Tools)
+    ).
 
 declared_(Signatures, L) :-
     functor(L, F, N),

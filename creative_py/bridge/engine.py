@@ -600,6 +600,14 @@ class Engine:
         models; option ``pddl(Domain, Problem)`` also writes the PDDL files."""
         return self._must("plan_task", case, models, vs, list(facts), list(options))
 
+    def plan_models(self, case: str, learned: Sequence[Term], facts: Sequence[Term],
+                    options: Sequence[Term] = ()) -> Term:
+        """Return ``plan(Steps)`` (or a reason) for the case's goal with the given learned
+        action models (e.g. :meth:`created_models`) and the innate skills; option
+        ``pddl(Domain, Problem)`` also writes the PDDL files, ``domain_name(N)`` and
+        ``problem_name(N)`` name their domain and problem."""
+        return self._must("plan_models", case, list(learned), list(facts), list(options))
+
     def write_model_file(self, path: PathLike, case: str, models: Term, vs: Term,
                          created: Sequence[Term] = ()) -> None:
         """Write ``model.pl`` (learned models and hypotheses, and ``created(Variant,

@@ -15,7 +15,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Any, Callable, Optional
 
-from creative_py.bridge import Compound, Engine, fact_term
+from creative_py.bridge import Compound, Engine, PrologError, fact_term
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.run_folder import RunFolder, read_trials
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
@@ -172,6 +172,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                                                    str(run.path / "problem.pddl")))])
         summary["plan"] = term_text(plan)
         say(f"plan: {term_text(plan)}")
+        summary["pddl"] = {"use": _check_pddl(run.path, "domain.pddl", "problem.pddl",
+                                              plan, task.variant, say)}
 
         # Evaluation of the learned model: the planner's own tool and pose choice.
         t0 = time.perf_counter()
@@ -191,6 +193,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                 engine.write_model_file(run.path / "model.pl", case, use.models, use.vs,
                                         [Compound("created", (created.variant, models))])
                 summary["create"]["model"] = [term_text(m) for m in models]
+                summary["pddl"]["create"] = _created_pddl(runner, run.path, created, models,
+                                                          say)
         trials = runner.trials
         summary["trials"] = summarise_trials([t.as_dict() for t in trials])
         summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
@@ -215,8 +219,6 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
     and the pose; the ontology (``ontology/cases/<case>.pl``) holds the knowledge behind
     the same names, so the two must say the same.
     """
-    from creative_py.bridge import PrologError
-
     where = manifest.folder / "case.toml"
     try:
         info = engine.case_info(manifest.id)
@@ -296,6 +298,61 @@ def _evaluate(runner: TrialRunner, use: UseResult, n: int) -> dict[str, Any]:
         outcomes.append(rec.outcome)
         task.next_location()
     return {"trials": n, "successes": outcomes.count("success"), "outcomes": outcomes}
+
+
+def _plan_steps(plan: Any) -> Optional[list[tuple[str, list[str]]]]:
+    """Return the steps of the engine's ``plan(Steps)`` as (name, [args]), or None for a
+    ``no_plan(Reason)``."""
+    if not (isinstance(plan, Compound) and plan.name == "plan"):
+        return None
+    steps = []
+    for step in plan.args[0]:
+        if isinstance(step, Compound):
+            steps.append((step.name, [str(a) for a in step.args]))
+        else:
+            steps.append((str(step), []))
+    return steps
+
+
+def _check_pddl(folder: Path, domain: str, problem: str, plan: Any, variant: str,
+                say: Callable[[str], None]) -> dict[str, Any]:
+    """Solve the run's own PDDL files with pyperplan and compare with Prolog's plan
+    (:func:`creative_py.learning.pddl_check.check_files`); the record of
+    ``summary.json``'s ``pddl`` key for one task."""
+    from creative_py.learning.pddl_check import check_files
+
+    record = check_files(folder / domain, folder / problem, _plan_steps(plan))
+    record["variant"] = variant
+    record["prolog"] = term_text(plan)
+    same = "equals Prolog's" if record["equals_prolog"] else "DIFFERS from Prolog's"
+    say(f"pddl {problem}: {record['status']} by {record['planner']} "
+        f"{' '.join(record['plan'])} ({same})")
+    return record
+
+
+def _created_pddl(runner: TrialRunner, folder: Path, created: CreateResult,
+                  models: Any, say: Callable[[str], None]) -> dict[str, Any]:
+    """Write and check the harder task's PDDL: the created tool's model (the learned one
+    with the replaced literal swapped) planning the harder variant, with the created
+    tools in the catalogue, as ``domain_<variant>.pddl`` and ``problem_<variant>.pddl``.
+    """
+    task = runner.task(created.variant)
+    domain, problem = f"domain_{created.variant}.pddl", f"problem_{created.variant}.pddl"
+    from creative_py.learning.pddl_check import PLANNER_NAME
+
+    names = [Compound("domain_name", (f"creative_{created.variant}",)),
+             Compound("problem_name", (f"task_{created.variant}",))]
+    try:
+        plan = runner.engine.plan_models(
+            runner.case, models, runner.task_facts(task),
+            [Compound("pddl", (str(folder / domain), str(folder / problem))), *names])
+    except PrologError as exc:
+        log.warning("%s: the harder task's PDDL was not written: %s", folder, exc)
+        return {"domain": domain, "problem": problem, "status": "error", "plan": [],
+                "equals_prolog": False, "planner": PLANNER_NAME, "variant": created.variant,
+                "error": str(exc)}
+    say(f"plan ({created.variant}, created model): {term_text(plan)}")
+    return _check_pddl(folder, domain, problem, plan, created.variant, say)
 
 
 def _creation_summary(res: CreateResult) -> dict[str, Any]:

@@ -21,6 +21,18 @@ def _run(case, tmp_path, **kw):
     return folder.path, json.loads((folder.path / "summary.json").read_text())
 
 
+def assert_pddl_solved(path, s):
+    """Both tasks' own PDDL files (the tool-use task, the harder one with the created
+    tool's model) solved by pyperplan with the Prolog planner's plan."""
+    variant = s["create"]["variant"]
+    assert set(s["pddl"]) == {"use", "create"}
+    assert s["pddl"]["create"]["domain"] == f"domain_{variant}.pddl"
+    for record in s["pddl"].values():
+        assert record["status"] == "solved", record
+        assert record["equals_prolog"] and record["prolog_plan_valid"], record
+        assert (path / record["domain"]).exists() and (path / record["problem"]).exists()
+
+
 def test_wedge_case_end_to_end(tmp_path):
     path, s = _run("wedge", tmp_path)
     trials = read_trials(path)
@@ -41,6 +53,7 @@ def test_wedge_case_end_to_end(tmp_path):
     assert "learned_model(wedge-big_door" in model and "block_length(A, long)" in model
     for f in ("domain.pddl", "problem.pddl", "trials.png"):
         assert (path / f).exists()
+    assert_pddl_solved(path, s)
 
 
 def test_hook_case_end_to_end(tmp_path):
@@ -53,3 +66,4 @@ def test_hook_case_end_to_end(tmp_path):
     tool = create["created_tools"][-1]
     assert tool["instance"].startswith("handle_length(") and "long" in tool["instance"]
     assert sum(o == "success" for o in create["eval"]) >= 4      # paper: 5 of 5
+    assert_pddl_solved(path, s)

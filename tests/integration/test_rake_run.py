@@ -33,3 +33,7 @@ def test_rake_case_end_to_end(tmp_path):
         assert (folder.path / "tools" / tool["name"] / f"{tool['name']}.{ext}").exists()
     model = (folder.path / "model.pl").read_text()
     assert "learned_model(rake-deep_shelf" in model
+    assert set(s["pddl"]) == {"use", "create"}
+    assert s["pddl"]["create"]["problem"] == "problem_deep_shelf.pddl"
+    for record in s["pddl"].values():
+        assert record["status"] == "solved" and record["equals_prolog"], record

@@ -76,4 +76,70 @@ tmp_files_(D, P) :-
 delete_files_(Files) :-
     forall(( member(F, Files), exists_file(F) ), delete_file(F)).
 
+%   The models of a demonstration whose preconditions lost the class literals (tool/1,
+%   hook_like/1, object/1, block/1), as a learned h_g usually does.
+models_without_class_literals_(Case, Models) :-
+    models_(Case, Models0),
+    maplist(drop_class_literals_, Models0, Models).
+
+drop_class_literals_(action_model(N, Ps, Pre0, Add, Del), action_model(N, Ps, Pre, Add, Del)) :-
+    exclude(class_literal_, Pre0, Pre).
+
+class_literal_(L) :-
+    compound(L),
+    compound_name_arguments(L, F, [_]),
+    memberchk(F, [tool, hook_like, object, block]).
+
+write_texts_(Case, Models, State, Options, DText, PText) :-
+    tmp_files_(D, P),
+    action_task_goal(Case, Goal),
+    call_cleanup(( pddl_write_files(D, P, Models, State, Goal, Options),
+                   read_file_to_string(D, DText, []),
+                   read_file_to_string(P, PText, []) ),
+                 delete_files_([D, P])).
+
+test(tools_typed_from_the_ontology_whatever_h_g_holds) :-
+    models_without_class_literals_(hook, Models),
+    fixture_initial_state(hook, S0),
+    write_texts_(hook, Models, S0, [case(hook)], DText, PText),
+    \+ contains_(DText, "(tool "),
+    \+ contains_(DText, "(hook_like "),
+    forall(member(T, [hook_a1, hook_a2, hook_a3, hook_a4, hook_a5]),
+           ( format(string(S), "~w - tool_object", [T]), contains_(PText, S) )),
+    \+ contains_(PText, "hook_a2 - value"),
+    contains_(PText, "cube1 - target"),
+    contains_(PText, "tube1 - site").
+
+test(tools_typed_from_the_catalogue_without_the_case_option) :-
+    models_without_class_literals_(hook, Models),
+    fixture_initial_state(hook, S0),
+    write_texts_(hook, Models, S0, [], _, PText),
+    contains_(PText, "hook_a2 - tool_object"),
+    contains_(PText, "hook_a5 - tool_object").
+
+test(a_subclass_literal_makes_a_tool_of_the_case) :-
+    models_without_class_literals_(hook, Models),
+    fixture_initial_state(hook, S0),
+    exclude(class_literal_, S0, S1),
+    write_texts_(hook, Models, S1, [case(hook)], _, PText),
+    contains_(PText, "hook_a2 - tool_object"),
+    contains_(PText, "hook_a5 - tool_object").
+
+test(blocks_typed_as_tools) :-
+    models_without_class_literals_(wedge, Models),
+    fixture_initial_state(wedge, S0),
+    exclude([L]>>(L = object(_)), S0, S1),
+    write_texts_(wedge, Models, S1, [case(wedge), objects([floor1-site])], _, PText),
+    forall(member(W, [box_a1, cylinder_b1, wedge_a1, wedge_a2]),
+           ( format(string(S), "~w - tool_object", [W]), contains_(PText, S) )),
+    contains_(PText, "door1 - target"),
+    contains_(PText, "floor1 - site").
+
+test(case_tool_objects, Tools == [h1, s1, w9]) :-
+    case_tool_objects(hook, [hook(h1), stick(s1), tool(w9), in_tube(cube1, tube1),
+                             handle_length(h1, medium), on_table(x7)], Tools).
+
+test(case_tool_objects_unknown_case, error(existence_error(case, kitchen))) :-
+    case_tool_objects(kitchen, [], _).
+
 :- end_tests(pddl).

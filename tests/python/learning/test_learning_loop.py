@@ -108,3 +108,26 @@ def test_the_learned_action_s_preconditions_are_in_domain_pddl(short_run):
                       for lit in re.findall(r"\w+\([^)]*\)", found.group(1)))
     assert in_pddl == in_model
     assert len(in_model) >= 6
+
+
+def test_the_run_solves_its_own_pddl_with_the_prolog_plan(short_run):
+    """summary.json's pddl record: pyperplan (through unified-planning) solved the run's
+    own domain.pddl/problem.pddl, with the same steps as the Prolog planner; solving the
+    files again gives the same plan, and every catalogued tool is typed as a tool."""
+    from creative_py.case import get_case
+    from creative_py.learning.pddl_check import parse, solve, step_text
+    from creative_py.sim import load_world
+
+    path, _, summary = short_run
+    record = summary["pddl"]["use"]
+    assert record["status"] == "solved" and record["planner"] == "pyperplan"
+    assert record["equals_prolog"] is True and record["prolog_plan_valid"] is True
+    assert (record["domain"], record["problem"]) == ("domain.pddl", "problem.pddl")
+    prolog = summary["plan"][len("plan(["):-len("])")].replace("),", ") ").split(" ")
+    assert record["plan"] == ["(" + s.replace("(", " ").replace(",", " ").rstrip(")") + ")"
+                              for s in prolog]
+    again = solve(path / "domain.pddl", path / "problem.pddl")
+    assert [step_text(s) for s in again] == record["plan"]
+    task = parse(path / "domain.pddl", path / "problem.pddl")
+    tools = {o.name for o in task.all_objects if o.type.name == "tool_object"}
+    assert tools == set(load_world(get_case("rake")).catalogue)
