@@ -16,9 +16,10 @@ help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
 
 # System packages: the Prolog engine, OpenSCAD (the .scad check), PrusaSlicer (G-code of
-# every printable piece), ffmpeg (video), Chromium (the HTML report's browser test).
-APT_PACKAGES := swi-prolog-nox openscad prusa-slicer ffmpeg chromium
-APT_PROGRAMS := swipl openscad prusa-slicer ffmpeg chromium
+# every printable piece), ffmpeg (video), Chromium (the HTML report's browser test),
+# libsdformat with g++ and pkg-config (Gazebo's parser: the test of the Gazebo models).
+APT_PACKAGES := swi-prolog-nox openscad prusa-slicer ffmpeg chromium libsdformat-dev g++ pkg-config
+APT_PROGRAMS := swipl openscad prusa-slicer ffmpeg chromium g++ pkg-config
 
 /usr/bin/swipl:
 	$(SUDO) apt-get update -qq
@@ -26,6 +27,7 @@ APT_PROGRAMS := swipl openscad prusa-slicer ffmpeg chromium
 
 $(STAMP): pyproject.toml | /usr/bin/swipl
 	@for p in $(APT_PROGRAMS); do command -v $$p >/dev/null || missing=1; done; \
+	  pkg-config --exists sdformat12 2>/dev/null || missing=1; \
 	  [ -z "$$missing" ] || ($(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(APT_PACKAGES) >/dev/null)
 	python3 -m venv $(VENV)

@@ -10,6 +10,8 @@
 ``<name>.png``      shaded 3D view and dimensioned drawing
 ``<name>.json``     manifest: spec, mass properties, printability, file names
 ``<name>_hull<i>.obj``  convex-hull parts (the wedge's prism) in metres, for URDF/SDF
+``gazebo/<name>/``  Gazebo model folder; ``ros/<name>_description/``: ROS 2 package
+                    (:mod:`creative_py.mesh.gazebo`)
 ==================  =====================================================================
 
 The folder appears complete or not at all: everything is written into a hidden temporary
@@ -28,6 +30,7 @@ import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
+from creative_py.mesh.gazebo import sim_model_paths, write_sim_models
 from creative_py.mesh.link import hull_meshes, tool_link
 from creative_py.mesh.printability import (PrintSettings, Printability, check_min_feature,
                                            printability)
@@ -66,6 +69,9 @@ class ToolFiles:
         Mass, volume, centre of mass and inertia written into URDF and SDF.
     printability : Printability
         The build-volume verdict (also in the .scad header and the manifest).
+    sim_models : tuple of pathlib.Path
+        The files of the Gazebo model folder and the ROS package
+        (:mod:`creative_py.mesh.gazebo`).
     """
 
     spec: ToolSpec
@@ -79,6 +85,7 @@ class ToolFiles:
     meshes: tuple[Path, ...]
     mass: MassProperties
     printability: Printability
+    sim_models: tuple[Path, ...] = ()
 
     @property
     def fits_build_volume(self) -> bool:
@@ -88,7 +95,8 @@ class ToolFiles:
     def paths(self) -> tuple[Path, ...]:
         """Return every file of the tool."""
         picture = () if self.png is None else (self.png,)
-        return (self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture + self.meshes
+        return ((self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture + self.meshes
+                + self.sim_models)
 
 
 def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
@@ -130,6 +138,7 @@ def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: b
     names = {"urdf": f"{name}.urdf", "sdf": f"{name}.sdf", "scad": f"{name}.scad",
              "stl": f"{name}.stl", "png": f"{name}.png" if picture else None,
              "meshes": sorted(hulls)}
+    names.update(write_sim_models(spec, mass, mesh, folder))
     manifest = _manifest(spec, mass, verdict, names)
     (folder / f"{name}.json").write_text(json.dumps(manifest, indent=2) + "\n", encoding="utf-8")
     return mass, verdict
@@ -146,7 +155,7 @@ def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
         png=directory / f"{name}.png" if picture else None,
         manifest=directory / f"{name}.json",
         meshes=tuple(directory / f for f in sorted(hull_meshes(spec))),
-        mass=mass, printability=verdict)
+        mass=mass, printability=verdict, sim_models=sim_model_paths(directory, spec))
 
 
 def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,

@@ -21,9 +21,19 @@ def test_every_file_is_written_in_its_own_folder(written, kind):
     assert files.directory.name == files.spec.name
     for path in files.paths():
         assert path.is_file() and path.stat().st_size > 0, path
-    assert sorted(p.name for p in files.directory.iterdir()) == sorted(
-        p.name for p in files.paths())
+    assert _files_in(files.directory) == sorted(
+        str(p.relative_to(files.directory)) for p in files.paths())
     assert files.png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def _files_in(folder) -> list[str]:
+    """Return every file below ``folder``, relative to it, sorted."""
+    return sorted(str(p.relative_to(folder)) for p in folder.rglob("*") if p.is_file())
+
+
+def _contents(folder) -> dict[str, bytes]:
+    """Return every file below ``folder`` (relative path -> bytes)."""
+    return {name: (folder / name).read_bytes() for name in _files_in(folder)}
 
 
 def test_stl_is_in_millimetres_and_in_the_tool_frame(written, kind):
@@ -114,20 +124,20 @@ def test_a_failure_while_writing_leaves_no_partial_files(tmp_path, monkeypatch):
         raise OSError("disk full while writing the picture")
 
     old = write_tool_files(HookSpec("hook1", 0.3), tmp_path, picture=False)
-    before = {p.name: p.read_bytes() for p in old.paths() if p.exists()}
+    before = _contents(old.directory)
     monkeypatch.setattr(export, "render_png", broken_render)
     with pytest.raises(OSError, match="disk full"):
         write_tool_files(HookSpec("hook1", 0.4), tmp_path, overwrite=True)
     with pytest.raises(OSError, match="disk full"):
         write_tool_files(HookSpec("hook2", 0.4), tmp_path)
     assert [p.name for p in tmp_path.iterdir()] == ["hook1"]
-    assert {p.name: p.read_bytes() for p in old.directory.iterdir()} == before
+    assert _contents(old.directory) == before
 
 
 def test_a_failed_final_rename_restores_the_previous_tool(tmp_path, monkeypatch):
     """Fault injection at the last step: the old folder is moved back, nothing is left."""
     old = write_tool_files(HookSpec("hook1", 0.3), tmp_path, picture=False)
-    before = {p.name: p.read_bytes() for p in old.directory.iterdir()}
+    before = _contents(old.directory)
     real_rename = export.os.rename
 
     def rename(src, dst):
@@ -139,7 +149,7 @@ def test_a_failed_final_rename_restores_the_previous_tool(tmp_path, monkeypatch)
     with pytest.raises(OSError, match="rename refused"):
         write_tool_files(HookSpec("hook1", 0.4), tmp_path, picture=False, overwrite=True)
     assert [p.name for p in tmp_path.iterdir()] == ["hook1"]
-    assert {p.name: p.read_bytes() for p in old.directory.iterdir()} == before
+    assert _contents(old.directory) == before
 
 
 def test_a_file_in_the_way_is_never_replaced(tmp_path):
