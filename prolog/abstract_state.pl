@@ -8,7 +8,7 @@
 
 A primitive state is a list of ground facts in world coordinates (metres, radians):
 camera poses and sizes, the robot's proprioception of the held tool, the catalogue of
-available objects and the task geometry (shared vocabulary, DESIGN.md §3).  The
+available objects and the task geometry (the shared vocabulary of ontology/world.pl).  The
 abstract state is the list of qualitative literals that hold in it:
 
   - *structural* literals of every catalogued object (tool/1, handle_length/2,

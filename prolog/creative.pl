@@ -18,7 +18,7 @@
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 
-%   Load every module file beside this one (one module per file, see DESIGN.md §2).
+%   Load every module file beside this one (one module per file, see docs/architecture.md §3).
 :- prolog_load_context(directory, Dir),
    directory_files(Dir, Entries),
    msort(Entries, Sorted),

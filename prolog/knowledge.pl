@@ -17,7 +17,7 @@
 
 /** <module> The knowledge base: ontology, world facts and what is learned
 
-This is the one module that owns the dynamic database (DESIGN.md, STYLE.md).  Knowledge
+This is the one module that owns the dynamic database (docs/architecture.md).  Knowledge
 lives in the module `kb`, kept apart from this module's own predicates, whose only
 default import is `system`:
 
