@@ -32,7 +32,7 @@ where knowledge:learned_model/4 answers queries.
 :- use_module(experiment, [hypothesis_parts/4, observed_state/3]).
 :- use_module(library(option)).
 :- use_module(action_model, [innate_action_models/2, action_task_goal/2,
-                              tool_literal_kind/3]).
+                              tool_literal_kind/3, case_tool_objects/3]).
 :- use_module(planner, [plan/5]).
 :- use_module(pddl, [pddl_write_files/6]).
 :- use_module(case, [case_answer/1]).
@@ -150,7 +150,10 @@ plan_task(Case, Models, VS, Primitive, Options, Result) :-
 %   As plan_task/6, with the learned action models given as they are (Learned, e.g.
 %   the harder task's models of created_models/5) instead of rewritten from a version
 %   space: plan the case's task in the state of the primitive facts with Learned and
-%   the innate skills. Option pddl(DomainFile, ProblemFile) also writes the PDDL files
+%   the innate skills. Both the planner and the PDDL problem type as a tool every
+%   object of the case's tool hierarchy (action_model:case_tool_objects/3), whatever
+%   the models' preconditions keep of its class literals. Option
+%   pddl(DomainFile, ProblemFile) also writes the PDDL files
 %   (pddl:pddl_write_files/6 with the case's tool typing), named after the options
 %   domain_name(N) (default `creative`) and problem_name(N) (default `task`); the
 %   planner's own options are passed on.
@@ -161,7 +164,10 @@ plan_models(Case, Learned, Primitive, Options, Result) :-
     append(Learned, Innate, All),
     observed_state(Case, Primitive, State),
     action_task_goal(Case, Goal),
-    case_answer(case_extra_objects(Case, Extra)),
+    case_answer(case_extra_objects(Case, Extra0)),
+    case_tool_objects(Case, State, Tools),
+    findall(T-tool, ( member(T, Tools), \+ memberchk(T-_, Extra0) ), ToolObjects),
+    append(Extra0, ToolObjects, Extra),
     (   option(pddl(Dom, Prob), Options)
     ->  option(domain_name(DomainName), Options, creative),
         option(problem_name(ProblemName), Options, task),

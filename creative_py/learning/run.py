@@ -336,10 +336,10 @@ def _created_pddl(runner: TrialRunner, folder: Path, created: CreateResult,
     with the replaced literal swapped) planning the harder variant, with the created
     tools in the catalogue, as ``domain_<variant>.pddl`` and ``problem_<variant>.pddl``.
     """
-    task = runner.task(created.variant)
-    domain, problem = f"domain_{created.variant}.pddl", f"problem_{created.variant}.pddl"
     from creative_py.learning.pddl_check import PLANNER_NAME
 
+    task = runner.task(created.variant)
+    domain, problem = f"domain_{created.variant}.pddl", f"problem_{created.variant}.pddl"
     names = [Compound("domain_name", (f"creative_{created.variant}",)),
              Compound("problem_name", (f"task_{created.variant}",))]
     try:

@@ -232,4 +232,28 @@ test(plan_with_created_models_needs_the_created_tool) :-
                         pull_out(T, cube1, tube1)])),
     assertion(memberchk(T, [hook_a3, hook_a5])).
 
+test(plan_models_plans_with_the_created_models_and_writes_their_pddl,
+     [ setup(( temp_file_(Dom), temp_file_(Prob) )),
+       cleanup(( cleanup_(Dom), cleanup_(Prob) )) ]) :-
+    short_hook_failed_(VS, Models),
+    created_models(Models, VS, handle_length(_, medium), handle_length(_, long), Created),
+    fixture_primitive(hook, P),
+    plan_models(hook, Created, P, [pddl(Dom, Prob), domain_name(creative_long),
+                                   problem_name(task_long)], R),
+    assertion(R = plan([pick_up(T), position_tool(T, cube1, tube1),
+                        pull_out(T, cube1, tube1)])),
+    assertion(memberchk(T, [hook_a3, hook_a5])),
+    read_file_to_string(Dom, D, []),
+    read_file_to_string(Prob, Pr, []),
+    assertion(sub_string(D, _, _, _, "(define (domain creative_long)")),
+    assertion(sub_string(D, _, _, _, "(handle_length ?tool long)")),
+    assertion(sub_string(Pr, _, _, _, "(define (problem task_long)")),
+    % The created model's precondition names no class literal, yet every catalogued
+    % object is a tool of the PDDL problem.
+    assertion(\+ sub_string(D, _, _, _, "(tool ")),
+    observed_state(hook, P, State),
+    forall(( member(L, State), L = tool(O) ),
+           ( format(string(S), "~w - tool_object", [O]),
+             assertion(sub_string(Pr, _, _, _, S)) )).
+
 :- end_tests(model_file).
