@@ -152,7 +152,10 @@ class ToolCreator:
             raise RuntimeError(f"{self.case}: the new tool's literals name no tool kind "
                                f"({', '.join(SPEC_KINDS)}): {term_text(struct)}")
         name = f"{self.case}_new{k}"
-        spec = spec_from_dict({"kind": kinds[0], "name": name, **values},
+        # A created tool is printed: its mass is PLA density times its volume
+        # (mass None, :func:`creative_py.mesh.spec.spec_mass`), in the URDF it is
+        # spawned from and so in the physics.
+        spec = spec_from_dict({"kind": kinds[0], "name": name, **values, "mass": None},
                               source=f"created tool {name}")
         files: dict[str, Any] = {}
         run = self.runner.run_folder
