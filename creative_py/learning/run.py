@@ -306,6 +306,9 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
         "failed_trials": len([t for t in res.trials
                               if t.phase == "create" and t.outcome != "success"]),
         "created_tools": [asdict(c) for c in res.created],
+        "slice_wall_time_s": round(sum(p.get("slice_wall_time_s", 0.0)
+                                       for c in res.created
+                                       for p in c.print.get("pieces", [])), 2),
         "success": res.success.name if res.success else None,
         "eval": res.success.eval_outcomes if res.success else [],
         "exhausted": res.exhausted,

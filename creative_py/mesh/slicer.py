@@ -15,9 +15,9 @@ closing comments (``; estimated printing time (normal mode) = 1h 2m 3s``,
 ``; filament used [g] = 3.21``).
 
 A piece the slicer rejects is an error, not a warning: a non-zero exit, no G-code, no
-estimate, or an extrusion outside the bed (PrusaSlicer 2.5's command line slices an
-object lying off the bed without complaint, so the G-code's extrusion moves are
-checked against the bed) raises :class:`SliceError`.
+estimate, or a print outside the bed (PrusaSlicer 2.5's command line slices an object
+lying off the bed without complaint, so the G-code's moves and layers are checked
+against the build volume) raises :class:`SliceError`.
 """
 
 from __future__ import annotations
@@ -30,6 +30,8 @@ import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
+
+import numpy as np
 
 from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import PLA_DENSITY
@@ -49,7 +51,9 @@ _FILAMENT = {unit: re.compile(rf"^; filament used \[{re.escape(unit)}\] = ([0-9.
              for unit in ("mm", "cm3", "g")}
 _DURATION = re.compile(r"(\d+)([dhms])")
 _SECONDS = {"d": 86400, "h": 3600, "m": 60, "s": 1}
-_WORD = re.compile(r"([XYZE])(-?[0-9.]+)")
+_CLOSING_CHARS = 200_000
+_MOVE_XY = re.compile(r"^G[01] X(-?[0-9.]+) Y(-?[0-9.]+)", re.M)
+_LAYER_Z = re.compile(r"^;Z:([0-9.]+)$", re.M)
 
 
 class SliceError(RuntimeError):
@@ -69,7 +73,8 @@ class SliceResult:
     filament_mm, filament_cm3, filament_g : float
         Filament used: length (mm), volume (cm^3), mass (g).
     extrusion_bounds_mm : tuple of float
-        Smallest and largest x, y, z of the extrusion moves (x0, y0, z0, x1, y1, z1), mm.
+        Smallest and largest x and y of the nozzle's moves and z of the layers
+        (x0, y0, z0, x1, y1, z1), mm.
     wall_time_s : float
         Wall time of the slicer's run, seconds.
     """
@@ -117,7 +122,7 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = Pr
     ------
     SliceError
         The slicer is missing, exits non-zero, writes no G-code or no estimate, or
-        extrudes outside the bed.
+        prints outside the build volume.
     """
     stl, gcode = Path(stl), Path(gcode)
     exe = shutil.which(SLICER)
@@ -151,24 +156,39 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = Pr
     return _read_gcode(stl.name, gcode, settings, wall)
 
 
+def read_gcode(gcode: Path | str, settings: PrintSettings = PrintSettings(), *,
+               piece: str | None = None, wall_time_s: float = 0.0) -> SliceResult:
+    """Return the estimates of a G-code file PrusaSlicer wrote, checked against the bed.
+
+    Raises
+    ------
+    SliceError
+        No print time or filament estimate, nothing extruded, or an extrusion outside
+        ``settings.build_volume``.
+    """
+    gcode = Path(gcode)
+    return _read_gcode(piece or gcode.name, gcode, settings, wall_time_s)
+
+
 def _read_gcode(piece: str, gcode: Path, settings: PrintSettings, wall: float) -> SliceResult:
     text = gcode.read_text(encoding="utf-8", errors="replace")
-    found = _TIME.search(text)
-    filament = {u: r.search(text) for u, r in _FILAMENT.items()}
+    closing = text[-_CLOSING_CHARS:]  # the estimates and the settings close the file
+    found = _TIME.search(closing)
+    filament = {u: r.search(closing) for u, r in _FILAMENT.items()}
     if found is None or not all(filament.values()):
         raise SliceError(f"{piece}: {gcode.name} has no print time or filament estimate "
                          "(the slicer printed nothing?)")
     seconds = parse_duration(found.group(1))
     bounds = _extrusion_bounds(text)
     if bounds is None:
-        raise SliceError(f"{piece}: {gcode.name} extrudes nothing")
+        raise SliceError(f"{piece}: {gcode.name} has no moves or layers")
     bed = [v * MM_PER_M for v in settings.build_volume]
     slack = FIT_MARGIN * MM_PER_M
     x0, y0, z0, x1, y1, z1 = bounds
     if x0 < -slack or y0 < -slack or x1 > bed[0] + slack or y1 > bed[1] + slack \
             or z1 > bed[2] + slack:
         raise SliceError(
-            f"{piece}: the slicer extrudes outside the {bed[0]:g} x {bed[1]:g} x {bed[2]:g} "
+            f"{piece}: the slicer prints outside the {bed[0]:g} x {bed[1]:g} x {bed[2]:g} "
             f"mm build volume (x {x0:.1f}..{x1:.1f}, y {y0:.1f}..{y1:.1f}, z up to "
             f"{z1:.1f} mm)")
     values = {u: float(m.group(1)) for u, m in filament.items()}
@@ -177,41 +197,15 @@ def _read_gcode(piece: str, gcode: Path, settings: PrintSettings, wall: float) -
 
 
 def _extrusion_bounds(text: str) -> tuple[float, ...] | None:
-    """Return the bounds of the moves that extrude (absolute or relative E), mm."""
-    x = y = z = e = 0.0
-    relative = False
-    lo = [float("inf")] * 3
-    hi = [float("-inf")] * 3
-    for line in text.splitlines():
-        code = line.split(";", 1)[0].strip()
-        if not code:
-            continue
-        if code.startswith("M83"):
-            relative = True
-        elif code.startswith("M82"):
-            relative = False
-        elif code.startswith("G92"):
-            for k, v in _WORD.findall(code):
-                if k == "E":
-                    e = float(v)
-        elif code.startswith(("G1 ", "G0 ")):
-            words = dict(_WORD.findall(code))
-            px, py = x, y
-            x = float(words.get("X", x))
-            y = float(words.get("Y", y))
-            z = float(words.get("Z", z))
-            if "E" in words:
-                new = float(words["E"])
-                delta = new if relative else new - e
-                e = e + new if relative else new
-                if delta > 0 and ("X" in words or "Y" in words):
-                    for i, v in enumerate((px, py, z)):
-                        lo[i], hi[i] = min(lo[i], v), max(hi[i], v)
-                    for i, v in enumerate((x, y, z)):
-                        lo[i], hi[i] = min(lo[i], v), max(hi[i], v)
-    if lo[0] == float("inf"):
+    """Return the bounds of the print: x and y of every move in the plane (extrusions and
+    travels: where the nozzle goes), z of every layer (``;Z:`` comments), mm."""
+    xy = np.array(_MOVE_XY.findall(text), dtype=float).reshape(-1, 2)
+    z = np.array(_LAYER_Z.findall(text), dtype=float)
+    if not len(xy) or not len(z):
         return None
-    return (*lo, *hi)
+    lo, hi = xy.min(axis=0), xy.max(axis=0)
+    return (float(lo[0]), float(lo[1]), float(z.min()), float(hi[0]), float(hi[1]),
+            float(z.max()))
 
 
 def parse_duration(text: str) -> float:
