@@ -377,6 +377,8 @@ def make_tool_cmd(
                                                "build volume X,Y,Z in mm (default "
                                                "250,210,210); a larger tool is split into "
                                                "pieces that fit."),
+    no_slice: bool = typer.Option(False, "--no-slice", help="Write the printed pieces' "
+                                  "STL but do not slice them to G-code."),
 ) -> None:
     """Size a tool from a qualitative spec with CLP(R) and write URDF, SDF, SCAD, STL,
     the printed pieces (split to fit the build volume) and their G-code (PrusaSlicer)."""
@@ -387,10 +389,14 @@ def make_tool_cmd(
     from creative_py.mesh.printability import PrintSettings
     from creative_py.world import WorldFileError
 
+    from creative_py.mesh.slicer import require_slicer
+
     settings = PrintSettings()
     if build_volume is not None:
         settings = _print_settings(build_volume)
     with _one_line_errors():  # what the specific messages below do not cover
+        if not no_slice:
+            require_slicer()
         try:
             with _stdout_to_stderr():
                 engine = Engine.instance()
@@ -399,7 +405,8 @@ def make_tool_cmd(
                 if context:
                     ctx += parse_context(engine, context)
                 files = make_tool(engine, case, lits, ctx, name, out, picture=True,
-                                  overwrite=overwrite, settings=settings)
+                                  overwrite=overwrite, settings=settings,
+                                  gcode=not no_slice)
         except FileExistsError as exc:
             _fail(f"{exc.filename or out}: the tool's folder exists (--overwrite replaces it)")
         except (InfeasibleSpec, ValueError, WorldFileError) as exc:

@@ -123,8 +123,11 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Used by :func:`resume_run`: the run folder and its recorded trials.
     """
     from creative_py.case import get_case, read_manifest
+    from creative_py.mesh.slicer import require_slicer
     from creative_py.sim import load_world
 
+    if options.phase in ("create", "all"):
+        require_slicer()  # every created tool is sliced: refuse before any physics
     manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
     if manifest.id != case:
         raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "

@@ -97,9 +97,13 @@ class SliceResult:
                 "slice_wall_time_s": round(self.wall_time_s, 3)}
 
 
-def slicer_available() -> bool:
-    """Return whether the slicer's executable is on the PATH."""
-    return shutil.which(SLICER) is not None
+def require_slicer() -> str:
+    """Return the slicer's path; raise :class:`SliceError` when it is not installed."""
+    exe = shutil.which(SLICER)
+    if exe is None:
+        raise SliceError(f"the slicer {SLICER!r} is not installed, and every printed piece "
+                         "is sliced (make setup installs it: apt-get install prusa-slicer)")
+    return exe
 
 
 def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = PrintSettings(),
@@ -125,10 +129,7 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = Pr
         prints outside the build volume.
     """
     stl, gcode = Path(stl), Path(gcode)
-    exe = shutil.which(SLICER)
-    if exe is None:
-        raise SliceError(f"{stl.name}: the slicer {SLICER!r} is not installed "
-                         "(make setup installs it: apt-get install prusa-slicer)")
+    exe = require_slicer()
     if not profile.is_file():
         raise SliceError(f"{profile}: slicer profile not found")
     bx, by, bz = (v * MM_PER_M for v in settings.build_volume)
