@@ -10,7 +10,8 @@ lies flat on the bed with its layers along its length (strong in bending across 
 joint) and its hole is bridged by a flat ceiling, so both print without supports. The
 pin is as wide as the section allows while the hole's walls stay at least
 ``settings.min_feature`` thick (and a quarter of the section), and it reaches 1.5 times the
-section's size into each part.
+section's size into each part; where the section changes near the cut (a wedge's slope)
+a shallower or narrower pin is taken (:data:`_PIN_CHOICES`).
 
 Checks (manifold3d booleans, tool frame, metres): every hole lies inside the designed
 solid with walls of at least ``min_feature`` on every side and at its end; every piece is
@@ -40,6 +41,11 @@ JOINT_KIND = "square_dowel_pin"
 """The joint of a split tool (the ``"joint"`` of the tool's JSON ``"print"`` entry)."""
 
 _AXES = "xyz"
+
+_PIN_CHOICES = tuple((depth, shrink) for shrink in (1.0, 0.75, 0.5)
+                     for depth in (1.5, 1.0, 0.75))
+"""Pins tried at a cut, in order: (depth into each part / section size, fraction of the
+widest pin the section allows)."""
 
 
 class SplitError(ValueError):
@@ -123,7 +129,8 @@ class Joint:
     hole_section_m, hole_depth_m : float
         Side of each hole's square section and its depth from the cut face, metres.
     wall_m : float
-        Thinnest wall around the hole, metres.
+        Wall around the hole at the cut face, metres (everywhere along the hole at
+        least ``settings.min_feature``: checked).
     """
 
     pin: str
@@ -251,30 +258,36 @@ def _joint(name: str, design: manifold3d.Manifold, axis: int, cut: float, k: int
     others = [i for i in range(3) if i != axis]
     side = float(min(hi[i] - lo[i] for i in others))
     wall = max(settings.min_feature, side / 4)
-    pin_side = side - 2 * wall - 2 * clearance
-    if pin_side < settings.min_feature:
+    largest = side - 2 * wall - 2 * clearance
+    if largest < settings.min_feature:
         raise SplitError(
             f"{name}: the section at the cut {_AXES[axis]} = {cut * MM_PER_M:.1f} mm is "
             f"{side * MM_PER_M:.1f} mm across: too small for a dowel pin of at least "
             f"{settings.min_feature * MM_PER_M:.1f} mm in walls of "
             f"{settings.min_feature * MM_PER_M:.1f} mm")
-    depth = 1.5 * side
     centre = np.zeros(3)
     centre[axis] = cut
     for i in others:
         centre[i] = (lo[i] + hi[i]) / 2
-    pin = _box(centre, axis, 2 * depth, pin_side)
-    hole_side = pin_side + 2 * clearance
-    hole = _box(centre, axis, 2 * (depth + clearance), hole_side)
-    # Walls: the hole grown by the minimum feature on every side must lie in the design.
-    grown = _box(centre, axis, 2 * (depth + clearance + settings.min_feature),
-                 hole_side + 2 * settings.min_feature)
-    outside = float((grown - design).volume())
-    if outside > 1e-6 * float(grown.volume()):
+    # The largest pin, deepest first, whose hole keeps its walls inside the design (a
+    # section that changes near the cut, like a wedge's slope, needs a smaller one).
+    for depth_factor, shrink in _PIN_CHOICES:
+        depth, pin_side = depth_factor * side, shrink * largest
+        if pin_side < settings.min_feature:
+            continue
+        hole_side = pin_side + 2 * clearance
+        # Walls: the hole grown by the minimum feature on every side must lie in the design.
+        grown = _box(centre, axis, 2 * (depth + clearance + settings.min_feature),
+                     hole_side + 2 * settings.min_feature)
+        if float((grown - design).volume()) <= 1e-6 * float(grown.volume()):
+            break
+    else:
         raise SplitError(
-            f"{name}: the dowel pin's hole at {_AXES[axis]} = {cut * MM_PER_M:.1f} mm would "
-            f"leave a wall thinner than {settings.min_feature * MM_PER_M:.1f} mm (the cut "
-            "is too near a change of section)")
+            f"{name}: no dowel pin of at least {settings.min_feature * MM_PER_M:.1f} mm fits "
+            f"the cut at {_AXES[axis]} = {cut * MM_PER_M:.1f} mm with walls of "
+            f"{settings.min_feature * MM_PER_M:.1f} mm (the section changes too near it)")
+    pin = _box(centre, axis, 2 * depth, pin_side)
+    hole = _box(centre, axis, 2 * (depth + clearance), hole_side)
     joint = Joint(
         pin=f"{name}_pin{k}", joins=(f"{name}_part{k}", f"{name}_part{k + 1}"),
         axis=_AXES[axis], cut_m=float(cut), centre_m=tuple(float(v) for v in centre),

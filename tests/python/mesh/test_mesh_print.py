@@ -85,6 +85,19 @@ def test_a_smaller_build_volume_makes_more_pieces():
     assert assembly.mismatch <= SPLIT_VOLUME_RTOL
 
 
+def test_a_wedge_on_a_small_bed_gets_a_pin_that_keeps_clear_of_its_slope():
+    wedge = BlockSpec("wedge", "triangular_prism", 0.16, 0.085, 0.0275, mass=None)
+    small = PrintSettings(build_volume=(0.1, 0.1, 0.1))
+    assembly = split_tool(wedge.name, tool_solid(wedge), small)
+    (joint,) = assembly.joints
+    # The deepest, widest pin would break through the slope: a smaller one is taken.
+    assert joint.pin_length_m < 2 * 1.5 * 0.01375
+    assert joint.pin_section_m >= small.min_feature
+    assert assembly.mismatch <= SPLIT_VOLUME_RTOL
+    for piece in assembly.pieces:
+        assert (np.array(piece.bed_extent(small)) <= 100.0).all()
+
+
 def test_a_handle_too_thin_for_a_pin_cannot_be_printed_in_pieces(tmp_path):
     thin = HookSpec("thin", 0.5, handle_width=0.005, hook_length=0.02, hook_width=0.005)
     with pytest.raises(SplitError, match="too small for a dowel pin"):
