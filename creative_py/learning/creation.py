@@ -218,6 +218,7 @@ def print_summary(entry: dict[str, Any]) -> dict[str, Any]:
         "pieces": [{k: p[k] for k in keys if k in p} for p in entry.get("pieces", [])],
         **{k: entry[k] for k in ("joint", "clearance_mm", "build_volume_mm",
                                  "union_volume_error_pct", "union_mismatch_pct",
-                                 "print_time_s", "filament_mm", "filament_g", "sliced")
+                                 "print_time_s", "filament_mm", "filament_g", "sliced",
+                                 "wall_time_s")
            if k in entry},
     }

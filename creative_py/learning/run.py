@@ -312,6 +312,8 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
         "slice_wall_time_s": round(sum(p.get("slice_wall_time_s", 0.0)
                                        for c in res.created
                                        for p in c.print.get("pieces", [])), 2),
+        "print_wall_time_s": round(sum(c.print.get("wall_time_s", 0.0)
+                                       for c in res.created), 2),
         "success": res.success.name if res.success else None,
         "eval": res.success.eval_outcomes if res.success else [],
         "exhausted": res.exhausted,

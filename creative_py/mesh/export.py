@@ -31,6 +31,7 @@ import logging
 import os
 import shutil
 import tempfile
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -188,6 +189,7 @@ def write_print_files(spec: ToolSpec, solid, folder: Path, settings: PrintSettin
     SliceError
         The slicer rejected a piece.
     """
+    start = time.perf_counter()
     try:
         assembly = split_tool(spec.name, solid, settings)
     except SplitError as exc:
@@ -207,6 +209,7 @@ def write_print_files(spec: ToolSpec, solid, folder: Path, settings: PrintSettin
     if gcode:
         for key in ("print_time_s", "filament_mm", "filament_g"):
             entry[key] = round(sum(row[key] for row in entry["pieces"]), 3)
+    entry["wall_time_s"] = round(time.perf_counter() - start, 3)  # split, write, slice
     return entry
 
 
