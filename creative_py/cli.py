@@ -387,9 +387,8 @@ def make_tool_cmd(
         InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
     )
     from creative_py.mesh.printability import PrintSettings
-    from creative_py.world import WorldFileError
-
     from creative_py.mesh.slicer import require_slicer
+    from creative_py.world import WorldFileError
 
     settings = PrintSettings()
     if build_volume is not None:
