@@ -46,11 +46,12 @@ def _one_line_errors() -> Iterator[None]:
     """Turn what user data can cause (a world or ontology file, Prolog's answer to it, the
     file system) into one line ``error: ...`` and exit code 2; ``--debug`` re-raises."""
     from creative_py.bridge import BridgeError
+    from creative_py.mesh.slicer import SliceError
     from creative_py.world import WorldFileError
 
     try:
         yield
-    except (BridgeError, WorldFileError, OSError) as exc:
+    except (BridgeError, WorldFileError, OSError, SliceError) as exc:
         if _DEBUG["on"]:
             raise
         text = " ".join(str(exc).split())
@@ -334,6 +335,21 @@ def repl(run_dir: Optional[Path] = typer.Argument(None, help="A run folder whose
     os.execv(swipl, [swipl, "-g", ", ".join(goals), str(root / "prolog" / "creative.pl")])
 
 
+def _print_settings(text: str):
+    """Return the print settings of a ``--build-volume X,Y,Z`` (mm), or fail in one line."""
+    from creative_py.mesh.printability import PrintSettings
+    from creative_py.mesh.tolerances import MM_PER_M
+
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        values = []
+    if len(values) != 3 or not all(0 < v < float("inf") for v in values):
+        _fail(f"--build-volume {text!r}: expected three positive numbers of millimetres "
+              "X,Y,Z, e.g. 250,210,210")
+    return PrintSettings(build_volume=tuple(v / MM_PER_M for v in values))
+
+
 def _quoted(text: str) -> str:
     """Return ``text`` as a quoted Prolog atom (the bridge's encoder)."""
     from creative_py.bridge.text import encode
@@ -357,15 +373,29 @@ def make_tool_cmd(
                                           "'max_tool_length(0.5)'."),
     overwrite: bool = typer.Option(False, "--overwrite", help="Replace the tool's folder "
                                    "if it exists."),
+    build_volume: Optional[str] = typer.Option(None, "--build-volume", help="The printer's "
+                                               "build volume X,Y,Z in mm (default "
+                                               "250,210,210); a larger tool is split into "
+                                               "pieces that fit."),
+    no_slice: bool = typer.Option(False, "--no-slice", help="Write the printed pieces' "
+                                  "STL but do not slice them to G-code."),
 ) -> None:
-    """Size a tool from a qualitative spec with CLP(R) and write URDF, SDF, SCAD, STL."""
+    """Size a tool from a qualitative spec with CLP(R) and write URDF, SDF, SCAD, STL,
+    the printed pieces (split to fit the build volume) and their G-code (PrusaSlicer)."""
     from creative_py.bridge import Engine, PrologError
     from creative_py.learning.manufacture import (
         InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
     )
+    from creative_py.mesh.printability import PrintSettings
+    from creative_py.mesh.slicer import require_slicer
     from creative_py.world import WorldFileError
 
+    settings = PrintSettings()
+    if build_volume is not None:
+        settings = _print_settings(build_volume)
     with _one_line_errors():  # what the specific messages below do not cover
+        if not no_slice:
+            require_slicer()
         try:
             with _stdout_to_stderr():
                 engine = Engine.instance()
@@ -374,7 +404,8 @@ def make_tool_cmd(
                 if context:
                     ctx += parse_context(engine, context)
                 files = make_tool(engine, case, lits, ctx, name, out, picture=True,
-                                  overwrite=overwrite)
+                                  overwrite=overwrite, settings=settings,
+                                  gcode=not no_slice)
         except FileExistsError as exc:
             _fail(f"{exc.filename or out}: the tool's folder exists (--overwrite replaces it)")
         except (InfeasibleSpec, ValueError, WorldFileError) as exc:

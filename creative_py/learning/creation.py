@@ -43,6 +43,11 @@ class CreatedTool:
     files: dict[str, str]
     trial_outcome: str
     eval_outcomes: list[str] = field(default_factory=list)
+    mass_kg: Optional[float] = None
+    print: dict[str, Any] = field(default_factory=dict)
+    """The printed pieces (the tool manifest's ``"print"`` entry, in short): per piece
+    its STL, G-code, bounding box (mm), volume, print time and filament; the joint; the
+    union's volume check; totals."""
 
 
 @dataclass
@@ -108,10 +113,12 @@ class ToolCreator:
                 break
             replaced, general, instance, struct, dims = reply.args
             tried.append(instance)
-            spec, values, files = self._manufacture(len(created) + 1, struct, dims)
+            spec, values, files, mass, printed = self._manufacture(len(created) + 1, struct,
+                                                                   dims)
             ct = CreatedTool(spec.name, term_text(replaced), term_text(general),
                              term_text(instance), [term_text(s) for s in struct],
-                             dict(values), {k: str(v) for k, v in files.items()}, "")
+                             dict(values), {k: str(v) for k, v in files.items()}, "",
+                             mass_kg=mass, print=printed)
             created.append(ct)
             runner.progress(f"created {ct.name}: {ct.replaced} -> {ct.general} -> "
                             f"{ct.instance} {ct.dims}")
@@ -133,7 +140,8 @@ class ToolCreator:
         return CreateResult(variant, True, created, None, vs, runner.trials[start:],
                             time.perf_counter() - t0, exhausted)
 
-    def _manufacture(self, k: int, struct: list, dims: Term) -> tuple[Any, dict, dict]:
+    def _manufacture(self, k: int, struct: list, dims: Term,
+                     ) -> tuple[Any, dict, dict, Optional[float], dict]:
         """Turn sized dimensions into a spec, write its files, add it to the world.
 
         The tool's kind is its class literal among the structural literals (a spec
@@ -152,16 +160,25 @@ class ToolCreator:
             raise RuntimeError(f"{self.case}: the new tool's literals name no tool kind "
                                f"({', '.join(SPEC_KINDS)}): {term_text(struct)}")
         name = f"{self.case}_new{k}"
-        spec = spec_from_dict({"kind": kinds[0], "name": name, **values},
+        # A created tool is printed: its mass is PLA density times its volume
+        # (mass None, :func:`creative_py.mesh.spec.spec_mass`), in the URDF it is
+        # spawned from and so in the physics.
+        spec = spec_from_dict({"kind": kinds[0], "name": name, **values, "mass": None},
                               source=f"created tool {name}")
         files: dict[str, Any] = {}
+        mass: Optional[float] = None
+        printed: dict[str, Any] = {}
         run = self.runner.run_folder
         if run is not None:
-            out = write_tool_files(spec, run.tools_dir(), overwrite=True)
+            # Written, split to fit the printer and sliced: a piece the slicer rejects
+            # stops the run (SliceError).
+            out = write_tool_files(spec, run.tools_dir(), overwrite=True, gcode=True)
             files = {"urdf": out.urdf, "sdf": out.sdf, "scad": out.scad, "stl": out.stl,
-                     "png": out.png}
+                     "png": out.png, "manifest": out.manifest}
+            mass = out.mass.mass
+            printed = print_summary(out.assembly)
         self.runner.world = self.runner.world.with_tool(spec, files.get("urdf"))
-        return spec, values, files
+        return spec, values, files, mass, printed
 
     def _trial_with(self, spec: Any, n: int, vs: Term, task: TaskState) -> TrialRecord:
         """Test a created tool at the pose the learned model asks for.
@@ -189,3 +206,19 @@ class ToolCreator:
             rec, _ = self.runner.run(use, "eval", i, vs, task, 0.0, label=False)
             out.append(rec.outcome)
         return out
+
+
+def print_summary(entry: dict[str, Any]) -> dict[str, Any]:
+    """Return the figures of a tool manifest's ``"print"`` entry that a run's summary
+    shows: the joint, the union's volume check, per piece its files, bounding box (mm),
+    volume (mm^3), print time (s) and filament (mm, g), and the totals."""
+    keys = ("name", "role", "stl", "gcode", "bounding_box_mm", "volume_mm3",
+            "print_time_s", "print_time", "filament_mm", "filament_g", "slice_wall_time_s")
+    return {
+        "pieces": [{k: p[k] for k in keys if k in p} for p in entry.get("pieces", [])],
+        **{k: entry[k] for k in ("joint", "clearance_mm", "build_volume_mm",
+                                 "union_volume_error_pct", "union_mismatch_pct",
+                                 "print_time_s", "filament_mm", "filament_g", "sliced",
+                                 "wall_time_s")
+           if k in entry},
+    }

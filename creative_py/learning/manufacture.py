@@ -397,25 +397,30 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
 def make_tool(engine: Engine, case: str, literals: Sequence[Term],
               context_facts: Sequence[Term], name: str, out_dir: Path | str, *,
               settings: PrintSettings = PrintSettings(), overwrite: bool = False,
-              picture: bool = True) -> ToolFiles:
+              picture: bool = True, gcode: bool = True) -> ToolFiles:
     """Size a new tool (:func:`size_tool`) and write its files into ``out_dir/<name>/``.
 
     The files are those of :func:`creative_py.mesh.export.write_tool_files` (URDF, SDF,
-    OpenSCAD, STL, manifest, optional PNG). Sizing happens first, and the writer is
-    atomic: on any error nothing of the tool is left in ``out_dir`` (and ``out_dir`` is
-    not created if sizing fails).
+    OpenSCAD, STL, manifest, optional PNG, the printed pieces: split to fit
+    ``settings.build_volume`` and, with ``gcode``, sliced with PrusaSlicer). The mass is
+    PLA density times volume. Sizing happens first, and the writer is atomic: on any
+    error nothing of the tool is left in ``out_dir`` (and ``out_dir`` is not created if
+    sizing fails).
 
     Raises
     ------
     InfeasibleSpec, ValueError
-        As :func:`size_tool`; or a dimension the printer cannot print.
+        As :func:`size_tool`; or a dimension the printer cannot print, or a tool that
+        cannot be split into pieces that fit (:class:`creative_py.mesh.split.SplitError`).
+    SliceError
+        The slicer rejected a piece (:class:`creative_py.mesh.slicer.SliceError`).
     FileExistsError
         ``out_dir/<name>`` exists and ``overwrite`` is false.
     """
     sized = size_tool(engine, case, literals, context_facts, name, settings=settings)
     start = time.perf_counter()
     files = write_tool_files(sized.spec, out_dir, settings=settings, overwrite=overwrite,
-                             picture=picture)
+                             picture=picture, gcode=gcode)
     log.info("made %s: sized in %.1f ms, written in %.1f ms", name, 1e3 * sized.seconds,
              1e3 * (time.perf_counter() - start))
     return files

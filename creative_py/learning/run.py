@@ -123,8 +123,11 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Used by :func:`resume_run`: the run folder and its recorded trials.
     """
     from creative_py.case import get_case, read_manifest
+    from creative_py.mesh.slicer import require_slicer
     from creative_py.sim import load_world
 
+    if options.phase in ("create", "all"):
+        require_slicer()  # every created tool is sliced: refuse before any physics
     manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
     if manifest.id != case:
         raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "
@@ -363,6 +366,11 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
         "failed_trials": len([t for t in res.trials
                               if t.phase == "create" and t.outcome != "success"]),
         "created_tools": [asdict(c) for c in res.created],
+        "slice_wall_time_s": round(sum(p.get("slice_wall_time_s", 0.0)
+                                       for c in res.created
+                                       for p in c.print.get("pieces", [])), 2),
+        "print_wall_time_s": round(sum(c.print.get("wall_time_s", 0.0)
+                                       for c in res.created), 2),
         "success": res.success.name if res.success else None,
         "eval": res.success.eval_outcomes if res.success else [],
         "exhausted": res.exhausted,

@@ -22,9 +22,12 @@ import numpy as np
 import trimesh
 
 from creative_py.mesh.export import ToolFiles, read_tool_files
+from creative_py.mesh.slicer import SliceError, read_gcode
+from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import spec_mass, spec_volume
-from creative_py.mesh.tolerances import (MASS_RTOL, MM_PER_M, OPENSCAD_TIMEOUT_S,
-                                         SCAD_MISMATCH_RTOL, SCAD_VOLUME_RTOL, STL_VOLUME_RTOL)
+from creative_py.mesh.tolerances import (FIT_MARGIN, MASS_RTOL, MM_PER_M, OPENSCAD_TIMEOUT_S,
+                                         SCAD_MISMATCH_RTOL, SCAD_VOLUME_RTOL,
+                                         SPLIT_VOLUME_RTOL, STL_VOLUME_RTOL)
 
 MM3_PER_M3 = MM_PER_M**3
 
@@ -57,6 +60,104 @@ class ToolCheck:
     def ok(self) -> bool:
         """Return whether every check passed."""
         return not self.problems
+
+
+@dataclass(frozen=True)
+class PrintCheck:
+    """What a tool's printed pieces were found to be, read back from their files.
+
+    Attributes
+    ----------
+    pieces : int
+        Number of pieces (parts and pins).
+    bounding_boxes_mm : tuple of tuple of float
+        Each piece's STL extent on the bed (x, y, z), mm.
+    fits : bool
+        Every piece's STL lies inside the build volume.
+    union_mismatch : float or None
+        Symmetric difference of the pieces, moved back into the tool frame and united
+        (manifold3d), and the tool's STL, as a fraction of the STL's volume.
+    sliced : int
+        Pieces with a G-code file whose estimates read back and whose extrusions lie on
+        the bed.
+    problems : tuple of str
+        Every failed check in words.
+    """
+
+    pieces: int
+    bounding_boxes_mm: tuple[tuple[float, float, float], ...]
+    fits: bool
+    union_mismatch: float | None
+    sliced: int
+    problems: tuple[str, ...] = field(default=())
+
+    @property
+    def ok(self) -> bool:
+        """Return whether every check passed."""
+        return not self.problems
+
+
+def check_print_files(files: ToolFiles | Path | str) -> PrintCheck:
+    """Check a tool's printed pieces from their files (the manifest's ``"print"`` entry).
+
+    Each piece's STL (millimetres, print placement) must be one watertight solid inside
+    the build volume; moved back into the tool frame by the inverse of its recorded
+    placement, the pieces must unite (manifold3d) into the tool's STL within
+    :data:`~creative_py.mesh.tolerances.SPLIT_VOLUME_RTOL` of its volume; every G-code
+    named must exist, give a positive print time and filament, and extrude on the bed.
+    """
+    if not isinstance(files, ToolFiles):
+        files = read_tool_files(files)
+    entry = files.assembly
+    problems: list[str] = []
+    if not entry:
+        return PrintCheck(0, (), False, None, 0, (f"{files.manifest}: no \"print\" entry",))
+    if not entry.get("printable", False):
+        return PrintCheck(0, (), False, None, 0,
+                          (f"{files.spec.name}: not printable: {entry.get('reason')}",))
+    bed = np.asarray(entry["build_volume_mm"], dtype=float)
+    settings = PrintSettings(build_volume=tuple(bed / MM_PER_M))
+    slack = FIT_MARGIN * MM_PER_M / 2
+    boxes, solids, sliced = [], [], 0
+    for row in entry["pieces"]:
+        path = files.directory / row["stl"]
+        if not path.is_file():
+            problems.append(f"{path}: file missing")
+            continue
+        mesh = _load_mm_mesh(path)
+        if not mesh.is_watertight or mesh.body_count != 1:
+            problems.append(f"{path}: not one watertight solid")
+        lo, hi = mesh.bounds
+        boxes.append(tuple(float(v) for v in hi - lo))
+        if (lo < -slack).any() or (hi > bed + slack).any():
+            problems.append(f"{path}: outside the {' x '.join(f'{v:g}' for v in bed)} mm "
+                            f"build volume (bounds {lo.round(2)} .. {hi.round(2)})")
+        placement = np.asarray(row["placement"], dtype=float)
+        rot = placement[:3, :3] / MM_PER_M
+        back = (np.asarray(mesh.vertices) - placement[:3, 3]) @ rot  # rot^T per row
+        solids.append(_manifold(trimesh.Trimesh(back, mesh.faces, process=False)))
+        if row.get("gcode"):
+            try:
+                est = read_gcode(files.directory / row["gcode"], settings, piece=row["name"])
+            except (SliceError, OSError) as exc:
+                problems.append(str(exc))
+            else:
+                if est.print_time_s > 0 and est.filament_g > 0 and est.filament_mm > 0:
+                    sliced += 1
+                else:
+                    problems.append(f"{row['gcode']}: no positive print time or filament")
+    mismatch = None
+    if solids and files.stl.is_file():
+        design = _manifold(_load_mm_mesh(files.stl))
+        union = manifold3d.Manifold.batch_boolean(solids, manifold3d.OpType.Add)
+        mismatch = float(((design - union).volume() + (union - design).volume())
+                         / design.volume())
+        if mismatch > SPLIT_VOLUME_RTOL:
+            problems.append(f"{files.spec.name}: the pieces united differ from the tool's STL "
+                            f"by {mismatch:.2%} of its volume")
+    fits = len(boxes) == len(entry["pieces"]) and not any("outside" in p for p in problems)
+    return PrintCheck(len(entry["pieces"]), tuple(boxes), fits, mismatch, sliced,
+                      tuple(problems))
 
 
 def _load_mm_mesh(path: Path) -> trimesh.Trimesh:

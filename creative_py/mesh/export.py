@@ -8,10 +8,16 @@
 ``<name>.scad``     parametric OpenSCAD model, millimetres
 ``<name>.stl``      the printable solid (manifold3d union of the parts), millimetres
 ``<name>.png``      shaded 3D view and dimensioned drawing
-``<name>.json``     manifest: spec, mass properties, printability, file names
+``<name>.json``     manifest: spec, mass properties, printability, file names, and under
+                    ``"print"`` the printed pieces, their joint and their G-code figures
 ``<name>_hull<i>.obj``  convex-hull parts (the wedge's prism) in metres, for URDF/SDF
 ``gazebo/<name>/``  Gazebo model folder; ``ros/<name>_description/``: ROS 2 package
                     (:mod:`creative_py.mesh.gazebo`)
+``<name>_part<k>.stl``  each printed part in its print placement, millimetres (one part
+                    when the tool fits the build volume); ``<name>_pin<k>.stl`` the dowel
+                    pins joining the parts of a split tool (:mod:`creative_py.mesh.split`)
+``<name>_part<k>.gcode``  each piece sliced with PrusaSlicer (``gcode=True``;
+                    :mod:`creative_py.mesh.slicer`)
 ==================  =====================================================================
 
 The folder appears complete or not at all: everything is written into a hidden temporary
@@ -27,6 +33,7 @@ import logging
 import os
 import shutil
 import tempfile
+import time
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -37,8 +44,10 @@ from creative_py.mesh.printability import (PrintSettings, Printability, check_mi
 from creative_py.mesh.render import render_png
 from creative_py.mesh.scad import scad_text
 from creative_py.mesh.sdf import sdf_text
+from creative_py.mesh.slicer import PROFILE, slice_piece
 from creative_py.mesh.solid import MassProperties, mass_properties, mesh_from_solid, tool_solid
 from creative_py.mesh.spec import ToolSpec, spec_from_dict, spec_volume
+from creative_py.mesh.split import JOINT_KIND, Assembly, SplitError, split_tool
 from creative_py.mesh.tolerances import MM_PER_M
 from creative_py.mesh.urdf import urdf_text
 
@@ -72,6 +81,12 @@ class ToolFiles:
     sim_models : tuple of pathlib.Path
         The files of the Gazebo model folder and the ROS package
         (:mod:`creative_py.mesh.gazebo`).
+    assembly : dict
+        The manifest's ``"print"`` entry: pieces, joint, volume check, G-code figures.
+    pieces : tuple of pathlib.Path
+        Each printed piece's STL (millimetres, print placement).
+    gcode : tuple of pathlib.Path
+        Each piece's G-code; empty when the tool was not sliced.
     """
 
     spec: ToolSpec
@@ -86,6 +101,9 @@ class ToolFiles:
     mass: MassProperties
     printability: Printability
     sim_models: tuple[Path, ...] = ()
+    assembly: dict = dataclasses.field(default_factory=dict)
+    pieces: tuple[Path, ...] = ()
+    gcode: tuple[Path, ...] = ()
 
     @property
     def fits_build_volume(self) -> bool:
@@ -97,6 +115,8 @@ class ToolFiles:
         picture = () if self.png is None else (self.png,)
         return ((self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture + self.meshes
                 + self.sim_models)
+        return ((self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture
+                + self.meshes + self.pieces + self.gcode)
 
 
 def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
@@ -118,7 +138,7 @@ def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
 
 
 def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: bool,
-               ) -> tuple[MassProperties, Printability]:
+               gcode: bool = False) -> tuple[MassProperties, Printability, dict]:
     solid = tool_solid(spec)
     mesh = mesh_from_solid(solid)
     mass = mass_properties(spec, mesh)
@@ -140,14 +160,119 @@ def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: b
              "meshes": sorted(hulls)}
     names.update(write_sim_models(spec, mass, mesh, folder))
     manifest = _manifest(spec, mass, verdict, names)
+    manifest["print"] = write_print_files(spec, solid, folder, settings, gcode=gcode)
     (folder / f"{name}.json").write_text(json.dumps(manifest, indent=2) + "\n", encoding="utf-8")
-    return mass, verdict
+    return mass, verdict, manifest["print"]
+
+
+def write_print_files(spec: ToolSpec, solid, folder: Path, settings: PrintSettings, *,
+                      gcode: bool = False) -> dict:
+    """Split the tool into printable pieces, write each as an STL and (``gcode``) slice it.
+
+    Parameters
+    ----------
+    spec : HookSpec or BlockSpec
+        The tool.
+    solid : manifold3d.Manifold
+        Its designed solid (:func:`creative_py.mesh.solid.tool_solid`), metres.
+    folder : pathlib.Path
+        The tool's folder.
+    settings : PrintSettings
+        The printer.
+    gcode : bool
+        Slice every piece with PrusaSlicer (:func:`creative_py.mesh.slicer.slice_piece`).
+
+    Returns
+    -------
+    dict
+        The manifest's ``"print"`` entry (millimetres, seconds, grams): the build volume,
+        the joint, the pieces with their STL, bounding box in the print placement,
+        volume and placement (tool frame in metres -> bed in millimetres), and with
+        ``gcode`` their G-code, print time and filament; the volume check of the union.
+        Without ``gcode``, a tool that cannot be split into pieces that fit gets
+        ``"printable": false`` and the reason, and no piece.
+
+    Raises
+    ------
+    SplitError
+        With ``gcode``: the tool cannot be cut into pieces that fit.
+    SliceError
+        The slicer rejected a piece.
+    """
+    start = time.perf_counter()
+    try:
+        assembly = split_tool(spec.name, solid, settings)
+    except SplitError as exc:
+        if gcode:
+            raise
+        # Only the design was asked for: say why it cannot be printed, write no piece.
+        return {"printable": False, "reason": str(exc), "sliced": False, "pieces": [],
+                "joints": []}
+    entry = print_entry(assembly, settings)
+    for piece, row in zip(assembly.pieces, entry["pieces"]):
+        (folder / row["stl"]).write_bytes(
+            piece.print_mesh(settings).export(file_type="stl"))
+        if gcode:
+            row.update(slice_piece(folder / row["stl"], folder / f"{piece.name}.gcode",
+                                   settings).as_dict())
+    entry["sliced"] = gcode
+    if gcode:
+        for key in ("print_time_s", "filament_mm", "filament_g"):
+            entry[key] = round(sum(row[key] for row in entry["pieces"]), 3)
+    entry["wall_time_s"] = round(time.perf_counter() - start, 3)  # split, write, slice
+    return entry
+
+
+def print_entry(assembly: Assembly, settings: PrintSettings) -> dict:
+    """Return the manifest's ``"print"`` entry of an assembly, before slicing (mm, mm^3)."""
+    mm, mm3 = MM_PER_M, MM_PER_M ** 3
+    parts = [p for p in assembly.pieces if p.role == "part"]
+    if assembly.joints:
+        how = (f"{len(parts)} parts cut across the tool's {assembly.joints[0].axis} axis, "
+               f"in order; each cut is joined by a square dowel pin pushed half into each "
+               f"part's blind hole (hole = pin + 2 x {settings.joint_clearance * mm:g} mm, "
+               f"{settings.joint_clearance * mm:g} mm deeper than half the pin); glue "
+               "optional")
+    else:
+        how = "one piece: the tool fits the build volume"
+    return {
+        "printable": True,
+        "build_volume_mm": [round(v * mm, 6) for v in settings.build_volume],
+        "nozzle_mm": round(settings.nozzle_diameter * mm, 6),
+        "min_feature_mm": round(settings.min_feature * mm, 6),
+        "profile": PROFILE.name,
+        "joint": JOINT_KIND if assembly.joints else None,
+        "clearance_mm": round(settings.joint_clearance * mm, 6) if assembly.joints else None,
+        "how_they_join": how,
+        "design_volume_mm3": assembly.design_volume_m3 * mm3,
+        "union_volume_mm3": assembly.union_volume_m3 * mm3,
+        "union_volume_error_pct": 100 * assembly.union_volume_error,
+        "union_mismatch_pct": 100 * assembly.mismatch,
+        "pieces": [{
+            "name": p.name, "role": p.role, "stl": f"{p.name}.stl",
+            "volume_mm3": p.volume * mm3,
+            "bounding_box_mm": [round(v, 4) for v in p.bed_extent(settings)],
+            "up_axis": p.up_axis, "yaw_deg": p.yaw_deg,
+            "placement": p.placement(settings).round(9).tolist(),
+        } for p in assembly.pieces],
+        "joints": [{
+            "pin": j.pin, "joins": list(j.joins), "axis": j.axis, "cut_mm": j.cut_m * mm,
+            "centre_mm": [v * mm for v in j.centre_m],
+            "pin_section_mm": j.pin_section_m * mm, "pin_length_mm": j.pin_length_m * mm,
+            "hole_section_mm": j.hole_section_m * mm, "hole_depth_mm": j.hole_depth_m * mm,
+            "wall_mm": j.wall_m * mm,
+        } for j in assembly.joints],
+    }
 
 
 def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
-                  verdict: Printability, *, picture: bool = True) -> ToolFiles:
-    """Return the :class:`ToolFiles` naming a tool's files inside ``directory``."""
+                  verdict: Printability, *, picture: bool = True,
+                  assembly: dict | None = None) -> ToolFiles:
+    """Return the :class:`ToolFiles` naming a tool's files inside ``directory``
+    (``assembly``: the manifest's ``"print"`` entry, naming the pieces and G-code)."""
     name = spec.name
+    assembly = assembly or {}
+    rows = assembly.get("pieces", [])
     return ToolFiles(
         spec=spec, directory=directory,
         urdf=directory / f"{name}.urdf", sdf=directory / f"{name}.sdf",
@@ -155,12 +280,15 @@ def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
         png=directory / f"{name}.png" if picture else None,
         manifest=directory / f"{name}.json",
         meshes=tuple(directory / f for f in sorted(hull_meshes(spec))),
-        mass=mass, printability=verdict, sim_models=sim_model_paths(directory, spec))
+        mass=mass, printability=verdict, sim_models=sim_model_paths(directory, spec),
+        assembly=assembly,
+        pieces=tuple(directory / r["stl"] for r in rows),
+        gcode=tuple(directory / r["gcode"] for r in rows if r.get("gcode")))
 
 
 def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
                      settings: PrintSettings = PrintSettings(), overwrite: bool = False,
-                     picture: bool = True) -> ToolFiles:
+                     picture: bool = True, gcode: bool = False) -> ToolFiles:
     """Write a tool's URDF, SDF, OpenSCAD, STL, picture and manifest into ``out_dir/<name>/``.
 
     Parameters
@@ -170,11 +298,15 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
     out_dir : path
         Parent folder (created if missing); the tool gets its own folder inside it.
     settings : PrintSettings
-        The printer: minimum feature (refused below it) and build volume (flagged).
+        The printer: minimum feature (refused below it) and build volume (a larger tool
+        is split into pieces that fit, :func:`write_print_files`).
     overwrite : bool
         Replace an existing ``out_dir/<name>/``; otherwise that is a ``FileExistsError``.
     picture : bool
         Draw the PNG (about 0.4 s); without it the result's ``png`` is None.
+    gcode : bool
+        Slice every printed piece with PrusaSlicer (about 0.5-2 s a piece); runs and
+        ``creative make-tool`` do.
 
     Returns
     -------
@@ -185,7 +317,10 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
     ------
     ValueError
         A dimension below ``settings.min_feature`` or a spec whose parts do not make one
-        solid; the message names the tool and the field.
+        solid; the message names the tool and the field. A :class:`SplitError` when the
+        tool cannot be split into pieces that fit.
+    SliceError
+        The slicer rejected a piece (``gcode``); nothing is written.
     FileExistsError
         ``out_dir/<name>`` exists and ``overwrite`` is false, or it is not a folder.
     """
@@ -201,7 +336,7 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
     tmp.chmod(FOLDER_MODE)
     old: Path | None = None
     try:
-        mass, verdict = _write_all(spec, tmp, settings, picture)
+        mass, verdict, assembly = _write_all(spec, tmp, settings, picture, gcode)
         if target.exists():
             old = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".old", dir=out_dir))
             os.rename(target, old / spec.name)
@@ -215,10 +350,9 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
         raise
     if old is not None:
         shutil.rmtree(old, ignore_errors=True)
-    files = tool_files_in(target, spec, mass, verdict, picture=picture)
-    if not verdict.fits_build_volume:
-        log.warning("%s: %s", spec.name, verdict.reason)
-    log.info("wrote tool %s to %s (%s)", spec.name, target, verdict.summary())
+    files = tool_files_in(target, spec, mass, verdict, picture=picture, assembly=assembly)
+    log.info("wrote tool %s to %s (%s; %d printed pieces)", spec.name, target,
+             verdict.summary(), len(files.pieces))
     return files
 
 
@@ -247,6 +381,7 @@ def read_tool_files(directory: Path | str) -> ToolFiles:
         verdict = Printability(bool(p["fits_build_volume"]), tuple(p["extent"]),
                                p["up_axis"], p["yaw_deg"], p["reason"])
         picture = data["files"]["png"] is not None
+        assembly = data.get("print") or {}
     except (KeyError, TypeError, json.JSONDecodeError) as exc:
         raise ValueError(f"{source}: malformed tool manifest ({exc!r})") from None
-    return tool_files_in(directory, spec, mass, verdict, picture=picture)
+    return tool_files_in(directory, spec, mass, verdict, picture=picture, assembly=assembly)

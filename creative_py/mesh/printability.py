@@ -17,7 +17,8 @@ import trimesh
 
 from creative_py.mesh.spec import BlockSpec, HookSpec, ToolSpec
 from creative_py.mesh.tolerances import (BUILD_VOLUME, FIT_MARGIN, FIT_YAW_STEP_DEG,
-                                         MIN_FEATURE, MM_PER_M)
+                                         JOINT_CLEARANCE, MIN_FEATURE, MM_PER_M,
+                                         NOZZLE_DIAMETER)
 
 Vec3 = tuple[float, float, float]
 
@@ -29,13 +30,33 @@ class PrintSettings:
     Attributes
     ----------
     min_feature : float
-        Smallest printable dimension of any part, metres.
+        Smallest printable dimension of any part, metres (at least two nozzle widths).
     build_volume : tuple of float
-        Build volume along the printer's x, y, z, metres.
+        Build volume along the printer's x, y, z, metres (default 250 x 210 x 210 mm, the
+        bed of the slicer profile). A larger tool is split into pieces that fit
+        (:mod:`creative_py.mesh.split`).
+    nozzle_diameter : float
+        The nozzle, metres.
+    joint_clearance : float
+        Gap between a split tool's dowel pin and its hole, per side, metres.
     """
 
     min_feature: float = MIN_FEATURE
     build_volume: Vec3 = BUILD_VOLUME
+    nozzle_diameter: float = NOZZLE_DIAMETER
+    joint_clearance: float = JOINT_CLEARANCE
+
+    def __post_init__(self) -> None:
+        values = (self.min_feature, self.nozzle_diameter, self.joint_clearance,
+                  *self.build_volume)
+        if len(self.build_volume) != 3 or not all(
+                isinstance(v, (int, float)) and np.isfinite(v) and v > 0 for v in values):
+            raise ValueError(f"print settings: every length must be a positive number of "
+                             f"metres and the build volume three of them, got {self}")
+        if self.min_feature < 2 * self.nozzle_diameter - 1e-12:
+            raise ValueError(f"print settings: min_feature {self.min_feature * MM_PER_M:g} mm "
+                             f"is below two nozzle widths "
+                             f"({2 * self.nozzle_diameter * MM_PER_M:g} mm)")
 
 
 @dataclass(frozen=True)
@@ -122,10 +143,47 @@ def printability(spec: ToolSpec, mesh: trimesh.Trimesh,
     check_min_feature(spec, settings)
     points = np.asarray(mesh.convex_hull.vertices, dtype=float)
     extent = tuple(float(v) for v in points.max(axis=0) - points.min(axis=0))
+    placement = bed_placement(points, settings)
+    if placement is not None:
+        up, yaw = placement
+        return Printability(True, extent, up, yaw, "")  # type: ignore[arg-type]
+    size = " x ".join(f"{v * MM_PER_M:.1f}" for v in extent)
+    bed = " x ".join(f"{v * MM_PER_M:.0f}" for v in settings.build_volume)
+    reason = (f"the part is {size} mm and fits no flat or diagonal placement in the {bed} mm "
+              "build volume; it is split into pieces joined by dowel pins, each printed on "
+              "its own (creative_py.mesh.split; the tool manifest's \"print\" entry)")
+    return Printability(False, extent, None, None, reason)  # type: ignore[arg-type]
+
+
+UP_AXES = (("z", (0, 1, 2)), ("x", (1, 2, 0)), ("y", (2, 0, 1)))
+"""The flat placements tried, in order: the tool-frame axis that points up on the bed,
+and the tool-frame axes that become the bed's x, y and z (cyclic: a proper rotation)."""
+
+
+def bed_placement(points: np.ndarray, settings: PrintSettings = PrintSettings(),
+                  ) -> tuple[str, float] | None:
+    """Return the first flat placement in which ``points`` fit the build volume.
+
+    Parameters
+    ----------
+    points : array of shape (n, 3)
+        The part's points (its convex hull's vertices suffice), tool frame, metres.
+    settings : PrintSettings
+        The printer (build volume; :data:`FIT_MARGIN` is kept to every edge).
+
+    Returns
+    -------
+    (up_axis, yaw_deg) or None
+        The tool-frame axis pointing up ("z", "x" or "y", tried in that order) and the
+        turn about the bed's normal (degrees, 0 to 179 in steps of
+        :data:`FIT_YAW_STEP_DEG`); None when no placement fits.
+    """
+    points = np.asarray(points, dtype=float)
+    extent = points.max(axis=0) - points.min(axis=0)
     bx, by, bz = (b - 2 * FIT_MARGIN for b in settings.build_volume)
     yaws = np.radians(np.arange(0.0, 180.0, FIT_YAW_STEP_DEG))
     cos, sin = np.cos(yaws)[:, None], np.sin(yaws)[:, None]
-    for up, (i, j, k) in (("z", (0, 1, 2)), ("x", (1, 2, 0)), ("y", (2, 0, 1))):
+    for up, (i, j, k) in UP_AXES:
         if extent[k] > bz:
             continue
         u, v = points[:, i][None, :], points[:, j][None, :]
@@ -134,11 +192,17 @@ def printability(spec: ToolSpec, mesh: trimesh.Trimesh,
         dv = rv.max(axis=1) - rv.min(axis=1)
         ok = np.flatnonzero((du <= bx) & (dv <= by))
         if ok.size:
-            yaw = float(np.degrees(yaws[ok[0]]))
-            return Printability(True, extent, up, round(yaw, 6), "")  # type: ignore[arg-type]
-    size = " x ".join(f"{v * MM_PER_M:.1f}" for v in extent)
-    bed = " x ".join(f"{v * MM_PER_M:.0f}" for v in settings.build_volume)
-    reason = (f"the part is {size} mm and fits no flat or diagonal placement in the {bed} mm "
-              "build volume; split it into pieces (e.g. cut the handle and join it with a "
-              "dowel) or print it on a larger machine")
-    return Printability(False, extent, None, None, reason)  # type: ignore[arg-type]
+            return up, round(float(np.degrees(yaws[ok[0]])), 6)
+    return None
+
+
+def placement_rotation(up_axis: str, yaw_deg: float) -> np.ndarray:
+    """Return the 3x3 rotation taking tool-frame vectors to the bed's frame for a
+    placement of :func:`bed_placement` (the ``up_axis`` becomes the bed's z, then the
+    part turns by ``yaw_deg`` about it)."""
+    order = dict(UP_AXES)[up_axis]
+    permute = np.eye(3)[list(order)]
+    a = np.radians(yaw_deg)
+    yaw = np.array([[np.cos(a), -np.sin(a), 0.0], [np.sin(a), np.cos(a), 0.0],
+                    [0.0, 0.0, 1.0]])
+    return yaw @ permute

@@ -33,7 +33,8 @@ HookSide = Literal["left", "right", "none"]
 BlockShape = Literal["triangular_prism", "box", "cylinder"]
 
 PLA_DENSITY = 1240.0  # kg/m^3, printed PLA at 100 % infill
-"""Default density used when a spec gives no mass."""
+"""The density of every printed tool (a spec with ``mass=None``: every created tool, in
+runs and in ``make-tool``) and of the slicer's filament; the one density of the project."""
 
 
 @dataclass(frozen=True)
@@ -98,7 +99,9 @@ class HookSpec:
     grip_offset : float
         Distance of the grip point from the butt end along +x, metres.
     mass : float or None
-        Total mass in kg; None means PLA density times volume.
+        Total mass in kg; None means PLA density times volume (every created tool).
+        The default, 0.1 kg, is that of a catalogued object whose ``objects.toml``
+        table gives no mass (the world's objects, not printed).
     """
 
     name: str
@@ -183,7 +186,8 @@ class BlockSpec:
     height : float
         Extent along z (the back height of a prism), metres.
     mass : float or None
-        Mass in kg; None means PLA density times volume.
+        Mass in kg; None means PLA density times volume (every created tool). The
+        default, 0.1 kg, is that of a catalogued object whose table gives no mass.
     """
 
     name: str

@@ -26,6 +26,22 @@ BUILD_VOLUME = (0.250, 0.210, 0.210)
 """Build volume x, y, z in metres (a Prusa i3 MK3S-class bed). A part that does not fit
 in any flat orientation is still written, flagged ``fits_build_volume = False``."""
 
+NOZZLE_DIAMETER = 0.0004
+"""The printer's nozzle, metres (the slicer profile ``profiles/generic_pla_0.4.ini``).
+No feature of a printed piece, a joint's walls included, may be thinner than two nozzle
+widths; :data:`MIN_FEATURE` is larger still."""
+
+JOINT_CLEARANCE = 0.0002
+"""Gap between a dowel pin and the walls of its hole, on every side and at each end,
+metres: a pin printed at its nominal size slides into a hole printed at pin + 2 x 0.2 mm."""
+
+SPLIT_VOLUME_RTOL = 0.005
+"""The pieces of a split tool, pins inserted, must make the designed solid within this
+fraction of its volume (the symmetric difference, checked with manifold3d)."""
+
+MAX_PIECES = 8
+"""Most parts a tool is cut into to fit the build volume (pins not counted)."""
+
 FIT_YAW_STEP_DEG = 1.0
 """Yaw step when searching a diagonal placement on the bed, degrees."""
 

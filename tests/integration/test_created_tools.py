@@ -2,14 +2,15 @@
 
 Runs the wedge case's tool creation (the faster case) once and checks all tools it
 wrote: STL watertight, OpenSCAD renders the .scad to the same volume within 1 %, URDF and
-SDF load in pybullet with the right mass.
+SDF load in pybullet with the right mass, every printed piece fits the bed and has its
+G-code, and the pieces unite into the tool.
 """
 
 import pybullet as pb
 import pytest
 
 from creative_py.learning.run import RunOptions, run_case
-from creative_py.mesh.check import check_tool_files
+from creative_py.mesh.check import check_print_files, check_tool_files
 from creative_py.mesh.export import read_tool_files
 
 pytestmark = [pytest.mark.slow, pytest.mark.sim]
@@ -24,6 +25,9 @@ def test_every_created_tool_checks(tmp_path):
         files = read_tool_files(d)
         report = check_tool_files(files)
         assert report.ok, report.problems
+        printed = check_print_files(files)            # pieces united again, G-code read
+        assert printed.ok, printed.problems
+        assert printed.pieces >= 1 and printed.sliced == printed.pieces
         client = pb.connect(pb.DIRECT)
         try:
             body = pb.loadURDF(str(files.urdf), flags=pb.URDF_USE_INERTIA_FROM_FILE,

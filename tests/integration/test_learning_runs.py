@@ -67,3 +67,8 @@ def test_hook_case_end_to_end(tmp_path):
     assert tool["instance"].startswith("handle_length(") and "long" in tool["instance"]
     assert sum(o == "success" for o in create["eval"]) >= 4      # paper: 5 of 5
     assert_pddl_solved(path, s)
+    # Printed PLA, in parts that fit the bed, each sliced.
+    assert tool["mass_kg"] < 0.1
+    printed = tool["print"]
+    assert printed["joint"] == "square_dowel_pin" and len(printed["pieces"]) >= 3
+    assert all(p["print_time_s"] > 0 and p["filament_g"] > 0 for p in printed["pieces"])

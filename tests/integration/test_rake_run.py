@@ -31,6 +31,13 @@ def test_rake_case_end_to_end(tmp_path):
     assert create["eval"] == ["success"] * 5
     for ext in ("urdf", "sdf", "scad", "stl"):
         assert (folder.path / "tools" / tool["name"] / f"{tool['name']}.{ext}").exists()
+    # The 0.60 m rake is longer than the bed: printed in parts joined by a dowel pin.
+    printed = tool["print"]
+    assert printed["joint"] == "square_dowel_pin" and len(printed["pieces"]) >= 3
+    assert abs(printed["union_volume_error_pct"]) <= 0.5
+    for piece in printed["pieces"]:
+        assert piece["print_time_s"] > 0 and piece["filament_g"] > 0
+        assert all(v <= b for v, b in zip(piece["bounding_box_mm"], (250, 210, 210)))
     model = (folder.path / "model.pl").read_text()
     assert "learned_model(rake-deep_shelf" in model
     assert set(s["pddl"]) == {"use", "create"}

@@ -61,6 +61,10 @@ CORPUS = [
     (["make-tool", "hook", "handle_length=long", "--context", "max_tool_length(foo)",
       "--out", "{tmp}/t"], "--context 'max_tool_length(foo)': the size model cannot use it"),
     (["report", "{tmp}"], "no trials.jsonl in this run folder"),
+    (["make-tool", "hook", "handle_length=long", "--build-volume", "250,210",
+      "--out", "{tmp}/t"], "--build-volume '250,210': expected three positive numbers"),
+    (["make-tool", "hook", "handle_length=long", "--build-volume", "250,0,210",
+      "--out", "{tmp}/t"], "--build-volume '250,0,210'"),
 ]
 
 
@@ -81,18 +85,41 @@ def test_bad_input_is_one_line_with_exit_code_2(tmp_path, a_file, args, message)
 
 def test_make_tool_refuses_an_existing_tool_folder_unless_told_to_overwrite(tmp_path):
     first = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
-                     "--out", str(tmp_path), "--name", "h1")
+                     "--out", str(tmp_path), "--name", "h1", "--no-slice")
     assert first.returncode == 0, first.stderr
     stl = tmp_path / "h1" / "h1.stl"
     before = stl.read_bytes()
     again = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
-                     "--out", str(tmp_path), "--name", "h1")
+                     "--out", str(tmp_path), "--name", "h1", "--no-slice")
     assert again.returncode == 2
     assert "the tool's folder exists (--overwrite replaces it)" in again.stderr
     assert stl.read_bytes() == before                 # nothing already written is lost
     forced = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
-                      "--out", str(tmp_path), "--name", "h1", "--overwrite")
+                      "--out", str(tmp_path), "--name", "h1", "--overwrite", "--no-slice")
     assert forced.returncode == 0, forced.stderr
+    assert list((tmp_path / "h1").glob("*.gcode")) == []     # --no-slice: STL pieces only
+    assert len(list((tmp_path / "h1").glob("h1_part*.stl"))) >= 2
+
+
+@pytest.mark.parametrize("command", [["make-tool", "hook", "handle_length=long"],
+                                     ["run", "hook"]])
+def test_without_the_slicer_printing_commands_stop_in_one_line_before_work(tmp_path,
+                                                                          command):
+    import os
+    import shutil
+
+    bin_dir = tmp_path / "bin"                 # a PATH with SWI-Prolog but no slicer
+    bin_dir.mkdir()
+    (bin_dir / "swipl").symlink_to(shutil.which("swipl"))
+    out = tmp_path / "out"
+    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", *command, "--out",
+                           str(out)], capture_output=True, text=True, timeout=60,
+                          env={**os.environ, "PATH": str(bin_dir)})
+    lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
+    assert proc.returncode == 2, proc.stderr
+    assert lines == ["error: the slicer 'prusa-slicer' is not installed, and every printed "
+                     "piece is sliced (make setup installs it: apt-get install prusa-slicer)"]
+    assert not out.exists()
 
 
 def test_a_run_whose_demonstration_fails_is_one_line_and_leaves_no_folder(tmp_path):

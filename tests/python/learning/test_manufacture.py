@@ -7,15 +7,19 @@ are those of the shared vocabulary (ontology/ranges.pl).
 
 from __future__ import annotations
 
+import json
+import xml.etree.ElementTree as ET
+
 import pytest
+import trimesh
 
 from creative_py.bridge import Compound, Engine, Var
 from creative_py.learning.manufacture import (InfeasibleSpec, default_context, make_tool,
                                               parse_context, parse_spec, size_tool,
                                               tool_vocabulary)
-from creative_py.mesh.check import check_tool_files
+from creative_py.mesh.check import check_print_files, check_tool_files
 from creative_py.mesh.printability import PrintSettings
-from creative_py.mesh.spec import BlockSpec, HookSpec
+from creative_py.mesh.spec import PLA_DENSITY, BlockSpec, HookSpec
 from creative_py.world import WorldFileError
 
 
@@ -35,6 +39,27 @@ def readback(engine, sized) -> set[str]:
     """Return the structural literals the knowledge base derives from the sized tool."""
     case = "hook" if sized.case == "hook" else "wedge"
     return {str(lit) for lit in engine.abstract_state(case, sized.catalogue_facts())}
+
+
+def assert_printed(files) -> dict:
+    """Check a made tool as a printer would get it, from its files: PLA mass in the URDF,
+    pieces inside the build volume, their union, and every piece's G-code; return the
+    manifest's "print" entry."""
+    urdf_mass = float(ET.parse(files.urdf).getroot().find("link/inertial/mass").get("value"))
+    stl_m3 = trimesh.load_mesh(files.stl).volume / 1e9          # the STL is in mm
+    assert urdf_mass == pytest.approx(PLA_DENSITY * stl_m3, rel=0.02)
+    entry = json.loads(files.manifest.read_text())["print"]
+    assert entry["printable"] and entry["sliced"]
+    assert abs(entry["union_volume_error_pct"]) <= 0.5
+    for row in entry["pieces"]:
+        assert (files.directory / row["gcode"]).is_file()
+        assert row["print_time_s"] > 0 and row["filament_mm"] > 0 and row["filament_g"] > 0
+        assert all(0 < v <= b for v, b in zip(row["bounding_box_mm"], entry["build_volume_mm"]))
+    assert entry["print_time_s"] > 0 and entry["filament_g"] > 0
+    check = check_print_files(files)
+    assert check.ok, check.problems
+    assert check.sliced == len(entry["pieces"]) and check.union_mismatch <= 0.005
+    return entry
 
 
 # ---------------------------------------------------------------- parse_spec
@@ -117,6 +142,11 @@ def test_long_hook_for_the_long_tube_is_sized_inside_its_ranges_and_printed(engi
     check = check_tool_files(files)
     assert check.ok, check.problems
     assert check.scad_volume is not None and check.scad_mismatch_rel < 1e-3
+    # Longer than the bed: split into parts joined by a dowel pin, each sliced.
+    assert not files.fits_build_volume
+    entry = assert_printed(files)
+    assert entry["joint"] == "square_dowel_pin"
+    assert [p["role"] for p in entry["pieces"]].count("part") >= 2
 
 
 def test_long_triangular_prism_for_the_door_is_sized_and_printed(engine, tmp_path):
@@ -134,11 +164,14 @@ def test_long_triangular_prism_for_the_door_is_sized_and_printed(engine, tmp_pat
     check = check_tool_files(files)
     assert check.ok, check.problems
     assert check.scad_volume is not None
+    entry = assert_printed(files)                      # fits: one piece, no joint
+    assert len(entry["pieces"]) == 1 and entry["joint"] is None
 
 
 def test_stick_is_sized_without_a_prong_and_printed(engine, tmp_path):
     lits = parse_spec("hook", "kind=stick,handle_length=short,handle_width=thin")
-    files = make_tool(engine, "hook", lits, [], "stick_new1", tmp_path, picture=False)
+    files = make_tool(engine, "hook", lits, [], "stick_new1", tmp_path, picture=False,
+                      gcode=False)
     assert files.spec.is_stick and 0.10 < files.spec.handle_length < 0.25
     assert 0.006 < files.spec.handle_width < 0.012
     assert check_tool_files(files, openscad=False).ok

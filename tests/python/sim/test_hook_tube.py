@@ -144,7 +144,9 @@ def test_positioning_without_a_held_tool_is_blocked():
 def _created_world(tmp_path):
     from creative_py.mesh.export import write_tool_files
 
-    spec = HookSpec("hook_new1", 0.55, handle_width=0.01, hook_length=0.035, hook_width=0.012)
+    # A created tool is printed PLA: mass None, PLA density times volume.
+    spec = HookSpec("hook_new1", 0.55, handle_width=0.01, hook_length=0.035, hook_width=0.012,
+                    mass=None)
     files = write_tool_files(spec, tmp_path, picture=False)
     return hook_world().with_tool(spec, files.urdf), files
 
@@ -156,10 +158,17 @@ def test_a_created_tool_is_spawned_from_its_urdf_and_listed(tmp_path):
     assert listing["objects"]["hook_new1"]["set"] == "created"
     assert listing["objects"]["hook_new1"]["urdf"] == str(files.urdf)
     with open_episode(world, "long_tube", 1, "hook_new1") as ep:
+        import pybullet as pb
+        import trimesh
+        from creative_py.mesh.spec import PLA_DENSITY
+        from creative_py.sim.bodies import frame_pose
+
+        # The physics runs with the printed mass: PLA density times the STL's volume.
+        stl_m3 = trimesh.load_mesh(files.stl).volume / 1e9
+        mass = pb.getDynamicsInfo(ep.tool_body, -1, physicsClientId=ep.sim.client)[0]
+        assert mass == pytest.approx(PLA_DENSITY * stl_m3, rel=0.02)
         assert ep.run_skill("pick_up").ok
         tip = next(f[2:5] for f in ep.observe().facts if f[0] == "tip_position")
-        import pybullet as pb
-        from creative_py.sim.bodies import frame_pose
         pos, quat = frame_pose(ep.sim, ep.tool_body)
         true_tip = pb.multiplyTransforms(pos, quat, prong_centre(ep.spec), (0, 0, 0, 1))[0]
         assert math.dist(tip, true_tip) < 0.003
