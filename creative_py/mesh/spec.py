@@ -38,6 +38,18 @@ BlockShape = Literal["triangular_prism", "box", "cylinder"]
 PLA_DENSITY = 1240.0  # kg/m^3, printed PLA at 100 % infill
 """Default density used when a spec gives no mass."""
 
+PLA_STRENGTH = 50.0e6  # Pa
+"""Strength of printed PLA that the strength check (:mod:`creative_py.learning.strength`)
+holds a tool's stress against, pascals: the tensile (and flexural) strength of PLA
+printed at 100 % infill with its layers along the load, 50-60 MPa in the filament makers'
+datasheets and in tests of FDM coupons; we take the low end. A hook or stick prints lying
+flat, so its handle's bending stress runs along the extruded lines. PLA's compressive
+strength is higher; the block's compression check uses this value too (conservative)."""
+
+MIN_SAFETY_FACTOR = 2.0
+"""The least ratio of :data:`PLA_STRENGTH` to a created tool's estimated stress that the
+strength check accepts."""
+
 
 @dataclass(frozen=True)
 class Box:
