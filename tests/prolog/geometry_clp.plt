@@ -208,6 +208,18 @@ test(size_wedge_gap_too_high) :-
                [door_gap_m(door1, 0.05)], R),
     assertion(R == infeasible([block_height(w, low), door_gap_m(door1, 0.05)])).
 
+%   The strength check's thickening: a handle at least W wide, within its literals.
+test(size_min_handle_width) :-
+    solve_size(hook, [handle_length(t, long), handle_width(t, thin)],
+               [tube_inner_m(tube1, 0.04, 0.055), min_handle_width_m(0.0101)], dims(D)),
+    memberchk(handle_width=W, D),
+    assertion(W >= 0.0101),
+    assertion(W < 0.012).
+
+test(size_min_handle_width_infeasible) :-
+    solve_size(hook, [handle_width(t, thin)], [min_handle_width_m(0.0159)], R),
+    assertion(R == infeasible([handle_width(t, thin), min_handle_width_m(0.0159)])).
+
 test(size_cylinder_width_equals_length) :-
     solve_size(block, [shape(w, cylinder), block_length(w, short)], [], dims(D)),
     memberchk(length=L, D),
