@@ -302,7 +302,8 @@ def report(run_dir: Path = typer.Argument(..., help="A run folder."),
             console.print(f"{key}: {s.get('hypotheses', {}).get(key, '?')}", markup=False)
         for tool in s.get("create", {}).get("created_tools", []):
             console.print(f"created {tool['name']}: {tool['replaced']} -> {tool['instance']} "
-                          f"{tool['dims']} ({tool['trial_outcome']})", markup=False)
+                          f"{tool['dims']} ({tool['trial_outcome']}"
+                          f"{_strength_note(tool.get('strength'))})", markup=False)
     if plot:
         png = plot_trials(trials, Path(run_dir) / "trials.png", title=str(run_dir))
         console.print(f"plot: {png}", markup=False)
@@ -418,5 +419,21 @@ def make_tool_cmd(
         typer.echo(str(p))
 
 
+def _strength_note(strength: dict | None) -> str:
+    """Return ``"; strength pass, 13.8 MPa, safety factor 3.61"`` for a created tool's
+    strength check (empty when it has none)."""
+    if not strength:
+        return ""
+    sf = strength.get("safety_factor")
+    text = (f"; strength {strength.get('verdict')}, {strength.get('stress_mpa', 0):.1f} MPa, "
+            f"safety factor {'-' if sf is None else f'{sf:.2f}'}")
+    if strength.get("thickened_into"):
+        text += f", thickened into {strength['thickened_into']}"
+    if strength.get("reason"):
+        text += f": {strength['reason']}"
+    return text
+
+
 if __name__ == "__main__":  # pragma: no cover
     app()
+

@@ -42,6 +42,13 @@ qualitative_range(block_height, high, 0.04,  0.08, closed_closed).
 
 %   The ratio's domain follows from the block ranges: 0.03/0.08 = 0.375 up to
 %   0.20/0.015 = 13.3.
+%   A wedge's tip: the height of the flat at its thin end (ontology/kinds/block.pl).  A
+%   sharp tip is thinner than two 0.4 mm nozzle widths and cannot be printed; a blunt
+%   one can.  No structural literal names it: it is a dimension of the block size model
+%   only (the catalogue's wedges are sharp, tool-use learning never sees it).
+qualitative_range(tip_height, sharp, 0.0,    0.0008, closed_open).
+qualitative_range(tip_height, blunt, 0.0008, 0.004,  closed_closed).
+
 qualitative_range(mechanical_advantage, below_one, 0.375, 1.0, closed_closed).
 qualitative_range(mechanical_advantage, above_one, 1.0, 13.5, open_closed).
 

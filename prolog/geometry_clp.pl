@@ -461,7 +461,8 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 %   Fields: hook: handle_length, handle_width, hook_length, hook_width (CLP(R), metres),
 %   hook_angle_deg (CLP(FD), whole degrees), hook_side (left or right).  stick:
 %   handle_length, handle_width; hook_length = 0.0, hook_width = 0.0, hook_side = none,
-%   hook_angle_deg = 90.  block: length, width, height (metres), shape.
+%   hook_angle_deg = 90.  block: length, width, height, tip_height (metres: a prism's
+%   blunted tip, 0 for a box or a cylinder), shape.
 %
 %   Structural literals: those of the ontology (handle_length(T, long), hook_side(T,
 %   left), shape(W, box), mechanical_advantage(W, above_one), ...); class literals
@@ -476,7 +477,8 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
 %     - tube_inner_m(Tube, W, H): handle_width + hook_length =< min(W, H) -
 %       tube_clearance_m (0.005 m): the tool turns inside the tube.
 %     - max_tool_length(M): handle_length =< M (block: length and width =< M).
-%     - door_gap_m(Door, G): height > G (the wedge must reach under the door).
+%     - door_gap_m(Door, G): height > G (the wedge must reach under the door) and
+%       tip_height < G (its blunted tip slides under it).
 %     - min_wall_m(M): every solid dimension >= M (printable).
 %
 %   A literal of a property that Kind does not have (hook_length/2 for a block) makes
@@ -583,7 +585,21 @@ size_model_(Kind, Context, Items, Dims) :-
     findall(F=V, kb_clause(size_fixed(Kind, F, V), true), Fixed),
     append([NumDims, ChoiceDims, Fixed], Dims),
     maplist(post_domain_(FieldProps, Dims), FieldProps),
-    maplist(post_size_item_(Kind, Context, Dims), Items).
+    maplist(post_size_item_(Kind, Context, Dims), Items),
+    bound_choice_constraints_(Dims, Context).
+
+%   bound_choice_constraints_(+Dims, +Context): the constraints of every symbolic field a
+%   literal has fixed (shape(W, triangular_prism): its blunted tip).
+bound_choice_constraints_(Dims, Context) :-
+    include(bound_choice_, Dims, Bound),
+    maplist(bound_choice_constraint_(Dims, Context), Bound).
+
+bound_choice_(F=V) :-
+    nonvar(V),
+    once(kb_clause(size_choice(_, F, _, _), true)).
+
+bound_choice_constraint_(Dims, Context, F=V) :-
+    choice_constraints_(F, V, Dims, Context).
 
 field_var_(F-_, F=_).
 
@@ -682,33 +698,40 @@ fd_range_constraint_(open_closed, V, Lo, Hi) :-
 %   ==
 %   ?- size_constraints(block, [shape(w, triangular_prism), block_length(w, long)], [], D),
 %      size_search(D, G).
-%   G = [length=0.16, width=0.085, height=0.0475, shape=triangular_prism].
+%   G = [length=0.16, width=0.085, height=0.0475, tip_height=0.0024,
+%        shape=triangular_prism].
 %   ==
 size_search(Dims, Ground) :-
+    size_search_(Dims, [], Ground).
+
+%   size_search_(+Dims, +Context, -Ground): size_search/2 where the constraints of a
+%   symbolic value read their size parameters from Context (then the defaults).
+size_search_(Dims, Context, Ground) :-
     must_be(list, Dims),
-    label_choices_(Dims),
+    label_choices_(Dims, Context),
     maplist(label_field_, Dims),
     Ground = Dims.
 
-label_choices_(Dims) :-
+label_choices_(Dims, Context) :-
     findall(F-Vs, kb_clause(size_choice(_, F, _, Vs), true), Choices),
-    maplist(label_choice_(Dims), Choices).
+    maplist(label_choice_(Dims, Context), Choices).
 
-label_choice_(Dims, F-Values) :-
+label_choice_(Dims, Context, F-Values) :-
     (   memberchk(F=V, Dims)
     ->  (   var(V)
         ->  member(V, Values)
         ;   true
         ),
-        choice_constraints_(F, V, Dims)
+        choice_constraints_(F, V, Dims, Context)
     ;   true
     ).
 
-%   The constraints a symbolic field's value adds (size_choice_constraint/3).
-choice_constraints_(F, V, Dims) :-
+%   The constraints a symbolic field's value adds (size_choice_constraint/3), their
+%   size parameters from Context or the defaults.
+choice_constraints_(F, V, Dims, Context) :-
     findall(Cs, kb_clause(size_choice_constraint(F, V, Cs), true), Css),
     append(Css, Comparisons),
-    maplist(post_(size(Dims, [])), Comparisons).
+    maplist(post_(size(Dims, Context)), Comparisons).
 
 label_field_(F=V) :-
     (   var(V),
@@ -749,7 +772,7 @@ solve_size(Kind, Literals, Context, Result) :-
 size_point_(Kind, Context, Items, Ground) :-
     findall(G,
             once(( size_model_(Kind, Context, Items, Dims),
-                   size_search(Dims, G) )),
+                   size_search_(Dims, Context, G) )),
             [Ground]).
 
 size_items_feasible_(Kind, Context, Items) :-

@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import logging
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import Any, Optional
 
 from creative_py.bridge import Compound, Engine, Term
@@ -48,6 +49,8 @@ class CreatedTool:
     """The printed pieces (the tool manifest's ``"print"`` entry, in short): per piece
     its STL, G-code, bounding box (mm), volume, print time and filament; the joint; the
     union's volume check; totals."""
+    strength: dict[str, Any] = field(default_factory=dict)
+    """The strength check of its successful trial (:mod:`creative_py.learning.strength`)."""
 
 
 @dataclass
@@ -78,9 +81,16 @@ class ToolCreator:
         Stop after creating this many tools.
     eval_trials : int
         Evaluation trials of a successful created tool (paper: 5).
+    safety_factor : float or None
+        The least safety factor of the strength check (None: the default,
+        :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`).
     """
 
-    def __init__(self, runner: TrialRunner, max_tools: int = 6, eval_trials: int = 5) -> None:
+    def __init__(self, runner: TrialRunner, max_tools: int = 6, eval_trials: int = 5,
+                 safety_factor: Optional[float] = None) -> None:
+        from creative_py.mesh.spec import MIN_SAFETY_FACTOR
+
+        self.safety_factor = MIN_SAFETY_FACTOR if safety_factor is None else safety_factor
         self.runner = runner
         self.engine: Engine = runner.engine
         self.case = runner.case
@@ -133,12 +143,104 @@ class ToolCreator:
                 rec = self._trial_with(spec, n, vs, task)
             ct.trial_outcome = rec.outcome
             if rec.outcome == "success":
+                # The physics measured the load; a tool too weak for it is thickened
+                # (tried again) or rejected, and then the next candidate is created.
+                spec, ct, n = self._strengthen(spec, ct, struct, rec, n, vs, task, created)
+                usable = ct.strength.get("verdict") in ("pass", "unmeasured")
+                if ct.trial_outcome != "success" or not usable:
+                    continue
                 ct.eval_outcomes = self._evaluate(spec, vs, task)
                 return CreateResult(variant, True, created, ct, vs, runner.trials[start:],
                                     time.perf_counter() - t0, replaced=replaced,
                                     instance=instance)
         return CreateResult(variant, True, created, None, vs, runner.trials[start:],
                             time.perf_counter() - t0, exhausted)
+
+    def _strengthen(self, spec: Any, ct: CreatedTool, struct: list, rec: TrialRecord, n: int,
+                    vs: Term, task: TaskState, created: list[CreatedTool],
+                    ) -> tuple[Any, CreatedTool, int]:
+        """Check a created tool's strength from its successful trial; thicken it if needed.
+
+        The check (:mod:`creative_py.learning.strength`) uses the largest contact force
+        the physics recorded on the tool in ``rec``. A tool that fails it is sized again
+        with a wider handle (a ``min_handle_width_m`` fact for the CLP size model),
+        written, added to ``created`` and tried in the physics; a tool the size model
+        cannot thicken is rejected. The figures go into each tool's ``strength`` and
+        its JSON manifest. Returns the tool to evaluate (its ``trial_outcome`` and
+        ``strength["verdict"]`` say whether it may be) and the trial count.
+        """
+        from creative_py.learning.strength import (MAX_THICKENINGS, check_strength,
+                                                   rejected, thicker_dims)
+
+        sf = self.safety_factor
+        check = check_strength(spec, rec.extra.get("tool_load"), trial=rec.trial,
+                               safety_factor=sf)
+        for _ in range(MAX_THICKENINGS):
+            if check.verdict != "fail" or check.model != "cantilever":
+                break
+            reply = thicker_dims(self.engine, self._kind(struct), struct,
+                                 self.runner.task_facts(task), check)
+            if reply.name == "infeasible":
+                check = rejected(check, reply.args[0])
+                break
+            thick, values, files, mass, printed = self._manufacture(len(created) + 1, struct,
+                                                                    reply.args[0])
+            self._record_strength(ct, replace(check, thickened_into=thick.name))
+            ct2 = CreatedTool(thick.name, ct.replaced, ct.general, ct.instance,
+                              list(ct.structural), dict(values),
+                              {k: str(v) for k, v in files.items()}, "",
+                              mass_kg=mass, print=printed)
+            created.append(ct2)
+            self.runner.progress(
+                f"{ct.name}: safety factor {check.safety_factor:.2f} < "
+                f"{check.required_safety_factor:g} under {check.force_n:.2f} N; thickened "
+                f"into {thick.name} {ct2.dims}")
+            n += 1
+            rec = self._trial_with(thick, n, vs, task)
+            if rec.outcome in ("blocked", "unreachable", "invalid"):
+                n += 1
+                rec = self._trial_with(thick, n, vs, task)
+            ct2.trial_outcome = rec.outcome
+            spec, ct = thick, ct2
+            check = check_strength(thick, rec.extra.get("tool_load"), trial=rec.trial,
+                                   safety_factor=sf, thickened_from=check.tool)
+            if rec.outcome != "success":
+                check = replace(check, reason=f"the thickened tool's trial ended {rec.outcome}")
+                break
+        if check.verdict == "fail":
+            check = replace(check, verdict="rejected", reason=(
+                f"still too weak after {MAX_THICKENINGS} thickenings"
+                if check.model == "cantilever" else
+                f"a {check.model} check is not met by thickening a handle"))
+        self._record_strength(ct, check)
+        if check.verdict == "rejected":
+            self.runner.progress(f"{ct.name}: rejected: {check.reason}")
+        else:
+            got = "-" if check.safety_factor is None else f"{check.safety_factor:.2f}"
+            self.runner.progress(f"{ct.name}: strength {check.verdict} ({check.model}, "
+                                 f"{check.force_n:.2f} N, {check.stress_pa / 1e6:.2f} MPa, "
+                                 f"safety factor {got})")
+        return spec, ct, n
+
+    def _record_strength(self, ct: CreatedTool, check: Any) -> None:
+        """Put a strength check into the created tool and its JSON manifest."""
+        from creative_py.learning.strength import write_strength
+
+        ct.strength = check.to_dict()
+        urdf = ct.files.get("urdf")
+        if urdf:
+            write_strength(Path(urdf).with_suffix(".json"), check)
+
+    def _kind(self, struct: list) -> str:
+        """Return the spec kind of a new tool: its class literal among ``struct``."""
+        from creative_py.mesh.spec import SPEC_KINDS
+
+        kinds = [s.name for s in struct
+                 if isinstance(s, Compound) and len(s.args) == 1 and s.name in SPEC_KINDS]
+        if not kinds:
+            raise RuntimeError(f"{self.case}: the new tool's literals name no tool kind "
+                               f"({', '.join(SPEC_KINDS)}): {term_text(struct)}")
+        return kinds[0]
 
     def _manufacture(self, k: int, struct: list, dims: Term,
                      ) -> tuple[Any, dict, dict, Optional[float], dict]:
@@ -148,22 +250,18 @@ class ToolCreator:
         kind of :data:`creative_py.mesh.spec.SPEC_KINDS`, e.g. ``hook(T)``).
         """
         from creative_py.mesh.export import write_tool_files
-        from creative_py.mesh.spec import SPEC_KINDS, spec_from_dict
+        from creative_py.mesh.spec import spec_from_dict
 
         values = {}
         for d in dims:
             name, value = d.args
             values[str(name)] = value if not isinstance(value, str) else str(value)
-        kinds = [s.name for s in struct
-                 if isinstance(s, Compound) and len(s.args) == 1 and s.name in SPEC_KINDS]
-        if not kinds:
-            raise RuntimeError(f"{self.case}: the new tool's literals name no tool kind "
-                               f"({', '.join(SPEC_KINDS)}): {term_text(struct)}")
-        name = f"{self.case}_new{k}"
+        kind = self._kind(struct)
+        name = f"{self.case}_new{k}""
         # A created tool is printed: its mass is PLA density times its volume
         # (mass None, :func:`creative_py.mesh.spec.spec_mass`), in the URDF it is
         # spawned from and so in the physics.
-        spec = spec_from_dict({"kind": kinds[0], "name": name, **values, "mass": None},
+        spec = spec_from_dict({"kind": kind, "name": name, **values, "mass": None},
                               source=f"created tool {name}")
         files: dict[str, Any] = {}
         mass: Optional[float] = None

@@ -347,7 +347,8 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
         The new tool's object name.
     settings : PrintSettings
         The printer: unless the context has a ``min_wall_m`` fact, every solid dimension
-        is kept at or above ``settings.min_feature``.
+        is kept at or above ``settings.min_feature``; unless it has a
+        ``min_tip_height_m`` fact, a wedge's tip at or above ``settings.min_tip``.
 
     Returns
     -------
@@ -370,6 +371,8 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
     context = list(context_facts)
     if not any(isinstance(f, Compound) and f.name == "min_wall_m" for f in context):
         context.append(Compound("min_wall_m", (settings.min_feature,)))
+    if not any(isinstance(f, Compound) and f.name == "min_tip_height_m" for f in context):
+        context.append(Compound("min_tip_height_m", (settings.min_tip,)))
     start = time.perf_counter()
     try:
         result = engine.solve_size(kind, renamed, context)

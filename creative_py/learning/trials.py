@@ -94,6 +94,9 @@ class Executed:
     sim_time_s: float
     wall_time_s: float
     perceived_final: dict[str, Any] = field(default_factory=dict)
+    tool_load: Optional[dict[str, Any]] = None
+    """The largest contact load on the tool during its action (``ToolLoad.to_dict``);
+    None when the action did not run."""
 
 
 def term_text(t: Term) -> str:
@@ -158,21 +161,23 @@ def execute_trial(world: Any, tool: str, variant: str, location: int,
                                 ep.sim_time(), time.perf_counter() - t0)
         facts = list(ep.observe().facts)
         res = ep.run_skill(action.name)
+        load = ep.tool_load.to_dict()
         if res.status != "ok":
             if res.status == "blocked":
                 # Blocked while acting: the tool could not carry out the action; the
                 # physics says whether the goal was reached with this tool and pose.
                 outcome = "success" if ep.goal_reached() else "failure"
                 return Executed(outcome, res.reason, facts, ep.sim_time(),
-                                time.perf_counter() - t0)
+                                time.perf_counter() - t0, tool_load=load)
             return Executed(res.status, res.reason, facts, ep.sim_time(),
-                            time.perf_counter() - t0)
+                            time.perf_counter() - t0, tool_load=load)
         ok = ep.goal_reached()
         final = ep.observe()
         return Executed("success" if ok else "failure",
                         "goal reached" if ok else "goal not reached", facts,
                         ep.sim_time(), time.perf_counter() - t0,
-                        perceived_final=final.perceived_poses() if final.frames else {})
+                        perceived_final=final.perceived_poses() if final.frames else {},
+                        tool_load=load)
 
 
 class TrialRunner:
@@ -279,6 +284,11 @@ class TrialRunner:
         # What the robot observed before the tool action: a resumed run labels it again.
         rec.extra["facts"] = [[a.item() if hasattr(a, "item") else a for a in f]
                               for f in ex.facts_before]
+        if ex.tool_load is not None:
+            # The largest contact force on the tool while it acted (sim/loads.py), what
+            # the strength check of a created tool reads.
+            rec.extra["max_tool_force_n"] = ex.tool_load["max_force_n"]
+            rec.extra["tool_load"] = ex.tool_load
         self.trials.append(rec)
         if self.run_folder and n > len(self.replay):
             self.run_folder.append_trial(rec.as_dict())
@@ -300,7 +310,8 @@ class TrialRunner:
         return Executed(record["outcome"], record.get("reason", ""),
                         [tuple(f) for f in record.get("facts", [])],
                         float(record.get("sim_time_s", 0.0)),
-                        float(record.get("wall_time_s", 0.0)))
+                        float(record.get("wall_time_s", 0.0)),
+                        tool_load=record.get("tool_load"))
 
     def _pose_dict(self, pose: Term) -> dict[str, float]:
         m = self.manifest

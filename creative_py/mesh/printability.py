@@ -1,7 +1,9 @@
 """Can a hobby FDM printer make this tool? Minimum feature size and build-volume fit.
 
 A dimension below :data:`~creative_py.mesh.tolerances.MIN_FEATURE` makes the spec
-unprintable and is refused with a ``ValueError`` naming the field. A part that does not
+unprintable and is refused with a ``ValueError`` naming the field; so does a wedge whose
+tip is thinner than :data:`~creative_py.mesh.tolerances.MIN_TIP` (two nozzle widths: a
+knife edge, ``tip_height`` 0, tapers below it for its last ``MIN_TIP / slope``). A part that does not
 fit the build volume in any flat placement (any of its three axes up, any yaw on the bed,
 diagonals included) is *not* refused: the files are still written and the result says
 ``fits_build_volume = False`` with the reason (the design must be split into pieces or
@@ -17,7 +19,7 @@ import trimesh
 
 from creative_py.mesh.spec import BlockSpec, HookSpec, ToolSpec
 from creative_py.mesh.tolerances import (BUILD_VOLUME, FIT_MARGIN, FIT_YAW_STEP_DEG,
-                                         JOINT_CLEARANCE, MIN_FEATURE, MM_PER_M,
+                                         JOINT_CLEARANCE, MIN_FEATURE, MIN_TIP, MM_PER_M,
                                          NOZZLE_DIAMETER)
 
 Vec3 = tuple[float, float, float]
@@ -39,12 +41,15 @@ class PrintSettings:
         The nozzle, metres.
     joint_clearance : float
         Gap between a split tool's dowel pin and its hole, per side, metres.
+    min_tip : float
+        Thinnest end of a tapering part (a wedge's tip height), metres.
     """
 
     min_feature: float = MIN_FEATURE
     build_volume: Vec3 = BUILD_VOLUME
     nozzle_diameter: float = NOZZLE_DIAMETER
     joint_clearance: float = JOINT_CLEARANCE
+    min_tip: float = MIN_TIP
 
     def __post_init__(self) -> None:
         values = (self.min_feature, self.nozzle_diameter, self.joint_clearance,
@@ -94,13 +99,17 @@ class Printability:
 
 
 def feature_dimensions(spec: ToolSpec) -> dict[str, float]:
-    """Return the spec's printable dimensions by field name, metres."""
+    """Return the spec's printable dimensions by field name, metres (a blunted wedge's
+    ``tip_height`` too: it is held to ``PrintSettings.min_tip``, the rest to
+    ``min_feature``)."""
     if isinstance(spec, HookSpec):
         fields = ["handle_length", "handle_width"]
         if not spec.is_stick:
             fields += ["hook_length", "hook_width"]
     elif isinstance(spec, BlockSpec):
         fields = ["length", "width", "height"]
+        if spec.shape == "triangular_prism" and spec.tip_height > 0:
+            fields.append("tip_height")
     else:
         raise TypeError(f"expected a HookSpec or BlockSpec, got {type(spec).__name__}")
     return {f: getattr(spec, f) for f in fields}
@@ -109,22 +118,47 @@ def feature_dimensions(spec: ToolSpec) -> dict[str, float]:
 def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings()) -> None:
     """Raise ``ValueError`` naming the first dimension a hobby printer cannot print.
 
+    Every dimension of :func:`feature_dimensions` must reach ``settings.min_feature``;
+    a wedge's tip (``tip_height``, its thinnest section) must reach ``settings.min_tip``.
+
     Parameters
     ----------
     spec : HookSpec or BlockSpec
         The tool.
     settings : PrintSettings
-        The printer (``min_feature`` in metres).
+        The printer (``min_feature`` and ``min_tip`` in metres).
     """
     for field_name, value in feature_dimensions(spec).items():
         if not (isinstance(value, (int, float)) and np.isfinite(value) and value > 0):
             raise ValueError(f"{spec.name}: {field_name} must be a positive number of metres, "
                              f"got {value!r}")
-        if value < settings.min_feature:
+        if field_name != "tip_height" and value < settings.min_feature:
             raise ValueError(
                 f"{spec.name}: {field_name} is {value * MM_PER_M:.2f} mm, below the "
                 f"{settings.min_feature * MM_PER_M:.2f} mm minimum feature a hobby FDM "
                 "printer can print")
+    thin = thin_tip_length(spec, settings.min_tip)
+    if thin > 0:
+        raise ValueError(
+            f"{spec.name}: the wedge's tip is {spec.tip_height * MM_PER_M:.2f} mm high, so it "
+            f"is thinner than {settings.min_tip * MM_PER_M:.2f} mm (two nozzle widths) for its "
+            f"last {thin * MM_PER_M:.1f} mm; blunt it (tip_height >= "
+            f"{settings.min_tip * MM_PER_M:.2f} mm)")
+
+
+def thin_tip_length(spec: ToolSpec, min_tip: float = MIN_TIP) -> float:
+    """Return how far (metres) from its tip a wedge is thinner than ``min_tip``.
+
+    0.0 for a blunted wedge whose tip reaches ``min_tip`` and for every other shape; for
+    a prism whose tip is lower, the run over which its height (falling linearly from
+    ``height`` at the back to ``tip_height`` at the tip) is below ``min_tip``.
+    """
+    if not (isinstance(spec, BlockSpec) and spec.shape == "triangular_prism"):
+        return 0.0
+    if spec.tip_height >= min_tip:
+        return 0.0
+    slope = (spec.height - spec.tip_height) / spec.length
+    return min(spec.length, (min_tip - spec.tip_height) / slope)
 
 
 def printability(spec: ToolSpec, mesh: trimesh.Trimesh,

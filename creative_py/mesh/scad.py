@@ -79,6 +79,16 @@ def _block(spec: BlockSpec) -> list[str]:
     ]
     if spec.shape == "box":
         return params + ["translate([0, 0, height / 2]) cube([length, width, height], center = true);"]
+    if spec.tip_height > 0:
+        return params[:-1] + [
+            f"tip_height = {_mm(spec.tip_height)};  // height of the blunted tip at +x [mm]",
+            "",
+            "// the wedge's side profile in the xz plane (a trapezoid), extruded along y",
+            "rotate([90, 0, 0])",
+            "    linear_extrude(height = width, center = true)",
+            "        polygon([[-length / 2, 0], [length / 2, 0], [length / 2, tip_height],",
+            "                 [-length / 2, height]]);",
+        ]
     return params + [
         "// the wedge's side profile in the xz plane, extruded along y",
         "rotate([90, 0, 0])",
@@ -104,7 +114,8 @@ def scad_text(spec: ToolSpec, verdict: Printability) -> str:
                  "+y is the tool's left; lay it flat (z up) to print.")
         body = _hook(spec)
     elif isinstance(spec, BlockSpec):
-        what = {"triangular_prism": "a wedge (triangular prism), thin edge at +x",
+        what = {"triangular_prism": ("a wedge (triangular prism), thin edge at +x"
+                                     + (", blunted" if spec.tip_height > 0 else "")),
                 "box": "a box", "cylinder": "an upright cylinder"}[spec.shape]
         frame = "the base lies on z = 0, centred on the origin in x and y."
         body = _block(spec)

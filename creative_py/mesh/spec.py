@@ -19,7 +19,10 @@ prong. The robot grips the handle at ``grip_point``.
 *Block frame* (wedges, boxes, cylinders): the base lies on z = 0, centred on the origin
 in x and y. A triangular prism runs along x with its thin edge (the tip) at
 x = +length/2 and its back face, of height ``height``, at x = -length/2; ``width`` is its
-lateral extent along y. A box is length x width x height. A cylinder stands upright with
+lateral extent along y. A prism may be blunted: ``tip_height`` is the height of a
+vertical flat at its tip (0, the default, is a knife edge), so that in side view it is a
+trapezoid with parallel sides ``height`` (back) and ``tip_height`` (tip). A box is
+length x width x height. A cylinder stands upright with
 diameter ``length`` and height ``height`` (``width`` must equal ``length``).
 """
 
@@ -35,6 +38,18 @@ BlockShape = Literal["triangular_prism", "box", "cylinder"]
 PLA_DENSITY = 1240.0  # kg/m^3, printed PLA at 100 % infill
 """The density of every printed tool (a spec with ``mass=None``: every created tool, in
 runs and in ``make-tool``) and of the slicer's filament; the one density of the project."""
+
+PLA_STRENGTH = 50.0e6  # Pa
+"""Strength of printed PLA that the strength check (:mod:`creative_py.learning.strength`)
+holds a tool's stress against, pascals: the tensile (and flexural) strength of PLA
+printed at 100 % infill with its layers along the load, 50-60 MPa in the filament makers'
+datasheets and in tests of FDM coupons; we take the low end. A hook or stick prints lying
+flat, so its handle's bending stress runs along the extruded lines. PLA's compressive
+strength is higher; the block's compression check uses this value too (conservative)."""
+
+MIN_SAFETY_FACTOR = 2.0
+"""The least ratio of :data:`PLA_STRENGTH` to a created tool's estimated stress that the
+strength check accepts."""
 
 
 @dataclass(frozen=True)
@@ -53,10 +68,15 @@ class Box:
 
 @dataclass(frozen=True)
 class Hull:
-    """A convex polyhedron given by its vertices (tool frame)."""
+    """A convex polyhedron given by its vertices (tool frame).
+
+    ``centroid`` is its centre of volume (metres); None means the mean of the vertices
+    (exact for a triangular prism, not for a trapezoidal one).
+    """
 
     vertices: tuple[tuple[float, float, float], ...]
     volume: float
+    centroid: tuple[float, float, float] | None = None
 
 
 @dataclass(frozen=True)
@@ -188,6 +208,10 @@ class BlockSpec:
     mass : float or None
         Mass in kg; None means PLA density times volume (every created tool). The
         default, 0.1 kg, is that of a catalogued object whose table gives no mass.
+    tip_height : float
+        A prism's height at its tip (x = +length/2), metres: 0 is a knife edge, a
+        positive value a blunted tip (a flat that a printer can lay down), below
+        ``height``. A box or a cylinder has no tip (0).
     """
 
     name: str
@@ -196,6 +220,7 @@ class BlockSpec:
     width: float
     height: float
     mass: float | None = 0.1
+    tip_height: float = 0.0
     kind: Literal["block"] = field(default="block", init=False)
 
     def __post_init__(self) -> None:
@@ -206,6 +231,15 @@ class BlockSpec:
         _check_mass(self)
         if self.shape == "cylinder" and abs(self.width - self.length) > 1e-9:
             raise ValueError(f"{self.name}: a cylinder's width must equal its length (diameter)")
+        t = self.tip_height
+        if not (isinstance(t, (int, float)) and math.isfinite(t) and t >= 0):
+            raise ValueError(f"{self.name}: tip_height must be a number of metres >= 0, "
+                             f"got {t!r}")
+        if self.shape == "triangular_prism" and not t < self.height:
+            raise ValueError(f"{self.name}: tip_height ({t:g} m) must be below the prism's "
+                             f"height ({self.height:g} m)")
+        if self.shape != "triangular_prism" and t != 0:
+            raise ValueError(f"{self.name}: a {self.shape} has no tip; tip_height must be 0")
 
     @property
     def slope_ratio(self) -> float:
@@ -219,10 +253,18 @@ class BlockSpec:
             return [Box((0.0, 0.0, H / 2), (L, W, H))]
         if self.shape == "cylinder":
             return [Cylinder((0.0, 0.0, H / 2), L / 2, H)]
+        T = self.tip_height
         verts = []
         for y in (-W / 2, W / 2):
             verts += [(-L / 2, y, 0.0), (L / 2, y, 0.0), (-L / 2, y, H)]
-        return [Hull(tuple(verts), volume=0.5 * L * H * W)]
+            if T > 0:
+                verts.append((L / 2, y, T))
+        if T == 0:
+            return [Hull(tuple(verts), volume=0.5 * L * H * W)]
+        # The trapezoid's centroid: x from the back face, z above the base.
+        x = L * (H + 2 * T) / (3 * (H + T))
+        z = (H * H + H * T + T * T) / (3 * (H + T))
+        return [Hull(tuple(verts), volume=0.5 * L * (H + T) * W, centroid=(x - L / 2, 0.0, z))]
 
 
 ToolSpec = Union[HookSpec, BlockSpec]

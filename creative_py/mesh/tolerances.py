@@ -22,14 +22,20 @@ MIN_FEATURE = 0.002
 """Smallest printable dimension of any part (wall, width, thickness, reach), metres:
 five 0.4 mm extrusion widths. A spec with a smaller dimension is refused."""
 
-BUILD_VOLUME = (0.250, 0.210, 0.210)
-"""Build volume x, y, z in metres (a Prusa i3 MK3S-class bed). A part that does not fit
-in any flat orientation is still written, flagged ``fits_build_volume = False``."""
-
 NOZZLE_DIAMETER = 0.0004
 """The printer's nozzle, metres (the slicer profile ``profiles/generic_pla_0.4.ini``).
 No feature of a printed piece, a joint's walls included, may be thinner than two nozzle
 widths; :data:`MIN_FEATURE` is larger still."""
+
+MIN_TIP = 2 * NOZZLE_DIAMETER
+"""Thinnest a tapering edge may end, metres: two 0.4 mm extrusion widths, the least a
+slicer lays down as solid perimeters. A wedge is blunted to at least this
+(``BlockSpec.tip_height``; the block size model's ``min_tip_height_m``); a knife edge
+(tip_height 0) is refused, since its last ``MIN_TIP / slope`` metres would not print."""
+
+BUILD_VOLUME = (0.250, 0.210, 0.210)
+"""Build volume x, y, z in metres (a Prusa i3 MK3S-class bed, that of the slicer profile).
+A part that does not fit is split into pieces that do (:mod:`creative_py.mesh.split`)."""
 
 JOINT_CLEARANCE = 0.0002
 """Gap between a dowel pin and the walls of its hole, on every side and at each end,

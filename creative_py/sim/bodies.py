@@ -41,6 +41,8 @@ class Surface:
 def part_centre(part: Part) -> tuple[float, float, float]:
     """Return the centroid of a part in the spec frame, metres."""
     if isinstance(part, Hull):
+        if part.centroid is not None:
+            return tuple(float(v) for v in part.centroid)
         return tuple(float(v) for v in np.mean(np.asarray(part.vertices), axis=0))
     return part.center
 

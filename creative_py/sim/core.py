@@ -55,6 +55,9 @@ class Sim:
         if self.client < 0:
             raise RuntimeError("pybullet: could not connect a physics client")
         self.steps = 0
+        self.after_step: list = []
+        """Callables run after every physics step (e.g. a
+        :class:`creative_py.sim.loads.ToolLoadMonitor`); they only read the state."""
         self.configure()
 
     def configure(self) -> None:
@@ -75,9 +78,16 @@ class Sim:
 
     def step(self, n: int = 1) -> None:
         """Advance the physics by ``n`` time steps."""
+        if not self.after_step:
+            for _ in range(n):
+                pb.stepSimulation(physicsClientId=self.client)
+            self.steps += n
+            return
         for _ in range(n):
             pb.stepSimulation(physicsClientId=self.client)
-        self.steps += n
+            self.steps += 1
+            for callback in tuple(self.after_step):
+                callback()
 
     def pose(self, body: int, link: int = -1) -> Pose:
         """Return the world pose of a body's base (link -1) or of one of its links."""

@@ -41,6 +41,7 @@ from typing import Any, Callable, Iterator, Sequence
 import numpy as np
 import pybullet as pb
 
+from creative_py.sim.loads import ToolLoad, ToolLoadMonitor
 from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult
 from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
@@ -149,6 +150,7 @@ class Episode:
         self.grasp = self.kind.initial_grasp(self.spec)
         self.state: dict[str, Any] = {}
         self.records: dict[str, Any] = {}
+        self.tool_load = ToolLoad()
         self.robot = None
         self.robot_parked = False
         self.with_robot = robot
@@ -305,7 +307,15 @@ class Episode:
             pose = tuple(float(v) for v in pose)
             if not all(math.isfinite(v) for v in pose):
                 raise ValueError(f"pose numbers must be finite, got {pose}")
-        res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
+        monitor = ToolLoadMonitor(self) if binding.tool_action else None
+        if monitor is not None:
+            # The largest contact force on the tool while it acts (sim/loads.py).
+            monitor.start()
+        try:
+            res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
+        finally:
+            if monitor is not None:
+                self.tool_load = monitor.stop()
         if not res.ok:
             return SkillOutcome(res.status, f"{name}: {res.reason}")
         return res
@@ -485,5 +495,6 @@ def run_trial(world: World, tool: str, variant: str, location: int,
             case=m.id, object=tool, variant=variant, location=int(location),
             pose=tuple(pose), outcome=outcome, reason=reason, perceived_final=perceived,
             true_final=truth, sim_time_s=ep.sim_time(), wall_time_s=0.0,
-            render_time_s=ep.render_time_s, steps=ep.steps, seed=seed)
+            render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
+            max_tool_force_n=ep.tool_load.max_force_n, tool_load=ep.tool_load.to_dict())
     return replace(result, wall_time_s=time.perf_counter() - t0)

@@ -102,6 +102,12 @@ class TrialResult:
         Physics steps taken.
     seed : int
         The seed of the trial.
+    max_tool_force_n : float
+        The largest sum of the normal forces of the tool's contacts over one physics
+        step of the tool action, newtons (:mod:`creative_py.sim.loads`).
+    tool_load : dict or None
+        Where and how that force acted (``ToolLoad.to_dict``: point and force in the
+        tool frame, the grasp point, the bodies touched).
     """
 
     case: str
@@ -118,6 +124,8 @@ class TrialResult:
     render_time_s: float
     steps: int
     seed: int = 0
+    max_tool_force_n: float = 0.0
+    tool_load: dict[str, Any] | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """Return the result as plain JSON-ready data (tuples become lists)."""

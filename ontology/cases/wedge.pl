@@ -185,5 +185,5 @@ pose_target(wedge, wedge_pose(R, Gap, Yaw), Door, G, place(X, Y, Heading)) :-
                  *******************************/
 
 %   A sizing context fact door_gap_m(Door, G), the gap under the door: a new block must
-%   be higher to stop it.
-size_constraint(block, door_gap_m(_, G), [height > G]).
+%   be higher to stop it, and a blunted tip lower, so that it slides under the door.
+size_constraint(block, door_gap_m(_, G), [height > G, tip_height < G]).

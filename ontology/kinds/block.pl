@@ -87,15 +87,26 @@ new_tool_kind(block, _, block).
                  *******************************/
 
 %   Field names are those of BlockSpec in creative_py/mesh/spec.py (metres).
+%   tip_height is the height of a prism's blunted tip (x = +length/2): the prism is a
+%   trapezoid in side view, so that no part of it is thinner than a printer can print.
 size_field(block, length, block_length).
 size_field(block, width, block_width).
 size_field(block, height, block_height).
+size_field(block, tip_height, tip_height).
 
 size_choice(block, shape, shape, [triangular_prism, box, cylinder]).
 
 %   size_choice_constraint(?Field, ?Value, ?Constraints): the constraints a symbolic
-%   field's value adds (an upright cylinder is as wide as it is long).
-size_choice_constraint(shape, cylinder, [width =:= length]).
+%   field's value adds (an upright cylinder is as wide as it is long).  A new prism's
+%   tip is blunted, at least min_tip_height_m high and lower than its back; a box or a
+%   cylinder has no tip.
+size_choice_constraint(shape, cylinder, [width =:= length, tip_height =:= 0]).
+size_choice_constraint(shape, box, [tip_height =:= 0]).
+size_choice_constraint(shape, triangular_prism,
+                       [tip_height >= min_tip_height_m, tip_height < height]).
+
+size_parameter(min_tip_height_m, 0.0008,
+               'lowest tip of a new wedge: two 0.4 mm nozzle widths, the thinnest section a printer lays down').
 
 %   size_ratio(?Kind, ?Property, ?Numerator, ?Denominator): Property is the ratio of two
 %   fields, its qualitative ranges bound Numerator / Denominator.

@@ -47,6 +47,9 @@ def test_wedge_case_end_to_end(tmp_path):
     tool = create["created_tools"][-1]
     assert tool["instance"].startswith("block_length(") and "long" in tool["instance"]
     assert sum(o == "success" for o in create["eval"]) >= 4      # paper: 5 of 5
+    assert tool["dims"]["tip_height"] >= 0.0008                # blunted: it prints
+    assert tool["strength"]["model"] == "compression"          # not a beam
+    assert tool["strength"]["verdict"] == "pass"
     for ext in ("urdf", "sdf", "scad", "stl"):
         assert (path / "tools" / tool["name"] / f"{tool['name']}.{ext}").exists()
     model = (path / "model.pl").read_text()
@@ -72,3 +75,6 @@ def test_hook_case_end_to_end(tmp_path):
     printed = tool["print"]
     assert printed["joint"] == "square_dowel_pin" and len(printed["pieces"]) >= 3
     assert all(p["print_time_s"] > 0 and p["filament_g"] > 0 for p in printed["pieces"])
+    strength = tool["strength"]                 # the beam check of its handle
+    assert strength["verdict"] == "pass" and strength["safety_factor"] >= 2.0
+    assert strength["model"] == "cantilever" and strength["force_n"] > 0

@@ -29,6 +29,20 @@ def test_rake_case_end_to_end(tmp_path):
     assert dims["handle_length"] >= 0.45 and dims["hook_length"] < 0.025
     assert dims["hook_length"] + dims["handle_width"] <= 0.030     # under the deep plate
     assert create["eval"] == ["success"] * 5
+    # The strength check, from the force the physics measured: the tool that is used
+    # passes it with a safety factor of at least 2; a tool that failed it was thickened
+    # by the size model into the next one, and tried again.
+    strength = tool["strength"]
+    assert strength["verdict"] == "pass" and strength["safety_factor"] >= 2.0
+    assert strength["model"] == "cantilever" and strength["force_n"] > 0
+    on_file = json.loads((folder.path / "tools" / tool["name"] /
+                          f"{tool['name']}.json").read_text())["strength"]
+    assert on_file == strength
+    for thin, thick in zip(create["created_tools"], create["created_tools"][1:]):
+        if thin["strength"].get("thickened_into") == thick["name"]:
+            assert thin["strength"]["verdict"] == "fail"
+            assert thick["strength"]["thickened_from"] == thin["name"]
+            assert thick["dims"]["handle_width"] >= thin["strength"]["required_handle_width_m"]
     for ext in ("urdf", "sdf", "scad", "stl"):
         assert (folder.path / "tools" / tool["name"] / f"{tool['name']}.{ext}").exists()
     # The 0.60 m rake is longer than the bed: printed in parts joined by a dowel pin.

@@ -152,12 +152,73 @@ test(size_wedge_long_above_one) :-
     solve_size(block, [block(w), shape(w, triangular_prism), block_length(w, long),
                        mechanical_advantage(w, above_one)],
                [door_gap_m(door1, 0.01), min_wall_m(0.004)], R),
-    assertion(R == dims([length=0.16, width=0.085, height=0.0475, shape=triangular_prism])).
+    assertion(R == dims([length=0.16, width=0.085, height=0.0475, tip_height=0.0024,
+                         shape=triangular_prism])).
+
+%   A new wedge's tip is blunted: at least min_tip_height_m (two nozzle widths), below
+%   its back height and below the door's gap, so that it slides under the door.
+test(size_wedge_tip_blunted) :-
+    solve_size(block, [shape(w, triangular_prism), block_length(w, long)],
+               [door_gap_m(door1, 0.002)], dims(D)),
+    memberchk(tip_height=T, D),
+    memberchk(height=H, D),
+    assertion(T >= 0.0008),
+    assertion(T < 0.002),
+    assertion(T < H).
+
+test(size_wedge_tip_bounds_posted) :-
+    size_constraints(block, [shape(w, triangular_prism)], [door_gap_m(door1, 0.01)], D),
+    memberchk(tip_height=T, D),
+    inf(T, Lo),
+    sup(T, Hi),
+    assertion(Lo =:= 0.0008),
+    assertion(Hi =:= 0.004),
+    assertion(\+ { T >= 0.01 }),
+    assertion(\+ { T < 0.0008 }).
+
+%   A context fact min_tip_height_m(M) overrides the default of two nozzle widths.
+test(size_wedge_tip_minimum_from_context) :-
+    solve_size(block, [shape(w, triangular_prism)],
+               [door_gap_m(door1, 0.01), min_tip_height_m(0.003)], dims(D)),
+    memberchk(tip_height=T, D),
+    assertion(T >= 0.003),
+    assertion(T =< 0.004).
+
+%   A door gap lower than the printable tip: no new wedge.
+test(size_wedge_tip_gap_below_printable) :-
+    solve_size(block, [shape(w, triangular_prism)], [door_gap_m(door1, 0.0005)], R),
+    assertion(R == infeasible([shape(w, triangular_prism), door_gap_m(door1, 0.0005)])).
+
+%   A box or a cylinder has no tip.
+test(size_box_has_no_tip) :-
+    forall(member(S, [box, cylinder]),
+           ( solve_size(block, [shape(w, S)], [door_gap_m(door1, 0.01)], dims(D)),
+             memberchk(tip_height=T, D),
+             assertion(T =:= 0) )).
+
+%   Left to the search, the shape is a prism (the first choice), blunted as well.
+test(size_block_unbound_shape_blunted) :-
+    solve_size(block, [block_length(w, long)], [door_gap_m(door1, 0.01)], dims(D)),
+    assertion(memberchk(shape=triangular_prism, D)),
+    memberchk(tip_height=T, D),
+    assertion(T >= 0.0008).
 
 test(size_wedge_gap_too_high) :-
     solve_size(block, [shape(w, triangular_prism), block_height(w, low)],
                [door_gap_m(door1, 0.05)], R),
     assertion(R == infeasible([block_height(w, low), door_gap_m(door1, 0.05)])).
+
+%   The strength check's thickening: a handle at least W wide, within its literals.
+test(size_min_handle_width) :-
+    solve_size(hook, [handle_length(t, long), handle_width(t, thin)],
+               [tube_inner_m(tube1, 0.04, 0.055), min_handle_width_m(0.0101)], dims(D)),
+    memberchk(handle_width=W, D),
+    assertion(W >= 0.0101),
+    assertion(W < 0.012).
+
+test(size_min_handle_width_infeasible) :-
+    solve_size(hook, [handle_width(t, thin)], [min_handle_width_m(0.0159)], R),
+    assertion(R == infeasible([handle_width(t, thin), min_handle_width_m(0.0159)])).
 
 test(size_cylinder_width_equals_length) :-
     solve_size(block, [shape(w, cylinder), block_length(w, short)], [], dims(D)),

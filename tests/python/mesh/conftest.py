@@ -15,11 +15,12 @@ SPECS = {
                             hook_angle_deg=60.0),
     "hook_obtuse": HookSpec("hook_obtuse", 0.2, hook_side="left", hook_angle_deg=120.0),
     "stick": HookSpec("stick", 0.3, hook_side="none", hook_length=0.0),
-    "prism": BlockSpec("prism", "triangular_prism", 0.1, 0.05, 0.03),
+    "prism": BlockSpec("prism", "triangular_prism", 0.1, 0.05, 0.03, tip_height=0.002),
     "box": BlockSpec("box", "box", 0.04, 0.05, 0.03, mass=0.2),
     "cylinder": BlockSpec("cylinder", "cylinder", 0.04, 0.04, 0.05),
 }
-"""One spec per object kind; hook_left takes its mass from PLA density."""
+"""One spec per object kind; hook_left takes its mass from PLA density; the prism's tip
+is blunted (a knife edge does not print)."""
 
 
 @pytest.fixture(scope="session")

@@ -54,8 +54,8 @@ def test_a_scad_that_does_not_render_is_reported(tmp_path):
 
 
 def test_a_wrong_mass_and_a_missing_mesh_are_reported(tmp_path):
-    files = write_tool_files(BlockSpec("w", "triangular_prism", 0.1, 0.05, 0.03), tmp_path,
-                             picture=False)
+    files = write_tool_files(BlockSpec("w", "triangular_prism", 0.1, 0.05, 0.03,
+                                       tip_height=0.001), tmp_path, picture=False)
     files.urdf.write_text(files.urdf.read_text().replace('<mass value="0.1"/>',
                                                          '<mass value="0.2"/>'))
     files.meshes[0].unlink()

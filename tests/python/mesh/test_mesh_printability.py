@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from creative_py.mesh.printability import PrintSettings, check_min_feature, printability
+from creative_py.mesh.printability import (PrintSettings, check_min_feature, feature_dimensions,
+                                           printability, thin_tip_length)
 from creative_py.mesh.solid import tool_mesh
 from creative_py.mesh.spec import BlockSpec, HookSpec
 
@@ -57,3 +58,26 @@ def test_a_tall_block_is_laid_on_its_side_to_fit():
     spec = BlockSpec("post", "box", 0.03, 0.03, 0.24)
     verdict = printability(spec, tool_mesh(spec))
     assert verdict.fits_build_volume and verdict.up_axis in ("x", "y")
+
+
+def test_a_knife_edge_wedge_is_refused_with_its_thin_run():
+    # The wedge the hook-and-door run created before blunting: under 0.8 mm (two
+    # nozzle widths) for its last 0.8 / (27.5 / 160) = 4.65 mm.
+    sharp = BlockSpec("wedge_new1", "triangular_prism", 0.16, 0.085, 0.0275)
+    with pytest.raises(ValueError, match=r"wedge_new1: the wedge's tip is 0.00 mm high, so it "
+                                         r"is thinner than 0.80 mm .* for its last 4.7 mm"):
+        check_min_feature(sharp)
+
+
+def test_a_blunted_wedge_prints_and_a_lower_tip_is_refused():
+    blunt = BlockSpec("w", "triangular_prism", 0.16, 0.085, 0.0275, tip_height=0.0024)
+    check_min_feature(blunt)
+    assert "tip_height" in feature_dimensions(blunt)
+    low = BlockSpec("w", "triangular_prism", 0.16, 0.085, 0.0275, tip_height=0.0005)
+    assert thin_tip_length(low) == pytest.approx(0.0003 / (0.027 / 0.16))
+    with pytest.raises(ValueError, match="tip is 0.50 mm high"):
+        check_min_feature(low)
+    # A tip below min_feature (2 mm) but above min_tip (0.8 mm) prints.
+    check_min_feature(BlockSpec("w", "triangular_prism", 0.16, 0.085, 0.0275,
+                                tip_height=0.001))
+    check_min_feature(BlockSpec("b", "box", 0.04, 0.05, 0.03))

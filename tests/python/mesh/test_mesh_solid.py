@@ -85,3 +85,12 @@ def test_cylinder_facet_deficit_is_as_documented(specs):
     polygon_over_circle = n * math.sin(2 * math.pi / n) / (2 * math.pi)
     assert tool_mesh(spec).volume / spec_volume(spec) == pytest.approx(polygon_over_circle,
                                                                        rel=1e-9)
+
+
+def test_a_blunted_prism_solid_has_the_spec_volume_and_centroid():
+    spec = BlockSpec("w", "triangular_prism", 0.16, 0.085, 0.0275, tip_height=0.0024)
+    mesh = tool_mesh(spec)
+    assert mesh.is_watertight
+    assert mesh.volume == pytest.approx(spec_volume(spec), rel=1e-9)
+    assert tuple(mesh.center_mass) == pytest.approx(spec.parts()[0].centroid, abs=1e-12)
+    assert mesh.bounds[1][2] == pytest.approx(0.0275)

@@ -49,3 +49,29 @@ def test_block_volumes():
         0.5 * 0.1 * 0.05 * 0.03)
     assert spec_volume(BlockSpec("c", "cylinder", 0.04, 0.04, 0.05)) == pytest.approx(
         math.pi * 0.02**2 * 0.05)
+
+
+def test_a_blunted_prism_is_a_trapezoid_with_its_volume_and_centroid():
+    spec = BlockSpec("w", "triangular_prism", 0.16, 0.085, 0.0275, tip_height=0.0024)
+    (hull,) = spec.parts()
+    assert len(hull.vertices) == 8
+    assert (0.08, 0.0425, 0.0024) in hull.vertices
+    assert spec_volume(spec) == pytest.approx(0.5 * (0.0275 + 0.0024) * 0.16 * 0.085)
+    # Centroid of a trapezoid with parallel sides H (back) and T (tip), run L:
+    # x = L (H + 2T) / (3 (H + T)) from the back, z = (H^2 + H T + T^2) / (3 (H + T)).
+    H, T, L = 0.0275, 0.0024, 0.16
+    assert hull.centroid == pytest.approx((L * (H + 2 * T) / (3 * (H + T)) - L / 2, 0.0,
+                                           (H * H + H * T + T * T) / (3 * (H + T))))
+    # A sharp prism keeps its six vertices (the catalogue's wedges are unchanged).
+    sharp = BlockSpec("s", "triangular_prism", 0.16, 0.085, 0.0275)
+    assert len(sharp.parts()[0].vertices) == 6 and sharp.parts()[0].centroid is None
+
+
+@pytest.mark.parametrize("kwargs, match", [
+    (dict(shape="triangular_prism", tip_height=0.03), "below the prism's height"),
+    (dict(shape="triangular_prism", tip_height=-0.001), "tip_height must be"),
+    (dict(shape="box", tip_height=0.001), "a box has no tip"),
+])
+def test_a_bad_tip_height_is_refused(kwargs, match):
+    with pytest.raises(ValueError, match=match):
+        BlockSpec("w", length=0.1, width=0.05, height=0.03, **kwargs)

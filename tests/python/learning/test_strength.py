@@ -1,0 +1,151 @@
+"""Tests of the strength check of created tools (creative_py/learning/strength.py).
+
+The beam formula is checked against hand computations; the thickening and the
+rejection use the real size model (Prolog, CLP(R)) on the hook case's created tool as
+Algorithm 2 sizes it for the long tube, whose context the simulator perceives.
+"""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from creative_py.bridge import Engine
+from creative_py.learning.manufacture import default_context, parse_spec, size_tool
+from creative_py.learning.strength import (cantilever_stress, check_strength,
+                                           rejected, required_square_width, thicker_dims,
+                                           thickening_fact, write_strength)
+from creative_py.mesh.export import read_tool_files, write_tool_files
+from creative_py.mesh.spec import (MIN_SAFETY_FACTOR, PLA_STRENGTH, BlockSpec, HookSpec,
+                                   spec_from_dict)
+
+# The created hook's literals in the hook case (summary.json of a run, seed 0).
+CREATED_HOOK = "handle_length=long,handle_width=thin,hook_angle=right"
+
+
+@pytest.fixture(scope="module")
+def engine() -> Engine:
+    """Return the process's one Prolog engine with the default ontology loaded."""
+    engine = Engine.instance()
+    engine.load_default_ontology()
+    return engine
+
+
+def load(force, x, grasp_x=0.04):
+    """A trial's tool_load as the simulator records it (tool frame, metres)."""
+    return {"max_force_n": force, "point": [x, -0.03, 0.0], "force": [force, 0.0, 0.0],
+            "grasp_point": [grasp_x, 0.0, 0.0], "contacts": 4, "bodies": ["cube1"],
+            "step": 100, "steps": 600}
+
+
+def test_cantilever_stress_is_the_hand_computation():
+    # 10 N at 0.5 m: M = 5 N m. A 10 mm square: I = 0.01^4 / 12 = 8.333e-10 m^4,
+    # c = 0.005 m, sigma = M c / I = 5 * 0.005 / 8.333e-10 = 30 MPa.
+    assert cantilever_stress(10.0, 0.5, 0.01, 0.01) == pytest.approx(30.0e6)
+    # Twice as wide across the load: half the stress; twice as high along it: a quarter.
+    assert cantilever_stress(10.0, 0.5, 0.02, 0.01) == pytest.approx(15.0e6)
+    assert cantilever_stress(10.0, 0.5, 0.01, 0.02) == pytest.approx(7.5e6)
+
+
+def test_the_required_width_gives_the_required_safety_factor():
+    w = required_square_width(10.0, 0.5, 50.0e6, 2.0)
+    # 6 F L s / strength = 6 * 10 * 0.5 * 2 / 50e6 = 1.2e-6 m^3
+    assert w == pytest.approx(1.2e-6 ** (1 / 3))
+    assert 50.0e6 / cantilever_stress(10.0, 0.5, w, w) == pytest.approx(2.0)
+
+
+def test_a_hook_check_uses_the_lever_arm_from_the_grasp_to_the_contact():
+    spec = HookSpec("h", 0.6, handle_width=0.009, hook_length=0.03, hook_width=0.012)
+    check = check_strength(spec, load(3.0, 0.589), trial=15)
+    assert check.model == "cantilever"
+    assert check.lever_arm_m == pytest.approx(0.549)
+    assert check.moment_nm == pytest.approx(3.0 * 0.549)
+    # 6 F L / w^3 = 6 * 3 * 0.549 / 0.009^3 = 13.556 MPa
+    assert check.stress_pa == pytest.approx(6 * 3.0 * 0.549 / 0.009 ** 3)
+    assert check.stress_pa == pytest.approx(13.556e6, rel=1e-4)
+    assert check.safety_factor == pytest.approx(PLA_STRENGTH / check.stress_pa)
+    assert check.verdict == "pass" and check.required_safety_factor == MIN_SAFETY_FACTOR
+    d = check.to_dict()
+    assert d["strength_mpa"] == 50.0 and d["trial"] == 15 and d["bodies"] == ["cube1"]
+    assert d["section_m"] == [0.009, 0.009]
+    json.dumps(d)
+
+
+def test_a_block_gets_a_compression_check_not_a_beam_check():
+    spec = BlockSpec("w", "triangular_prism", 0.16, 0.085, 0.0275, tip_height=0.0024)
+    check = check_strength(spec, {"max_force_n": 40.0, "point": [0.05, 0.0, 0.01],
+                                  "bodies": ["door1", "floor1"]})
+    assert check.model == "compression" and check.lever_arm_m is None
+    assert check.stress_pa == pytest.approx(40.0 / (0.16 * 0.085))
+    assert check.verdict == "pass"
+    assert "does not apply" in check.note
+    with pytest.raises(ValueError, match="only a failed cantilever check"):
+        thickening_fact(check)
+
+
+def test_no_recorded_load_is_unmeasured_not_passed_silently():
+    check = check_strength(HookSpec("h", 0.3), None)
+    assert check.verdict == "unmeasured" and check.force_n == 0.0
+
+
+@pytest.mark.sim
+def test_a_weak_created_hook_is_thickened_by_the_size_model(engine):
+    context = default_context("hook", "long_tube")
+    sized = size_tool(engine, "hook", parse_spec("hook", CREATED_HOOK), context, "hook_new1")
+    assert sized.spec.handle_width == pytest.approx(0.009)
+    # 7.6 N at 0.549 m needs a 10.0 mm handle: the 9 mm one fails.
+    weak = check_strength(sized.spec, load(7.6, 0.589))
+    assert weak.verdict == "fail" and weak.safety_factor < MIN_SAFETY_FACTOR
+    assert weak.required_handle_width_m == pytest.approx(0.0101)
+    assert str(thickening_fact(weak)) == "min_handle_width_m(0.0101)"
+    reply = thicker_dims(engine, "hook", [l for l in parse_spec("hook", CREATED_HOOK)],
+                         context, weak)
+    assert reply.name == "dims"
+    dims = {str(eq.args[0]): eq.args[1] for eq in reply.args[0]}
+    # The size model keeps the tool thin (its literal) and wide enough: [10.1, 12) mm.
+    assert 0.0101 <= dims["handle_width"] < 0.012
+    assert dims["handle_length"] == sized.dims["handle_length"]
+    thick = spec_from_dict({"kind": "hook", "name": "hook_new2", **dims})
+    again = check_strength(thick, load(7.6, 0.589), thickened_from="hook_new1")
+    assert again.verdict == "pass" and again.safety_factor >= MIN_SAFETY_FACTOR
+    assert again.thickened_from == "hook_new1"
+
+
+@pytest.mark.sim
+def test_a_hook_the_size_model_cannot_thicken_is_rejected_naming_the_conflict(engine):
+    context = default_context("hook", "long_tube")
+    literals = parse_spec("hook", CREATED_HOOK)
+    sized = size_tool(engine, "hook", literals, context, "hook_new1")
+    weak = check_strength(sized.spec, load(30.0, 0.589))
+    assert weak.required_handle_width_m > 0.012
+    reply = thicker_dims(engine, "hook", literals, context, weak)
+    assert reply.name == "infeasible"
+    conflict = [str(t) for t in reply.args[0]]
+    assert "handle_width(new_tool,thin)" in conflict
+    assert f"min_handle_width_m({weak.required_handle_width_m})" in conflict
+    out = rejected(weak, reply.args[0])
+    assert out.verdict == "rejected" and not out.passed
+    assert "handle_width(new_tool,thin)" in out.reason and "15.9 mm" in out.reason
+
+
+@pytest.mark.sim
+def test_a_rake_under_a_shelf_cannot_be_thickened_beyond_the_shelf_clearance(engine):
+    context = default_context("rake", "deep_shelf")
+    literals = parse_spec("rake", "handle_length=long")
+    sized = size_tool(engine, "rake", literals, context, "rake_new1")
+    weak = check_strength(sized.spec, load(60.0, sized.spec.handle_length - 0.01))
+    reply = thicker_dims(engine, "hook", literals, context, weak)
+    assert reply.name == "infeasible"
+    assert any(str(t).startswith("shelf_clearance_m(") for t in reply.args[0])
+
+
+def test_the_figures_go_into_the_tool_json(tmp_path):
+    spec = HookSpec("h", 0.2, handle_width=0.009)
+    files = write_tool_files(spec, tmp_path, picture=False)
+    check = check_strength(spec, load(3.0, 0.19))
+    write_strength(files.manifest, check)
+    data = json.loads(files.manifest.read_text())
+    assert data["strength"]["verdict"] == "pass"
+    assert data["strength"]["lever_arm_m"] == pytest.approx(0.15)
+    assert read_tool_files(files.directory).spec == spec
