@@ -78,7 +78,7 @@ class RunContents:
     trials : list of dict
         The readable records of ``trials.jsonl``, in order.
     summary : dict
-        ``summary.json`` (empty when missing or unreadable: a run still going).
+        ``summary.json`` (empty when missing, as in a run still going, or unreadable).
     model_text : str or None
         The text of ``model.pl``.
     plot : str or None
@@ -125,7 +125,7 @@ def read_run(run_dir: Path | str) -> RunContents:
     root = Path(run_dir)
     warnings: list[str] = []
     trials = read_trials(root, warn=warnings.append)
-    summary = _read_json(root / "summary.json", warnings, missing="the run has not finished")
+    summary = _read_json(root / "summary.json", warnings)
     if not isinstance(summary, dict):
         warnings.append(f"{root / 'summary.json'}: not a JSON object; no summary shown")
         summary = {}
@@ -150,10 +150,8 @@ def relative_inside(root: Path, name: str) -> str | None:
         return None
 
 
-def _read_json(path: Path, warnings: list[str], missing: str | None = None) -> Any:
+def _read_json(path: Path, warnings: list[str]) -> Any:
     if not path.is_file():
-        if missing:
-            warnings.append(f"{path}: no such file ({missing})")
         return {}
     try:
         return json.loads(path.read_text(encoding="utf-8"))

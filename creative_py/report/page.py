@@ -130,8 +130,11 @@ def render_html(run: RunContents) -> str:
         f"case {case}" if case else "", f"seed {s['seed']}" if "seed" in s else "",
         f"phase {s['phase']}" if "phase" in s else "") if x)
     warnings = ""
+    if not (run.path / "summary.json").is_file():
+        warnings = ('<div class="warn">No <code>summary.json</code>: the run has not finished '
+                    "(or was interrupted); only its recorded trials are shown.</div>")
     if run.warnings:
-        warnings = ('<div class="warn"><b>Not everything could be read:</b><ul>'
+        warnings += ('<div class="warn"><b>Not everything could be read:</b><ul>'
                     + "".join(f"<li>{escape(w)}</li>" for w in run.warnings) + "</ul></div>")
     return (
         "<!DOCTYPE html>\n"

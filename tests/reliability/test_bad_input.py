@@ -61,6 +61,8 @@ CORPUS = [
     (["make-tool", "hook", "handle_length=long", "--context", "max_tool_length(foo)",
       "--out", "{tmp}/t"], "--context 'max_tool_length(foo)': the size model cannot use it"),
     (["report", "{tmp}"], "no trials.jsonl in this run folder"),
+    (["report", "{tmp}", "--html"], "no trials.jsonl in this run folder"),
+    (["report", "{tmp}", "--width", "10"], "--width 10: under 40 columns"),
 ]
 
 
