@@ -5,8 +5,8 @@ One short real run (two tool-use trials, then tool creation with no evaluation t
 gives the folder. Its ``report.html`` is written through the command line and opened in
 headless Chromium (Debian's ``chromium``): the DOM it builds must show the plot (a PNG
 that exists), one table row per recorded trial with its reason, the created tool's
-render and dimensions, and a ``<video controls>`` per clip whose MP4 exists and decodes
-(imageio); its screenshot must not be blank. The terminal report is run with an
+render and dimensions, and a ``<video controls>`` per clip whose MP4 exists and plays
+(Chromium loads its first frame, imageio decodes it); its screenshot must not be blank. The terminal report is run with an
 80-column ``COLUMNS`` and must show the longest reason in full.
 """
 
@@ -27,6 +27,8 @@ import numpy as np
 import pytest
 
 from creative_py.learning.run import RunOptions, run_case
+from creative_py.report.contents import read_run
+from creative_py.report.page import render_html
 
 pytestmark = pytest.mark.sim
 
@@ -127,8 +129,32 @@ def _local_file(folder: Path, src: str) -> Path:
     return path
 
 
-def _assert_plays(mp4: Path) -> None:
-    """The clip decodes with imageio's ffmpeg: frames of a picture, not all one colour."""
+_PROBE = """<!DOCTYPE html><html><body data-state="waiting">
+<video id="v" muted preload="auto" src="{src}"></video>
+<script>
+const v = document.getElementById("v");
+v.addEventListener("loadeddata", () => {{
+  document.body.dataset.state = "loaded " + v.videoWidth + "x" + v.videoHeight; }});
+v.addEventListener("error", () => {{
+  document.body.dataset.state = "error " + (v.error && v.error.code); }});
+</script></body></html>
+"""
+"""A test page (not the report, which has no script) that says whether Chromium's own
+decoder loads a clip's first frame."""
+
+
+def _assert_plays(mp4: Path, tmp: Path) -> None:
+    """The clip plays: Chromium loads its first frame, and imageio's ffmpeg decodes
+    frames of a picture, not all one colour."""
+    probe = tmp / "probe.html"
+    probe.write_text(_PROBE.format(src=mp4.resolve().as_uri()))
+    proc = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu",
+                           f"--user-data-dir={tmp / 'chromium-profile'}",
+                           "--virtual-time-budget=10000", "--dump-dom", probe.as_uri()],
+                          capture_output=True, text=True, timeout=120, cwd=tmp)
+    state = Dom(proc.stdout).elements
+    states = [a.get("data-state") for t, a in state if t == "body"]
+    assert states and states[0].startswith("loaded "), (mp4, states, proc.stderr[-1000:])
     reader = imageio.get_reader(mp4)
     try:
         frames = [frame for _, frame in zip(range(5), reader)]
@@ -213,7 +239,7 @@ def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real
 
 
 @needs_chromium
-def test_the_runs_own_clips_are_on_the_page_and_play(real_run, real_page):
+def test_the_runs_own_clips_are_on_the_page_and_play(real_run, real_page, tmp_path):
     """Every clip summary.json lists is a <video controls> whose MP4 decodes. Runs save
     clips since issue 9 item 5 (``summary.json``'s ``videos``)."""
     _, _, _, dom, _ = real_page
@@ -226,7 +252,7 @@ def test_the_runs_own_clips_are_on_the_page_and_play(real_run, real_page):
     sources = dom.sources("video")
     assert sorted(unquote(s) for s in sources) == sorted(v["file"] for v in videos)
     for src in sources:
-        _assert_plays(_local_file(real_run, src))
+        _assert_plays(_local_file(real_run, src), tmp_path)
 
 
 @needs_chromium
@@ -239,9 +265,8 @@ def test_a_moved_folder_shows_its_clips_from_the_videos_folder(real_run, tmp_pat
     summary.pop("videos", None)
     (moved / "summary.json").write_text(json.dumps(summary))
     shutil.rmtree(moved / "videos", ignore_errors=True)
-    _creative("report", str(moved), "--html")
-    assert "<video" not in (moved / "report.html").read_text()
-    assert "This run saved no video clip." in (moved / "report.html").read_text()
+    page = render_html(read_run(moved))
+    assert "<video" not in page and "This run saved no video clip." in page
 
     frames = [imageio.imread(p)[..., :3] for p in sorted(moved.glob("snapshots/*/*.png"))]
     frames = [f for f in frames if f.shape == frames[0].shape]
@@ -251,7 +276,7 @@ def test_a_moved_folder_shows_its_clips_from_the_videos_folder(real_run, tmp_pat
     _creative("report", str(moved), "--html")
     dom, screenshot = _open_in_chromium(moved / "report.html", tmp_path)
     assert dom.sources("video") == ["videos/frames.mp4"]
-    _assert_plays(_local_file(moved, "videos/frames.mp4"))
+    _assert_plays(_local_file(moved, "videos/frames.mp4"), tmp_path)
     assert "trials.png" in dom.sources("img")
     _assert_not_blank(screenshot)
 
