@@ -143,8 +143,9 @@ def render_html(run: RunContents) -> str:
         f"<title>{escape(title)}</title><style>{_CSS}</style></head><body><main>"
         f"<h1>{escape(title)}</h1><p class=\"sub\">{subtitle}</p>"
         f"<nav>{nav}</nav>{warnings}{_cards(run)}{body}"
-        "<footer>Written by <code>creative report RUN --html</code> from the files of this "
-        "run folder; every link is relative to it.</footer>"
+        "<footer>Written from the files of this run folder, at the end of the run or by "
+        "<code>creative report RUN --html</code>; every link is relative to the folder."
+        "</footer>"
         "</main></body></html>\n")
 
 
