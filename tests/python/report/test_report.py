@@ -82,7 +82,7 @@ class Dom(HTMLParser):
         self.elements.append((tag, attributes))
         if tag == "tr" and "trial" in attributes.get("class", "").split():
             self.rows.append([])
-        elif tag == "td" and self.rows is not None and self._in_trial_row():
+        elif tag == "td" and self._in_trial_row():
             self._cell = []
 
     def handle_endtag(self, tag):
