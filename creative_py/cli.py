@@ -266,47 +266,40 @@ def run(
 @app.command()
 def report(run_dir: Path = typer.Argument(..., help="A run folder."),
            plot: bool = typer.Option(False, "--plot", help="Also redraw trials.png from "
-                                     "the readable trials.")) -> None:
-    """Summarise a run folder: every readable trial with its reason, the learned
-    hypotheses, created tools. Writes nothing unless --plot is given."""
+                                     "the readable trials."),
+           html: bool = typer.Option(False, "--html", help="Also write report.html in the "
+                                     "run folder: trials, plot, video clips, created tools, "
+                                     "hypotheses, plan."),
+           width: Optional[int] = typer.Option(None, "--width", help="Width of the "
+                                               "table (default: the terminal's; the widest "
+                                               "row's when not a terminal).")) -> None:
+    """Summarise a run folder: every trial in full (phase, tool, variant, location, pose,
+    tested and violated literals, outcome, reason), the learned hypotheses, the plan,
+    created tools. Writes nothing unless --plot or --html is given."""
     from rich.console import Console
-    from rich.table import Table
 
-    from creative_py.learning.run_folder import read_trials
     from creative_py.report import plot_trials
+    from creative_py.report.contents import read_run
+    from creative_py.report.page import write_html_report
+    from creative_py.report.table import print_report
 
-    warnings: list[str] = []
+    if width is not None and width < 40:
+        _fail(f"--width {width}: under 40 columns")
     try:
-        trials = read_trials(run_dir, warn=warnings.append)
+        contents = read_run(run_dir)
     except FileNotFoundError as exc:
         _fail(str(exc))
-    for w in warnings:
+    for w in contents.warnings:
         typer.echo(f"warning: {w}", err=True)
-    console = Console(width=max(160, Console().width))
-    table = Table(title=f"{run_dir}")
-    for col in ("#", "phase", "variant", "loc", "tool", "tested", "outcome", "reason"):
-        table.add_column(col, overflow="fold")
-    for t in trials:
-        table.add_row(str(t["trial"]), str(t["phase"]), str(t["variant"]), str(t["location"]),
-                      str(t["tool"]), ", ".join(t.get("tested") or []) or "-",
-                      str(t["outcome"]), str(t.get("reason", "")))
-    console.print(table)
-    summary = Path(run_dir) / "summary.json"
-    if summary.exists():
-        try:
-            s = json.loads(summary.read_text())
-        except json.JSONDecodeError as exc:
-            typer.echo(f"warning: {summary}: not JSON ({exc.msg}); no summary shown", err=True)
-            s = {}
-        for key in ("hs", "hg"):
-            console.print(f"{key}: {s.get('hypotheses', {}).get(key, '?')}", markup=False)
-        for tool in s.get("create", {}).get("created_tools", []):
-            console.print(f"created {tool['name']}: {tool['replaced']} -> {tool['instance']} "
-                          f"{tool['dims']} ({tool['trial_outcome']}"
-                          f"{_strength_note(tool.get('strength'))})", markup=False)
-    if plot:
-        png = plot_trials(trials, Path(run_dir) / "trials.png", title=str(run_dir))
-        console.print(f"plot: {png}", markup=False)
+    console = Console()
+    print_report(contents, console, width)
+    with _one_line_errors():
+        if plot:
+            png = plot_trials(contents.trials, Path(run_dir) / "trials.png", title=str(run_dir))
+            console.print(f"plot: {png}", markup=False, highlight=False, soft_wrap=True)
+        if html:
+            page = write_html_report(run_dir)
+            console.print(f"html: {page}", markup=False, highlight=False, soft_wrap=True)
 
 
 @app.command()
@@ -418,20 +411,6 @@ def make_tool_cmd(
     for p in files.paths():
         typer.echo(str(p))
 
-
-def _strength_note(strength: dict | None) -> str:
-    """Return ``"; strength pass, 13.8 MPa, safety factor 3.61"`` for a created tool's
-    strength check (empty when it has none)."""
-    if not strength:
-        return ""
-    sf = strength.get("safety_factor")
-    text = (f"; strength {strength.get('verdict')}, {strength.get('stress_mpa', 0):.1f} MPa, "
-            f"safety factor {'-' if sf is None else f'{sf:.2f}'}")
-    if strength.get("thickened_into"):
-        text += f", thickened into {strength['thickened_into']}"
-    if strength.get("reason"):
-        text += f": {strength['reason']}"
-    return text
 
 
 if __name__ == "__main__":  # pragma: no cover

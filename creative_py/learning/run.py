@@ -21,6 +21,7 @@ from creative_py.learning.run_folder import RunFolder, read_trials
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
+from creative_py.report.page import write_html_report
 
 log = logging.getLogger(__name__)
 
@@ -204,6 +205,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         plot_trials([t.as_dict() for t in trials], run.path / "trials.png",
                     title=f"CREATIVE-py, {case} case, seed {options.seed}")
         run.write_json("summary.json", summary)
+        write_html_report(run.path)
         say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
     except BaseException:
         # Nothing learned yet (the demonstration failed, the run was interrupted before

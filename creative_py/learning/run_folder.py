@@ -11,6 +11,7 @@ Layout (docs/architecture.md, section 5)::
     <run>/snapshots/          camera frames of each trial
     <run>/tools/<name>.*      created tools (urdf, sdf, scad, stl, png)
     <run>/summary.json        trials per phase, successes, created tools, wall time per phase
+    <run>/report.html         the run on one page (creative_py.report.page), written last
 """
 
 from __future__ import annotations

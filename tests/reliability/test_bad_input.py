@@ -65,6 +65,8 @@ CORPUS = [
       "--out", "{tmp}/t"], "--build-volume '250,210': expected three positive numbers"),
     (["make-tool", "hook", "handle_length=long", "--build-volume", "250,0,210",
       "--out", "{tmp}/t"], "--build-volume '250,0,210'"),
+    (["report", "{tmp}", "--html"], "no trials.jsonl in this run folder"),
+    (["report", "{tmp}", "--width", "10"], "--width 10: under 40 columns"),
 ]
 
 

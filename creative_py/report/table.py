@@ -1,0 +1,145 @@
+"""The terminal report of a run folder: every trial with every column, cut nowhere.
+
+The width is the one asked for, else the terminal's, else (output into a pipe or a
+file) the widest row's, so that every trial is one line ``grep`` finds whole
+(:func:`report_width`). When the table of every column fits that width it is printed
+as one rich table; when it does not (an 80-column terminal), each trial is printed as a
+block: one line with its number, phase, tool, variant, location and outcome, then its
+pose, tested and violated literals and reason, each on its own lines. Every cell folds
+(``overflow="fold"``): a text longer than its column wraps, never ends in an ellipsis.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rich.console import Console, Group
+from rich.table import Table
+from rich.text import Text
+
+from creative_py.report.contents import TRIAL_COLUMNS, RunContents, literals_text
+
+
+def trial_table(run: RunContents) -> Table:
+    """Return the table of every readable trial, with all of :data:`TRIAL_COLUMNS`."""
+    table = Table(title=str(run.path), title_justify="left")
+    for header, _ in TRIAL_COLUMNS:
+        table.add_column(header, overflow="fold",
+                         justify="right" if header in ("#", "n", "loc") else "left")
+    for t in run.trials:
+        table.add_row(*(cell(t) for _, cell in TRIAL_COLUMNS))
+    return table
+
+
+_BLOCK_FIELDS = ("pose", "tested", "violated", "reason")
+"""The long columns: their own lines in the narrow layout."""
+
+_OUTCOME_STYLE = {"success": "bold green", "failure": "bold red", "blocked": "bold yellow",
+                  "unreachable": "bold", "invalid": "bold magenta"}
+
+
+def trial_blocks(run: RunContents) -> Group:
+    """Return every trial as a block of lines (the narrow layout): a head line, then one
+    labelled line per long column, folded to the width."""
+    cells = dict(TRIAL_COLUMNS)
+    blocks = []
+    for t in run.trials:
+        outcome = cells["outcome"](t)
+        head = Text(f"{cells['#'](t):>3}  {cells['phase'](t)} {cells['n'](t)}  "
+                    f"{cells['tool'](t)}  {cells['variant'](t)}  loc {cells['loc'](t)}  ")
+        head.append(outcome, style=_OUTCOME_STYLE.get(outcome, "bold"))
+        grid = Table.grid(padding=(0, 1))
+        grid.add_column(no_wrap=True)
+        grid.add_column(overflow="fold")
+        for name in _BLOCK_FIELDS:
+            grid.add_row(Text(f"     {name:<8}"), Text(cells[name](t)))
+        blocks += [head, grid]
+    return Group(*blocks)
+
+
+def summary_lines(run: RunContents) -> list[str]:
+    """Return the summary's lines under the table: hypotheses, plan, PDDL planner,
+    created tools (with print figures when sliced), video clips."""
+    s = run.summary
+    lines = []
+    hyp = s.get("hypotheses") if isinstance(s.get("hypotheses"), dict) else {}
+    for key in ("hs", "hg"):
+        lines.append(f"{key}: {hyp.get(key, '?')}")
+    if "plan" in s:
+        lines.append(f"plan: {s['plan']}")
+    pddl = s.get("pddl")
+    if isinstance(pddl, dict):
+        for task, answer in pddl.items():
+            if isinstance(answer, dict):
+                lines.append(f"pddl {task}: {answer.get('status', '?')} "
+                             f"{_plain(answer.get('plan', ''))}".rstrip())
+    for tool in run.tools:
+        c = tool.created
+        if c:
+            lines.append(f"created {tool.name}: {c.get('replaced')} -> {c.get('instance')} "
+                         f"{c.get('dims')} ({c.get('trial_outcome')}"
+                         f"{strength_note(c.get('strength'))})")
+        printed = (tool.manifest or {}).get("print")
+        if printed is not None:
+            lines.append(f"print {tool.name}: {_plain(printed)}")
+    for clip in run.clips:
+        what = " ".join(_plain(clip.info[k]) for k in ("phase", "trial", "tool", "outcome",
+                                                        "why") if clip.info.get(k) is not None)
+        lines.append(f"video {clip.file}{'' if clip.exists else ' (missing)'}"
+                     f"{': ' + what if what else ''}")
+    return lines
+
+
+def natural_width(table: Table) -> int:
+    """Return the width at which no cell of ``table`` wraps."""
+    return Console(width=100_000).measure(table).maximum
+
+
+def report_width(console: Console, table: Table, width: int | None) -> int:
+    """Return the width to print at: ``width`` when given, the terminal's when the output
+    is one, else the table's natural width (no row wraps)."""
+    if width is not None:
+        return width
+    if console.is_terminal:
+        return console.width
+    return max(80, natural_width(table))
+
+
+def print_report(run: RunContents, console: Console, width: int | None = None) -> None:
+    """Print the trials (a table when it fits the width, else blocks) and the summary
+    lines of a run on ``console``."""
+    table = trial_table(run)
+    console.width = report_width(console, table, width)
+    if natural_width(table) <= console.width:
+        console.print(table)
+    else:
+        console.print(Text(str(run.path), style="italic"), soft_wrap=True)
+        console.print(trial_blocks(run))
+    for line in summary_lines(run):
+        console.print(line, markup=False, highlight=False)
+
+
+def _plain(value: Any) -> str:
+    """A JSON value on one line: lists joined by commas, mappings as ``k=v``."""
+    if isinstance(value, dict):
+        return ", ".join(f"{k}={_plain(v)}" for k, v in value.items())
+    if isinstance(value, list):
+        if all(isinstance(v, dict) for v in value):
+            return "; ".join(f"[{_plain(v)}]" for v in value)
+        return literals_text(value)
+    return str(value)
+
+
+def strength_note(strength: dict | None) -> str:
+    """Return ``"; strength pass, 13.8 MPa, safety factor 3.61"`` for a created tool's
+    strength check (empty when it has none)."""
+    if not strength:
+        return ""
+    sf = strength.get("safety_factor")
+    text = (f"; strength {strength.get('verdict')}, {strength.get('stress_mpa', 0):.1f} MPa, "
+            f"safety factor {'-' if sf is None else f'{sf:.2f}'}")
+    if strength.get("thickened_into"):
+        text += f", thickened into {strength['thickened_into']}"
+    if strength.get("reason"):
+        text += f": {strength['reason']}"
+    return text

@@ -1,0 +1,317 @@
+"""The run report, read by its real consumers: a browser for report.html, a terminal for
+the table.
+
+One short real run (two tool-use trials, then tool creation with no evaluation trial)
+gives the folder. Its ``report.html`` is written through the command line and opened in
+headless Chromium (Debian's ``chromium``): the DOM it builds must show the plot (a PNG
+that exists), one table row per recorded trial with its reason, the created tool's
+render and dimensions, and a ``<video controls>`` per clip whose MP4 exists and plays
+(Chromium loads its first frame, imageio decodes it); its screenshot must not be blank. The terminal report is run with an
+80-column ``COLUMNS`` and must show the longest reason in full.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import shutil
+import subprocess
+import sys
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+
+import imageio.v2 as imageio
+import numpy as np
+import pytest
+
+from creative_py.learning.run import RunOptions, run_case
+from creative_py.report.contents import read_run
+from creative_py.report.page import render_html
+
+pytestmark = pytest.mark.sim
+
+CHROMIUM = shutil.which("chromium")
+needs_chromium = pytest.mark.skipif(
+    CHROMIUM is None, reason="chromium is not installed (Debian's package chromium; "
+    "make setup installs it)")
+
+
+@pytest.fixture(scope="module")
+def real_run(tmp_path_factory):
+    """A real short run: the demonstration, two tool-use trials, tool creation."""
+    out = tmp_path_factory.mktemp("runs")
+    folder = run_case("rake", out, RunOptions(seed=0, phase="create", max_trials=2,
+                                              eval_trials=0, create_eval_trials=0))
+    return folder.path
+
+
+def _creative(*args: str, columns: int = 80) -> subprocess.CompletedProcess:
+    env = {**os.environ, "COLUMNS": str(columns)}
+    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", *args], env=env,
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    return proc
+
+
+def _digests(folder: Path) -> dict[str, str]:
+    return {p.relative_to(folder).as_posix(): hashlib.sha256(p.read_bytes()).hexdigest()
+            for p in sorted(folder.rglob("*")) if p.is_file()}
+
+
+def _trials(folder: Path) -> list[dict]:
+    return [json.loads(line) for line in (folder / "trials.jsonl").read_text().splitlines()
+            if line.strip()]
+
+
+class Dom(HTMLParser):
+    """The elements of a page (tag and attributes, in order), and the cell texts of each
+    trial row of its table."""
+
+    def __init__(self, text: str) -> None:
+        super().__init__()
+        self.elements: list[tuple[str, dict[str, str]]] = []
+        self.rows: list[list[str]] = []
+        self.text: list[str] = []
+        self._cell: list[str] | None = None
+        self.feed(text)
+
+    def handle_starttag(self, tag, attrs):
+        attributes = {k: v or "" for k, v in attrs}
+        self.elements.append((tag, attributes))
+        if tag == "tr" and "trial" in attributes.get("class", "").split():
+            self.rows.append([])
+        elif tag == "td" and self._in_trial_row():
+            self._cell = []
+
+    def handle_endtag(self, tag):
+        if tag == "td" and self._cell is not None:
+            self.rows[-1].append("".join(self._cell).strip())
+            self._cell = None
+
+    def handle_data(self, data):
+        self.text.append(data)
+        if self._cell is not None:
+            self._cell.append(data)
+
+    def _in_trial_row(self) -> bool:
+        for tag, attributes in reversed(self.elements[:-1]):
+            if tag == "tr":
+                return "trial" in attributes.get("class", "").split()
+        return False
+
+    def sources(self, tag: str) -> list[str]:
+        return [a["src"] for t, a in self.elements if t == tag and "src" in a]
+
+
+def _open_in_chromium(page: Path, tmp: Path) -> tuple[Dom, np.ndarray]:
+    """Return the DOM Chromium builds from ``page`` and its 1280 x 2000 screenshot."""
+    base = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+            f"--user-data-dir={tmp / 'chromium-profile'}"]
+    url = page.resolve().as_uri()
+    dom = subprocess.run(base + ["--dump-dom", url], capture_output=True, text=True,
+                         timeout=120, cwd=tmp)
+    assert dom.returncode == 0 and "<html" in dom.stdout, dom.stderr[-2000:]
+    shot = tmp / "screenshot.png"
+    proc = subprocess.run(base + [f"--screenshot={shot}", "--window-size=1280,2000", url],
+                          capture_output=True, text=True, timeout=120, cwd=tmp)
+    assert proc.returncode == 0 and shot.is_file(), proc.stderr[-2000:]
+    return Dom(dom.stdout), imageio.imread(shot)
+
+
+def _local_file(folder: Path, src: str) -> Path:
+    """The file a relative link of the page names; fail on an absolute or outside one."""
+    url = urlparse(src)
+    assert not url.scheme and not url.netloc and not src.startswith("/"), src
+    path = (folder / unquote(url.path)).resolve()
+    assert path.is_relative_to(folder.resolve()), src
+    return path
+
+
+_PROBE = """<!DOCTYPE html><html><body data-state="waiting">
+<video id="v" muted preload="auto" src="{src}"></video>
+<script>
+const v = document.getElementById("v");
+v.addEventListener("loadeddata", () => {{
+  document.body.dataset.state = "loaded " + v.videoWidth + "x" + v.videoHeight; }});
+v.addEventListener("error", () => {{
+  document.body.dataset.state = "error " + (v.error && v.error.code); }});
+</script></body></html>
+"""
+"""A test page (not the report, which has no script) that says whether Chromium's own
+decoder loads a clip's first frame."""
+
+
+def _assert_plays(mp4: Path, tmp: Path) -> None:
+    """The clip plays: Chromium loads its first frame, and imageio's ffmpeg decodes
+    frames of a picture, not all one colour."""
+    probe = tmp / "probe.html"
+    probe.write_text(_PROBE.format(src=mp4.resolve().as_uri()))
+    proc = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu",
+                           f"--user-data-dir={tmp / 'chromium-profile'}",
+                           "--virtual-time-budget=10000", "--dump-dom", probe.as_uri()],
+                          capture_output=True, text=True, timeout=120, cwd=tmp)
+    state = Dom(proc.stdout).elements
+    states = [a.get("data-state") for t, a in state if t == "body"]
+    assert states and states[0].startswith("loaded "), (mp4, states, proc.stderr[-1000:])
+    reader = imageio.get_reader(mp4)
+    try:
+        frames = [frame for _, frame in zip(range(5), reader)]
+    finally:
+        reader.close()
+    assert frames, f"{mp4}: no frame decodes"
+    assert frames[0].ndim == 3 and frames[0].shape[0] >= 64 and frames[0].shape[1] >= 64
+    assert frames[0].std() > 1.0, f"{mp4}: the first frame is one colour"
+
+
+def _assert_not_blank(screenshot: np.ndarray) -> None:
+    """The screenshot is a drawn page: more than 20 % of it differs from the background
+    colour (panels, pictures) and more than 0.5 % is dark (text)."""
+    rgb = screenshot[..., :3].astype(int)
+    drawn = (np.abs(rgb - rgb[0, 0]).max(axis=-1) > 6).mean()
+    dark = (rgb.max(axis=-1) < 128).mean()
+    assert drawn > 0.2 and dark > 0.005, f"{drawn:.1%} drawn, {dark:.2%} dark: blank page"
+
+
+@pytest.fixture(scope="module")
+def real_page(real_run, tmp_path_factory):
+    """The real run's report.html written by ``creative report RUN --html``, opened in
+    Chromium; and the run's files before and after."""
+    if CHROMIUM is None:
+        pytest.skip("chromium is not installed (Debian's package chromium; make setup "
+                    "installs it)")
+    before = _digests(real_run)
+    (real_run / "report.html").unlink()  # the run wrote one; the command writes it anew
+    proc = _creative("report", str(real_run), "--html")
+    after = _digests(real_run)
+    tmp = tmp_path_factory.mktemp("chromium")
+    dom, screenshot = _open_in_chromium(real_run / "report.html", tmp)
+    return proc, before, after, dom, screenshot
+
+
+def test_the_run_writes_its_report_and_the_command_writes_only_report_html(real_run, real_page):
+    proc, before, after, _, _ = real_page
+    assert "report.html" in before                       # run_case wrote one at its end
+    assert f"html: {real_run / 'report.html'}" in proc.stdout
+    assert {k: v for k, v in after.items() if k != "report.html"} == \
+        {k: v for k, v in before.items() if k != "report.html"}
+    assert not any(name.startswith(".report.html") for name in after)   # no temp file
+
+
+@needs_chromium
+def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real_page):
+    _, _, _, dom, screenshot = real_page
+    trials = _trials(real_run)
+    # The plot: an <img> whose file is the run's trials.png.
+    images = dom.sources("img")
+    assert "trials.png" in images
+    assert imageio.imread(_local_file(real_run, "trials.png")).shape[0] > 100
+    # One table row per recorded trial, with its tool, outcome and whole reason.
+    assert len(dom.rows) == len(trials) >= 4
+    for row, t in zip(dom.rows, trials):
+        assert row[0] == str(t["trial"]) and t["tool"] in row and t["outcome"] in row
+        assert row[-1] == t["reason"]
+    # The created tool: its render and its dimensions.
+    summary = json.loads((real_run / "summary.json").read_text())
+    created = summary["create"]["created_tools"]
+    assert created
+    text = " ".join(" ".join(dom.text).split())
+    for tool in created:
+        render = f"tools/{tool['name']}/{tool['name']}.png"
+        assert render in images and _local_file(real_run, render).is_file()
+        for key, value in tool["dims"].items():
+            assert f"{key} {value:.6g}" in text if isinstance(value, float) else \
+                f"{key} {value}" in text
+    # The learned hypotheses, literal by literal, and the plan's steps.
+    for key in ("hs", "hg"):
+        head, _, body = summary["hypotheses"][key].partition(" :- ")
+        assert head in text and all(lit in text for lit in body.split(", "))
+    steps = summary["plan"].removeprefix("plan([").removesuffix("])")
+    assert steps.split(",", 1)[0] in text
+    # Every link and source is relative and names a file of the run folder.
+    for tag, attributes in dom.elements:
+        for key in ("src", "href"):
+            value = attributes.get(key)
+            if value and not value.startswith("#"):
+                assert _local_file(real_run, value).is_file(), (tag, value)
+    _assert_not_blank(screenshot)
+
+
+@needs_chromium
+def test_the_runs_own_clips_are_on_the_page_and_play(real_run, real_page, tmp_path):
+    """Every clip summary.json lists is a <video controls> whose MP4 decodes. Runs save
+    clips since issue 9 item 5 (``summary.json``'s ``videos``)."""
+    _, _, _, dom, _ = real_page
+    summary = json.loads((real_run / "summary.json").read_text())
+    videos = summary.get("videos")
+    assert videos, "the run's summary.json lists no video clip (runs save clips: issue 9, " \
+                   "item 5)"
+    controls = [a for t, a in dom.elements if t == "video"]
+    assert all("controls" in a for a in controls)
+    sources = dom.sources("video")
+    assert sorted(unquote(s) for s in sources) == sorted(v["file"] for v in videos)
+    for src in sources:
+        _assert_plays(_local_file(real_run, src), tmp_path)
+
+
+@needs_chromium
+def test_a_moved_folder_shows_its_clips_from_the_videos_folder(real_run, tmp_path):
+    """A copy of the run (moved: every link relative), with summary.json listing no clip
+    and one MP4 in videos/, made from the run's own camera frames: the page plays it."""
+    moved = tmp_path / "moved" / real_run.name
+    shutil.copytree(real_run, moved)
+    summary = json.loads((moved / "summary.json").read_text())
+    summary.pop("videos", None)
+    (moved / "summary.json").write_text(json.dumps(summary))
+    shutil.rmtree(moved / "videos", ignore_errors=True)
+    page = render_html(read_run(moved))
+    assert "<video" not in page and "This run saved no video clip." in page
+
+    frames = [imageio.imread(p)[..., :3] for p in sorted(moved.glob("snapshots/*/*.png"))]
+    frames = [f for f in frames if f.shape == frames[0].shape]
+    assert len(frames) >= 3
+    (moved / "videos").mkdir()
+    imageio.mimwrite(moved / "videos" / "frames.mp4", frames * 3, fps=10)
+    _creative("report", str(moved), "--html")
+    dom, screenshot = _open_in_chromium(moved / "report.html", tmp_path)
+    assert dom.sources("video") == ["videos/frames.mp4"]
+    _assert_plays(_local_file(moved, "videos/frames.mp4"), tmp_path)
+    assert "trials.png" in dom.sources("img")
+    _assert_not_blank(screenshot)
+
+
+def test_the_terminal_report_shows_the_longest_reason_whole_in_80_columns(real_run):
+    trials = _trials(real_run)
+    longest = max(trials, key=lambda t: len(t["reason"]))
+    assert len(longest["reason"]) > 80
+    # Into a pipe (not a terminal) with COLUMNS=80: one line per trial, cut nowhere.
+    out = _creative("report", str(real_run)).stdout
+    lines = [line for line in out.splitlines() if longest["reason"] in line]
+    assert lines and all(t["tool"] in out for t in trials)
+    for key in ("tested", "violated"):
+        for literal in longest[key]:
+            assert literal in lines[0]
+    # At 80 columns: each trial a block whose reason, joined across its wrapped lines, is
+    # whole.
+    out = _creative("report", str(real_run), "--width", "80").stdout
+    assert max(len(line) for line in out.splitlines()) <= 80
+    reasons = _block_fields(out, "reason")
+    assert reasons[: len(trials)] == [t["reason"] for t in trials]
+    assert "…" not in out
+
+
+def _block_fields(out: str, name: str) -> list[str]:
+    """The value of field ``name`` of every trial block, its wrapped lines joined: a
+    field's line starts with five spaces and its name, a wrapped line with ten or more."""
+    values: list[list[str]] = []
+    current: list[str] | None = None
+    for line in out.splitlines():
+        if line.startswith(f"     {name} "):
+            current = [line.strip()[len(name):].strip()]
+            values.append(current)
+        elif current is not None and line.startswith(" " * 10) and line.strip():
+            current.append(line.strip())
+        else:
+            current = None
+    return [" ".join(v) for v in values]
