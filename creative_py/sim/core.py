@@ -55,6 +55,8 @@ class Sim:
         if self.client < 0:
             raise RuntimeError("pybullet: could not connect a physics client")
         self.steps = 0
+        self.recorder = None
+        """A :class:`~creative_py.sim.recorder.Recorder` fed after every step, or None."""
         self.configure()
 
     def configure(self) -> None:
@@ -75,8 +77,15 @@ class Sim:
 
     def step(self, n: int = 1) -> None:
         """Advance the physics by ``n`` time steps."""
-        for _ in range(n):
-            pb.stepSimulation(physicsClientId=self.client)
+        rec = self.recorder
+        if rec is None:
+            for _ in range(n):
+                pb.stepSimulation(physicsClientId=self.client)
+        else:
+            dt = self.physics.time_step
+            for _ in range(n):
+                pb.stepSimulation(physicsClientId=self.client)
+                rec.tick(dt)
         self.steps += n
 
     def pose(self, body: int, link: int = -1) -> Pose:
@@ -124,13 +133,14 @@ class Sim:
     def saved(self) -> Iterator[int]:
         """Save the state on entry and restore it on exit (a try that leaves no trace)."""
         state = self.save_state()
-        steps = self.steps
+        steps, recorder = self.steps, self.recorder
+        self.recorder = None  # what is tried here is no part of the trial's clip
         try:
             yield state
         finally:
             self.restore_state(state)
             self.remove_state(state)
-            self.steps = steps
+            self.steps, self.recorder = steps, recorder
 
     def close(self) -> None:
         """Disconnect the client (idempotent)."""
