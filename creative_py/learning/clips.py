@@ -22,6 +22,7 @@ or, with ``all``, ``trial`` for a trial kept only because every trial is.
 
 from __future__ import annotations
 
+import os
 import re
 from pathlib import Path
 from typing import Any, Optional, Sequence
@@ -48,9 +49,16 @@ class ClipKeeper:
         The run folder.
     spec : VideoSpec or None
         The world's clip camera (``world.scene.video``); None records nothing.
+    background : bool
+        Render and encode each clip in a child process (forked inside the trial's
+        episode, after the verdict) while the run goes on; :meth:`finish` waits for
+        them. Off: in this process, at once.
+    max_children : int
+        Most clip processes running at once (one more waits for the oldest).
     """
 
-    def __init__(self, mode: str, run_dir: Path, spec: Any) -> None:
+    def __init__(self, mode: str, run_dir: Path, spec: Any, background: bool = True,
+                 max_children: int = 2) -> None:
         if mode not in VIDEO_MODES:
             raise ValueError(f"option video must be one of {', '.join(VIDEO_MODES)}, "
                              f"got {mode!r}")
@@ -61,7 +69,11 @@ class ClipKeeper:
         self.seen: set[str] = set()
         self.succeeded = False
         self.wall_time_s = 0.0
-        """Wall time spent rendering and encoding clips (the snapshots aside)."""
+        """Wall time the run spent on clips: rendering and encoding them, or, in the
+        background, starting them and waiting for them (the snapshots aside)."""
+        self.background = background
+        self.max_children = max_children
+        self.children: dict[int, str] = {}
 
     def recorder(self):
         """Return a new recorder for one trial, or None when nothing is recorded."""
@@ -103,8 +115,9 @@ class ClipKeeper:
     def write(self, recorder: Any, why: str, trial: int, phase: str, phase_trial: int,
               tool: str, tested: Sequence[str], outcome: str, reason: str,
               location: Any = None) -> dict[str, Any]:
-        """Encode a rendered recorder's frames with their caption; add and return the
-        clip's entry."""
+        """Render a trial's recorder and encode its frames with their caption, in a
+        child process when :attr:`background` (call it inside the trial's episode);
+        add and return the clip's entry (its ``bytes`` once :meth:`finish` ran)."""
         import time
 
         from creative_py.video import write_clip
@@ -115,15 +128,50 @@ class ClipKeeper:
                 + (f"  loc {location}" if location is not None else ""))
         lines = [head, f"tested {', '.join(tested) or '-'}",
                  f"{outcome}" + (f": {reason}" if reason else "")]
-        info = write_clip(self.run_dir / name, recorder.frames, self.spec.fps, lines,
-                          recorder.times)
+        path, fps = self.run_dir / name, self.spec.fps
+
+        def use(frames, times) -> None:
+            write_clip(path, frames, fps, lines, times)
+
+        if self.background:
+            self._wait(self.max_children - 1)
+        pid = recorder.render_then(use, background=self.background)
+        if pid is not None:
+            self.children[pid] = name
+        n = len(recorder.snapshots)
         entry = {"file": name, "phase": phase, "trial": trial, "tool": tool,
                  "tested": list(tested), "outcome": outcome, "reason": reason, "why": why,
-                 "frames": info["frames"], "duration_s": info["duration_s"],
-                 "bytes": info["bytes"]}
+                 "frames": n, "duration_s": round(n / fps, 2), "bytes": None}
         self.entries.append(entry)
-        self.wall_time_s += time.perf_counter() - t0 + recorder.render_time_s
+        self.wall_time_s += time.perf_counter() - t0
         return entry
+
+    def _wait(self, most: int) -> None:
+        """Wait for clip processes until at most ``most`` are still running."""
+        import logging
+
+        while len(self.children) > most:
+            pid, status = os.wait()
+            name = self.children.pop(pid, None)
+            if name is not None and os.waitstatus_to_exitcode(status) != 0:
+                logging.getLogger(__name__).warning("%s: the clip was not written", name)
+
+    def finish(self) -> list[dict[str, Any]]:
+        """Wait for every clip being written; drop the entries of clips that failed,
+        fill in the others' sizes; return :attr:`entries`."""
+        import time
+
+        t0 = time.perf_counter()
+        self._wait(0)
+        kept = []
+        for e in self.entries:
+            f = self.run_dir / e["file"]
+            if f.is_file():
+                e["bytes"] = f.stat().st_size
+                kept.append(e)
+        self.entries = kept
+        self.wall_time_s += time.perf_counter() - t0
+        return kept
 
     def replayed(self, record: dict[str, Any]) -> None:
         """Account for a trial of a resumed run (no physics): note its outcome and keep

@@ -161,7 +161,9 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
     say(f"run folder {run.path}")
     try:
-        clips = ClipKeeper(options.video, run.path, world.scene.video)
+        # In the GUI the client has a thread of its own: no forking it.
+        clips = ClipKeeper(options.video, run.path, world.scene.video,
+                           background=not options.gui)
         runner = TrialRunner(engine, world, run, options.seed, say, replay=replay,
                              clips=clips, gui=options.gui)
         lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
@@ -211,7 +213,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                 summary["create"]["model"] = [term_text(m) for m in models]
         trials = runner.trials
         summary["trials"] = summarise_trials([t.as_dict() for t in trials])
-        summary["videos"] = clips.entries
+        summary["videos"] = clips.finish()
         summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
         summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
         plot_trials([t.as_dict() for t in trials], run.path / "trials.png",

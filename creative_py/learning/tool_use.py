@@ -17,7 +17,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.learning.trials import TrialRecord, TrialRunner
@@ -64,15 +64,17 @@ class Demonstration:
 
 
 def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = None,
-                      record: Any = None, gui: bool = False) -> Demonstration:
+                      record: Any = None, gui: bool = False,
+                      verdict: Optional[Callable[[], None]] = None) -> Demonstration:
     """Run the trainer's scripted demonstration and observe after every skill.
 
     The tool, variant, location, skills and pose come from the manifest's
     ``[demonstration]``. Each step's facts are what the robot perceives (cameras) and
     feels (arm proprioception). A demonstration that fails in the physics raises
-    ValueError naming the manifest: there is nothing to learn from. With ``record``
-    (a :class:`creative_py.sim.recorder.Recorder`) its frames are rendered at the end
-    of a successful demonstration; ``gui`` shows the pybullet GUI.
+    ValueError naming the manifest: there is nothing to learn from. ``record`` (a
+    :class:`creative_py.sim.recorder.Recorder`) keeps its poses; ``verdict()`` is
+    called at the end of a successful demonstration, inside the episode (where its
+    clip is rendered); ``gui`` shows the pybullet GUI.
     """
     from creative_py.sim import open_episode
 
@@ -94,8 +96,8 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
                                  f"{res.reason}")
             before = after
         reached = ep.goal_reached()
-        if reached and record is not None:
-            record.render()  # the verdict is in: the physics is done with
+        if reached and verdict is not None:
+            verdict()  # the physics is done with
     if not reached:
         raise ValueError(f"{m.folder / 'case.toml'}: field 'demonstration': {demo.tool} at "
                          f"location {demo.location} did not reach the goal in the physics: "
@@ -144,13 +146,18 @@ class ToolUseLearner:
         run = runner.run_folder
         clips = runner.clips
         recorder = clips.recorder() if clips is not None else None
+        m = runner.manifest.demonstration
+
+        def verdict() -> None:
+            why = clips.why("demo", "success", "goal reached")
+            if why is not None:
+                clips.write(recorder, why, 0, "demo", 0, m.tool, [], "success",
+                            "goal reached", m.location)
+
         demo = run_demonstration(runner.world, seed=runner.seed,
                                  images_dir=run.snapshot_dir("demo", 0) if run else None,
-                                 record=recorder, gui=runner.gui)
-        why = clips.why("demo", "success", "goal reached") if clips is not None else None
-        if why is not None and recorder is not None:
-            clips.write(recorder, why, 0, "demo", 0, demo.tool, [], "success",
-                        "goal reached", demo.location)
+                                 record=recorder, gui=runner.gui,
+                                 verdict=verdict if recorder is not None else None)
         steps = [Compound("step", (s.skill, list(s.args),
                                    [fact_term(f) for f in s.facts_before],
                                    [fact_term(f) for f in s.facts_after]))

@@ -135,7 +135,7 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
 
 def execute_trial(world: Any, tool: str, variant: str, location: int,
                   pose: tuple[float, ...], seed: int, images_dir: Optional[Path],
-                  record: Any = None, keep: Optional[Callable[[str, str], bool]] = None,
+                  record: Any = None, verdict: Optional[Callable[[str, str], None]] = None,
                   gui: bool = False) -> Executed:
     """Run one tool-use trial in pybullet and report the outcome the physics gave.
 
@@ -143,8 +143,9 @@ def execute_trial(world: Any, tool: str, variant: str, location: int,
     tool at ``pose`` relative to the target). The observation used for learning is
     taken then, before the tool action: the state the action model's precondition
     speaks of. With a ``record`` (:class:`creative_py.sim.recorder.Recorder`) the
-    trial's poses are kept, and rendered after the verdict if ``keep(outcome, reason)``
-    says so; ``gui`` shows the pybullet GUI.
+    trial's poses are kept; ``verdict(outcome, reason)`` is called once the physics
+    has given the outcome, still inside the episode (where a kept trial's frames are
+    rendered); ``gui`` shows the pybullet GUI.
     """
     from creative_py.sim import open_episode
 
@@ -152,8 +153,8 @@ def execute_trial(world: Any, tool: str, variant: str, location: int,
     with open_episode(world, variant, location, tool, seed=seed, images_dir=images_dir,
                       gui=gui, record=record) as ep:
         ex = _act(ep, world.manifest, pose, t0)
-        if record is not None and keep is not None and keep(ex.outcome, ex.reason):
-            record.render()  # the verdict is in: the physics is done with
+        if verdict is not None:
+            verdict(ex.outcome, ex.reason)  # the physics is done with
     return ex
 
 
@@ -274,7 +275,6 @@ class TrialRunner:
         else:  # exploit
             tool, violated, pose, _req = exp.args
             tested_l = []
-        recorder, why = None, {}
         if n <= len(self.replay):
             ex = self._replayed(self.replay[n - 1], str(tool), task, pose, phase)
             if self.clips is not None:
@@ -283,16 +283,17 @@ class TrialRunner:
             images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
             recorder = self.clips.recorder() if self.clips is not None else None
 
-            def keep(outcome: str, reason: str) -> bool:
-                why["why"] = self.clips.why(phase, outcome, reason)
-                return why["why"] is not None
+            def verdict(outcome: str, reason: str) -> None:
+                why = self.clips.why(phase, outcome, reason)
+                if why is not None:
+                    self.clips.write(recorder, why, n, phase, phase_trial, str(tool),
+                                     tested_l, outcome, reason, task.location)
 
             ex = execute_trial(self.world, str(tool), task.variant, task.location,
                                pose_numbers(pose), self.seed * 1000 + n, images,
-                               record=recorder, keep=keep, gui=self.gui)
-            if why.get("why"):
-                self.clips.write(recorder, why["why"], n, phase, phase_trial, str(tool),
-                                 tested_l, ex.outcome, ex.reason, task.location)
+                               record=recorder,
+                               verdict=verdict if recorder is not None else None,
+                               gui=self.gui)
         td = time.perf_counter()
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is not None and label:

@@ -29,11 +29,13 @@ The ``[video]`` table of a world's ``scene.toml`` places the camera::
 from __future__ import annotations
 
 import math
+import os
+import sys
 import time
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping
 
 import numpy as np
 import pybullet as pb
@@ -127,6 +129,7 @@ class Recorder:
         self.snapshot_time_s = 0.0
         self.render_time_s = 0.0
         self.rendered = False
+        self.finished = False
         self.frames: list[np.ndarray] = []
         """The frames of the last :meth:`render`."""
 
@@ -148,7 +151,7 @@ class Recorder:
     def tick(self, dt: float) -> None:
         """Advance the recorder's clock by one physics step of ``dt`` seconds."""
         self.sim_time_s += dt
-        if self.sim_time_s + 1e-9 >= self._next:
+        if self.sim_time_s + 1e-9 >= self._next and not self.finished:
             self.snapshot()
 
     def snapshot(self) -> None:
@@ -195,7 +198,7 @@ class Recorder:
 
     # ----------------------------------------------------------------- rendering
     def render(self) -> list[np.ndarray]:
-        """Render one RGB frame (uint8, HxWx3) per snapshot, and take a last snapshot.
+        """Render one RGB frame (uint8, HxWx3) per snapshot, after a last one (:meth:`finish`).
 
         Call it after the trial's verdict and before the episode closes: it moves the
         bodies to each snapshot's poses (and adds the robot's stand-in), so the
@@ -203,7 +206,7 @@ class Recorder:
         """
         if self.rendered:
             raise RuntimeError("Recorder.render: the frames were rendered already")
-        self.snapshot()
+        self.finish()
         self.rendered = True
         t0 = time.perf_counter()
         c = self.client
@@ -234,6 +237,45 @@ class Recorder:
         self.render_time_s += time.perf_counter() - t0
         self.frames = frames
         return frames
+
+    def finish(self) -> None:
+        """Take the last snapshot (once): the scene as the trial left it."""
+        if not self.finished:
+            self.snapshot()
+            self.finished = True
+
+    def render_then(self, use: Callable[[list[np.ndarray], list[float]], None],
+                    background: bool = True) -> int | None:
+        """Render the frames (:meth:`render`) and hand them with their times to ``use``.
+
+        With ``background`` (and where the system can fork) this happens in a child
+        process, a copy of this one taken now, so the run goes on while the clip is
+        rendered and encoded on another core; the child exits 0 once ``use`` returned,
+        1 if anything raised (one line on stderr). Returns the child's pid, or None
+        when it ran here. The physics of this process is not touched either way in the
+        background case; in the foreground one see :meth:`render`.
+        """
+        self.finish()
+        if not (background and hasattr(os, "fork")):
+            use(self.render(), self.times)
+            return None
+        sys.stdout.flush()
+        sys.stderr.flush()
+        pid = os.fork()
+        if pid:
+            self.rendered = True  # this process's copy is done with
+            return pid
+        code = 1
+        try:
+            use(self.render(), self.times)
+            code = 0
+        except BaseException as exc:  # the child must never return into the run
+            try:
+                os.write(2, f"warning: video clip not written: {exc}\n".encode())
+            except OSError:
+                pass
+        finally:
+            os._exit(code)
 
     def _build_proxies(self) -> list[tuple[int, int]]:
         """Create one visual-only body (no collision shape, no mass) per robot shape;
