@@ -34,8 +34,9 @@ PHASE_TAGS = {"demo": "DEMO", "use": "TUL", "create": "TC", "eval": "EVAL"}
 
 
 def failure_reason(outcome: str, reason: str) -> str:
-    """Return the failure class of a trial: its outcome and reason without numbers."""
-    text = re.sub(r"[-+]?\d+(\.\d+)?", "N", reason or "")
+    """Return the failure class of a trial: its outcome and reason, each number (not a
+    name's digits: ``cube1`` stays) written N."""
+    text = re.sub(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?![\w.])", "N", reason or "")
     return f"{outcome}: {' '.join(text.split())}" if text else outcome
 
 
@@ -94,11 +95,13 @@ class ClipKeeper:
             why = "demonstration"
         elif phase == "create":
             why = "creation"
-        if outcome == "success":
+        if phase == "demo":
+            pass  # the trainer's, not a trial: the first success is the robot's own
+        elif outcome == "success":
             if not self.succeeded:
                 why = why or "first_success"
             self.succeeded = True
-        elif phase != "demo":
+        else:
             cls = failure_reason(outcome, reason)
             if cls not in self.seen:
                 why = why or f"failure:{cls}"
