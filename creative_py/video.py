@@ -37,6 +37,18 @@ def _font(size: int):
     return ImageFont.truetype(str(path), size)
 
 
+def prepare() -> None:
+    """Import the encoder and load the font now (a forked clip process then inherits
+    them instead of loading them once per clip)."""
+    import imageio.plugins.ffmpeg  # noqa: F401
+    import imageio.v2  # noqa: F401
+    import imageio_ffmpeg
+    from PIL import Image, ImageDraw  # noqa: F401
+
+    imageio_ffmpeg.get_ffmpeg_exe()
+    _font(LINE_PX)
+
+
 def band_height(n_lines: int, line_px: int = LINE_PX) -> int:
     """Return the height (pixels) of the caption band for ``n_lines`` lines."""
     return (n_lines * (line_px + 2)) + 6 if n_lines else 0

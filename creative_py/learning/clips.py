@@ -75,6 +75,10 @@ class ClipKeeper:
         self.background = background
         self.max_children = max_children
         self.children: dict[int, str] = {}
+        if self.mode != "none":
+            from creative_py.video import prepare
+
+            prepare()
 
     def recorder(self):
         """Return a new recorder for one trial, or None when nothing is recorded."""
