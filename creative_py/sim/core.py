@@ -70,6 +70,19 @@ class Sim:
         if self.gui:
             pb.configureDebugVisualizer(pb.COV_ENABLE_GUI, 0, physicsClientId=c)
 
+    def look_at(self, eye: Point, target: Point) -> None:
+        """Point the GUI's camera from ``eye`` at ``target`` (world, m); no-op without GUI."""
+        if not self.gui:
+            return
+        v = [e - t for e, t in zip(eye, target)]
+        d = math.sqrt(sum(x * x for x in v))
+        if d < 1e-9:
+            return
+        pb.resetDebugVisualizerCamera(
+            cameraDistance=d, cameraYaw=math.degrees(math.atan2(v[0], -v[1])),
+            cameraPitch=-math.degrees(math.asin(max(-1.0, min(1.0, v[2] / d)))),
+            cameraTargetPosition=list(target), physicsClientId=self.client)
+
     @property
     def time(self) -> float:
         """Return the simulated time since the client started, seconds."""

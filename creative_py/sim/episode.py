@@ -163,6 +163,9 @@ class Episode:
         self._steps_at_switch = 0
         self.sim = Sim(world.physics["arm"], gui=gui)
         try:
+            if self.sim.gui and world.scene.video is not None:
+                cam = world.scene.video.camera  # the GUI shows what the clips show
+                self.sim.look_at(cam.eye, cam.target)
             self._build()
             if record is not None:
                 robot = self.robot
