@@ -123,6 +123,7 @@ class Recorder:
         self.client = -1
         self.robot = -1
         self.shapes: list[_Shape] = []
+        self._links: list[int] = []
         self.snapshots: list[_Snapshot] = []
         self.sim_time_s = 0.0
         self._next = 0.0
@@ -146,6 +147,9 @@ class Recorder:
         self.robot = -1 if robot is None else robot
         if robot is not None and stand_in is not None:
             self.shapes = urdf_shapes(client, robot, stand_in)
+        self._links = sorted({s.link for s in self.shapes if s.link >= 0})
+        if robot is not None and self.shapes:
+            self._base_inertial = pb.getDynamicsInfo(robot, -1, physicsClientId=client)[3:5]
         self.snapshot()
 
     def tick(self, dt: float) -> None:
@@ -163,16 +167,17 @@ class Recorder:
         for i in range(pb.getNumBodies(physicsClientId=c)):
             b = pb.getBodyUniqueId(i, physicsClientId=c)
             pos, orn = pb.getBasePositionAndOrientation(b, physicsClientId=c)
+            if b == self.robot and self.shapes:
+                # Drawn by its stand-in: the link frames as the last step left them.
+                states = pb.getLinkStates(b, self._links, physicsClientId=c)
+                links = {j: (tuple(s[4]), tuple(s[5])) for j, s in zip(self._links, states)}
+                links[-1] = self._base_frame(b, pos, orn)
+                bodies[b] = (tuple(pos), tuple(orn), [])
+                continue
             n = pb.getNumJoints(b, physicsClientId=c)
             q = ([s[0] for s in pb.getJointStates(b, list(range(n)), physicsClientId=c)]
                  if n else [])
             bodies[b] = (tuple(pos), tuple(orn), q)
-            if b == self.robot and self.shapes:
-                wanted = sorted({s.link for s in self.shapes if s.link >= 0})
-                states = pb.getLinkStates(b, wanted, computeForwardKinematics=True,
-                                          physicsClientId=c) if wanted else []
-                links = {j: (tuple(s[4]), tuple(s[5])) for j, s in zip(wanted, states)}
-                links[-1] = self._base_frame(b, pos, orn)
         if self.shapes and self.robot not in bodies and self.snapshots:
             links = self.snapshots[-1].links  # taken out of the physics: it stays put
         self.snapshots.append(_Snapshot(self.sim_time_s, bodies, links))
@@ -181,8 +186,7 @@ class Recorder:
 
     def _base_frame(self, body: int, pos, orn) -> tuple[tuple, tuple]:
         """Return the base link's frame from its centre-of-mass pose."""
-        info = pb.getDynamicsInfo(body, -1, physicsClientId=self.client)
-        inv = pb.invertTransform(info[3], info[4])
+        inv = pb.invertTransform(*self._base_inertial)
         p, q = pb.multiplyTransforms(pos, orn, inv[0], inv[1])
         return tuple(p), tuple(q)
 
