@@ -48,16 +48,13 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(trials) + 2.5),
                                     1.6 + 0.38 * len(tools) + 0.045 * longest))
     seen = set()
-    labels = []
     for i, t in enumerate(trials, start=1):
         style = dict(MARKERS.get(t["outcome"], MARKERS["invalid"]))
         label = style.pop("label")
         y = tools.index(t["tool"])
         ax.scatter([i], [y], s=70, label=None if label in seen else label, **style)
         seen.add(label)
-        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t["phase"], t["phase"])
-        tested = ", ".join(t.get("tested") or [])
-        labels.append(f"{tag} {t.get('phase_trial', i)}" + (f"  {tested}" if tested else ""))
+    labels = trial_labels(trials)
     # Shade the tool-creation trials and mark the task variant changes.
     tc = [i for i, t in enumerate(trials, start=1) if t["phase"] == "create"]
     if tc:
@@ -80,6 +77,17 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return Path(path)
+
+
+def trial_labels(trials: list[dict[str, Any]]) -> list[str]:
+    """Return each trial's label in the plot: phase tag, trial number in its phase and
+    the literal it tested (``TUL 2  hook_down(hook_a2)``; the model's trials test none)."""
+    out = []
+    for i, t in enumerate(trials, start=1):
+        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t["phase"], t["phase"])
+        tested = ", ".join(t.get("tested") or [])
+        out.append(f"{tag} {t.get('phase_trial', i)}" + (f"  {tested}" if tested else ""))
+    return out
 
 
 def summarise_trials(trials: list[dict[str, Any]]) -> dict[str, Any]:

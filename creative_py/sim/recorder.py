@@ -9,7 +9,8 @@ change an outcome.
 
 After the trial's verdict, :meth:`Recorder.render` puts every body back where a
 snapshot saw it and renders the video camera with the CPU renderer, one frame per
-snapshot. The robot is loaded without visual meshes (they cost 1.2 s per scene and a
+snapshot; :meth:`Recorder.render_then` does it in a forked copy of the process, so
+that the physics client of the run is never moved and the run goes on meanwhile. The robot is loaded without visual meshes (they cost 1.2 s per scene and a
 slow renderer), so the frames show a stand-in drawn from its collision shapes:
 cylinders, boxes and spheres, created only for the rendering. Whether a trial is worth
 rendering is decided once its outcome is known, so the cheap part (snapshots) runs for
@@ -18,8 +19,8 @@ every trial and the expensive part (rendering) only for the clips that are kept.
 The ``[video]`` table of a world's ``scene.toml`` places the camera::
 
     [video]
-    eye = [0.35, -1.05, 0.55]
-    target = [0.95, -0.30, -0.10]
+    eye = [1.0, -1.05, 0.75]
+    target = [0.93, -0.32, -0.10]
     fov_deg = 50.0
     width = 320
     height = 240
