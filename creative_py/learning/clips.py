@@ -158,9 +158,10 @@ class ClipKeeper:
         import logging
 
         while len(self.children) > most:
-            pid, status = os.wait()
-            name = self.children.pop(pid, None)
-            if name is not None and os.waitstatus_to_exitcode(status) != 0:
+            pid = next(iter(self.children))  # the oldest; never another process's child
+            name = self.children.pop(pid)
+            _, status = os.waitpid(pid, 0)
+            if os.waitstatus_to_exitcode(status) != 0:
                 logging.getLogger(__name__).warning("%s: the clip was not written", name)
 
     def finish(self) -> list[dict[str, Any]]:
