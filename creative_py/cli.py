@@ -80,6 +80,15 @@ def _fail(message: str) -> None:
     raise typer.Exit(code=2)
 
 
+def _need_display() -> None:
+    """Fail in one line unless pybullet's GUI can open (an X display is set)."""
+    from creative_py.sim.core import display_available
+
+    if not display_available():
+        _fail("--gui: no display to open pybullet's GUI on (DISPLAY is not set); run "
+              "without --gui, or under a display (e.g. xvfb-run)")
+
+
 @app.command()
 def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as JSON.")) -> None:
     """List the cases: id, world folder, variants (the harder one marked) and trial budget."""
@@ -142,6 +151,8 @@ def trial(
 ) -> None:
     """Run one physical trial and report its outcome (success, failure, blocked,
     unreachable or invalid)."""
+    if gui:
+        _need_display()
     with _one_line_errors(), _stdout_to_stderr():
         lines = _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
                        world, list_)
@@ -216,14 +227,24 @@ def run(
     resume: Optional[Path] = typer.Option(None, "--resume", help="Resume this interrupted "
                                           "run folder: replay its recorded trials without "
                                           "physics, then go on (its own options apply)."),
+    video: str = typer.Option("key", "--video", help="MP4 clips in videos/: key (the "
+                              "demonstration, the first success, each creation trial, the "
+                              "first trial of each failure reason), all or none."),
+    gui: bool = typer.Option(False, "--gui", help="Show the trials in pybullet's GUI "
+                             "(needs a display)."),
 ) -> None:
-    """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot)."""
+    """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot,
+    video clips)."""
     from rich.console import Console
 
     from creative_py.learning.run import RunOptions, resume_run, run_case
     from creative_py.world import WorldFileError
 
     console = Console(stderr=True)
+    if video not in ("all", "key", "none"):
+        _fail(f"--video must be all, key or none, got {video!r}")
+    if gui:
+        _need_display()
     if resume is not None:
         meta = resume / "run.json"
         if not meta.is_file():
@@ -248,7 +269,8 @@ def run(
         _fail(f"--out {out}: not a folder")
     try:
         opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
-                          consecutive=consecutive, eval_trials=eval_trials)
+                          consecutive=consecutive, eval_trials=eval_trials, video=video,
+                          gui=gui)
     except ValueError as exc:
         _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
     try:

@@ -257,7 +257,7 @@ class ToolCreator:
             name, value = d.args
             values[str(name)] = value if not isinstance(value, str) else str(value)
         kind = self._kind(struct)
-        name = f"{self.case}_new{k}""
+        name = f"{self.case}_new{k}"
         # A created tool is printed: its mass is PLA density times its volume
         # (mass None, :func:`creative_py.mesh.spec.spec_mass`), in the URDF it is
         # spawned from and so in the physics.

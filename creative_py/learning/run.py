@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, PrologError, fact_term
+from creative_py.learning.clips import VIDEO_MODES, ClipKeeper
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.run_folder import RunFolder, read_trials
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
@@ -48,6 +49,13 @@ class RunOptions:
         tool and pose choice), over the predefined locations.
     create_eval_trials : int
         Evaluation trials of a successful created tool (paper: 5).
+    video : {"key", "all", "none"}
+        Which trials are saved as MP4 clips in ``videos/``
+        (:mod:`creative_py.learning.clips`): ``key`` the demonstration, the first
+        success, every creation trial and the first trial of each failure reason;
+        ``all`` every trial; ``none`` no clip.
+    gui : bool
+        Show the trials in pybullet's GUI (needs a display).
     """
 
     seed: int = 0
@@ -56,6 +64,8 @@ class RunOptions:
     consecutive: int = 2
     eval_trials: int = 4
     create_eval_trials: int = 5
+    video: str = "key"
+    gui: bool = False
 
     def __post_init__(self) -> None:
         checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
@@ -70,6 +80,11 @@ class RunOptions:
         if self.phase not in PHASES:
             raise ValueError(f"option phase must be one of {', '.join(PHASES)}, "
                              f"got {self.phase!r}")
+        if self.video not in VIDEO_MODES:
+            raise ValueError(f"option video must be one of {', '.join(VIDEO_MODES)}, "
+                             f"got {self.video!r}")
+        if not isinstance(self.gui, bool):
+            raise ValueError(f"option gui must be true or false, got {self.gui!r}")
 
 
 def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
@@ -97,7 +112,8 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
         log.warning("%s", w)
     # Keep the readable trials only, so that the run appends after them.
     RunFolder(run_dir).rewrite_trials(trials)
-    options = RunOptions(**meta["options"])
+    # A resumed run shows no GUI: the display it was started on may be gone.
+    options = RunOptions(**{**meta["options"], "gui": False})
     world_dir = Path(meta["world"]) if meta.get("world") else None
     return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
                     resume=(run_dir, trials))
@@ -149,7 +165,11 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
     say(f"run folder {run.path}")
     try:
-        runner = TrialRunner(engine, world, run, options.seed, say, replay=replay)
+        # In the GUI the client has a thread of its own: no forking it.
+        clips = ClipKeeper(options.video, run.path, world.scene.video,
+                           background=not options.gui)
+        runner = TrialRunner(engine, world, run, options.seed, say, replay=replay,
+                             clips=clips, gui=options.gui)
         lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
                                 consecutive=options.consecutive)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
@@ -201,6 +221,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                                                           say)
         trials = runner.trials
         summary["trials"] = summarise_trials([t.as_dict() for t in trials])
+        summary["videos"] = clips.finish()
+        summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
         summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
         plot_trials([t.as_dict() for t in trials], run.path / "trials.png",
                     title=f"CREATIVE-py, {case} case, seed {options.seed}")

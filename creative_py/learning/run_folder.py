@@ -9,6 +9,7 @@ Layout (docs/architecture.md, section 5)::
     <run>/problem.pddl        PDDL problem of the last task
     <run>/trials.png          outcomes per trial in the style of the paper's Figures 5 and 6
     <run>/snapshots/          camera frames of each trial
+    <run>/videos/             MP4 clips of the kept trials (creative_py.learning.clips)
     <run>/tools/<name>.*      created tools (urdf, sdf, scad, stl, png)
     <run>/summary.json        trials per phase, successes, created tools, wall time per phase
     <run>/report.html         the run on one page (creative_py.report.page), written last

@@ -17,7 +17,7 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.learning.trials import TrialRecord, TrialRunner
@@ -63,14 +63,18 @@ class Demonstration:
     goal_reached: bool
 
 
-def run_demonstration(world: Any, seed: int = 0,
-                      images_dir: Optional[Path] = None) -> Demonstration:
+def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = None,
+                      record: Any = None, gui: bool = False,
+                      verdict: Optional[Callable[[], None]] = None) -> Demonstration:
     """Run the trainer's scripted demonstration and observe after every skill.
 
     The tool, variant, location, skills and pose come from the manifest's
     ``[demonstration]``. Each step's facts are what the robot perceives (cameras) and
     feels (arm proprioception). A demonstration that fails in the physics raises
-    ValueError naming the manifest: there is nothing to learn from.
+    ValueError naming the manifest: there is nothing to learn from. ``record`` (a
+    :class:`creative_py.sim.recorder.Recorder`) keeps its poses; ``verdict()`` is
+    called at the end of a successful demonstration, inside the episode (where its
+    clip is rendered); ``gui`` shows the pybullet GUI.
     """
     from creative_py.sim import open_episode
 
@@ -78,7 +82,7 @@ def run_demonstration(world: Any, seed: int = 0,
     demo = m.demonstration
     steps: list[DemoStep] = []
     with open_episode(world, demo.variant, demo.location, demo.tool, seed=seed,
-                      images_dir=images_dir) as ep:
+                      images_dir=images_dir, gui=gui, record=record) as ep:
         before = tuple(ep.observe().facts)
         for name in demo.steps:
             skill = m.skill(name)
@@ -92,6 +96,8 @@ def run_demonstration(world: Any, seed: int = 0,
                                  f"{res.reason}")
             before = after
         reached = ep.goal_reached()
+        if reached and verdict is not None:
+            verdict()  # the physics is done with
     if not reached:
         raise ValueError(f"{m.folder / 'case.toml'}: field 'demonstration': {demo.tool} at "
                          f"location {demo.location} did not reach the goal in the physics: "
@@ -136,9 +142,22 @@ class ToolUseLearner:
         Returns the new models, the example clause for the version space and the
         demonstrated tool.
         """
-        run = self.runner.run_folder
-        demo = run_demonstration(self.runner.world, seed=self.runner.seed,
-                                 images_dir=run.snapshot_dir("demo", 0) if run else None)
+        runner = self.runner
+        run = runner.run_folder
+        clips = runner.clips
+        recorder = clips.recorder() if clips is not None else None
+        m = runner.manifest.demonstration
+
+        def verdict() -> None:
+            why = clips.why("demo", "success", "goal reached")
+            if why is not None:
+                clips.write(recorder, why, 0, "demo", 0, m.tool, [], "success",
+                            "goal reached", m.location)
+
+        demo = run_demonstration(runner.world, seed=runner.seed,
+                                 images_dir=run.snapshot_dir("demo", 0) if run else None,
+                                 record=recorder, gui=runner.gui,
+                                 verdict=verdict if recorder is not None else None)
         steps = [Compound("step", (s.skill, list(s.args),
                                    [fact_term(f) for f in s.facts_before],
                                    [fact_term(f) for f in s.facts_after]))

@@ -32,6 +32,7 @@ from typing import Any, Callable, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.case import CaseManifest
+from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.run_folder import RunFolder
 
 log = logging.getLogger(__name__)
@@ -136,48 +137,62 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
 
 
 def execute_trial(world: Any, tool: str, variant: str, location: int,
-                  pose: tuple[float, ...], seed: int, images_dir: Optional[Path]) -> Executed:
+                  pose: tuple[float, ...], seed: int, images_dir: Optional[Path],
+                  record: Any = None, verdict: Optional[Callable[[str, str], None]] = None,
+                  gui: bool = False) -> Executed:
     """Run one tool-use trial in pybullet and report the outcome the physics gave.
 
     The manifest's skills run in order up to the tool action (the pose skill puts the
     tool at ``pose`` relative to the target). The observation used for learning is
     taken then, before the tool action: the state the action model's precondition
-    speaks of.
+    speaks of. With a ``record`` (:class:`creative_py.sim.recorder.Recorder`) the
+    trial's poses are kept; ``verdict(outcome, reason)`` is called once the physics
+    has given the outcome, still inside the episode (where a kept trial's frames are
+    rendered); ``gui`` shows the pybullet GUI.
     """
     from creative_py.sim import open_episode
 
-    m: CaseManifest = world.manifest
     t0 = time.perf_counter()
+    with open_episode(world, variant, location, tool, seed=seed, images_dir=images_dir,
+                      gui=gui, record=record) as ep:
+        ex = _act(ep, world.manifest, pose, t0)
+        if verdict is not None:
+            verdict(ex.outcome, ex.reason)  # the physics is done with
+    return ex
+
+
+def _act(ep: Any, m: CaseManifest, pose: tuple[float, ...], t0: float) -> Executed:
+    """Run the manifest's skills in an episode (wall time from ``t0``); see
+    :func:`execute_trial`."""
     facts: list[tuple] = []
     action = next(s for s in m.skills if s.tool_action)
-    with open_episode(world, variant, location, tool, seed=seed, images_dir=images_dir) as ep:
-        for skill in m.skills[:m.skills.index(action)]:
-            res = ep.run_skill(skill.name, pose=pose if skill.pose else None)
-            if res.status != "ok":
-                # What the robot sees where the motion stopped: the catalogue and the
-                # task's facts still describe the trial (a planned example needs them).
-                facts = list(ep.observe().facts) if res.status == "blocked" else facts
-                return Executed(res.status, res.reason, facts,
-                                ep.sim_time(), time.perf_counter() - t0)
-        facts = list(ep.observe().facts)
-        res = ep.run_skill(action.name)
-        load = ep.tool_load.to_dict()
+    for skill in m.skills[:m.skills.index(action)]:
+        res = ep.run_skill(skill.name, pose=pose if skill.pose else None)
         if res.status != "ok":
-            if res.status == "blocked":
-                # Blocked while acting: the tool could not carry out the action; the
-                # physics says whether the goal was reached with this tool and pose.
-                outcome = "success" if ep.goal_reached() else "failure"
-                return Executed(outcome, res.reason, facts, ep.sim_time(),
-                                time.perf_counter() - t0, tool_load=load)
-            return Executed(res.status, res.reason, facts, ep.sim_time(),
+            # What the robot sees where the motion stopped: the catalogue and the
+            # task's facts still describe the trial (a planned example needs them).
+            facts = list(ep.observe().facts) if res.status == "blocked" else facts
+            return Executed(res.status, res.reason, facts,
+                            ep.sim_time(), time.perf_counter() - t0)
+    facts = list(ep.observe().facts)
+    res = ep.run_skill(action.name)
+    load = ep.tool_load.to_dict()
+    if res.status != "ok":
+        if res.status == "blocked":
+            # Blocked while acting: the tool could not carry out the action; the
+            # physics says whether the goal was reached with this tool and pose.
+            outcome = "success" if ep.goal_reached() else "failure"
+            return Executed(outcome, res.reason, facts, ep.sim_time(),
                             time.perf_counter() - t0, tool_load=load)
-        ok = ep.goal_reached()
-        final = ep.observe()
-        return Executed("success" if ok else "failure",
-                        "goal reached" if ok else "goal not reached", facts,
-                        ep.sim_time(), time.perf_counter() - t0,
-                        perceived_final=final.perceived_poses() if final.frames else {},
-                        tool_load=load)
+        return Executed(res.status, res.reason, facts, ep.sim_time(),
+                        time.perf_counter() - t0, tool_load=load)
+    ok = ep.goal_reached()
+    final = ep.observe()
+    return Executed("success" if ok else "failure",
+                    "goal reached" if ok else "goal not reached", facts,
+                    ep.sim_time(), time.perf_counter() - t0,
+                    perceived_final=final.perceived_poses() if final.frames else {},
+                    tool_load=load)
 
 
 class TrialRunner:
@@ -201,11 +216,17 @@ class TrialRunner:
         ``len(replay)`` trials take their outcome and observed facts from these records
         instead of the physics, so the version space is rebuilt exactly; the decisions
         are Prolog's again and must name the recorded tool and pose.
+    clips : ClipKeeper or None
+        Which trials become video clips (:mod:`creative_py.learning.clips`); None
+        records none.
+    gui : bool
+        Show every trial in the pybullet GUI (needs a display).
     """
 
     def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
                  progress: Optional[Callable[[str], None]] = None,
-                 replay: Sequence[dict[str, Any]] = ()) -> None:
+                 replay: Sequence[dict[str, Any]] = (), clips: Optional[ClipKeeper] = None,
+                 gui: bool = False) -> None:
         self.engine = engine
         self.world = world
         self.run_folder = run
@@ -213,6 +234,8 @@ class TrialRunner:
         self.progress = progress or (lambda _msg: None)
         self.trials: list[TrialRecord] = []
         self.replay = list(replay)
+        self.clips = clips
+        self.gui = gui
 
     @property
     def manifest(self) -> CaseManifest:
@@ -259,10 +282,23 @@ class TrialRunner:
             tested_l = []
         if n <= len(self.replay):
             ex = self._replayed(self.replay[n - 1], str(tool), task, pose, phase)
+            if self.clips is not None:
+                self.clips.replayed(self.replay[n - 1])
         else:
             images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
+            recorder = self.clips.recorder() if self.clips is not None else None
+
+            def verdict(outcome: str, reason: str) -> None:
+                why = self.clips.why(phase, outcome, reason)
+                if why is not None:
+                    self.clips.write(recorder, why, n, phase, phase_trial, str(tool),
+                                     tested_l, outcome, reason, task.location)
+
             ex = execute_trial(self.world, str(tool), task.variant, task.location,
-                               pose_numbers(pose), self.seed * 1000 + n, images)
+                               pose_numbers(pose), self.seed * 1000 + n, images,
+                               record=recorder,
+                               verdict=verdict if recorder is not None else None,
+                               gui=self.gui)
         td = time.perf_counter()
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is not None and label:

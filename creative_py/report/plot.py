@@ -3,8 +3,8 @@
 The trial plot follows the paper's Figures 5 and 6: trial number on the x axis (tool-use
 learning trials "TUL", then tool-creation trials "TC"), the tool used on the y axis, and
 each trial drawn as a filled marker (success) or a cross (failure), with blocked,
-unreachable and invalid outcomes marked separately. Evaluation trials (no learning) are
-labelled "EV".
+unreachable and invalid outcomes marked separately; each trial's label names the literal
+it tested. Evaluation trials (no learning) are labelled "EV".
 """
 
 from __future__ import annotations
@@ -27,8 +27,8 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     Parameters
     ----------
     trials : list of dict
-        Records of ``trials.jsonl``; keys used: ``phase``, ``tool``, ``outcome``,
-        ``variant``.
+        Records of ``trials.jsonl``; keys used: ``phase``, ``phase_trial``, ``tool``,
+        ``tested`` (written under each trial), ``outcome``.
     path : Path
         PNG file to write.
     title : str
@@ -43,24 +43,26 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     for t in trials:
         if t["tool"] not in tools:
             tools.append(t["tool"])
-    fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(trials) + 2.5), 1.2 + 0.38 * len(tools)))
+    longest = max((len(", ".join(t.get("tested") or [])) for t in trials), default=0)
+    # Room under the axis for the slanted labels (about 0.045 inch per character).
+    fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(trials) + 2.5),
+                                    1.6 + 0.38 * len(tools) + 0.045 * longest))
     seen = set()
-    labels = []
     for i, t in enumerate(trials, start=1):
         style = dict(MARKERS.get(t["outcome"], MARKERS["invalid"]))
         label = style.pop("label")
         y = tools.index(t["tool"])
         ax.scatter([i], [y], s=70, label=None if label in seen else label, **style)
         seen.add(label)
-        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t["phase"], t["phase"])
-        labels.append(f"{tag} {t.get('phase_trial', i)}")
+    labels = trial_labels(trials)
     # Shade the tool-creation trials and mark the task variant changes.
     tc = [i for i, t in enumerate(trials, start=1) if t["phase"] == "create"]
     if tc:
         ax.axvspan(min(tc) - 0.5, max(tc) + 0.5, color="tab:blue", alpha=0.08, lw=0)
         ax.text(min(tc) - 0.4, len(tools) - 0.6, "tool creation", fontsize=8, color="tab:blue")
     ax.set_xticks(range(1, len(trials) + 1))
-    ax.set_xticklabels(labels, rotation=60, fontsize=7)
+    # Each trial's tick names the literal it tested (the model's own trials test none).
+    ax.set_xticklabels(labels, rotation=50, ha="right", rotation_mode="anchor", fontsize=7)
     ax.set_yticks(range(len(tools)))
     ax.set_yticklabels(tools, fontsize=8)
     ax.set_ylim(-0.6, len(tools) - 0.4)
@@ -75,6 +77,17 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return Path(path)
+
+
+def trial_labels(trials: list[dict[str, Any]]) -> list[str]:
+    """Return each trial's label in the plot: phase tag, trial number in its phase and
+    the literal it tested (``TUL 2  hook_down(hook_a2)``; the model's trials test none)."""
+    out = []
+    for i, t in enumerate(trials, start=1):
+        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t["phase"], t["phase"])
+        tested = ", ".join(t.get("tested") or [])
+        out.append(f"{tag} {t.get('phase_trial', i)}" + (f"  {tested}" if tested else ""))
+    return out
 
 
 def summarise_trials(trials: list[dict[str, Any]]) -> dict[str, Any]:

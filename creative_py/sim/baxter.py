@@ -258,7 +258,9 @@ class Baxter:
     def __init__(self, sim: Sim, config: BaxterConfig = BaxterConfig()) -> None:
         self.sim = sim
         self.config = config
-        self.model = _Model(sim.client, baxter_urdf(config.visuals))
+        self.urdf = baxter_urdf(config.visuals)
+        """The URDF file the robot was loaded from."""
+        self.model = _Model(sim.client, self.urdf)
         self.body = self.model.body
         self._kin_client = pb.connect(pb.DIRECT)
         self.kin = _Model(self._kin_client, baxter_urdf(False))

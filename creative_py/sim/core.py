@@ -58,6 +58,8 @@ class Sim:
         self.after_step: list = []
         """Callables run after every physics step (e.g. a
         :class:`creative_py.sim.loads.ToolLoadMonitor`); they only read the state."""
+        self.recorder = None
+        """A :class:`~creative_py.sim.recorder.Recorder` fed after every step, or None."""
         self.configure()
 
     def configure(self) -> None:
@@ -71,6 +73,19 @@ class Sim:
         if self.gui:
             pb.configureDebugVisualizer(pb.COV_ENABLE_GUI, 0, physicsClientId=c)
 
+    def look_at(self, eye: Point, target: Point) -> None:
+        """Point the GUI's camera from ``eye`` at ``target`` (world, m); no-op without GUI."""
+        if not self.gui:
+            return
+        v = [e - t for e, t in zip(eye, target)]
+        d = math.sqrt(sum(x * x for x in v))
+        if d < 1e-9:
+            return
+        pb.resetDebugVisualizerCamera(
+            cameraDistance=d, cameraYaw=math.degrees(math.atan2(v[0], -v[1])),
+            cameraPitch=-math.degrees(math.asin(max(-1.0, min(1.0, v[2] / d)))),
+            cameraTargetPosition=list(target), physicsClientId=self.client)
+
     @property
     def time(self) -> float:
         """Return the simulated time since the client started, seconds."""
@@ -78,16 +93,20 @@ class Sim:
 
     def step(self, n: int = 1) -> None:
         """Advance the physics by ``n`` time steps."""
-        if not self.after_step:
+        rec = self.recorder
+        if not self.after_step and rec is None:
             for _ in range(n):
                 pb.stepSimulation(physicsClientId=self.client)
             self.steps += n
             return
+        dt = self.physics.time_step
         for _ in range(n):
             pb.stepSimulation(physicsClientId=self.client)
             self.steps += 1
             for callback in tuple(self.after_step):
                 callback()
+            if rec is not None:
+                rec.tick(dt)
 
     def pose(self, body: int, link: int = -1) -> Pose:
         """Return the world pose of a body's base (link -1) or of one of its links."""
@@ -134,13 +153,14 @@ class Sim:
     def saved(self) -> Iterator[int]:
         """Save the state on entry and restore it on exit (a try that leaves no trace)."""
         state = self.save_state()
-        steps = self.steps
+        steps, recorder = self.steps, self.recorder
+        self.recorder = None  # what is tried here is no part of the trial's clip
         try:
             yield state
         finally:
             self.restore_state(state)
             self.remove_state(state)
-            self.steps = steps
+            self.steps, self.recorder = steps, recorder
 
     def close(self) -> None:
         """Disconnect the client (idempotent)."""

@@ -42,6 +42,7 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.sim.loads import ToolLoad, ToolLoadMonitor
+from creative_py.sim.recorder import Recorder
 from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult
 from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
@@ -81,7 +82,7 @@ def prolog_pose_target(case_id: str, pose_term: str) -> PoseTarget:
 def open_episode(world: World, variant: str, location: int, tool: str, seed: int = 0,
                  gui: bool = False, images_dir: Path | None = None,
                  pose_target: PoseTarget | None = None, *,
-                 robot: bool = True) -> Iterator["Episode"]:
+                 robot: bool = True, record: "Recorder | None" = None) -> Iterator["Episode"]:
     """Build the scene and yield an :class:`Episode`; close it on exit.
 
     Parameters
@@ -106,9 +107,14 @@ def open_episode(world: World, variant: str, location: int, tool: str, seed: int
     robot : bool
         Build Baxter (default); without it only by-hand placing and the scene's own
         physics run (for tests of the physics alone).
+    record : Recorder or None
+        Keep the scene's poses for a video clip (:mod:`creative_py.sim.recorder`), from
+        the built scene on; render them with ``record.render()`` before the episode
+        closes. Recording only reads the physics.
     """
     ep = Episode(world, variant, location, tool, seed, gui,
-                 None if images_dir is None else Path(images_dir), pose_target, robot=robot)
+                 None if images_dir is None else Path(images_dir), pose_target, robot=robot,
+                 record=record)
     try:
         yield ep
     finally:
@@ -127,7 +133,8 @@ class Episode:
 
     def __init__(self, world: World, variant: str, location: int, tool: str, seed: int = 0,
                  gui: bool = False, images_dir: Path | None = None,
-                 pose_target: PoseTarget | None = None, *, robot: bool = True) -> None:
+                 pose_target: PoseTarget | None = None, *, robot: bool = True,
+                 record: "Recorder | None" = None) -> None:
         from creative_py.sim.core import Sim
         from creative_py.sim.scene import make_bodies
         from creative_py.sim.tools import tool_kind
@@ -158,7 +165,16 @@ class Episode:
         self._steps_at_switch = 0
         self.sim = Sim(world.physics["arm"], gui=gui)
         try:
+            if self.sim.gui and world.scene.video is not None:
+                cam = world.scene.video.camera  # the GUI shows what the clips show
+                self.sim.look_at(cam.eye, cam.target)
             self._build()
+            if record is not None:
+                robot = self.robot
+                record.attach(self.sim.client, None if robot is None else robot.body,
+                              None if robot is None or world.scene.robot.visuals
+                              else robot.urdf)
+                self.sim.recorder = record
         except BaseException:
             self.close()
             raise
@@ -464,18 +480,21 @@ class Episode:
 def run_trial(world: World, tool: str, variant: str, location: int,
               pose: Sequence[float] | None = None, seed: int = 0,
               images_dir: Path | None = None, gui: bool = False,
-              pose_target: PoseTarget | None = None) -> TrialResult:
+              pose_target: PoseTarget | None = None,
+              record: Recorder | None = None) -> TrialResult:
     """Run one physical trial: every skill of the manifest in order, then the oracle.
 
     ``pose=None`` uses the demonstration's pose. The outcome comes from the simulated
     state only: ``success``/``failure`` when every skill ran, else the status of the
-    skill that stopped (``blocked``, ``unreachable``, ``invalid``).
+    skill that stopped (``blocked``, ``unreachable``, ``invalid``). With ``record``, the
+    trial's poses are kept for a clip (rendered with ``record.render()`` at the end,
+    after the verdict).
     """
     m = world.manifest
     pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
     t0 = time.perf_counter()
     with open_episode(world, variant, location, tool, seed, gui, images_dir,
-                      pose_target) as ep:
+                      pose_target, record=record) as ep:
         outcome, reason = "success", ""
         for skill in m.skills:
             res = ep.run_skill(skill.name, pose if skill.pose else None)
@@ -497,4 +516,6 @@ def run_trial(world: World, tool: str, variant: str, location: int,
             true_final=truth, sim_time_s=ep.sim_time(), wall_time_s=0.0,
             render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
             max_tool_force_n=ep.tool_load.max_force_n, tool_load=ep.tool_load.to_dict())
+        if record is not None:
+            record.render()
     return replace(result, wall_time_s=time.perf_counter() - t0)

@@ -16,7 +16,9 @@ The folder holds, besides ``case.toml``:
     the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.sim.scene`);
     ``[tool_start]`` (where the tool lies: the fields of its kind,
     :mod:`creative_py.sim.tools`); ``[perception]`` (noise and the
-    ``[[perception.object]]`` the cameras track); ``[[camera]]``.
+    ``[[perception.object]]`` the cameras track); ``[[camera]]``; an optional
+    ``[video]`` (the fixed camera of the trial clips and their ``fps``,
+    :mod:`creative_py.sim.recorder`).
 ``objects.toml``
     The catalogue: one table per object in the array named by the manifest's
     ``roles.tools`` (``[[tool]]``, ``[[object]]``), with the spec fields of
@@ -90,6 +92,9 @@ class SceneSpec:
     noise: Any
     perceived: tuple[PerceivedObject, ...]
     cameras: tuple
+    video: Any = None
+    """The clips' camera and frame rate (:class:`~creative_py.sim.recorder.VideoSpec`):
+    the ``[video]`` table, else the first camera at 10 frames per second, else None."""
 
 
 @dataclass(frozen=True)
@@ -236,6 +241,7 @@ def _read_robot(rf: Fields) -> RobotSpec:
 def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
     from creative_py.sim.camera import cameras_from_tables
+    from creative_py.sim.recorder import VideoSpec
     from creative_py.sim.scene import read_bodies
     from creative_py.sim.tools import TOOL_KINDS
 
@@ -268,11 +274,14 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
     pf.done()
     try:
         cameras = cameras_from_tables(f.raw("camera", []), str(path))
+        table = f.raw("video", None)
+        video = (VideoSpec.from_table(table, str(path)) if table is not None
+                 else VideoSpec(cameras[0]) if cameras else None)
     except (ValueError, TypeError) as exc:
         raise WorldFileError(str(exc)) from None
     f.done()
     return SceneSpec(settle, robot, values, bodies, tool_start, noise, tuple(perceived),
-                     cameras)
+                     cameras, video)
 
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:

@@ -131,3 +131,33 @@ def test_the_run_solves_its_own_pddl_with_the_prolog_plan(short_run):
     task = parse(path / "domain.pddl", path / "problem.pddl")
     tools = {o.name for o in task.all_objects if o.type.name == "tool_object"}
     assert tools == set(load_world(get_case("rake")).catalogue)
+
+
+def test_the_short_run_keeps_its_key_trials_as_clips_that_decode(short_run):
+    # The default --video key: the demonstration, and the first trial of each failure
+    # reason; summary["videos"] names them (what the HTML report reads).
+    import imageio.v2 as imageio
+
+    from creative_py.learning.clips import failure_reason
+
+    path, trials, summary = short_run
+    videos = summary["videos"]
+    assert videos[0]["why"] == "demonstration" and videos[0]["trial"] == 0
+    reasons, expected = set(), []
+    for t in trials:
+        cls = failure_reason(t["outcome"], t["reason"])
+        if t["outcome"] != "success" and cls not in reasons:
+            expected.append((t["trial"], t["tool"], t["tested"], t["outcome"],
+                             f"failure:{cls}"))
+        reasons.add(cls)
+    assert [(v["trial"], v["tool"], v["tested"], v["outcome"], v["why"])
+            for v in videos[1:]] == expected
+    for v in videos:
+        assert set(v) >= {"file", "phase", "trial", "tool", "tested", "outcome", "why"}
+        assert v["file"].startswith("videos/") and v["file"].endswith(".mp4")
+        with imageio.get_reader(str(path / v["file"])) as reader:
+            frames = [f for f in reader]
+        assert len(frames) == v["frames"] > 0 and frames[0].shape == (240, 320, 3)
+        assert v["bytes"] == (path / v["file"]).stat().st_size
+    assert sorted(p.name for p in (path / "videos").iterdir()) == sorted(
+        v["file"].split("/")[1] for v in videos)

@@ -64,3 +64,15 @@ def test_plot_and_summary(tmp_path):
     s = summarise_trials(trials)
     assert s["use"] == {"trials": 2, "successes": 1, "outcomes": ["failure", "success"]}
     assert s["create"]["trials"] == 2 and s["eval"]["successes"] == 1
+
+
+def test_plot_labels_name_the_tested_literal():
+    from creative_py.report import trial_labels
+
+    trials = [dict(_trial(i, outcome="failure"), tested=[lit])
+              for i, lit in enumerate(["hook_down(hook_a2)", "behind(hook_a2,cube1)",
+                                       "centred_on(hook_a2,cube1)"], start=2)]
+    trials.append(_trial(5, phase="eval"))
+    labels = trial_labels(trials)
+    assert labels == ["TUL 2  hook_down(hook_a2)", "TUL 3  behind(hook_a2,cube1)",
+                      "TUL 4  centred_on(hook_a2,cube1)", "EV 5"]

@@ -1,0 +1,194 @@
+"""Which trials of a run become video clips, and the list of clips of ``summary.json``.
+
+``--video key`` (the default) keeps the demonstration, the first success, every
+tool-creation trial and the first trial of each distinct failure (its outcome and
+reason, numbers left out: two ``blocked`` trials whose gripper lagged by 3.1 and 3.4 cm
+are one reason); ``--video all`` keeps every trial; ``--video none`` records nothing.
+
+Every trial's poses are kept while it runs (cheap, :class:`creative_py.sim.recorder.
+Recorder`); once the physics has given the outcome, :meth:`ClipKeeper.why` says
+whether the trial is kept, and only a kept trial is rendered and written, as
+``videos/<trial>-<phase>-<tool>.mp4`` (the demonstration is trial 0). Each entry of
+:attr:`ClipKeeper.entries` (``summary["videos"]``) is::
+
+    {"file": "videos/002-use-hook_a2.mp4", "phase": "use", "trial": 2,
+     "tool": "hook_a2", "tested": ["hook_down(hook_a2)"], "outcome": "failure",
+     "reason": "goal not reached", "why": "failure:failure: goal not reached",
+     "frames": 83, "duration_s": 8.3, "bytes": 51234}
+
+``why`` is ``demonstration``, ``creation``, ``first_success``, ``failure:<reason>``
+or, with ``all``, ``trial`` for a trial kept only because every trial is.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+from typing import Any, Optional, Sequence
+
+VIDEO_MODES = ("all", "key", "none")
+"""The values of ``--video`` (``RunOptions.video``)."""
+
+PHASE_TAGS = {"demo": "DEMO", "use": "TUL", "create": "TC", "eval": "EVAL"}
+
+
+def failure_reason(outcome: str, reason: str) -> str:
+    """Return the failure class of a trial: its outcome and reason, each number (not a
+    name's digits: ``cube1`` stays) written N."""
+    text = re.sub(r"(?<![\w.])[-+]?\d+(?:\.\d+)?(?![\w.])", "N", reason or "")
+    return f"{outcome}: {' '.join(text.split())}" if text else outcome
+
+
+class ClipKeeper:
+    """Decides which trials become clips and writes them into ``<run>/videos/``.
+
+    Parameters
+    ----------
+    mode : {"all", "key", "none"}
+    run_dir : Path
+        The run folder.
+    spec : VideoSpec or None
+        The world's clip camera (``world.scene.video``); None records nothing.
+    background : bool
+        Render and encode each clip in a child process (forked inside the trial's
+        episode, after the verdict) while the run goes on; :meth:`finish` waits for
+        them. Off: in this process, at once.
+    max_children : int
+        Most clip processes running at once (one more waits for the oldest).
+    """
+
+    def __init__(self, mode: str, run_dir: Path, spec: Any, background: bool = True,
+                 max_children: int = 2) -> None:
+        if mode not in VIDEO_MODES:
+            raise ValueError(f"option video must be one of {', '.join(VIDEO_MODES)}, "
+                             f"got {mode!r}")
+        self.mode = mode if spec is not None else "none"
+        self.run_dir = Path(run_dir)
+        self.spec = spec
+        self.entries: list[dict[str, Any]] = []
+        self.seen: set[str] = set()
+        self.succeeded = False
+        self.wall_time_s = 0.0
+        """Wall time the run spent on clips: rendering and encoding them, or, in the
+        background, starting them and waiting for them (the snapshots aside)."""
+        self.background = background
+        self.max_children = max_children
+        self.children: dict[int, str] = {}
+        if self.mode != "none":
+            from creative_py.video import prepare
+
+            prepare()
+
+    def recorder(self):
+        """Return a new recorder for one trial, or None when nothing is recorded."""
+        if self.mode == "none":
+            return None
+        from creative_py.sim.recorder import Recorder
+
+        return Recorder(self.spec)
+
+    def why(self, phase: str, outcome: str, reason: str) -> Optional[str]:
+        """Return why the trial that just ended is kept, or None; note what it showed.
+
+        Call it once per trial, in order (replayed trials of a resumed run included),
+        so that "first" means first in the run.
+        """
+        why = None
+        if phase == "demo":
+            why = "demonstration"
+        elif phase == "create":
+            why = "creation"
+        if phase == "demo":
+            pass  # the trainer's, not a trial: the first success is the robot's own
+        elif outcome == "success":
+            if not self.succeeded:
+                why = why or "first_success"
+            self.succeeded = True
+        else:
+            cls = failure_reason(outcome, reason)
+            if cls not in self.seen:
+                why = why or f"failure:{cls}"
+            self.seen.add(cls)
+        if self.mode == "all":
+            return why or "trial"
+        return why if self.mode == "key" else None
+
+    @staticmethod
+    def file_name(trial: int, phase: str, tool: str) -> str:
+        """Return the clip's path relative to the run folder."""
+        return f"videos/{trial:03d}-{phase}-{tool}.mp4"
+
+    def write(self, recorder: Any, why: str, trial: int, phase: str, phase_trial: int,
+              tool: str, tested: Sequence[str], outcome: str, reason: str,
+              location: Any = None) -> dict[str, Any]:
+        """Render a trial's recorder and encode its frames with their caption, in a
+        child process when :attr:`background` (call it inside the trial's episode);
+        add and return the clip's entry (its ``bytes`` once :meth:`finish` ran)."""
+        import time
+
+        from creative_py.video import write_clip
+
+        t0 = time.perf_counter()
+        name = self.file_name(trial, phase, tool)
+        head = (f"#{trial} {PHASE_TAGS.get(phase, phase)} {phase_trial}  {tool}"
+                + (f"  loc {location}" if location is not None else ""))
+        lines = [head, f"tested {', '.join(tested) or '-'}",
+                 f"{outcome}" + (f": {reason}" if reason else "")]
+        path, fps = self.run_dir / name, self.spec.fps
+
+        def use(frames, times) -> None:
+            write_clip(path, frames, fps, lines, times)
+
+        if self.background:
+            self._wait(self.max_children - 1)
+        pid = recorder.render_then(use, background=self.background)
+        if pid is not None:
+            self.children[pid] = name
+        n = len(recorder.snapshots)
+        entry = {"file": name, "phase": phase, "trial": trial, "tool": tool,
+                 "tested": list(tested), "outcome": outcome, "reason": reason, "why": why,
+                 "frames": n, "duration_s": round(n / fps, 2), "bytes": None}
+        self.entries.append(entry)
+        self.wall_time_s += time.perf_counter() - t0
+        return entry
+
+    def _wait(self, most: int) -> None:
+        """Wait for clip processes until at most ``most`` are still running."""
+        import logging
+
+        while len(self.children) > most:
+            pid = next(iter(self.children))  # the oldest; never another process's child
+            name = self.children.pop(pid)
+            _, status = os.waitpid(pid, 0)
+            if os.waitstatus_to_exitcode(status) != 0:
+                logging.getLogger(__name__).warning("%s: the clip was not written", name)
+
+    def finish(self) -> list[dict[str, Any]]:
+        """Wait for every clip being written; drop the entries of clips that failed,
+        fill in the others' sizes; return :attr:`entries`."""
+        import time
+
+        t0 = time.perf_counter()
+        self._wait(0)
+        kept = []
+        for e in self.entries:
+            f = self.run_dir / e["file"]
+            if f.is_file():
+                e["bytes"] = f.stat().st_size
+                kept.append(e)
+        self.entries = kept
+        self.wall_time_s += time.perf_counter() - t0
+        return kept
+
+    def replayed(self, record: dict[str, Any]) -> None:
+        """Account for a trial of a resumed run (no physics): note its outcome and keep
+        the entry of its clip if the interrupted run wrote one."""
+        why = self.why(record["phase"], record["outcome"], record.get("reason", ""))
+        name = self.file_name(int(record["trial"]), record["phase"], record["tool"])
+        if why is not None and (self.run_dir / name).is_file():
+            self.entries.append({"file": name, "phase": record["phase"],
+                                 "trial": int(record["trial"]), "tool": record["tool"],
+                                 "tested": list(record.get("tested") or []),
+                                 "outcome": record["outcome"],
+                                 "reason": record.get("reason", ""), "why": why})
