@@ -18,7 +18,7 @@ from typing import Any, Callable, Optional
 from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.run_folder import RunFolder, read_trials
-from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
+from creative_py.learning.tool_use import STRATEGIES, LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 
@@ -47,6 +47,9 @@ class RunOptions:
         tool and pose choice), over the predefined locations.
     create_eval_trials : int
         Evaluation trials of a successful created tool (paper: 5).
+    strategy : {"paper", "informative", "random"}
+        How tool-use learning chooses its experiments (:data:`STRATEGIES`,
+        :mod:`creative_py.learning.tool_use`).
     """
 
     seed: int = 0
@@ -55,6 +58,7 @@ class RunOptions:
     consecutive: int = 2
     eval_trials: int = 4
     create_eval_trials: int = 5
+    strategy: str = "informative"
 
     def __post_init__(self) -> None:
         checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
@@ -69,6 +73,9 @@ class RunOptions:
         if self.phase not in PHASES:
             raise ValueError(f"option phase must be one of {', '.join(PHASES)}, "
                              f"got {self.phase!r}")
+        if self.strategy not in STRATEGIES:
+            raise ValueError(f"option strategy must be one of {', '.join(STRATEGIES)}, "
+                             f"got {self.strategy!r}")
 
 
 def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
@@ -96,7 +103,8 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
         log.warning("%s", w)
     # Keep the readable trials only, so that the run appends after them.
     RunFolder(run_dir).rewrite_trials(trials)
-    options = RunOptions(**meta["options"])
+    # A run recorded before there were strategies ran the paper's Algorithm 1.
+    options = RunOptions(**{"strategy": "paper", **meta["options"]})
     world_dir = Path(meta["world"]) if meta.get("world") else None
     return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
                     resume=(run_dir, trials))
@@ -147,7 +155,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     try:
         runner = TrialRunner(engine, world, run, options.seed, say, replay=replay)
         lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
-                                consecutive=options.consecutive)
+                                consecutive=options.consecutive, strategy=options.strategy)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                    "options": asdict(options), "wall_time_s": {}}
 
@@ -157,7 +165,16 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
         summary["demonstration"] = {"tool": use.demo_tool}
         summary["use"] = {"trials": len(use.trials), "converged": use.converged,
-                          "trials_to_converge": use.trials_to_converge}
+                          "trials_to_converge": use.trials_to_converge,
+                          "strategy": options.strategy, "stop": use.stop}
+        # The version space after the demonstration, and the information-theoretic
+        # bound: with binary outcomes, telling N0 hypotheses apart in the worst case
+        # takes ceil(log2 N0) trials.
+        summary["vs_count_initial"] = use.vs_count_initial
+        summary["vs_count_initial_exact"] = use.vs_count_initial_exact
+        summary["info_bound_trials"] = (use.vs_count_initial - 1).bit_length()
+        summary["vs_count_final"] = (use.trials[-1].extra.get("vs_count")
+                                     if use.trials else use.vs_count_initial)
         engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
         hs, hg = runner.bounds(use.vs)
         summary["hypotheses"] = {"hs": hs, "hg": hg}
