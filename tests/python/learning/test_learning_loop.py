@@ -30,7 +30,8 @@ def short_run(tmp_path_factory):
 def test_the_budget_bounds_the_trials_and_each_tests_one_literal(short_run):
     _, trials, summary = short_run
     assert [t["phase"] for t in trials] == ["use"] * 3
-    assert summary["use"] == {"trials": 3, "converged": False, "trials_to_converge": None}
+    assert summary["use"] == {"trials": 3, "converged": False, "trials_to_converge": None,
+                              "strategy": "informative", "stop": "budget"}
     assert all(len(t["tested"]) == 1 for t in trials)
 
 
