@@ -309,12 +309,16 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
     case_answer(untestable_literals(Case, Untestable)),
     option(skip(Skip), Options, []),
     (   Strategy == informative,
-        informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context, Skip,
-                                Chosen, Pose)
-    ->  Chosen = cand(L, O, Req, Neg, Viol),
-        Result = experiment(O, L, Viol, Pose, Req, Neg)
-    ;   Strategy \== informative,
-        unknown_literals_(HS, HG, Unknown),
+        vs_space(VS, _, _, Cs),
+        ord_union(Cs, Used),
+        length(Used, NUsed),
+        NUsed =< 20                 % the count is exact (vs_count/3)
+    ->  (   informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context,
+                                    Skip, cand(L, O, Req, Neg, Viol), Pose)
+        ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
+        ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
+        )
+    ;   unknown_literals_(HS, HG, Unknown),
         findall(Score-cand(L, O, Req, Neg, Viol),
                 candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
                            L, O, Req, Neg, Viol, Score),
@@ -328,9 +332,11 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
     ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
     ).
 
-%   The paper keeps its order; random draws among distinct experiments (one object at
-%   one pose is one experiment, whichever of its violated literals names it).
+%   The paper keeps its order (so does informative when its count would not be
+%   exact); random draws among distinct experiments (one object at one pose is one
+%   experiment, whichever of its violated literals names it).
 strategy_order_(paper, Cands, Cands).
+strategy_order_(informative, Cands, Cands).
 strategy_order_(random(Seed), Cands0, Cands) :-
     must_be(integer, Seed),
     distinct_experiments_(Cands0, [], Distinct),
@@ -366,15 +372,12 @@ distinct_experiments_([C|Cs], Seen, Out) :-
 %   literals of h_s, and to the object's name. An experiment whose outcome every
 %   hypothesis agrees on (N_s = 0 or N_s = N) cannot change the version space and is
 %   not a candidate: when none is left (or none has a feasible pose), the predicate
-%   fails, which is the certified stop. Beyond 20 literals in the negatives'
-%   violation sets the count is not exact (vs_count/3) and the predicate fails too,
-%   leaving the choice to the paper's order.
+%   fails, which is the certified stop. next_experiment/6 calls it only while the
+%   count is exact (at most 20 literals in the negatives' violation sets, vs_count/3);
+%   beyond, it takes the paper's order.
 informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context, Skip,
                         Chosen, Pose) :-
     vs_space(VS, HS, Lits, Cs),
-    ord_union(Cs, Used),
-    length(Used, NUsed),
-    NUsed =< 20,
     clause_head_body_(HS, Head, _),
     Head =.. [_, _, Target, Ctx],
     maplist(literal_prior(Head), Lits, Priors),

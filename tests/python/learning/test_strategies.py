@@ -1,7 +1,8 @@
 """The learning loop (:class:`ToolUseLearner`) with each experiment strategy, in the physics.
 
 Short real runs of the rake case (about a second a trial): ``informative`` to its
-certified stop, ``paper`` and ``random`` for a few trials. The checks are on what the
+certified stop and ``random`` for a few trials (``test_learning_loop.py`` runs
+``paper``). The checks are on what the
 loop does with Prolog's choices: when it stops, what it records (the version space's
 count after every trial), and that ``random`` only draws experiments h_g covers.
 """
@@ -60,14 +61,6 @@ def test_informative_records_the_count_after_every_trial(informative):
     steps = [use.vs_count_initial] + counts
     assert all(b < a for a, b in zip(steps, steps[1:])), steps
     assert counts[-1] >= 1
-
-
-def test_paper_tests_one_literal_per_trial_within_the_budget():
-    use = _learn("paper", 3)
-    assert use.stop == "budget" and not use.converged
-    assert [t.tool for t in use.trials] == ["rake_a1", "hook_a3", "rake_a2"]
-    assert all(len(t.tested) == 1 and len(t.violated) == 1 for t in use.trials)
-    assert all("vs_count" in t.extra for t in use.trials)
 
 
 def test_random_draws_experiments_that_hg_covers():
