@@ -133,9 +133,10 @@ class UseResult:
     demo_tool: str
     wall_time_s: float
     stop: str = "budget"
-    """Why learning stopped: ``certified`` (no experiment could change the version
-    space), ``confirmed`` (paper: nothing left to test and K successes in a row) or
-    ``budget`` (N trials)."""
+    """Why learning stopped: ``certified`` (informative: no experiment could change the
+    version space), ``exhausted`` (random: no experiment h_g covers was left),
+    ``confirmed`` (paper: nothing left to test and K successes in a row) or ``budget``
+    (N trials)."""
     vs_count_initial: int = 0
     """The hypotheses after the demonstration (``version_space:vs_count/3``)."""
     vs_count_initial_exact: bool = True
@@ -197,9 +198,10 @@ class ToolUseLearner:
                 if converged_at is None:
                     converged_at = i - 1
                 if not paper:
-                    # No experiment can change the version space: stop without
-                    # confirmation trials (evaluation confirms the model afterwards).
-                    stop = "certified"
+                    # informative: no experiment can change the version space; random:
+                    # nothing h_g covers is left. Stop without confirmation trials
+                    # (evaluation confirms the model afterwards).
+                    stop = self._stop_word()
                     break
                 if cons >= opts.consecutive:
                     stop = "confirmed"
@@ -208,13 +210,16 @@ class ToolUseLearner:
             taught = rec.outcome in ("success", "failure", "blocked")
             if exp.name == "experiment" and (not taught or not paper):
                 # Not repeated: an experiment the arm could not carry out taught
-                # nothing; and, for the other strategies, one already run gave its
-                # answer (the physics would give it again), even when what the robot
-                # observed violated other literals than planned (a half-raised prong is
-                # also seen off the cube). A pose test (a negated spatial literal) is
-                # skipped whatever the tool.
-                who = "any" if exp.args[5] else exp.args[0]
-                skip.append(Compound("skip", (who, exp.args[1])))
+                # nothing (a pose test: whatever the tool); and, for the other
+                # strategies, one already run gave its answer (the physics would give
+                # it again), even when what the robot observed violated other literals
+                # than planned (a half-raised prong is also seen off the cube). The
+                # informative strategy does not repeat a pose test with another tool
+                # either: what it shows of the pose it has shown.
+                pose_test = bool(exp.args[5])
+                any_tool = pose_test and (not taught or opts.strategy == "informative")
+                skip.append(Compound("skip", ("any" if any_tool else exp.args[0],
+                                              exp.args[1])))
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
@@ -225,15 +230,19 @@ class ToolUseLearner:
             if exp.name != "experiment" and converged_at is None:
                 converged_at = opts.max_trials
             if exp.name != "experiment" and not paper:
-                stop = "certified"
+                stop = self._stop_word()
         if paper:
             # Converged: nothing is left to test, and the model's last K trials succeeded
             # (a budget spent on trials the arm could not carry out is not convergence).
             converged = converged_at is not None and cons >= opts.consecutive
         else:
-            converged = stop == "certified"
+            converged = stop in ("certified", "exhausted")
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
                          demo_tool, time.perf_counter() - t0, stop, n0, exact0)
+
+    def _stop_word(self) -> str:
+        """Return why a non-paper strategy stopped when Prolog proposed no experiment."""
+        return "certified" if self.options.strategy == "informative" else "exhausted"
 
     def _next(self, vs: Term, task: Any, skip: list[Term], i: int) -> Term:
         """Return Prolog's choice for trial ``i`` under the options' strategy."""

@@ -66,6 +66,7 @@ def test_informative_records_the_count_after_every_trial(informative):
 def test_random_draws_experiments_that_hg_covers():
     use = _learn("random", 3, seed=1)
     assert len(use.trials) == 3 and use.stop == "budget"
+    assert len({(t.tool, tuple(t.violated)) for t in use.trials}) == 3    # no repeat
     before = "tool_pose(_G3,_G4,_G5)"
     for t in use.trials:
         assert t.kind == "experiment"
