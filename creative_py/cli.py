@@ -222,6 +222,10 @@ def run(
     consecutive: int = typer.Option(2, "--consecutive", help="K of Algorithm 1."),
     eval_trials: int = typer.Option(4, "--eval-trials", help="Evaluation trials of the "
                                     "learned model after tool-use learning."),
+    strategy: str = typer.Option("informative", "--strategy", help="How experiments are "
+                                 "chosen: informative (largest expected reduction of the "
+                                 "version space, certified stop), paper (Algorithm 1: one "
+                                 "literal per trial, K successes to stop) or random."),
     world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
                                          "shipped one of the case)."),
     resume: Optional[Path] = typer.Option(None, "--resume", help="Resume this interrupted "
@@ -270,9 +274,10 @@ def run(
     try:
         opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
                           consecutive=consecutive, eval_trials=eval_trials, video=video,
-                          gui=gui)
+                          gui=gui, strategy=strategy)
     except ValueError as exc:
-        _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
+        _fail(f"--phase: {exc}" if "phase" in str(exc) else
+              f"--strategy: {exc}" if "strategy" in str(exc) else str(exc))
     try:
         with _one_line_errors(), _stdout_to_stderr():
             folder = run_case(case, out, opts, progress=lambda m: console.print(m, markup=False,

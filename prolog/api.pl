@@ -47,13 +47,14 @@ if it needs a new module, its use_module/1 below.
 :- use_module(nbr, [nbr_reduce/3]).
 :- use_module(version_space,
               [ vs_init/2, vs_update/3, vs_bounds/3, vs_unknown/2, vs_examples/3,
-                vs_converged/1, vs_covers/3, vs_notes/2 ]).
+                vs_converged/1, vs_covers/3, vs_notes/2, vs_count/3 ]).
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4, pose_world/5]).
 :- use_module(case, [case_info/2, tool_vocabulary/2, size_context_facts/1,
                       catalogue_predicates/2, case_missing_hooks/2]).
 :- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
-                           plan_experiment/4, plan_experiment/5, plan_use/5,
+                           plan_experiment/4, plan_experiment/5, plan_experiment/6,
+                           plan_use/5,
                            label_trial/7]).
 :- use_module(creation, [next_tool/6, creation_candidates/3]).
 :- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6,
@@ -104,6 +105,7 @@ api_op(vs_examples(VS), examples(Pos, Neg), vs_examples(VS, Pos, Neg)).
 api_op(vs_converged(VS), true, vs_converged(VS)).
 api_op(vs_covers(VS, Bound, Example), true, vs_covers(VS, Bound, Example)).
 api_op(vs_notes(VS), Notes, vs_notes(VS, Notes)).
+api_op(vs_count(VS), count(N, Exact), vs_count(VS, N, Exact)).
 % Tool creation (replacement.pl) and perception's facts -> literals (abstract_state.pl).
 api_op(replacement(Literal), replacement(General, Alternatives),
        replacement(Literal, General, Alternatives)).
@@ -125,6 +127,8 @@ api_op(learn_from_demonstration(Case, Steps), R, learn_from_demonstration(Case, 
 api_op(observed_state(Case, Facts), S, observed_state(Case, Facts, S)).
 api_op(next_experiment(Case, VS, Facts), R, plan_experiment(Case, VS, Facts, R)).
 api_op(next_experiment(Case, VS, Facts, Skip), R, plan_experiment(Case, VS, Facts, Skip, R)).
+api_op(next_experiment(Case, VS, Facts, Skip, Options), R,
+       plan_experiment(Case, VS, Facts, Skip, Options, R)).
 api_op(created_models(Models, VS, Replaced, Instance), Ms,
        created_models(Models, VS, Replaced, Instance, Ms)).
 api_op(plan_use(Case, VS, Facts, Options), R, plan_use(Case, VS, Facts, Options, R)).

@@ -3,12 +3,14 @@
             observed_state/3,      % +Case, +Primitive, -State
             plan_experiment/4,     % +Case, +VS, +Primitive, -Result
             plan_experiment/5,     % +Case, +VS, +Primitive, +Skip, -Result
+            plan_experiment/6,     % +Case, +VS, +Primitive, +Skip, +Options, -Result
             plan_use/5,            % +Case, +VS, +Primitive, +Options, -Result
             label_trial/7,         % +Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS
             task_objects/3,        % +Case, +State, -Objects
             next_experiment/6,     % +Case, +VS, +Objects, +Context, +Options, -Result
             trial_example/6,       % +Case, +Tool, +Target, +Ctx, +Primitive, -Example
             literal_role/3,        % +Head, +Literal, -Role
+            literal_prior/3,       % +Head, +Literal, -P
             hypothesis_parts/4     % +Clause, -Structural, -Spatial, -Task
           ]).
 
@@ -52,6 +54,8 @@ how a missing one is reported), besides those of action_model.pl and abstract_st
 :- use_module(library(pairs)).
 :- use_module(library(error)).
 :- use_module(library(option)).
+:- use_module(library(ordsets)).
+:- use_module(library(random)).
 :- use_module(version_space).
 :- use_module(lgg, []).
 :- use_module(geometry_clp).
@@ -167,12 +171,20 @@ plan_experiment(Case, VS, Primitive, Result) :-
 %   taught nothing and would be chosen again.
 
 plan_experiment(Case, VS, Primitive, Skip, Result) :-
+    plan_experiment(Case, VS, Primitive, Skip, [], Result).
+
+%!  plan_experiment(+Case, +VS, +Primitive, +Skip, +Options, -Result) is det.
+%
+%   As plan_experiment/5 with the options of next_experiment/6 (strategy(S)).
+
+plan_experiment(Case, VS, Primitive, Skip, Options, Result) :-
     must_be(list, Skip),
+    must_be(list, Options),
     vs_examples(VS, [(tool_pose(_, Target, Ctx) :- _)|_], _),
     observed_state(Case, Primitive, State),
     task_objects(Case, State, Objects),
     next_experiment(Case, VS, Objects, Primitive,
-                    [target(Target), context(Ctx), skip(Skip)], Result).
+                    [target(Target), context(Ctx), skip(Skip)|Options], Result).
 
 %!  plan_use(+Case, +VS, +Primitive, +Options, -Result) is det.
 %
@@ -245,16 +257,30 @@ experiment_object_(exploit(Tool, _, _, Required), Tool, Required).
 %     - target(Target), context(Ctx): the head's second and third arguments (required).
 %     - skip(Skip): experiments skip(Object, Literal) to leave out (default []);
 %       skip(any, Literal) leaves out the literal whatever the object.
+%     - strategy(S): how the experiment is chosen (default paper):
+%         - paper: the paper's Algorithm 1. Every unknown literal with every object
+%           that h_g covers; the fewest literals of h_s violated wins, then the
+%           literal's order in h_s, then the object's name.
+%         - informative: the experiment with the largest expected reduction of the
+%           version space (informative_experiment_/10 below); it may violate several
+%           unknown literals at once, and needs no h_g cover (after a failure of
+%           several literals h_g holds one of them, chosen greedily, and the others
+%           still have to be split).
+%         - random(Seed): a random experiment among the paper's candidates (those
+%           h_g covers), drawn with SWI-Prolog's random generator seeded with Seed.
 %
 %   Result is one of
 %
 %     - experiment(Object, Tested, Violated, Pose, Required, Negated): test the literal
 %       Tested (a literal of h_s instantiated to the trial's objects) with Object at Pose
 %       (the ground pose term of solve_pose/5); Violated lists every literal of h_s the
-%       planned example violates (Tested among them), Required/Negated the spatial
-%       literals given to the constraint solver.
+%       planned example violates (Tested among them: for informative, the negated
+%       literal of a pose test, else the first in h_s order), Required/Negated the
+%       spatial literals given to the constraint solver.
 %     - exploit(Object, Violated, Pose, Required): nothing informative is left that the
-%       available objects and poses can test; use the best object at an h_s pose.
+%       available objects and poses can test; use the best object at an h_s pose. For
+%       strategy informative this is the certified stop: no experiment the objects and
+%       poses allow can change the version space.
 %     - no_experiment(Reason): no object and pose satisfy h_g (Reason names the
 %       literals of h_g that no object satisfies, or the infeasible pose literals).
 %
@@ -271,23 +297,167 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
     ->  true
     ;   domain_error(options_with(target(_), context(_)), Options)
     ),
+    option(strategy(Strategy), Options, paper),
+    (   ( memberchk(Strategy, [paper, informative]) ; Strategy = random(_) )
+    ->  true
+    ;   domain_error(oneof([paper, informative, random(seed)]), Strategy)
+    ),
     vs_bounds(VS, HS, HG),
     clause_head_body_(HS, Head, _),
     Head =.. [_, _Tool, Target, Ctx],
-    unknown_literals_(HS, HG, Unknown),
     hypothesis_parts(HS, _Struct, Spatial, Task),
     case_answer(untestable_literals(Case, Untestable)),
-    findall(Score-cand(L, O, Req, Neg, Viol),
-            candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
-                       L, O, Req, Neg, Viol, Score),
-            Scored),
     option(skip(Skip), Options, []),
+    (   Strategy == informative,
+        vs_space(VS, _, _, Cs),
+        ord_union(Cs, Used),
+        length(Used, NUsed),
+        NUsed =< 20                 % the count is exact (vs_count/3)
+    ->  (   informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context,
+                                    Skip, cand(L, O, Req, Neg, Viol), Pose)
+        ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
+        ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
+        )
+    ;   unknown_literals_(HS, HG, Unknown),
+        findall(Score-cand(L, O, Req, Neg, Viol),
+                candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
+                           L, O, Req, Neg, Viol, Score),
+                Scored),
+        exclude(skipped_(Skip), Scored, Scored1),
+        keysort(Scored1, Sorted),
+        pairs_values(Sorted, Cands0),
+        strategy_order_(Strategy, Cands0, Cands),
+        first_feasible_(Case, Cands, Context, cand(L, O, Req, Neg, Viol), Pose)
+    ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
+    ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
+    ).
+
+%   The paper keeps its order (so does informative when its count would not be
+%   exact); random draws among distinct experiments (one object at one pose is one
+%   experiment, whichever of its violated literals names it).
+strategy_order_(paper, Cands, Cands).
+strategy_order_(informative, Cands, Cands).
+strategy_order_(random(Seed), Cands0, Cands) :-
+    must_be(integer, Seed),
+    distinct_experiments_(Cands0, [], Distinct),
+    set_random(seed(Seed)),
+    random_permutation(Distinct, Cands).
+
+distinct_experiments_([], _, []).
+distinct_experiments_([C|Cs], Seen, Out) :-
+    C = cand(_, O, _, Neg, _),
+    (   memberchk_eq_(O-Neg, Seen)
+    ->  Out = Out1
+    ;   Out = [C|Out1]
+    ),
+    distinct_experiments_(Cs, [O-Neg|Seen], Out1).
+
+%!  informative_experiment_(+Case, +VS, +Target, +Ctx, +Untestable, +Objects,
+%!                          +Context, +Skip, -Chosen, -Pose) is semidet.
+%
+%   The informative strategy. The hypotheses are those of version_space:vs_space/4:
+%   subsets of h_s's literals that exclude every recorded negative. A candidate
+%   experiment is an object at an h_s pose, or at a pose that negates one spatial
+%   literal of h_s (any object, covered by h_g or not); V is the set of literals of
+%   h_s its planned example violates. Under a hypothesis H the trial succeeds exactly
+%   when H keeps none of V, so a success leaves the N_s hypotheses without V and a
+%   failure the N - N_s others. With p the prior probability of success (the mass of
+%   the hypotheses without V, literal_prior/3), the expected reduction is
+%
+%       R = p (N - N_s) + (1 - p) N_s
+%
+%   and the largest R wins; ties go to the likelier success (a success also moves
+%   the task on and shrinks h_s, which can turn an object that violates several
+%   literals into a test of one), then to fewer violated literals, to the earlier
+%   literals of h_s, and to the object's name. An experiment whose outcome every
+%   hypothesis agrees on (N_s = 0 or N_s = N) cannot change the version space and is
+%   not a candidate: when none is left (or none has a feasible pose), the predicate
+%   fails, which is the certified stop. next_experiment/6 calls it only while the
+%   count is exact (at most 20 literals in the negatives' violation sets, vs_count/3);
+%   beyond, it takes the paper's order.
+informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context, Skip,
+                        Chosen, Pose) :-
+    vs_space(VS, HS, Lits, Cs),
+    clause_head_body_(HS, Head, _),
+    Head =.. [_, _, Target, Ctx],
+    maplist(literal_prior(Head), Lits, Priors),
+    vs_space_count(Lits, Cs, [], Priors, N-W),
+    hypothesis_parts(HS, _, Spatial, Task),
+    findall(Key-Cand,
+            informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W,
+                                   Spatial, Task, Objects, Key, Cand),
+            Scored),
     exclude(skipped_(Skip), Scored, Scored1),
     keysort(Scored1, Sorted),
     pairs_values(Sorted, Cands),
-    (   first_feasible_(Case, Cands, Context, cand(L, O, Req, Neg, Viol), Pose)
-    ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
-    ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
+    first_feasible_(Case, Cands, Context, Chosen, Pose).
+
+informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W, Spatial, Task,
+                       Objects, k(NegR, NegP, K, PosV, O), cand(L, O, Req, Neg, Viol)) :-
+    member(object(O, Struct), Objects),
+    copy_term(Head-(Spatial-Task-Lits), HeadC-(SpatialC-TaskC-LitsC)),
+    HeadC =.. [_, O|_],
+    append([Struct, SpatialC, TaskC], Body),
+    list_to_conj_(Body, Conj),
+    clause_violations(HS, (HeadC :- Conj), Viol0),
+    vs_space_positions(Lits, Viol0, Pos0),
+    (   Req = SpatialC,
+        Neg = [],
+        PosV = Pos0
+    ;   nth1(I, LitsC, LC),
+        \+ ord_memberchk(I, Pos0),
+        literal_role(HeadC, LC, spatial),
+        testable_spatial_(Case, LC),
+        \+ ( member(Pattern, Untestable), Pattern = LC ),
+        exclude(==(LC), SpatialC, Req),
+        Neg = [LC],
+        ord_add_element(Pos0, I, PosV)
+    ),
+    PosV = [First|_],
+    vs_space_count(Lits, Cs, PosV, Priors, NS-WS),
+    NS > 0,
+    NS < N,
+    P is WS rdiv W,
+    R is P * (N - NS) + (1 - P) * NS,
+    NegR is -R,
+    NegP is -P,
+    length(PosV, K),
+    findall(V, ( member(J, PosV), nth1(J, LitsC, V) ), Viol),
+    (   Neg = [L]                   % a pose test is named by its negated literal
+    ->  true
+    ;   nth1(First, LitsC, L)
+    ).
+
+%!  literal_prior(+Head, +Literal, -P) is det.
+%
+%   The prior probability that Literal of h_s is necessary, used by the informative
+%   strategy, from the literal's kind (literal_role/3), the same for every case:
+%
+%     - spatial (how the trainer placed the tool relative to the target): 3/4; the
+%       demonstrator chose the pose, so its relations are likely meant;
+%     - a class literal (structural, one argument: hook(T), block(T)): 1/2;
+%     - any other structural literal (a property of the demonstrated tool:
+%       handle_length(T, medium)): 2/5; a tool has many properties and few matter;
+%     - a task literal: 1/2 (no experiment changes it, so it never weighs).
+%
+%   What earlier trials showed enters through the version space itself: the prior is
+%   conditioned on the hypotheses that are left (a failure makes at least one of its
+%   violated literals necessary; a success removes its violated literals from h_s).
+%   With 2/5, a pair of properties is never chosen over a single free one (a pair
+%   succeeds with probability 9/25 and has R = 0.43 N against 0.5 N): several literals
+%   are violated together when no single test is left or when earlier trials made
+%   their necessity unlikely.
+
+literal_prior(Head, L, P) :-
+    literal_role(Head, L, Role),
+    (   Role == spatial
+    ->  P = 3r4
+    ;   Role == structural,
+        functor(L, _, 1)
+    ->  P = 1r2
+    ;   Role == structural
+    ->  P = 2r5
+    ;   P = 1r2
     ).
 
 candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,

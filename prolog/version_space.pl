@@ -6,12 +6,17 @@
             vs_examples/3,           % +VS, -Pos, -Neg
             vs_converged/1,          % +VS
             vs_covers/3,             % +VS, +Bound, +Example
-            vs_notes/2               % +VS, -Notes
+            vs_notes/2,              % +VS, -Notes
+            vs_space/4,              % +VS, -HS, -Literals, -Constraints
+            vs_space_count/5,        % +Literals, +Constraints, +Out, +Priors, -Count-Mass
+            vs_space_positions/3,    % +Literals, +Violated, -Positions
+            vs_count/3               % +VS, -Count, -Exact
           ]).
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
+:- use_module(library(ordsets)).
 :- use_module(lgg, [clause_lgg/3]).
 :- use_module(subsumption,
               [ clause_head_body/3, clause_covers/2, clause_violations/3 ]).
@@ -424,3 +429,196 @@ vs_covers(VS, Bound, Example) :-
 %   N = [].
 %   ==
 vs_notes(vs(_, _, _, _, _, Notes), Notes).
+
+
+                 /*******************************
+                 *   COUNTING THE HYPOTHESES    *
+                 *******************************/
+
+%!  vs_space(+VS, -HS, -Literals:list, -Constraints:list) is det.
+%
+%   The hypotheses of the version space as a hitting-set problem. HS is a copy of h_s
+%   (the clause whose literals are numbered), Literals its body literals without the
+%   in_range/3 tests, in body order; a hypothesis keeps a subset of them. Constraints
+%   holds, for every recorded negative that some literal of h_s excludes (noisy
+%   negatives are left out, as vs_update/3 leaves them out), the ordset of the
+%   1-based positions in Literals of the literals it violates (a violated range counts
+%   for the literal that binds its variable); a hypothesis is consistent with the
+%   negative when it keeps at least one of them. Only the minimal sets are kept (a
+%   superset of another constraint says nothing more).
+%
+%   h_g is one most general consistent hypothesis (vs_update/3 picks it greedily);
+%   where a failure violated several literals of h_s, the others are consistent too,
+%   and these constraints keep them all.
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1), behind(h1, c)), VS0),
+%      vs_update(VS0, neg((tp(h2, c, t) :- stick(h2), in_front(h2, c))), VS),
+%      vs_space(VS, _, Ls, Cs).
+%   Ls = [hook(A), behind(A, B)], Cs = [[1, 2]].
+%   ==
+vs_space(VS, HS, Literals, Constraints) :-
+    vs_bounds(VS, HS, _),
+    clause_head_body(HS, _, Body),
+    exclude(range_lit_, Body, Literals),
+    vs_examples(VS, _, Negs),
+    vs_notes(VS, Notes),
+    consistent_negatives_(Negs, Notes, Consistent),
+    findall(Set,
+            ( member(N, Consistent),
+              clause_violations(HS, N, Viol),
+              vs_space_positions(Literals, Viol, Set),
+              Set \== []
+            ),
+            Sets0),
+    sort(Sets0, Sets),
+    exclude(non_minimal_(Sets), Sets, Constraints).
+
+%!  vs_space_positions(+Literals, +Violated, -Positions) is det.
+%
+%   Positions is the ordset of the 1-based positions in Literals (vs_space/4) of the
+%   literals Violated names: the terms of the clause itself, as
+%   subsumption:clause_violations/3 returns them (compared with ==); a violated
+%   in_range/3 test counts for the literals that share its variable.
+
+vs_space_positions(Literals, Viol, Set) :-
+    findall(I,
+            ( member(V, Viol),
+              (   V = in_range(X, _, _)
+              ->  nth1(I, Literals, L),
+                  term_variables(L, LVs),
+                  member(W, LVs), W == X
+              ;   nth1(I, Literals, L),
+                  L == V
+              )
+            ),
+            Is),
+    sort(Is, Set).
+
+non_minimal_(Sets, S) :-
+    member(T, Sets),
+    T \== S,
+    ord_subset(T, S),
+    !.
+
+%!  vs_space_count(+Literals, +Constraints, +Out, +Priors, -CountMass) is det.
+%
+%   CountMass is Count-Mass for the hypotheses over Literals (a list, only its length
+%   counts) that keep none of the positions in Out and keep a literal of every set of
+%   Constraints (positions as vs_space/4 gives them). Count is their number, an
+%   integer; Mass their prior probability when each literal at position I is kept
+%   (is necessary) with probability Priors[I], independently (numbers, rationals stay
+%   exact); Priors = [] counts only (Mass is then 0). The count is exact: a literal in
+%   no constraint doubles it, one in a constraint is split on (kept: the constraints
+%   it hits are met; left out: it leaves them); the work grows with the literals the
+%   constraints share, not with the number of literals.
+%
+%   ==
+%   ?- vs_space_count([a, b, c], [[1, 2]], [], [], N-_).
+%   N = 6.
+%   ?- vs_space_count([a, b, c], [[1, 2]], [1], [], N-_).
+%   N = 2.
+%   ==
+vs_space_count(Literals, Constraints, Out, Priors, Count-Mass) :-
+    length(Literals, N),
+    numlist_(N, All),
+    sort(Out, OutSet),
+    ord_subtract(All, OutSet, Free),
+    maplist(ord_subtract_(OutSet), Constraints, Cs),
+    (   Priors == []
+    ->  count_(Free, Cs, Count),
+        Mass = 0
+    ;   out_mass_(OutSet, Priors, M0),
+        count_mass_(Free, Cs, Priors, Count, M1),
+        Mass is M0 * M1
+    ).
+
+numlist_(0, []) :- !.
+numlist_(N, L) :- numlist(1, N, L).
+
+ord_subtract_(Out, C0, C) :-
+    ord_subtract(C0, Out, C).
+
+out_mass_(Out, Priors, M) :-
+    foldl(out_mass_step_(Priors), Out, 1, M).
+
+out_mass_step_(Priors, I, M0, M) :-
+    nth1(I, Priors, P),
+    M is M0 * (1 - P).
+
+%   count_(+Free, +Constraints, -Count): subsets of Free hitting every constraint.
+count_(Free, Cs, Count) :-
+    (   memberchk([], Cs)
+    ->  Count = 0
+    ;   Cs == []
+    ->  length(Free, K),
+        Count is 2^K
+    ;   split_literal_(Cs, X),
+        ord_del_element(Free, X, Free1),
+        partition(ord_memberchk(X), Cs, Hit, Rest),
+        maplist(ord_del_element_(X), Hit, Left),
+        append(Left, Rest, CsOut),
+        count_(Free1, Rest, In),
+        count_(Free1, CsOut, OutN),
+        Count is In + OutN
+    ).
+
+count_mass_(Free, Cs, Priors, Count, Mass) :-
+    (   memberchk([], Cs)
+    ->  Count = 0,
+        Mass = 0
+    ;   Cs == []
+    ->  length(Free, K),
+        Count is 2^K,
+        Mass = 1                    % the free literals' choices sum to 1
+    ;   split_literal_(Cs, X),
+        ord_del_element(Free, X, Free1),
+        partition(ord_memberchk(X), Cs, Hit, Rest),
+        maplist(ord_del_element_(X), Hit, Left),
+        append(Left, Rest, CsOut),
+        count_mass_(Free1, Rest, Priors, In, MIn),
+        count_mass_(Free1, CsOut, Priors, OutN, MOut),
+        nth1(X, Priors, P),
+        Count is In + OutN,
+        Mass is P * MIn + (1 - P) * MOut
+    ).
+
+ord_del_element_(X, S0, S) :-
+    ord_del_element(S0, X, S).
+
+%   Split on the first literal of a smallest constraint.
+split_literal_(Cs, X) :-
+    map_list_to_pairs(length, Cs, Keyed),
+    keysort(Keyed, [_-[X|_]|_]).
+
+%!  vs_count(+VS, -Count:integer, -Exact:boolean) is det.
+%
+%   Count is the number of hypotheses of the version space: the conjunctions of
+%   literals of h_s that exclude every recorded negative (vs_space/4), from h_s itself
+%   to the most general ones (h_g among them). When no negative was recorded it is
+%   2^U, U the literals of h_s; when every literal of h_g was made necessary by a
+%   negative that violates it alone (one literal tested per trial), it is h_g plus
+%   any subset of the unknown literals that excludes every negative. Exact is true
+%   when at most 20 literals occur in the constraints (the count is then exact);
+%   otherwise Count is an upper bound, the fewest hypotheses that meet any one
+%   constraint alone, and Exact is false.
+%
+%   ==
+%   ?- vs_init((tp(h1, c, t) :- hook(h1), behind(h1, c)), VS), vs_count(VS, N, E).
+%   N = 4, E = true.
+%   ==
+vs_count(VS, Count, Exact) :-
+    vs_space(VS, _, Literals, Constraints),
+    ord_union(Constraints, Used),
+    length(Used, NU),
+    (   NU =< 20
+    ->  vs_space_count(Literals, Constraints, [], [], Count-_),
+        Exact = true
+    ;   length(Literals, N),
+        findall(B, ( member(C, Constraints),
+                     length(C, K),
+                     B is 2^N - 2^(N - K) ),
+                Bounds),
+        min_list(Bounds, Count),
+        Exact = false
+    ).

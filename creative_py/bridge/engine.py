@@ -483,6 +483,13 @@ class Engine:
         """Return whether the boundary ``bound`` (``"hs"`` or ``"hg"``) covers ``example``."""
         return self._holds("vs_covers", vs, bound, example)
 
+    def vs_count(self, vs: Term) -> tuple[int, bool]:
+        """Return ``(count, exact)``: the hypotheses of the version space that exclude
+        every recorded negative (``version_space:vs_count/3``); ``exact`` is False when
+        the count is an upper bound."""
+        reply = self._must("vs_count", vs)
+        return int(reply.args[0]), str(reply.args[1]) == "true"
+
     def vs_notes(self, vs: Term) -> list:
         """Return the inconsistencies met, newest first (``hg_weakened/2``, ``noisy_negative/1``)."""
         return self._must("vs_notes", vs)
@@ -564,11 +571,18 @@ class Engine:
         return reply.args[0], reply.args[1], reply.args[2]
 
     def next_experiment(self, case: str, vs: Term, facts: Sequence[Term],
-                        skip: Sequence[Term] = ()) -> Term:
+                        skip: Sequence[Term] = (), strategy: Optional[Term] = None) -> Term:
         """Return ``experiment(Tool, Tested, Violated, Pose, Required, Negated)``, an
         ``exploit(Tool, Violated, Pose, Required)`` when nothing is left to test, or
-        ``no_experiment(Why)`` (Algorithm 1's choice, ``experiment:plan_experiment/5``)."""
-        return self._must("next_experiment", case, vs, list(facts), list(skip))
+        ``no_experiment(Why)`` (Algorithm 1's choice, ``experiment:plan_experiment/6``).
+
+        ``strategy`` is ``"paper"`` (the default), ``"informative"`` or
+        ``Compound("random", (seed,))`` (``experiment:next_experiment/6``).
+        """
+        if strategy is None:
+            return self._must("next_experiment", case, vs, list(facts), list(skip))
+        return self._must("next_experiment", case, vs, list(facts), list(skip),
+                          [Compound("strategy", (strategy,))])
 
     def label_trial(self, case: str, vs: Term, experiment: Term, facts: Sequence[Term],
                     label: str, mode: str) -> Term:

@@ -19,7 +19,7 @@ from creative_py.bridge import Compound, Engine, PrologError, fact_term
 from creative_py.learning.clips import VIDEO_MODES, ClipKeeper
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.run_folder import RunFolder, read_trials
-from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
+from creative_py.learning.tool_use import STRATEGIES, LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 from creative_py.report.page import write_html_report
@@ -56,6 +56,9 @@ class RunOptions:
         ``all`` every trial; ``none`` no clip.
     gui : bool
         Show the trials in pybullet's GUI (needs a display).
+    strategy : {"paper", "informative", "random"}
+        How tool-use learning chooses its experiments (:data:`STRATEGIES`,
+        :mod:`creative_py.learning.tool_use`).
     """
 
     seed: int = 0
@@ -66,6 +69,7 @@ class RunOptions:
     create_eval_trials: int = 5
     video: str = "key"
     gui: bool = False
+    strategy: str = "informative"
 
     def __post_init__(self) -> None:
         checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
@@ -85,6 +89,9 @@ class RunOptions:
                              f"got {self.video!r}")
         if not isinstance(self.gui, bool):
             raise ValueError(f"option gui must be true or false, got {self.gui!r}")
+        if self.strategy not in STRATEGIES:
+            raise ValueError(f"option strategy must be one of {', '.join(STRATEGIES)}, "
+                             f"got {self.strategy!r}")
 
 
 def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
@@ -112,8 +119,9 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
         log.warning("%s", w)
     # Keep the readable trials only, so that the run appends after them.
     RunFolder(run_dir).rewrite_trials(trials)
-    # A resumed run shows no GUI: the display it was started on may be gone.
-    options = RunOptions(**{**meta["options"], "gui": False})
+    # A resumed run shows no GUI: the display it was started on may be gone. A run
+    # recorded before there were strategies ran the paper's Algorithm 1.
+    options = RunOptions(**{"strategy": "paper", **meta["options"], "gui": False})
     world_dir = Path(meta["world"]) if meta.get("world") else None
     return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
                     resume=(run_dir, trials))
@@ -171,7 +179,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         runner = TrialRunner(engine, world, run, options.seed, say, replay=replay,
                              clips=clips, gui=options.gui)
         lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
-                                consecutive=options.consecutive)
+                                consecutive=options.consecutive, strategy=options.strategy)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                    "options": asdict(options), "wall_time_s": {}}
 
@@ -181,7 +189,16 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
         summary["demonstration"] = {"tool": use.demo_tool}
         summary["use"] = {"trials": len(use.trials), "converged": use.converged,
-                          "trials_to_converge": use.trials_to_converge}
+                          "trials_to_converge": use.trials_to_converge,
+                          "strategy": options.strategy, "stop": use.stop}
+        # The version space after the demonstration, and the information-theoretic
+        # bound: with binary outcomes, telling N0 hypotheses apart in the worst case
+        # takes ceil(log2 N0) trials.
+        summary["vs_count_initial"] = use.vs_count_initial
+        summary["vs_count_initial_exact"] = use.vs_count_initial_exact
+        summary["info_bound_trials"] = (use.vs_count_initial - 1).bit_length()
+        summary["vs_count_final"] = (use.trials[-1].extra.get("vs_count")
+                                     if use.trials else use.vs_count_initial)
         engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
         hs, hg = runner.bounds(use.vs)
         summary["hypotheses"] = {"hs": hs, "hg": hg}

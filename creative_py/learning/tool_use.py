@@ -1,4 +1,4 @@
-"""Learning to use a tool: the demonstration, then the paper's Algorithm 1.
+"""Learning to use a tool: the demonstration, then experiments (the paper's Algorithm 1).
 
 The loop reads like the paper. Prolog decides (which literal to test, which object,
 which spatial constraints; how the version space changes); Python acts (runs the skills
@@ -7,9 +7,17 @@ physics alone decides whether a trial succeeded.
 
 One trial::
 
-    experiment = engine.next_experiment(case, vs, facts, skip)  # literal, object, pose
+    experiment = engine.next_experiment(case, vs, facts, skip, strategy)  # object, pose
     record, vs = runner.run(experiment, "use", i, vs, task, t)   # pybullet decides,
                                                                  # Prolog labels
+
+The strategy (:data:`STRATEGIES`) is Prolog's choice of experiment
+(``experiment:next_experiment/6``): ``paper`` is Algorithm 1 (one unknown literal per
+trial, then K successes in a row once nothing is left to test); ``informative`` the
+experiment with the largest expected reduction of the version space, stopping as soon as
+no experiment can change it (the certified stop, no confirmation trials); ``random`` a
+random experiment that h_g covers, seeded by the run's seed and the trial's number,
+stopping when nothing is left to test.
 """
 
 from __future__ import annotations
@@ -22,22 +30,34 @@ from typing import Any, Callable, Optional
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.learning.trials import TrialRecord, TrialRunner
 
+STRATEGIES = ("paper", "informative", "random")
+"""The experiment strategies (``--strategy``); ``experiment:next_experiment/6`` says how
+each chooses."""
+
 
 @dataclass(frozen=True)
 class LearningOptions:
-    """Options of tool-use learning (paper, Algorithm 1).
+    """Options of tool-use learning.
 
     Parameters
     ----------
     max_trials : int
         N: stop after this many tool-use trials.
     consecutive : int
-        K: stop once the version space has nothing left to test and the last K trials
-        succeeded.
+        K: with strategy ``paper``, stop once the version space has nothing left to test
+        and the last K trials succeeded.
+    strategy : str
+        One of :data:`STRATEGIES`.
     """
 
     max_trials: int = 12
     consecutive: int = 2
+    strategy: str = "informative"
+
+    def __post_init__(self) -> None:
+        if self.strategy not in STRATEGIES:
+            raise ValueError(f"option strategy must be one of {', '.join(STRATEGIES)}, "
+                             f"got {self.strategy!r}")
 
 
 @dataclass(frozen=True)
@@ -118,6 +138,14 @@ class UseResult:
     """The trials after which nothing was left to test (None: something still was)."""
     demo_tool: str
     wall_time_s: float
+    stop: str = "budget"
+    """Why learning stopped: ``certified`` (informative: no experiment could change the
+    version space), ``exhausted`` (random: no experiment h_g covers was left),
+    ``confirmed`` (paper: nothing left to test and K successes in a row) or ``budget``
+    (N trials)."""
+    vs_count_initial: int = 0
+    """The hypotheses after the demonstration (``version_space:vs_count/3``)."""
+    vs_count_initial_exact: bool = True
 
 
 class ToolUseLearner:
@@ -166,47 +194,88 @@ class ToolUseLearner:
         return new, example, demo.tool
 
     def learn(self) -> UseResult:
-        """Run Algorithm 1 from one demonstration; return the learned version space."""
+        """Learn from one demonstration and experiments; return the learned version space."""
         t0 = time.perf_counter()
         runner, opts = self.runner, self.options
         models, example, demo_tool = self.observe_demonstration()
         vs = self.engine.vs_init(example)
-        runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}")
+        n0, exact0 = self.engine.vs_count(vs)
+        runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}; "
+                        f"{n0} hypotheses{'' if exact0 else ' at most'}")
         task = runner.task(runner.manifest.demonstration.variant)
+        paper = opts.strategy == "paper"
         cons = 0
         converged_at = None
+        stop = "budget"
         skip: list[Term] = []
         for i in range(1, opts.max_trials + 1):
             td = time.perf_counter()
-            exp = self.engine.next_experiment(self.case, vs, runner.task_facts(task), skip)
+            exp = self._next(vs, task, skip, i)
             decision = time.perf_counter() - td
             if exp.name != "experiment":
                 # Nothing left that the available objects and poses can test.
                 if converged_at is None:
                     converged_at = i - 1
+                if not paper:
+                    # informative: no experiment can change the version space; random:
+                    # nothing h_g covers is left. Stop without confirmation trials
+                    # (evaluation confirms the model afterwards).
+                    stop = self._stop_word()
+                    break
                 if cons >= opts.consecutive:
+                    stop = "confirmed"
                     break
             rec, vs = runner.run(exp, "use", i, vs, task, decision)
+            taught = rec.outcome in ("success", "failure", "blocked")
+            if exp.name == "experiment" and (not taught or not paper):
+                # Not repeated: an experiment the arm could not carry out taught
+                # nothing (a pose test: whatever the tool); and, for the other
+                # strategies, one already run gave its answer (the physics would give
+                # it again), even when what the robot observed violated other literals
+                # than planned (a half-raised prong is also seen off the cube). The
+                # informative strategy does not repeat a pose test with another tool
+                # either: what it shows of the pose it has shown.
+                pose_test = bool(exp.args[5])
+                any_tool = pose_test and (not taught or opts.strategy == "informative")
+                skip.append(Compound("skip", ("any" if any_tool else exp.args[0],
+                                              exp.args[1])))
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
             else:
                 cons = 0
-                if rec.outcome not in ("failure", "blocked") and exp.name == "experiment":
-                    # The arm could not carry it out: it taught nothing; do not repeat
-                    # it. A pose test (a negated spatial literal) is skipped whatever
-                    # the tool.
-                    who = "any" if exp.args[5] else exp.args[0]
-                    skip.append(Compound("skip", (who, exp.args[1])))
         else:
-            exp = self.engine.next_experiment(self.case, vs, runner.task_facts(task), skip)
+            exp = self._next(vs, task, skip, opts.max_trials + 1)
             if exp.name != "experiment" and converged_at is None:
                 converged_at = opts.max_trials
-        # Converged: nothing is left to test, and the model's last K trials succeeded
-        # (a budget spent on trials the arm could not carry out is not convergence).
-        converged = converged_at is not None and cons >= opts.consecutive
+            if exp.name != "experiment" and not paper:
+                stop = self._stop_word()
+        if paper:
+            # Converged: nothing is left to test, and the model's last K trials succeeded
+            # (a budget spent on trials the arm could not carry out is not convergence).
+            converged = converged_at is not None and cons >= opts.consecutive
+        else:
+            converged = stop in ("certified", "exhausted")
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
-                         demo_tool, time.perf_counter() - t0)
+                         demo_tool, time.perf_counter() - t0, stop, n0, exact0)
+
+    def _stop_word(self) -> str:
+        """Return why a non-paper strategy stopped when Prolog proposed no experiment."""
+        return "certified" if self.options.strategy == "informative" else "exhausted"
+
+    def _next(self, vs: Term, task: Any, skip: list[Term], i: int) -> Term:
+        """Return Prolog's choice for trial ``i`` under the options' strategy."""
+        facts = self.runner.task_facts(task)
+        strategy = self.options.strategy
+        if strategy == "paper":
+            return self.engine.next_experiment(self.case, vs, facts, skip)
+        if strategy == "random":
+            # Seeded by the run's seed and the trial's number: the same run draws the
+            # same experiments, also when resumed.
+            return self.engine.next_experiment(
+                self.case, vs, facts, skip,
+                Compound("random", (self.runner.seed * 1000 + i,)))
+        return self.engine.next_experiment(self.case, vs, facts, skip, strategy)
 
 
 def _model_names(models: Term) -> str:

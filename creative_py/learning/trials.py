@@ -318,6 +318,11 @@ class TrialRunner:
             wall_time_s=round(ex.wall_time_s, 3), sim_time_s=round(ex.sim_time_s, 3),
             decision_time_s=round(decision, 4))
         # What the robot observed before the tool action: a resumed run labels it again.
+        if label:
+            # The hypotheses left between h_g and h_s (version_space:vs_count/3).
+            count, exact = self.engine.vs_count(vs)
+            rec.extra["vs_count"] = count
+            rec.extra["vs_count_exact"] = exact
         rec.extra["facts"] = [[a.item() if hasattr(a, "item") else a for a in f]
                               for f in ex.facts_before]
         if ex.tool_load is not None:

@@ -472,4 +472,197 @@ test(plan_use_of_an_unknown_tool, error(existence_error(object, hook_z9))) :-
     fixture_primitive(hook, P),
     plan_use(hook, VS, P, [tool(hook_z9)], _).
 
+
+                 /*******************************
+                 *          STRATEGIES          *
+                 *******************************/
+
+%   Small hand-made version spaces in the hook case's vocabulary: the demonstrated tool
+%   t1 (a hook, medium handle, prong on the right, wide) behind, centred on the cube,
+%   prong down, in the tube: 9 literals of h_s, 2^9 = 512 hypotheses.
+s_demo_((tool_pose(t1, cube1, tube1) :-
+            hook(t1), handle_length(t1, medium), hook_side(t1, right), hook_width(t1, wide),
+            behind(t1, cube1), centred_on(t1, cube1), hook_down(t1),
+            in_tube(t1, tube1), in_tube(cube1, tube1))).
+
+%   The demonstration with literals replaced, as a failed trial of the tool O.
+s_trial_(O, Replace, E) :-
+    s_demo_(D),
+    clause_head_body(D, _, Lits0),
+    maplist(s_replace_(Replace), Lits0, Lits1),
+    exclude(==(none), Lits1, Lits2),
+    maplist(s_rename_(t1, O), Lits2, Lits),
+    clause_head_body(E, tool_pose(O, cube1, tube1), Lits).
+
+s_replace_(Replace, L0, L) :-
+    (   memberchk(L0-L1, Replace) -> L = L1 ; L = L0 ).
+
+s_rename_(From, To, L0, L) :-
+    L0 =.. [F|As0],
+    maplist(s_swap_(From, To), As0, As),
+    L =.. [F|As].
+
+s_swap_(From, To, A0, A) :-
+    (   A0 == From -> A = To ; A = A0 ).
+
+%   The three spatial literals made necessary by three failures of t1.
+s_pose_failures_([ [behind(t1, cube1)-in_front(t1, cube1)],
+                   [centred_on(t1, cube1)-none],
+                   [hook_down(t1)-hook_flat(t1)] ]).
+
+s_vs_(Failures, VS) :-
+    s_demo_(D),
+    vs_init(D, VS0),
+    foldl(s_fail_, Failures, VS0, VS).
+
+s_fail_(O-Replace, VS0, VS) :- !,
+    s_trial_(O, Replace, E),
+    vs_update(VS0, neg(E), VS).
+s_fail_(Replace, VS0, VS) :-
+    s_fail_(t1-Replace, VS0, VS).
+
+s_obj_(O, Length, Side, Width,
+       object(O, [hook(O), handle_length(O, Length), hook_side(O, Side),
+                  hook_width(O, Width)])).
+
+s_next_(Strategy, VS, Objects, R) :-
+    fixture_task_context(hook, Context),
+    next_experiment(hook, VS, Objects, Context,
+                    [target(cube1), context(tube1), strategy(Strategy)], R).
+
+test(strategies_count_the_hand_made_space) :-
+    s_vs_([], VS0),
+    vs_count(VS0, N0, true),
+    assertion(N0 == 512),
+    s_pose_failures_(Fs),
+    s_vs_(Fs, VS),
+    vs_count(VS, N, true),
+    assertion(N == 64).
+
+%   The first trial: a single property whose success is likely (prior 2/5 that a
+%   property matters) rather than a pair (a pair would succeed with probability 9/25
+%   and remove fewer hypotheses on average) or a pose (a spatial literal matters with
+%   probability 3/4).
+test(informative_tests_one_likely_irrelevant_property_first) :-
+    s_vs_([], VS),
+    s_obj_(t1, medium, right, wide, O1),
+    s_obj_(t2, short, right, wide, O2),
+    s_obj_(t3, short, left, wide, O3),
+    s_obj_(t4, medium, left, narrow, O4),
+    s_next_(informative, VS, [O1, O2, O3, O4], R),
+    assertion(R = experiment(t2, handle_length(t2, medium), [handle_length(t2, medium)],
+                             _, _, [])).
+
+%   With the poses and the handle settled, the only informative object violates two
+%   properties at once: the informative strategy takes it (both may be irrelevant).
+test(informative_violates_several_literals_at_once) :-
+    s_pose_failures_(Fs),
+    s_vs_([t2-[handle_length(t1, medium)-handle_length(t1, short)]|Fs], VS),
+    s_obj_(t1, medium, right, wide, O1),
+    s_obj_(t2, short, right, wide, O2),
+    s_obj_(t4, medium, left, narrow, O4),
+    s_next_(informative, VS, [O1, O2, O4], R),
+    assertion(R = experiment(t4, hook_side(t4, right),
+                             [hook_side(t4, right), hook_width(t4, wide)], _, _, [])).
+
+%   After t4 failed (hook_side or hook_width matters), h_g holds one of the two
+%   (hook_side, vs_update/3's greedy choice) and the paper's strategy takes h_g's word
+%   for it: it tests hook_width with t6 and never t5. The informative strategy splits
+%   the pair: t5 violates hook_side alone, although h_g does not cover it.
+test(informative_splits_a_failed_pair_again) :-
+    s_pose_failures_(Fs),
+    append(Fs, [t4-[hook_side(t1, right)-hook_side(t1, left),
+                    hook_width(t1, wide)-hook_width(t1, narrow)]], Fs1),
+    s_vs_(Fs1, VS),
+    vs_bounds(VS, _, HG),
+    assertion(HG = (_ :- _, _, _, hook_side(_, right))),
+    vs_count(VS, N, true),
+    assertion(N == 48),                          % 64 less the 16 that keep neither
+    s_obj_(t1, medium, right, wide, O1),
+    s_obj_(t5, medium, left, wide, O5),
+    s_obj_(t6, medium, right, narrow, O6),
+    s_next_(informative, VS, [O1, O5, O6], R),
+    assertion(R = experiment(t5, hook_side(t5, right), [hook_side(t5, right)], _, _, [])),
+    s_next_(paper, VS, [O1, O5, O6], P),
+    assertion(P = experiment(t6, hook_width(t6, wide), _, _, _, _)).
+
+%   The certified stop: every experiment the objects allow has a known outcome (t2's
+%   short handle was shown to matter, t3 has it too, t1 violates nothing and every
+%   pose literal is settled), so the informative strategy proposes no trial, although
+%   hook/1, hook_side/2 and hook_width/2 remain unknown (2^3 * 4 hypotheses: the two
+%   in_tube/2 literals are never tested).
+test(certified_stop_when_no_experiment_can_change_the_space) :-
+    s_pose_failures_(Fs),
+    s_vs_([t2-[handle_length(t1, medium)-handle_length(t1, short)]|Fs], VS),
+    vs_count(VS, N, true),
+    assertion(N == 32),
+    s_obj_(t1, medium, right, wide, O1),
+    s_obj_(t2, short, right, wide, O2),
+    s_obj_(t3, short, left, narrow, O3),
+    s_next_(informative, VS, [O1, O2, O3], R),
+    assertion(R = exploit(t1, [], _, _)),
+    s_next_(informative, VS, [], R0),            % no object at all
+    assertion(R0 = no_experiment(_)).
+
+%   The same failure seen again teaches nothing new: a version space whose negatives
+%   already hold every pose literal stops at once with the demonstrated tool alone.
+test(certified_stop_with_the_demonstrated_tool_alone) :-
+    s_pose_failures_(Fs),
+    s_vs_(Fs, VS),
+    s_obj_(t1, medium, right, wide, O1),
+    s_next_(informative, VS, [O1], R),
+    assertion(R = exploit(t1, [], _, _)).
+
+%   random(Seed): the same seed, the same experiment; the draws are experiments that
+%   h_g covers (t2's short handle is excluded once shown to matter) and more than one
+%   experiment is drawn over 20 seeds.
+test(random_is_seeded_and_covered_by_hg) :-
+    s_vs_([t2-[handle_length(t1, medium)-handle_length(t1, short)]], VS),
+    s_obj_(t1, medium, right, wide, O1),
+    s_obj_(t2, short, right, wide, O2),
+    s_obj_(t4, medium, left, narrow, O4),
+    Os = [O1, O2, O4],
+    s_next_(random(7), VS, Os, R1),
+    s_next_(random(7), VS, Os, R2),
+    assertion(R1 == R2),
+    findall(O-Neg, ( between(0, 19, Seed),
+                     s_next_(random(Seed), VS, Os, experiment(O, _, _, _, _, Neg)) ),
+            Drawn),
+    sort(Drawn, Distinct),
+    length(Distinct, ND),
+    assertion(ND > 1),
+    assertion(\+ memberchk(t2-_, Drawn)),
+    vs_bounds(VS, _, HG),
+    forall(member(O-_, Drawn), assertion(memberchk(O, [t1, t4]))),
+    assertion(HG = (_ :- handle_length(_, medium))).
+
+%   Without an experiment left that h_g covers, random stops too.
+test(random_stops_when_nothing_is_testable) :-
+    s_pose_failures_(Fs),
+    s_vs_(Fs, VS),
+    s_obj_(t1, medium, right, wide, O1),
+    s_next_(random(3), VS, [O1], R),
+    assertion(R = exploit(t1, [], _, _)).
+
+%   The paper's strategy is the default.
+test(paper_is_the_default_strategy) :-
+    demo_vs_(VS),
+    hook_objects_(Os),
+    next_(VS, Os, [], R0),
+    next_(VS, Os, [strategy(paper)], R1),
+    assertion(R0 == R1).
+
+test(unknown_strategy_is_an_error, [error(domain_error(_, clever))]) :-
+    demo_vs_(VS),
+    hook_objects_(Os),
+    next_(VS, Os, [strategy(clever)], _).
+
+%   The prior by literal kind.
+test(literal_prior_by_kind) :-
+    H = tool_pose(T, C, _),
+    literal_prior(H, behind(T, C), P1),
+    literal_prior(H, hook(T), P2),
+    literal_prior(H, handle_length(T, medium), P3),
+    assertion(P1-P2-P3 == 3r4-1r2-2r5).
+
 :- end_tests(experiment).

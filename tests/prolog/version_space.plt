@@ -184,4 +184,108 @@ test(non_ground_example, [error(instantiation_error)]) :-
 test(repeated_head_atom, [error(domain_error(distinct_head_atoms, tp(a, a, t)))]) :-
     vs_init((tp(a, a, t) :- hook(a)), _).
 
+
+                 /*******************************
+                 *   COUNTING THE HYPOTHESES    *
+                 *******************************/
+
+%   Small version spaces counted by hand. A hypothesis keeps a subset of h_s's
+%   literals and must keep, for every negative, a literal the negative violates.
+small_(VS) :-
+    vs_init((tp(h1, c, t) :- hook(h1), long(h1), right(h1), behind(h1, c)), VS).
+
+small_neg_(Lits, E) :-
+    clause_head_body(E, tp(n, c, t), Lits).
+
+%   No negative yet: every subset of the 4 literals.
+test(count_after_the_demonstration) :-
+    small_(VS),
+    vs_count(VS, N, Exact),
+    assertion(N-Exact == 16-true).
+
+%   A failure that violates long/1 and behind/2: every subset but the 4 that keep
+%   neither, 16 - 4 = 12.
+test(count_after_a_failure_of_two_literals) :-
+    small_(VS0),
+    small_neg_([hook(n), short(n), right(n), in_front(n, c)], E),
+    vs_update(VS0, neg(E), VS),
+    vs_space(VS, _, Lits, Cs),
+    assertion(length(Lits, 4)),
+    assertion(Cs == [[2, 4]]),
+    vs_count(VS, N, true),
+    assertion(N == 12).
+
+%   Two failures {long, behind} and {behind, right}: behind kept, 2^3 = 8; behind
+%   left out, long and right kept, 2 (hook free): 10.
+test(count_with_overlapping_failures) :-
+    small_(VS0),
+    small_neg_([hook(n), short(n), right(n), in_front(n, c)], E1),
+    small_neg_([hook(n), long(n), left(n), in_front(n, c)], E2),
+    foldl(add_neg_, [E1, E2], VS0, VS),
+    vs_count(VS, N, true),
+    assertion(N == 10).
+
+%   A failure of behind/2 alone makes it necessary: the superset {long, behind} of
+%   an earlier failure says nothing more, 2^3 = 8 (h_g plus any subset of the other
+%   three).
+test(count_drops_non_minimal_constraints) :-
+    small_(VS0),
+    small_neg_([hook(n), short(n), right(n), in_front(n, c)], E1),
+    small_neg_([hook(n), long(n), right(n), in_front(n, c)], E2),
+    foldl(add_neg_, [E1, E2], VS0, VS),
+    vs_space(VS, _, _, Cs),
+    assertion(Cs == [[4]]),
+    vs_count(VS, N, true),
+    assertion(N == 8).
+
+%   A success without right/1 removes it from h_s: 2^3 = 8.
+test(count_after_a_success) :-
+    small_(VS0),
+    vs_update(VS0, pos((tp(h2, c, t) :- hook(h2), long(h2), left(h2), behind(h2, c))), VS),
+    vs_count(VS, N, true),
+    assertion(N == 8).
+
+%   A noisy negative (covered by h_s) constrains nothing.
+test(count_ignores_a_noisy_negative) :-
+    small_(VS0),
+    vs_update(VS0, neg((tp(h1, c, t) :- hook(h1), long(h1), right(h1), behind(h1, c))),
+              VS),
+    vs_count(VS, N, true),
+    assertion(N == 16).
+
+%   The counts and prior masses of vs_space_count/5: hypotheses over {a, b, c} that
+%   keep a or b: 6; of those without a: 2 (b kept, c free). With priors 1/2, 1/4,
+%   1/3 the mass of "a or b kept" is 1 - 1/2 * 3/4 = 5/8, "a left out, b kept"
+%   1/2 * 1/4 = 1/8.
+test(space_count_and_mass) :-
+    vs_space_count([a, b, c], [[1, 2]], [], [], N-_),
+    assertion(N == 6),
+    vs_space_count([a, b, c], [[1, 2]], [1], [], NOut-_),
+    assertion(NOut == 2),
+    vs_space_count([a, b, c], [[1, 2]], [], [1r2, 1r4, 1r3], N1-M),
+    assertion(N1-M == 6-5r8),
+    vs_space_count([a, b, c], [[1, 2]], [1], [1r2, 1r4, 1r3], N2-M2),
+    assertion(N2-M2 == 2-1r8),
+    vs_space_count([a, b, c], [[1, 2]], [1, 2], [1r2, 1r4, 1r3], N3-M3),
+    assertion(N3-M3 == 0-0).
+
+%   More than 20 literals in the negatives' violation sets: an upper bound, said so.
+%   One failure violating 21 of 22 literals: 2^22 - 2^1.
+test(count_beyond_twenty_literals_is_a_bound) :-
+    numlist(1, 22, Is),
+    maplist(lit_(h1), Is, Ls),
+    clause_head_body(E, tp(h1, c, t), Ls),
+    vs_init(E, VS0),
+    maplist(lit_(n), Is, [L1|_]),
+    clause_head_body(N, tp(n, c, t), [L1]),
+    vs_update(VS0, neg(N), VS),
+    vs_count(VS, Count, Exact),
+    assertion(Exact == false),
+    assertion(Count =:= 2^22 - 2).
+
+lit_(O, I, p(O, I)).
+
+add_neg_(E, VS0, VS) :-
+    vs_update(VS0, neg(E), VS).
+
 :- end_tests(version_space).

@@ -1,6 +1,7 @@
 """The learning loop's Python, exercised on a short real run (Algorithm 1's first trials).
 
-A run of the rake case limited to three tool-use trials: the demonstration, then the
+A run of the rake case limited to three tool-use trials with the paper's strategy
+(Algorithm 1; ``test_strategies.py`` has the others): the demonstration, then the
 experiments Prolog chooses, executed in the physics, labelled and fed back. The checks
 are on the version space after each trial, not only on the outcomes: a failure (here a
 blocked motion, labelled as the planned example) must make exactly the tested literal
@@ -20,7 +21,7 @@ pytestmark = pytest.mark.sim
 def short_run(tmp_path_factory):
     out = tmp_path_factory.mktemp("runs")
     folder = run_case("rake", out, RunOptions(seed=0, phase="use", max_trials=3,
-                                              eval_trials=0))
+                                              eval_trials=0, strategy="paper"))
     trials = [json.loads(line) for line in (folder.path / "trials.jsonl").read_text()
               .splitlines()]
     summary = json.loads((folder.path / "summary.json").read_text())
@@ -30,7 +31,8 @@ def short_run(tmp_path_factory):
 def test_the_budget_bounds_the_trials_and_each_tests_one_literal(short_run):
     _, trials, summary = short_run
     assert [t["phase"] for t in trials] == ["use"] * 3
-    assert summary["use"] == {"trials": 3, "converged": False, "trials_to_converge": None}
+    assert summary["use"] == {"trials": 3, "converged": False, "trials_to_converge": None,
+                              "strategy": "paper", "stop": "budget"}
     assert all(len(t["tested"]) == 1 for t in trials)
 
 
@@ -161,3 +163,17 @@ def test_the_short_run_keeps_its_key_trials_as_clips_that_decode(short_run):
         assert v["bytes"] == (path / v["file"]).stat().st_size
     assert sorted(p.name for p in (path / "videos").iterdir()) == sorted(
         v["file"].split("/")[1] for v in videos)
+
+
+def test_the_run_folder_records_the_version_space_count(short_run):
+    # 14 literals of h_s after the demonstration: 2^14 hypotheses, 14 binary trials to
+    # tell them all apart in the worst case. A blocked trial labels the planned example,
+    # which violates the tested literal alone: it halves the count.
+    _, trials, summary = short_run
+    assert summary["vs_count_initial"] == 2 ** 14 and summary["vs_count_initial_exact"]
+    assert summary["info_bound_trials"] == 14
+    counts = [t["vs_count"] for t in trials]
+    assert all(t["vs_count_exact"] is True for t in trials)
+    assert counts[:2] == [2 ** 13, 2 ** 12]
+    assert counts[2] < counts[1]
+    assert summary["vs_count_final"] == counts[-1]
