@@ -302,4 +302,5 @@ required_hook_(pose_target/5).
 required_hook_(spatial_definition/4).
 required_hook_(pose_domain/3).
 required_hook_(geometry_default/4).
+required_hook_(reach_definition/3).
 

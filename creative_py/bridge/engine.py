@@ -521,6 +521,14 @@ class Engine:
         """
         return self._must("solve_pose", case, list(required), list(negated), list(context))
 
+    def pose_reachable(self, case: str, tool: str, required: Sequence[Term],
+                       context: Sequence[Term]) -> Term:
+        """Return ``reachable(Pose)``, ``unreachable(Conflict, Params)`` or ``undecided``:
+        whether the held ``tool`` reaches a pose where the spatial literals ``required``
+        hold in the task ``context`` (``geometry_clp:pose_reachable/5``; ``Params`` are
+        ``param(Name, Value, Meaning)`` of the reach's geometry parameters)."""
+        return self._must("pose_reachable", case, tool, list(required), list(context))
+
     def solve_size(self, kind: str, literals: Sequence[Term], context: Sequence[Term]) -> Term:
         """Return ``dims([Field=Value, ...])`` (metres, degrees where named ``_deg``) or
         ``infeasible(Conflict)`` for a new tool of ``kind`` (``geometry_clp:solve_size/4``)."""

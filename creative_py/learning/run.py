@@ -302,6 +302,9 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
     return {
         "variant": res.variant,
         "needed": res.needed,
+        "predicted": res.predicted,
+        # The learned model's best tool was not tried: the geometry predicted its failure.
+        "predicted_failure_skipped": bool(res.predicted and res.predicted["feasible"] is False),
         "trials": len([t for t in res.trials if t.phase == "create"]),
         "failed_trials": len([t for t in res.trials
                               if t.phase == "create" and t.outcome != "success"]),
