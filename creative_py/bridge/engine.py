@@ -554,6 +554,12 @@ class Engine:
         ontology file does not answer (empty when it answers them all)."""
         return self._must("case_missing_hooks", case)
 
+    def catalogue_ranges(self, case: str, facts: Sequence[Term]) -> list:
+        """Return ``range(Object, Fact, Number, Property, Value, Low, High, Bounds)`` for
+        every numeric catalogue fact of ``facts`` that the case's tool hierarchy reads
+        into a qualitative value (``case:catalogue_ranges/3``)."""
+        return self._must("catalogue_ranges", case, list(facts))
+
     def catalogue_predicates(self, case: str) -> list:
         """Return the ``Name/Arity`` terms of the catalogue facts of the case's tool class
         (the ontology's vocabulary for describing a catalogued object)."""
