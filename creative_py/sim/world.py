@@ -483,7 +483,10 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
         ``object -> {catalogue fact -> (low, high, bounds)}``: the qualitative range of
         each number the object has (the engine's ``catalogue_ranges``). Each number is
         drawn uniformly inside its own range, rounded to 0.1 mm (0.0001 degree), so the
-        object keeps its qualitative values; a number without a range is kept.
+        object keeps its qualitative values; a number without a range is kept, and so
+        are the numbers of the demonstration's tool (the trainer's demonstration is
+        part of the case and must work: drawn, a hook with a long, wide prong on a thin
+        handle tipped off its stand at the trainer's grasp).
     keeps : callable or None
         ``keeps(name, spec)`` says whether a drawn object still has every structural
         literal of the original (a ratio of two numbers can change its value); the
@@ -504,6 +507,8 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
     order = [names[int(i)] for i in rng.permutation(len(names))]
     objects: dict[str, dict[str, float]] = {}
     for name in names:
+        if name == world.manifest.demonstration.tool:
+            continue
         spec = world.items[name].spec
         kind = tool_kind(spec)
         fields = kind.FACT_FIELDS
