@@ -16,7 +16,9 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
 * ``[randomise]`` (optional): how ``--world-seed N`` jitters the target's locations,
   ``[randomise.location.<key>]`` with ``jitter`` (the largest change, in the key's own
   unit), ``min`` and ``max`` (the value is kept inside) for a scene value a location
-  sets (``back_gap``, ``"door1.open_angle"``).
+  sets (``back_gap``, ``"door1.open_angle"``); ``[randomise.catalogue.<field>]`` with
+  ``min`` and/or ``max`` narrows the draw of a catalogue spec field (``handle_width``)
+  inside each object's own qualitative range, where the simulator needs it.
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under
 ``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field
@@ -116,6 +118,9 @@ class CaseManifest:
     demonstration: DemonstrationSpec
     location_jitter: tuple[LocationJitter, ...] = ()
     paper_trials: int | None = None
+    catalogue_bounds: tuple[tuple[str, float, float], ...] = ()
+    """``(spec field, min, max)`` from ``[randomise.catalogue]``: a drawn number of that
+    field stays within them (and within its object's own qualitative range)."""
 
     @property
     def harder_variant(self) -> str:
@@ -270,8 +275,19 @@ def read_manifest(folder: Path) -> CaseManifest:
                              tuple(steps), pose)
     df.done()
     jitters = []
+    bounds: list[tuple[str, float, float]] = []
     if f.has("randomise"):
         rf = f.table("randomise")
+        cf = rf.table("catalogue", {})
+        for key in list(cf.data):
+            bf = cf.table(key)
+            lo = bf.float("min", -math.inf) if bf.has("min") else -math.inf
+            hi = bf.float("max", math.inf) if bf.has("max") else math.inf
+            if lo > hi:
+                raise bf.error("max", f"must be >= min ({lo}), got {hi}")
+            bounds.append((key, lo, hi))
+            bf.done()
+        cf.done()
         lf = rf.table("location", {})
         for key in list(lf.data):
             jf = lf.table(key)
@@ -285,7 +301,8 @@ def read_manifest(folder: Path) -> CaseManifest:
     f.done()
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), tuple(skills), pose_term, tuple(params),
-                            tuple(variants), demo, tuple(jitters), paper_trials)
+                            tuple(variants), demo, tuple(jitters), paper_trials,
+                            tuple(bounds))
     try:
         manifest.check_pose(pose, "demonstration.pose")
     except ValueError as exc:

@@ -482,7 +482,8 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
     ranges : mapping
         ``object -> {catalogue fact -> (low, high, bounds)}``: the qualitative range of
         each number the object has (the engine's ``catalogue_ranges``). Each number is
-        drawn uniformly inside its own range, rounded to 0.1 mm (0.0001 degree), so the
+        drawn uniformly inside its own range (narrowed by the manifest's
+        ``[randomise.catalogue]``, where given), rounded to 0.1 mm (0.0001 degree), so the
         object keeps its qualitative values; a number without a range is kept, and so
         are the numbers of the demonstration's tool (the trainer's demonstration is
         part of the case and must work: drawn, a hook with a long, wide prong on a thin
@@ -512,14 +513,24 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
         spec = world.items[name].spec
         kind = tool_kind(spec)
         fields = kind.FACT_FIELDS
-        todo = sorted((fact, r) for fact, r in ranges.get(name, {}).items() if fact in fields)
+        narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
+        todo = []
+        for fact, (lo, hi, bounds) in sorted(ranges.get(name, {}).items()):
+            if fact not in fields:
+                continue
+            a, b = narrow.get(fields[fact], (lo, hi))
+            todo.append((fact, (max(lo, a), min(hi, b), bounds, (lo, hi, bounds))))
         if not todo:
             continue
         for attempt in range(attempts):
             values = {}
-            for fact, (lo, hi, bounds) in todo:
+            for fact, (lo, hi, bounds, own) in todo:
+                if lo > hi:
+                    raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
+                                     f"[randomise.catalogue.{fields[fact]}] leaves {name} "
+                                     f"no number in its own range {own[:2]}")
                 x = round(float(rng.uniform(lo, hi)), 4)
-                while not _inside(x, (lo, hi, bounds)):
+                while not (_inside(x, own) and lo <= x <= hi):
                     x = round(float(rng.uniform(lo, hi)), 4)
                 values[fields[fact]] = x
             drawn = kind.redrawn(spec, values)

@@ -66,6 +66,9 @@ def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
                 continue
             lo, hi, bounds = ranges[(name, fact)]
             assert _inside(getattr(spec, fld), lo, hi, bounds), (name, fld, getattr(spec, fld))
+            for f, a, b in world.manifest.catalogue_bounds:   # [randomise.catalogue]
+                if f == fld:
+                    assert a <= getattr(spec, fld) <= b, (name, fld, getattr(spec, fld))
             changed += getattr(spec, fld) != getattr(old, fld)
         lits = lambda s: {str(x) for x in engine.abstract_state(
             case, [fact_term(f) for f in catalogue_facts(s)])}
