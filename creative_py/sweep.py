@@ -232,7 +232,8 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         what = (f"{row['trials_to_learn']} tool-use trials, {row['creation_trials'] or '-'} "
                 f"creation trials" if row["status"] == "ok" else row["error"])
         say(f"[{done}/{total}, {total - done} left] {row['case']} {row['strategy']} "
-            f"seed {row['seed']} world {row['world_seed'] or '-'}: {row['status']}, {what}, "
+            f"seed {row['seed']} world {'-' if row['world_seed'] == '' else row['world_seed']}: "
+            f"{row['status']}, {what}, "
             f"{row['wall_time_s']} s")
         _write_csv(folder / "sweep.csv", result.rows)
 

@@ -237,7 +237,11 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any
     """Draw a randomised world of ``world`` for world seed ``seed``
     (:func:`creative_py.sim.world.draw_world`): the engine gives each catalogued
     number's own qualitative range (``catalogue_ranges``) and checks that every drawn
-    object keeps its structural literals."""
+    object keeps its structural literals; the physics checks that it lies still where
+    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again."""
+    from dataclasses import replace
+
+    from creative_py.sim import tool_rests
     from creative_py.sim.tools import catalogue_facts
 
     case = world.manifest.id
@@ -252,8 +256,13 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any
         return {str(lit) for lit in state}
 
     originals = {name: literals(spec) for name, spec in world.catalogue.items()}
-    return draw_world(world, seed, ranges,
-                      keeps=lambda name, spec: literals(spec) == originals[name])
+    def keeps(name: str, spec: Any) -> bool:
+        if literals(spec) != originals[name]:
+            return False
+        item = replace(world.items[name], spec=spec)
+        return tool_rests(replace(world, items={**world.items, name: item}), name)
+
+    return draw_world(world, seed, ranges, keeps=keeps)
 
 
 def check_manifest(engine: Engine, manifest: Any) -> None:

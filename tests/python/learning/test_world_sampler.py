@@ -5,7 +5,8 @@ it. Checked here: the same seed gives the same world, different seeds differ, ev
 drawn number lies inside its object's own range (the range of the value the shipped
 object has), every object keeps its structural literals, the catalogue is a
 permutation, the locations stay within the manifest's [randomise] bounds, and the
-drawn world passes the run's own checks (check_catalogue, the loader's scene checks).
+drawn world passes the run's own checks (check_catalogue, the loader's scene checks),
+and every drawn tool lies still on its stand (the physics: a sim test).
 """
 
 import pytest
@@ -13,11 +14,13 @@ import pytest
 from creative_py.bridge import Engine, fact_term
 from creative_py.case import load_cases
 from creative_py.learning.run import check_catalogue, draw_catalogue_world
-from creative_py.sim import load_world
+from creative_py.sim import load_world, tool_rests
 from creative_py.sim.tools import catalogue_facts, tool_kind
 from creative_py.sim.world import apply_drawn
 
 CASES = sorted(load_cases())
+
+pytestmark = pytest.mark.sim
 
 
 def _inside(x, lo, hi, bounds):
@@ -30,19 +33,30 @@ def engine():
     return Engine.instance()
 
 
+_DRAWS: dict = {}
+
+
+def _drawn(engine, case, seed):
+    """Each case's world seeds 0 and 1 are drawn once for the module."""
+    if (case, seed) not in _DRAWS:
+        _DRAWS[(case, seed)] = draw_catalogue_world(engine, load_world(load_cases()[case]),
+                                                    seed)
+    return _DRAWS[(case, seed)]
+
+
 @pytest.mark.parametrize("case", CASES)
 def test_same_seed_same_world_and_different_seeds_differ(engine, case):
     world = load_world(load_cases()[case])
-    a, b = draw_catalogue_world(engine, world, 7), draw_catalogue_world(engine, world, 7)
+    a, b = _drawn(engine, case, 0), draw_catalogue_world(engine, world, 0)
     assert a == b
-    c = draw_catalogue_world(engine, world, 8)
+    c = _drawn(engine, case, 1)
     assert c["objects"] != a["objects"]
     assert c["order"] != a["order"] or c["locations"] != a["locations"]
     assert apply_drawn(world, a).catalogue == apply_drawn(world, b).catalogue
 
 
 @pytest.mark.parametrize("case", CASES)
-@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize("seed", [0, 1])
 def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
     world = load_world(load_cases()[case])
     facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
@@ -50,7 +64,7 @@ def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
     for r in engine.catalogue_ranges(case, facts):
         obj, fact, _x, _p, _v, lo, hi, bounds = r.args
         ranges[(str(obj), str(fact))] = (float(lo), float(hi), str(bounds))
-    drawn = draw_catalogue_world(engine, world, seed)
+    drawn = _drawn(engine, case, seed)
     new = apply_drawn(world, drawn)
     assert sorted(drawn["order"]) == sorted(world.items)
     assert list(new.items) == drawn["order"]
@@ -75,6 +89,7 @@ def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
         assert lits(spec) == lits(old), name
     assert changed > len(world.items)
     check_catalogue(engine, new)
+    assert all(tool_rests(new, name) for name in new.items)
     jitters = world.manifest.location_jitter
     assert jitters, f"{case}: no [randomise] table in its case.toml"
     for i, (before, after) in enumerate(zip(world.location_sets, new.location_sets), 1):
