@@ -333,8 +333,8 @@ def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
             data.append(ok)
             if ok:
                 jitter = [x + 0.12 * math.sin(7.3 * i) for i in range(len(ok))]
-                ax.scatter(jitter, ok, s=14, color=colours[si % len(colours)], alpha=0.75,
-                           zorder=3)
+                ax.scatter(jitter, ok, s=14, color=colours[si % len(colours)], alpha=0.8,
+                           zorder=5)
             x += 1.0
         end = x - 1.0
         try:
@@ -360,12 +360,23 @@ def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
     ax.set_xticks(positions)
     ax.set_xticklabels(labels, fontsize=8)
     ax.set_ylabel("tool-use trials to learn")
-    ax.set_ylim(bottom=0)
+    tops = [v for d in data for v in d] + [1.0]
+    tops += [float(r["info_bound_trials"]) for r in rows
+             if r.get("info_bound_trials") not in ("", None)]
+    for case in cases:
+        try:
+            tops.append(float(get_case(case).paper_trials or 0))
+        except KeyError:
+            pass
+    ax.set_ylim(0, max(tops) * 1.15 + 1)
     n = len(rows)
-    ax.set_title(f"CREATIVE-py sweep: {n} run{'s' if n != 1 else ''}", fontsize=10)
+    worlds = len({r["world_seed"] for r in rows})
+    ax.set_title(f"CREATIVE-py sweep: {n} run{'s' if n != 1 else ''} over {worlds} "
+                 f"world{'s' if worlds != 1 else ''}", fontsize=10)
     if not marked_bound:
         ax.plot([], [], " ", label="log2 bound: not in these runs' summaries")
-    ax.legend(fontsize=8, loc="upper right")
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.18), ncol=2,
+              frameon=False)
     ax.grid(axis="y", alpha=0.3)
     fig.tight_layout()
     fig.savefig(path, dpi=120)

@@ -64,3 +64,17 @@ def test_bad_options_are_one_line_and_exit_2_before_ray(tmp_path, args, says):
     assert len(errors) == 1 and says in errors[0], p.stderr
     assert "Traceback" not in p.stderr
     assert list(tmp_path.iterdir()) == []
+
+
+@pytest.mark.sim
+@pytest.mark.slow
+def test_two_runs_one_after_another_in_one_process(tmp_path):
+    """--serial: the runs share this process and its one Prolog engine."""
+    runs = plan_runs(["rake"], ["paper"], [0], [0, 1])
+    res = run_sweep(runs, tmp_path, SweepOptions(phase="use", max_trials=1, eval_trials=0),
+                    serial=True, progress=lambda _m: None, name="s")
+    assert [r["status"] for r in res.rows] == ["ok", "ok"], [r["error"] for r in res.rows]
+    drawn = [json.loads((Path(r["run_dir"]) / "run.json").read_text())["drawn_world"]
+             for r in res.rows]
+    assert drawn[0] != drawn[1]
+    assert (tmp_path / "s" / "sweep.png").is_file()
