@@ -4,14 +4,21 @@ Every tool-use task (the paper's hook and wedge cases, and any a researcher adds
 world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``):
 
 * ``id``, ``title``, ``ontology`` (the file ``ontology/cases/<ontology>.pl`` that holds
-  the case's knowledge), ``trial_budget`` (N of Algorithm 1);
+  the case's knowledge), ``trial_budget`` (N of Algorithm 1), optional ``paper_trials``
+  (the paper's count of tool-use trials, marked on a sweep's plot);
 * ``[roles]``: which ``objects.toml`` tables are the candidate tools, the target and
   the context object; ``goal``: the task's goal literals;
 * ``[[skill]]``: the innate skills in plan order, each bound to a simulator primitive,
   with the roles of its arguments; one takes the pose, one is the tool action;
 * ``[pose]``: the pose term's name and its parameters (name, unit, bounds);
 * ``[[variant]]``: task variants with the scene values they set, one marked ``harder``;
-* ``[demonstration]``: the trainer's tool, variant, location, skills and pose.
+* ``[demonstration]``: the trainer's tool, variant, location, skills and pose;
+* ``[randomise]`` (optional): how ``--world-seed N`` jitters the target's locations,
+  ``[randomise.location.<key>]`` with ``jitter`` (the largest change, in the key's own
+  unit), ``min`` and ``max`` (the value is kept inside) for a scene value a location
+  sets (``back_gap``, ``"door1.open_angle"``); ``[randomise.catalogue.<field>]`` with
+  ``min`` and/or ``max`` narrows the draw of a catalogue spec field (``handle_width``)
+  inside each object's own qualitative range, where the simulator needs it.
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under
 ``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field
@@ -82,6 +89,16 @@ class DemonstrationSpec:
 
 
 @dataclass(frozen=True)
+class LocationJitter:
+    """How a randomised world moves one scene value of every location (``[randomise]``)."""
+
+    key: str
+    jitter: float
+    min: float
+    max: float
+
+
+@dataclass(frozen=True)
 class CaseManifest:
     """Everything ``worlds/<folder>/case.toml`` says about one case."""
 
@@ -99,6 +116,11 @@ class CaseManifest:
     pose_params: tuple[PoseParam, ...]
     variants: tuple[Variant, ...]
     demonstration: DemonstrationSpec
+    location_jitter: tuple[LocationJitter, ...] = ()
+    paper_trials: int | None = None
+    catalogue_bounds: tuple[tuple[str, float, float], ...] = ()
+    """``(spec field, min, max)`` from ``[randomise.catalogue]``: a drawn number of that
+    field stays within them (and within its object's own qualitative range)."""
 
     @property
     def harder_variant(self) -> str:
@@ -187,6 +209,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     title = f.str("title")
     ontology = f.str("ontology")
     budget = f.int("trial_budget", minimum=1)
+    paper_trials = f.int("paper_trials", minimum=1) if f.has("paper_trials") else None
     roles = f.table("roles")
     tools_table, target, context = roles.str("tools"), roles.str("target"), roles.str("context")
     roles.done()
@@ -251,10 +274,35 @@ def read_manifest(folder: Path) -> CaseManifest:
     demo = DemonstrationSpec(df.str("tool"), demo_variant, df.int("location", minimum=1),
                              tuple(steps), pose)
     df.done()
+    jitters = []
+    bounds: list[tuple[str, float, float]] = []
+    if f.has("randomise"):
+        rf = f.table("randomise")
+        cf = rf.table("catalogue", {})
+        for key in list(cf.data):
+            bf = cf.table(key)
+            lo = bf.float("min", -math.inf) if bf.has("min") else -math.inf
+            hi = bf.float("max", math.inf) if bf.has("max") else math.inf
+            if lo > hi:
+                raise bf.error("max", f"must be >= min ({lo}), got {hi}")
+            bounds.append((key, lo, hi))
+            bf.done()
+        cf.done()
+        lf = rf.table("location", {})
+        for key in list(lf.data):
+            jf = lf.table(key)
+            lo, hi = jf.float("min"), jf.float("max")
+            if lo > hi:
+                raise jf.error("max", f"must be >= min ({lo}), got {hi}")
+            jitters.append(LocationJitter(key, jf.float("jitter", minimum=0.0), lo, hi))
+            jf.done()
+        lf.done()
+        rf.done()
     f.done()
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), tuple(skills), pose_term, tuple(params),
-                            tuple(variants), demo)
+                            tuple(variants), demo, tuple(jitters), paper_trials,
+                            tuple(bounds))
     try:
         manifest.check_pose(pose, "demonstration.pose")
     except ValueError as exc:

@@ -211,6 +211,61 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
 
 
 @app.command()
+def sweep(
+    cases: list[str] = typer.Argument(..., help="Case ids (creative cases lists them)."),
+    strategies: str = typer.Option("informative", "--strategies",
+                                   help="Comma-separated: paper, informative, random."),
+    seeds: str = typer.Option("0", "--seeds", help="Seeds: N, A-B or a comma list."),
+    world_seeds: Optional[str] = typer.Option(None, "--world-seeds", help="World seeds "
+                                              "(N, A-B, a comma list); default: the world "
+                                              "files as shipped."),
+    out: Path = typer.Option(Path("runs"), "--out", help="Parent folder of the sweep's "
+                             "folder."),
+    address: Optional[str] = typer.Option(None, "--address", help="Attach to this Ray "
+                                          "cluster instead of starting a local one."),
+    num_cpus: Optional[int] = typer.Option(None, "--num-cpus", help="Cores of the local "
+                                           "Ray instance (default: every core)."),
+    serial: bool = typer.Option(False, "--serial", help="Run the runs one after another "
+                                "in this process, without Ray."),
+    phase: str = typer.Option("all", "--phase", help="use, create or all (every run)."),
+    max_trials: Optional[int] = typer.Option(None, "--max-trials", help="N of Algorithm 1 "
+                                             "(default: each manifest's trial_budget)."),
+    eval_trials: int = typer.Option(4, "--eval-trials", help="Evaluation trials of the "
+                                    "learned model."),
+) -> None:
+    """Run every combination of cases, strategies, seeds and world seeds on Ray and
+    write sweep.csv and sweep.png."""
+    from creative_py.learning.run import PHASES
+    from creative_py.sweep import (SweepOptions, parse_ints, parse_strategies, plan_runs,
+                                   run_sweep)
+
+    try:
+        names = parse_strategies(strategies)
+        seed_list = parse_ints(seeds, "--seeds")
+        worlds = parse_ints(world_seeds, "--world-seeds") if world_seeds is not None else [None]
+        runs = plan_runs(cases, names, seed_list, worlds)
+    except ValueError as exc:
+        _fail(str(exc))
+    if phase not in PHASES:
+        _fail(f"--phase must be one of {', '.join(PHASES)}, got {phase!r}")
+    for option, value, least in (("--max-trials", max_trials, 1), ("--eval-trials",
+                                                                   eval_trials, 0),
+                                 ("--num-cpus", num_cpus, 1)):
+        if value is not None and value < least:
+            _fail(f"{option} must be at least {least}, got {value}")
+    if out.exists() and not out.is_dir():
+        _fail(f"--out {out}: not a folder")
+    opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials)
+    with _one_line_errors():
+        result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
+                           serial=serial)
+    ok = sum(r["status"] == "ok" for r in result.rows)
+    typer.echo(f"{result.folder}: {ok} of {len(result.rows)} runs ok in "
+               f"{result.wall_time_s} s", err=True)
+    typer.echo(str(result.folder))
+
+
+@app.command()
 def run(
     case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
     seed: int = typer.Option(0, "--seed", help="Seed of the physics and sensor noise."),
@@ -236,6 +291,11 @@ def run(
                               "first trial of each failure reason), all or none."),
     gui: bool = typer.Option(False, "--gui", help="Show the trials in pybullet's GUI "
                              "(needs a display)."),
+    world_seed: Optional[int] = typer.Option(None, "--world-seed", help="Draw a randomised "
+                                             "world from the case's manifest (catalogue "
+                                             "numbers inside their qualitative ranges, "
+                                             "order shuffled, locations jittered); the "
+                                             "same N gives the same world."),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot,
     video clips)."""
@@ -266,7 +326,8 @@ def run(
     _manifest(case, world)
     for option, value, least in (("--seed", seed, 0), ("--max-trials", max_trials, 1),
                                  ("--consecutive", consecutive, 1),
-                                 ("--eval-trials", eval_trials, 0)):
+                                 ("--eval-trials", eval_trials, 0),
+                                 ("--world-seed", world_seed, 0)):
         if value is not None and value < least:
             _fail(f"{option} must be at least {least}, got {value}")
     if out.exists() and not out.is_dir():
@@ -274,7 +335,7 @@ def run(
     try:
         opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
                           consecutive=consecutive, eval_trials=eval_trials, video=video,
-                          gui=gui, strategy=strategy)
+                          gui=gui, strategy=strategy, world_seed=world_seed)
     except ValueError as exc:
         _fail(f"--phase: {exc}" if "phase" in str(exc) else
               f"--strategy: {exc}" if "strategy" in str(exc) else str(exc))

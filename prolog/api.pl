@@ -42,7 +42,7 @@ if it needs a new module, its use_module/1 below.
 :- use_module(subsumption,
               [ theta_subsumes/2, theta_subsumes/3, clause_reduce/2, clause_reduce/3,
                 clause_covers/2, clause_violations/3, clause_violations/4 ]).
-:- use_module(geometry_clp, [solve_pose/5, solve_size/4]).
+:- use_module(geometry_clp, [solve_pose/5, solve_size/4, pose_reachable/5]).
 :- use_module(rlgg, [rlgg/4, rlgg/5, saturate/4]).
 :- use_module(nbr, [nbr_reduce/3]).
 :- use_module(version_space,
@@ -51,7 +51,8 @@ if it needs a new module, its use_module/1 below.
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4, pose_world/5]).
 :- use_module(case, [case_info/2, tool_vocabulary/2, size_context_facts/1,
-                      catalogue_predicates/2, case_missing_hooks/2]).
+                      catalogue_predicates/2, case_missing_hooks/2,
+                      catalogue_ranges/3]).
 :- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
                            plan_experiment/4, plan_experiment/5, plan_experiment/6,
                            plan_use/5,
@@ -118,10 +119,13 @@ api_op(tool_vocabulary(Case), Classes, tool_vocabulary(Case, Classes)).
 api_op(size_context_facts, Indicators, size_context_facts(Indicators)).
 api_op(catalogue_predicates(Case), Indicators, catalogue_predicates(Case, Indicators)).
 api_op(case_missing_hooks(Case), Missing, case_missing_hooks(Case, Missing)).
+api_op(catalogue_ranges(Case, Facts), Ranges, catalogue_ranges(Case, Facts, Ranges)).
 % Geometry: spatial literals -> pose numbers, structural literals -> dimensions.
 api_op(solve_pose(Case, Required, Negated, Context), R,
        solve_pose(Case, Required, Negated, Context, R)).
 api_op(solve_size(Kind, Literals, Context), R, solve_size(Kind, Literals, Context, R)).
+api_op(pose_reachable(Case, Tool, Required, Context), R,
+       pose_reachable(Case, Tool, Required, Context, R)).
 % Tool-use learning (Algorithm 1) and tool creation (Algorithm 2).
 api_op(learn_from_demonstration(Case, Steps), R, learn_from_demonstration(Case, Steps, R)).
 api_op(observed_state(Case, Facts), S, observed_state(Case, Facts, S)).

@@ -9,7 +9,8 @@
             tool_vocabulary/2,        % +Case, -Classes
             size_context_facts/1,     % -Indicators
             catalogue_predicates/2,   % +Case, -Indicators
-            case_missing_hooks/2      % +Case, -Indicators
+            case_missing_hooks/2,     % +Case, -Indicators
+            catalogue_ranges/3        % +Case, +Facts, -Ranges
           ]).
 
 /** <module> How the engine asks a case: hook predicates of the ontology
@@ -265,6 +266,64 @@ catalogue_predicates(Case, Indicators) :-
     case_answer(case_tool_class(Case, Class)),
     findall(PI, kb_holds(catalogue_predicate(Class, PI)), Indicators).
 
+%!  catalogue_ranges(+Case, +Facts:list, -Ranges:list) is det.
+%
+%   Ranges lists range(Object, Fact, Number, Property, Value, Low, High, Bounds) for
+%   every numeric catalogue fact Fact(Object, Number) of Facts that a structural rule
+%   of the case's tool hierarchy turns into a qualitative value: the rule
+%   Property(T, V) :- ..., Fact(T, X), ..., qualitative_value(Property, X, V) and the
+%   qualitative_range/5 of the value Number takes.  A number no rule reads directly
+%   (a stick's zero prong) or outside every range has no entry.  A randomised world
+%   draws each catalogued number inside its entry, so every object keeps its
+%   qualitative values.
+%
+%   ==
+%   ?- catalogue_ranges(hook, [object_kind(h, hook), handle_length_m(h, 0.35)], R).
+%   R = [range(h, handle_length_m, 0.35, handle_length, medium, 0.25, 0.45, closed_open)].
+%   ==
+catalogue_ranges(Case, Facts, Ranges) :-
+    must_be_case(Case),
+    must_be(list, Facts),
+    case_answer(case_tool_class(Case, Class)),
+    findall(range(Obj, F, X, P, V, Lo, Hi, B),
+            ( member(Fact, Facts),
+              compound(Fact),
+              Fact =.. [F, Obj, X],
+              number(X),
+              kb_holds(catalogue_predicate(Class, F/2)),
+              fact_property_(F, P),
+              kb_clause(qualitative_range(P, V, Lo, Hi, B), true),
+              in_range_(B, X, Lo, Hi) ),
+            Ranges0),
+    list_to_set(Ranges0, Ranges).
+
+%   fact_property_(+Fact, -Property): a structural rule reads Fact's number into
+%   Property's qualitative value.
+fact_property_(F, P) :-
+    findall(P0,
+            ( kb_clause(qualitative_range(P0, _, _, _, _), true) ),
+            Ps0),
+    list_to_set(Ps0, Ps),
+    member(P, Ps),
+    functor(Head, P, 2),
+    kb_clause(Head, Body),
+    body_goal_(Body, G),
+    G =.. [F, _, X],
+    body_goal_(Body, qualitative_value(P1, Y, _)),
+    P1 == P,
+    X == Y,
+    !.
+
+body_goal_((A, B), G) :-
+    !,
+    (   body_goal_(A, G)
+    ;   body_goal_(B, G)
+    ).
+body_goal_(G, G).
+
+in_range_(closed_open, X, Lo, Hi) :- X >= Lo, X < Hi.
+in_range_(closed_closed, X, Lo, Hi) :- X >= Lo, X =< Hi.
+in_range_(open_closed, X, Lo, Hi) :- X > Lo, X =< Hi.
 
 %!  case_missing_hooks(+Case, -Missing:list) is det.
 %
@@ -302,4 +361,5 @@ required_hook_(pose_target/5).
 required_hook_(spatial_definition/4).
 required_hook_(pose_domain/3).
 required_hook_(geometry_default/4).
+required_hook_(reach_definition/3).
 

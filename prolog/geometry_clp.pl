@@ -6,6 +6,7 @@
             pose_constraints/5,       % +Case, +Required, +Negated, +Context, -Pose
             pose_search/2,            % +Pose, -Ground
             solve_pose/5,             % +Case, +Required, +Negated, +Context, -Result
+            pose_reachable/5,         % +Case, +Tool, +Required, +Context, -Result
             size_constraints/4,       % +Kind, +Literals, +Context, -Dims
             size_search/2,            % +Dims, -Ground
             solve_size/4              % +Kind, +Literals, +Context, -Result
@@ -40,6 +41,12 @@ hook predicates (case.pl says how a missing one is reported):
   - geometry_value(?Case, ?Name, ?Tool, ?Target, +Geometry, -Value), proved on the
     state (knowledge:kb_prove/2), optional: the parameter Name from the facts; Geometry
     holds the parameters listed before it.
+  - reach_definition(?Case, ?PoseTerm, ?Constraints): how far a held tool reaches:
+    every pose the arm can put it at satisfies the linear comparisons Constraints
+    (over the pose numbers and geometry parameters, which may come from the tool's
+    catalogue facts); several clauses are alternatives; [] when the case's geometry
+    sets no reach (pose_reachable/5 then answers undecided).  Read only by
+    pose_reachable/5, never by the experiments.
   - task_roles/3 (case.pl), task_predicate/2 (abstract_state.pl): the default target,
     and the task literals a size query ignores.
 
@@ -444,6 +451,86 @@ deletion_([I|Is], Kept, Feasible, Conflict) :-
     ->  deletion_(Is, [I|Kept], Feasible, Conflict)
     ;   deletion_(Is, Kept, Feasible, Conflict)
     ).
+
+%!  pose_reachable(+Case, +Tool, +Required:list, +Context:list, -Result) is det.
+%
+%   Whether the held Tool can be put at a pose where every spatial literal of Required
+%   holds, in the task described by the primitive facts Context (the catalogue's
+%   numbers of Tool, the perceived apparatus and target): the pose model of
+%   pose_constraints/5 plus the case's reach_definition/3, whose geometry parameters
+%   pose_geometry/5 computes with Tool's own dimensions.  Result is
+%
+%     - reachable(Pose): a ground pose within reach where Required holds;
+%     - unreachable(Conflict, Params): no such pose; Conflict is a minimal sublist of
+%       Required that cannot hold within reach (the reach and the pose domain are
+%       always posted, never named), Params lists param(Name, Value, Meaning) for the
+%       geometry parameters the reach definition names;
+%     - undecided: the case's reach definition is [] (its geometry sets no reach, the
+%       outcome depends on something else, a force), so the pose model cannot tell.
+%
+%   Tool creation asks this before it tries the learned model's best tool in a harder
+%   task: an unreachable pose is a failure the geometry predicts, so no trial is run.
+%
+%   ==
+%   ?- pose_reachable(hook, h, [behind(h, cube1)],
+%                     [handle_length_m(h, 0.2), tube_mouth(tube1, 0.6, 0.0, 0.0),
+%                      tube_length_m(tube1, 0.45), tube_inner_m(tube1, 0.1, 0.06),
+%                      pose(cube1, 1.0, 0.0, 0.0, 0.0)], R).
+%   R = unreachable([behind(h, cube1)], [param(dx_reach, ..., ...)]).
+%   ==
+pose_reachable(Case, Tool, Required, Context, Result) :-
+    must_be_case(Case),
+    must_be(atom, Tool),
+    must_be(list, Required),
+    must_be(list, Context),
+    findall(Cs, case_holds(reach_definition(Case, _, Cs)), Reaches),
+    (   forall(member(Cs, Reaches), Cs == [])
+    ->  Result = undecided
+    ;   roles_(Case, Required, _, Target),
+        (   reach_point_(Case, Tool, Target, Required, Context, Ground)
+        ->  Result = reachable(Ground)
+        ;   findall(req(L), member(L, Required), Items),
+            minimal_conflict_(Items, reach_items_feasible_(Case, Tool, Target, Context),
+                              Conflict0),
+            maplist(item_literal_, Conflict0, Conflict),
+            pose_geometry(Case, Tool, Target, Context, Geometry),
+            findall(param(N, V, M),
+                    ( member(Cs, Reaches),
+                      reach_parameter_(Cs, N),
+                      memberchk(N=V, Geometry),
+                      once(case_holds(geometry_default(Case, N, _, M))) ),
+                    Params0),
+            list_to_set(Params0, Params),
+            Result = unreachable(Conflict, Params)
+        )
+    ).
+
+reach_point_(Case, Tool, Target, Required, Context, Ground) :-
+    findall(G,
+            once(( reach_constraints_(Case, Tool, Target, Required, Context, Pose),
+                   pose_search(Pose, G) )),
+            [Ground]).
+
+reach_constraints_(Case, Tool, Target, Required, Context, Pose) :-
+    pose_geometry(Case, Tool, Target, Context, Geometry),
+    case_answer(pose_domain(Case, Pose, Domain)),
+    post_all_(Domain, Geometry),
+    maplist(post_required_(Case, Pose, Geometry), Required),
+    case_holds(reach_definition(Case, Pose, Reach)),
+    post_all_(Reach, Geometry).
+
+reach_items_feasible_(Case, Tool, Target, Context, Items) :-
+    findall(L, member(req(L), Items), Rs),
+    \+ \+ reach_point_(Case, Tool, Target, Rs, Context, _).
+
+%   reach_parameter_(+Comparisons, -Name): a geometry parameter Comparisons names.
+reach_parameter_(Comparisons, Name) :-
+    member(C, Comparisons),
+    C =.. [_, L, R],
+    member(Side, [L, R]),
+    sub_term(Name, Side),
+    atom(Name),
+    Name \== pi.
 
                  /*******************************
                  *           SIZE MODEL         *

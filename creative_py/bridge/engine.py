@@ -528,6 +528,14 @@ class Engine:
         """
         return self._must("solve_pose", case, list(required), list(negated), list(context))
 
+    def pose_reachable(self, case: str, tool: str, required: Sequence[Term],
+                       context: Sequence[Term]) -> Term:
+        """Return ``reachable(Pose)``, ``unreachable(Conflict, Params)`` or ``undecided``:
+        whether the held ``tool`` reaches a pose where the spatial literals ``required``
+        hold in the task ``context`` (``geometry_clp:pose_reachable/5``; ``Params`` are
+        ``param(Name, Value, Meaning)`` of the reach's geometry parameters)."""
+        return self._must("pose_reachable", case, tool, list(required), list(context))
+
     def solve_size(self, kind: str, literals: Sequence[Term], context: Sequence[Term]) -> Term:
         """Return ``dims([Field=Value, ...])`` (metres, degrees where named ``_deg``) or
         ``infeasible(Conflict)`` for a new tool of ``kind`` (``geometry_clp:solve_size/4``)."""
@@ -552,6 +560,12 @@ class Engine:
         """Return the ``Name/Arity`` terms of the engine's hook predicates that the case's
         ontology file does not answer (empty when it answers them all)."""
         return self._must("case_missing_hooks", case)
+
+    def catalogue_ranges(self, case: str, facts: Sequence[Term]) -> list:
+        """Return ``range(Object, Fact, Number, Property, Value, Low, High, Bounds)`` for
+        every numeric catalogue fact of ``facts`` that the case's tool hierarchy reads
+        into a qualitative value (``case:catalogue_ranges/3``)."""
+        return self._must("catalogue_ranges", case, list(facts))
 
     def catalogue_predicates(self, case: str) -> list:
         """Return the ``Name/Arity`` terms of the catalogue facts of the case's tool class

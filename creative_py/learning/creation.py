@@ -2,7 +2,13 @@
 
 Triggered when the task changes (the case manifest's harder variant) and the learned
 model's best available tool fails in the physics (TC trial 1), or when no available
-object satisfies the model. Then, in a loop::
+object satisfies the model. Before TC trial 1 the pose model is asked whether the held
+tool can reach the learned pose in the harder task at all
+(``geometry_clp:pose_reachable/5``: the tool's catalogue dimensions against the
+perceived apparatus and target); when it cannot, the failure is predicted, no trial is
+run and creation starts at once (:attr:`CreateResult.predicted` says why). When the
+geometry cannot tell (the case sets no reach: a force decides), the trial is run.
+Then, in a loop::
 
     create(Replaced, General, Instance, Structural, Dims) = engine.next_tool(...)
     spec  = spec_from_dict(kind + Dims)                      # sized by CLP(R)/CLP(FD)
@@ -67,6 +73,10 @@ class CreateResult:
     exhausted: Optional[str] = None
     replaced: Optional[Term] = None
     instance: Optional[Term] = None
+    predicted: Optional[dict[str, Any]] = None
+    """What the pose model said of the learned model's best tool in the harder task:
+    ``tool``, ``feasible`` (False: unreachable, no trial run; True: reachable; None:
+    the geometry cannot tell), ``why``."""
 
 
 class ToolCreator:
@@ -104,14 +114,19 @@ class ToolCreator:
         task = runner.task(variant)
         start = len(runner.trials)
         n = 0
-        # TC trial 1: the learned model with the best available tool.
+        # TC trial 1: the learned model with the best available tool, unless the pose
+        # model predicts that the tool cannot reach the learned pose in this task.
         use = self.engine.plan_use(self.case, vs, runner.task_facts(task))
+        predicted = None
         if use.name == "exploit":
-            n += 1
-            rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
-            if rec.outcome == "success":
-                return CreateResult(variant, False, [], None, vs, runner.trials[start:],
-                                    time.perf_counter() - t0)
+            predicted = self.predict(use, task)
+            runner.progress(f"TC predicted: {predicted['tool']}: {predicted['why']}")
+            if predicted["feasible"] is not False:
+                n += 1
+                rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
+                if rec.outcome == "success":
+                    return CreateResult(variant, False, [], None, vs, runner.trials[start:],
+                                        time.perf_counter() - t0, predicted=predicted)
         created: list[CreatedTool] = []
         tried: list[Term] = []
         exhausted = None
@@ -152,9 +167,41 @@ class ToolCreator:
                 ct.eval_outcomes = self._evaluate(spec, vs, task)
                 return CreateResult(variant, True, created, ct, vs, runner.trials[start:],
                                     time.perf_counter() - t0, replaced=replaced,
-                                    instance=instance)
+                                    instance=instance, predicted=predicted)
         return CreateResult(variant, True, created, None, vs, runner.trials[start:],
-                            time.perf_counter() - t0, exhausted)
+                            time.perf_counter() - t0, exhausted, predicted=predicted)
+
+    def predict(self, use: Term, task: TaskState) -> dict[str, Any]:
+        """Return what the pose model predicts of an ``exploit/4`` plan in ``task``.
+
+        Prolog decides (``pose_reachable/5``): the plan's required spatial literals, the
+        tool's catalogue dimensions and the perceived task. The answer is a dict with
+        ``tool``, ``feasible`` (False, True, or None when the geometry cannot tell) and
+        ``why`` (one sentence).
+        """
+        tool, _violated, _pose, required = use.args
+        reply = self.engine.pose_reachable(self.case, str(tool), list(required),
+                                           self.runner.task_facts(task))
+        out: dict[str, Any] = {"tool": str(tool), "variant": task.variant,
+                               "location": task.location}
+        if isinstance(reply, Compound) and reply.name == "unreachable":
+            conflict, params = reply.args
+            reach = "; ".join(f"{p.args[0]} = {float(p.args[1]):.3f} m "
+                              f"({str(p.args[2]).split(' (')[0]})" for p in params)
+            out.update(feasible=False, conflict=[term_text(c) for c in conflict],
+                       why=f"{', '.join(term_text(c) for c in conflict) or 'no pose'} "
+                           f"cannot hold within the reach of {tool} in the {task.variant} "
+                           f"task: {reach}; the trial would fail, so none is run")
+        elif isinstance(reply, Compound) and reply.name == "reachable":
+            out.update(feasible=True, pose=term_text(reply.args[0]),
+                       why=f"{tool} reaches the learned pose in the {task.variant} task "
+                           f"(e.g. {term_text(reply.args[0])}); the physics decides")
+        else:
+            out.update(feasible=None,
+                       why=f"the case's geometry sets no reach: the pose model cannot "
+                           f"tell whether {tool} works in the {task.variant} task; "
+                           f"the physics decides")
+        return out
 
     def _strengthen(self, spec: Any, ct: CreatedTool, struct: list, rec: TrialRecord, n: int,
                     vs: Term, task: TaskState, created: list[CreatedTool],

@@ -23,10 +23,12 @@ from creative_py.learning.tool_use import STRATEGIES, LearningOptions, ToolUseLe
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 from creative_py.report.page import write_html_report
+from creative_py.sim.world import apply_drawn, draw_world
 
 log = logging.getLogger(__name__)
 
 PHASES = ("use", "create", "all")
+STRATEGIES = ("paper", "informative", "random")
 
 
 @dataclass(frozen=True)
@@ -59,6 +61,11 @@ class RunOptions:
     strategy : {"paper", "informative", "random"}
         How tool-use learning chooses its experiments (:data:`STRATEGIES`,
         :mod:`creative_py.learning.tool_use`).
+    world_seed : int or None
+        None: the world as its files say; N: a world drawn from the case's manifest
+        (:func:`creative_py.sim.world.draw_world`: the catalogue's numbers inside their
+        own qualitative ranges, its order shuffled, the locations jittered), the same
+        for the same N.
     """
 
     seed: int = 0
@@ -70,13 +77,15 @@ class RunOptions:
     video: str = "key"
     gui: bool = False
     strategy: str = "informative"
+    world_seed: Optional[int] = None
 
     def __post_init__(self) -> None:
         checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
                   ("consecutive", self.consecutive, 1), ("eval_trials", self.eval_trials, 0),
-                  ("create_eval_trials", self.create_eval_trials, 0)]
+                  ("create_eval_trials", self.create_eval_trials, 0),
+                  ("world_seed", self.world_seed, 0)]
         for name, value, least in checks:
-            if value is None and name == "max_trials":
+            if value is None and name in ("max_trials", "world_seed"):
                 continue
             if isinstance(value, bool) or not isinstance(value, int) or value < least:
                 raise ValueError(f"option {name} must be a whole number >= {least}, "
@@ -124,13 +133,14 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
     options = RunOptions(**{"strategy": "paper", **meta["options"], "gui": False})
     world_dir = Path(meta["world"]) if meta.get("world") else None
     return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
-                    resume=(run_dir, trials))
+                    resume=(run_dir, trials), drawn=meta.get("drawn_world"))
 
 
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
              progress: Optional[Callable[[str], None]] = None,
              world_dir: Optional[Path] = None, run_name: Optional[str] = None,
-             resume: Optional[tuple[Path, list]] = None) -> RunFolder:
+             resume: Optional[tuple[Path, list]] = None,
+             drawn: Optional[dict[str, Any]] = None) -> RunFolder:
     """Run one case end to end and return its run folder.
 
     Parameters
@@ -146,6 +156,9 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         A world folder other than the shipped one (with its own ``case.toml``).
     resume : (Path, list of dict) or None
         Used by :func:`resume_run`: the run folder and its recorded trials.
+    drawn : dict or None
+        Used by :func:`resume_run`: the randomised world recorded in ``run.json``
+        (otherwise drawn from ``options.world_seed``).
     """
     from creative_py.case import get_case, read_manifest
     from creative_py.mesh.slicer import require_slicer
@@ -163,10 +176,16 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     engine = Engine.instance()
     check_manifest(engine, manifest)
     check_catalogue(engine, world)
+    if options.world_seed is not None:
+        if drawn is None:
+            drawn = draw_catalogue_world(engine, world, options.world_seed)
+        world = apply_drawn(world, drawn)
+        check_catalogue(engine, world)
     if resume is None:
         run = RunFolder.create(Path(out), case, options.seed, run_name)
         run.write_json("run.json", {"case": case, "options": asdict(options),
-                                    "world": str(world_dir) if world_dir else None})
+                                    "world": str(world_dir) if world_dir else None,
+                                    "drawn_world": drawn})
         replay: list = []
     else:
         run, replay = RunFolder(resume[0]), resume[1]
@@ -181,7 +200,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
                                 consecutive=options.consecutive, strategy=options.strategy)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
-                                   "options": asdict(options), "wall_time_s": {}}
+                                   "options": asdict(options), "wall_time_s": {},
+                                   "world_seed": options.world_seed, "drawn_world": drawn}
 
         # Demonstration and tool-use learning (Algorithm 1).
         t0 = time.perf_counter()
@@ -253,6 +273,38 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
             shutil.rmtree(run.path, ignore_errors=True)
         raise
     return run
+
+
+def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any]:
+    """Draw a randomised world of ``world`` for world seed ``seed``
+    (:func:`creative_py.sim.world.draw_world`): the engine gives each catalogued
+    number's own qualitative range (``catalogue_ranges``) and checks that every drawn
+    object keeps its structural literals; the physics checks that it lies still where
+    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again."""
+    from dataclasses import replace
+
+    from creative_py.sim import tool_rests
+    from creative_py.sim.tools import catalogue_facts
+
+    case = world.manifest.id
+    facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
+    ranges: dict[str, dict[str, tuple[float, float, str]]] = {}
+    for r in engine.catalogue_ranges(case, facts):
+        obj, fact, _x, _prop, _value, lo, hi, bounds = r.args
+        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds))
+
+    def literals(spec: Any) -> set[str]:
+        state = engine.abstract_state(case, [fact_term(f) for f in catalogue_facts(spec)])
+        return {str(lit) for lit in state}
+
+    originals = {name: literals(spec) for name, spec in world.catalogue.items()}
+    def keeps(name: str, spec: Any) -> bool:
+        if literals(spec) != originals[name]:
+            return False
+        item = replace(world.items[name], spec=spec)
+        return tool_rests(replace(world, items={**world.items, name: item}), name)
+
+    return draw_world(world, seed, ranges, keeps=keeps)
 
 
 def check_manifest(engine: Engine, manifest: Any) -> None:
@@ -403,6 +455,9 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
     return {
         "variant": res.variant,
         "needed": res.needed,
+        "predicted": res.predicted,
+        # The learned model's best tool was not tried: the geometry predicted its failure.
+        "predicted_failure_skipped": bool(res.predicted and res.predicted["feasible"] is False),
         "trials": len([t for t in res.trials if t.phase == "create"]),
         "failed_trials": len([t for t in res.trials
                               if t.phase == "create" and t.outcome != "success"]),

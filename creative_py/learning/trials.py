@@ -125,7 +125,8 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
     from creative_py.sim import open_episode
 
     m: CaseManifest = world.manifest
-    key = (m.id, str(m.folder), tuple(sorted(world.catalogue)), variant, int(location))
+    key = (m.id, str(m.folder), getattr(world, "variation", ""),
+           tuple(sorted(world.catalogue)), variant, int(location))
     if key not in _TASK_FACTS:
         # The robot is not built: it is invisible to the cameras and holds nothing yet,
         # so the facts are the same (checked for every case, variant and location) and

@@ -21,10 +21,11 @@ Modules, from the data to the physics:
 ``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
 """
 
-from creative_py.sim.episode import Episode, PoseTarget, open_episode, run_trial
+from creative_py.sim.episode import Episode, PoseTarget, open_episode, run_trial, tool_rests
 from creative_py.sim.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
                                    SkillOutcome, TrialResult)
 from creative_py.sim.world import World, load_world
 
 __all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
-           "TRIAL_OUTCOMES", "TrialResult", "World", "load_world", "open_episode", "run_trial"]
+           "TRIAL_OUTCOMES", "TrialResult", "World", "load_world", "open_episode", "run_trial",
+           "tool_rests"]

@@ -477,6 +477,25 @@ class Episode:
         self.sim.close()
 
 
+def tool_rests(world: World, tool: str, seconds: float = 2.0) -> bool:
+    """Return whether ``tool`` lies still where the world puts it.
+
+    The scene of the demonstration's variant and location is built without the robot
+    and settled, then ``seconds`` more of physics run; the tool rests unless it dropped
+    more than :data:`creative_py.sim.primitives.FELL_M` below where it was spawned
+    (off its stand: a drawn hook with a heavy prong on a short or thin handle tips
+    over, and a trial with it would be ``invalid``).
+    """
+    from creative_py.sim.bodies import frame_pose
+    from creative_py.sim.primitives import FELL_M
+
+    demo = world.manifest.demonstration
+    with open_episode(world, demo.variant, demo.location, tool, robot=False) as ep:
+        ep.run(seconds)
+        drop = ep.tool_spawn_z - frame_pose(ep.sim, ep.tool_body)[0][2]
+    return drop <= FELL_M
+
+
 def run_trial(world: World, tool: str, variant: str, location: int,
               pose: Sequence[float] | None = None, seed: int = 0,
               images_dir: Path | None = None, gui: bool = False,

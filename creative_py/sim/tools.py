@@ -18,6 +18,7 @@ the handle it is on). Blocks (``BlockSpec``) are gripped from above, gripper dow
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from typing import Any, Callable, Mapping
 
 import numpy as np
@@ -100,6 +101,15 @@ class ToolKind:
     START_FIELDS: dict[str, Any] = {}
     GRASP_OPTIONS: dict[str, Any] = {}
 
+    FACT_FIELDS: dict[str, str] = {}
+    """The spec field behind each numeric catalogue fact (``handle_length_m`` ->
+    ``handle_length``): what a randomised world redraws."""
+
+    def redrawn(self, spec: Any, values: Mapping[str, float]) -> Any:
+        """Return ``spec`` with drawn ``values`` of its :attr:`FACT_FIELDS` (a kind whose
+        fields are tied together unties nothing: it overrides this)."""
+        return replace(spec, **values)
+
     def catalogue_facts(self, spec: Any) -> list[Fact]:
         """Return the catalogue facts of ``spec`` (metres, degrees)."""
         raise NotImplementedError
@@ -162,6 +172,9 @@ class HookLike(ToolKind):
                     "pedestal_base_z": None, "pedestal_friction": 0.8,
                     "colour": (0.95, 0.8, 0.1, 1.0)}
     GRASP_OPTIONS = {"approach": 0.10, "free_speed": 0.35, "speed": 0.20, "lift_to": None}
+    FACT_FIELDS = {"handle_length_m": "handle_length", "handle_width_m": "handle_width",
+                   "hook_length_m": "hook_length", "hook_width_m": "hook_width",
+                   "hook_angle_deg": "hook_angle_deg"}
 
     def catalogue_facts(self, spec: HookSpec) -> list[Fact]:
         """Return kind, handle and prong facts (m, deg); a stick has no prong angle."""
@@ -275,6 +288,15 @@ class BlockKind(ToolKind):
 
     START_FIELDS = {"position": None, "yaw": 0.0, "colours": {}}
     GRASP_OPTIONS = {"carry_z": None, "clearance": 0.004, "gripper_yaw": 0.0}
+    FACT_FIELDS = {"block_length_m": "length", "block_width_m": "width",
+                   "block_height_m": "height"}
+
+    def redrawn(self, spec: BlockSpec, values: Mapping[str, float]) -> BlockSpec:
+        """A cylinder's width is its length (its diameter): the drawn length sets both."""
+        values = dict(values)
+        if spec.shape == "cylinder" and "length" in values:
+            values["width"] = values["length"]
+        return replace(spec, **values)
 
     def catalogue_facts(self, spec: BlockSpec) -> list[Fact]:
         """Return kind, shape, length, width and height facts (m)."""

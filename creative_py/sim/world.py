@@ -1,7 +1,9 @@
 """A case's simulated world: the manifest, the catalogue of tools and the scene files.
 
 :func:`load_world` reads a world folder (``worlds/<folder>/`` or a copy) for a
-:class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool.
+:class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool;
+:func:`draw_world` and :func:`apply_drawn` make a randomised world from it
+(``--world-seed N``).
 The folder holds, besides ``case.toml``:
 
 ``physics.toml``
@@ -36,7 +38,9 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any, Mapping
+from typing import Any, Callable, Mapping, Optional
+
+import numpy as np
 
 from creative_py.case import CaseManifest
 from creative_py.world import (Fields, PhysicsSettings, WorldFileError, load_toml,
@@ -139,6 +143,9 @@ class World:
     oracle: Any
     skills: dict[str, SkillSpec]
     postures: dict = field(default_factory=dict, compare=False, repr=False)
+    variation: str = ""
+    """Empty for the world as its files say; ``world seed N`` for a drawn one (part of
+    every cache key that depends on the world's numbers)."""
 
     @property
     def catalogue(self) -> dict[str, Any]:
@@ -450,3 +457,135 @@ def resolve_options(options: Mapping[str, Any], ns, where: str,
 def object_name(manifest: CaseManifest, name: str, tool: str) -> str:
     """Return the object a role (``tool``, ``target``, ``context``) or a name denotes."""
     return manifest.role_object(name, tool) if name in _ROLES else name
+
+
+Range = tuple[float, float, str]
+"""A qualitative range: low, high and which ends it holds (``closed_open``,
+``closed_closed``, ``open_closed``; ``ontology/ranges.pl``)."""
+
+
+def _inside(x: float, rng_: Range) -> bool:
+    lo, hi, bounds = rng_
+    if bounds == "closed_open":
+        return lo <= x < hi
+    if bounds == "open_closed":
+        return lo < x <= hi
+    return lo <= x <= hi
+
+
+def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]],
+               keeps: Optional[Callable[[str, Any], bool]] = None,
+               attempts: int = 200) -> dict[str, Any]:
+    """Draw a randomised world from ``world`` and return it as JSON-ready data.
+
+    Deterministic: one :func:`numpy.random.default_rng` of ``seed`` makes, in order,
+    the catalogue's new order (a permutation), each object's numbers (objects in file
+    order, facts in name order) and each location's jittered values.
+
+    Parameters
+    ----------
+    world : World
+        The world as its files say.
+    seed : int
+        The world seed.
+    ranges : mapping
+        ``object -> {catalogue fact -> (low, high, bounds)}``: the qualitative range of
+        each number the object has (the engine's ``catalogue_ranges``). Each number is
+        drawn uniformly inside its own range (narrowed by the manifest's
+        ``[randomise.catalogue]``, where given), rounded to 0.1 mm (0.0001 degree), so the
+        object keeps its qualitative values; a number without a range is kept, and so
+        are the numbers of the demonstration's tool (the trainer's demonstration is
+        part of the case and must work: drawn, a hook with a long, wide prong on a thin
+        handle tipped off its stand at the trainer's grasp).
+    keeps : callable or None
+        ``keeps(name, spec)`` says whether a drawn object still has every structural
+        literal of the original (a ratio of two numbers can change its value); the
+        object is drawn again until it does, at most ``attempts`` times.
+
+    Returns
+    -------
+    dict
+        ``seed``, ``order`` (the catalogue's names in their new order), ``objects``
+        (``name -> {spec field: value}``, the drawn numbers) and ``locations`` (each
+        location's ``set`` table with the jittered keys of the manifest's
+        ``[randomise]``, each kept within its ``min`` and ``max``).
+    """
+    from creative_py.sim.tools import tool_kind
+
+    rng = np.random.default_rng(seed)
+    names = list(world.items)
+    order = [names[int(i)] for i in rng.permutation(len(names))]
+    objects: dict[str, dict[str, float]] = {}
+    for name in names:
+        if name == world.manifest.demonstration.tool:
+            continue
+        spec = world.items[name].spec
+        kind = tool_kind(spec)
+        fields = kind.FACT_FIELDS
+        narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
+        todo = []
+        for fact, (lo, hi, bounds) in sorted(ranges.get(name, {}).items()):
+            if fact not in fields:
+                continue
+            a, b = narrow.get(fields[fact], (lo, hi))
+            todo.append((fact, (max(lo, a), min(hi, b), bounds, (lo, hi, bounds))))
+        if not todo:
+            continue
+        for attempt in range(attempts):
+            values = {}
+            for fact, (lo, hi, bounds, own) in todo:
+                if lo > hi:
+                    raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
+                                     f"[randomise.catalogue.{fields[fact]}] leaves {name} "
+                                     f"no number in its own range {own[:2]}")
+                x = round(float(rng.uniform(lo, hi)), 4)
+                while not (_inside(x, own) and lo <= x <= hi):
+                    x = round(float(rng.uniform(lo, hi)), 4)
+                values[fields[fact]] = x
+            drawn = kind.redrawn(spec, values)
+            if keeps is None or keeps(name, drawn):
+                objects[name] = {f: getattr(drawn, f) for f in sorted(set(fields.values()))
+                                 if getattr(drawn, f) != getattr(spec, f)}
+                break
+        else:
+            raise ValueError(f"world seed {seed}: {name}: no draw in {attempts} attempts "
+                             f"keeps its qualitative values")
+    demo = world.manifest.demonstration
+    locations = []
+    for i, loc in enumerate(world.location_sets, 1):
+        ns = world.namespace(demo.variant, i, demo.tool)
+        new = dict(loc)
+        for j in world.manifest.location_jitter:
+            base = float(loc[j.key]) if j.key in loc else float(ns.get(j.key))
+            new[j.key] = round(min(j.max, max(j.min, base + float(rng.uniform(-j.jitter,
+                                                                               j.jitter)))), 5)
+        locations.append(new)
+    return {"seed": int(seed), "order": order, "objects": objects, "locations": locations}
+
+
+def apply_drawn(world: World, drawn: Mapping[str, Any]) -> World:
+    """Return ``world`` with a drawn world's catalogue order, numbers and locations
+    (:func:`draw_world`; also what a resumed run reads back from ``run.json``).
+
+    The result passes the loader's checks again (every scene value of every variant
+    and location resolves); errors name the world seed.
+    """
+    order = list(drawn["order"])
+    if sorted(order) != sorted(world.items):
+        raise ValueError(f"world seed {drawn.get('seed')}: the drawn catalogue "
+                         f"{sorted(order)} is not the world's {sorted(world.items)}")
+    items = {}
+    for name in order:
+        item = world.items[name]
+        values = dict(drawn["objects"].get(name, {}))
+        items[name] = replace(item, spec=replace(item.spec, **values)) if values else item
+    locations = tuple(dict(s) for s in drawn["locations"])
+    if len(locations) != len(world.location_sets):
+        raise ValueError(f"world seed {drawn.get('seed')}: {len(locations)} locations "
+                         f"drawn, the world has {len(world.location_sets)}")
+    new = replace(world, items=items, location_sets=locations, postures={},
+                  variation=f"world seed {drawn.get('seed')}")
+    for v in new.manifest.variants:
+        for loc in new.locations:
+            check_values(new, v.name, loc, new.manifest.demonstration.tool)
+    return new

@@ -158,6 +158,8 @@ geometry_default(hook, dx_max, 0.07, 'room behind the cube centre to the tube en
 geometry_default(hook, dx_min, -0.25, 'mouth to cube centre, negated, plus half the prong').
 geometry_default(hook, dy_max, 0.01, 'largest Dy keeping the handle in the tube: tube axis minus cube centre, plus inner half width minus handle half width minus clearance').
 geometry_default(hook, dy_min, -0.01, 'smallest Dy keeping the handle in the tube').
+geometry_default(hook, reach_loss, -0.04, 'handle length the held tool cannot put beyond the mouth: the grip offset less how far the gripper enters the tube (negative: the gripper enters deeper than the grip offset)').
+geometry_default(hook, dx_reach, 1.0, 'deepest prong centre the held tool reaches, minus the cube centre (1 m, no bound, when its handle is not known)').
 
 %   geometry_value(?Case, ?Name, ?Tool, ?Target, +Geometry, -Value), proved on the
 %   state: the parameter's value from the facts.  Tool and Target may be unbound (then
@@ -214,6 +216,28 @@ geometry_value(hook, dy_min, _Tool, Target, G, DyMin) :-
     memberchk(clearance=C, G),
     Room is W / 2 - HH - C,
     DyMin is MY - CY - Room.
+
+%   How deep the held tool reaches (reach_definition/3, read only before a tool is
+%   tried in a harder task): the prong's centre at most the handle's length, less
+%   reach_loss and half the prong, beyond the mouth.  reach_loss is the grip's
+%   distance from the butt end (0.04 m, creative_py/mesh/spec.py) less how far the
+%   gripper can follow the handle into the mouth.  Measured in the 0.45 m tube,
+%   location 1, prong 3 cm behind the cube: handles of 0.36 and 0.38 m fail, 0.40,
+%   0.43 and 0.46 m succeed, so the prong reaches about 3 cm beyond the handle's
+%   length past the mouth (reach_loss about -0.03 m).  The value, -0.04 m, keeps the
+%   reach on the generous side: a pose is called unreachable only where the physics
+%   cannot reach it.
+reach_definition(hook, hook_pose(Dx, _Dy, _Roll), [Dx =< dx_reach]).
+
+geometry_value(hook, dx_reach, Tool, Target, G, V) :-
+    nonvar(Tool),
+    nonvar(Target),
+    handle_length_m(Tool, L),
+    tube_mouth(_Tube, MX, _, _),
+    pose(Target, CX, _, _, _),
+    memberchk(prong_half=PH, G),
+    memberchk(reach_loss=Loss, G),
+    V is MX + L - Loss - PH - CX.
 
 %   relative_pose(?Case, ?Tool, ?Target, +Geometry, -Pose), proved on the state: the
 %   held tool's pose relative to the cube, from the tip's position and the roll

@@ -125,6 +125,8 @@ geometry_default(rake, dx_max, 0.074, 'back edge minus the box centre, minus hal
 geometry_default(rake, dx_min, -0.214, 'front edge minus the box centre, plus half the prong').
 geometry_default(rake, dy_max, 0.10, 'largest Dy keeping the handle between the legs').
 geometry_default(rake, dy_min, -0.10, 'smallest Dy keeping the handle between the legs').
+geometry_default(rake, reach_loss, 0.02, 'handle length the held tool cannot put beyond the front edge: the grip offset less how far the gripper follows it under the plate').
+geometry_default(rake, dx_reach, 1.0, 'deepest prong centre the held tool reaches, minus the box centre (1 m, no bound, when its handle is not known)').
 
 %   The box's extent along x from its perceived size and heading.
 geometry_value(rake, box_half, _, Target, _, V) :-
@@ -174,6 +176,25 @@ geometry_value(rake, dy_min, _, Target, G, V) :-
     memberchk(handle_half=HH, G),
     memberchk(leg_clearance=C, G),
     V is FY - Y - W / 2 + HH + C.
+
+%   How deep the held tool reaches under the shelf (reach_definition/3, read only
+%   before a tool is tried in a harder task): the prong's centre at most the handle's
+%   length, less reach_loss and half the prong, beyond the front edge.  Measured in
+%   the deep shelf, location 1, prong 3.5 cm behind the box: handles of 0.38, 0.42 and
+%   0.44 m are all blocked, the gripper stopping at the shelf's front (reach_loss about
+%   the grip offset, 0.04 m).  The value, 0.02 m, keeps the reach on the generous side:
+%   a pose is called unreachable only where the physics cannot reach it.
+reach_definition(rake, rake_pose(Dx, _Dy, _Roll), [Dx =< dx_reach]).
+
+geometry_value(rake, dx_reach, Tool, Target, G, V) :-
+    nonvar(Tool),
+    nonvar(Target),
+    handle_length_m(Tool, L),
+    shelf_front(_S, FX, _, _),
+    pose(Target, X, _, _, _),
+    memberchk(prong_half=PH, G),
+    memberchk(reach_loss=Loss, G),
+    V is FX + L - Loss - PH - X.
 
 %   The held tool's pose relative to the box (proprioception and camera).
 relative_pose(rake, Tool, Target, _, rake_pose(Dx, Dy, Roll)) :-

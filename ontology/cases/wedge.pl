@@ -131,6 +131,11 @@ pose_domain(wedge, wedge_pose(R, Gap, Yaw),
              Gap =< door_angle * R - wedge_half - door_half_thickness,
              Yaw > -pi, Yaw =< pi]).
 
+%   reach_definition/3: the arm puts the block anywhere under the door's sweep, so no
+%   pose is out of reach; whether a block holds the door is a matter of force (its
+%   slope against the closer), which the pose model cannot tell.
+reach_definition(wedge, wedge_pose(_R, _Gap, _Yaw), []).
+
 geometry_default(wedge, r_min, 0.05, 'closest wedge centre to the hinge axis').
 geometry_default(wedge, door_width, 0.80, 'door width: the hinge to the free edge').
 geometry_default(wedge, door_angle, 1.0, 'door opening when the trial starts (radians)').

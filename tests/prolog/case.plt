@@ -209,4 +209,24 @@ test(ledge_new_tool_sized_by_the_ledge,
     assertion(KL =< 0.03),
     assertion(memberchk(hook(_), Struct)).
 
+test(catalogue_ranges_give_each_number_its_own_range) :-
+    catalogue_ranges(hook, [object_kind(h, hook), handle_length_m(h, 0.35),
+                            handle_width_m(h, 0.01), hook_length_m(h, 0.02),
+                            hook_width_m(h, 0.012), hook_side_is(h, left),
+                            hook_angle_deg(h, 90)], R),
+    assertion(memberchk(range(h, handle_length_m, 0.35, handle_length, medium, 0.25, 0.45,
+                              closed_open), R)),
+    % 0.01 is both a thin handle width and a short prong length: each fact gets its own.
+    assertion(memberchk(range(h, handle_width_m, 0.01, handle_width, thin, _, _, _), R)),
+    assertion(\+ memberchk(range(h, handle_width_m, _, hook_length, _, _, _, _), R)),
+    assertion(memberchk(range(h, hook_angle_deg, 90, hook_angle, right, 75, 105,
+                              closed_closed), R)),
+    assertion(\+ memberchk(range(h, hook_side_is, _, _, _, _, _, _), R)),
+    length(R, 5).
+
+test(catalogue_ranges_skip_a_sticks_missing_prong) :-
+    catalogue_ranges(hook, [object_kind(s, stick), handle_length_m(s, 0.5),
+                            hook_length_m(s, 0.0)], R),
+    assertion(R = [range(s, handle_length_m, 0.5, handle_length, long, _, _, _)]).
+
 :- end_tests(case).

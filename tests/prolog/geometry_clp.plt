@@ -321,4 +321,33 @@ block_catalogue_(W, D, [ object_kind(W, block), block_shape(W, S), block_length_
     memberchk(shape=S, D), memberchk(length=L, D),
     memberchk(width=Wd, D), memberchk(height=H, D).
 
+%   pose_reachable/5: the hook's reach is its handle length (catalogue) from the mouth,
+%   dx_reach = 0.70 + L + 0.04 - 0.005 - 0.90 = L - 0.165 in the context above.
+test(short_handle_cannot_reach_behind_the_cube) :-
+    hook_context_(Ctx),
+    Req = [in_tube(h, tube1), behind(h, cube1), hook_down(h)],
+    pose_reachable(hook, h, Req, [handle_length_m(h, 0.15)|Ctx], R),
+    assertion(R = unreachable([behind(h, cube1)], [param(dx_reach, _, _)])),
+    R = unreachable(_, [param(dx_reach, V, _)]),
+    assertion(abs(V - (-0.015)) < 1e-9).
+
+test(long_enough_handle_reaches_and_the_pose_is_within_reach) :-
+    hook_context_(Ctx),
+    Req = [in_tube(h, tube1), behind(h, cube1), hook_down(h)],
+    pose_reachable(hook, h, Req, [handle_length_m(h, 0.20)|Ctx], R),
+    assertion(R = reachable(hook_pose(_, _, _))),
+    R = reachable(hook_pose(Dx, _, _)),
+    assertion(Dx >= 0.025),
+    assertion(Dx =< 0.035 + 1e-9).
+
+test(in_front_needs_no_reach) :-
+    hook_context_(Ctx),
+    pose_reachable(hook, h, [in_front(h, cube1)], [handle_length_m(h, 0.15)|Ctx], R),
+    assertion(R = reachable(_)).
+
+test(wedge_geometry_cannot_tell) :-
+    wedge_context_(Ctx),
+    pose_reachable(wedge, w, [near(w, door1), far_from_hinge(w, door1)], Ctx, R),
+    assertion(R == undecided).
+
 :- end_tests(geometry_clp).

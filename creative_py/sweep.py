@@ -1,0 +1,384 @@
+"""Sweeps: many independent runs (cases x strategies x seeds x world seeds) on Ray.
+
+``creative sweep hook wedge --strategies paper,informative --seeds 0-19 --world-seeds
+0-19`` runs every combination as its own run (:func:`creative_py.learning.run.run_case`)
+in its own run folder under the sweep's folder, as Ray tasks: a local Ray instance
+using every core by default (``num_cpus``), or an existing Ray cluster (``address``).
+Each task runs in a fresh Ray worker process (``max_calls=1``): the Prolog engine is
+one per process, and a fresh process gives every run the same start. ``serial`` runs
+the same runs one after another in this process, without Ray (the baseline of the
+speed-up).
+
+The sweep writes, in its folder:
+
+``sweep.csv``
+    one row per run (:data:`COLUMNS`): case, strategy, seed, world seed, status
+    (``ok`` or ``crashed``, with the error line), trials to learn, creation trials,
+    evaluation successes of the learned model and of the created tool, h_g, wall time,
+    the run folder.
+``sweep.png``
+    trials to learn per case and strategy (box and points), with the paper's counts
+    (the manifest's ``paper_trials``) and the information bound
+    (``info_bound_trials`` of the runs' summaries, when they have it) marked.
+``sweep.json``
+    the sweep's options and its wall time.
+
+Progress: one line per finished run on stderr, with the runs done and left. A run
+that crashes is recorded as such; the sweep goes on.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+import math
+import re
+import statistics
+import sys
+import time
+import traceback
+from dataclasses import asdict, dataclass, field
+from datetime import datetime, timezone
+from pathlib import Path
+from typing import Any, Callable, Optional, Sequence
+
+COLUMNS = ("case", "strategy", "seed", "world_seed", "status", "error", "trials_to_learn",
+           "use_converged", "creation_trials", "creation_skipped_trial", "eval_successes",
+           "eval_trials", "created_eval_successes", "created_eval_trials", "hg",
+           "vs_count_initial", "info_bound_trials", "wall_time_s", "run_dir")
+"""The columns of ``sweep.csv``, in order."""
+
+
+@dataclass(frozen=True)
+class RunSpec:
+    """One run of a sweep."""
+
+    case: str
+    strategy: str
+    seed: int
+    world_seed: Optional[int]
+
+    @property
+    def name(self) -> str:
+        """Return the run folder's name."""
+        w = "files" if self.world_seed is None else f"w{self.world_seed}"
+        return f"{self.case}-{self.strategy}-s{self.seed}-{w}"
+
+
+@dataclass(frozen=True)
+class SweepOptions:
+    """The run options every run of a sweep shares (see
+    :class:`creative_py.learning.run.RunOptions`)."""
+
+    phase: str = "all"
+    max_trials: Optional[int] = None
+    consecutive: int = 2
+    eval_trials: int = 4
+    create_eval_trials: int = 5
+
+
+def parse_ints(text: str, option: str) -> list[int]:
+    """Parse ``"0-19"``, ``"3"`` or ``"0,2,5-7"`` into whole numbers >= 0.
+
+    Raises
+    ------
+    ValueError
+        Naming ``option`` and the cause (``--seeds 5-2: the range 5-2 is empty``).
+    """
+    out: list[int] = []
+    for part in str(text).split(","):
+        part = part.strip()
+        m = re.fullmatch(r"(\d+)(?:-(\d+))?", part)
+        if not m:
+            raise ValueError(f"{option} {text}: {part!r} is not a whole number >= 0 or "
+                             f"a range A-B")
+        a = int(m.group(1))
+        b = int(m.group(2)) if m.group(2) is not None else a
+        if b < a:
+            raise ValueError(f"{option} {text}: the range {part} is empty (end before start)")
+        out.extend(range(a, b + 1))
+    if len(set(out)) != len(out):
+        raise ValueError(f"{option} {text}: a number is given twice")
+    return out
+
+
+def parse_strategies(text: str) -> list[str]:
+    """Parse ``"paper,informative"``; raise ValueError naming an unknown strategy."""
+    from creative_py.learning.run import STRATEGIES
+
+    names = [s.strip() for s in str(text).split(",") if s.strip()]
+    if not names:
+        raise ValueError("--strategies: no strategy given")
+    for s in names:
+        if s not in STRATEGIES:
+            raise ValueError(f"--strategies: unknown strategy {s!r}; strategies: "
+                             f"{', '.join(STRATEGIES)}")
+    if len(set(names)) != len(names):
+        raise ValueError(f"--strategies {text}: a strategy is given twice")
+    return names
+
+
+def plan_runs(cases: Sequence[str], strategies: Sequence[str], seeds: Sequence[int],
+              world_seeds: Sequence[Optional[int]]) -> list[RunSpec]:
+    """Return every combination, case-major; raise ValueError for an unknown case."""
+    from creative_py.case import get_case
+
+    if not cases:
+        raise ValueError("sweep: no case given")
+    for c in cases:
+        try:
+            get_case(c)
+        except KeyError as exc:
+            raise ValueError(str(exc).strip("'\"")) from None
+    return [RunSpec(c, s, seed, w) for c in cases for s in strategies for w in world_seeds
+            for seed in seeds]
+
+
+def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, Any]:
+    """Run one run of a sweep in this process and return its row of ``sweep.csv``.
+
+    Never raises: a run that fails is a row with status ``crashed`` and the error's
+    last line.
+    """
+    from creative_py.learning.run import RunOptions, run_case
+
+    t0 = time.perf_counter()
+    row: dict[str, Any] = {k: "" for k in COLUMNS}
+    row.update(case=spec.case, strategy=spec.strategy, seed=spec.seed,
+               world_seed="" if spec.world_seed is None else spec.world_seed)
+    try:
+        opts = RunOptions(seed=spec.seed, phase=options.phase, max_trials=options.max_trials,
+                          consecutive=options.consecutive, eval_trials=options.eval_trials,
+                          create_eval_trials=options.create_eval_trials,
+                          strategy=spec.strategy, world_seed=spec.world_seed)
+        folder = run_case(spec.case, Path(runs_dir), opts, run_name=spec.name)
+        summary = json.loads((folder.path / "summary.json").read_text())
+        row.update(status="ok", run_dir=str(folder.path), **summary_row(summary))
+    except BaseException as exc:  # noqa: BLE001 - a crashed run is a row, not the end
+        if isinstance(exc, KeyboardInterrupt):
+            raise
+        lines = [ln for ln in traceback.format_exception_only(type(exc), exc)
+                 if ln.strip()]
+        row.update(status="crashed", error=" ".join(lines[-1].split()) if lines else repr(exc))
+    row["wall_time_s"] = round(time.perf_counter() - t0, 2)
+    return row
+
+
+def summary_row(summary: dict[str, Any]) -> dict[str, Any]:
+    """Return the ``sweep.csv`` figures of one run's ``summary.json``."""
+    use = summary.get("use", {})
+    ev = summary.get("eval", {})
+    create = summary.get("create") or {}
+    created_eval = create.get("eval") or []
+    return {
+        "trials_to_learn": use.get("trials", ""),
+        "use_converged": use.get("converged", ""),
+        "creation_trials": create.get("trials", ""),
+        "creation_skipped_trial": create.get("predicted_failure_skipped", ""),
+        "eval_successes": ev.get("successes", ""),
+        "eval_trials": ev.get("trials", ""),
+        "created_eval_successes": (sum(o == "success" for o in created_eval)
+                                   if create else ""),
+        "created_eval_trials": len(created_eval) if create else "",
+        "hg": (summary.get("hypotheses") or {}).get("hg", ""),
+        "vs_count_initial": summary.get("vs_count_initial", ""),
+        "info_bound_trials": summary.get("info_bound_trials", ""),
+    }
+
+
+@dataclass
+class SweepResult:
+    """What a sweep did: its folder, rows and wall time."""
+
+    folder: Path
+    rows: list[dict[str, Any]] = field(default_factory=list)
+    wall_time_s: float = 0.0
+
+
+def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepOptions(),
+              address: Optional[str] = None, num_cpus: Optional[int] = None,
+              serial: bool = False, progress: Optional[Callable[[str], None]] = None,
+              name: Optional[str] = None) -> SweepResult:
+    """Run every run of ``runs`` and write ``sweep.csv``, ``sweep.png``, ``sweep.json``.
+
+    Parameters
+    ----------
+    runs : sequence of RunSpec
+        From :func:`plan_runs`.
+    out : Path
+        The parent of the sweep's folder ``sweep-<UTC time>`` (or ``name``).
+    address : str or None
+        An existing Ray cluster (``ray.init(address=...)``); None starts a local one.
+    num_cpus : int or None
+        Cores of the local Ray instance (default: every core).
+    serial : bool
+        Run them one after another in this process, without Ray.
+    progress : callable or None
+        Receives one line per finished run.
+    """
+    say = progress or (lambda m: print(m, file=sys.stderr, flush=True))
+    stamp = datetime.now(timezone.utc).strftime("%Y%m%d-%H%M%S")
+    folder = Path(out) / (name or f"sweep-{stamp}")
+    folder.mkdir(parents=True, exist_ok=False)
+    runs_dir = folder / "runs"
+    runs_dir.mkdir()
+    result = SweepResult(folder)
+    t0 = time.perf_counter()
+    total = len(runs)
+
+    def finished(row: dict[str, Any]) -> None:
+        result.rows.append(row)
+        done = len(result.rows)
+        what = (f"{row['trials_to_learn']} tool-use trials, {row['creation_trials'] or '-'} "
+                f"creation trials" if row["status"] == "ok" else row["error"])
+        say(f"[{done}/{total}, {total - done} left] {row['case']} {row['strategy']} "
+            f"seed {row['seed']} world {'-' if row['world_seed'] == '' else row['world_seed']}: "
+            f"{row['status']}, {what}, "
+            f"{row['wall_time_s']} s")
+        _write_csv(folder / "sweep.csv", result.rows)
+
+    if serial:
+        for spec in runs:
+            finished(run_one(spec, str(runs_dir), options))
+    else:
+        import ray
+
+        init: dict[str, Any] = {"log_to_driver": False, "include_dashboard": False}
+        if address:
+            init["address"] = address
+        elif num_cpus is not None:
+            init["num_cpus"] = num_cpus
+        ray.init(**init)
+        try:
+            remote = ray.remote(num_cpus=1, max_calls=1)(run_one)
+            pending = {remote.remote(spec, str(runs_dir), options): spec for spec in runs}
+            while pending:
+                ready, _ = ray.wait(list(pending), num_returns=1)
+                for ref in ready:
+                    spec = pending.pop(ref)
+                    try:
+                        row = ray.get(ref)
+                    except Exception as exc:  # noqa: BLE001 - the worker itself died
+                        row = {k: "" for k in COLUMNS}
+                        row.update(case=spec.case, strategy=spec.strategy, seed=spec.seed,
+                                   world_seed="" if spec.world_seed is None
+                                   else spec.world_seed, status="crashed",
+                                   error=" ".join(str(exc).split())[:300])
+                    finished(row)
+        finally:
+            ray.shutdown()
+    result.wall_time_s = round(time.perf_counter() - t0, 2)
+    order = {spec: i for i, spec in enumerate(runs)}
+    result.rows.sort(key=lambda r: order.get(RunSpec(
+        r["case"], r["strategy"], int(r["seed"]),
+        None if r["world_seed"] == "" else int(r["world_seed"])), 0))
+    _write_csv(folder / "sweep.csv", result.rows)
+    plot_sweep(result.rows, folder / "sweep.png")
+    (folder / "sweep.json").write_text(json.dumps({
+        "runs": [asdict(r) for r in runs], "options": asdict(options),
+        "ray": None if serial else {"address": address, "num_cpus": num_cpus},
+        "serial": serial, "wall_time_s": result.wall_time_s,
+        "ok": sum(r["status"] == "ok" for r in result.rows),
+        "crashed": sum(r["status"] != "ok" for r in result.rows)}, indent=1) + "\n")
+    return result
+
+
+def _write_csv(path: Path, rows: Sequence[dict[str, Any]]) -> None:
+    tmp = path.with_suffix(".csv.tmp")
+    with tmp.open("w", newline="") as fh:
+        w = csv.DictWriter(fh, fieldnames=list(COLUMNS))
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: r.get(k, "") for k in COLUMNS})
+    tmp.replace(path)
+
+
+def read_csv(path: Path) -> list[dict[str, str]]:
+    """Return the rows of a ``sweep.csv``."""
+    with Path(path).open(newline="") as fh:
+        return list(csv.DictReader(fh))
+
+
+def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
+    """Draw trials to learn per case and strategy (box and points) to ``path``.
+
+    A solid red mark is the paper's count of the case (the manifest's
+    ``paper_trials``), a dashed green one the information bound ceil(log2 N0)
+    (median of the runs' ``info_bound_trials``), where known; crashed runs are
+    counted under each group's label.
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from creative_py.case import get_case
+
+    cases = list(dict.fromkeys(r["case"] for r in rows))
+    strategies = list(dict.fromkeys(r["strategy"] for r in rows))
+    fig, ax = plt.subplots(figsize=(max(5.0, 1.1 * len(cases) * len(strategies) + 2), 4.2))
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    positions, labels, data = [], [], []
+    x = 0.0
+    marked_paper = marked_bound = False
+    for ci, case in enumerate(cases):
+        start = x
+        for si, strategy in enumerate(strategies):
+            group = [r for r in rows if r["case"] == case and r["strategy"] == strategy]
+            ok = [float(r["trials_to_learn"]) for r in group
+                  if r["status"] == "ok" and r["trials_to_learn"] not in ("", None)]
+            crashed = len(group) - len(ok)
+            positions.append(x)
+            labels.append(f"{case}\n{strategy}" + (f"\n({crashed} crashed)" if crashed else ""))
+            data.append(ok)
+            if ok:
+                jitter = [x + 0.12 * math.sin(7.3 * i) for i in range(len(ok))]
+                ax.scatter(jitter, ok, s=14, color=colours[si % len(colours)], alpha=0.8,
+                           zorder=5)
+            x += 1.0
+        end = x - 1.0
+        try:
+            paper = get_case(case).paper_trials
+        except KeyError:
+            paper = None
+        if paper is not None:
+            ax.hlines(paper, start - 0.4, end + 0.4, colors="tab:red", linewidth=2,
+                      label=None if marked_paper else "paper's count", zorder=4)
+            marked_paper = True
+        bounds = [float(r["info_bound_trials"]) for r in rows
+                  if r["case"] == case and r.get("info_bound_trials") not in ("", None)]
+        if bounds:
+            ax.hlines(statistics.median(bounds), start - 0.4, end + 0.4, colors="tab:green",
+                      linestyles="dashed", linewidth=2,
+                      label=None if marked_bound else "ceil(log2 N0) bound", zorder=4)
+            marked_bound = True
+        x += 0.6 if ci < len(cases) - 1 else 0.0
+    nonempty = [(p, d) for p, d in zip(positions, data) if d]
+    if nonempty:
+        ax.boxplot([d for _, d in nonempty], positions=[p for p, _ in nonempty], widths=0.5,
+                   showfliers=False, zorder=2)
+    ax.set_xticks(positions)
+    ax.set_xticklabels(labels, fontsize=8)
+    ax.set_ylabel("tool-use trials to learn")
+    tops = [v for d in data for v in d] + [1.0]
+    tops += [float(r["info_bound_trials"]) for r in rows
+             if r.get("info_bound_trials") not in ("", None)]
+    for case in cases:
+        try:
+            tops.append(float(get_case(case).paper_trials or 0))
+        except KeyError:
+            pass
+    ax.set_ylim(0, max(tops) * 1.15 + 1)
+    n = len(rows)
+    worlds = len({r["world_seed"] for r in rows})
+    ax.set_title(f"CREATIVE-py sweep: {n} run{'s' if n != 1 else ''} over {worlds} "
+                 f"world{'s' if worlds != 1 else ''}", fontsize=10)
+    if not marked_bound:
+        ax.plot([], [], " ", label="log2 bound: not in these runs' summaries")
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.18), ncol=2,
+              frameon=False)
+    ax.grid(axis="y", alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+    return Path(path)
