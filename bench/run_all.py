@@ -25,6 +25,7 @@ BENCHES = [
     [sys.executable, str(HERE / "sim_wedge_bench.py")],
     [sys.executable, str(HERE / "decision_bench.py")],
     [sys.executable, str(HERE / "soak_bench.py")],
+    [sys.executable, str(HERE / "bad_input_bench.py")],
 ]
 LEARNING = [sys.executable, str(HERE / "learning_bench.py")]
 

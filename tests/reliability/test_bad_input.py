@@ -3,15 +3,15 @@
 Each row of :data:`CORPUS` is a command a user might type; the test runs the real
 ``creative`` command line in its own process and checks what the user sees: exit code
 2, one line ``error: ...`` on stderr naming the option or file and the cause, no
-traceback, within 10 s. (pybullet's import banner, which it prints itself, is the one
-other line a command may show.)
+traceback. (pybullet's import banner, which it prints itself, is the one other line a
+command may show.) How long each refusal takes (aim: under 10 s) is measured by
+``bench/bad_input_bench.py``, not asserted here.
 """
 
 from __future__ import annotations
 
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
@@ -73,15 +73,12 @@ CORPUS = [
 @pytest.mark.parametrize("args, message", CORPUS, ids=[" ".join(a) for a, _ in CORPUS])
 def test_bad_input_is_one_line_with_exit_code_2(tmp_path, a_file, args, message):
     args = [a.format(tmp=tmp_path, a_file=a_file) for a in args]
-    t0 = time.perf_counter()
     proc = creative(*args)
-    seconds = time.perf_counter() - t0
     lines = [line for line in proc.stderr.splitlines() if line and BANNER not in line]
     assert proc.returncode == 2, proc.stderr
     assert len(lines) == 1 and lines[0].startswith("error: "), proc.stderr
     assert message in lines[0]
     assert "Traceback" not in proc.stderr + proc.stdout
-    assert seconds < 10
     assert not (tmp_path / "t").exists()          # nothing written for a refused tool
 
 
