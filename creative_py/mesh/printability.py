@@ -13,9 +13,12 @@ printed on a larger machine). The .scad file repeats the verdict in a comment.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
+
+if TYPE_CHECKING:  # only a type here; importing trimesh costs the command line seconds
+    import trimesh
 
 from creative_py.mesh.spec import BlockSpec, HookSpec, ToolSpec
 from creative_py.mesh.tolerances import (BUILD_VOLUME, FIT_MARGIN, FIT_YAW_STEP_DEG,

@@ -30,12 +30,15 @@ import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import numpy as np
-
-from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.spec import PLA_DENSITY
 from creative_py.mesh.tolerances import FIT_MARGIN, MM_PER_M
+
+if TYPE_CHECKING:
+    from creative_py.mesh.printability import PrintSettings
+# This module stays light (no numpy, no trimesh at import): the command line imports
+# SliceError for its one-line errors.
 
 PROFILE = Path(__file__).resolve().parent / "profiles" / "generic_pla_0.4.ini"
 """The PrusaSlicer profile of a generic 0.4 mm nozzle PLA printer (package data)."""
@@ -106,7 +109,7 @@ def require_slicer() -> str:
     return exe
 
 
-def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = PrintSettings(),
+def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings | None = None,
                 profile: Path = PROFILE) -> SliceResult:
     """Slice one piece's STL (millimetres, in its print placement) to G-code.
 
@@ -116,9 +119,9 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = Pr
         The piece.
     gcode : path
         The G-code file to write.
-    settings : PrintSettings
+    settings : PrintSettings or None
         The printer: its build volume becomes the slicer's bed and height, its nozzle
-        must be the profile's.
+        the slicer's (default: ``PrintSettings()``).
     profile : path
         The PrusaSlicer profile (default :data:`PROFILE`).
 
@@ -129,6 +132,7 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = Pr
         prints outside the build volume.
     """
     stl, gcode = Path(stl), Path(gcode)
+    settings = _settings(settings)
     exe = require_slicer()
     if not profile.is_file():
         raise SliceError(f"{profile}: slicer profile not found")
@@ -157,7 +161,7 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings = Pr
     return _read_gcode(stl.name, gcode, settings, wall)
 
 
-def read_gcode(gcode: Path | str, settings: PrintSettings = PrintSettings(), *,
+def read_gcode(gcode: Path | str, settings: PrintSettings | None = None, *,
                piece: str | None = None, wall_time_s: float = 0.0) -> SliceResult:
     """Return the estimates of a G-code file PrusaSlicer wrote, checked against the bed.
 
@@ -168,7 +172,13 @@ def read_gcode(gcode: Path | str, settings: PrintSettings = PrintSettings(), *,
         ``settings.build_volume``.
     """
     gcode = Path(gcode)
-    return _read_gcode(piece or gcode.name, gcode, settings, wall_time_s)
+    return _read_gcode(piece or gcode.name, gcode, _settings(settings), wall_time_s)
+
+
+def _settings(settings: PrintSettings | None) -> PrintSettings:
+    from creative_py.mesh.printability import PrintSettings
+
+    return PrintSettings() if settings is None else settings
 
 
 def _read_gcode(piece: str, gcode: Path, settings: PrintSettings, wall: float) -> SliceResult:
@@ -200,6 +210,8 @@ def _read_gcode(piece: str, gcode: Path, settings: PrintSettings, wall: float) -
 def _extrusion_bounds(text: str) -> tuple[float, ...] | None:
     """Return the bounds of the print: x and y of every move in the plane (extrusions and
     travels: where the nozzle goes), z of every layer (``;Z:`` comments), mm."""
+    import numpy as np
+
     xy = np.array(_MOVE_XY.findall(text), dtype=float).reshape(-1, 2)
     z = np.array(_LAYER_Z.findall(text), dtype=float)
     if not len(xy) or not len(z):
