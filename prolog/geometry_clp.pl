@@ -56,7 +56,9 @@ and for the size model, keyed by the kind of the new tool (ontology/kinds/):
   - size_field(?Kind, ?Field, ?Property): a number field and the property it carries;
   - size_choice(?Kind, ?Field, ?Property, ?Values): a symbolic field, its values in
     the order tried; size_choice_constraint(?Field, ?Value, ?Constraints) what a value
-    adds (a cylinder: width =:= length);
+    adds (a cylinder: width =:= length; a prism: its blunted tip_height between
+    min_tip_height_m and its height), posted when a literal fixes the value or the
+    search picks it, with the context's size parameters;
   - size_fixed(?Kind, ?Field, ?Value): a field the kind does not size;
   - size_integer_field(?Field): a field in whole units (CLP(FD));
   - size_ratio(?Kind, ?Property, ?Numerator, ?Denominator): a property that bounds a
