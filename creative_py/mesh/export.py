@@ -113,10 +113,8 @@ class ToolFiles:
     def paths(self) -> tuple[Path, ...]:
         """Return every file of the tool."""
         picture = () if self.png is None else (self.png,)
-        return ((self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture + self.meshes
-                + self.sim_models)
         return ((self.urdf, self.sdf, self.scad, self.stl, self.manifest) + picture
-                + self.meshes + self.pieces + self.gcode)
+                + self.meshes + self.sim_models + self.pieces + self.gcode)
 
 
 def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,

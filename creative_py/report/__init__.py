@@ -6,6 +6,6 @@ without writing anything; ``table`` prints it as rich tables in a terminal; ``pa
 writes it as ``report.html`` beside the files it shows, with relative links only.
 """
 
-from creative_py.report.plot import MARKERS, plot_trials, summarise_trials
+from creative_py.report.plot import MARKERS, plot_trials, summarise_trials, trial_labels
 
-__all__ = ["MARKERS", "plot_trials", "summarise_trials"]
+__all__ = ["MARKERS", "plot_trials", "summarise_trials", "trial_labels"]

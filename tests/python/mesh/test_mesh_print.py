@@ -34,7 +34,8 @@ BED = np.array(PrintSettings().build_volume) * MM_PER_M
 
 
 def test_a_tool_that_fits_is_one_piece_without_joint(tmp_path):
-    spec = BlockSpec("prism", "triangular_prism", 0.16, 0.085, 0.0275, mass=None)
+    spec = BlockSpec("prism", "triangular_prism", 0.16, 0.085, 0.0275, mass=None,
+                     tip_height=0.0024)
     files = write_tool_files(spec, tmp_path, picture=False)
     entry = json.loads(files.manifest.read_text())["print"]
     assert entry["printable"] and entry["joint"] is None and entry["joints"] == []
@@ -139,7 +140,8 @@ def test_a_pin_and_a_small_wedge_slice_to_gcode_on_the_bed(tmp_path):
     assert 0 <= x0 < x1 <= BED[0] and 0 <= y0 < y1 <= BED[1] and z1 <= BED[2]
     assert read_gcode(result.gcode).filament_mm == result.filament_mm
 
-    wedge = BlockSpec("wedge_small", "triangular_prism", 0.06, 0.03, 0.02, mass=None)
+    wedge = BlockSpec("wedge_small", "triangular_prism", 0.06, 0.03, 0.02, mass=None,
+                      tip_height=0.001)
     files = write_tool_files(wedge, tmp_path, picture=False, gcode=True)
     entry = json.loads(files.manifest.read_text())["print"]
     (row,) = entry["pieces"]
