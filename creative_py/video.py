@@ -6,11 +6,11 @@ with matplotlib) in matplotlib's DejaVu Sans, in a dark band at the bottom of th
 frame; the clip is H.264 in yuv420p (what browsers play), through ``imageio-ffmpeg``::
 
     from creative_py.video import write_clip
-    info = write_clip(path, frames, fps=10.0,
+    info = write_clip(path, frames, fps=5.0,
                       lines=["#2 TUL 2  hook_a2  loc 1", "tested hook_down(hook_a2)",
                              "failure: goal not reached"],
                       times=[0.0, 0.1, ...])       # simulated seconds, shown top right
-    info                                           # {"frames": 74, "duration_s": 7.4, ...}
+    info                                           # {"frames": 37, "duration_s": 7.4, ...}
 """
 
 from __future__ import annotations

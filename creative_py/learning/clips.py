@@ -14,7 +14,7 @@ whether the trial is kept, and only a kept trial is rendered and written, as
     {"file": "videos/002-use-hook_a2.mp4", "phase": "use", "trial": 2,
      "tool": "hook_a2", "tested": ["hook_down(hook_a2)"], "outcome": "failure",
      "reason": "goal not reached", "why": "failure:failure: goal not reached",
-     "frames": 83, "duration_s": 8.3, "bytes": 51234}
+     "frames": 42, "duration_s": 8.4, "bytes": 32873}
 
 ``why`` is ``demonstration``, ``creation``, ``first_success``, ``failure:<reason>``
 or, with ``all``, ``trial`` for a trial kept only because every trial is.

@@ -24,7 +24,7 @@ The ``[video]`` table of a world's ``scene.toml`` places the camera::
     fov_deg = 50.0
     width = 320
     height = 240
-    fps = 10.0            # frames per second of simulated time
+    fps = 5.0             # frames per second of simulated time
 """
 
 from __future__ import annotations
@@ -67,7 +67,7 @@ class VideoSpec:
     """
 
     camera: CameraSpec
-    fps: float = 10.0
+    fps: float = 5.0
 
     def __post_init__(self) -> None:
         if (isinstance(self.fps, bool) or not isinstance(self.fps, (int, float))
@@ -83,7 +83,7 @@ class VideoSpec:
         cam = {k: v for k, v in table.items() if k != "fps"}
         cam.setdefault("name", "video")
         camera = CameraSpec.from_dict(cam, f"{source}: [video]")
-        fps = table.get("fps", 10.0)
+        fps = table.get("fps", 5.0)
         try:
             return cls(camera, fps)
         except ValueError as exc:

@@ -98,7 +98,7 @@ class SceneSpec:
     cameras: tuple
     video: Any = None
     """The clips' camera and frame rate (:class:`~creative_py.sim.recorder.VideoSpec`):
-    the ``[video]`` table, else the first camera at 10 frames per second, else None."""
+    the ``[video]`` table, else the first camera at 5 frames per second, else None."""
 
 
 @dataclass(frozen=True)
