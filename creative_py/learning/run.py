@@ -28,7 +28,6 @@ from creative_py.sim.world import apply_drawn, draw_world
 log = logging.getLogger(__name__)
 
 PHASES = ("use", "create", "all")
-STRATEGIES = ("paper", "informative", "random")
 
 
 @dataclass(frozen=True)
