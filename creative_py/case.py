@@ -18,7 +18,10 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
   unit), ``min`` and ``max`` (the value is kept inside) for a scene value a location
   sets (``back_gap``, ``"door1.open_angle"``); ``[randomise.catalogue.<field>]`` with
   ``min`` and/or ``max`` narrows the draw of a catalogue spec field (``handle_width``)
-  inside each object's own qualitative range, where the simulator needs it.
+  inside each object's own qualitative range, where the simulator needs it, and a
+  table per qualitative value (``short = {max = 0.20}``) narrows the draw of the
+  objects that have that value, where the physics' boundary lies inside the
+  ontology's range.
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under
 ``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field
@@ -121,6 +124,11 @@ class CaseManifest:
     catalogue_bounds: tuple[tuple[str, float, float], ...] = ()
     """``(spec field, min, max)`` from ``[randomise.catalogue]``: a drawn number of that
     field stays within them (and within its object's own qualitative range)."""
+    catalogue_value_bounds: tuple[tuple[str, str, float, float], ...] = ()
+    """``(spec field, qualitative value, min, max)`` from the value tables of
+    ``[randomise.catalogue.<field>]`` (``short = {max = 0.20}``): a drawn number whose
+    object has that value stays within them, where the physics' boundary lies inside
+    the ontology's range (a 0.24 m "short" handle already reaches the cube)."""
 
     @property
     def harder_variant(self) -> str:
@@ -276,6 +284,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     df.done()
     jitters = []
     bounds: list[tuple[str, float, float]] = []
+    value_bounds: list[tuple[str, str, float, float]] = []
     if f.has("randomise"):
         rf = f.table("randomise")
         cf = rf.table("catalogue", {})
@@ -286,6 +295,14 @@ def read_manifest(folder: Path) -> CaseManifest:
             if lo > hi:
                 raise bf.error("max", f"must be >= min ({lo}), got {hi}")
             bounds.append((key, lo, hi))
+            for value in [k for k in bf.data if k not in ("min", "max")]:
+                vf = bf.table(value)
+                vlo = vf.float("min", -math.inf) if vf.has("min") else -math.inf
+                vhi = vf.float("max", math.inf) if vf.has("max") else math.inf
+                if vlo > vhi:
+                    raise vf.error("max", f"must be >= min ({vlo}), got {vhi}")
+                value_bounds.append((key, value, vlo, vhi))
+                vf.done()
             bf.done()
         cf.done()
         lf = rf.table("location", {})
@@ -302,7 +319,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), tuple(skills), pose_term, tuple(params),
                             tuple(variants), demo, tuple(jitters), paper_trials,
-                            tuple(bounds))
+                            tuple(bounds), tuple(value_bounds))
     try:
         manifest.check_pose(pose, "demonstration.pose")
     except ValueError as exc:

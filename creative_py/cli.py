@@ -232,6 +232,8 @@ def sweep(
                                              "(default: each manifest's trial_budget)."),
     eval_trials: int = typer.Option(4, "--eval-trials", help="Evaluation trials of the "
                                     "learned model."),
+    video: str = typer.Option("none", "--video", help="MP4 clips of every run: none, key "
+                              "or all (as creative run --video)."),
 ) -> None:
     """Run every combination of cases, strategies, seeds and world seeds on Ray and
     write sweep.csv and sweep.png."""
@@ -255,7 +257,12 @@ def sweep(
             _fail(f"{option} must be at least {least}, got {value}")
     if out.exists() and not out.is_dir():
         _fail(f"--out {out}: not a folder")
-    opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials)
+    from creative_py.learning.clips import VIDEO_MODES
+
+    if video not in VIDEO_MODES:
+        _fail(f"--video must be one of {', '.join(VIDEO_MODES)}, got {video!r}")
+    opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials,
+                        video=video)
     with _one_line_errors():
         result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
                            serial=serial)

@@ -68,13 +68,15 @@ class RunSpec:
 @dataclass(frozen=True)
 class SweepOptions:
     """The run options every run of a sweep shares (see
-    :class:`creative_py.learning.run.RunOptions`)."""
+    :class:`creative_py.learning.run.RunOptions`); a sweep saves no video clip unless
+    ``video`` says so."""
 
     phase: str = "all"
     max_trials: Optional[int] = None
     consecutive: int = 2
     eval_trials: int = 4
     create_eval_trials: int = 5
+    video: str = "none"
 
 
 def parse_ints(text: str, option: str) -> list[int]:
@@ -150,7 +152,8 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
         opts = RunOptions(seed=spec.seed, phase=options.phase, max_trials=options.max_trials,
                           consecutive=options.consecutive, eval_trials=options.eval_trials,
                           create_eval_trials=options.create_eval_trials,
-                          strategy=spec.strategy, world_seed=spec.world_seed)
+                          video=options.video, strategy=spec.strategy,
+                          world_seed=spec.world_seed)
         folder = run_case(spec.case, Path(runs_dir), opts, run_name=spec.name)
         summary = json.loads((folder.path / "summary.json").read_text())
         row.update(status="ok", run_dir=str(folder.path), **summary_row(summary))

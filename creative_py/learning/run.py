@@ -287,10 +287,11 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any
 
     case = world.manifest.id
     facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
-    ranges: dict[str, dict[str, tuple[float, float, str]]] = {}
+    ranges: dict[str, dict[str, tuple[float, float, str, str]]] = {}
     for r in engine.catalogue_ranges(case, facts):
-        obj, fact, _x, _prop, _value, lo, hi, bounds = r.args
-        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds))
+        obj, fact, _x, _prop, value, lo, hi, bounds = r.args
+        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds),
+                                                      str(value))
 
     def literals(spec: Any) -> set[str]:
         state = engine.abstract_state(case, [fact_term(f) for f in catalogue_facts(spec)])

@@ -473,6 +473,27 @@ def _inside(x: float, rng_: Range) -> bool:
     return lo <= x <= hi
 
 
+def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, Range]]) -> None:
+    """Raise ValueError naming case.toml's table when a value table of
+    ``[randomise.catalogue.<field>]`` names a value no catalogued object has."""
+    from creative_py.sim.tools import tool_kind
+
+    seen: dict[str, set[str]] = {}
+    for name, facts in ranges.items():
+        if name not in world.items:
+            continue
+        fields = tool_kind(world.items[name].spec).FACT_FIELDS
+        for fact, own in facts.items():
+            if fact in fields and len(own) > 3:
+                seen.setdefault(fields[fact], set()).add(str(own[3]))
+    for fld, value, _lo, _hi in world.manifest.catalogue_value_bounds:
+        if value not in seen.get(fld, set()):
+            known = ", ".join(sorted(seen.get(fld, set()))) or "none"
+            raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
+                             f"[randomise.catalogue.{fld}] {value!r}: no catalogued object "
+                             f"has this value (values of {fld}: {known})")
+
+
 def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]],
                keeps: Optional[Callable[[str, Any], bool]] = None,
                attempts: int = 200) -> dict[str, Any]:
@@ -489,10 +510,11 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
     seed : int
         The world seed.
     ranges : mapping
-        ``object -> {catalogue fact -> (low, high, bounds)}``: the qualitative range of
-        each number the object has (the engine's ``catalogue_ranges``). Each number is
-        drawn uniformly inside its own range (narrowed by the manifest's
-        ``[randomise.catalogue]``, where given), rounded to 0.1 mm (0.0001 degree), so the
+        ``object -> {catalogue fact -> (low, high, bounds[, value])}``: the qualitative
+        range of each number the object has and the value it stands for (the engine's
+        ``catalogue_ranges``). Each number is drawn uniformly inside its own range
+        (narrowed by the manifest's ``[randomise.catalogue]``, for the field and for
+        the object's value, where given), rounded to 0.1 mm (0.0001 degree), so the
         object keeps its qualitative values; a number without a range is kept, and so
         are the numbers of the demonstration's tool (the trainer's demonstration is
         part of the case and must work: drawn, a hook with a long, wide prong on a thin
@@ -512,6 +534,7 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
     """
     from creative_py.sim.tools import tool_kind
 
+    _check_value_bounds(world, ranges)
     rng = np.random.default_rng(seed)
     names = list(world.items)
     order = [names[int(i)] for i in rng.permutation(len(names))]
@@ -523,12 +546,16 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
         kind = tool_kind(spec)
         fields = kind.FACT_FIELDS
         narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
+        by_value = {(f, v): (lo, hi) for f, v, lo, hi in world.manifest.catalogue_value_bounds}
         todo = []
-        for fact, (lo, hi, bounds) in sorted(ranges.get(name, {}).items()):
+        for fact, own_range in sorted(ranges.get(name, {}).items()):
+            lo, hi, bounds = own_range[:3]
+            value = own_range[3] if len(own_range) > 3 else None
             if fact not in fields:
                 continue
             a, b = narrow.get(fields[fact], (lo, hi))
-            todo.append((fact, (max(lo, a), min(hi, b), bounds, (lo, hi, bounds))))
+            c, d = by_value.get((fields[fact], value), (a, b))
+            todo.append((fact, (max(lo, a, c), min(hi, b, d), bounds, (lo, hi, bounds))))
         if not todo:
             continue
         for attempt in range(attempts):
@@ -537,7 +564,7 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
                 if lo > hi:
                     raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
                                      f"[randomise.catalogue.{fields[fact]}] leaves {name} "
-                                     f"no number in its own range {own[:2]}")
+                                     f"no number in its own range {list(own[:2])}")
                 x = round(float(rng.uniform(lo, hi)), 4)
                 while not (_inside(x, own) and lo <= x <= hi):
                     x = round(float(rng.uniform(lo, hi)), 4)

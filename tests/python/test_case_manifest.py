@@ -64,6 +64,10 @@ def test_unknown_case_lists_the_known_ones():
      "field 'demonstration.steps'"),
     ('dx = 0.03', 'dx = 3.0', r"field 'demonstration.pose': .*dx must be within"),
     ('id = "hook"', 'id = "Hook"', "must be a lower-case Prolog atom"),
+    ('medium = {min = 0.27, max = 0.35}', 'medium = {min = 0.37, max = 0.35}',
+     r"field 'randomise.catalogue.handle_length.medium.max': must be >= min"),
+    ('short = {min = 0.15, max = 0.20}', 'short = {min = 0.15, mx = 0.20}',
+     r"randomise.catalogue.handle_length.short"),
 ])
 def test_a_bad_manifest_names_its_file_and_field(tmp_path, old, new, message):
     folder = _copy(tmp_path)

@@ -4,10 +4,14 @@ The engine gives each catalogued number's qualitative range; the sampler draws i
 it. Checked here: the same seed gives the same world, different seeds differ, every
 drawn number lies inside its object's own range (the range of the value the shipped
 object has), every object keeps its structural literals, the catalogue is a
-permutation, the locations stay within the manifest's [randomise] bounds, and the
+permutation, a number stays within the manifest's bounds for its field and for its
+object's value (``short = {max = 0.20}``), the locations stay within the manifest's
+[randomise] bounds, and the
 drawn world passes the run's own checks (check_catalogue, the loader's scene checks),
 and every drawn tool lies still on its stand (the physics: a sim test).
 """
+
+import dataclasses
 
 import pytest
 
@@ -60,10 +64,15 @@ def test_same_seed_same_world_and_different_seeds_differ(engine, case):
 def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
     world = load_world(load_cases()[case])
     facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
-    ranges = {}
+    ranges, values = {}, {}
     for r in engine.catalogue_ranges(case, facts):
-        obj, fact, _x, _p, _v, lo, hi, bounds = r.args
+        obj, fact, _x, _p, v, lo, hi, bounds = r.args
         ranges[(str(obj), str(fact))] = (float(lo), float(hi), str(bounds))
+        values[(str(obj), str(fact))] = str(v)
+    # a cylinder's width is its drawn length (its diameter), not a number of its own
+    tied_free = lambda s: ({"length", "height"} if getattr(s, "shape", "") == "cylinder"
+                           else {f.name for f in dataclasses.fields(s)})
+    bounded = 0
     drawn = _drawn(engine, case, seed)
     new = apply_drawn(world, drawn)
     assert sorted(drawn["order"]) == sorted(world.items)
@@ -83,11 +92,16 @@ def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
             for f, a, b in world.manifest.catalogue_bounds:   # [randomise.catalogue]
                 if f == fld:
                     assert a <= getattr(spec, fld) <= b, (name, fld, getattr(spec, fld))
+            for f, v, a, b in world.manifest.catalogue_value_bounds:   # short = {...}
+                if f == fld and v == values[(name, fact)] and fld in tied_free(spec):
+                    assert a <= getattr(spec, fld) <= b, (name, fld, v, getattr(spec, fld))
+                    bounded += 1
             changed += getattr(spec, fld) != getattr(old, fld)
         lits = lambda s: {str(x) for x in engine.abstract_state(
             case, [fact_term(f) for f in catalogue_facts(s)])}
         assert lits(spec) == lits(old), name
     assert changed > len(world.items)
+    assert bounded or not world.manifest.catalogue_value_bounds
     check_catalogue(engine, new)
     assert all(tool_rests(new, name) for name in new.items)
     jitters = world.manifest.location_jitter
@@ -98,3 +112,24 @@ def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
             base = float(before[j.key]) if j.key in before else float(ns.get(j.key))
             assert j.min - 1e-9 <= after[j.key] <= j.max + 1e-9
             assert abs(after[j.key] - base) <= j.jitter + 1e-9
+
+
+def test_a_value_table_naming_no_catalogued_value_is_refused(engine, tmp_path):
+    """A typo in a value table (``shrot``) would narrow nothing: it is an error naming
+    the file, the table and the values the catalogue has."""
+    import shutil
+
+    from creative_py.case import read_manifest
+    from creative_py.world import WORLDS_ROOT
+
+    folder = tmp_path / "hook_tube"
+    shutil.copytree(WORLDS_ROOT / "hook_tube", folder)
+    text = (folder / "case.toml").read_text()
+    old = "short = {min = 0.15, max = 0.20}"
+    assert old in text
+    (folder / "case.toml").write_text(text.replace(old, "shrot = {min = 0.15, max = 0.20}"))
+    world = load_world(read_manifest(folder), folder)
+    with pytest.raises(ValueError, match=r"hook_tube/case.toml: \[randomise.catalogue."
+                       r"handle_length\] 'shrot': no catalogued object has this value "
+                       r"\(values of handle_length: long, medium, short\)"):
+        draw_catalogue_world(engine, world, 0)
