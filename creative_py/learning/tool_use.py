@@ -225,9 +225,16 @@ class ToolUseLearner:
                 if cons >= opts.consecutive:
                     stop = "confirmed"
                     break
+            before = self._bounds(vs) if paper and exp.name == "experiment" else None
             rec, vs = runner.run(exp, "use", i, vs, task, decision)
             taught = rec.outcome in ("success", "failure", "blocked")
-            if exp.name == "experiment" and (not taught or not paper):
+            # Algorithm 1 repeats the task after a failure; it does not repeat an
+            # experiment whose trial left h_s and h_g as they were (what the robot
+            # observed was already excluded: a stick seen outside the tube), which would
+            # give the same answer until the budget is spent.
+            idle = (paper and taught and before is not None
+                    and self._bounds(vs) == before)
+            if exp.name == "experiment" and (not taught or not paper or idle):
                 # Not repeated: an experiment the arm could not carry out taught
                 # nothing (a pose test: whatever the tool); and, for the other
                 # strategies, one already run gave its answer (the physics would give
@@ -258,6 +265,11 @@ class ToolUseLearner:
             converged = stop in ("certified", "exhausted")
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
                          demo_tool, time.perf_counter() - t0, stop, n0, exact0)
+
+    def _bounds(self, vs: Term) -> tuple[str, str]:
+        """Return h_s and h_g as text, to tell whether a trial changed them."""
+        hs, hg = self.engine.vs_bounds(vs)
+        return str(hs), str(hg)
 
     def _stop_word(self) -> str:
         """Return why a non-paper strategy stopped when Prolog proposed no experiment."""
