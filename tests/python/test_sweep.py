@@ -79,3 +79,37 @@ def test_two_runs_one_after_another_in_one_process(tmp_path):
              for r in res.rows]
     assert drawn[0] != drawn[1]
     assert (tmp_path / "s" / "sweep.png").is_file()
+
+
+def test_a_crashed_run_is_a_row_and_the_sweep_goes_on(tmp_path, monkeypatch):
+    """A run that raises is recorded (status crashed, its error's last line) and the
+    next run still runs; sweep.csv, sweep.json and sweep.png are written."""
+    import creative_py.learning.run as run_mod
+
+    calls = []
+
+    def fake_run_case(case, out, opts, run_name=None):
+        calls.append(opts.world_seed)
+        if opts.world_seed == 0:
+            raise RuntimeError("the arm fell off\nsecond line")
+        folder = Path(out) / run_name
+        folder.mkdir(parents=True)
+        (folder / "summary.json").write_text(json.dumps({
+            "use": {"trials": 3, "converged": True}, "eval": {"trials": 2, "successes": 2},
+            "info_bound_trials": 4, "vs_count_initial": 16}))
+        return type("Run", (), {"path": folder})()
+
+    monkeypatch.setattr(run_mod, "run_case", fake_run_case)
+    lines = []
+    res = run_sweep(plan_runs(["rake"], ["paper"], [0], [0, 1]), tmp_path,
+                    SweepOptions(phase="use"), serial=True, progress=lines.append, name="s")
+    assert calls == [0, 1]
+    assert [r["status"] for r in res.rows] == ["crashed", "ok"]
+    assert res.rows[0]["error"] == "RuntimeError: the arm fell off second line"
+    assert res.rows[1]["trials_to_learn"] == 3
+    rows = list(csv.DictReader((tmp_path / "s" / "sweep.csv").open(newline="")))
+    assert [r["status"] for r in rows] == ["crashed", "ok"]
+    meta = json.loads((tmp_path / "s" / "sweep.json").read_text())
+    assert (meta["ok"], meta["crashed"]) == (1, 1)
+    assert (tmp_path / "s" / "sweep.png").stat().st_size > 0
+    assert "crashed" in lines[0] and "[2/2, 0 left]" in lines[1]
