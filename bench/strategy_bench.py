@@ -18,7 +18,7 @@ local Ray instance with every core, each timed whole, to
 
     .venv/bin/python bench/strategy_bench.py table [--from runs/sweep-...] [--world-seeds 0-19]
     .venv/bin/python bench/strategy_bench.py creation [--from ...] [--case hook]
-    .venv/bin/python bench/strategy_bench.py speedup [--case rake] [--world-seeds 0-5]
+    .venv/bin/python bench/strategy_bench.py speedup [--cases hook wedge rake] [--world-seeds 0-3]
 """
 
 from __future__ import annotations
@@ -173,7 +173,7 @@ def cmd_creation(args) -> int:
 
 
 def cmd_speedup(args) -> int:
-    runs = plan_runs([args.case], [args.strategy], [0],
+    runs = plan_runs(args.cases, [args.strategy], [0],
                      parse_ints(args.world_seeds, "--world-seeds"))
     opts = SweepOptions(phase=args.phase)
     out = Path(tempfile.mkdtemp(prefix="speedup-bench-"))
@@ -182,7 +182,8 @@ def cmd_speedup(args) -> int:
     ray = run_sweep(runs, out, opts, name="ray")
     same = ([r["trials_to_learn"] for r in serial.rows]
             == [r["trials_to_learn"] for r in ray.rows])
-    result = {"case": args.case, "strategy": args.strategy, "phase": args.phase,
+    result = {"cases": args.cases, "strategy": args.strategy, "phase": args.phase,
+              "world_seeds": args.world_seeds,
               "runs": len(runs), "serial_s": serial.wall_time_s, "ray_s": ray.wall_time_s,
               "speedup": round(serial.wall_time_s / ray.wall_time_s, 3),
               "same_trial_counts": same, "load_before": load0,
@@ -207,10 +208,10 @@ def main() -> int:
     c.add_argument("--case", default="hook")
     c.add_argument("--world-seeds", default="0-19")
     s = sub.add_parser("speedup")
-    s.add_argument("--case", default="rake")
+    s.add_argument("--cases", nargs="+", default=["hook", "wedge", "rake"])
     s.add_argument("--strategy", default="informative")
     s.add_argument("--phase", default="use")
-    s.add_argument("--world-seeds", default="0-5")
+    s.add_argument("--world-seeds", default="0-3")
     args = ap.parse_args()
     return {"table": cmd_table, "creation": cmd_creation, "speedup": cmd_speedup}[args.what](args)
 

@@ -83,3 +83,23 @@ def test_the_run_options_name_the_strategies():
         RunOptions(strategy="clever")
     with pytest.raises(ValueError, match="strategy"):
         LearningOptions(strategy="clever")
+
+
+def test_paper_does_not_repeat_an_experiment_that_left_the_space_as_it_was():
+    """Algorithm 1 repeats the task after a failure, but an experiment whose trial left
+    h_s and h_g unchanged (what the robot observed was already excluded: in a drawn
+    hook world a stick seen outside the tube) would give the same answer until the
+    budget is spent. Here every trial is made to leave the version space as it was."""
+    runner = TrialRunner(Engine.instance(), load_world(get_case("rake")), None, seed=0)
+    real_run = runner.run
+    chosen = []
+
+    def idle_run(exp, phase, i, vs, task, decision):
+        rec, _new_vs = real_run(exp, phase, i, vs, task, decision)
+        chosen.append((str(exp.args[0]), str(exp.args[1])))
+        return rec, vs                      # the trial taught nothing
+
+    runner.run = idle_run
+    use = ToolUseLearner(runner, LearningOptions(max_trials=4, strategy="paper")).learn()
+    assert len(use.trials) == 4
+    assert len(set(chosen)) == len(chosen), chosen
