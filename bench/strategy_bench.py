@@ -107,7 +107,8 @@ def table_md(records: list[dict]) -> str:
             crashed = f", {len(r['crashed'])} crashed" if r["crashed"] else ""
             cells.append(f"{r['trials_median']:g} [{r['trials_min']}-{r['trials_max']}]; "
                          f"model {r['eval_successes']}/{r['eval_trials']}{crashed}")
-        lines.append(f"| {c} ({any_r['paper_trials']}; {any_r['info_bound_median']:g}) | "
+        paper = "-" if any_r["paper_trials"] is None else any_r["paper_trials"]
+        lines.append(f"| {c} ({paper}; {any_r['info_bound_median']:g}) | "
                      + " | ".join(cells) + " |")
     return "\n".join(lines)
 

@@ -305,7 +305,8 @@ def read_csv(path: Path) -> list[dict[str, str]]:
 def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
     """Draw trials to learn per case and strategy (box and points) to ``path``.
 
-    A solid red mark is the paper's count of the case (the manifest's
+    Under each group its learned models' evaluation successes (``model 78/80``). A
+    solid red mark is the paper's count of the case (the manifest's
     ``paper_trials``), a dashed green one the information bound ceil(log2 N0)
     (median of the runs' ``info_bound_trials``), where known; crashed runs are
     counted under each group's label.
@@ -331,8 +332,12 @@ def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
             ok = [float(r["trials_to_learn"]) for r in group
                   if r["status"] == "ok" and r["trials_to_learn"] not in ("", None)]
             crashed = len(group) - len(ok)
+            ev = [(int(r["eval_successes"]), int(r["eval_trials"])) for r in group
+                  if r["status"] == "ok" and str(r.get("eval_trials", "")) not in ("", "0")]
+            model = (f"\nmodel {sum(a for a, _ in ev)}/{sum(b for _, b in ev)}" if ev else "")
             positions.append(x)
-            labels.append(f"{case}\n{strategy}" + (f"\n({crashed} crashed)" if crashed else ""))
+            labels.append(f"{case}\n{strategy}{model}"
+                          + (f"\n({crashed} crashed)" if crashed else ""))
             data.append(ok)
             if ok:
                 jitter = [x + 0.12 * math.sin(7.3 * i) for i in range(len(ok))]
