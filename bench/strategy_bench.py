@@ -153,7 +153,9 @@ def cmd_creation(args) -> int:
             rec.update(trials=c.get("trials"), outcomes=outcomes,
                        predicted=bool(c.get("predicted")),
                        predicted_why=c.get("predicted"),
-                       created=c.get("tool"), created_eval=c.get("eval"),
+                       created=[{"name": t["name"], "instance": t["instance"],
+                                 "dims": t["dims"]} for t in c.get("created_tools", [])],
+                       created_eval=c.get("eval"),
                        use_trials=s["use"]["trials"])
         else:
             rec["error"] = r["error"]
@@ -180,10 +182,11 @@ def cmd_speedup(args) -> int:
     out = Path(tempfile.mkdtemp(prefix="speedup-bench-"))
     load0 = os.getloadavg()[0]
     serial = run_sweep(runs, out, opts, serial=True, name="serial")
-    ray = run_sweep(runs, out, opts, name="ray")
+    ray = run_sweep(runs, out, opts, name="ray", fresh_workers=args.fresh_workers)
     same = ([r["trials_to_learn"] for r in serial.rows]
             == [r["trials_to_learn"] for r in ray.rows])
     result = {"cases": args.cases, "strategy": args.strategy, "phase": args.phase,
+              "fresh_workers": args.fresh_workers,
               "world_seeds": args.world_seeds,
               "runs": len(runs), "serial_s": serial.wall_time_s, "ray_s": ray.wall_time_s,
               "speedup": round(serial.wall_time_s / ray.wall_time_s, 3),
@@ -191,7 +194,10 @@ def cmd_speedup(args) -> int:
               "cores": os.cpu_count(),
               "serial_run_s": [r["wall_time_s"] for r in serial.rows],
               "ray_run_s": [r["wall_time_s"] for r in ray.rows]}
-    (HERE / "results" / "sweep_speedup.json").write_text(json.dumps(result, indent=1) + "\n")
+    path = HERE / "results" / "sweep_speedup.json"
+    recorded = json.loads(path.read_text()) if path.exists() else {}
+    recorded["fresh_workers" if args.fresh_workers else "reused_workers"] = result
+    path.write_text(json.dumps(recorded, indent=1) + "\n")
     print(result)
     return 0
 
@@ -213,6 +219,7 @@ def main() -> int:
     s.add_argument("--strategy", default="informative")
     s.add_argument("--phase", default="use")
     s.add_argument("--world-seeds", default="0-3")
+    s.add_argument("--fresh-workers", action="store_true")
     args = ap.parse_args()
     return {"table": cmd_table, "creation": cmd_creation, "speedup": cmd_speedup}[args.what](args)
 

@@ -227,6 +227,9 @@ def sweep(
                                            "Ray instance (default: every core)."),
     serial: bool = typer.Option(False, "--serial", help="Run the runs one after another "
                                 "in this process, without Ray."),
+    fresh_workers: bool = typer.Option(False, "--fresh-workers", help="A fresh Ray worker "
+                                       "process for every run (default: each worker runs "
+                                       "several, one after another)."),
     phase: str = typer.Option("all", "--phase", help="use, create or all (every run)."),
     max_trials: Optional[int] = typer.Option(None, "--max-trials", help="N of Algorithm 1 "
                                              "(default: each manifest's trial_budget)."),
@@ -265,7 +268,7 @@ def sweep(
                         video=video)
     with _one_line_errors():
         result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
-                           serial=serial)
+                           serial=serial, fresh_workers=fresh_workers)
     ok = sum(r["status"] == "ok" for r in result.rows)
     typer.echo(f"{result.folder}: {ok} of {len(result.rows)} runs ok in "
                f"{result.wall_time_s} s", err=True)

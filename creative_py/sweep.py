@@ -4,10 +4,12 @@
 0-19`` runs every combination as its own run (:func:`creative_py.learning.run.run_case`)
 in its own run folder under the sweep's folder, as Ray tasks: a local Ray instance
 using every core by default (``num_cpus``), or an existing Ray cluster (``address``).
-Each task runs in a fresh Ray worker process (``max_calls=1``): the Prolog engine is
-one per process, and a fresh process gives every run the same start. ``serial`` runs
-the same runs one after another in this process, without Ray (the baseline of the
-speed-up).
+Each Ray worker process runs its tasks one after another, with its one Prolog engine,
+as ``serial`` does in this process (each run builds its world and version space from
+nothing, and both give the same trials); ``fresh_workers`` gives every run a process
+of its own instead (``max_calls=1``), which costs each run the start of Python,
+pybullet and the engine, about 5 s. ``serial`` runs the same runs one after another in
+this process, without Ray (the baseline of the speed-up).
 
 The sweep writes, in its folder:
 
@@ -201,7 +203,7 @@ class SweepResult:
 def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepOptions(),
               address: Optional[str] = None, num_cpus: Optional[int] = None,
               serial: bool = False, progress: Optional[Callable[[str], None]] = None,
-              name: Optional[str] = None) -> SweepResult:
+              name: Optional[str] = None, fresh_workers: bool = False) -> SweepResult:
     """Run every run of ``runs`` and write ``sweep.csv``, ``sweep.png``, ``sweep.json``.
 
     Parameters
@@ -216,6 +218,8 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         Cores of the local Ray instance (default: every core).
     serial : bool
         Run them one after another in this process, without Ray.
+    fresh_workers : bool
+        A fresh Ray worker process for every run (default: a worker runs several).
     progress : callable or None
         Receives one line per finished run.
     """
@@ -253,7 +257,7 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
             init["num_cpus"] = num_cpus
         ray.init(**init)
         try:
-            remote = ray.remote(num_cpus=1, max_calls=1)(run_one)
+            remote = ray.remote(num_cpus=1, max_calls=1 if fresh_workers else 0)(run_one)
             pending = {remote.remote(spec, str(runs_dir), options): spec for spec in runs}
             while pending:
                 ready, _ = ray.wait(list(pending), num_returns=1)
@@ -279,7 +283,8 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
     plot_sweep(result.rows, folder / "sweep.png")
     (folder / "sweep.json").write_text(json.dumps({
         "runs": [asdict(r) for r in runs], "options": asdict(options),
-        "ray": None if serial else {"address": address, "num_cpus": num_cpus},
+        "ray": None if serial else {"address": address, "num_cpus": num_cpus,
+                                    "fresh_workers": fresh_workers},
         "serial": serial, "wall_time_s": result.wall_time_s,
         "ok": sum(r["status"] == "ok" for r in result.rows),
         "crashed": sum(r["status"] != "ok" for r in result.rows)}, indent=1) + "\n")

@@ -20,8 +20,7 @@ ROOT = Path(__file__).resolve().parents[2]
 CREATIVE = [sys.executable, "-m", "creative_py.cli"]
 
 
-@pytest.mark.sim
-@pytest.mark.slow  # about 2 min on 2 cores (Ray's start and two fresh worker processes)
+@pytest.mark.sim  # about 20 s on 2 quiet cores: Ray's start and two short runs
 def test_two_runs_on_a_local_ray_instance(tmp_path):
     runs = plan_runs(["rake"], ["paper"], [0], parse_ints("0-1", "--world-seeds"))
     lines = []
