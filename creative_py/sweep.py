@@ -151,11 +151,8 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
     row.update(case=spec.case, strategy=spec.strategy, seed=spec.seed,
                world_seed="" if spec.world_seed is None else spec.world_seed)
     try:
-        opts = RunOptions(seed=spec.seed, phase=options.phase, max_trials=options.max_trials,
-                          consecutive=options.consecutive, eval_trials=options.eval_trials,
-                          create_eval_trials=options.create_eval_trials,
-                          video=options.video, strategy=spec.strategy,
-                          world_seed=spec.world_seed)
+        opts = RunOptions(seed=spec.seed, strategy=spec.strategy, world_seed=spec.world_seed,
+                          **asdict(options))
         folder = run_case(spec.case, Path(runs_dir), opts, run_name=spec.name)
         summary = json.loads((folder.path / "summary.json").read_text())
         row.update(status="ok", run_dir=str(folder.path), **summary_row(summary))

@@ -463,6 +463,9 @@ Range = tuple[float, float, str]
 """A qualitative range: low, high and which ends it holds (``closed_open``,
 ``closed_closed``, ``open_closed``; ``ontology/ranges.pl``)."""
 
+ValueRange = tuple[float, float, str, str]
+"""A :data:`Range` and the qualitative value it stands for (``short``)."""
+
 
 def _inside(x: float, rng_: Range) -> bool:
     lo, hi, bounds = rng_
@@ -473,7 +476,7 @@ def _inside(x: float, rng_: Range) -> bool:
     return lo <= x <= hi
 
 
-def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, Range]]) -> None:
+def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, ValueRange]]) -> None:
     """Raise ValueError naming case.toml's table when a value table of
     ``[randomise.catalogue.<field>]`` names a value no catalogued object has."""
     from creative_py.sim.tools import tool_kind
@@ -483,9 +486,9 @@ def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, Range]])
         if name not in world.items:
             continue
         fields = tool_kind(world.items[name].spec).FACT_FIELDS
-        for fact, own in facts.items():
-            if fact in fields and len(own) > 3:
-                seen.setdefault(fields[fact], set()).add(str(own[3]))
+        for fact, (_lo, _hi, _bounds, value) in facts.items():
+            if fact in fields:
+                seen.setdefault(fields[fact], set()).add(value)
     for fld, value, _lo, _hi in world.manifest.catalogue_value_bounds:
         if value not in seen.get(fld, set()):
             known = ", ".join(sorted(seen.get(fld, set()))) or "none"
@@ -494,7 +497,7 @@ def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, Range]])
                              f"has this value (values of {fld}: {known})")
 
 
-def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]],
+def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueRange]],
                keeps: Optional[Callable[[str, Any], bool]] = None,
                attempts: int = 200) -> dict[str, Any]:
     """Draw a randomised world from ``world`` and return it as JSON-ready data.
@@ -510,7 +513,7 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
     seed : int
         The world seed.
     ranges : mapping
-        ``object -> {catalogue fact -> (low, high, bounds[, value])}``: the qualitative
+        ``object -> {catalogue fact -> (low, high, bounds, value)}``: the qualitative
         range of each number the object has and the value it stands for (the engine's
         ``catalogue_ranges``). Each number is drawn uniformly inside its own range
         (narrowed by the manifest's ``[randomise.catalogue]``, for the field and for
@@ -535,6 +538,8 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
     from creative_py.sim.tools import tool_kind
 
     _check_value_bounds(world, ranges)
+    narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
+    by_value = {(f, v): (lo, hi) for f, v, lo, hi in world.manifest.catalogue_value_bounds}
     rng = np.random.default_rng(seed)
     names = list(world.items)
     order = [names[int(i)] for i in rng.permutation(len(names))]
@@ -545,12 +550,8 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, Range]
         spec = world.items[name].spec
         kind = tool_kind(spec)
         fields = kind.FACT_FIELDS
-        narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
-        by_value = {(f, v): (lo, hi) for f, v, lo, hi in world.manifest.catalogue_value_bounds}
         todo = []
-        for fact, own_range in sorted(ranges.get(name, {}).items()):
-            lo, hi, bounds = own_range[:3]
-            value = own_range[3] if len(own_range) > 3 else None
+        for fact, (lo, hi, bounds, value) in sorted(ranges.get(name, {}).items()):
             if fact not in fields:
                 continue
             a, b = narrow.get(fields[fact], (lo, hi))
