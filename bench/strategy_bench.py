@@ -10,15 +10,15 @@ the paper's count, to ``bench/results/strategies.json``, and prints the README's
 ``creation``: the harder task for every world seed with the default strategy (``--from``
 a ``--phase all`` sweep folder, or run one): creation trials per world and whether the
 model's failure was predicted (``summary.json``'s ``create.predicted``), to
-``bench/results/creation_worlds.json``.
+``bench/results/creation_worlds_<case>.json``.
 
 ``speedup``: the same runs one after another in one process (``--serial``) and on a
 local Ray instance with every core, each timed whole, to
 ``bench/results/sweep_speedup.json``.
 
     .venv/bin/python bench/strategy_bench.py table [--from runs/sweep-...] [--world-seeds 0-19]
-    .venv/bin/python bench/strategy_bench.py creation [--from ...] [--case hook]
-    .venv/bin/python bench/strategy_bench.py speedup [--cases hook wedge rake] [--world-seeds 0-3]
+    .venv/bin/python bench/strategy_bench.py creation --case hook [--from ...]
+    .venv/bin/python bench/strategy_bench.py speedup [--cases ...] [--world-seeds 0-3]
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
 
-from creative_py.case import get_case  # noqa: E402
+from creative_py.case import get_case, load_cases  # noqa: E402
 from creative_py.sweep import (SweepOptions, parse_ints, plan_runs, read_csv,  # noqa: E402
                                run_sweep)
 
@@ -169,8 +169,8 @@ def cmd_creation(args) -> int:
                                             for p in ok),
               "created_eval_trials": sum(len(p["created_eval"] or []) for p in ok),
               "machine": _machine(), "per_world": per_world}
-    name = "creation_worlds.json" if args.case == "hook" else f"creation_worlds_{args.case}.json"
-    (HERE / "results" / name).write_text(json.dumps(result, indent=1) + "\n")
+    path = HERE / "results" / f"creation_worlds_{args.case}.json"
+    path.write_text(json.dumps(result, indent=1) + "\n")
     print({k: v for k, v in result.items() if k != "per_world"})
     return 0
 
@@ -208,14 +208,14 @@ def main() -> int:
     sub = ap.add_subparsers(dest="what", required=True)
     t = sub.add_parser("table")
     t.add_argument("--from", dest="source")
-    t.add_argument("--cases", nargs="+", default=["hook", "wedge", "rake"])
+    t.add_argument("--cases", nargs="+", default=sorted(load_cases()))
     t.add_argument("--world-seeds", default="0-19")
     c = sub.add_parser("creation")
     c.add_argument("--from", dest="source")
-    c.add_argument("--case", default="hook")
+    c.add_argument("--case", required=True)
     c.add_argument("--world-seeds", default="0-19")
     s = sub.add_parser("speedup")
-    s.add_argument("--cases", nargs="+", default=["hook", "wedge", "rake"])
+    s.add_argument("--cases", nargs="+", default=sorted(load_cases()))
     s.add_argument("--strategy", default="informative")
     s.add_argument("--phase", default="use")
     s.add_argument("--world-seeds", default="0-3")
