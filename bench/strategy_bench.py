@@ -129,7 +129,8 @@ def cmd_table(args) -> int:
               "options": meta.get("options"), "ray": meta.get("ray"),
               "world_seeds": sorted({int(r["world_seed"]) for r in rows
                                      if r["world_seed"] != ""}),
-              "machine": _machine(), "records": records}
+              "machine": {"cores": os.cpu_count()} if args.source else _machine(),
+              "records": records}
     (HERE / "results" / "strategies.json").write_text(json.dumps(result, indent=1) + "\n")
     print(table_md(records))
     return 0
@@ -168,7 +169,8 @@ def cmd_creation(args) -> int:
               "created_eval_successes": sum((p["created_eval"] or []).count("success")
                                             for p in ok),
               "created_eval_trials": sum(len(p["created_eval"] or []) for p in ok),
-              "machine": _machine(), "per_world": per_world}
+              "machine": {"cores": os.cpu_count()} if args.source else _machine(),
+              "per_world": per_world}
     path = HERE / "results" / f"creation_worlds_{args.case}.json"
     path.write_text(json.dumps(result, indent=1) + "\n")
     print({k: v for k, v in result.items() if k != "per_world"})
