@@ -1,7 +1,7 @@
 """One run of a case end to end: demonstration, tool-use learning, tool creation.
 
 :func:`run_case` is what ``creative run hook`` and ``make hook`` call. It writes the run
-folder described in :mod:`creative_py.learning.run_folder` as it goes, so an interrupted
+folder described in :mod:`creative_py.records.folder` as it goes, so an interrupted
 run leaves a readable ``trials.jsonl`` of the finished trials.
 """
 
@@ -18,7 +18,7 @@ from typing import Any, Callable, Optional
 from creative_py.bridge import Compound, Engine, PrologError, fact_term
 from creative_py.learning.clips import VIDEO_MODES, ClipKeeper
 from creative_py.learning.creation import CreateResult, ToolCreator
-from creative_py.learning.run_folder import RunFolder, read_trials
+from creative_py.records.folder import RunFolder, read_trials
 from creative_py.learning.tool_use import STRATEGIES, LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials

@@ -33,7 +33,7 @@ from typing import Any, Callable, Optional, Sequence
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
-from creative_py.learning.run_folder import RunFolder
+from creative_py.records.folder import RunFolder
 
 log = logging.getLogger(__name__)
 

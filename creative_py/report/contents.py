@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
 
-from creative_py.learning.run_folder import read_trials
+from creative_py.records.folder import read_trials
 
 
 @dataclass

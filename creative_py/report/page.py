@@ -17,7 +17,7 @@ from pathlib import Path
 from typing import Any, Callable
 from urllib.parse import quote
 
-from creative_py.learning.run_folder import write_atomic
+from creative_py.records.folder import write_atomic
 from creative_py.report.contents import (
     TRIAL_COLUMNS, Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
     plan_steps, read_run, relative_inside,

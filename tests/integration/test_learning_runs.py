@@ -11,7 +11,7 @@ import json
 import pytest
 
 from creative_py.learning.run import RunOptions, run_case
-from creative_py.learning.run_folder import read_trials
+from creative_py.records.folder import read_trials
 
 pytestmark = [pytest.mark.slow, pytest.mark.sim]
 

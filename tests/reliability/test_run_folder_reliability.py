@@ -9,7 +9,7 @@ import subprocess
 import sys
 from concurrent.futures import ThreadPoolExecutor
 
-from creative_py.learning.run_folder import RunFolder, read_trials
+from creative_py.records.folder import RunFolder, read_trials
 
 
 def test_simultaneous_creations_get_distinct_folders(tmp_path):

@@ -4,7 +4,7 @@ import json
 
 import pytest
 
-from creative_py.learning.run_folder import RunFolder, read_trials, write_atomic
+from creative_py.records.folder import RunFolder, read_trials, write_atomic
 from creative_py.report import plot_trials, summarise_trials
 
 
