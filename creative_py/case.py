@@ -224,6 +224,24 @@ def read_manifest(folder: Path) -> CaseManifest:
     goal = f.raw("goal")
     if not isinstance(goal, list) or not goal or not all(isinstance(g, str) for g in goal):
         raise f.error("goal", "must be a non-empty list of literals written as text")
+    skills = _read_skills(f)
+    pose_term, params = _read_pose(f)
+    variants = _read_variants(f)
+    demo = _read_demonstration(f, skills, params, variants)
+    jitters, bounds, value_bounds = _read_randomise(f)
+    f.done()
+    manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
+                            context, tuple(goal), skills, pose_term, params,
+                            variants, demo, jitters, paper_trials, bounds, value_bounds)
+    try:
+        manifest.check_pose(demo.pose, "demonstration.pose")
+    except ValueError as exc:
+        raise WorldFileError(f"{path}: field 'demonstration.pose': {exc}") from None
+    return manifest
+
+
+def _read_skills(f: Fields) -> tuple[SkillBinding, ...]:
+    """Return the ``[[skill]]`` bindings; exactly one takes the pose, one is the action."""
     skills = []
     for sf in f.tables("skill"):
         args = sf.raw("args")
@@ -244,6 +262,11 @@ def read_manifest(folder: Path) -> CaseManifest:
         if len(marked) != 1:
             raise f.error("skill", f"exactly one skill must set {flag} = true, got "
                           f"{len(marked)} ({', '.join(marked) or 'none'})")
+    return tuple(skills)
+
+
+def _read_pose(f: Fields) -> tuple[str, tuple[PoseParam, ...]]:
+    """Return the ``[pose]`` term's functor and its ``[[pose.param]]`` parameters."""
     pf = f.table("pose")
     pose_term = pf.str("term")
     params = []
@@ -256,6 +279,11 @@ def read_manifest(folder: Path) -> CaseManifest:
     if not params:
         raise pf.error("param", "at least one [[pose.param]] is needed")
     pf.done()
+    return pose_term, tuple(params)
+
+
+def _read_variants(f: Fields) -> tuple[Variant, ...]:
+    """Return the ``[[variant]]`` tables: unique names, exactly one ``harder``."""
     variants = []
     for vf in f.tables("variant"):
         values = vf.raw("set", {})
@@ -269,62 +297,79 @@ def read_manifest(folder: Path) -> CaseManifest:
         raise f.error("variant", f"needs at least one [[variant]] with unique names, got {names}")
     if sum(v.harder for v in variants) != 1:
         raise f.error("variant", "exactly one variant must be marked harder = true")
+    return tuple(variants)
+
+
+def _read_demonstration(f: Fields, skills: tuple[SkillBinding, ...],
+                        params: tuple[PoseParam, ...],
+                        variants: tuple[Variant, ...]) -> DemonstrationSpec:
+    """Return the ``[demonstration]``: its steps are the case's skills, its variant one
+    of the case's, its pose one number per pose parameter."""
     df = f.table("demonstration")
     steps = df.raw("steps")
     known = [s.name for s in skills]
     if not isinstance(steps, list) or not all(s in known for s in steps):
         raise df.error("steps", f"must be a list of the case's skills ({', '.join(known)}), "
                        f"got {steps!r}")
-    demo_variant = df.str("variant", choices=tuple(names))
+    demo_variant = df.str("variant", choices=tuple(v.name for v in variants))
     pose_f = df.table("pose")
     pose = tuple(pose_f.float(p.name) for p in params)
     pose_f.done()
     demo = DemonstrationSpec(df.str("tool"), demo_variant, df.int("location", minimum=1),
                              tuple(steps), pose)
     df.done()
+    return demo
+
+
+def _read_randomise(f: Fields) -> tuple[tuple[LocationJitter, ...],
+                                        tuple[tuple[str, float, float], ...],
+                                        tuple[tuple[str, str, float, float], ...]]:
+    """Return the optional ``[randomise]`` table: the location jitters, the catalogue
+    fields' draw bounds and their per-value bounds (all empty without the table)."""
+    if not f.has("randomise"):
+        return (), (), ()
+    rf = f.table("randomise")
+    bounds, value_bounds = _read_catalogue_bounds(rf.table("catalogue", {}))
     jitters = []
+    lf = rf.table("location", {})
+    for key in list(lf.data):
+        jf = lf.table(key)
+        lo, hi = jf.float("min"), jf.float("max")
+        if lo > hi:
+            raise jf.error("max", f"must be >= min ({lo}), got {hi}")
+        jitters.append(LocationJitter(key, jf.float("jitter", minimum=0.0), lo, hi))
+        jf.done()
+    lf.done()
+    rf.done()
+    return tuple(jitters), bounds, value_bounds
+
+
+def _read_catalogue_bounds(cf: Fields) -> tuple[tuple[tuple[str, float, float], ...],
+                                                tuple[tuple[str, str, float, float], ...]]:
+    """Return ``[randomise.catalogue.<field>]``'s bounds per field and per value."""
     bounds: list[tuple[str, float, float]] = []
     value_bounds: list[tuple[str, str, float, float]] = []
-    if f.has("randomise"):
-        rf = f.table("randomise")
-        cf = rf.table("catalogue", {})
-        for key in list(cf.data):
-            bf = cf.table(key)
-            lo = bf.float("min", -math.inf) if bf.has("min") else -math.inf
-            hi = bf.float("max", math.inf) if bf.has("max") else math.inf
-            if lo > hi:
-                raise bf.error("max", f"must be >= min ({lo}), got {hi}")
-            bounds.append((key, lo, hi))
-            for value in [k for k in bf.data if k not in ("min", "max")]:
-                vf = bf.table(value)
-                vlo = vf.float("min", -math.inf) if vf.has("min") else -math.inf
-                vhi = vf.float("max", math.inf) if vf.has("max") else math.inf
-                if vlo > vhi:
-                    raise vf.error("max", f"must be >= min ({vlo}), got {vhi}")
-                value_bounds.append((key, value, vlo, vhi))
-                vf.done()
-            bf.done()
-        cf.done()
-        lf = rf.table("location", {})
-        for key in list(lf.data):
-            jf = lf.table(key)
-            lo, hi = jf.float("min"), jf.float("max")
-            if lo > hi:
-                raise jf.error("max", f"must be >= min ({lo}), got {hi}")
-            jitters.append(LocationJitter(key, jf.float("jitter", minimum=0.0), lo, hi))
-            jf.done()
-        lf.done()
-        rf.done()
-    f.done()
-    manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
-                            context, tuple(goal), tuple(skills), pose_term, tuple(params),
-                            tuple(variants), demo, tuple(jitters), paper_trials,
-                            tuple(bounds), tuple(value_bounds))
-    try:
-        manifest.check_pose(pose, "demonstration.pose")
-    except ValueError as exc:
-        raise WorldFileError(f"{path}: field 'demonstration.pose': {exc}") from None
-    return manifest
+    for key in list(cf.data):
+        bf = cf.table(key)
+        lo, hi = _min_max(bf)
+        bounds.append((key, lo, hi))
+        for value in [k for k in bf.data if k not in ("min", "max")]:
+            vf = bf.table(value)
+            vlo, vhi = _min_max(vf)
+            value_bounds.append((key, value, vlo, vhi))
+            vf.done()
+        bf.done()
+    cf.done()
+    return tuple(bounds), tuple(value_bounds)
+
+
+def _min_max(t: Fields) -> tuple[float, float]:
+    """Return a table's optional ``min`` and ``max`` (unbounded when absent), min <= max."""
+    lo = t.float("min", -math.inf) if t.has("min") else -math.inf
+    hi = t.float("max", math.inf) if t.has("max") else math.inf
+    if lo > hi:
+        raise t.error("max", f"must be >= min ({lo}), got {hi}")
+    return lo, hi
 
 
 _CASES: dict[Path, dict[str, CaseManifest]] = {}
