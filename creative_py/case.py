@@ -372,33 +372,101 @@ def _min_max(t: Fields) -> tuple[float, float]:
     return lo, hi
 
 
-_CASES: dict[Path, dict[str, CaseManifest]] = {}
+@dataclass(frozen=True)
+class CaseIndex:
+    """The case folders under one root, found without reading any manifest whole.
+
+    Attributes
+    ----------
+    folders : dict
+        ``id -> folder`` of every manifest whose ``id`` could be read.
+    broken : dict
+        ``manifest path -> error line`` of every manifest that is not valid TOML or has
+        no readable ``id``, or whose ``id`` another folder declares too. A broken
+        manifest affects only its own case: the others load and run.
+    """
+
+    folders: dict[str, Path]
+    broken: dict[Path, str]
 
 
-def load_cases(root: Path | None = None) -> dict[str, CaseManifest]:
-    """Return ``id -> manifest`` for every ``<root>/*/case.toml`` (default ``worlds/``).
+_INDEX: dict[Path, CaseIndex] = {}
+_MANIFESTS: dict[Path, CaseManifest] = {}
 
-    Two folders declaring the same id are an error naming both.
+
+def case_index(root: Path | None = None) -> CaseIndex:
+    """Return which folder of ``root`` (default ``worlds/``) declares which case id.
+
+    Each ``<root>/*/case.toml`` is parsed only for its ``id``; a folder whose manifest
+    cannot give one, or gives an id another folder declares too, is listed in
+    ``broken`` with the error naming both files.
     """
     root = Path(root) if root is not None else WORLDS_ROOT
-    if root not in _CASES:
-        cases: dict[str, CaseManifest] = {}
+    if root not in _INDEX:
+        folders: dict[str, Path] = {}
+        broken: dict[Path, str] = {}
         for path in sorted(root.glob(f"*/{MANIFEST}")):
-            m = read_manifest(path.parent)
-            if m.id in cases:
-                raise WorldFileError(f"{path}: field 'id': case {m.id!r} is already "
-                                     f"declared by {cases[m.id].folder / MANIFEST}")
-            cases[m.id] = m
-        _CASES[root] = cases
-    return dict(_CASES[root])
+            try:
+                cid = Fields(load_toml(path), path).str("id")
+            except WorldFileError as exc:
+                broken[path] = str(exc)
+                continue
+            if cid in folders:
+                broken[path] = (f"{path}: field 'id': case {cid!r} is already declared by "
+                                f"{folders[cid] / MANIFEST}")
+                continue
+            folders[cid] = path.parent
+        _INDEX[root] = CaseIndex(folders, broken)
+    return _INDEX[root]
+
+
+def load_cases(root: Path | None = None, *, strict: bool = True) -> dict[str, CaseManifest]:
+    """Return ``id -> manifest`` for every ``<root>/*/case.toml`` (default ``worlds/``).
+
+    With ``strict`` (the default) the first broken manifest raises WorldFileError naming
+    its file and field; otherwise broken manifests are left out (:func:`broken_cases`
+    lists them).
+    """
+    index = case_index(root)
+    if strict and index.broken:
+        raise WorldFileError(next(iter(index.broken.values())))
+    cases: dict[str, CaseManifest] = {}
+    for cid in index.folders:
+        try:
+            cases[cid] = get_case(cid, root)
+        except WorldFileError:
+            if strict:
+                raise
+    return cases
+
+
+def broken_cases(root: Path | None = None) -> dict[Path, str]:
+    """Return ``manifest path -> error line`` of every case folder that does not load."""
+    index = case_index(root)
+    out = dict(index.broken)
+    for cid, folder in index.folders.items():
+        try:
+            get_case(cid, root)
+        except WorldFileError as exc:
+            out[folder / MANIFEST] = str(exc)
+    return out
 
 
 def get_case(case: str, root: Path | None = None) -> CaseManifest:
-    """Return the manifest of case ``case``; raise KeyError listing the known cases."""
-    cases = load_cases(root)
-    if case not in cases:
-        raise KeyError(f"unknown case {case!r}; known cases: {', '.join(sorted(cases))}")
-    return cases[case]
+    """Return the manifest of case ``case``, reading only its own folder.
+
+    Raises KeyError listing the known cases (and the folders that do not load) when no
+    folder declares ``case``, and WorldFileError when its own manifest is broken.
+    """
+    index = case_index(root)
+    folder = index.folders.get(case)
+    if folder is None:
+        known = ", ".join(sorted(index.folders))
+        broken = "".join(f"; {p} does not load" for p in index.broken)
+        raise KeyError(f"unknown case {case!r}; known cases: {known}{broken}")
+    if folder not in _MANIFESTS:
+        _MANIFESTS[folder] = read_manifest(folder)
+    return _MANIFESTS[folder]
 
 
 def manifest_of_folder(folder: Path) -> CaseManifest:

@@ -91,16 +91,19 @@ def _need_display() -> None:
 
 @app.command()
 def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as JSON.")) -> None:
-    """List the cases: id, world folder, variants (the harder one marked) and trial budget."""
-    from creative_py.case import load_cases
-    from creative_py.world import WorldFileError
+    """List the cases: id, world folder, variants (the harder one marked) and trial budget.
 
-    try:
-        found = load_cases()
-    except WorldFileError as exc:
-        _fail(str(exc))
+    A case folder whose manifest does not load is listed as broken with its error line;
+    the other cases still load and run.
+    """
+    from creative_py.case import broken_cases, load_cases
+
+    found = load_cases(strict=False)
+    broken = broken_cases()
     listing = [m.listing() for m in found.values()]
     if as_json:
+        listing += [{"id": None, "manifest": str(path), "broken": error}
+                    for path, error in broken.items()]
         typer.echo(json.dumps(listing, indent=2))
         return
     for c in listing:
@@ -108,6 +111,8 @@ def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as
                              for v in c["variants"])
         typer.echo(f"{c['id']:<8} {c['title']}\n         world {c['world']}; variants "
                    f"{variants}; trial budget {c['trial_budget']}")
+    for error in broken.values():
+        typer.echo(f"broken   {error}")
 
 
 def _manifest(case: str, world: Optional[Path]):
