@@ -265,6 +265,13 @@ def sweep(
             _fail(f"{option} must be at least {least}, got {value}")
     if out.exists() and not out.is_dir():
         _fail(f"--out {out}: not a folder")
+    if address is not None and not serial:
+        from creative_py.sweep import check_ray_address
+
+        try:
+            check_ray_address(address)
+        except ValueError as exc:
+            _fail(str(exc))
     from creative_py.learning.clips import VIDEO_MODES
 
     if video not in VIDEO_MODES:

@@ -197,6 +197,32 @@ class SweepResult:
     wall_time_s: float = 0.0
 
 
+RAY_CONNECT_TIMEOUT_S = 5.0
+"""How long ``--address`` may take to accept a connection before the sweep is refused."""
+
+
+def check_ray_address(address: str, timeout_s: float = RAY_CONNECT_TIMEOUT_S) -> None:
+    """Raise ValueError unless something accepts a connection at ``address`` in time.
+
+    ``address`` is Ray's ``host:port`` or ``ray://host:port``; ``auto`` (a cluster on
+    this machine, which Ray finds itself) is not probed. Without the probe,
+    ``ray.init`` waits for an address where nothing listens without end.
+    """
+    import socket
+
+    if address == "auto":
+        return
+    host, sep, port = address.split("://", 1)[-1].rpartition(":")
+    if not sep or not host or not port.isdigit() or not 0 < int(port) < 65536:
+        raise ValueError(f"--address must be host:port or ray://host:port, got {address!r}")
+    try:
+        socket.create_connection((host, int(port)), timeout=timeout_s).close()
+    except OSError as exc:
+        why = "timed out" if isinstance(exc, TimeoutError) else (exc.strerror or str(exc))
+        raise ValueError(f"--address {address}: no Ray cluster answers there "
+                         f"({why} within {timeout_s:g} s)") from None
+
+
 def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepOptions(),
               address: Optional[str] = None, num_cpus: Optional[int] = None,
               serial: bool = False, progress: Optional[Callable[[str], None]] = None,
