@@ -217,15 +217,15 @@ pose_target(rake, rake_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
 %   The handle reaches behind a box at the shelf's back with the gripper in front of
 %   it; the prong, rolled down, passes under the plate beside the handle; a flat prong
 %   carried over the box leaves it room.
-size_constraint(hook, shelf_depth_m(_, D), [handle_length >= D + shelf_reach_margin_m]).
-size_constraint(stick, shelf_depth_m(_, D), [handle_length >= D + shelf_reach_margin_m]).
+size_constraint(hook, shelf_depth_m(_, D), [handle_length >= D + reach_margin_m]).
+size_constraint(stick, shelf_depth_m(_, D), [handle_length >= D + reach_margin_m]).
 size_constraint(hook, shelf_clearance_m(_, _, H),
                 [hook_length + handle_width =< H - shelf_prong_margin_m,
                  handle_width =< H - shelf_flat_margin_m]).
 size_constraint(stick, shelf_clearance_m(_, _, H),
                 [handle_width =< H - shelf_flat_margin_m]).
 
-size_parameter(shelf_reach_margin_m, 0.05,
+size_parameter(reach_margin_m, 0.05,
                'handle length beyond the shelf depth: the gripper stays in front of it').
 size_parameter(shelf_prong_margin_m, 0.006,
                'room under the plate beside a rolled-down prong and the handle').

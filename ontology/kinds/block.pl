@@ -12,6 +12,10 @@
             └── cylinder              upright; length = width = diameter
 */
 
+%   This file is the kind block: its clauses load into their own module (kind_block),
+%   seen by the cases whose case_tool_class/2 names it.
+kind(block).
+
 % The hierarchy (object is its root: object(O) marks O as a catalogued object).
 subclass_of(block, object).
 subclass_of(triangular_prism, block).

@@ -13,6 +13,10 @@
             └── stick                 handle only
 */
 
+%   This file is the kind hook_like: its clauses load into their own module (kind_hook_like),
+%   seen by the cases whose case_tool_class/2 names it.
+kind(hook_like).
+
 % The hierarchy: subclass_of(?Class, ?Superclass).  A class without a superclass
 % (tool) is a hierarchy's root: tool(O) marks O as a catalogued object.
 subclass_of(hook_like, tool).
