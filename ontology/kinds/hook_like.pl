@@ -119,7 +119,7 @@ side_value(left).
 side_value(right).
 
 %   new_tool_kind(?Class, +Structural, -Kind): a new tool with the structural literals
-%   Structural is sized (geometry_clp:solve_size/4) as a Kind: a stick when they say
+%   Structural is sized (geometry_clp:solve_size/5) as a Kind: a stick when they say
 %   so, else a hook.
 new_tool_kind(hook_like, Structural, Kind) :-
     (   memberchk(stick(_), Structural)
