@@ -20,7 +20,7 @@ abstract state is the list of qualitative literals that hold in it:
 
 Everything about a case comes from its ontology file (ontology/cases/<case>.pl) through
 these hook predicates (case.pl says how a missing one is reported).  "Proved on the
-state" means proved by knowledge:kb_prove/2 with the primitive facts of the state:
+state" means proved by case:case_prove/2 with the primitive facts of the state:
 
   - case_tool_class(?Case, ?Class): the case's tools belong to the hierarchy Class
     (hook_like, block); its structural literals are those of

@@ -2,8 +2,10 @@
     tool.  Everything the engine knows about this case is here; the engine asks for it
     through the hook predicates of ontology/README.md ("Hook predicates").
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
-    Rules marked "proved on the state" are proved by knowledge:kb_prove/2: their
+    Plain Prolog data loaded by knowledge:load_ontology/1 into this case's own module
+    (case/1 below names it), which sees its tool kind's module and the shared files:
+    a helper predicate here is this case's alone.  Rules marked "proved on the state"
+    are proved by case:case_prove/2: their
     primitive facts (pose/5, tube_mouth/4, ...) come from the state the engine hands
     over, never from the database.
 

@@ -1,7 +1,7 @@
 /*  The rake case: pull a box lying under a low shelf, out of the arm's reach, back
     towards the robot with a hook-like tool.  Everything the engine knows about this
-    case is here; the engine asks for it through the hook predicates of
-    ontology/README.md.  Rules marked "proved on the state" take their primitive facts
+    case is here, in its own module (case_rake: its helpers are its alone); the engine
+    asks for it through the hook predicates of ontology/README.md.  Rules marked "proved on the state" take their primitive facts
     (pose/5, shelf_front/4, ...) from the state the engine hands over.
 
     The apparatus: a shelf (shelf1) whose clear plate stands on four corner legs above

@@ -2,8 +2,9 @@
     catalogue (numbers in metres and degrees) into qualitative structural literals, and
     the size models of a new hook or stick.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.  A
-    case whose tools are hook-like says so with case_tool_class(Case, hook_like) and
+    Plain Prolog data loaded by knowledge:load_ontology/1 into its own module
+    (kind_hook_like, named by the kind/1 fact below).  A case
+    whose tools are hook-like says so with case_tool_class(Case, hook_like) and
     gets everything below.
 
         tool
