@@ -265,7 +265,9 @@ pose_target(hook, hook_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
 
 %   The tube bounds a new hook-like tool (ontology/kinds/hook_like.pl has the rest).
 %   The handle reaches behind a cube at the tube's far end with the gripper outside;
-%   the tool turns inside the tube.
+%   the tool turns inside the tube.  Keyed by the size kind (hook, stick), these facts
+%   are still the hook case's own: they live in its module, so they size the tools of
+%   this case only (the rake has its own reach_margin_m).
 size_constraint(hook, tube_length_m(_, L), [handle_length >= L + reach_margin_m]).
 size_constraint(stick, tube_length_m(_, L), [handle_length >= L + reach_margin_m]).
 size_constraint(hook, tube_inner_m(_, W, H),
