@@ -1,6 +1,6 @@
 /*  Qualitative ranges: the metres (or degrees, or ratios) behind each qualitative value.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
+    Plain Prolog data loaded into the shared module kb by knowledge:load_ontology/1.
 
     qualitative_range(?Property, ?Value, ?Low, ?High, ?Bounds)
         Property takes the qualitative Value for a number X in the interval Low..High.

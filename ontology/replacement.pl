@@ -1,7 +1,7 @@
 /*  Marvin-style replacement operators (paper, Section 4.1): each operator generalises
     one structural property; its clauses list the property's values.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
+    Plain Prolog data loaded into the shared module kb by knowledge:load_ontology/1.
     replacement:replacement/3 reads these clauses in the order written here, so the
     order is the order in which alternative values are tried: any_length/1 is the
     paper's own (medium, long, short: a medium handle is replaced by a long one first,

@@ -1,6 +1,6 @@
 /*  The robot's own innate skills, the same in every case.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
+    Plain Prolog data loaded into the shared module kb by knowledge:load_ontology/1.
 
     innate_skill(?Case, ?Name, ?Model): Model is the STRIPS model of the innate skill
     Name in Case, an action_model(Name, Params, Pre, Add, Del) term (prolog/action_model.pl

@@ -1,7 +1,7 @@
 /*  The world frame: the primitive facts every case's perception supplies, and the
     angle arithmetic the cases' pose rules share.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
+    Plain Prolog data loaded into the shared module kb by knowledge:load_ontology/1.
     Primitive facts are in world coordinates (metres, radians); a case declares its own
     apparatus's facts (a tube's mouth, a door's hinge) in its file under ontology/cases/.
 */

@@ -20,7 +20,7 @@ abstract state is the list of qualitative literals that hold in it:
 
 Everything about a case comes from its ontology file (ontology/cases/<case>.pl) through
 these hook predicates (case.pl says how a missing one is reported).  "Proved on the
-state" means proved by knowledge:kb_prove/2 with the primitive facts of the state:
+state" means proved by case:case_prove/2 with the primitive facts of the state:
 
   - case_tool_class(?Case, ?Class): the case's tools belong to the hierarchy Class
     (hook_like, block); its structural literals are those of
@@ -43,7 +43,6 @@ The facts are never asserted: they travel in the argument.
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
-:- use_module(knowledge).
 :- use_module(case).
 :- use_module(geometry_clp).
 
@@ -78,14 +77,14 @@ abstract_state(Case, Facts, Abstract) :-
 
 structural_literal_(Case, Facts, Literal) :-
     case_holds(case_tool_class(Case, Class)),
-    kb_clause(structural_predicate(Class, N/A), true),
+    class_holds(structural_predicate(Class, N/A)),
     functor(Literal, N, A),
-    kb_prove(Literal, Facts).
+    case_prove(Case, Literal, Facts).
 
 task_literal_(Case, Facts, Literal) :-
     case_holds(task_predicate(Case, N/A)),
     functor(Literal, N, A),
-    kb_prove(Literal, Facts).
+    case_prove(Case, Literal, Facts).
 
 spatial_literal_(Case, Facts, Literal) :-
     case_roles(Case, Target, Context),
@@ -108,7 +107,7 @@ relative_pose_(Case, Tool, Target, Facts, Geometry, Pose) :-
             [Pose]).
 
 spatial_templates_(Case, Templates) :-
-    findall(T, kb_clause(spatial_definition(Case, T, _, _), true), Ts),
+    findall(T, case_holds(spatial_definition(Case, T, _, _)), Ts),
     list_to_set(Ts, Templates).
 
 role_literal_(Template, Tool, Target, Context, Literal) :-

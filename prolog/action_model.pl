@@ -73,7 +73,6 @@ object/1) names it.
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
 :- use_module(library(error)).
-:- use_module(knowledge, [kb_clause/2]).
 :- use_module(case).
 
 %!  innate_action_models(+Case, -Models) is det.
@@ -225,14 +224,14 @@ robot_predicate_(holding/1).
 robot_predicate_(on_table/1).
 
 structural_predicate_(PI) :-
-    once(kb_clause(structural_predicate(_, PI), true)).
+    once(ontology_holds(structural_predicate(_, PI))).
 
 catalogue_predicate_(PI) :-
-    once(kb_clause(catalogue_predicate(_, PI), true)).
+    once(ontology_holds(catalogue_predicate(_, PI))).
 
 spatial_predicate_(N/A) :-
     functor(Template, N, A),
-    once(kb_clause(spatial_definition(_, Template, _, _), true)).
+    once(ontology_holds(spatial_definition(_, Template, _, _))).
 
 %!  catalogued_object(+Literal, -Object) is semidet.
 %
@@ -247,8 +246,8 @@ spatial_predicate_(N/A) :-
 catalogued_object(Literal, Object) :-
     compound(Literal),
     compound_name_arguments(Literal, Class, [Object]),
-    once(kb_clause(subclass_of(_, Class), true)),
-    \+ kb_clause(subclass_of(Class, _), true).
+    once(ontology_holds(subclass_of(_, Class))),
+    \+ ontology_holds(subclass_of(Class, _)).
 
 %!  case_tool_objects(+Case, +Literals, -Tools) is det.
 %

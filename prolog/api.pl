@@ -42,7 +42,7 @@ if it needs a new module, its use_module/1 below.
 :- use_module(subsumption,
               [ theta_subsumes/2, theta_subsumes/3, clause_reduce/2, clause_reduce/3,
                 clause_covers/2, clause_violations/3, clause_violations/4 ]).
-:- use_module(geometry_clp, [solve_pose/5, solve_size/4, pose_reachable/5]).
+:- use_module(geometry_clp, [solve_pose/5, solve_size/5, pose_reachable/5]).
 :- use_module(rlgg, [rlgg/4, rlgg/5, saturate/4]).
 :- use_module(nbr, [nbr_reduce/3]).
 :- use_module(version_space,
@@ -123,7 +123,8 @@ api_op(catalogue_ranges(Case, Facts), Ranges, catalogue_ranges(Case, Facts, Rang
 % Geometry: spatial literals -> pose numbers, structural literals -> dimensions.
 api_op(solve_pose(Case, Required, Negated, Context), R,
        solve_pose(Case, Required, Negated, Context, R)).
-api_op(solve_size(Kind, Literals, Context), R, solve_size(Kind, Literals, Context, R)).
+api_op(solve_size(Case, Kind, Literals, Context), R,
+       solve_size(Case, Kind, Literals, Context, R)).
 api_op(pose_reachable(Case, Tool, Required, Context), R,
        pose_reachable(Case, Tool, Required, Context, R)).
 % Tool-use learning (Algorithm 1) and tool creation (Algorithm 2).

@@ -4,7 +4,12 @@
             case_answer/1,            % +Hook
             case_holds/1,             % +Hook
             case_prove/2,             % +Hook, +Facts
+            case_prove/3,             % +Case, +Goal, +Facts
+            case_knowledge/2,         % +Case, ?Goal
+            case_has_hook/2,          % +Case, +Name/Arity
             class_answer/1,           % +Hook
+            class_holds/1,            % +Hook
+            ontology_holds/1,         % ?Goal
             case_info/2,              % +Case, -Info
             tool_vocabulary/2,        % +Case, -Classes
             size_context_facts/1,     % -Indicators
@@ -17,33 +22,47 @@
 
 A tool-use case (the hook and tube, the wedge and door, ...) is data: one file
 ontology/cases/<case>.pl that answers the engine's *hook predicates*, plain predicates
-of the knowledge base (module `kb`, knowledge.pl) whose first argument is the case, as
-SWI-Prolog's libraries call the `multifile` hooks their clients define.  The engine
-modules never name a case, a tool class or a scene object: each asks the ontology
-through this module, and each documents the hooks it calls (ontology/README.md has the
+whose first argument is the case, as SWI-Prolog's libraries call the `multifile` hooks
+their clients define.  Each case file loads into its own module (`case_<case>`,
+knowledge.pl), which sees its tool kind's module (`kind_<kind>`, ontology/kinds/) and
+the shared knowledge (`kb`); so two cases may define the same helper predicate, and a
+case's rules constrain only its own tools.  The engine modules never name a case, a
+tool class or a scene object: each asks the ontology through this module, naming the
+case (or the class), and each documents the hooks it calls (ontology/README.md has the
 table).  Tool classes answer the hooks whose first argument is a class
-(ontology/kinds/<class>.pl).
+(ontology/kinds/<kind>.pl).
 
-A hook that a case (class) does not answer at all, no clause of the predicate having
-that case (class) as its first argument, raises
+A case's *namespace* is its module, its kind's module and `kb`, in this order
+(knowledge:kb_module_scope/2).  A hook's answers are those of every module of the
+namespace that defines the hook predicate, in this order (a clause with an unbound
+case, the robot's own pick_up/1 skill in the shared skills.pl, answers for every case).
+A hook that a case (class) does not answer at all, no clause of the predicate in its
+namespace having that case (class) or a variable as its first argument, raises
 
     error(existence_error(case_hook(Case), Name/Arity), _)
     error(existence_error(class_hook(Class), Name/Arity), _)
 
-never a silent failure; an undeclared case raises existence_error(case, Case).  A hook
-clause whose first argument is a variable (the robot's own pick_up/1 skill) answers
-for every case.
+never a silent failure; an undeclared case raises existence_error(case, Case).
+case_prove/3 proves any goal of the case's namespace (a task or structural literal)
+and raises existence_error(case_hook(Case), Name/Arity) when no module of it defines
+the predicate; case_knowledge/2 reads optional knowledge of the namespace (a size
+model's facts) and fails when there is none.  ontology_holds/1 is the one read across
+every module, for the questions that name no case (is this a spatial literal of some
+case?).
 
 The hooks read here:
 
   - case(?Case): Case is a tool-use case (one fact per case file).
+  - kind(?Kind): Kind is a tool kind (one fact per kind file).
   - task_roles(?Case, ?Target, ?Context): the object a tool acts on and the object or
     place the action happens in, e.g. task_roles(hook, cube1, tube1).
 */
 
 :- use_module(library(error)).
 :- use_module(library(lists)).
-:- use_module(knowledge, [kb_clause/2, kb_holds/1, kb_prove/2]).
+:- use_module(knowledge, [kb_case_module/2, kb_kind_module/2, kb_modules/1,
+                          kb_module_scope/2, kb_module_defines/2, kb_module_holds/2,
+                          kb_module_clause/3, kb_module_prove/3]).
 
 %!  must_be_case(+Case) is det.
 %
@@ -60,10 +79,30 @@ The hooks read here:
 %   ==
 must_be_case(Case) :-
     must_be(atom, Case),
-    (   kb_clause(case(Case), true)
+    (   kb_case_module(Case, _)
     ->  true
     ;   existence_error(case, Case)
     ).
+
+%   case_scope_(+Case, -Scope): the modules of the case's namespace, its own first.
+case_scope_(Case, Scope) :-
+    kb_case_module(Case, M),
+    !,
+    kb_module_scope(M, Scope).
+
+%   class_scope_(+Class, -Scope): the modules of the kind that declares Class (kind/1)
+%   or names it in its hierarchy (subclass_of/2), then kb; fails for an unknown class.
+class_scope_(Class, Scope) :-
+    (   kb_kind_module(Class, M)
+    ->  true
+    ;   kb_kind_module(_, M),
+        kb_module_defines(M, subclass_of/2),
+        (   M:subclass_of(Class, _)
+        ;   M:subclass_of(_, Class)
+        )
+    ->  true
+    ),
+    kb_module_scope(M, Scope).
 
 %!  case_roles(+Case, -Target, -Context) is det.
 %
@@ -79,8 +118,8 @@ case_roles(Case, Target, Context) :-
 
 %!  case_answer(+Hook) is semidet.
 %
-%   The first answer of the hook goal Hook, whose first argument is a declared case.
-%   Fails if the case's clauses have no answer.
+%   The first answer of the hook goal Hook, whose first argument is a declared case, in
+%   the case's namespace.  Fails if the case's clauses have no answer.
 %
 %   @error existence_error(case_hook(Case), Name/Arity) if no clause of Hook's
 %          predicate is about Case.
@@ -90,23 +129,24 @@ case_roles(Case, Target, Context) :-
 %   G = [out_of_tube(cube1, tube1)].
 %   ==
 case_answer(Hook) :-
-    must_have_hook_(case, Hook),
-    once(kb_holds(Hook)).
+    once(case_holds(Hook)).
 
 %!  case_holds(+Hook) is nondet.
 %
-%   Every answer of the hook goal Hook (first argument: a declared case), in clause
-%   order.
+%   Every answer of the hook goal Hook (first argument: a declared case) in the case's
+%   namespace, module by module, in clause order.
 %
 %   @error existence_error(case_hook(Case), Name/Arity) as case_answer/1.
 case_holds(Hook) :-
-    must_have_hook_(case, Hook),
-    kb_holds(Hook).
+    hook_scope_(case, Hook, Scope),
+    member(M, Scope),
+    kb_module_holds(M, Hook).
 
 %!  case_prove(+Hook, +Facts:list) is nondet.
 %
-%   Prove the hook goal Hook (first argument: a declared case) with kb_prove/2: the
-%   primitive facts its rules use come from Facts, the state at hand.
+%   Prove the hook goal Hook (first argument: a declared case) in the case's namespace
+%   with knowledge:kb_module_prove/3: the primitive facts its rules use come from
+%   Facts, the state at hand.
 %
 %   @error existence_error(case_hook(Case), Name/Arity) as case_answer/1.
 %
@@ -117,13 +157,73 @@ case_holds(Hook) :-
 %   T = h.
 %   ==
 case_prove(Hook, Facts) :-
-    must_have_hook_(case, Hook),
-    kb_prove(Hook, Facts).
+    hook_scope_(case, Hook, Scope),
+    functor(Hook, N, A),
+    member(M, Scope),
+    kb_module_defines(M, N/A),
+    kb_module_prove(M, Hook, Facts).
+
+%!  case_prove(+Case, +Goal, +Facts:list) is nondet.
+%
+%   Prove Goal, a predicate of the namespace of Case (a task literal of its file, a
+%   structural literal of its kind), in the case's module: its rules see the case's
+%   own predicates, its kind's and the shared ones, and take their primitive facts
+%   from Facts.
+%
+%   @error existence_error(case_hook(Case), Name/Arity) if no module of the case's
+%          namespace defines Goal's predicate.
+%
+%   ==
+%   ?- case_prove(hook, handle_length(h, V), [object_kind(h, hook), handle_length_m(h, 0.5)]).
+%   V = long.
+%   ==
+case_prove(Case, Goal, Facts) :-
+    must_be_case(Case),
+    must_be(callable, Goal),
+    case_scope_(Case, [M|Scope]),
+    functor(Goal, N, A),
+    (   member(D, [M|Scope]),
+        kb_module_defines(D, N/A)
+    ->  kb_module_prove(M, Goal, Facts)
+    ;   existence_error(case_hook(Case), N/A)
+    ).
+
+%!  case_knowledge(+Case, ?Goal) is nondet.
+%
+%   Goal holds in a module of the namespace of Case (its own, its kind's, the shared
+%   one), module by module: the optional knowledge a case may or may not have (a size
+%   model's facts, a qualitative range).  Fails when no module defines Goal's
+%   predicate.
+%
+%   ==
+%   ?- case_knowledge(wedge, size_field(block, F, P)).
+%   F = length, P = block_length .
+%   ==
+case_knowledge(Case, Goal) :-
+    must_be_case(Case),
+    must_be(callable, Goal),
+    case_scope_(Case, Scope),
+    member(M, Scope),
+    kb_module_holds(M, Goal).
+
+%!  case_has_hook(+Case, +Name/Arity) is semidet.
+%
+%   Some clause of Name/Arity in the case's namespace has Case, or a variable, as its
+%   first argument: the case answers the hook (optional hooks such as geometry_value/6
+%   are asked only then).
+case_has_hook(Case, Name/Arity) :-
+    must_be_case(Case),
+    functor(Template, Name, Arity),
+    arg(1, Template, Case),
+    case_scope_(Case, Scope),
+    member(M, Scope),
+    kb_module_clause(M, Template, _),
+    !.
 
 %!  class_answer(+Hook) is semidet.
 %
 %   The first answer of the hook goal Hook whose first argument is a tool class
-%   (ontology/kinds/).
+%   (ontology/kinds/), in its kind's module, then the shared one.
 %
 %   @error existence_error(class_hook(Class), Name/Arity) if no clause of Hook's
 %          predicate is about Class.
@@ -133,22 +233,55 @@ case_prove(Hook, Facts) :-
 %   K = stick.
 %   ==
 class_answer(Hook) :-
-    must_have_hook_(class, Hook),
-    once(kb_holds(Hook)).
+    once(class_holds(Hook)).
 
-%   must_have_hook_(+Type, +Hook): some clause of Hook's predicate has Hook's first
-%   argument (or a variable) as its own first argument.
-must_have_hook_(Type, Hook) :-
+%!  class_holds(+Hook) is nondet.
+%
+%   Every answer of the class hook goal Hook, as class_answer/1.
+%
+%   @error existence_error(class_hook(Class), Name/Arity) as class_answer/1.
+class_holds(Hook) :-
+    hook_scope_(class, Hook, Scope),
+    member(M, Scope),
+    kb_module_holds(M, Hook).
+
+%!  ontology_holds(?Goal) is nondet.
+%
+%   Goal holds in some module of the loaded ontology (kb, then the case and kind
+%   modules in load order): the one read across every case, for questions that name
+%   no case (is N/A a spatial literal of some case, a structural predicate of some
+%   kind?).
+%
+%   ==
+%   ?- ontology_holds(case(C)).
+%   C = hook ; C = rake ; C = wedge.
+%   ==
+ontology_holds(Goal) :-
+    must_be(callable, Goal),
+    kb_modules(Modules),
+    member(M, Modules),
+    kb_module_holds(M, Goal).
+
+%   hook_scope_(+Type, +Hook, -Scope): the namespace of Hook's case (class), after
+%   checking that some clause of Hook's predicate there has Hook's first argument (or
+%   a variable) as its own first argument.
+hook_scope_(Type, Hook, Scope) :-
     must_be(compound, Hook),
     compound_name_arity(Hook, Name, Arity),
     arg(1, Hook, Key),
     (   Type == case
-    ->  must_be_case(Key)
-    ;   must_be(atom, Key)
+    ->  must_be_case(Key),
+        case_scope_(Key, Scope)
+    ;   must_be(atom, Key),
+        (   class_scope_(Key, Scope0)
+        ->  Scope = Scope0
+        ;   Scope = []
+        )
     ),
     functor(Template, Name, Arity),
     arg(1, Template, Key),
-    (   kb_clause(Template, _)
+    (   member(M, Scope),
+        kb_module_clause(M, Template, _)
     ->  true
     ;   hook_error_type_(Type, Key, ErrorType),
         existence_error(ErrorType, Name/Arity)
@@ -194,39 +327,39 @@ case_info(Case, case(Skills, Goal, Target, Context, PoseTerm)) :-
 tool_vocabulary(Case, Classes) :-
     must_be_case(Case),
     case_answer(case_tool_class(Case, Root)),
-    findall(C, class_below_(Root, C), Below),
+    findall(C, class_below_(Case, Root, C), Below),
     findall(class(C, Ancestors, Properties),
             ( member(C, [Root|Below]),
-              class_ancestors_(C, Ancestors),
-              class_properties_(C, Ancestors, Properties) ),
+              class_ancestors_(Case, C, Ancestors),
+              class_properties_(Case, C, Ancestors, Properties) ),
             Classes).
 
-class_below_(Root, C) :-
-    kb_holds(subclass_of(C1, Root)),
+class_below_(Case, Root, C) :-
+    case_knowledge(Case, subclass_of(C1, Root)),
     (   C = C1
-    ;   class_below_(C1, C)
+    ;   class_below_(Case, C1, C)
     ).
 
-class_ancestors_(C, Ancestors) :-
-    (   kb_holds(subclass_of(C, Parent))
-    ->  class_ancestors_(Parent, Above),
+class_ancestors_(Case, C, Ancestors) :-
+    (   case_knowledge(Case, subclass_of(C, Parent))
+    ->  class_ancestors_(Case, Parent, Above),
         append(Above, [Parent], Ancestors)
     ;   Ancestors = []
     ).
 
-class_properties_(C, Ancestors, Properties) :-
+class_properties_(Case, C, Ancestors, Properties) :-
     append(Ancestors, [C], Chain),
     findall(P-Values,
             ( member(K, Chain),
-              kb_holds(class_property(K, P)),
-              property_values_(P, Values) ),
+              case_knowledge(Case, class_property(K, P)),
+              property_values_(Case, P, Values) ),
             Properties).
 
-property_values_(P, Values) :-
-    findall(V, kb_holds(qualitative_range(P, V, _, _, _)), Vs0),
+property_values_(Case, P, Values) :-
+    findall(V, case_knowledge(Case, qualitative_range(P, V, _, _, _)), Vs0),
     (   Vs0 \== []
     ->  Values = Vs0
-    ;   once(kb_holds(size_choice(_, _, P, Values)))
+    ;   once(case_knowledge(Case, size_choice(_, _, P, Values)))
     ->  true
     ;   Values = []
     ).
@@ -244,8 +377,9 @@ property_values_(P, Values) :-
 %   true.
 %   ==
 size_context_facts(Indicators) :-
-    findall(N/A, ( kb_holds(size_constraint(_, Fact, _)), functor(Fact, N, A) ), Is0),
-    findall(N/1, kb_holds(size_parameter(N, _, _)), Is1),
+    findall(N/A, ( ontology_holds(size_constraint(_, Fact, _)), functor(Fact, N, A) ),
+            Is0),
+    findall(N/1, ontology_holds(size_parameter(N, _, _)), Is1),
     append(Is0, Is1, Is),
     list_to_set(Is, Indicators).
 
@@ -264,7 +398,7 @@ size_context_facts(Indicators) :-
 catalogue_predicates(Case, Indicators) :-
     must_be_case(Case),
     case_answer(case_tool_class(Case, Class)),
-    findall(PI, kb_holds(catalogue_predicate(Class, PI)), Indicators).
+    findall(PI, case_knowledge(Case, catalogue_predicate(Class, PI)), Indicators).
 
 %!  catalogue_ranges(+Case, +Facts:list, -Ranges:list) is det.
 %
@@ -290,23 +424,23 @@ catalogue_ranges(Case, Facts, Ranges) :-
               compound(Fact),
               Fact =.. [F, Obj, X],
               number(X),
-              kb_holds(catalogue_predicate(Class, F/2)),
-              fact_property_(F, P),
-              kb_clause(qualitative_range(P, V, Lo, Hi, B), true),
+              case_knowledge(Case, catalogue_predicate(Class, F/2)),
+              fact_property_(Case, F, P),
+              case_knowledge(Case, qualitative_range(P, V, Lo, Hi, B)),
               in_range_(B, X, Lo, Hi) ),
             Ranges0),
     list_to_set(Ranges0, Ranges).
 
-%   fact_property_(+Fact, -Property): a structural rule reads Fact's number into
-%   Property's qualitative value.
-fact_property_(F, P) :-
-    findall(P0,
-            ( kb_clause(qualitative_range(P0, _, _, _, _), true) ),
-            Ps0),
+%   fact_property_(+Case, +Fact, -Property): a structural rule of the case's namespace
+%   reads Fact's number into Property's qualitative value.
+fact_property_(Case, F, P) :-
+    findall(P0, case_knowledge(Case, qualitative_range(P0, _, _, _, _)), Ps0),
     list_to_set(Ps0, Ps),
     member(P, Ps),
     functor(Head, P, 2),
-    kb_clause(Head, Body),
+    case_scope_(Case, Scope),
+    member(M, Scope),
+    kb_module_clause(M, Head, Body),
     body_goal_(Body, G),
     G =.. [F, _, X],
     body_goal_(Body, qualitative_value(P1, Y, _)),
@@ -342,7 +476,9 @@ case_missing_hooks(Case, Missing) :-
             ( required_hook_(Name/Arity),
               functor(Template, Name, Arity),
               arg(1, Template, Case),
-              \+ kb_clause(Template, _) ),
+              \+ ( case_scope_(Case, Scope),
+                   member(M, Scope),
+                   kb_module_clause(M, Template, _) ) ),
             Missing).
 
 required_hook_(task_roles/3).

@@ -11,7 +11,7 @@ literal is generalised with a replacement operator of the ontology
 (replacement:replacement/3, e.g. handle_length(T, medium) -> any_length(T)) and the new
 tool is an instance that does *not* satisfy the replaced literal
 (handle_length(T, long)). Its structural literals are then sized by CLP(R)
-(geometry_clp:solve_size/4) within the task's geometry.
+(geometry_clp:solve_size/5) within the task's geometry.
 
 Order of the candidates (creation_candidates/3):
 
@@ -35,7 +35,7 @@ hook predicates (case.pl says how a missing one is reported):
 
   - case_tool_class(?Case, ?Class): the hierarchy of the case's tools (hook_like,
     block).
-  - new_tool_kind(?Class, +Structural, -Kind): the size kind (geometry_clp:solve_size/4)
+  - new_tool_kind(?Class, +Structural, -Kind): the size kind (geometry_clp:solve_size/5)
     of a new tool with the structural literals Structural (hook_like: stick when
     stick(T) is among them, else hook).
 */
@@ -49,7 +49,7 @@ hook predicates (case.pl says how a missing one is reported):
 :- use_module(replacement).
 :- use_module(geometry_clp).
 :- use_module(experiment).
-:- use_module(knowledge, [kb_clause/2]).
+:- use_module(knowledge, [shared_clause/2]).
 :- use_module(case).
 
 %!  creation_candidates(+VS, +Options, -Candidates) is det.
@@ -94,7 +94,7 @@ creation_candidates(VS, Options, Candidates) :-
 kind_literals_(Alt, Struct0, Struct) :-
     (   compound(Alt),
         compound_name_arity(Alt, Class, 1),
-        kb_clause(subclass_of(Class, _), true)
+        ontology_holds(subclass_of(Class, _))
     ->  exclude(foreign_property_(Class), Struct0, Struct)
     ;   Struct = Struct0
     ).
@@ -103,14 +103,14 @@ kind_literals_(Alt, Struct0, Struct) :-
 foreign_property_(Class, L) :-
     compound(L),
     compound_name_arity(L, P, 2),
-    kb_clause(class_property(Owner, P), true),
+    ontology_holds(class_property(Owner, P)),
     \+ is_a_(Class, Owner),
     !.
 
 %   is_a_(+Class, +Super): Class is Super or below it.
 is_a_(C, C) :- !.
 is_a_(C, Super) :-
-    kb_clause(subclass_of(C, C1), true),
+    ontology_holds(subclass_of(C, C1)),
     is_a_(C1, Super),
     !.
 
@@ -118,7 +118,7 @@ is_a_(C, Super) :-
 %   the order the ontology lists its operators.
 operator_rank_(General, Rank) :-
     functor(General, Op, _),
-    findall(O, kb_clause(replacement_operator(O), true), Ops),
+    findall(O, shared_clause(replacement_operator(O), true), Ops),
     (   nth1(Rank, Ops, Op)
     ->  true
     ;   Rank = 0
@@ -138,7 +138,7 @@ replace_eq_([X|Xs], L, Alt, [Y|Ys]) :-
     ),
     replace_eq_(Xs, L, Alt, Ys).
 
-%   The kind of tool solve_size/4 sizes, from the case's tool class.
+%   The kind of tool solve_size/5 sizes, from the case's tool class.
 size_kind_(Case, Struct, Kind) :-
     case_answer(case_tool_class(Case, Class)),
     (   class_answer(new_tool_kind(Class, Struct, Kind0))
@@ -188,7 +188,7 @@ next_tool_([candidate(L, G, Alt, Struct)|Cs], Case, Tried, Context, Skipped0, Re
     (   memberchk_variant_(Alt, Tried)
     ->  next_tool_(Cs, Case, Tried, Context, [Alt-tried|Skipped0], Result)
     ;   size_kind_(Case, Struct, Kind),
-        solve_size(Kind, Struct, Context, Sized),
+        solve_size(Case, Kind, Struct, Context, Sized),
         (   Sized = dims(Dims)
         ->  Result = create(L, G, Alt, Struct, Dims)
         ;   Sized = infeasible(Conflict),

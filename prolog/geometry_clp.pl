@@ -7,9 +7,9 @@
             pose_search/2,            % +Pose, -Ground
             solve_pose/5,             % +Case, +Required, +Negated, +Context, -Result
             pose_reachable/5,         % +Case, +Tool, +Required, +Context, -Result
-            size_constraints/4,       % +Kind, +Literals, +Context, -Dims
-            size_search/2,            % +Dims, -Ground
-            solve_size/4              % +Kind, +Literals, +Context, -Result
+            size_constraints/5,       % +Case, +Kind, +Literals, +Context, -Dims
+            size_search/3,            % +Case, +Dims, -Ground
+            solve_size/5              % +Case, +Kind, +Literals, +Context, -Result
           ]).
 
 /** <module> CLP(R)/CLP(FD) models: qualitative literals to numbers
@@ -24,11 +24,12 @@ constraints and a *search* that picks values:
     there is no pose.
   - **Size**: structural literals (handle_length(T, long), shape(W, box), ...) to the
     dimensions of a new tool, named as the fields of HookSpec / BlockSpec
-    (creative_py/mesh/spec.py).  size_constraints/4 posts, size_search/2 labels,
-    solve_size/4 does both.
+    (creative_py/mesh/spec.py).  size_constraints/5 posts, size_search/3 labels,
+    solve_size/5 does both.
 
-The definitions are data of the knowledge base (module knowledge), asked through these
-hook predicates (case.pl says how a missing one is reported):
+The definitions are data of the case's namespace (its module, its kind's, the shared
+one: knowledge.pl), asked through these hook predicates (case.pl says how a missing
+one is reported):
 
   - spatial_definition(?Case, ?Literal, ?PoseTerm, ?Constraints): Literal (its
     arguments the roles tool, target, context) holds when every linear comparison of
@@ -39,7 +40,7 @@ hook predicates (case.pl says how a missing one is reported):
   - geometry_default(?Case, ?Name, ?Value, ?Meaning): the geometry parameters, in the
     order they are computed, with the values used when the state does not give them.
   - geometry_value(?Case, ?Name, ?Tool, ?Target, +Geometry, -Value), proved on the
-    state (knowledge:kb_prove/2), optional: the parameter Name from the facts; Geometry
+    state (case:case_prove/2), optional: the parameter Name from the facts; Geometry
     holds the parameters listed before it.
   - reach_definition(?Case, ?PoseTerm, ?Constraints): how far a held tool reaches:
     every pose the arm can put it at satisfies the linear comparisons Constraints
@@ -50,7 +51,8 @@ hook predicates (case.pl says how a missing one is reported):
   - task_roles/3 (case.pl), task_predicate/2 (abstract_state.pl): the default target,
     and the task literals a size query ignores.
 
-and for the size model, keyed by the kind of the new tool (ontology/kinds/):
+and for the size model, keyed by the kind of the new tool (ontology/kinds/) and read
+in the namespace of the case the tool is for (case:case_knowledge/2):
 
   - qualitative_range(?Property, ?Value, ?Low, ?High, ?Bounds) (ontology/ranges.pl);
   - size_field(?Kind, ?Field, ?Property): a number field and the property it carries;
@@ -122,7 +124,7 @@ spatial_literal(Case, Literal) :-
     must_be(callable, Literal),
     functor(Literal, N, A),
     functor(Template, N, A),
-    once(kb_clause(spatial_definition(Case, Template, _, _), true)).
+    once(case_holds(spatial_definition(Case, Template, _, _))).
 
 %!  spatial_literal(+Literal) is semidet.
 %
@@ -136,7 +138,7 @@ spatial_literal(Literal) :-
     callable(Literal),
     functor(Literal, N, A),
     functor(Template, N, A),
-    once(kb_clause(spatial_definition(_, Template, _, _), true)).
+    once(ontology_holds(spatial_definition(_, Template, _, _))).
 
 %!  pose_geometry(+Case, +Tool, +Target, +Facts:list, -Geometry:list) is det.
 %
@@ -163,7 +165,7 @@ pose_geometry(Case, Tool, Target, Facts, Geometry) :-
     findall(Name-Default,
             case_holds(geometry_default(Case, Name, Default, _)),
             Defaults),
-    (   current_predicate(kb:geometry_value/6)
+    (   case_has_hook(Case, geometry_value/6)
     ->  Rules = true
     ;   Rules = false
     ),
@@ -175,8 +177,8 @@ pose_geometry(Case, Tool, Target, Facts, Geometry) :-
 geometry_param_(Rules, Case, Tool, Target, Facts, Name-Default, G0, [Name=Value|G0]) :-
     reverse(G0, Before),
     (   Rules == true,
-        findall(V, once(kb_prove(geometry_value(Case, Name, Tool, Target, Before, V),
-                                 Facts)),
+        findall(V, once(case_prove(geometry_value(Case, Name, Tool, Target, Before, V),
+                                   Facts)),
                 [V1])
     ->  Value = V1
     ;   Value = Default
@@ -210,7 +212,7 @@ definition_clauses_(Case, Literal, Pose, Clauses) :-
     must_be(callable, Literal),
     functor(Literal, N, A),
     functor(Template, N, A),
-    findall(Pose-Cs, kb_clause(spatial_definition(Case, Template, Pose, Cs), true), Pairs),
+    findall(Pose-Cs, case_holds(spatial_definition(Case, Template, Pose, Cs)), Pairs),
     (   Pairs == []
     ->  domain_error(spatial_literal(Case), Literal)
     ;   maplist(pose_clause_(Pose), Pairs, Clauses)
@@ -263,13 +265,13 @@ exprs_([E0|Es0], Env, [E|Es]) :-
     expr_(E0, Env, E),
     exprs_(Es0, Env, Es).
 
-env_value_(size(Dims, Context), A, V) :-
+env_value_(size(Case, Dims, Context), A, V) :-
     !,
     (   memberchk(A=V0, Dims)
     ->  V = V0
     ;   A == pi
     ->  V is pi
-    ;   size_parameter_(A, Context, V)
+    ;   size_parameter_(Case, A, Context, V)
     ).
 env_value_(Geometry, A, V) :-
     (   memberchk(A=V0, Geometry)
@@ -336,7 +338,7 @@ literal_role_(Case, Literal, Role, Object) :-
     compound(Literal),
     functor(Literal, N, A),
     functor(Template, N, A),
-    once(kb_clause(spatial_definition(Case, Template, _, _), true)),
+    once(case_holds(spatial_definition(Case, Template, _, _))),
     arg(I, Template, Role),
     arg(I, Literal, Object),
     nonvar(Object).
@@ -538,10 +540,11 @@ reach_parameter_(Comparisons, Name) :-
                  *           SIZE MODEL         *
                  *******************************/
 
-%!  size_constraints(+Kind, +Literals:list, +Context:list, -Dims:list) is semidet.
+%!  size_constraints(+Case, +Kind, +Literals:list, +Context:list, -Dims:list) is semidet.
 %
 %   Dims lists Field=Value for the spec fields of a new tool of Kind (a kind with
-%   size_field/3 facts: hook, stick, block), Value a constrained variable or a fixed
+%   size_field/3 facts in the namespace of Case: hook, stick, block) for the task of
+%   Case, Value a constrained variable or a fixed
 %   value, such that the structural Literals hold and the tool suits the task Context.
 %   Fails if they cannot.  Dims holds the number fields (size_field/3), then the
 %   symbolic ones (size_choice/4, unbound if no literal fixes them), then the fixed
@@ -557,8 +560,9 @@ reach_parameter_(Comparisons, Name) :-
 %   left), shape(W, box), mechanical_advantage(W, above_one), ...); class literals
 %   (unary structural literals: tool/1, hook_like/1, hook/1, stick/1, object/1, block/1)
 %   must agree with Kind (Kind is the class or below it); spatial and task literals are
-%   ignored.  Context facts are posted by the ontology's size_constraint/3 for Kind
-%   (others are ignored), for example:
+%   ignored.  Context facts are posted by the size_constraint/3 facts for Kind of the
+%   case's namespace (its own file, its kind's, the shared files; others are ignored),
+%   so that one case's constraints never size another case's tools, for example:
 %
 %     - tube_length_m(Tube, L): handle_length >= L + reach_margin_m (0.05 m unless a
 %       reach_margin_m(M) fact says otherwise), so that the prong reaches behind a cube
@@ -578,126 +582,126 @@ reach_parameter_(Comparisons, Name) :-
 %
 %   ==
 %   ?- use_module(library(clpr)),
-%      size_constraints(hook, [handle_length(t, long)], [tube_length_m(tube1, 0.45)], D),
+%      size_constraints(hook, hook, [handle_length(t, long)], [tube_length_m(tube1, 0.45)], D),
 %      memberchk(handle_length=L, D), inf(L, I).
 %   I = 0.5.
 %   ==
-size_constraints(Kind, Literals, Context, Dims) :-
-    must_be_size_kind_(Kind),
+size_constraints(Case, Kind, Literals, Context, Dims) :-
+    must_be_size_kind_(Case, Kind),
     must_be(list, Literals),
     must_be(list, Context),
-    size_items_(Kind, Literals, Context, Items),
-    size_model_(Kind, Context, Items, Dims).
+    size_items_(Case, Kind, Literals, Context, Items),
+    size_model_(Case, Kind, Context, Items, Dims).
 
-must_be_size_kind_(Kind) :-
+must_be_size_kind_(Case, Kind) :-
     must_be(atom, Kind),
-    (   kb_clause(size_field(Kind, _, _), true)
+    (   case_knowledge(Case, size_field(Kind, _, _))
     ->  true
-    ;   findall(K, kb_clause(size_field(K, _, _), true), Ks0),
+    ;   findall(K, case_knowledge(Case, size_field(K, _, _)), Ks0),
         list_to_set(Ks0, Ks),
         domain_error(oneof(Ks), Kind)
     ).
 
-size_items_(Kind, Literals, Context, Items) :-
-    foldl(literal_item_(Kind), Literals, Items, Items1),
-    findall(ctx(F), ( member(F, Context), context_item_(Kind, F) ), Items1).
+size_items_(Case, Kind, Literals, Context, Items) :-
+    foldl(literal_item_(Case, Kind), Literals, Items, Items1),
+    findall(ctx(F), ( member(F, Context), context_item_(Case, Kind, F) ), Items1).
 
-literal_item_(Kind, L, Items0, Items) :-
+literal_item_(Case, Kind, L, Items0, Items) :-
     must_be(callable, L),
-    (   ignored_literal_(L)
+    (   ignored_literal_(Case, L)
     ->  Items0 = Items
-    ;   check_structural_(Kind, L),
+    ;   check_structural_(Case, Kind, L),
         Items0 = [lit(L)|Items]
     ).
 
-ignored_literal_(L) :-
+ignored_literal_(Case, L) :-
     (   spatial_literal(L)
     ;   functor(L, N, A),
-        kb_clause(task_predicate(_, N/A), true)
+        case_holds(task_predicate(Case, N/A))
     ),
     !.
 
-check_structural_(Kind, L) :-
-    (   class_literal_(L, _)
+check_structural_(Case, Kind, L) :-
+    (   class_literal_(Case, L, _)
     ->  true
     ;   L =.. [P, _, V],
-        property_field_(P),
+        property_field_(Case, P),
         nonvar(V),
-        (   kb_clause(qualitative_range(P, V, _, _, _), true)
-        ;   kb_clause(size_choice(_, _, P, Vs), true),
+        (   case_knowledge(Case, qualitative_range(P, V, _, _, _))
+        ;   case_knowledge(Case, size_choice(_, _, P, Vs)),
             memberchk(V, Vs)
         )
     ->  true
     ;   L =.. [P, _, V],
-        kb_clause(size_ratio(_, P, _, _), true),
+        case_knowledge(Case, size_ratio(_, P, _, _)),
         nonvar(V),
-        kb_clause(qualitative_range(P, V, _, _, _), true)
+        case_knowledge(Case, qualitative_range(P, V, _, _, _))
     ->  true
     ;   domain_error(structural_literal(Kind), L)
     ).
 
-%   class_literal_(+L, -Kinds): L is a class literal C(T) (a unary structural
+%   class_literal_(+Case, +L, -Kinds): L is a class literal C(T) (a unary structural
 %   literal); Kinds are the size kinds that are C or below it in the hierarchy.
-class_literal_(L, Kinds) :-
+class_literal_(Case, L, Kinds) :-
     compound(L),
     compound_name_arity(L, C, 1),
-    once(kb_clause(structural_predicate(_, C/1), true)),
-    findall(K, ( size_kind_(K), is_a_(K, C) ), Kinds).
+    once(case_knowledge(Case, structural_predicate(_, C/1))),
+    findall(K, ( size_kind_(Case, K), is_a_(Case, K, C) ), Kinds).
 
-size_kind_(Kind) :-
-    findall(K, kb_clause(size_field(K, _, _), true), Ks),
+size_kind_(Case, Kind) :-
+    findall(K, case_knowledge(Case, size_field(K, _, _)), Ks),
     list_to_set(Ks, Kinds),
     member(Kind, Kinds).
 
-%   is_a_(+Class, +Super): Class is Super or below it.
-is_a_(C, C) :- !.
-is_a_(C, Super) :-
-    kb_clause(subclass_of(C, C1), true),
-    is_a_(C1, Super),
+%   is_a_(+Case, +Class, +Super): Class is Super or below it.
+is_a_(_, C, C) :- !.
+is_a_(Case, C, Super) :-
+    case_knowledge(Case, subclass_of(C, C1)),
+    is_a_(Case, C1, Super),
     !.
 
 %   P is a property some kind of tool has a spec field for.
-property_field_(P) :-
-    (   kb_clause(size_field(_, _, P), true)
-    ;   kb_clause(size_choice(_, _, P, _), true)
+property_field_(Case, P) :-
+    (   case_knowledge(Case, size_field(_, _, P))
+    ;   case_knowledge(Case, size_choice(_, _, P, _))
     ),
     !.
 
-context_item_(Kind, F) :-
-    once(kb_clause(size_constraint(Kind, F, _), true)).
+context_item_(Case, Kind, F) :-
+    once(case_knowledge(Case, size_constraint(Kind, F, _))).
 
-%   size_model_(+Kind, +Context, +Items, -Dims): post the property domains and every item.
-size_model_(Kind, Context, Items, Dims) :-
-    findall(F-P, kb_clause(size_field(Kind, F, P), true), FieldProps),
+%   size_model_(+Case, +Kind, +Context, +Items, -Dims): post the property domains and every item.
+size_model_(Case, Kind, Context, Items, Dims) :-
+    findall(F-P, case_knowledge(Case, size_field(Kind, F, P)), FieldProps),
     maplist(field_var_, FieldProps, NumDims),
-    findall(F=_, kb_clause(size_choice(Kind, F, _, _), true), ChoiceDims),
-    findall(F=V, kb_clause(size_fixed(Kind, F, V), true), Fixed),
+    findall(F=_, case_knowledge(Case, size_choice(Kind, F, _, _)), ChoiceDims),
+    findall(F=V, case_knowledge(Case, size_fixed(Kind, F, V)), Fixed),
     append([NumDims, ChoiceDims, Fixed], Dims),
-    maplist(post_domain_(FieldProps, Dims), FieldProps),
-    maplist(post_size_item_(Kind, Context, Dims), Items),
-    bound_choice_constraints_(Dims, Context).
+    maplist(post_domain_(Case, FieldProps, Dims), FieldProps),
+    maplist(post_size_item_(Case, Kind, Context, Dims), Items),
+    bound_choice_constraints_(Case, Dims, Context).
 
-%   bound_choice_constraints_(+Dims, +Context): the constraints of every symbolic field a
+%   bound_choice_constraints_(+Case, +Dims, +Context): the constraints of every symbolic field a
 %   literal has fixed (shape(W, triangular_prism): its blunted tip).
-bound_choice_constraints_(Dims, Context) :-
-    include(bound_choice_, Dims, Bound),
-    maplist(bound_choice_constraint_(Dims, Context), Bound).
+bound_choice_constraints_(Case, Dims, Context) :-
+    include(bound_choice_(Case), Dims, Bound),
+    maplist(bound_choice_constraint_(Case, Dims, Context), Bound).
 
-bound_choice_(F=V) :-
+bound_choice_(Case, F=V) :-
     nonvar(V),
-    once(kb_clause(size_choice(_, F, _, _), true)).
+    once(case_knowledge(Case, size_choice(_, F, _, _))).
 
-bound_choice_constraint_(Dims, Context, F=V) :-
-    choice_constraints_(F, V, Dims, Context).
+bound_choice_constraint_(Case, Dims, Context, F=V) :-
+    choice_constraints_(Case, F, V, Dims, Context).
 
 field_var_(F-_, F=_).
 
 %   The domain of a field: the union of its property's qualitative ranges.
-post_domain_(_, Dims, F-P) :-
+post_domain_(Case, _, Dims, F-P) :-
     memberchk(F=V, Dims),
-    aggregate_all(min(Lo), kb_clause(qualitative_range(P, _, Lo, _, _), true), Min),
-    aggregate_all(max(Hi), kb_clause(qualitative_range(P, _, _, Hi, _), true), Max),
-    (   integer_field_(F)
+    aggregate_all(min(Lo), case_knowledge(Case, qualitative_range(P, _, Lo, _, _)), Min),
+    aggregate_all(max(Hi), case_knowledge(Case, qualitative_range(P, _, _, Hi, _)), Max),
+    (   integer_field_(Case, F)
     ->  Lo1 is ceiling(Min),
         Hi1 is floor(Max),
         V #>= Lo1,
@@ -705,50 +709,50 @@ post_domain_(_, Dims, F-P) :-
     ;   {V >= Min, V =< Max}
     ).
 
-integer_field_(F) :-
-    kb_clause(size_integer_field(F), true),
+integer_field_(Case, F) :-
+    case_knowledge(Case, size_integer_field(F)),
     !.
 
-post_size_item_(Kind, _, _, lit(L)) :-
-    class_literal_(L, Kinds),
+post_size_item_(Case, Kind, _, _, lit(L)) :-
+    class_literal_(Case, L, Kinds),
     !,
     memberchk(Kind, Kinds).
-post_size_item_(Kind, _, Dims, lit(L)) :-
+post_size_item_(Case, Kind, _, Dims, lit(L)) :-
     L =.. [P, _, Value],
-    kb_clause(size_choice(Kind, F, P, _), true),
+    case_knowledge(Case, size_choice(Kind, F, P, _)),
     !,
     memberchk(F=Value, Dims).
-post_size_item_(Kind, _, Dims, lit(L)) :-
+post_size_item_(Case, Kind, _, Dims, lit(L)) :-
     L =.. [P, _, Value],
-    kb_clause(size_ratio(Kind, P, NumField, DenField), true),
+    case_knowledge(Case, size_ratio(Kind, P, NumField, DenField)),
     !,
-    kb_clause(qualitative_range(P, Value, Lo, Hi, Bounds), true),
+    case_knowledge(Case, qualitative_range(P, Value, Lo, Hi, Bounds)),
     memberchk(NumField=N, Dims),
     memberchk(DenField=D, Dims),
     range_constraint_(Bounds, N, Lo * D, Hi * D).
-post_size_item_(Kind, _, Dims, lit(L)) :-
+post_size_item_(Case, Kind, _, Dims, lit(L)) :-
     L =.. [P, _, Value],
-    kb_clause(size_field(Kind, F, P), true),
+    case_knowledge(Case, size_field(Kind, F, P)),
     !,
     memberchk(F=V, Dims),
-    kb_clause(qualitative_range(P, Value, Lo, Hi, Bounds), true),
-    (   integer_field_(F)
+    case_knowledge(Case, qualitative_range(P, Value, Lo, Hi, Bounds)),
+    (   integer_field_(Case, F)
     ->  fd_range_constraint_(Bounds, V, Lo, Hi)
     ;   range_constraint_(Bounds, V, Lo, Hi)
     ).
-post_size_item_(_, _, _, lit(_)) :-
+post_size_item_(_, _, _, _, lit(_)) :-
     !,
     fail.
-post_size_item_(Kind, Context, Dims, ctx(F)) :-
-    findall(Cs, kb_clause(size_constraint(Kind, F, Cs), true), Css),
+post_size_item_(Case, Kind, Context, Dims, ctx(F)) :-
+    findall(Cs, case_knowledge(Case, size_constraint(Kind, F, Cs)), Css),
     append(Css, Comparisons),
-    maplist(post_(size(Dims, Context)), Comparisons).
+    maplist(post_(size(Case, Dims, Context)), Comparisons).
 
-size_parameter_(Name, Context, Value) :-
+size_parameter_(Case, Name, Context, Value) :-
     Fact =.. [Name, V],
     (   memberchk(Fact, Context)
     ->  Value = V
-    ;   kb_clause(size_parameter(Name, Value, _), true)
+    ;   case_knowledge(Case, size_parameter(Name, Value, _))
     ->  true
     ;   existence_error(size_parameter, Name)
     ).
@@ -776,7 +780,7 @@ fd_range_constraint_(open_closed, V, Lo, Hi) :-
     V #> Lo1,
     V #=< Hi1.
 
-%!  size_search(+Dims:list, -Ground:list) is nondet.
+%!  size_search(+Case, +Dims:list, -Ground:list) is nondet.
 %
 %   Ground is Dims with every value bound: a symbolic field (hook_side, shape) to the
 %   first value of its size_choice/4 list that keeps the rest feasible (a cylinder gets
@@ -785,46 +789,47 @@ fd_range_constraint_(open_closed, V, Lo, Hi) :-
 %   number).  On backtracking, the next values of the symbolic fields.
 %
 %   ==
-%   ?- size_constraints(block, [shape(w, triangular_prism), block_length(w, long)], [], D),
-%      size_search(D, G).
+%   ?- size_constraints(wedge, block, [shape(w, triangular_prism), block_length(w, long)],
+%                       [], D),
+%      size_search(wedge, D, G).
 %   G = [length=0.16, width=0.085, height=0.0475, tip_height=0.0024,
 %        shape=triangular_prism].
 %   ==
-size_search(Dims, Ground) :-
-    size_search_(Dims, [], Ground).
+size_search(Case, Dims, Ground) :-
+    size_search_(Case, Dims, [], Ground).
 
-%   size_search_(+Dims, +Context, -Ground): size_search/2 where the constraints of a
+%   size_search_(+Case, +Dims, +Context, -Ground): size_search/3 where the constraints of a
 %   symbolic value read their size parameters from Context (then the defaults).
-size_search_(Dims, Context, Ground) :-
+size_search_(Case, Dims, Context, Ground) :-
     must_be(list, Dims),
-    label_choices_(Dims, Context),
-    maplist(label_field_, Dims),
+    label_choices_(Case, Dims, Context),
+    maplist(label_field_(Case), Dims),
     Ground = Dims.
 
-label_choices_(Dims, Context) :-
-    findall(F-Vs, kb_clause(size_choice(_, F, _, Vs), true), Choices),
-    maplist(label_choice_(Dims, Context), Choices).
+label_choices_(Case, Dims, Context) :-
+    findall(F-Vs, case_knowledge(Case, size_choice(_, F, _, Vs)), Choices),
+    maplist(label_choice_(Case, Dims, Context), Choices).
 
-label_choice_(Dims, Context, F-Values) :-
+label_choice_(Case, Dims, Context, F-Values) :-
     (   memberchk(F=V, Dims)
     ->  (   var(V)
         ->  member(V, Values)
         ;   true
         ),
-        choice_constraints_(F, V, Dims, Context)
+        choice_constraints_(Case, F, V, Dims, Context)
     ;   true
     ).
 
 %   The constraints a symbolic field's value adds (size_choice_constraint/3), their
 %   size parameters from Context or the defaults.
-choice_constraints_(F, V, Dims, Context) :-
-    findall(Cs, kb_clause(size_choice_constraint(F, V, Cs), true), Css),
+choice_constraints_(Case, F, V, Dims, Context) :-
+    findall(Cs, case_knowledge(Case, size_choice_constraint(F, V, Cs)), Css),
     append(Css, Comparisons),
-    maplist(post_(size(Dims, Context)), Comparisons).
+    maplist(post_(size(Case, Dims, Context)), Comparisons).
 
-label_field_(F=V) :-
+label_field_(Case, F=V) :-
     (   var(V),
-        integer_field_(F)
+        integer_field_(Case, F)
     ->  fd_inf(V, Inf),
         fd_sup(V, Sup),
         M is (Inf + Sup) // 2,
@@ -834,38 +839,38 @@ label_field_(F=V) :-
     ;   true
     ).
 
-%!  solve_size(+Kind, +Literals:list, +Context:list, -Result) is det.
+%!  solve_size(+Case, +Kind, +Literals:list, +Context:list, -Result) is det.
 %
-%   Result is dims(Fields), Fields a ground list Field=Value (size_constraints/4,
-%   size_search/2) for a new tool of Kind, or infeasible(Conflict), Conflict a minimal
+%   Result is dims(Fields), Fields a ground list Field=Value (size_constraints/5,
+%   size_search/3) for a new tool of Kind in the task of Case, or infeasible(Conflict), Conflict a minimal
 %   list of the literals and context facts that cannot hold together.
 %
 %   ==
-%   ?- solve_size(hook, [hook(t), handle_length(t, long), hook_side(t, left)],
+%   ?- solve_size(hook, hook, [hook(t), handle_length(t, long), hook_side(t, left)],
 %                 [tube_length_m(tube1, 0.45), max_tool_length(0.70)], R).
 %   R = dims([handle_length=0.6, handle_width=0.018, hook_length=0.03,
 %             hook_width=0.012, hook_angle_deg=90, hook_side=left]).
-%   ?- solve_size(hook, [handle_length(t, long)], [max_tool_length(0.3)], R).
+%   ?- solve_size(hook, hook, [handle_length(t, long)], [max_tool_length(0.3)], R).
 %   R = infeasible([handle_length(t, long), max_tool_length(0.3)]).
 %   ==
-solve_size(Kind, Literals, Context, Result) :-
-    must_be_size_kind_(Kind),
-    size_items_(Kind, Literals, Context, Items),
-    (   size_point_(Kind, Context, Items, Ground)
+solve_size(Case, Kind, Literals, Context, Result) :-
+    must_be_size_kind_(Case, Kind),
+    size_items_(Case, Kind, Literals, Context, Items),
+    (   size_point_(Case, Kind, Context, Items, Ground)
     ->  Result = dims(Ground)
-    ;   minimal_conflict_(Items, size_items_feasible_(Kind, Context), Conflict0),
+    ;   minimal_conflict_(Items, size_items_feasible_(Case, Kind, Context), Conflict0),
         maplist(size_item_term_, Conflict0, Conflict),
         Result = infeasible(Conflict)
     ).
 
-size_point_(Kind, Context, Items, Ground) :-
+size_point_(Case, Kind, Context, Items, Ground) :-
     findall(G,
-            once(( size_model_(Kind, Context, Items, Dims),
-                   size_search_(Dims, Context, G) )),
+            once(( size_model_(Case, Kind, Context, Items, Dims),
+                   size_search_(Case, Dims, Context, G) )),
             [Ground]).
 
-size_items_feasible_(Kind, Context, Items) :-
-    \+ \+ size_point_(Kind, Context, Items, _).
+size_items_feasible_(Case, Kind, Context, Items) :-
+    \+ \+ size_point_(Case, Kind, Context, Items, _).
 
 size_item_term_(lit(L), L).
 size_item_term_(ctx(F), F).

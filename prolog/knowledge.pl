@@ -2,9 +2,17 @@
           [ load_ontology/1,          % +File
             load_ontology_files/1,    % +Files
             load_default_ontology/0,
-            kb_holds/1,               % :Goal
-            kb_prove/2,               % +Goal, +Facts
-            kb_clause/2,              % ?Head, ?Body
+            shared_holds/1,           % :Goal
+            shared_prove/2,           % +Goal, +Facts
+            shared_clause/2,          % ?Head, ?Body
+            kb_case_module/2,         % ?Case, ?Module
+            kb_kind_module/2,         % ?Kind, ?Module
+            kb_modules/1,             % -Modules
+            kb_module_scope/2,        % +Module, -Scope
+            kb_module_defines/2,      % +Module, +Name/Arity
+            kb_module_holds/2,        % +Module, +Goal
+            kb_module_clause/3,       % +Module, ?Head, ?Body
+            kb_module_prove/3,        % +Module, +Goal, +Facts
             kb_assert_facts/1,        % +Facts
             kb_retract_facts/1,       % +Pattern
             kb_loaded_files/1,        % -Files
@@ -17,37 +25,59 @@
 
 /** <module> The knowledge base: ontology, world facts and what is learned
 
-This is the one module that owns the dynamic database (docs/architecture.md).  Knowledge
-lives in the module `kb`, kept apart from this module's own predicates, whose only
-default import is `system`:
+This is the one module that owns the dynamic database (docs/architecture.md).  The
+ontology is plain Prolog data (the .pl files of ontology/ and its subdirectories, no
+directives), read clause by clause by load_ontology/1 and asserted into one module per
+file's *role*, each kept apart from this module's own predicates:
 
-  - the *ontology*: plain Prolog files (the .pl files of ontology/ and its
-    subdirectories, no directives) read clause by clause by load_ontology/1 and
-    asserted into `kb`;
-  - *world facts*: ground facts added by kb_assert_facts/1 (perception's primitive
-    facts, a catalogue, a learned model), removed by kb_retract_facts/1 or kb_reset/0.
+  - a **case file**, one holding a fact case(Case), goes into the module
+    `case_<Case>` (ontology/cases/hook.pl: `case_hook`);
+  - a **kind file**, one holding a fact kind(Kind), goes into `kind_<Kind>`
+    (ontology/kinds/hook_like.pl: `kind_hook_like`);
+  - every other file is **shared** knowledge and goes into the module `kb` (ranges,
+    replacement operators, the robot's own skills, the world frame).
+
+A case module's default import modules are its kind's module (the kind named by its
+case_tool_class/2 fact) and then `kb`; a kind module's is `kb`; `kb`'s is `system`.
+So a case's rules see its own predicates, its kind's and the shared ones, and two
+cases may define the same helper predicate, each seeing its own.  World facts
+(kb_assert_facts/1: perception's primitive facts, a catalogue) live in `kb`, seen by
+every case.  The engine reads a case's knowledge through prolog/case.pl, which names
+the case (kb_case_module/2) and raises when the case does not answer; the shared
+readers shared_holds/1, shared_clause/2 and shared_prove/2 read `kb` only.
 
 Loading checks what SWI-Prolog would only print: a syntax error raises
 error(syntax_error(Message), file(File, Line, LinePos, CharNo)); a clause whose body
-calls a predicate that is neither defined by the loaded knowledge, nor declared as a
-primitive fact predicate (`primitive_predicate(Name/Arity)` facts of the ontology), nor
-built in, raises error(existence_error(procedure, Name/Arity), file(File, Line, -1, 0)).
-A load is all or nothing: nothing is asserted unless every file of the call is clean.
+calls a predicate that is neither defined in the file's module or a module it sees, nor
+declared as a primitive fact predicate (`primitive_predicate(Name/Arity)` facts of the
+ontology), nor built in, raises error(existence_error(procedure, Name/Arity),
+file(File, Line, -1, 0)).  A shared file's bodies may name any module's predicates
+(the replacement operators name the kinds' properties; they are read as data).  A load
+is all or nothing: nothing is asserted unless every file of the call is clean.
 Reloading a file replaces its clauses.
 
-The ontology's predicates answer queries against the asserted world facts
-(kb_holds/1), or against a list of facts handed over in an argument (kb_prove/2), so
-that callers keep their state in arguments.
+Rules are called in their module (kb_module_holds/2), or proved against a list of
+facts handed over in an argument (kb_module_prove/3), so that callers keep their state
+in arguments.
 */
 
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
 
-%   ontology_clause_(File, Ref): Ref is a clause of kb asserted from File.
+%   ontology_clause_(File, Ref): Ref is an ontology clause asserted from File.
 :- dynamic ontology_clause_/2.
-%   loaded_file_(File): File's clauses are in kb, in load order.
+%   loaded_file_(File): File's clauses are loaded, in load order.
 :- dynamic loaded_file_/1.
+%   file_module_(File, Module): the module File's clauses went into.
+:- dynamic file_module_/2.
+%   module_role_(Module, Role): Role is case(Case), kind(Kind) or shared; in the order
+%   the modules were first loaded.
+:- dynamic module_role_/2.
+%   module_scope_(Module, Scope): the modules Module's goals resolve in, itself first.
+:- dynamic module_scope_/2.
+%   primitive_(Name/Arity): a primitive fact predicate of some ontology module.
+:- dynamic primitive_/1.
 %   world_fact_(Ref): Ref is a world fact asserted by kb_assert_facts/1.
 :- dynamic world_fact_/1.
 :- dynamic learned_model_/4.
@@ -63,17 +93,20 @@ init_kb_module_ :-
 %!  load_ontology(+File) is det.
 %
 %   Read the plain Prolog file File (a path or an alias such as
-%   ontology(kinds/hook_like)) and assert its clauses into the knowledge base.  Calls in
-%   clause bodies are checked against the whole knowledge base after the load.
+%   ontology(kinds/hook_like)) and assert its clauses into the module of its role (a
+%   case's, a kind's, or the shared `kb`).  Calls in clause bodies are checked after the
+%   load.
 %
 %   @error existence_error(source_sink, File) if File does not exist.
 %   @error syntax_error(Message) with context file(Path, Line, LinePos, CharNo).
 %   @error existence_error(procedure, Name/Arity) with context file(Path, Line, -1, 0)
 %          for a call to an unknown predicate.
 %   @error domain_error(ontology_clause, Term) for a directive (ontology files are data).
+%   @error domain_error(one_role_per_file, Roles) with context file(Path, 1, -1, 0) for
+%          a file declaring more than one case/1 or kind/1 fact.
 %
 %   ==
-%   ?- load_ontology(ontology(ranges)), kb_holds(qualitative_value(handle_length, 0.3, V)).
+%   ?- load_ontology(ontology(ranges)), shared_holds(qualitative_value(handle_length, 0.3, V)).
 %   V = medium.
 %   ==
 load_ontology(File) :-
@@ -92,12 +125,11 @@ load_ontology(File) :-
 load_ontology_files(Files) :-
     must_be(list, Files),
     maplist(resolve_file_, Files, Paths),
-    foldl(read_file_clauses_, Paths, Items, []),
-    check_calls_(Items),
+    maplist(read_ontology_file_, Paths, Loads),
+    check_calls_(Loads),
     maplist(unload_file_, Paths),
-    maplist(assert_item_, Items),
-    forall(member(P, Paths), assertz(loaded_file_(P))),
-    declare_primitives_.
+    maplist(assert_file_, Loads),
+    update_modules_.
 
 %!  load_default_ontology is det.
 %
@@ -105,11 +137,12 @@ load_ontology_files(Files) :-
 %   set by prolog/creative.pl, else ../ontology relative to this module) and of its
 %   subdirectories (cases/, kinds/, ...), in a fixed order: a directory's files in name
 %   order, then each subdirectory in name order, depth first.  The order is the order of
-%   the clauses of a predicate that several files define.
+%   the clauses of a predicate that several files of one module define.
 %
 %   ==
-%   ?- load_default_ontology, kb_holds(subclass_of(hook, C)).
-%   C = hook_like.
+%   ?- load_default_ontology, kb_kind_module(hook_like, M),
+%      kb_module_holds(M, subclass_of(hook, C)).
+%   M = kind_hook_like, C = hook_like.
 %   ==
 load_default_ontology :-
     ontology_directory_(Dir),
@@ -155,6 +188,35 @@ resolve_file_(File, Path) :-
     ->  true
     ;   existence_error(source_sink, File)
     ).
+
+%   read_ontology_file_(+Path, -Load): Load = load(Path, Module, Role, Items), Items
+%   the file's item(Clause, Path, Line) terms.
+read_ontology_file_(Path, load(Path, Module, Role, Items)) :-
+    read_file_clauses_(Path, Items, []),
+    file_role_(Path, Items, Role),
+    role_module_(Role, Module).
+
+%   file_role_(+Path, +Items, -Role): case(Case) for a file with one case/1 fact,
+%   kind(Kind) for one with one kind/1 fact, shared otherwise.
+file_role_(Path, Items, Role) :-
+    findall(R,
+            ( member(item(T, _, _), Items),
+              ( T = case(C), R = case(C) ; T = kind(K), R = kind(K) ) ),
+            Roles),
+    (   Roles == []
+    ->  Role = shared
+    ;   Roles = [Role],
+        Role =.. [_, Id],
+        atom(Id)
+    ->  true
+    ;   throw(error(domain_error(one_role_per_file, Roles), file(Path, 1, -1, 0)))
+    ).
+
+role_module_(shared, kb).
+role_module_(case(C), M) :-
+    atom_concat(case_, C, M).
+role_module_(kind(K), M) :-
+    atom_concat(kind_, K, M).
 
 %   read_file_clauses_(+Path, -Items, ?Tail): Items are item(Clause, Path, Line).
 read_file_clauses_(Path, Items, Tail) :-
@@ -204,16 +266,49 @@ check_head_(Head, Path, Line) :-
     ;   true
     ).
 
-%   check_calls_(+Items): every called predicate is known.
-check_calls_(Items) :-
-    findall(N/A, ( member(item(C, _, _), Items), clause_head_(C, H), functor(H, N, A) ),
-            NewDefined0),
-    findall(PI, member(item(primitive_predicate(PI), _, _), Items), NewPrimitive),
-    append(NewDefined0, NewPrimitive, NewDefined1),
-    sort(NewDefined1, NewDefined),
-    forall(member(item(C, Path, Line), Items),
-           ( clause_body_(C, Body),
-             check_body_(Body, NewDefined, Path, Line) )).
+%   check_calls_(+Loads): every called predicate is known where it is called: defined
+%   by a module the file's module sees (new clauses of this load, or clauses loaded
+%   before), a primitive, or built in.
+check_calls_(Loads) :-
+    findall(M-(N/A),
+            ( member(load(_, M, _, Items), Loads),
+              member(item(C, _, _), Items),
+              clause_head_(C, H),
+              functor(H, N, A) ),
+            NewDefined),
+    findall(PI,
+            ( member(load(_, _, _, Items), Loads),
+              member(item(primitive_predicate(PI), _, _), Items) ),
+            NewPrimitive),
+    forall(member(load(_, M, Role, Items), Loads),
+           ( visible_modules_(Role, M, Loads, Visible),
+             findall(PI, ( member(V-PI, NewDefined), memberchk(V, Visible) ), Defined0),
+             append(Defined0, NewPrimitive, Defined1),
+             sort(Defined1, Defined),
+             forall(member(item(C, Path, Line), Items),
+                    ( clause_body_(C, Body),
+                      check_body_(Body, Visible, Defined, Path, Line) )) )).
+
+%   visible_modules_(+Role, +Module, +Loads, -Visible): the modules whose predicates a
+%   body in Module may call: a case's own, its kind's and kb; a kind's own and kb; for
+%   kb (the shared files), every module.
+visible_modules_(case(C), M, Loads, [M, KM, kb]) :-
+    (   (   member(load(_, M, _, Items), Loads),
+            member(item(case_tool_class(C, K), _, _), Items)
+        ;   kb_module_defines(M, case_tool_class/2),
+            M:case_tool_class(C, K)
+        ),
+        atom(K)
+    ->  role_module_(kind(K), KM)
+    ;   KM = kb
+    ),
+    !.
+visible_modules_(kind(_), M, _, [M, kb]).
+visible_modules_(shared, _, Loads, Visible) :-
+    findall(M, module_role_(M, _), Old),
+    findall(M, member(load(_, M, _, _), Loads), New),
+    append([[kb], Old, New], Visible0),
+    list_to_set(Visible0, Visible).
 
 clause_head_((H :- _), H) :- !.
 clause_head_(H, H).
@@ -221,16 +316,16 @@ clause_head_(H, H).
 clause_body_((_ :- B), B) :- !.
 clause_body_(_, true).
 
-check_body_(G, _, _, _) :-
+check_body_(G, _, _, _, _) :-
     var(G),
     !.
-check_body_(G, Defined, Path, Line) :-
+check_body_(G, Visible, Defined, Path, Line) :-
     control_(G, Subgoals),
     !,
-    forall(member(S, Subgoals), check_body_(S, Defined, Path, Line)).
-check_body_(G, Defined, Path, Line) :-
+    forall(member(S, Subgoals), check_body_(S, Visible, Defined, Path, Line)).
+check_body_(G, Visible, Defined, Path, Line) :-
     functor(G, N, A),
-    (   known_predicate_(N/A, G, Defined)
+    (   known_predicate_(N/A, G, Visible, Defined)
     ->  true
     ;   throw(error(existence_error(procedure, N/A), file(Path, Line, -1, 0)))
     ).
@@ -248,36 +343,70 @@ control_(forall(A, B), [A, B]).
 control_(findall(_, A, _), [A]).
 control_(aggregate_all(_, A, _), [A]).
 
-known_predicate_(PI, _, Defined) :-
+known_predicate_(PI, _, _, Defined) :-
     memberchk(PI, Defined),
     !.
-known_predicate_(N/A, _, _) :-
-    current_predicate(kb:N/A),
-    functor(H, N, A),
-    \+ predicate_property(kb:H, imported_from(_)),
+known_predicate_(PI, _, Visible, _) :-
+    member(M, Visible),
+    kb_module_defines(M, PI),
     !.
-known_predicate_(PI, _, _) :-
-    kb_primitive_(PI),
+known_predicate_(PI, _, _, _) :-
+    primitive_(PI),
     !.
-known_predicate_(_, G, _) :-
+known_predicate_(_, G, _, _) :-
     predicate_property(kb:G, defined).
-
-kb_primitive_(PI) :-
-    current_predicate(kb:primitive_predicate/1),
-    kb:primitive_predicate(PI).
 
 unload_file_(Path) :-
     forall(retract(ontology_clause_(Path, Ref)), erase(Ref)),
-    retractall(loaded_file_(Path)).
+    retractall(loaded_file_(Path)),
+    retractall(file_module_(Path, _)).
 
-assert_item_(item(Clause, Path, _Line)) :-
-    assertz(kb:Clause, Ref),
-    assertz(ontology_clause_(Path, Ref)).
+%   assert_file_(+Load): a new module is set up (its default import kb) before its
+%   first clause; update_modules_/0 adds its kind's module once every file is in.
+assert_file_(load(Path, M, Role, Items)) :-
+    (   module_role_(M, _)
+    ->  true
+    ;   M == kb
+    ->  assertz(module_role_(kb, shared))
+    ;   set_module(M:base(kb)),
+        set_module(M:class(user)),
+        assertz(module_role_(M, Role))
+    ),
+    forall(member(item(Clause, _, _), Items),
+           ( assertz(M:Clause, Ref),
+             assertz(ontology_clause_(Path, Ref)) )),
+    assertz(loaded_file_(Path)),
+    assertz(file_module_(Path, M)).
 
-%   Primitive fact predicates exist (dynamic) before any world fact is asserted, so that
-%   asking about them fails instead of raising.
-declare_primitives_ :-
-    forall(kb_primitive_(N/A), dynamic(kb:N/A)).
+%   update_modules_: every case module imports its kind's module, scopes and the
+%   primitive predicates are recomputed, and primitive fact predicates exist (dynamic,
+%   in kb) before any world fact is asserted, so that asking about them fails instead
+%   of raising.
+update_modules_ :-
+    retractall(module_scope_(_, _)),
+    forall(module_role_(M, Role),
+           ( module_scope_of_(Role, M, Scope),
+             assertz(module_scope_(M, Scope)),
+             forall(( member(I, Scope), I \== M, I \== kb ),
+                    add_import_module(M, I, start)) )),
+    retractall(primitive_(_)),
+    forall(( module_role_(M, _),
+             kb_module_defines(M, primitive_predicate/1),
+             M:primitive_predicate(PI),
+             \+ primitive_(PI) ),
+           assertz(primitive_(PI))),
+    forall(primitive_(N/A), dynamic(kb:N/A)).
+
+module_scope_of_(shared, kb, [kb]).
+module_scope_of_(kind(_), M, [M, kb]).
+module_scope_of_(case(C), M, Scope) :-
+    (   kb_module_defines(M, case_tool_class/2),
+        once(M:case_tool_class(C, K)),
+        role_module_(kind(K), KM),
+        module_role_(KM, kind(K))
+    ->  Scope = [M, KM, kb]
+    ;   Scope = [M, kb]
+    ).
 
 %!  kb_loaded_files(-Files:list) is det.
 %
@@ -290,99 +419,187 @@ declare_primitives_ :-
 kb_loaded_files(Files) :-
     findall(F, loaded_file_(F), Files).
 
-%!  kb_holds(:Goal) is nondet.
+%!  kb_case_module(?Case, ?Module) is nondet.
 %
-%   Call Goal in the knowledge base (ontology plus asserted world facts).
+%   Module holds the knowledge of the loaded case Case (its file's case/1 fact), in
+%   load order.
 %
 %   ==
-%   ?- load_default_ontology, kb_assert_facts([object_kind(h1, hook), handle_length_m(h1, 0.3)]),
-%      kb_holds(handle_length(h1, V)).
-%   V = medium.
+%   ?- load_default_ontology, kb_case_module(hook, M).
+%   M = case_hook.
 %   ==
-kb_holds(Goal) :-
+kb_case_module(Case, Module) :-
+    module_role_(Module, case(Case)).
+
+%!  kb_kind_module(?Kind, ?Module) is nondet.
+%
+%   Module holds the knowledge of the loaded tool kind Kind (its file's kind/1 fact).
+%
+%   ==
+%   ?- load_default_ontology, kb_kind_module(block, M).
+%   M = kind_block.
+%   ==
+kb_kind_module(Kind, Module) :-
+    module_role_(Module, kind(Kind)).
+
+%!  kb_modules(-Modules:list) is det.
+%
+%   Modules are the modules of the loaded ontology, in the order they were first
+%   loaded (kb, the shared module, when a shared file is loaded).
+kb_modules(Modules) :-
+    findall(M, module_role_(M, _), Modules).
+
+%!  kb_module_scope(+Module, -Scope:list) is det.
+%
+%   Scope lists the ontology modules a goal called in Module resolves in, Module first:
+%   [case_hook, kind_hook_like, kb] for a case, [kind_block, kb] for a kind, [kb].
+kb_module_scope(Module, Scope) :-
+    (   module_scope_(Module, Scope0)
+    ->  Scope = Scope0
+    ;   Scope = [kb]
+    ).
+
+%!  kb_module_defines(+Module, +Name/Arity) is semidet.
+%
+%   Module itself (not a module it imports from) has clauses or a dynamic declaration
+%   for Name/Arity.
+kb_module_defines(Module, N/A) :-
+    current_predicate(Module:N/A),
+    functor(H, N, A),
+    \+ predicate_property(Module:H, imported_from(_)).
+
+%!  kb_module_holds(+Module, +Goal) is nondet.
+%
+%   Call Goal in Module, if Module itself defines Goal's predicate; fail otherwise.
+%   Its rules see what Module sees (kb_module_scope/2) and the world facts.
+kb_module_holds(Module, Goal) :-
+    must_be(callable, Goal),
+    functor(Goal, N, A),
+    kb_module_defines(Module, N/A),
+    call(Module:Goal).
+
+%!  kb_module_clause(+Module, ?Head, ?Body) is nondet.
+%
+%   Head :- Body is a clause of Module's own predicate (Body = true for a fact), in the
+%   order the clauses were loaded.
+kb_module_clause(Module, Head, Body) :-
+    must_be(callable, Head),
+    functor(Head, N, A),
+    kb_module_defines(Module, N/A),
+    clause(Module:Head, Body).
+
+%!  shared_holds(:Goal) is nondet.
+%
+%   Call Goal in the shared knowledge (module kb: ranges, replacement operators, the
+%   robot's skills, the world frame) and the asserted world facts.
+%
+%   ==
+%   ?- load_default_ontology, kb_assert_facts([pose(cube1, 0.9, 0.0, 0.0, 0.0)]),
+%      shared_holds(pose(cube1, X, _, _, _)).
+%   X = 0.9.
+%   ==
+shared_holds(Goal) :-
     must_be(callable, Goal),
     call(kb:Goal).
 
-%!  kb_clause(?Head, ?Body) is nondet.
+%!  shared_clause(?Head, ?Body) is nondet.
 %
-%   Head :- Body is a clause of the knowledge base (Body = true for a fact), in the
-%   order the clauses were loaded.
+%   Head :- Body is a clause of the shared knowledge (module kb), in the order the
+%   clauses were loaded.
 %
 %   ==
-%   ?- load_default_ontology, kb_clause(any_length(X), B).
+%   ?- load_default_ontology, shared_clause(any_length(X), B).
 %   B = handle_length(X, medium) ;
 %   B = handle_length(X, long) ;
 %   B = handle_length(X, short).
 %   ==
-kb_clause(Head, Body) :-
-    must_be(callable, Head),
-    functor(Head, N, A),
-    current_predicate(kb:N/A),
-    \+ predicate_property(kb:Head, imported_from(_)),
-    clause(kb:Head, Body).
+shared_clause(Head, Body) :-
+    kb_module_clause(kb, Head, Body).
 
-%!  kb_prove(+Goal, +Facts:list) is nondet.
+%!  shared_prove(+Goal, +Facts:list) is nondet.
 %
-%   Prove Goal from the ontology's rules, taking primitive facts (those of the ontology's
-%   primitive_predicate/1 declarations) from the list Facts instead of the database.
-%   Rules are interpreted clause by clause; built-in goals are called.
+%   kb_module_prove/3 in the shared module kb.
+%
+%   ==
+%   ?- load_default_ontology, shared_prove(wrap_angle(4.0, A), []).
+%   A = -2.2831853071795862.
+%   ==
+shared_prove(Goal, Facts) :-
+    kb_module_prove(kb, Goal, Facts).
+
+%!  kb_module_prove(+Module, +Goal, +Facts:list) is nondet.
+%
+%   Prove Goal in Module from the ontology's rules, taking primitive facts (those of
+%   the ontology's primitive_predicate/1 declarations) from the list Facts instead of
+%   the database.  Rules are interpreted clause by clause, each goal in the first
+%   module of its clause's scope (kb_module_scope/2) that defines it, as SWI-Prolog
+%   resolves it; built-in goals are called.
 %
 %   ==
 %   ?- load_default_ontology,
-%      kb_prove(handle_length(h1, V), [object_kind(h1, hook), handle_length_m(h1, 0.5)]).
+%      kb_module_prove(case_hook, handle_length(h1, V),
+%                      [object_kind(h1, hook), handle_length_m(h1, 0.5)]).
 %   V = long.
 %   ==
-kb_prove(Goal, Facts) :-
+kb_module_prove(Module, Goal, Facts) :-
+    must_be(atom, Module),
     must_be(callable, Goal),
     must_be(list, Facts),
-    prove_(Goal, Facts).
+    prove_(Goal, Module, Facts).
 
-prove_(G, _) :-
+prove_(G, _, _) :-
     var(G),
     !,
     instantiation_error(G).
-prove_(true, _) :- !.
-prove_((A, B), Fs) :- !,
-    prove_(A, Fs),
-    prove_(B, Fs).
-prove_((C -> T ; E), Fs) :- !,
-    (   prove_(C, Fs)
-    ->  prove_(T, Fs)
-    ;   prove_(E, Fs)
+prove_(true, _, _) :- !.
+prove_((A, B), M, Fs) :- !,
+    prove_(A, M, Fs),
+    prove_(B, M, Fs).
+prove_((C -> T ; E), M, Fs) :- !,
+    (   prove_(C, M, Fs)
+    ->  prove_(T, M, Fs)
+    ;   prove_(E, M, Fs)
     ).
-prove_((C *-> T ; E), Fs) :- !,
-    (   prove_(C, Fs)
-    *-> prove_(T, Fs)
-    ;   prove_(E, Fs)
+prove_((C *-> T ; E), M, Fs) :- !,
+    (   prove_(C, M, Fs)
+    *-> prove_(T, M, Fs)
+    ;   prove_(E, M, Fs)
     ).
-prove_((A ; B), Fs) :- !,
-    (   prove_(A, Fs)
-    ;   prove_(B, Fs)
+prove_((A ; B), M, Fs) :- !,
+    (   prove_(A, M, Fs)
+    ;   prove_(B, M, Fs)
     ).
-prove_((C -> T), Fs) :- !,
-    (   prove_(C, Fs)
-    ->  prove_(T, Fs)
+prove_((C -> T), M, Fs) :- !,
+    (   prove_(C, M, Fs)
+    ->  prove_(T, M, Fs)
     ).
-prove_(\+ G, Fs) :- !,
-    \+ prove_(G, Fs).
-prove_(call(G), Fs) :- !,
-    prove_(G, Fs).
-prove_(once(G), Fs) :- !,
-    once(prove_(G, Fs)).
-prove_(findall(T, G, L), Fs) :- !,
-    findall(T, prove_(G, Fs), L).
-prove_(forall(C, A), Fs) :- !,
-    forall(prove_(C, Fs), prove_(A, Fs)).
-prove_(G, Fs) :-
+prove_(\+ G, M, Fs) :- !,
+    \+ prove_(G, M, Fs).
+prove_(call(G), M, Fs) :- !,
+    prove_(G, M, Fs).
+prove_(once(G), M, Fs) :- !,
+    once(prove_(G, M, Fs)).
+prove_(findall(T, G, L), M, Fs) :- !,
+    findall(T, prove_(G, M, Fs), L).
+prove_(forall(C, A), M, Fs) :- !,
+    forall(prove_(C, M, Fs), prove_(A, M, Fs)).
+prove_(G, M, Fs) :-
     functor(G, N, A),
-    (   kb_primitive_(N/A)
+    (   primitive_(N/A)
     ->  member(G, Fs)
-    ;   current_predicate(kb:N/A),
-        \+ predicate_property(kb:G, imported_from(_))
-    ->  clause(kb:G, Body),
-        prove_(Body, Fs)
-    ;   call(kb:G)
+    ;   defining_module_(M, N/A, D)
+    ->  clause(D:G, Body),
+        prove_(Body, D, Fs)
+    ;   call(M:G)
     ).
+
+%   defining_module_(+Module, +PI, -Defining): the first module of Module's scope that
+%   defines PI itself.
+defining_module_(M, PI, D) :-
+    kb_module_scope(M, Scope),
+    member(D, Scope),
+    kb_module_defines(D, PI),
+    !.
 
 %!  kb_assert_facts(+Facts:list) is det.
 %
@@ -393,7 +610,7 @@ prove_(G, Fs) :-
 %          and callable; type_error(fact, (H :- B)) for a clause with a body.
 %
 %   ==
-%   ?- kb_assert_facts([pose(cube1, 0.9, 0.0, -0.05, 0.0)]), kb_holds(pose(cube1, X, _, _, _)).
+%   ?- kb_assert_facts([pose(cube1, 0.9, 0.0, -0.05, 0.0)]), shared_holds(pose(cube1, X, _, _, _)).
 %   X = 0.9.
 %   ==
 kb_assert_facts(Facts) :-
@@ -505,9 +722,16 @@ kb_reset_all :-
     kb_reset,
     retractall(ontology_clause_(_, _)),
     retractall(loaded_file_(_)),
-    forall(( current_predicate(kb:N/A),
+    retractall(file_module_(_, _)),
+    findall(M, module_role_(M, _), Ms0),
+    list_to_set([kb|Ms0], Ms),
+    forall(( member(M, Ms),
+             current_predicate(M:N/A),
              functor(H, N, A),
-             \+ predicate_property(kb:H, imported_from(_)),
-             predicate_property(kb:H, dynamic)
+             \+ predicate_property(M:H, imported_from(_)),
+             predicate_property(M:H, dynamic)
            ),
-           abolish(kb:N/A)).
+           abolish(M:N/A)),
+    retractall(module_role_(_, _)),
+    retractall(module_scope_(_, _)),
+    retractall(primitive_(_)).

@@ -58,7 +58,7 @@ did nothing teaches nothing), so it is matched even if the precondition was not 
 :- use_module(library(option)).
 :- use_module(library(error)).
 :- use_module(action_model).
-:- use_module(knowledge, [kb_clause/2]).
+:- use_module(case, [ontology_holds/1]).
 
 %!  observe_demonstration(+Steps, +InnateModels, -Result) is det.
 %
@@ -277,7 +277,7 @@ extra_params_([A|As], Model, Args, [A-Type|Ps]) :-
 
 %   Every case's names of learned actions (hook predicate learned_action_names/2).
 ontology_action_names_(Names) :-
-    findall(Ns, kb_clause(learned_action_names(_, Ns), true), Nss),
+    findall(Ns, ontology_holds(learned_action_names(_, Ns)), Nss),
     append(Nss, Names).
 
 new_model_name_(Names, Skill, Effect, Name) :-

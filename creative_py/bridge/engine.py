@@ -536,10 +536,13 @@ class Engine:
         ``param(Name, Value, Meaning)`` of the reach's geometry parameters)."""
         return self._must("pose_reachable", case, tool, list(required), list(context))
 
-    def solve_size(self, kind: str, literals: Sequence[Term], context: Sequence[Term]) -> Term:
+    def solve_size(self, case: str, kind: str, literals: Sequence[Term],
+                   context: Sequence[Term]) -> Term:
         """Return ``dims([Field=Value, ...])`` (metres, degrees where named ``_deg``) or
-        ``infeasible(Conflict)`` for a new tool of ``kind`` (``geometry_clp:solve_size/4``)."""
-        return self._must("solve_size", kind, list(literals), list(context))
+        ``infeasible(Conflict)`` for a new tool of ``kind`` for the task of ``case``: the
+        size constraints are those of the case's own file, its tool kind's and the shared
+        ones (``geometry_clp:solve_size/5``)."""
+        return self._must("solve_size", case, kind, list(literals), list(context))
 
     # ------------------------------------------------------------------ learning ops
     # The operations of the learning loop (Algorithms 1 and 2). ``case`` is a case id

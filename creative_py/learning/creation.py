@@ -225,7 +225,7 @@ class ToolCreator:
         for _ in range(MAX_THICKENINGS):
             if check.verdict != "fail" or check.model != "cantilever":
                 break
-            reply = thicker_dims(self.engine, self._kind(struct), struct,
+            reply = thicker_dims(self.engine, self.case, self._kind(struct), struct,
                                  self.runner.task_facts(task), check)
             if reply.name == "infeasible":
                 check = rejected(check, reply.args[0])

@@ -3,7 +3,7 @@
 This is the path of ``creative make-tool`` and of steps 3-9 of the paper's Algorithm 2
 (tool creation): the structural literals a new tool must have (``hook(T)``,
 ``handle_length(T, long)``, ...) are sized by the CLP(R) size model in Prolog
-(``geometry_clp:solve_size/4``) against the task's geometry, and the sized tool is
+(``geometry_clp:solve_size/5``) against the task's geometry, and the sized tool is
 written as URDF, SDF, OpenSCAD, STL and a manifest by
 :func:`creative_py.mesh.export.write_tool_files`::
 
@@ -375,7 +375,7 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
         context.append(Compound("min_tip_height_m", (settings.min_tip,)))
     start = time.perf_counter()
     try:
-        result = engine.solve_size(kind, renamed, context)
+        result = engine.solve_size(case, kind, renamed, context)
     except PrologError as exc:
         formal = exc.formal
         if isinstance(formal, Compound) and formal.name == "domain_error":

@@ -276,7 +276,7 @@ def thickening_fact(check: StrengthCheck) -> Compound:
     return Compound("min_handle_width_m", (check.required_handle_width_m,))
 
 
-def thicker_dims(engine: Engine, kind: str, structural: Sequence[Term],
+def thicker_dims(engine: Engine, case: str, kind: str, structural: Sequence[Term],
                  context: Sequence[Term], check: StrengthCheck) -> Term:
     """Size the tool again with a handle wide enough for ``check`` (CLP size model).
 
@@ -284,6 +284,8 @@ def thicker_dims(engine: Engine, kind: str, structural: Sequence[Term],
     ----------
     engine : Engine
         The Prolog engine.
+    case : str
+        The case the tool is for (its size constraints are the case's own).
     kind : str
         The size kind (``hook``, ``stick``).
     structural : sequence of terms
@@ -297,9 +299,9 @@ def thicker_dims(engine: Engine, kind: str, structural: Sequence[Term],
     -------
     Term
         ``dims([Field=Value, ...])`` or ``infeasible(Conflict)``
-        (``geometry_clp:solve_size/4``).
+        (``geometry_clp:solve_size/5``).
     """
-    return engine.solve_size(kind, list(structural),
+    return engine.solve_size(case, kind, list(structural),
                              list(context) + [thickening_fact(check)])
 
 

@@ -2,8 +2,10 @@
     tool.  Everything the engine knows about this case is here; the engine asks for it
     through the hook predicates of ontology/README.md ("Hook predicates").
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
-    Rules marked "proved on the state" are proved by knowledge:kb_prove/2: their
+    Plain Prolog data loaded by knowledge:load_ontology/1 into this case's own module
+    (case/1 below names it), which sees its tool kind's module and the shared files:
+    a helper predicate here is this case's alone.  Rules marked "proved on the state"
+    are proved by case:case_prove/2: their
     primitive facts (pose/5, tube_mouth/4, ...) come from the state the engine hands
     over, never from the database.
 
@@ -263,7 +265,9 @@ pose_target(hook, hook_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
 
 %   The tube bounds a new hook-like tool (ontology/kinds/hook_like.pl has the rest).
 %   The handle reaches behind a cube at the tube's far end with the gripper outside;
-%   the tool turns inside the tube.
+%   the tool turns inside the tube.  Keyed by the size kind (hook, stick), these facts
+%   are still the hook case's own: they live in its module, so they size the tools of
+%   this case only (the rake has its own reach_margin_m).
 size_constraint(hook, tube_length_m(_, L), [handle_length >= L + reach_margin_m]).
 size_constraint(stick, tube_length_m(_, L), [handle_length >= L + reach_margin_m]).
 size_constraint(hook, tube_inner_m(_, W, H),

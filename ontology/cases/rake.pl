@@ -1,7 +1,7 @@
 /*  The rake case: pull a box lying under a low shelf, out of the arm's reach, back
     towards the robot with a hook-like tool.  Everything the engine knows about this
-    case is here; the engine asks for it through the hook predicates of
-    ontology/README.md.  Rules marked "proved on the state" take their primitive facts
+    case is here, in its own module (case_rake: its helpers are its alone); the engine
+    asks for it through the hook predicates of ontology/README.md.  Rules marked "proved on the state" take their primitive facts
     (pose/5, shelf_front/4, ...) from the state the engine hands over.
 
     The apparatus: a shelf (shelf1) whose clear plate stands on four corner legs above
@@ -217,15 +217,15 @@ pose_target(rake, rake_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
 %   The handle reaches behind a box at the shelf's back with the gripper in front of
 %   it; the prong, rolled down, passes under the plate beside the handle; a flat prong
 %   carried over the box leaves it room.
-size_constraint(hook, shelf_depth_m(_, D), [handle_length >= D + shelf_reach_margin_m]).
-size_constraint(stick, shelf_depth_m(_, D), [handle_length >= D + shelf_reach_margin_m]).
+size_constraint(hook, shelf_depth_m(_, D), [handle_length >= D + reach_margin_m]).
+size_constraint(stick, shelf_depth_m(_, D), [handle_length >= D + reach_margin_m]).
 size_constraint(hook, shelf_clearance_m(_, _, H),
                 [hook_length + handle_width =< H - shelf_prong_margin_m,
                  handle_width =< H - shelf_flat_margin_m]).
 size_constraint(stick, shelf_clearance_m(_, _, H),
                 [handle_width =< H - shelf_flat_margin_m]).
 
-size_parameter(shelf_reach_margin_m, 0.05,
+size_parameter(reach_margin_m, 0.05,
                'handle length beyond the shelf depth: the gripper stays in front of it').
 size_parameter(shelf_prong_margin_m, 0.006,
                'room under the plate beside a rolled-down prong and the handle').

@@ -2,8 +2,10 @@
     the floor under its sweep.  Everything the engine knows about this case is here;
     the engine asks for it through the hook predicates of ontology/README.md.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.
-    Rules marked "proved on the state" are proved by knowledge:kb_prove/2: their
+    Plain Prolog data loaded by knowledge:load_ontology/1 into this case's own module
+    (case/1 below names it), which sees its tool kind's module and the shared files:
+    a helper predicate here is this case's alone.  Rules marked "proved on the state"
+    are proved by case:case_prove/2: their
     primitive facts come from the state the engine hands over.
 
     The apparatus: a door (door1) hinged at a vertical axis, closing counter-clockwise

@@ -1,8 +1,9 @@
 /*  Blocks: the object hierarchy, the rules that turn the catalogue (metres) into
     qualitative structural literals, and the size model of a new block.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.  A
-    case whose tools are blocks says so with case_tool_class(Case, block).
+    Plain Prolog data loaded by knowledge:load_ontology/1 into its own module
+    (kind_block, named by the kind/1 fact below).  A case
+    whose tools are blocks says so with case_tool_class(Case, block).
 
         object
         └── block                     block_length, block_width, block_height,
@@ -11,6 +12,10 @@
             ├── box
             └── cylinder              upright; length = width = diameter
 */
+
+%   This file is the kind block: its clauses load into their own module (kind_block),
+%   seen by the cases whose case_tool_class/2 names it.
+kind(block).
 
 % The hierarchy (object is its root: object(O) marks O as a catalogued object).
 subclass_of(block, object).

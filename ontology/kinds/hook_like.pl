@@ -2,8 +2,9 @@
     catalogue (numbers in metres and degrees) into qualitative structural literals, and
     the size models of a new hook or stick.
 
-    Plain Prolog data loaded into the knowledge base by knowledge:load_ontology/1.  A
-    case whose tools are hook-like says so with case_tool_class(Case, hook_like) and
+    Plain Prolog data loaded by knowledge:load_ontology/1 into its own module
+    (kind_hook_like, named by the kind/1 fact below).  A case
+    whose tools are hook-like says so with case_tool_class(Case, hook_like) and
     gets everything below.
 
         tool
@@ -12,6 +13,10 @@
             │                         hook_side, hook_angle
             └── stick                 handle only
 */
+
+%   This file is the kind hook_like: its clauses load into their own module (kind_hook_like),
+%   seen by the cases whose case_tool_class/2 names it.
+kind(hook_like).
 
 % The hierarchy: subclass_of(?Class, ?Superclass).  A class without a superclass
 % (tool) is a hierarchy's root: tool(O) marks O as a catalogued object.
@@ -115,7 +120,7 @@ side_value(left).
 side_value(right).
 
 %   new_tool_kind(?Class, +Structural, -Kind): a new tool with the structural literals
-%   Structural is sized (geometry_clp:solve_size/4) as a Kind: a stick when they say
+%   Structural is sized (geometry_clp:solve_size/5) as a Kind: a stick when they say
 %   so, else a hook.
 new_tool_kind(hook_like, Structural, Kind) :-
     (   memberchk(stick(_), Structural)

@@ -229,4 +229,57 @@ test(catalogue_ranges_skip_a_sticks_missing_prong) :-
                             hook_length_m(s, 0.0)], R),
     assertion(R = [range(s, handle_length_m, 0.5, handle_length, long, _, _, _)]).
 
+                 /*******************************
+                 *     ONE NAMESPACE PER CASE   *
+                 *******************************/
+
+%   Two cases define the same helper predicate (toy_margin/1) with different values:
+%   each case's hooks, called or proved on the state, see their own.
+two_toys_(F1, F2) :-
+    write_case_file_("case(toy_a).\ntoy_margin(0.1).\n\c
+                      geometry_default(toy_a, m, V, 'a margin') :- toy_margin(V).\n\c
+                      tool_in_use(toy_a, T) :- held(T), toy_margin(M), M < 0.15.\n", F1),
+    write_case_file_("case(toy_b).\ntoy_margin(0.2).\n\c
+                      geometry_default(toy_b, m, V, 'b margin') :- toy_margin(V).\n\c
+                      tool_in_use(toy_b, T) :- held(T), toy_margin(M), M < 0.15.\n", F2),
+    load_ontology_files([F1, F2]).
+
+test(same_helper_name_two_cases_each_sees_its_own,
+     [ setup(two_toys_(F1, F2)),
+       cleanup(( restore_default_, delete_file(F1), delete_file(F2) )) ]) :-
+    case_answer(geometry_default(toy_a, m, A, _)),
+    case_answer(geometry_default(toy_b, m, B, _)),
+    assertion(A == 0.1),
+    assertion(B == 0.2),
+    assertion(case_prove(tool_in_use(toy_a, t), [held(t)])),
+    assertion(\+ case_prove(tool_in_use(toy_b, t), [held(t)])),
+    assertion(\+ ontology_holds(toy_margin(0.3))),
+    findall(M, ontology_holds(toy_margin(M)), Ms),
+    assertion(msort(Ms, [0.1, 0.2])).
+
+%   The hook and the rake both name their margin reach_margin_m (size_parameter/3):
+%   each sizes a new tool with its own, and neither's size constraints touch the other's
+%   tools: a tube fact in the rake's context asks nothing of its new hook.
+test(hook_and_rake_share_a_helper_name) :-
+    once(case_knowledge(hook, size_parameter(reach_margin_m, H, _))),
+    once(case_knowledge(rake, size_parameter(reach_margin_m, R, _))),
+    assertion(number(H)),
+    assertion(number(R)),
+    solve_size(hook, hook, [hook(t)], [tube_length_m(tube1, 0.6)], dims(DH)),
+    memberchk(handle_length=LH, DH),
+    assertion(LH >= 0.6 + H),
+    solve_size(rake, hook, [hook(t)], [tube_length_m(tube1, 0.6)], dims(DR)),
+    memberchk(handle_length=LR, DR),
+    assertion(LR < 0.6),
+    solve_size(rake, hook, [hook(t)], [shelf_depth_m(shelf1, 0.6)], dims(DS)),
+    memberchk(handle_length=LS, DS),
+    assertion(LS >= 0.6 + R),
+    solve_size(hook, hook, [hook(t)], [shelf_depth_m(shelf1, 0.6)], dims(DT)),
+    memberchk(handle_length=LT, DT),
+    assertion(LT < 0.6).
+
+test(case_prove_unknown_predicate_names_case,
+     error(existence_error(case_hook(wedge), tip_in_tube/1))) :-
+    case_prove(wedge, tip_in_tube(t), []).
+
 :- end_tests(case).

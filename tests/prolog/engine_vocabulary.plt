@@ -14,20 +14,20 @@ case_vocabulary_(Atoms) :-
     sort(As, Atoms).
 
 case_atom_(Case) :-
-    kb_clause(case(Case), true).
+    ontology_holds(case(Case)).
 case_atom_(Object) :-
-    kb_clause(task_roles(_, Target, Context), true),
+    ontology_holds(task_roles(_, Target, Context)),
     member(Object, [Target, Context]).
 case_atom_(Object) :-
-    kb_clause(case_extra_objects(_, Extra), true),
+    ontology_holds(case_extra_objects(_, Extra)),
     member(Object-_, Extra).
 case_atom_(PoseName) :-
-    kb_clause(pose_domain(_, Pose, _), true),
+    ontology_holds(pose_domain(_, Pose, _)),
     functor(Pose, PoseName, _).
 case_atom_(Class) :-
-    kb_clause(subclass_of(Class, _), true).
+    ontology_holds(subclass_of(Class, _)).
 case_atom_(Kind) :-
-    kb_clause(size_field(Kind, _, _), true).
+    ontology_holds(size_field(Kind, _, _)).
 
 engine_file_(Path) :-
     module_property(knowledge, file(Here)),

@@ -111,7 +111,7 @@ test(pose_constraints_then_search) :-
     assertion(G = hook_pose(0.0475, 0.0, 0.0)).
 
 test(size_long_handle_for_long_tube) :-
-    solve_size(hook, [hook(t), hook_like(t), handle_length(t, long), hook_side(t, right),
+    solve_size(hook, hook, [hook(t), hook_like(t), handle_length(t, long), hook_side(t, right),
                       hook_length(t, long), handle_width(t, thin)],
                [tube_length_m(tube1, 0.45), tube_inner_m(tube1, 0.04, 0.055),
                 max_tool_length(0.70), min_wall_m(0.004)], R),
@@ -130,26 +130,26 @@ test(size_long_handle_for_long_tube) :-
     assertion(Ang == 90).
 
 test(size_medium_handle_does_not_reach_in_long_tube) :-
-    solve_size(hook, [hook(t), handle_length(t, medium)],
+    solve_size(hook, hook, [hook(t), handle_length(t, medium)],
                [tube_length_m(tube1, 0.45), max_tool_length(0.70)], R),
     assertion(R == infeasible([handle_length(t, medium), tube_length_m(tube1, 0.45)])).
 
 test(size_long_handle_too_long_to_hold) :-
-    solve_size(hook, [hook(t), handle_length(t, long), hook_side(t, left)],
+    solve_size(hook, hook, [hook(t), handle_length(t, long), hook_side(t, left)],
                [max_tool_length(0.3)], R),
     assertion(R == infeasible([handle_length(t, long), max_tool_length(0.3)])).
 
 test(size_kind_conflict) :-
-    solve_size(stick, [hook(t), handle_length(t, short)], [], R),
+    solve_size(hook, stick, [hook(t), handle_length(t, short)], [], R),
     assertion(R == infeasible([hook(t)])).
 
 test(size_hook_angle_whole_degrees) :-
-    solve_size(hook, [hook_angle(t, obtuse)], [], dims(D)),
+    solve_size(hook, hook, [hook_angle(t, obtuse)], [], dims(D)),
     memberchk(hook_angle_deg=A, D),
     assertion(A == 128).
 
 test(size_wedge_long_above_one) :-
-    solve_size(block, [block(w), shape(w, triangular_prism), block_length(w, long),
+    solve_size(wedge, block, [block(w), shape(w, triangular_prism), block_length(w, long),
                        mechanical_advantage(w, above_one)],
                [door_gap_m(door1, 0.01), min_wall_m(0.004)], R),
     assertion(R == dims([length=0.16, width=0.085, height=0.0475, tip_height=0.0024,
@@ -158,7 +158,7 @@ test(size_wedge_long_above_one) :-
 %   A new wedge's tip is blunted: at least min_tip_height_m (two nozzle widths), below
 %   its back height and below the door's gap, so that it slides under the door.
 test(size_wedge_tip_blunted) :-
-    solve_size(block, [shape(w, triangular_prism), block_length(w, long)],
+    solve_size(wedge, block, [shape(w, triangular_prism), block_length(w, long)],
                [door_gap_m(door1, 0.002)], dims(D)),
     memberchk(tip_height=T, D),
     memberchk(height=H, D),
@@ -167,7 +167,7 @@ test(size_wedge_tip_blunted) :-
     assertion(T < H).
 
 test(size_wedge_tip_bounds_posted) :-
-    size_constraints(block, [shape(w, triangular_prism)], [door_gap_m(door1, 0.01)], D),
+    size_constraints(wedge, block, [shape(w, triangular_prism)], [door_gap_m(door1, 0.01)], D),
     memberchk(tip_height=T, D),
     inf(T, Lo),
     sup(T, Hi),
@@ -178,7 +178,7 @@ test(size_wedge_tip_bounds_posted) :-
 
 %   A context fact min_tip_height_m(M) overrides the default of two nozzle widths.
 test(size_wedge_tip_minimum_from_context) :-
-    solve_size(block, [shape(w, triangular_prism)],
+    solve_size(wedge, block, [shape(w, triangular_prism)],
                [door_gap_m(door1, 0.01), min_tip_height_m(0.003)], dims(D)),
     memberchk(tip_height=T, D),
     assertion(T >= 0.003),
@@ -186,51 +186,51 @@ test(size_wedge_tip_minimum_from_context) :-
 
 %   A door gap lower than the printable tip: no new wedge.
 test(size_wedge_tip_gap_below_printable) :-
-    solve_size(block, [shape(w, triangular_prism)], [door_gap_m(door1, 0.0005)], R),
+    solve_size(wedge, block, [shape(w, triangular_prism)], [door_gap_m(door1, 0.0005)], R),
     assertion(R == infeasible([shape(w, triangular_prism), door_gap_m(door1, 0.0005)])).
 
 %   A box or a cylinder has no tip.
 test(size_box_has_no_tip) :-
     forall(member(S, [box, cylinder]),
-           ( solve_size(block, [shape(w, S)], [door_gap_m(door1, 0.01)], dims(D)),
+           ( solve_size(wedge, block, [shape(w, S)], [door_gap_m(door1, 0.01)], dims(D)),
              memberchk(tip_height=T, D),
              assertion(T =:= 0) )).
 
 %   Left to the search, the shape is a prism (the first choice), blunted as well.
 test(size_block_unbound_shape_blunted) :-
-    solve_size(block, [block_length(w, long)], [door_gap_m(door1, 0.01)], dims(D)),
+    solve_size(wedge, block, [block_length(w, long)], [door_gap_m(door1, 0.01)], dims(D)),
     assertion(memberchk(shape=triangular_prism, D)),
     memberchk(tip_height=T, D),
     assertion(T >= 0.0008).
 
 test(size_wedge_gap_too_high) :-
-    solve_size(block, [shape(w, triangular_prism), block_height(w, low)],
+    solve_size(wedge, block, [shape(w, triangular_prism), block_height(w, low)],
                [door_gap_m(door1, 0.05)], R),
     assertion(R == infeasible([block_height(w, low), door_gap_m(door1, 0.05)])).
 
 %   The strength check's thickening: a handle at least W wide, within its literals.
 test(size_min_handle_width) :-
-    solve_size(hook, [handle_length(t, long), handle_width(t, thin)],
+    solve_size(hook, hook, [handle_length(t, long), handle_width(t, thin)],
                [tube_inner_m(tube1, 0.04, 0.055), min_handle_width_m(0.0101)], dims(D)),
     memberchk(handle_width=W, D),
     assertion(W >= 0.0101),
     assertion(W < 0.012).
 
 test(size_min_handle_width_infeasible) :-
-    solve_size(hook, [handle_width(t, thin)], [min_handle_width_m(0.0159)], R),
+    solve_size(hook, hook, [handle_width(t, thin)], [min_handle_width_m(0.0159)], R),
     assertion(R == infeasible([handle_width(t, thin), min_handle_width_m(0.0159)])).
 
 test(size_cylinder_width_equals_length) :-
-    solve_size(block, [shape(w, cylinder), block_length(w, short)], [], dims(D)),
+    solve_size(wedge, block, [shape(w, cylinder), block_length(w, short)], [], dims(D)),
     memberchk(length=L, D),
     memberchk(width=W, D),
     assertion(L =:= W).
 
 test(size_unknown_value, [error(domain_error(structural_literal(hook), handle_length(t, huge)))]) :-
-    solve_size(hook, [handle_length(t, huge)], [], _).
+    solve_size(hook, hook, [handle_length(t, huge)], [], _).
 
 test(size_spatial_literals_ignored) :-
-    solve_size(hook, [handle_length(t, short), behind(t, cube1), in_tube(t, tube1)], [], R),
+    solve_size(hook, hook, [handle_length(t, short), behind(t, cube1), in_tube(t, tube1)], [], R),
     assertion(R = dims(_)).
 
 %   Law: for every choice of up to two required hook literals and one negated one,
@@ -274,35 +274,35 @@ sublist_([X|Xs], [X|Ys]) :-
 sublist_([_|Xs], Ys) :-
     sublist_(Xs, Ys).
 
-%   Law (round trip): a tool sized by solve_size/4 for two qualitative values has, when
+%   Law (round trip): a tool sized by solve_size/5 for two qualitative values has, when
 %   its dimensions are read back through the ontology's ranges, exactly those values.
 test(size_round_trip_hook) :-
     Props = [handle_length, handle_width, hook_length, hook_width, hook_angle],
     forall(( select(P1, Props, Rest), member(P2, Rest), P1 @< P2,
-             kb_clause(qualitative_range(P1, V1, _, _, _), true),
-             kb_clause(qualitative_range(P2, V2, _, _, _), true) ),
+             shared_clause(qualitative_range(P1, V1, _, _, _), true),
+             shared_clause(qualitative_range(P2, V2, _, _, _), true) ),
            ( L1 =.. [P1, t, V1],
              L2 =.. [P2, t, V2],
-             solve_size(hook, [hook(t), L1, L2, hook_side(t, left)], [], dims(D)),
+             solve_size(hook, hook, [hook(t), L1, L2, hook_side(t, left)], [], dims(D)),
              hook_catalogue_(t, D, Facts),
-             assertion(kb_prove(L1, Facts)),
-             assertion(kb_prove(L2, Facts)),
-             assertion(kb_prove(hook_side(t, left), Facts)) )).
+             assertion(case_prove(hook, L1, Facts)),
+             assertion(case_prove(hook, L2, Facts)),
+             assertion(case_prove(hook, hook_side(t, left), Facts)) )).
 
 test(size_round_trip_block) :-
     Props = [block_length, block_width, block_height, mechanical_advantage],
     forall(( select(P1, Props, Rest), member(P2, Rest), P1 @< P2,
-             kb_clause(qualitative_range(P1, V1, _, _, _), true),
-             kb_clause(qualitative_range(P2, V2, _, _, _), true),
+             shared_clause(qualitative_range(P1, V1, _, _, _), true),
+             shared_clause(qualitative_range(P2, V2, _, _, _), true),
              member(Shape, [triangular_prism, box]) ),
            ( L1 =.. [P1, w, V1],
              L2 =.. [P2, w, V2],
-             solve_size(block, [shape(w, Shape), L1, L2], [], R),
+             solve_size(wedge, block, [shape(w, Shape), L1, L2], [], R),
              (   R = dims(D)
              ->  block_catalogue_(w, D, Facts),
-                 assertion(kb_prove(L1, Facts)),
-                 assertion(kb_prove(L2, Facts)),
-                 assertion(kb_prove(shape(w, Shape), Facts))
+                 assertion(case_prove(wedge, L1, Facts)),
+                 assertion(case_prove(wedge, L2, Facts)),
+                 assertion(case_prove(wedge, shape(w, Shape), Facts))
              ;   % a long block (>= 0.12 m) would need a height above the 0.08 m maximum
                  assertion(R == infeasible([L1, L2])),
                  assertion([L1, L2] == [block_length(w, long),

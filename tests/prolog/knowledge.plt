@@ -14,8 +14,22 @@ test(default_ontology_loads, [setup(load_default_ontology)]) :-
     kb_loaded_files(Files),
     length(Files, N),
     assertion(N >= 6),
-    assertion(kb_holds(subclass_of(hook, hook_like))),
-    assertion(kb_holds(qualitative_range(handle_length, medium, 0.25, 0.45))).
+    assertion(kb_module_holds(kind_hook_like, subclass_of(hook, hook_like))),
+    assertion(shared_holds(qualitative_range(handle_length, medium, 0.25, 0.45))).
+
+%   Each case file is its own module, seeing its kind's and the shared one; each kind
+%   file is its own; the other files are shared (kb).
+test(each_case_and_kind_has_its_module, [setup(load_default_ontology)]) :-
+    assertion(kb_case_module(hook, case_hook)),
+    assertion(kb_case_module(wedge, case_wedge)),
+    assertion(kb_kind_module(hook_like, kind_hook_like)),
+    kb_module_scope(case_hook, HookScope),
+    assertion(HookScope == [case_hook, kind_hook_like, kb]),
+    kb_module_scope(case_wedge, WedgeScope),
+    assertion(WedgeScope == [case_wedge, kind_block, kb]),
+    assertion(\+ kb_module_defines(kb, spatial_definition/4)),
+    assertion(\+ kb_module_defines(kb, subclass_of/2)),
+    assertion(kb_module_defines(kb, qualitative_range/5)).
 
 %   The files of ontology/ first, then each subfolder's, in name order.
 test(default_ontology_reads_subfolders_in_order, [setup(load_default_ontology)]) :-
@@ -34,9 +48,9 @@ test(default_ontology_reads_subfolders_in_order, [setup(load_default_ontology)])
     assertion(IWedge < IBlock).
 
 test(reload_replaces_clauses, [setup(load_default_ontology)]) :-
-    aggregate_all(count, kb_clause(any_length(_), _), N0),
+    aggregate_all(count, shared_clause(any_length(_), _), N0),
     load_default_ontology,
-    aggregate_all(count, kb_clause(any_length(_), _), N),
+    aggregate_all(count, shared_clause(any_length(_), _), N),
     assertion(N0 == 3),
     assertion(N == 3).
 
@@ -71,21 +85,21 @@ test(calls_may_refer_to_primitive_predicates,
      [ setup(write_temp_ontology_("primitive_predicate(weight_kg_kn/2).\nheavy_kn(X) :- weight_kg_kn(X, W), W > 1.\n", F)),
        cleanup(( kb_reset_all, delete_file(F), load_default_ontology )) ]) :-
     load_ontology(F),
-    \+ kb_holds(heavy_kn(rock)),
+    \+ shared_holds(heavy_kn(rock)),
     kb_assert_facts([weight_kg_kn(rock, 2.0)]),
-    kb_holds(heavy_kn(rock)).
+    shared_holds(heavy_kn(rock)).
 
 test(world_facts_and_reset,
      [ setup(load_default_ontology), cleanup(kb_reset) ]) :-
     kb_assert_facts([object_kind(h9, hook), handle_length_m(h9, 0.5)]),
-    kb_holds(handle_length(h9, V)),
+    kb_module_holds(kind_hook_like, handle_length(h9, V)),
     assertion(V == long),
     kb_retract_facts(handle_length_m(h9, _)),
-    \+ kb_holds(handle_length(h9, _)),
-    kb_holds(hook(h9)),
+    \+ kb_module_holds(kind_hook_like, handle_length(h9, _)),
+    kb_module_holds(kind_hook_like, hook(h9)),
     kb_reset,
-    \+ kb_holds(hook(h9)),
-    kb_holds(subclass_of(stick, hook_like)).
+    \+ kb_module_holds(kind_hook_like, hook(h9)),
+    kb_module_holds(kind_hook_like, subclass_of(stick, hook_like)).
 
 test(assert_rejects_non_ground, [error(instantiation_error)]) :-
     kb_assert_facts([pose(_, 0, 0, 0, 0)]).
@@ -94,9 +108,28 @@ test(assert_rejects_clauses, [error(type_error(fact, _))]) :-
     kb_assert_facts([(a :- b)]).
 
 test(prove_from_fact_list, [setup(load_default_ontology)]) :-
-    findall(V, kb_prove(handle_length(h, V), [object_kind(h, stick), handle_length_m(h, 0.2)]), Vs),
+    findall(V, kb_module_prove(case_hook, handle_length(h, V),
+                               [object_kind(h, stick), handle_length_m(h, 0.2)]), Vs),
     assertion(Vs == [short]),
-    \+ kb_prove(handle_length(h, _), [object_kind(h, stick)]).
+    \+ kb_module_prove(case_hook, handle_length(h, _), [object_kind(h, stick)]),
+    %   a kind's rule is not the shared module's
+    catch(shared_prove(handle_length(h, _), [object_kind(h, stick)]), E, true),
+    assertion(E = error(existence_error(procedure, kb:handle_length/2), _)).
+
+%   A case's body may call only its own, its kind's and the shared predicates: a call
+%   to another case's helper is an unknown predicate.
+test(case_cannot_call_another_case_s_helper,
+     [ setup(write_temp_ontology_("case(peek_kn).\nlooks(X) :- tip_in_tube(X).\n", F)),
+       cleanup(delete_file(F)),
+       error(existence_error(procedure, tip_in_tube/1), file(F, 2, _, _)) ]) :-
+    load_default_ontology,
+    load_ontology(F).
+
+test(two_roles_in_one_file_rejected,
+     [ setup(write_temp_ontology_("case(a_kn).\ncase(b_kn).\n", F)),
+       cleanup(delete_file(F)),
+       error(domain_error(one_role_per_file, _), file(F, 1, _, _)) ]) :-
+    load_ontology(F).
 
 test(reset_all_then_reload, [cleanup(load_default_ontology)]) :-
     load_default_ontology,

@@ -28,9 +28,9 @@ test(shape) :-
     assertion(As == [shape(w, triangular_prism), shape(w, cylinder)]).
 
 test(alternatives_do_not_satisfy_replaced_literal) :-
-    forall(( kb_clause(replacement_operator(Op), true),
+    forall(( shared_clause(replacement_operator(Op), true),
              H =.. [Op, x],
-             kb_clause(H, L) ),
+             shared_clause(H, L) ),
            ( replacement(L, G, As),
              assertion(G == H),
              assertion(\+ memberchk(L, As)) )).

@@ -99,7 +99,7 @@ def test_a_weak_created_hook_is_thickened_by_the_size_model(engine):
     assert weak.verdict == "fail" and weak.safety_factor < MIN_SAFETY_FACTOR
     assert weak.required_handle_width_m == pytest.approx(0.0101)
     assert str(thickening_fact(weak)) == "min_handle_width_m(0.0101)"
-    reply = thicker_dims(engine, "hook", [l for l in parse_spec("hook", CREATED_HOOK)],
+    reply = thicker_dims(engine, "hook", "hook", [l for l in parse_spec("hook", CREATED_HOOK)],
                          context, weak)
     assert reply.name == "dims"
     dims = {str(eq.args[0]): eq.args[1] for eq in reply.args[0]}
@@ -119,7 +119,7 @@ def test_a_hook_the_size_model_cannot_thicken_is_rejected_naming_the_conflict(en
     sized = size_tool(engine, "hook", literals, context, "hook_new1")
     weak = check_strength(sized.spec, load(30.0, 0.589))
     assert weak.required_handle_width_m > 0.012
-    reply = thicker_dims(engine, "hook", literals, context, weak)
+    reply = thicker_dims(engine, "hook", "hook", literals, context, weak)
     assert reply.name == "infeasible"
     conflict = [str(t) for t in reply.args[0]]
     assert "handle_width(new_tool,thin)" in conflict
@@ -135,7 +135,7 @@ def test_a_rake_under_a_shelf_cannot_be_thickened_beyond_the_shelf_clearance(eng
     literals = parse_spec("rake", "handle_length=long")
     sized = size_tool(engine, "rake", literals, context, "rake_new1")
     weak = check_strength(sized.spec, load(60.0, sized.spec.handle_length - 0.01))
-    reply = thicker_dims(engine, "hook", literals, context, weak)
+    reply = thicker_dims(engine, "rake", "hook", literals, context, weak)
     assert reply.name == "infeasible"
     assert any(str(t).startswith("shelf_clearance_m(") for t in reply.args[0])
 
