@@ -51,6 +51,10 @@ how a missing one is reported), besides those of action_model.pl and abstract_st
   - learned_action_names(?Case, ?Names): name(Skill, Effect, Name) terms naming the
     action learned from the demonstration (observe:observe_demonstration/4's
     action_names/1 option).
+
+The experiment strategies answer two hooks of this module, experiment_strategy/1 and
+strategy_experiment/3, one clause group each (prolog/strategy.pl): they choose among the
+candidates of paper_candidates/2 and informative_candidates/2.
 */
 
 :- use_module(library(lists)).
