@@ -70,7 +70,8 @@ class Strategy:
         """
         if taught and self.repeat_taught and not idle:
             return None
-        tool, tested, pose_test = experiment.args[0], experiment.args[1], bool(experiment.args[5])
+        tool, tested, negated = experiment.args[0], experiment.args[1], experiment.args[5]
+        pose_test = bool(negated)
         any_tool = pose_test and (not taught or self.pose_any_tool)
         return Compound("skip", ("any" if any_tool else tool, tested))
 

@@ -160,8 +160,8 @@ def test_strategies(tmp_path_factory):
     path.write_text(TEST_STRATEGIES_PL)
     Engine.instance(load=[path])
     with pytest.MonkeyPatch.context() as mp:
-        mp.setitem(STRATEGIES, "reversed", Strategy("reversed", "the paper's order reversed",
-                                                    stop="exhausted"))
+        mp.setitem(STRATEGIES, "reversed",
+                   Strategy("reversed", "the paper's order reversed", stop="exhausted"))
         mp.setitem(STRATEGIES, "idle", Strategy("idle", "no experiment", stop="exhausted"))
         yield
 
