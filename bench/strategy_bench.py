@@ -37,10 +37,9 @@ ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
 
 from creative_py.case import get_case, load_cases  # noqa: E402
+from creative_py.learning.strategies import STRATEGIES  # noqa: E402
 from creative_py.sweep import (SweepOptions, parse_ints, plan_runs, read_csv,  # noqa: E402
                                run_sweep)
-
-STRATEGIES = ["paper", "informative", "random"]
 
 
 def _machine() -> dict:
@@ -118,8 +117,8 @@ def cmd_table(args) -> int:
         folder = Path(args.source)
         meta = json.loads((folder / "sweep.json").read_text())
     else:
-        runs = plan_runs(args.cases, STRATEGIES, [0], parse_ints(args.world_seeds,
-                                                                 "--world-seeds"))
+        runs = plan_runs(args.cases, list(STRATEGIES), [0],
+                         parse_ints(args.world_seeds, "--world-seeds"))
         res = run_sweep(runs, Path(tempfile.mkdtemp(prefix="strategy-bench-")),
                         SweepOptions(phase="use"))
         folder, meta = res.folder, {"wall_time_s": res.wall_time_s}

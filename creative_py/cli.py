@@ -23,6 +23,8 @@ from typing import Iterator, Optional
 
 import typer
 
+from creative_py.learning.strategies import STRATEGIES, UnknownStrategy, strategies_help
+
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="CREATIVE: learn to use tools from one demonstration, and create new ones.")
 
@@ -219,7 +221,7 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
 def sweep(
     cases: list[str] = typer.Argument(..., help="Case ids (creative cases lists them)."),
     strategies: str = typer.Option("informative", "--strategies",
-                                   help="Comma-separated: paper, informative, random."),
+                                   help="Comma-separated: " + ", ".join(STRATEGIES) + "."),
     seeds: str = typer.Option("0", "--seeds", help="Seeds: N, A-B or a comma list."),
     world_seeds: Optional[str] = typer.Option(None, "--world-seeds", help="World seeds "
                                               "(N, A-B, a comma list); default: the world "
@@ -300,9 +302,7 @@ def run(
     eval_trials: int = typer.Option(4, "--eval-trials", help="Evaluation trials of the "
                                     "learned model after tool-use learning."),
     strategy: str = typer.Option("informative", "--strategy", help="How experiments are "
-                                 "chosen: informative (largest expected reduction of the "
-                                 "version space, certified stop), paper (Algorithm 1: one "
-                                 "literal per trial, K successes to stop) or random."),
+                                 "chosen: " + strategies_help() + "."),
     world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
                                          "shipped one of the case)."),
     resume: Optional[Path] = typer.Option(None, "--resume", help="Resume this interrupted "
@@ -358,9 +358,10 @@ def run(
         opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
                           consecutive=consecutive, eval_trials=eval_trials, video=video,
                           gui=gui, strategy=strategy, world_seed=world_seed)
+    except UnknownStrategy as exc:
+        _fail(f"--strategy: {exc}")
     except ValueError as exc:
-        _fail(f"--phase: {exc}" if "phase" in str(exc) else
-              f"--strategy: {exc}" if "strategy" in str(exc) else str(exc))
+        _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
     try:
         with _one_line_errors(), _stdout_to_stderr():
             folder = run_case(case, out, opts, progress=lambda m: console.print(m, markup=False,

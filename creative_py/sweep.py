@@ -108,15 +108,16 @@ def parse_ints(text: str, option: str) -> list[int]:
 
 def parse_strategies(text: str) -> list[str]:
     """Parse ``"paper,informative"``; raise ValueError naming an unknown strategy."""
-    from creative_py.learning.run import STRATEGIES
+    from creative_py.learning.strategies import UnknownStrategy, strategy_named
 
     names = [s.strip() for s in str(text).split(",") if s.strip()]
     if not names:
         raise ValueError("--strategies: no strategy given")
     for s in names:
-        if s not in STRATEGIES:
-            raise ValueError(f"--strategies: unknown strategy {s!r}; strategies: "
-                             f"{', '.join(STRATEGIES)}")
+        try:
+            strategy_named(s)
+        except UnknownStrategy as exc:
+            raise ValueError(f"--strategies: {exc}") from None
     if len(set(names)) != len(names):
         raise ValueError(f"--strategies {text}: a strategy is given twice")
     return names

@@ -56,7 +56,8 @@ if it needs a new module, its use_module/1 below.
 :- use_module(experiment, [learn_from_demonstration/3, observed_state/3,
                            plan_experiment/4, plan_experiment/5, plan_experiment/6,
                            plan_use/5,
-                           label_trial/7]).
+                           label_trial/7, experiment_strategies/1]).
+:- use_module(strategy, []).        % the experiment strategies (experiment's hooks)
 :- use_module(creation, [next_tool/6, creation_candidates/3]).
 :- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6,
                             plan_models/5, created_models/5, write_model_file/5]).
@@ -134,6 +135,7 @@ api_op(next_experiment(Case, VS, Facts), R, plan_experiment(Case, VS, Facts, R))
 api_op(next_experiment(Case, VS, Facts, Skip), R, plan_experiment(Case, VS, Facts, Skip, R)).
 api_op(next_experiment(Case, VS, Facts, Skip, Options), R,
        plan_experiment(Case, VS, Facts, Skip, Options, R)).
+api_op(experiment_strategies, Templates, experiment_strategies(Templates)).
 api_op(created_models(Models, VS, Replaced, Instance), Ms,
        created_models(Models, VS, Replaced, Instance, Ms)).
 api_op(plan_use(Case, VS, Facts, Options), R, plan_use(Case, VS, Facts, Options, R)).

@@ -8,6 +8,10 @@
             label_trial/7,         % +Case, +VS0, +Experiment, +Primitive, +Label, +Mode, -VS
             task_objects/3,        % +Case, +State, -Objects
             next_experiment/6,     % +Case, +VS, +Objects, +Context, +Options, -Result
+            experiment_strategies/1, % -Templates
+            paper_candidates/2,    % +Problem, -Candidates
+            informative_candidates/2, % +Problem, -Candidates
+            feasible_experiment/3, % +Problem, +Candidates, -Experiment
             trial_example/6,       % +Case, +Tool, +Target, +Ctx, +Primitive, -Example
             literal_role/3,        % +Head, +Literal, -Role
             literal_prior/3,       % +Head, +Literal, -P
@@ -47,6 +51,10 @@ how a missing one is reported), besides those of action_model.pl and abstract_st
   - learned_action_names(?Case, ?Names): name(Skill, Effect, Name) terms naming the
     action learned from the demonstration (observe:observe_demonstration/4's
     action_names/1 option).
+
+The experiment strategies answer two hooks of this module, experiment_strategy/1 and
+strategy_experiment/3, one clause group each (prolog/strategy.pl): they choose among the
+candidates of paper_candidates/2 and informative_candidates/2.
 */
 
 :- use_module(library(lists)).
@@ -55,7 +63,6 @@ how a missing one is reported), besides those of action_model.pl and abstract_st
 :- use_module(library(error)).
 :- use_module(library(option)).
 :- use_module(library(ordsets)).
-:- use_module(library(random)).
 :- use_module(version_space).
 :- use_module(lgg, []).
 :- use_module(geometry_clp).
@@ -63,6 +70,10 @@ how a missing one is reported), besides those of action_model.pl and abstract_st
 :- use_module(observe).
 :- use_module(action_model).
 :- use_module(case).
+
+:- multifile
+    experiment_strategy/1,
+    strategy_experiment/3.
 
 %!  learn_from_demonstration(+Case, +Steps, -Result) is det.
 %
@@ -257,17 +268,15 @@ experiment_object_(exploit(Tool, _, _, Required), Tool, Required).
 %     - target(Target), context(Ctx): the head's second and third arguments (required).
 %     - skip(Skip): experiments skip(Object, Literal) to leave out (default []);
 %       skip(any, Literal) leaves out the literal whatever the object.
-%     - strategy(S): how the experiment is chosen (default paper):
-%         - paper: the paper's Algorithm 1. Every unknown literal with every object
-%           that h_g covers; the fewest literals of h_s violated wins, then the
-%           literal's order in h_s, then the object's name.
-%         - informative: the experiment with the largest expected reduction of the
-%           version space (informative_experiment_/10 below); it may violate several
-%           unknown literals at once, and needs no h_g cover (after a failure of
-%           several literals h_g holds one of them, chosen greedily, and the others
-%           still have to be split).
-%         - random(Seed): a random experiment among the paper's candidates (those
-%           h_g covers), drawn with SWI-Prolog's random generator seeded with Seed.
+%     - strategy(S): how the experiment is chosen (default paper), one of the
+%       strategies experiment_strategies/1 lists; prolog/strategy.pl defines paper
+%       (the paper's Algorithm 1), informative (the largest expected reduction of the
+%       version space) and random(Seed). An unknown strategy is a domain error naming
+%       the declared ones.
+%
+%   The strategy's strategy_experiment/3 clause chooses the experiment from the
+%   candidates of paper_candidates/2 or informative_candidates/2; when it chooses none,
+%   the result is the learned model's use (exploit/4) or no_experiment/1.
 %
 %   Result is one of
 %
@@ -298,64 +307,99 @@ next_experiment(Case, VS, Objects, Context, Options, Result) :-
     ;   domain_error(options_with(target(_), context(_)), Options)
     ),
     option(strategy(Strategy), Options, paper),
-    (   ( memberchk(Strategy, [paper, informative]) ; Strategy = random(_) )
-    ->  true
-    ;   domain_error(oneof([paper, informative, random(seed)]), Strategy)
-    ),
+    must_be_strategy_(Strategy),
     vs_bounds(VS, HS, HG),
     clause_head_body_(HS, Head, _),
     Head =.. [_, _Tool, Target, Ctx],
-    hypothesis_parts(HS, _Struct, Spatial, Task),
     case_answer(untestable_literals(Case, Untestable)),
     option(skip(Skip), Options, []),
-    (   Strategy == informative,
-        vs_space(VS, _, _, Cs),
-        ord_union(Cs, Used),
-        length(Used, NUsed),
-        NUsed =< 20                 % the count is exact (vs_count/3)
-    ->  (   informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context,
-                                    Skip, cand(L, O, Req, Neg, Viol), Pose)
-        ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
-        ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
-        )
-    ;   unknown_literals_(HS, HG, Unknown),
-        findall(Score-cand(L, O, Req, Neg, Viol),
-                candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
-                           L, O, Req, Neg, Viol, Score),
-                Scored),
-        exclude(skipped_(Skip), Scored, Scored1),
-        keysort(Scored1, Sorted),
-        pairs_values(Sorted, Cands0),
-        strategy_order_(Strategy, Cands0, Cands),
-        first_feasible_(Case, Cands, Context, cand(L, O, Req, Neg, Viol), Pose)
-    ->  Result = experiment(O, L, Viol, Pose, Req, Neg)
-    ;   exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
+    Problem = experiment_problem(Case, VS, HS, HG, Objects, Context, Skip, Untestable),
+    (   strategy_experiment(Strategy, Problem, Experiment)
+    ->  Result = Experiment
+    ;   hypothesis_parts(HS, _Struct, Spatial, Task),
+        exploit_(Case, HS, HG, Head, Spatial, Task, Objects, Context, Result)
     ).
 
-%   The paper keeps its order (so does informative when its count would not be
-%   exact); random draws among distinct experiments (one object at one pose is one
-%   experiment, whichever of its violated literals names it).
-strategy_order_(paper, Cands, Cands).
-strategy_order_(informative, Cands, Cands).
-strategy_order_(random(Seed), Cands0, Cands) :-
-    must_be(integer, Seed),
-    distinct_experiments_(Cands0, [], Distinct),
-    set_random(seed(Seed)),
-    random_permutation(Distinct, Cands).
-
-distinct_experiments_([], _, []).
-distinct_experiments_([C|Cs], Seen, Out) :-
-    C = cand(_, O, _, Neg, _),
-    (   memberchk_eq_(O-Neg, Seen)
-    ->  Out = Out1
-    ;   Out = [C|Out1]
-    ),
-    distinct_experiments_(Cs, [O-Neg|Seen], Out1).
-
-%!  informative_experiment_(+Case, +VS, +Target, +Ctx, +Untestable, +Objects,
-%!                          +Context, +Skip, -Chosen, -Pose) is semidet.
+%!  experiment_strategy(?Template) is nondet.
 %
-%   The informative strategy. The hypotheses are those of version_space:vs_space/4:
+%   Hook: Template declares a strategy of next_experiment/6, its name and arity, each
+%   argument the type must_be/2 checks (random(integer)). One clause per strategy,
+%   beside its strategy_experiment/3 clauses (prolog/strategy.pl): the strategies are
+%   what these clauses declare.
+
+%!  strategy_experiment(+Strategy, +Problem, -Experiment) is semidet.
+%
+%   Hook: the experiment that Strategy (an instance of its experiment_strategy/1
+%   template) chooses for Problem, the trial's problem as next_experiment/6 builds it
+%   (opaque: give it to paper_candidates/2, informative_candidates/2 and
+%   feasible_experiment/3). Experiment is experiment(Object, Tested, Violated, Pose,
+%   Required, Negated) as feasible_experiment/3 gives it; failing means that nothing
+%   is left to test (next_experiment/6 then uses the learned model).
+
+%!  experiment_strategies(-Templates) is det.
+%
+%   The declared strategies (experiment_strategy/1), in the order they were loaded.
+%
+%   ==
+%   ?- experiment_strategies(Ts).
+%   Ts = [paper, informative, random(integer)].
+%   ==
+
+experiment_strategies(Templates) :-
+    findall(T, experiment_strategy(T), Templates).
+
+must_be_strategy_(Strategy) :-
+    experiment_strategies(Templates),
+    (   var(Strategy)
+    ->  instantiation_error(Strategy)
+    ;   callable(Strategy),
+        member(Template, Templates),
+        functor(Template, Name, Arity),
+        functor(Strategy, Name, Arity)
+    ->  Template =.. [_|Types],
+        Strategy =.. [_|Args],
+        maplist(must_be, Types, Args)
+    ;   domain_error(oneof(Templates), Strategy)
+    ).
+
+%!  paper_candidates(+Problem, -Candidates) is det.
+%
+%   The paper's candidates (Algorithm 1), in its order: every unknown literal of h_s
+%   (in h_s, not in h_g; not a task literal nor an untestable one) with every object
+%   that h_g covers, as cand(Tested, Object, Required, Negated, Violated). A structural
+%   literal is tested by an object that violates it at an h_s pose, a spatial one by a
+%   pose that negates it (Negated = [Tested]). The fewest literals of h_s violated come
+%   first, then the literal's order in h_s, then the object's name; the experiments of
+%   the problem's skip list are left out.
+
+paper_candidates(experiment_problem(Case, _VS, HS, HG, Objects, _Context, Skip,
+                                    Untestable),
+                 Cands) :-
+    clause_head_body_(HS, Head, _),
+    hypothesis_parts(HS, _Struct, Spatial, Task),
+    unknown_literals_(HS, HG, Unknown),
+    findall(Score-cand(L, O, Req, Neg, Viol),
+            candidate_(Case, Untestable, HS, HG, Head, Unknown, Spatial, Task, Objects,
+                       L, O, Req, Neg, Viol, Score),
+            Scored),
+    exclude(skipped_(Skip), Scored, Scored1),
+    keysort(Scored1, Sorted),
+    pairs_values(Sorted, Cands).
+
+%!  feasible_experiment(+Problem, +Candidates, -Experiment) is semidet.
+%
+%   The first of Candidates (cand/5 terms) whose pose constraints have a solution
+%   (solve_pose/5), as experiment(Object, Tested, Violated, Pose, Required, Negated);
+%   fails when none has.
+
+feasible_experiment(experiment_problem(Case, _, _, _, _, Context, _, _), Cands,
+                    experiment(O, L, Viol, Pose, Req, Neg)) :-
+    first_feasible_(Case, Cands, Context, cand(L, O, Req, Neg, Viol), Pose).
+
+%!  informative_candidates(+Problem, -Candidates) is semidet.
+%
+%   The candidates of the informative strategy, the most informative first. The
+%   hypotheses are those of version_space:vs_space/4:
 %   subsets of h_s's literals that exclude every recorded negative. A candidate
 %   experiment is an object at an h_s pose, or at a pose that negates one spatial
 %   literal of h_s (any object, covered by h_g or not); V is the set of literals of
@@ -366,18 +410,25 @@ distinct_experiments_([C|Cs], Seen, Out) :-
 %
 %       R = p (N - N_s) + (1 - p) N_s
 %
-%   and the largest R wins; ties go to the likelier success (a success also moves
-%   the task on and shrinks h_s, which can turn an object that violates several
+%   and the largest R comes first; ties go to the likelier success (a success also
+%   moves the task on and shrinks h_s, which can turn an object that violates several
 %   literals into a test of one), then to fewer violated literals, to the earlier
 %   literals of h_s, and to the object's name. An experiment whose outcome every
 %   hypothesis agrees on (N_s = 0 or N_s = N) cannot change the version space and is
-%   not a candidate: when none is left (or none has a feasible pose), the predicate
-%   fails, which is the certified stop. next_experiment/6 calls it only while the
-%   count is exact (at most 20 literals in the negatives' violation sets, vs_count/3);
-%   beyond, it takes the paper's order.
-informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context, Skip,
-                        Chosen, Pose) :-
+%   not a candidate: when none is left (or none has a feasible pose), nothing can
+%   change the version space, which is the certified stop. The predicate fails when
+%   the count is not exact (more than 20 literals in the negatives' violation sets,
+%   vs_count/3), where the expected reduction cannot be computed.
+
+informative_candidates(experiment_problem(Case, VS, HS0, _, Objects, _, Skip,
+                                          Untestable),
+                       Cands) :-
     vs_space(VS, HS, Lits, Cs),
+    ord_union(Cs, Used),
+    length(Used, NUsed),
+    NUsed =< 20,                    % the count is exact (vs_count/3)
+    clause_head_body_(HS0, Head0, _),
+    Head0 =.. [_, _, Target, Ctx],
     clause_head_body_(HS, Head, _),
     Head =.. [_, _, Target, Ctx],
     maplist(literal_prior(Head), Lits, Priors),
@@ -389,8 +440,7 @@ informative_experiment_(Case, VS, Target, Ctx, Untestable, Objects, Context, Ski
             Scored),
     exclude(skipped_(Skip), Scored, Scored1),
     keysort(Scored1, Sorted),
-    pairs_values(Sorted, Cands),
-    first_feasible_(Case, Cands, Context, Chosen, Pose).
+    pairs_values(Sorted, Cands).
 
 informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W, Spatial, Task,
                        Objects, k(NegR, NegP, K, PosV, O), cand(L, O, Req, Neg, Viol)) :-

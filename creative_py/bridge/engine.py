@@ -593,13 +593,20 @@ class Engine:
         ``exploit(Tool, Violated, Pose, Required)`` when nothing is left to test, or
         ``no_experiment(Why)`` (Algorithm 1's choice, ``experiment:plan_experiment/6``).
 
-        ``strategy`` is ``"paper"`` (the default), ``"informative"`` or
-        ``Compound("random", (seed,))`` (``experiment:next_experiment/6``).
+        ``strategy`` is a strategy term that Prolog declares (``experiment_strategies``):
+        ``"paper"`` (the default), ``"informative"``, ``Compound("random", (seed,))``;
+        ``creative_py.learning.strategies`` says which term each strategy sends.
         """
         if strategy is None:
             return self._must("next_experiment", case, vs, list(facts), list(skip))
         return self._must("next_experiment", case, vs, list(facts), list(skip),
                           [Compound("strategy", (strategy,))])
+
+    def experiment_strategies(self) -> list:
+        """Return the strategy templates that Prolog declares
+        (``experiment:experiment_strategies/1``): ``"paper"``, ``"informative"``,
+        ``Compound("random", ("integer",))``, each argument named by its type."""
+        return self._must("experiment_strategies")
 
     def label_trial(self, case: str, vs: Term, experiment: Term, facts: Sequence[Term],
                     label: str, mode: str) -> Term:

@@ -19,7 +19,8 @@ from creative_py.bridge import Compound, Engine, PrologError, fact_term
 from creative_py.learning.clips import VIDEO_MODES, ClipKeeper
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.records.folder import RunFolder, read_trials
-from creative_py.learning.tool_use import STRATEGIES, LearningOptions, ToolUseLearner, UseResult
+from creative_py.learning.strategies import strategy_named
+from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 from creative_py.report.page import write_html_report
@@ -57,9 +58,11 @@ class RunOptions:
         ``all`` every trial; ``none`` no clip.
     gui : bool
         Show the trials in pybullet's GUI (needs a display).
-    strategy : {"paper", "informative", "random"}
-        How tool-use learning chooses its experiments (:data:`STRATEGIES`,
-        :mod:`creative_py.learning.tool_use`).
+    strategy : str
+        How tool-use learning chooses its experiments: a name of
+        :data:`creative_py.learning.strategies.STRATEGIES` (``paper``, ``informative``,
+        ``random``); another raises
+        :class:`~creative_py.learning.strategies.UnknownStrategy`.
     world_seed : int or None
         None: the world as its files say; N: a world drawn from the case's manifest
         (:func:`creative_py.sim.world.draw_world`: the catalogue's numbers inside their
@@ -97,9 +100,7 @@ class RunOptions:
                              f"got {self.video!r}")
         if not isinstance(self.gui, bool):
             raise ValueError(f"option gui must be true or false, got {self.gui!r}")
-        if self.strategy not in STRATEGIES:
-            raise ValueError(f"option strategy must be one of {', '.join(STRATEGIES)}, "
-                             f"got {self.strategy!r}")
+        strategy_named(self.strategy)
 
 
 def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
@@ -129,7 +130,10 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
     RunFolder(run_dir).rewrite_trials(trials)
     # A resumed run shows no GUI: the display it was started on may be gone. A run
     # recorded before there were strategies ran the paper's Algorithm 1.
-    options = RunOptions(**{"strategy": "paper", **meta["options"], "gui": False})
+    try:
+        options = RunOptions(**{"strategy": "paper", **meta["options"], "gui": False})
+    except ValueError as exc:
+        raise ValueError(f"{meta_path}: field 'options': {exc}") from None
     world_dir = Path(meta["world"]) if meta.get("world") else None
     return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
                     resume=(run_dir, trials), drawn=meta.get("drawn_world"))

@@ -7,17 +7,19 @@ physics alone decides whether a trial succeeded.
 
 One trial::
 
-    experiment = engine.next_experiment(case, vs, facts, skip, strategy)  # object, pose
+    experiment = engine.next_experiment(case, vs, facts, skip, strategy.term(seed, i))
     record, vs = runner.run(experiment, "use", i, vs, task, t)   # pybullet decides,
                                                                  # Prolog labels
 
-The strategy (:data:`STRATEGIES`) is Prolog's choice of experiment
-(``experiment:next_experiment/6``): ``paper`` is Algorithm 1 (one unknown literal per
-trial, then K successes in a row once nothing is left to test); ``informative`` the
-experiment with the largest expected reduction of the version space, stopping as soon as
-no experiment can change it (the certified stop, no confirmation trials); ``random`` a
-random experiment that h_g covers, seeded by the run's seed and the trial's number,
-stopping when nothing is left to test.
+The strategy (a :class:`~creative_py.learning.strategies.Strategy` of
+:data:`~creative_py.learning.strategies.STRATEGIES`) is an argument of the loop: its
+Prolog clause group chooses the experiment (``experiment:next_experiment/6``), and its
+entry says when the loop stops and which experiments are not run again. ``paper`` is
+Algorithm 1 (one unknown literal per trial, then K successes in a row once nothing is
+left to test); ``informative`` the experiment with the largest expected reduction of the
+version space, stopping as soon as no experiment can change it (the certified stop, no
+confirmation trials); ``random`` a random experiment that h_g covers, seeded by the
+run's seed and the trial's number, stopping when nothing is left to test.
 """
 
 from __future__ import annotations
@@ -28,12 +30,8 @@ from pathlib import Path
 from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
+from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
-
-STRATEGIES = ("paper", "informative", "random")
-"""The experiment strategies (``--strategy``); ``experiment:next_experiment/6`` says how
-each chooses."""
-
 
 @dataclass(frozen=True)
 class LearningOptions:
@@ -44,10 +42,11 @@ class LearningOptions:
     max_trials : int
         N: stop after this many tool-use trials.
     consecutive : int
-        K: with strategy ``paper``, stop once the version space has nothing left to test
-        and the last K trials succeeded.
+        K: with a strategy that confirms (``paper``), stop once the version space has
+        nothing left to test and the last K trials succeeded.
     strategy : str
-        One of :data:`STRATEGIES`.
+        A name of :data:`~creative_py.learning.strategies.STRATEGIES`
+        (:class:`~creative_py.learning.strategies.UnknownStrategy` otherwise).
     """
 
     max_trials: int = 12
@@ -55,9 +54,7 @@ class LearningOptions:
     strategy: str = "informative"
 
     def __post_init__(self) -> None:
-        if self.strategy not in STRATEGIES:
-            raise ValueError(f"option strategy must be one of {', '.join(STRATEGIES)}, "
-                             f"got {self.strategy!r}")
+        strategy_named(self.strategy)
 
 
 @dataclass(frozen=True)
@@ -194,75 +191,69 @@ class ToolUseLearner:
         return new, example, demo.tool
 
     def learn(self) -> UseResult:
-        """Learn from one demonstration and experiments; return the learned version space."""
+        """Learn from one demonstration and experiments; return the learned version space.
+
+        Algorithm 1 with the options' strategy as its argument: each trial Prolog
+        proposes an experiment under the strategy, the physics runs it, Prolog labels
+        it; the strategy's rules say when to stop and what not to run again.
+        """
         t0 = time.perf_counter()
         runner, opts = self.runner, self.options
+        strategy = strategy_named(opts.strategy)
         models, example, demo_tool = self.observe_demonstration()
         vs = self.engine.vs_init(example)
         n0, exact0 = self.engine.vs_count(vs)
         runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}; "
                         f"{n0} hypotheses{'' if exact0 else ' at most'}")
         task = runner.task(runner.manifest.demonstration.variant)
-        paper = opts.strategy == "paper"
         cons = 0
         converged_at = None
         stop = "budget"
         skip: list[Term] = []
         for i in range(1, opts.max_trials + 1):
             td = time.perf_counter()
-            exp = self._next(vs, task, skip, i)
+            exp = self._next(strategy, vs, task, skip, i)
             decision = time.perf_counter() - td
-            if exp.name != "experiment":
-                # Nothing left that the available objects and poses can test.
+            testing = exp.name == "experiment"
+            if not testing:
+                # Nothing left that the available objects and poses can test: stop, or,
+                # for a strategy that confirms, use the model until K successes in a row.
                 if converged_at is None:
                     converged_at = i - 1
-                if not paper:
-                    # informative: no experiment can change the version space; random:
-                    # nothing h_g covers is left. Stop without confirmation trials
-                    # (evaluation confirms the model afterwards).
-                    stop = self._stop_word()
+                if not strategy.confirm or cons >= opts.consecutive:
+                    stop = strategy.stop
                     break
-                if cons >= opts.consecutive:
-                    stop = "confirmed"
-                    break
-            before = self._bounds(vs) if paper and exp.name == "experiment" else None
+            before = self._bounds(vs) if strategy.repeat_taught and testing else None
             rec, vs = runner.run(exp, "use", i, vs, task, decision)
             taught = rec.outcome in ("success", "failure", "blocked")
             # Algorithm 1 repeats the task after a failure; it does not repeat an
             # experiment whose trial left h_s and h_g as they were (what the robot
             # observed was already excluded: a stick seen outside the tube), which would
-            # give the same answer until the budget is spent.
-            idle = (paper and taught and before is not None
-                    and self._bounds(vs) == before)
-            if exp.name == "experiment" and (not taught or not paper or idle):
-                # Not repeated: an experiment the arm could not carry out taught
-                # nothing (a pose test: whatever the tool); and, for the other
-                # strategies, one already run gave its answer (the physics would give
-                # it again), even when what the robot observed violated other literals
-                # than planned (a half-raised prong is also seen off the cube). The
-                # informative strategy does not repeat a pose test with another tool
-                # either: what it shows of the pose it has shown.
-                pose_test = bool(exp.args[5])
-                any_tool = pose_test and (not taught or opts.strategy == "informative")
-                skip.append(Compound("skip", ("any" if any_tool else exp.args[0],
-                                              exp.args[1])))
+            # give the same answer until the budget is spent. An experiment the arm
+            # could not carry out taught nothing and is not repeated either.
+            idle = taught and before is not None and self._bounds(vs) == before
+            if testing:
+                done = strategy.skip(exp, taught, idle)
+                if done is not None:
+                    skip.append(done)
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
             else:
                 cons = 0
         else:
-            exp = self._next(vs, task, skip, opts.max_trials + 1)
-            if exp.name != "experiment" and converged_at is None:
-                converged_at = opts.max_trials
-            if exp.name != "experiment" and not paper:
-                stop = self._stop_word()
-        if paper:
+            exp = self._next(strategy, vs, task, skip, opts.max_trials + 1)
+            if exp.name != "experiment":
+                if converged_at is None:
+                    converged_at = opts.max_trials
+                if not strategy.confirm:
+                    stop = strategy.stop
+        if strategy.confirm:
             # Converged: nothing is left to test, and the model's last K trials succeeded
             # (a budget spent on trials the arm could not carry out is not convergence).
             converged = converged_at is not None and cons >= opts.consecutive
         else:
-            converged = stop in ("certified", "exhausted")
+            converged = stop == strategy.stop
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
                          demo_tool, time.perf_counter() - t0, stop, n0, exact0)
 
@@ -271,23 +262,12 @@ class ToolUseLearner:
         hs, hg = self.engine.vs_bounds(vs)
         return str(hs), str(hg)
 
-    def _stop_word(self) -> str:
-        """Return why a non-paper strategy stopped when Prolog proposed no experiment."""
-        return "certified" if self.options.strategy == "informative" else "exhausted"
-
-    def _next(self, vs: Term, task: Any, skip: list[Term], i: int) -> Term:
-        """Return Prolog's choice for trial ``i`` under the options' strategy."""
+    def _next(self, strategy: Strategy, vs: Term, task: Any, skip: list[Term],
+              i: int) -> Term:
+        """Return Prolog's choice for trial ``i`` under ``strategy``."""
         facts = self.runner.task_facts(task)
-        strategy = self.options.strategy
-        if strategy == "paper":
-            return self.engine.next_experiment(self.case, vs, facts, skip)
-        if strategy == "random":
-            # Seeded by the run's seed and the trial's number: the same run draws the
-            # same experiments, also when resumed.
-            return self.engine.next_experiment(
-                self.case, vs, facts, skip,
-                Compound("random", (self.runner.seed * 1000 + i,)))
-        return self.engine.next_experiment(self.case, vs, facts, skip, strategy)
+        return self.engine.next_experiment(self.case, vs, facts, skip,
+                                           strategy.term(self.runner.seed, i))
 
 
 def _model_names(models: Term) -> str:

@@ -657,6 +657,49 @@ test(unknown_strategy_is_an_error, [error(domain_error(_, clever))]) :-
     hook_objects_(Os),
     next_(VS, Os, [strategy(clever)], _).
 
+%   The strategies are what the clauses declare (prolog/strategy.pl, and the test's
+%   below), each argument checked against its declared type.
+test(the_strategies_are_the_declared_clauses) :-
+    experiment_strategies(Ts),
+    assertion(subtract(Ts, [reversed], [paper, informative, random(integer)])),
+    demo_vs_(VS),
+    hook_objects_(Os),
+    catch(next_(VS, Os, [strategy(clever)], _), error(domain_error(oneof(Allowed), _), _),
+          true),
+    assertion(Allowed == Ts),
+    catch(next_(VS, Os, [strategy(random(seven))], _), E, true),
+    assertion(E = error(type_error(integer, seven), _)),
+    catch(next_(VS, Os, [strategy(paper(1))], _), E2, true),
+    assertion(E2 = error(domain_error(_, paper(1)), _)).
+
+%   A strategy defined by a test, as a new one is added: one clause group of the two
+%   hooks. It takes the paper's candidates in reverse order.
+experiment:experiment_strategy(reversed).
+experiment:strategy_experiment(reversed, Problem, Experiment) :-
+    paper_candidates(Problem, Cands0),
+    reverse(Cands0, Cands),
+    feasible_experiment(Problem, Cands, Experiment).
+
+%   The demonstrated tool t1 and t2 with a short handle, h_g the bare head (it covers
+%   both): the paper tests the one structural literal t2 violates; reversed takes the
+%   paper's last candidate, the pose test of h_s's last testable spatial literal with
+%   t2, which violates the most literals (two).
+test(a_strategy_defined_by_a_test_chooses_through_next_experiment) :-
+    s_vs_([], VS),
+    s_obj_(t1, medium, right, wide, O1),
+    s_obj_(t2, short, right, wide, O2),
+    s_next_(paper, VS, [O1, O2], P),
+    assertion(P = experiment(t2, handle_length(t2, medium), [handle_length(t2, medium)],
+                             _, _, [])),
+    s_next_(reversed, VS, [O1, O2], R),
+    assertion(R = experiment(t2, hook_down(t2), [handle_length(t2, medium), hook_down(t2)],
+                             _, _, [hook_down(t2)])),
+    %   Nothing left to test: the learned model's use, as for every strategy.
+    s_pose_failures_(Fs),
+    s_vs_(Fs, VS1),
+    s_next_(reversed, VS1, [O1], R1),
+    assertion(R1 = exploit(t1, [], _, _)).
+
 %   The prior by literal kind.
 test(literal_prior_by_kind) :-
     H = tool_pose(T, C, _),

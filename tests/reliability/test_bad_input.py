@@ -16,6 +16,8 @@ from pathlib import Path
 
 import pytest
 
+from creative_py.learning.strategies import STRATEGIES
+
 BANNER = "pybullet build time"
 
 
@@ -39,6 +41,10 @@ CORPUS = [
     (["run", "hook", "--eval-trials", "-2"], "--eval-trials must be at least 0"),
     (["run", "hook", "--seed", "-1"], "--seed must be at least 0"),
     (["run", "hook", "--phase", "sometimes"], "--phase: option phase must be one of"),
+    (["run", "hook", "--strategy", "clever"],
+     "--strategy: unknown strategy 'clever'; strategies: " + ", ".join(STRATEGIES)),
+    (["sweep", "hook", "--strategies", "paper,clever"],
+     "--strategies: unknown strategy 'clever'; strategies: " + ", ".join(STRATEGIES)),
     (["run", "hook", "--out", "{a_file}"], "not a folder"),
     (["run", "hook", "--world", "{tmp}/nowhere"], "nowhere/case.toml: file not found"),
     # a folder nothing can be created in (root ignores permission bits; /proc refuses)

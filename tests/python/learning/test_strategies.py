@@ -5,25 +5,31 @@ certified stop and ``random`` for a few trials (``test_learning_loop.py`` runs
 ``paper``). The checks are on what the
 loop does with Prolog's choices: when it stops, what it records (the version space's
 count after every trial), and that ``random`` only draws experiments h_g covers.
+
+Strategies are values (:mod:`creative_py.learning.strategies`): the tests at the end
+add strategies of their own, each one registry entry and one Prolog clause group
+written here, and run them through the real engine and loop.
 """
 
 import re
 
 import pytest
 
-from creative_py.bridge import Engine
+from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
 from creative_py.learning.run import RunOptions
-from creative_py.learning.tool_use import STRATEGIES, LearningOptions, ToolUseLearner
+from creative_py.learning.strategies import STRATEGIES, Strategy, UnknownStrategy
+from creative_py.learning.tool_use import LearningOptions, ToolUseLearner
 from creative_py.learning.trials import TrialRunner
 from creative_py.sim import load_world
 
 pytestmark = pytest.mark.sim
 
 
-def _learn(strategy, max_trials, seed=0):
+def _learn(strategy, max_trials, seed=0, consecutive=2):
     runner = TrialRunner(Engine.instance(), load_world(get_case("rake")), None, seed=seed)
     return ToolUseLearner(runner, LearningOptions(max_trials=max_trials,
+                                                  consecutive=consecutive,
                                                   strategy=strategy)).learn()
 
 
@@ -77,12 +83,41 @@ def test_random_draws_experiments_that_hg_covers():
 
 
 def test_the_run_options_name_the_strategies():
-    assert STRATEGIES == ("paper", "informative", "random")
+    assert list(STRATEGIES) == ["paper", "informative", "random"]
     assert RunOptions().strategy == "informative"
-    with pytest.raises(ValueError, match="strategy"):
-        RunOptions(strategy="clever")
-    with pytest.raises(ValueError, match="strategy"):
-        LearningOptions(strategy="clever")
+    for options in (RunOptions, LearningOptions):
+        with pytest.raises(UnknownStrategy, match="unknown strategy 'clever'; strategies: "
+                           "paper, informative, random"):
+            options(strategy="clever")
+
+
+def test_every_registered_strategy_is_declared_in_prolog():
+    declared = Engine.instance().experiment_strategies()
+    assert declared[:3] == ["paper", "informative", Compound("random", ("integer",))]
+    shapes = {d if isinstance(d, str) else (d.name, len(d.args)) for d in declared}
+    for strategy in STRATEGIES.values():
+        term = strategy.term(3, 4)
+        assert (term if isinstance(term, str) else (term.name, len(term.args))) in shapes
+    assert STRATEGIES["random"].term(3, 4) == Compound("random", (3004,))
+
+
+def test_the_registry_s_skip_rules():
+    """What each strategy does not run again: the paper repeats a taught experiment
+    unless it was idle; the others never repeat one; a pose the arm could not carry
+    out is left out with every tool, and informative leaves out every pose test it
+    ran with every tool."""
+    pose = Compound("experiment", ("t1", "behind(t1,c)", [], "p", [], ["behind(t1,c)"]))
+    obj = Compound("experiment", ("t2", "hook(t2)", [], "p", [], []))
+    paper, informative, random = (STRATEGIES[n] for n in ("paper", "informative", "random"))
+    assert paper.skip(obj, taught=True, idle=False) is None
+    assert paper.skip(obj, taught=True, idle=True) == Compound("skip", ("t2", "hook(t2)"))
+    assert paper.skip(pose, taught=False, idle=False) == Compound("skip", ("any",
+                                                                           "behind(t1,c)"))
+    assert random.skip(obj, taught=True, idle=False) == Compound("skip", ("t2", "hook(t2)"))
+    assert random.skip(pose, taught=True, idle=False) == Compound("skip", ("t1",
+                                                                           "behind(t1,c)"))
+    assert informative.skip(pose, taught=True, idle=False) == Compound("skip", (
+        "any", "behind(t1,c)"))
 
 
 def test_paper_does_not_repeat_an_experiment_that_left_the_space_as_it_was():
@@ -103,3 +138,54 @@ def test_paper_does_not_repeat_an_experiment_that_left_the_space_as_it_was():
     use = ToolUseLearner(runner, LearningOptions(max_trials=4, strategy="paper")).learn()
     assert len(use.trials) == 4
     assert len(set(chosen)) == len(chosen), chosen
+
+
+# Strategies defined here, as a new one is added: one Prolog clause group (consulted into
+# the engine) and one registry entry. ``reversed`` takes the paper's candidates in
+# reverse order; ``idle`` never proposes an experiment (it has no choice clause).
+TEST_STRATEGIES_PL = """
+experiment:experiment_strategy(reversed).
+experiment:strategy_experiment(reversed, Problem, Experiment) :-
+    experiment:paper_candidates(Problem, Cands0),
+    reverse(Cands0, Cands),
+    experiment:feasible_experiment(Problem, Cands, Experiment).
+
+experiment:experiment_strategy(idle).
+"""
+
+
+@pytest.fixture(scope="module")
+def test_strategies(tmp_path_factory):
+    path = tmp_path_factory.mktemp("strategies") / "test_strategies.pl"
+    path.write_text(TEST_STRATEGIES_PL)
+    Engine.instance(load=[path])
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setitem(STRATEGIES, "reversed",
+                   Strategy("reversed", "the paper's order reversed", stop="exhausted"))
+        mp.setitem(STRATEGIES, "idle", Strategy("idle", "no experiment", stop="exhausted"))
+        yield
+
+
+def test_a_strategy_defined_by_a_test_runs_through_the_engine_and_the_loop(test_strategies):
+    assert RunOptions(strategy="reversed").strategy == "reversed"
+    assert "reversed" in Engine.instance().experiment_strategies()
+    use = _learn("reversed", 3)
+    chosen = [(t.tool, tuple(t.tested)) for t in use.trials]
+    assert len(chosen) == 3 and use.stop == "budget"
+    assert len(set(chosen)) == 3                           # the registry's skip rule
+    # The paper's first experiment (test_learning_loop.py) is rake_a1's handle alone;
+    # its last candidates violate the most literals of h_s, so reversed starts there.
+    assert chosen[0] != ("rake_a1", ("handle_length(rake_a1,medium)",))
+    assert len(use.trials[0].violated) > 1
+
+
+def test_the_registry_s_stop_rule_applies_to_a_test_strategy(test_strategies):
+    """No experiment proposed: a strategy that does not confirm stops at once with its
+    stop word; one that confirms uses the learned model until K successes."""
+    use = _learn("idle", 3)
+    assert (use.trials, use.stop, use.converged, use.trials_to_converge) == (
+        [], "exhausted", True, 0)
+    STRATEGIES["idle"] = Strategy("idle", "no experiment", stop="confirmed", confirm=True)
+    use = _learn("idle", 3, consecutive=1)
+    assert [(t.kind, t.outcome) for t in use.trials] == [("exploit", "success")]
+    assert (use.stop, use.converged, use.trials_to_converge) == ("confirmed", True, 0)
