@@ -444,7 +444,7 @@ def _print_settings(text: str):
 
 def _quoted(text: str) -> str:
     """Return ``text`` as a quoted Prolog atom (the bridge's encoder)."""
-    from creative_py.bridge.text import encode
+    from creative_py.bridge import encode
 
     return encode(text)
 
