@@ -16,6 +16,7 @@ from pathlib import Path
 
 from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.case import load_cases
+from creative_py.learning.poses import pose_resolver
 from creative_py.learning.tool_use import run_demonstration
 from creative_py.learning.trials import task_facts
 from creative_py.sim import load_world
@@ -38,7 +39,7 @@ def main() -> int:
     out = {}
     for case, manifest in load_cases().items():
         world = load_world(manifest)
-        demo = run_demonstration(world)
+        demo = run_demonstration(world, pose_target=pose_resolver(engine, manifest))
         steps = [Compound("step", (s.skill, list(s.args), [fact_term(f) for f in s.facts_before],
                                    [fact_term(f) for f in s.facts_after])) for s in demo.steps]
         models = engine.call("learn_from_demonstration", case, steps)

@@ -125,10 +125,13 @@ def _poses_around(manifest, n: int, rng) -> list[tuple[float, ...]]:
 
 def run_case(manifest, seeds: int) -> dict:
     """Measure every tracked object of one case's world (see the module docstring)."""
+    from creative_py.bridge import Engine
+    from creative_py.learning.poses import pose_resolver
     from creative_py.sim import load_world, open_episode
     from creative_py.sim.primitives import PRIMITIVES
 
     world = load_world(manifest)
+    poses = pose_resolver(Engine.instance(), manifest)
     pose_skill = next(s for s in manifest.skills if s.pose)
     by_hand = "by_hand" in PRIMITIVES[world.skills[pose_skill.name].primitive].options
     tracks_tool = any(p.name == "tool" for p in world.scene.perceived)
@@ -139,7 +142,7 @@ def run_case(manifest, seeds: int) -> dict:
         for location in world.locations:
             for tool in tools:
                 with open_episode(world, variant, location, tool, seed=0,
-                                  robot=not by_hand) as ep:
+                                  robot=not by_hand, pose_target=poses) as ep:
                     for name, _ in ep.perceived:
                         size = _true_size(ep, name)
                         if size is None:

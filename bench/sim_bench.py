@@ -30,7 +30,9 @@ import sys
 import time
 from pathlib import Path
 
+from creative_py.bridge import Engine
 from creative_py.case import load_cases
+from creative_py.learning.poses import pose_resolver
 from creative_py.sim import load_world, open_episode
 
 RESULTS = Path(__file__).resolve().parent / "results"
@@ -56,7 +58,8 @@ def one_trial(world, tool: str, variant: str, location: int, pose, by_hand: bool
     m = world.manifest
     t0, c0 = time.perf_counter(), time.process_time()
     phases: dict[str, float] = {}
-    with open_episode(world, variant, location, tool, robot=not by_hand) as ep:
+    with open_episode(world, variant, location, tool, robot=not by_hand,
+                      pose_target=pose_resolver(Engine.instance(), m)) as ep:
         phases["build_s"] = time.perf_counter() - t0
         outcome, reason = "success", ""
         skills = [s for s in m.skills if not by_hand or s.pose or s.tool_action]

@@ -20,7 +20,9 @@ import statistics
 import time
 from pathlib import Path
 
+from creative_py.bridge import Engine
 from creative_py.case import load_cases
+from creative_py.learning.poses import pose_resolver
 from creative_py.sim import load_world, run_trial
 
 CHECKPOINTS = (10, 100, 250, 500)
@@ -57,7 +59,8 @@ def main(argv: list[str] | None = None) -> None:
     t_start = time.perf_counter()
     for n, (world, tool, variant, loc) in enumerate(trial_plan(), 1):
         t0 = time.perf_counter()
-        res = run_trial(world, tool, variant, loc, seed=n)
+        res = run_trial(world, tool, variant, loc, seed=n,
+                        pose_target=pose_resolver(Engine.instance(), world.manifest))
         walls.append(time.perf_counter() - t0)
         outcomes[res.outcome] = outcomes.get(res.outcome, 0) + 1
         if n in marks:

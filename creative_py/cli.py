@@ -170,6 +170,8 @@ def trial(
 def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui, world,
            list_) -> list[str]:
     out: list[str] = []
+    from creative_py.bridge import Engine
+    from creative_py.learning.poses import pose_resolver
     from creative_py.sim import load_world, run_trial
     from creative_py.world import WorldFileError
 
@@ -201,7 +203,8 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
         except ValueError as exc:
             _fail(str(exc))
     result = run_trial(w, tool, variant, location, pose=parsed, seed=seed,
-                       images_dir=save_images, gui=gui)
+                       images_dir=save_images, gui=gui,
+                       pose_target=pose_resolver(Engine.instance(), m))
     if as_json:
         return [result.to_json()]
     p = ", ".join(f"{v:g}" for v in result.pose)
@@ -457,7 +460,7 @@ def _print_settings(text: str):
 
 def _quoted(text: str) -> str:
     """Return ``text`` as a quoted Prolog atom (the bridge's encoder)."""
-    from creative_py.bridge.text import encode
+    from creative_py.bridge import encode
 
     return encode(text)
 

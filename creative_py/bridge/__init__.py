@@ -2,12 +2,12 @@
 
 Importing this package starts nothing; :class:`Engine` (``Engine.instance()``) starts
 the one embedded SWI-Prolog of the process and loads the facade ``prolog/api.pl``.
-Terms are plain Python values (:mod:`creative_py.bridge.terms`); one encoder and one
-decoder (:mod:`creative_py.bridge.codec`) carry them across.
+Terms are plain Python values (:mod:`creative_py.bridge.terms`, which holds the one
+encoder of Prolog text too); one decoder (:mod:`creative_py.bridge.codec`) reads the
+replies.
 """
 
 from creative_py.bridge.codec import decode
-from creative_py.bridge.text import encode
 from creative_py.bridge.engine import FAILED, Engine, LoadReport
 from creative_py.bridge.errors import (
     BridgeError,
@@ -30,6 +30,7 @@ from creative_py.bridge.terms import (
     clause_parts,
     conj,
     conj_to_list,
+    encode,
     fact_term,
     is_ground,
     variables,

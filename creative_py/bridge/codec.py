@@ -2,7 +2,7 @@
 
 Replies travel back as JSON text written by ``api.pl`` (a fixed, self-describing
 schema, so no Prolog lexical rule has to be re-implemented in Python); :func:`decode`
-reads it. Requests are written by :mod:`creative_py.bridge.text`. The reply schema:
+reads it. Requests are written by :func:`creative_py.bridge.terms.encode_request`. The reply schema:
 
 =======================  =========================================
 Prolog                   JSON

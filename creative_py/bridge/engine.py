@@ -16,7 +16,7 @@ use its parent's engine.
 
 Every call runs one operation of ``prolog/api.pl`` (its table ``api_op/3`` lists
 them): the request ``op(arg1, ...)`` is encoded as text by
-:func:`creative_py.bridge.text.encode`, parsed by Prolog, run deterministically, and
+:func:`creative_py.bridge.terms.encode`, parsed by Prolog, run deterministically, and
 answered by exactly one reply:
 
 * ``ok(Result)``: :meth:`Engine.call` returns the decoded ``Result``;
@@ -50,7 +50,7 @@ from creative_py.bridge.errors import (
     WrongThreadError,
 )
 from creative_py.bridge.terms import Compound, Term, Var, map_variables, variables
-from creative_py.bridge.text import argument_suffix, encode_request
+from creative_py.bridge.terms import argument_suffix, encode_request
 
 log = logging.getLogger(__name__)
 

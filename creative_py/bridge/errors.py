@@ -17,8 +17,7 @@ from __future__ import annotations
 import errno
 from typing import Any, Optional, Sequence
 
-from creative_py.bridge.terms import Compound
-from creative_py.bridge.text import encode
+from creative_py.bridge.terms import Compound, encode
 
 
 class BridgeError(Exception):

@@ -27,11 +27,15 @@ from __future__ import annotations
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Optional
+from typing import TYPE_CHECKING, Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
+
+if TYPE_CHECKING:
+    from creative_py.sim import PoseTarget
+
 
 @dataclass(frozen=True)
 class LearningOptions:
@@ -82,7 +86,8 @@ class Demonstration:
 
 def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = None,
                       record: Any = None, gui: bool = False,
-                      verdict: Optional[Callable[[], None]] = None) -> Demonstration:
+                      verdict: Optional[Callable[[], None]] = None, *,
+                      pose_target: PoseTarget) -> Demonstration:
     """Run the trainer's scripted demonstration and observe after every skill.
 
     The tool, variant, location, skills and pose come from the manifest's
@@ -91,7 +96,8 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
     ValueError naming the manifest: there is nothing to learn from. ``record`` (a
     :class:`creative_py.sim.recorder.Recorder`) keeps its poses; ``verdict()`` is
     called at the end of a successful demonstration, inside the episode (where its
-    clip is rendered); ``gui`` shows the pybullet GUI.
+    clip is rendered); ``gui`` shows the pybullet GUI. ``pose_target`` gives the pose
+    skill its world target (:func:`creative_py.learning.poses.pose_resolver`).
     """
     from creative_py.sim import open_episode
 
@@ -99,7 +105,8 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
     demo = m.demonstration
     steps: list[DemoStep] = []
     with open_episode(world, demo.variant, demo.location, demo.tool, seed=seed,
-                      images_dir=images_dir, gui=gui, record=record) as ep:
+                      images_dir=images_dir, gui=gui, record=record,
+                      pose_target=pose_target) as ep:
         before = tuple(ep.observe().facts)
         for name in demo.steps:
             skill = m.skill(name)
@@ -182,7 +189,8 @@ class ToolUseLearner:
         demo = run_demonstration(runner.world, seed=runner.seed,
                                  images_dir=run.snapshot_dir("demo", 0) if run else None,
                                  record=recorder, gui=runner.gui,
-                                 verdict=verdict if recorder is not None else None)
+                                 verdict=verdict if recorder is not None else None,
+                                 pose_target=runner.pose_target)
         steps = [Compound("step", (s.skill, list(s.args),
                                    [fact_term(f) for f in s.facts_before],
                                    [fact_term(f) for f in s.facts_after]))

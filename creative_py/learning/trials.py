@@ -28,12 +28,16 @@ import logging
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Callable, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
+from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
+
+if TYPE_CHECKING:
+    from creative_py.sim import PoseTarget
 
 log = logging.getLogger(__name__)
 
@@ -140,7 +144,7 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
 def execute_trial(world: Any, tool: str, variant: str, location: int,
                   pose: tuple[float, ...], seed: int, images_dir: Optional[Path],
                   record: Any = None, verdict: Optional[Callable[[str, str], None]] = None,
-                  gui: bool = False) -> Executed:
+                  gui: bool = False, *, pose_target: PoseTarget) -> Executed:
     """Run one tool-use trial in pybullet and report the outcome the physics gave.
 
     The manifest's skills run in order up to the tool action (the pose skill puts the
@@ -149,13 +153,14 @@ def execute_trial(world: Any, tool: str, variant: str, location: int,
     speaks of. With a ``record`` (:class:`creative_py.sim.recorder.Recorder`) the
     trial's poses are kept; ``verdict(outcome, reason)`` is called once the physics
     has given the outcome, still inside the episode (where a kept trial's frames are
-    rendered); ``gui`` shows the pybullet GUI.
+    rendered); ``gui`` shows the pybullet GUI. ``pose_target`` gives the pose skill its
+    world target (:func:`creative_py.learning.poses.pose_resolver`).
     """
     from creative_py.sim import open_episode
 
     t0 = time.perf_counter()
     with open_episode(world, variant, location, tool, seed=seed, images_dir=images_dir,
-                      gui=gui, record=record) as ep:
+                      gui=gui, record=record, pose_target=pose_target) as ep:
         ex = _act(ep, world.manifest, pose, t0)
         if verdict is not None:
             verdict(ex.outcome, ex.reason)  # the physics is done with
@@ -237,6 +242,7 @@ class TrialRunner:
         self.replay = list(replay)
         self.clips = clips
         self.gui = gui
+        self.pose_target = pose_resolver(engine, world.manifest)
 
     @property
     def manifest(self) -> CaseManifest:
@@ -299,7 +305,7 @@ class TrialRunner:
                                pose_numbers(pose), self.seed * 1000 + n, images,
                                record=recorder,
                                verdict=verdict if recorder is not None else None,
-                               gui=self.gui)
+                               gui=self.gui, pose_target=self.pose_target)
         td = time.perf_counter()
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is not None and label:

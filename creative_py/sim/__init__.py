@@ -6,7 +6,10 @@ Public API::
     world = load_world(manifest)                # World (creative_py.case.CaseManifest)
     with open_episode(world, variant, location, tool) as ep:
         ep.run_skill("pick_up")                 # SkillOutcome
-    run_trial(world, tool, variant, location)   # TrialResult
+    run_trial(world, tool, variant, location, pose_target=poses)   # TrialResult
+
+A pose skill needs ``pose_target`` (:data:`PoseTarget`), given by the caller: the
+learning layer's :func:`creative_py.learning.poses.pose_resolver` asks the engine.
 
 Modules, from the data to the physics:
 

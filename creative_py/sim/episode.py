@@ -3,11 +3,14 @@
 Every case is driven the same way, by the skill names of its manifest
 (``worlds/<folder>/case.toml``)::
 
+    from creative_py.bridge import Engine
     from creative_py.case import get_case
+    from creative_py.learning.poses import pose_resolver   # the engine's pose solution
     from creative_py.sim import load_world, open_episode, run_trial
 
     world = load_world(get_case("hook"))
-    with open_episode(world, "standard", 1, "hook_a2", seed=0) as ep:
+    poses = pose_resolver(Engine.instance(), world.manifest)
+    with open_episode(world, "standard", 1, "hook_a2", seed=0, pose_target=poses) as ep:
         ep.run_skill("pick_up")                      # SkillOutcome
         ep.run_skill("position_tool", pose=(0.03, 0.0, 0.0))
         ep.run_skill("pull")
@@ -18,10 +21,10 @@ An episode builds the scene in a fresh :class:`~creative_py.sim.core.Sim`: the b
 ``scene.toml`` with the variant's and the location's values, the tool where its kind
 starts, Baxter at its start posture. A skill runs the primitive its manifest entry
 binds (:mod:`creative_py.sim.primitives`); the pose skill's world target comes from
-``pose_target``, the engine's pose solution, applied to what the robot perceives at
-that moment. :func:`run_trial` runs the manifest's skills in order and asks the oracle
-(:mod:`creative_py.sim.oracles`). The physics decides the outcome; nothing here looks
-at tool properties.
+``pose_target``, a :data:`PoseTarget` the caller gives (the engine's pose solution),
+applied to what the robot perceives at that moment. :func:`run_trial` runs the
+manifest's skills in order and asks the oracle (:mod:`creative_py.sim.oracles`). The
+physics decides the outcome; nothing here looks at tool properties.
 
 Perception: the objects of ``[[perception.object]]`` come from the cameras through
 :mod:`creative_py.perception`; a held tool is known by proprioception (forward
@@ -51,31 +54,10 @@ from creative_py.world import PhysicsSettings, WorldFileError
 log = logging.getLogger(__name__)
 
 PoseTarget = Callable[[list[Fact], str, tuple[float, ...]], tuple]
-"""``(facts, tool, pose) -> world target`` of a pose, e.g. ``("tip", x, y, roll)``."""
-
-
-def prolog_pose_target(case_id: str, pose_term: str) -> PoseTarget:
-    """Return a :data:`PoseTarget` that asks the engine (``api`` operation ``pose_target``).
-
-    The engine turns the relative pose numbers into the world target of the case's
-    pose-taking skill (``abstract_state:pose_world/5``) in the perceived state; the
-    answer comes back as a tuple ``(name, numbers...)``, or ``()`` if the state lacks
-    what it needs.
-    """
-
-    def target(facts: list[Fact], tool: str, pose: tuple[float, ...]) -> tuple:
-        from creative_py.bridge import Compound, Engine, fact_term
-
-        answer = Engine.instance().pose_target(
-            case_id, tool, [fact_term(f) for f in facts],
-            Compound(pose_term, tuple(float(v) for v in pose)))
-        if answer is None:
-            return ()
-        if isinstance(answer, Compound):
-            return (answer.name, *answer.args)
-        return (answer,)
-
-    return target
+"""``(facts, tool, pose) -> world target`` of a pose, e.g. ``("tip", x, y, roll)``, or
+``()`` if the perceived state lacks what it needs. The caller gives it to the episode
+(the learning layer builds it from the engine's pose solution,
+:func:`creative_py.learning.poses.pose_resolver`); the simulator asks no one."""
 
 
 @contextmanager
@@ -102,8 +84,9 @@ def open_episode(world: World, variant: str, location: int, tool: str, seed: int
     images_dir : Path or None
         Save camera snapshots there.
     pose_target : callable or None
-        ``(facts, tool, pose) -> target``: the world target of a pose (the engine's
-        pose solution); None asks the engine (:func:`prolog_pose_target`).
+        ``(facts, tool, pose) -> target``: the world target of a pose
+        (:data:`PoseTarget`). None for an episode that puts no tool at a pose (only the
+        scene's physics, perception, picking up); a pose skill then raises ValueError.
     robot : bool
         Build Baxter (default); without it only by-hand placing and the scene's own
         physics run (for tests of the physics alone).
@@ -148,7 +131,7 @@ class Episode:
         self.ns = world.namespace(variant, location, tool)
         self.bodies = make_bodies(world.scene.bodies, self.ns)
         self.target_name, self.context_name = m.target, m.context
-        self.pose_target = pose_target or prolog_pose_target(m.id, m.pose_term)
+        self.pose_target = pose_target
         self.rng = np.random.default_rng(seed)
         self.images_dir = images_dir
         self.render_time_s = 0.0
@@ -360,6 +343,10 @@ class Episode:
         if prim.target:
             if prim.needs_held_tool(opts) and not self.held:
                 return SkillOutcome("blocked", "no tool is held (pick it up first)")
+            if self.pose_target is None:
+                raise ValueError(f"primitive {primitive} needs the world target of a pose, "
+                                 "but the episode has no pose resolver: pass pose_target "
+                                 "to open_episode or run_trial")
             facts = list(self.observe(cameras=opts.get("perceive", True)).facts)
             self.state["facts"] = facts
             target = tuple(self.pose_target(facts, self.spec.name, tuple(pose)))

@@ -281,7 +281,7 @@ def test_a_clause_with_thousands_of_literals_crosses_without_recursion_errors(
 
 
 def test_each_argument_is_its_own_variable_scope() -> None:
-    from creative_py.bridge.text import encode_request
+    from creative_py.bridge.terms import encode_request
 
     term = Compound("g", (X,))
     assert encode_request("f", [X, term]) == "f(X_A0,g(X_A1))"

@@ -51,10 +51,14 @@ WEDGE_PLACES = [(0.55, 0.02, 0.0), (0.45, 0.10, math.pi)]
 
 @pytest.mark.parametrize("name", ["wedge_a2", "wedge_b1"])
 def test_wedge_world_observation_finds_the_tip_direction(wedge_world, angle_error, name):
+    from creative_py.bridge import Engine
+    from creative_py.learning.poses import pose_resolver
     from creative_py.sim import open_episode
 
     place = wedge_world.manifest.demonstration.steps[1]
-    with open_episode(wedge_world, "standard", 1, name, seed=5, robot=False) as ep:
+    poses = pose_resolver(Engine.instance(), wedge_world.manifest)
+    with open_episode(wedge_world, "standard", 1, name, seed=5, robot=False,
+                      pose_target=poses) as ep:
         for pose in WEDGE_PLACES:
             assert ep.run_skill(place, pose, by_hand=True).ok
             obs = ep.observe()

@@ -7,6 +7,8 @@ from functools import lru_cache
 from creative_py.case import get_case
 from creative_py.sim import TrialResult, load_world, run_trial
 
+from _poses import poses
+
 
 @lru_cache(maxsize=None)
 def hook_world():
@@ -18,7 +20,8 @@ def hook_world():
 def hook_trial(tool: str, variant: str, location: int,
                pose: tuple[float, float, float] | None = None, seed: int = 0) -> TrialResult:
     """Return the result of one hook trial (cached: trials are deterministic)."""
-    return run_trial(hook_world(), tool, variant, location, pose=pose, seed=seed)
+    return run_trial(hook_world(), tool, variant, location, pose=pose, seed=seed,
+                     pose_target=poses(hook_world()))
 
 
 def tube(world):

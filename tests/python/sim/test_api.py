@@ -6,6 +6,8 @@ from creative_py.case import load_cases
 from creative_py.sim import SkillOutcome, load_world, open_episode, run_trial
 from creative_py.world import WorldFileError
 
+from _poses import poses
+
 CASES = sorted(load_cases())
 
 
@@ -34,7 +36,7 @@ def test_the_demonstration_succeeds_through_the_manifest_skills(case):
     manifest = load_cases()[case]
     world = load_world(manifest)
     demo = manifest.demonstration
-    result = run_trial(world, demo.tool, demo.variant, demo.location)
+    result = run_trial(world, demo.tool, demo.variant, demo.location, pose_target=poses(world))
     assert result.outcome == "success", result.reason
     assert result.case == manifest.id and result.pose == demo.pose
 

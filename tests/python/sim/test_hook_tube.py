@@ -13,6 +13,7 @@ from creative_py.sim import TRIAL_OUTCOMES, open_episode, run_trial
 from creative_py.sim.tools import catalogue_facts, prong_centre, roll_of, tool_orientation
 
 from _hook_runs import hook_trial, hook_world, tube
+from _poses import poses
 
 
 @pytest.mark.parametrize("side", ["left", "right", "none"])
@@ -102,7 +103,8 @@ def test_wrong_pose_fails(pose):
 @pytest.mark.sim
 def test_same_seed_same_result_bit_for_bit():
     first = hook_trial("hook_a2", "standard", 1)
-    again = run_trial(hook_world(), "hook_a2", "standard", 1, seed=0)
+    again = run_trial(hook_world(), "hook_a2", "standard", 1, seed=0,
+                      pose_target=poses(hook_world()))
     assert again.outcome == first.outcome
     assert again.true_final == first.true_final
     assert again.perceived_final == first.perceived_final
@@ -178,7 +180,7 @@ def test_a_created_tool_is_spawned_from_its_urdf_and_listed(tmp_path):
 @pytest.mark.sim
 def test_a_created_long_hook_pulls_the_cube_from_the_long_tube(tmp_path):
     world, _ = _created_world(tmp_path)
-    r = run_trial(world, "hook_new1", "long_tube", 1)
+    r = run_trial(world, "hook_new1", "long_tube", 1, pose_target=poses(world))
     assert r.outcome == "success", r.reason
 
 
@@ -204,6 +206,6 @@ def test_a_tool_that_falls_off_the_table_makes_the_trial_invalid():
     from creative_py.sim import load_world, run_trial
 
     world = load_world(get_case("hook")).with_tool(HookSpec("pole", handle_length=5.0))
-    result = run_trial(world, "pole", "standard", 1)
+    result = run_trial(world, "pole", "standard", 1, pose_target=poses(world))
     assert result.outcome == "invalid"
     assert "the tool fell" in result.reason

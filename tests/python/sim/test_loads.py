@@ -6,6 +6,8 @@ import pytest
 
 from creative_py.case import get_case
 from creative_py.sim import load_world, run_trial
+
+from _poses import poses
 from creative_py.sim.loads import ToolLoad
 
 pytestmark = pytest.mark.sim
@@ -14,7 +16,7 @@ pytestmark = pytest.mark.sim
 def test_a_hook_trial_records_a_positive_force_where_the_prong_pulls_the_cube():
     world = load_world(get_case("hook"))
     spec = world.item("hook_a2").spec
-    result = run_trial(world, "hook_a2", "standard", 1)
+    result = run_trial(world, "hook_a2", "standard", 1, pose_target=poses(world))
     assert result.outcome == "success"
     assert result.max_tool_force_n > 0
     load = ToolLoad.from_dict(result.tool_load)

@@ -15,6 +15,8 @@ from creative_py.case import get_case
 from creative_py.mesh.spec import HookSpec
 from creative_py.sim import load_world, run_trial
 
+from _poses import poses
+
 pytestmark = pytest.mark.sim
 
 
@@ -37,7 +39,7 @@ def _world():
 ])
 def test_the_physics_discriminates_the_tools_at_the_demonstration_pose(
         tool, variant, location, outcome, why):
-    result = run_trial(_world(), tool, variant, location)
+    result = run_trial(_world(), tool, variant, location, pose_target=poses(_world()))
     assert result.outcome == outcome, result.reason
     assert why in result.reason
 
@@ -49,5 +51,6 @@ def test_the_physics_discriminates_the_tools_at_the_demonstration_pose(
     ((0.035, 0.01, 0.0), "1 cm off centre the box turns off the prong"),
 ])
 def test_the_demonstrated_rake_fails_at_the_wrong_poses(pose, why):
-    result = run_trial(_world(), "rake_a2", "standard", 1, pose=pose)
+    result = run_trial(_world(), "rake_a2", "standard", 1, pose=pose,
+                       pose_target=poses(_world()))
     assert result.outcome == "failure", f"{why}: {result.outcome} {result.reason}"

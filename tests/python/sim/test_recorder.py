@@ -14,6 +14,8 @@ import pytest
 
 from creative_py.case import get_case
 from creative_py.sim import load_world, run_trial
+
+from _poses import poses
 from creative_py.sim.camera import CameraSpec
 from creative_py.sim.recorder import Recorder, VideoSpec
 from creative_py.video import band_height, caption, write_clip
@@ -24,9 +26,10 @@ pytestmark = pytest.mark.sim
 @pytest.fixture(scope="module")
 def recorded(tmp_path_factory):
     world = load_world(get_case("hook"))
-    plain = run_trial(world, "hook_a1", "standard", 1, seed=3)
+    plain = run_trial(world, "hook_a1", "standard", 1, seed=3, pose_target=poses(world))
     rec = Recorder(world.scene.video)
-    seen = run_trial(world, "hook_a1", "standard", 1, seed=3, record=rec)
+    seen = run_trial(world, "hook_a1", "standard", 1, seed=3, record=rec,
+                     pose_target=poses(world))
     return world, plain, seen, rec, tmp_path_factory.mktemp("clips")
 
 

@@ -16,6 +16,8 @@ from creative_py.case import get_case, manifest_of_folder
 from creative_py.sim import load_world, open_episode, run_trial
 from creative_py.world import WORLDS_ROOT, WorldFileError
 
+from _poses import poses
+
 
 @pytest.fixture(scope="module")
 def world():
@@ -94,7 +96,8 @@ def test_unknown_object_lists_the_available_ones(world):
 # ------------------------------------------------------------------- physics
 def _door_trial(world, name, variant, pose, seed=0):
     """Let the trainer put ``name`` at ``pose`` by hand, release the door, judge."""
-    with open_episode(world, variant, 1, name, seed=seed, robot=False) as ep:
+    with open_episode(world, variant, 1, name, seed=seed, robot=False,
+                      pose_target=poses(world)) as ep:
         assert ep.run_skill("place", pose, by_hand=True).ok
         res = ep.run_skill("release_door")
         assert res.ok, res.reason
@@ -140,7 +143,8 @@ def test_observation_has_perceived_pose_door_facts_and_catalogue(world):
     from creative_py.bridge import Compound, Engine
 
     demo = world.manifest.demonstration.pose
-    with open_episode(world, "standard", 1, "wedge_a2", seed=0, robot=False) as ep:
+    with open_episode(world, "standard", 1, "wedge_a2", seed=0, robot=False,
+                      pose_target=poses(world)) as ep:
         assert ep.run_skill("place", demo, by_hand=True).ok
         obs = ep.observe()
     facts = {f[0]: f for f in obs.facts}
@@ -163,7 +167,8 @@ def test_observation_has_perceived_pose_door_facts_and_catalogue(world):
 
 @pytest.mark.sim
 def test_the_held_door_is_reported_as_a_fact(world):
-    with open_episode(world, "standard", 1, "wedge_a3", robot=False) as ep:
+    with open_episode(world, "standard", 1, "wedge_a3", robot=False,
+                      pose_target=poses(world)) as ep:
         assert ep.run_skill("place", world.manifest.demonstration.pose, by_hand=True).ok
         assert ep.run_skill("release_door").ok
         assert ep.goal_reached()
@@ -173,10 +178,29 @@ def test_the_held_door_is_reported_as_a_fact(world):
 
 @pytest.mark.sim
 def test_robot_places_the_demonstrated_wedge_and_it_holds_the_door(world):
-    result = run_trial(world, "wedge_a2", "standard", 1, seed=0)
+    result = run_trial(world, "wedge_a2", "standard", 1, seed=0, pose_target=poses(world))
     assert result.outcome == "success", result.reason
     assert result.perceived_final is not None and "wedge_a2" in result.perceived_final
     assert result.sim_time_s > 4.0
+
+
+@pytest.mark.sim
+def test_a_pose_skill_needs_the_pose_resolver_its_caller_gives(world):
+    # The simulator asks no engine: the caller (the learning layer) gives the resolver.
+    asked = []
+
+    def resolver(facts, tool, pose):
+        asked.append((tool, pose))
+        return ()
+
+    pose = world.manifest.demonstration.pose
+    with open_episode(world, "standard", 1, "wedge_a2", robot=False) as ep:
+        with pytest.raises(ValueError, match="no pose resolver: pass pose_target"):
+            ep.run_skill("place", pose, by_hand=True)
+    with open_episode(world, "standard", 1, "wedge_a2", robot=False,
+                      pose_target=resolver) as ep:
+        res = ep.run_skill("place", pose, by_hand=True)
+    assert res.status == "unreachable" and asked == [("wedge_a2", tuple(pose))]
 
 
 @pytest.mark.sim

@@ -1,0 +1,231 @@
+"""The layers of ``creative_py``: which package may import which, as the design page says.
+
+The rule is data in one place, the tables of section 3 of ``docs/architecture.md``
+(read here, so the page cannot drift from the rule): a row per package (or top-level
+module) of ``creative_py`` and the packages it may import, and a row per third-party
+engine and the one package that imports it. Every import statement counts, a lazy one
+inside a function too (``_imports.py``); imports inside one package are free.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from _imports import PACKAGE, ROOT, ImportStatement, cycles, import_statements, modules
+
+DOC = ROOT / "docs" / "architecture.md"
+SECTION = "## 3. The layers"
+WHERE = "docs/architecture.md section 3"
+
+
+def section(text: str) -> str:
+    """Return the text of the layers section of the design page."""
+    start = text.index(SECTION)
+    end = text.find("\n## ", start + len(SECTION))
+    return text[start:] if end < 0 else text[start:end]
+
+
+def table(text: str, header: str) -> list[tuple[list[str], list[str]]]:
+    """Return the rows of the Markdown table whose header row starts ``| header |``:
+    the backquoted names of the first column and of the second."""
+    lines = text.splitlines()
+    at = next((i for i, line in enumerate(lines)
+               if line.replace(" ", "").startswith(f"|{header.replace(' ', '')}|")), None)
+    if at is None:
+        raise AssertionError(f"{WHERE} has no table headed '| {header} |'")
+    rows = []
+    for line in lines[at + 2:]:
+        if not line.startswith("|"):
+            break
+        cells = line.strip().strip("|").split("|")
+        first, second = cells[0], "|".join(cells[1:])
+        rows.append((re.findall(r"`([A-Za-z0-9_]+)`", first),
+                     re.findall(r"`([A-Za-z0-9_]+)`", second.split("(")[0])))
+    return rows
+
+
+def layer_rules(text: str) -> dict[str, set[str]]:
+    """Return ``package -> packages it may import`` from the page's layer table."""
+    rules: dict[str, set[str]] = {}
+    for names, allowed in table(section(text), "package | may import"):
+        for name in names:
+            if name in rules:
+                raise AssertionError(f"{WHERE}: package {name} has two rows")
+            rules[name] = set(allowed)
+    return rules
+
+
+def library_owners(text: str) -> dict[str, str]:
+    """Return ``third-party library -> the one package that imports it`` from the page."""
+    owners: dict[str, str] = {}
+    for libraries, owner in table(section(text), "library | imported only by"):
+        if len(owner) != 1:
+            raise AssertionError(f"{WHERE}: {libraries} need one owner, got {owner}")
+        owners.update({lib: owner[0] for lib in libraries})
+    return owners
+
+
+def package_of(module: str) -> str:
+    """Return the package (or top-level module) of ``creative_py`` a module belongs to;
+    ``""`` for the package root ``creative_py`` itself."""
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else ""
+
+
+def packages(names) -> set[str]:
+    """Return the packages and top-level modules of ``creative_py`` among module names."""
+    return {package_of(m) for m in names} - {""}
+
+
+def where(s: ImportStatement) -> str:
+    return f"{s.path.relative_to(ROOT)}:{s.line}"
+
+
+def unnamed_packages(rules: dict[str, set[str]], on_disk: set[str]) -> list[str]:
+    """Return an error per package of ``creative_py`` without a row, and per name in the
+    table that is no package of ``creative_py``."""
+    errors = [f"creative_py/{p} has no row in the layer table of {WHERE}: add one saying "
+              "which packages it may import, and add it to the rows of the packages that "
+              "import it" for p in sorted(on_disk - set(rules))]
+    named = set(rules) | {p for allowed in rules.values() for p in allowed}
+    errors += [f"the layer table of {WHERE} names {p}, which is no package or top-level "
+               "module of creative_py" for p in sorted(named - on_disk)]
+    return errors
+
+
+def forbidden_imports(statements: list[ImportStatement], rules: dict[str, set[str]],
+                      known: set[str]) -> list[str]:
+    """Return ``file:line: ...`` for each import between packages its row does not allow;
+    ``known`` are the module names of ``creative_py``."""
+    errors = []
+    for s in statements:
+        if s.target not in known:
+            continue  # not a module of creative_py
+        src, dst = package_of(s.module), package_of(s.target)
+        if src == "" and dst != "":
+            errors.append(f"{where(s)}: the package root imports {s.target}; importing "
+                          "creative_py must start nothing")
+        elif dst not in ("", src) and src in rules and dst not in rules[src]:
+            allowed = ", ".join(sorted(rules[src])) or "nothing of creative_py"
+            errors.append(f"{where(s)}: {src} imports {s.target}, but {src} may import only "
+                          f"{allowed} ({WHERE})")
+    return errors
+
+
+def misplaced_libraries(statements: list[ImportStatement], owners: dict[str, str]) -> list[str]:
+    """Return ``file:line: ...`` for each import of a third-party engine outside its home."""
+    return [f"{where(s)}: {package_of(s.module)} imports {s.target.split('.')[0]}, which only "
+            f"{owners[s.target.split('.')[0]]} may import ({WHERE})"
+            for s in statements
+            if s.target.split(".")[0] in owners
+            and package_of(s.module) != owners[s.target.split(".")[0]]]
+
+
+def package_graph(statements: list[ImportStatement], known: set[str]) -> dict[str, set[str]]:
+    """Return ``package -> packages of creative_py it imports`` (the root left out)."""
+    graph: dict[str, set[str]] = {p: set() for p in packages(known)}
+    for s in statements:
+        src, dst = package_of(s.module), package_of(s.target)
+        if s.target in known and "" not in (src, dst) and src != dst:
+            graph[src].add(dst)
+    return graph
+
+
+# ----------------------------------------------------------------------- the checker
+
+
+def _statement(module: str, target: str) -> ImportStatement:
+    return ImportStatement(module, PACKAGE / "x.py", 7, target)
+
+
+PAGE = """# Design
+
+## 3. The layers
+
+| package | may import |
+|---|---|
+| `top` | `low`, `leaf` |
+| `low` | `leaf` (the leaf's reader) |
+| `leaf` | nothing |
+
+| library | imported only by |
+|---|---|
+| `pyswip` | `low` |
+
+## 4. Next
+"""
+
+
+def test_the_checker_reads_the_tables_of_the_layers_section() -> None:
+    assert layer_rules(PAGE) == {"top": {"low", "leaf"}, "low": {"leaf"}, "leaf": set()}
+    assert library_owners(PAGE) == {"pyswip": "low"}
+
+
+def test_the_checker_finds_a_forbidden_import_a_missing_row_and_a_misplaced_library() -> None:
+    rules = layer_rules(PAGE)
+    known = {"creative_py", "creative_py.top", "creative_py.low.a", "creative_py.low.b",
+             "creative_py.leaf", "creative_py.new.x"}
+    ok = [_statement("creative_py.top", "creative_py.low.a"),
+          _statement("creative_py.low.a", "creative_py.low.b"),
+          _statement("creative_py.low.b", "creative_py.leaf"),
+          _statement("creative_py.low.b", "creative_py"),
+          _statement("creative_py.leaf", "numpy")]
+    assert forbidden_imports(ok, rules, known) == []
+    bad = _statement("creative_py.leaf", "creative_py.low.a")
+    assert forbidden_imports(ok + [bad], rules, known) == [
+        f"creative_py/x.py:7: leaf imports creative_py.low.a, but leaf may import only "
+        f"nothing of creative_py ({WHERE})"]
+    root = _statement("creative_py", "creative_py.leaf")
+    assert "the package root imports" in forbidden_imports([root], rules, known)[0]
+    assert unnamed_packages(rules, packages(known)) == [
+        f"creative_py/new has no row in the layer table of {WHERE}: add one saying which "
+        "packages it may import, and add it to the rows of the packages that import it"]
+    assert "names leaf, which is no package" in unnamed_packages(rules, {"top", "low"})[0]
+    lib = _statement("creative_py.top", "pyswip.core")
+    assert misplaced_libraries([lib], library_owners(PAGE)) == [
+        f"creative_py/x.py:7: top imports pyswip, which only low may import ({WHERE})"]
+    assert cycles(package_graph(ok + [bad], known)) == [["leaf", "low"]]
+
+
+# ----------------------------------------------------------------------- creative_py
+
+
+def test_every_package_of_creative_py_has_a_row_in_the_layer_table() -> None:
+    rules = layer_rules(DOC.read_text())
+    on_disk = packages(modules())
+    assert {"cli", "learning", "sim", "bridge", "records", "report"} <= on_disk
+    errors = unnamed_packages(rules, on_disk)
+    assert errors == [], "\n".join(errors)
+
+
+def test_the_layer_table_allows_no_cycle_between_packages() -> None:
+    assert cycles(layer_rules(DOC.read_text())) == []
+
+
+def test_no_package_imports_what_its_row_does_not_allow() -> None:
+    rules = layer_rules(DOC.read_text())
+    statements = import_statements()
+    assert len(statements) > 100
+    errors = forbidden_imports(statements, rules, set(modules()))
+    assert errors == [], "\n".join(errors)
+
+
+def test_creative_py_has_no_cycle_between_packages() -> None:
+    known = set(modules())
+    assert cycles(package_graph(import_statements(), known)) == []
+
+
+def test_the_physics_asks_no_one() -> None:
+    # Whatever the table says: the simulator gets the pose resolver from its caller.
+    known = set(modules())
+    assert [where(s) for s in import_statements()
+            if package_of(s.module) == "sim" and s.target in known
+            and package_of(s.target) in ("bridge", "learning")] == []
+
+
+def test_each_third_party_engine_has_one_home() -> None:
+    owners = library_owners(DOC.read_text())
+    assert {"pyswip": "bridge", "pybullet": "sim", "trimesh": "mesh"}.items() <= owners.items()
+    errors = misplaced_libraries(import_statements(), owners)
+    assert errors == [], "\n".join(errors)
