@@ -31,8 +31,9 @@ def trial_table(run: RunContents) -> Table:
     return table
 
 
-_BLOCK_FIELDS = ("pose", "tested", "violated", "reason")
-"""The long columns: their own lines in the narrow layout."""
+_HEAD_FIELDS = ("#", "phase", "n", "tool", "variant", "loc", "outcome")
+"""The short columns: the head line of a trial in the narrow layout; every other column
+(pose, tested, violated, reason, ...) has a line of its own."""
 
 _OUTCOME_STYLE = {"success": "bold green", "failure": "bold red", "blocked": "bold yellow",
                   "unreachable": "bold", "invalid": "bold magenta"}
@@ -51,8 +52,9 @@ def trial_blocks(run: RunContents) -> Group:
         grid = Table.grid(padding=(0, 1))
         grid.add_column(no_wrap=True)
         grid.add_column(overflow="fold")
-        for name in _BLOCK_FIELDS:
-            grid.add_row(Text(f"     {name:<8}"), Text(cells[name](t)))
+        for name, cell in TRIAL_COLUMNS:
+            if name not in _HEAD_FIELDS:
+                grid.add_row(Text(f"     {name:<8}"), Text(cell(t)))
         blocks += [head, grid]
     return Group(*blocks)
 
