@@ -107,6 +107,14 @@ class RunContents:
     pddl_files: list[str]
     warnings: list[str]
 
+    @property
+    def columns(self) -> list[tuple[str, Callable[[TrialRecord], str]]]:
+        """Return the trial columns of this run's records: :data:`TRIAL_COLUMNS`, from the
+        fields of their record type (:func:`~creative_py.records.trial.trial_columns`)."""
+        if self.trials and type(self.trials[0]) is not TrialRecord:
+            return trial_columns(type(self.trials[0]))
+        return TRIAL_COLUMNS
+
 
 def read_run(run_dir: Path | str) -> RunContents:
     """Read a run folder for the reports; write nothing.
