@@ -35,7 +35,7 @@ import math
 import time
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Callable, Iterator, Sequence
+from typing import Any, Callable, Iterator, NamedTuple, Sequence
 
 import numpy as np
 import pybullet as pb
@@ -518,48 +518,87 @@ def run_trial(world: World, tool: str, variant: str, location: int,
     t0 = time.perf_counter()
     with open_episode(world, variant, location, tool, seed, gui, images_dir,
                       pose_target, record=record) as ep:
-        facts: tuple[Fact, ...] = ()
-        final: Observation | None = None
-        acted, status = False, SkillOutcome("ok")
-        for skill in m.skills:
-            if skill.tool_action:
-                facts = ep.observe().facts  # what the action model's precondition speaks of
-                acted = True
-            status = ep.run_skill(skill.name, pose if skill.pose else None)
-            if not status.ok:
-                break
-        # The oracle is asked when the goal can have been reached: every skill ran, or
-        # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
-        reached = status.ok or (acted and status.status == "blocked")
-        reached = reached and ep.goal_reached()
-        outcome, reason = trial_outcome(status, acted, reached)
-        if outcome == "blocked":
-            # What the robot sees where the motion stopped: the catalogue and the task's
-            # facts still describe the trial (a planned example needs them).
-            final = ep.observe()
-            facts = final.facts
-        elif status.ok:
-            final = ep.observe()
-        truth = ep.truth()
-        bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
-        if bad and outcome != "invalid":
-            outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
+        played = play_trial(ep, pose)
         wall_s = time.perf_counter() - t0
         if verdict is not None:
-            verdict(outcome, reason)  # the physics is done with
-        load = ep.tool_load if acted else None
+            verdict(played.outcome, played.reason)  # the physics is done with
+        load = ep.tool_load if played.acted else None
+        final = played.final
         result = TrialResult(
             case=m.id, object=tool, variant=variant, location=int(location),
-            pose=tuple(pose), outcome=outcome, reason=reason,
+            pose=tuple(pose), outcome=played.outcome, reason=played.reason,
             perceived_final=(final.perceived_poses() if final is not None and final.frames
                              else None),
-            true_final=truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
+            true_final=played.truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
             render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
             max_tool_force_n=load.max_force_n if load else 0.0,
-            tool_load=load.to_dict() if load else None, facts_before=tuple(facts))
+            tool_load=load.to_dict() if load else None, facts_before=played.facts_before)
         if record is not None and verdict is None:
             record.render()
     return result
+
+
+class Played(NamedTuple):
+    """What :func:`play_trial` did: the outcome and reason, the facts observed before
+    the tool action (or where a blocked motion stopped), the last observation (None
+    when none was taken), the true poses after the trial, and whether the tool action
+    started."""
+
+    outcome: str
+    reason: str
+    facts_before: tuple[Fact, ...]
+    final: Observation | None
+    truth: dict[str, tuple[float, ...]]
+    acted: bool
+
+
+def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,
+               by_hand: bool = False, timings: dict[str, float] | None = None) -> Played:
+    """Run the manifest's skills in order in an open episode and judge the trial.
+
+    The body of :func:`run_trial`, for a caller that opens the episode itself (the
+    simulator benchmark). Before the tool action the robot observes (the state the
+    action model's precondition speaks of); a blocked motion is observed where it
+    stopped, a trial whose skills all ran at its end. ``observe=False`` takes no
+    observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
+    the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
+    skipped). ``timings`` receives each skill's wall time as ``<skill>_s``. The outcome
+    is :func:`trial_outcome`'s, or ``invalid`` when a true pose is not finite.
+    """
+    facts: tuple[Fact, ...] = ()
+    final: Observation | None = None
+    acted, status = False, SkillOutcome("ok")
+    for skill in ep.manifest.skills:
+        if by_hand and not (skill.pose or skill.tool_action):
+            continue  # the trainer places the tool: no grasp, no carrying
+        if skill.tool_action:
+            if observe:
+                facts = ep.observe().facts  # what the action model's precondition speaks of
+            acted = True
+        t0 = time.perf_counter()
+        options = {"by_hand": True} if by_hand and skill.pose else {}
+        status = ep.run_skill(skill.name, pose if skill.pose else None, **options)
+        if timings is not None:
+            timings[f"{skill.name}_s"] = time.perf_counter() - t0
+        if not status.ok:
+            break
+    # The oracle is asked when the goal can have been reached: every skill ran, or
+    # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
+    reached = status.ok or (acted and status.status == "blocked")
+    reached = reached and ep.goal_reached()
+    outcome, reason = trial_outcome(status, acted, reached)
+    if observe and outcome == "blocked":
+        # What the robot sees where the motion stopped: the catalogue and the task's
+        # facts still describe the trial (a planned example needs them).
+        final = ep.observe()
+        facts = final.facts
+    elif observe and status.ok:
+        final = ep.observe()
+    truth = ep.truth()
+    bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
+    if bad and outcome != "invalid":
+        outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
+    return Played(outcome, reason, tuple(facts), final, truth, acted)
 
 
 def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
