@@ -34,6 +34,7 @@ from creative_py.bridge import Engine
 from creative_py.case import load_cases
 from creative_py.learning.poses import pose_resolver
 from creative_py.sim import load_world, open_episode
+from creative_py.sim.episode import play_trial
 
 RESULTS = Path(__file__).resolve().parent / "results"
 SHORT = {"success": "S", "failure": "F", "blocked": "B", "unreachable": "U", "invalid": "I"}
@@ -61,26 +62,17 @@ def one_trial(world, tool: str, variant: str, location: int, pose, by_hand: bool
     with open_episode(world, variant, location, tool, robot=not by_hand,
                       pose_target=pose_resolver(Engine.instance(), m)) as ep:
         phases["build_s"] = time.perf_counter() - t0
-        outcome, reason = "success", ""
-        skills = [s for s in m.skills if not by_hand or s.pose or s.tool_action]
-        for skill in skills:
-            ts = time.perf_counter()
-            extra = {"by_hand": True} if by_hand and skill.pose else {}
-            res = ep.run_skill(skill.name, pose if skill.pose else None, **extra)
-            phases[f"{skill.name}_s"] = time.perf_counter() - ts
-            if not res.ok:
-                outcome, reason = res.status, res.reason
-                break
-        else:
-            if not ep.goal_reached():
-                outcome, reason = "failure", "the goal was not reached"
+        # The simulator's own trial (run_trial's body): the same outcome for the same
+        # ending; no camera observation, so the figures are the physics' alone.
+        played = play_trial(ep, pose, observe=False, by_hand=by_hand, timings=phases)
+        outcome, reason = played.outcome, played.reason
         records = {k: {"contact_angle": r.contact_angle, "final_angle": r.final_angle,
                        "closed_after_contact_deg": r.closed_after_contact_deg}
                    for k, r in ep.records.items()}
         rec = {"case": m.id, "object": tool, "variant": variant, "location": location,
                "pose": list(pose), "outcome": outcome, "reason": reason, "phases": phases,
                "records": records, "steps": ep.steps, "sim_time_s": ep.sim_time(),
-               "render_time_s": ep.render_time_s, "truth": ep.truth()}
+               "render_time_s": ep.render_time_s, "truth": played.truth}
     rec["wall_time_s"] = time.perf_counter() - t0
     rec["cpu_time_s"] = time.process_time() - c0
     rec["sim_over_wall"] = rec["sim_time_s"] / rec["wall_time_s"]

@@ -27,6 +27,8 @@ import re
 from pathlib import Path
 from typing import Any, Optional, Sequence
 
+from creative_py.records.trial import TrialRecord
+
 VIDEO_MODES = ("all", "key", "none")
 """The values of ``--video`` (``RunOptions.video``)."""
 
@@ -181,14 +183,13 @@ class ClipKeeper:
         self.wall_time_s += time.perf_counter() - t0
         return kept
 
-    def replayed(self, record: dict[str, Any]) -> None:
+    def replayed(self, record: TrialRecord) -> None:
         """Account for a trial of a resumed run (no physics): note its outcome and keep
         the entry of its clip if the interrupted run wrote one."""
-        why = self.why(record["phase"], record["outcome"], record.get("reason", ""))
-        name = self.file_name(int(record["trial"]), record["phase"], record["tool"])
+        why = self.why(record.phase, record.outcome, record.reason)
+        name = self.file_name(record.trial, record.phase, record.tool)
         if why is not None and (self.run_dir / name).is_file():
-            self.entries.append({"file": name, "phase": record["phase"],
-                                 "trial": int(record["trial"]), "tool": record["tool"],
-                                 "tested": list(record.get("tested") or []),
-                                 "outcome": record["outcome"],
-                                 "reason": record.get("reason", ""), "why": why})
+            self.entries.append({"file": name, "phase": record.phase,
+                                 "trial": record.trial, "tool": record.tool,
+                                 "tested": list(record.tested), "outcome": record.outcome,
+                                 "reason": record.reason, "why": why})

@@ -220,7 +220,7 @@ class ToolCreator:
                                                    rejected, thicker_dims)
 
         sf = self.safety_factor
-        check = check_strength(spec, rec.extra.get("tool_load"), trial=rec.trial,
+        check = check_strength(spec, rec.tool_load, trial=rec.trial,
                                safety_factor=sf)
         for _ in range(MAX_THICKENINGS):
             if check.verdict != "fail" or check.model != "cantilever":
@@ -249,7 +249,7 @@ class ToolCreator:
                 rec = self._trial_with(thick, n, vs, task)
             ct2.trial_outcome = rec.outcome
             spec, ct = thick, ct2
-            check = check_strength(thick, rec.extra.get("tool_load"), trial=rec.trial,
+            check = check_strength(thick, rec.tool_load, trial=rec.trial,
                                    safety_factor=sf, thickened_from=check.tool)
             if rec.outcome != "success":
                 check = replace(check, reason=f"the thickened tool's trial ended {rec.outcome}")

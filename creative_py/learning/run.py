@@ -18,7 +18,7 @@ from typing import Any, Callable, Optional
 from creative_py.bridge import Compound, Engine, PrologError, fact_term
 from creative_py.learning.clips import VIDEO_MODES, ClipKeeper
 from creative_py.learning.creation import CreateResult, ToolCreator
-from creative_py.records.folder import RunFolder, read_trials
+from creative_py.records.folder import RunFolder, read_records
 from creative_py.learning.strategies import strategy_named
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
@@ -123,7 +123,7 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
         raise ValueError(f"{run_dir}: not a resumable run folder (no run.json)")
     meta = json.loads(meta_path.read_text())
     warnings: list[str] = []
-    trials = read_trials(run_dir, warn=warnings.append)
+    trials = read_records(run_dir, warn=warnings.append)
     for w in warnings:
         log.warning("%s", w)
     # Keep the readable trials only, so that the run appends after them.
@@ -157,7 +157,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Receives one line of text per step (the CLI shows it).
     world_dir : Path or None
         A world folder other than the shipped one (with its own ``case.toml``).
-    resume : (Path, list of dict) or None
+    resume : (Path, list of TrialRecord) or None
         Used by :func:`resume_run`: the run folder and its recorded trials.
     drawn : dict or None
         Used by :func:`resume_run`: the randomised world recorded in ``run.json``
@@ -220,7 +220,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         summary["vs_count_initial"] = use.vs_count_initial
         summary["vs_count_initial_exact"] = use.vs_count_initial_exact
         summary["info_bound_trials"] = (use.vs_count_initial - 1).bit_length()
-        summary["vs_count_final"] = (use.trials[-1].extra.get("vs_count")
+        summary["vs_count_final"] = (use.trials[-1].vs_count
                                      if use.trials else use.vs_count_initial)
         engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
         hs, hg = runner.bounds(use.vs)
@@ -260,11 +260,11 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                 summary["pddl"]["create"] = _created_pddl(runner, run.path, created, models,
                                                           say)
         trials = runner.trials
-        summary["trials"] = summarise_trials([t.as_dict() for t in trials])
+        summary["trials"] = summarise_trials(trials)
         summary["videos"] = clips.finish()
         summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
         summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
-        plot_trials([t.as_dict() for t in trials], run.path / "trials.png",
+        plot_trials(trials, run.path / "trials.png",
                     title=f"CREATIVE-py, {case} case, seed {options.seed}")
         run.write_json("summary.json", summary)
         write_html_report(run.path)

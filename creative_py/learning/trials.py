@@ -6,18 +6,20 @@ by composition. A trial::
     runner.task_facts(task)                 # what the robot sees of the task: catalogue,
                                             # apparatus, target (one observation per scene)
     runner.run(experiment, "use", 3, vs, task, decision_s)
-        -> execute(tool, task, pose)        # the manifest's skills, in order, in pybullet;
+        -> sim.run_trial(tool, task, pose)  # the manifest's skills, in order, in pybullet;
                                             # the facts before the tool action are observed
         -> engine.label_trial(...)          # success: pos; failure or blocked: neg
-        -> TrialRecord                      # one line of trials.jsonl
+        -> TrialRecord                      # one line of trials.jsonl (records.trial)
 
 Which skills run, with which arguments and which of them takes the pose, comes from the
 case manifest (``[[skill]]`` of ``worlds/<folder>/case.toml``); nothing here names a
 case. The physics alone decides the outcome.
 
-Outcomes ``blocked`` (the arm could not carry out the motion, e.g. a short handle whose
-gripper hits the tube mouth before the prong is behind the cube) count as failures of
-the *planned* example, so they are evidence about the tested literal only; outcomes
+What each way of ending a trial means is decided by the simulator alone
+(:func:`creative_py.sim.episode.trial_outcome`). Outcomes ``blocked`` (the arm could
+not carry out a motion before the tool action, e.g. a short handle whose gripper hits
+the tube mouth before the prong is behind the cube) count as failures of the *planned*
+example, so they are evidence about the tested literal only; outcomes
 ``unreachable`` and ``invalid`` are recorded with their reason and leave the version
 space unchanged.
 """
@@ -26,8 +28,7 @@ from __future__ import annotations
 
 import logging
 import time
-from dataclasses import dataclass, field
-from pathlib import Path
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
@@ -35,6 +36,7 @@ from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
+from creative_py.records.trial import TrialRecord
 
 if TYPE_CHECKING:
     from creative_py.sim import PoseTarget
@@ -57,51 +59,6 @@ class TaskState:
         """Move to the next predefined location (the task changes after a success)."""
         i = self.locations.index(self.location)
         self.location = self.locations[(i + 1) % len(self.locations)]
-
-
-@dataclass
-class TrialRecord:
-    """One executed trial, as written to ``trials.jsonl``."""
-
-    trial: int
-    phase: str
-    phase_trial: int
-    variant: str
-    location: int
-    tool: str
-    kind: str
-    tested: list[str]
-    violated: list[str]
-    pose: dict[str, float]
-    outcome: str
-    reason: str
-    hs: str = ""
-    hg: str = ""
-    wall_time_s: float = 0.0
-    sim_time_s: float = 0.0
-    decision_time_s: float = 0.0
-    extra: dict[str, Any] = field(default_factory=dict)
-
-    def as_dict(self) -> dict[str, Any]:
-        """Return the record as a JSON-ready dict."""
-        d = dict(self.__dict__)
-        d.update(d.pop("extra"))
-        return d
-
-
-@dataclass
-class Executed:
-    """What the physics did with one planned trial."""
-
-    outcome: str
-    reason: str
-    facts_before: list[tuple]
-    sim_time_s: float
-    wall_time_s: float
-    perceived_final: dict[str, Any] = field(default_factory=dict)
-    tool_load: Optional[dict[str, Any]] = None
-    """The largest contact load on the tool during its action (``ToolLoad.to_dict``);
-    None when the action did not run."""
 
 
 def term_text(t: Term) -> str:
@@ -141,66 +98,6 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
     return _TASK_FACTS[key]
 
 
-def execute_trial(world: Any, tool: str, variant: str, location: int,
-                  pose: tuple[float, ...], seed: int, images_dir: Optional[Path],
-                  record: Any = None, verdict: Optional[Callable[[str, str], None]] = None,
-                  gui: bool = False, *, pose_target: PoseTarget) -> Executed:
-    """Run one tool-use trial in pybullet and report the outcome the physics gave.
-
-    The manifest's skills run in order up to the tool action (the pose skill puts the
-    tool at ``pose`` relative to the target). The observation used for learning is
-    taken then, before the tool action: the state the action model's precondition
-    speaks of. With a ``record`` (:class:`creative_py.sim.recorder.Recorder`) the
-    trial's poses are kept; ``verdict(outcome, reason)`` is called once the physics
-    has given the outcome, still inside the episode (where a kept trial's frames are
-    rendered); ``gui`` shows the pybullet GUI. ``pose_target`` gives the pose skill its
-    world target (:func:`creative_py.learning.poses.pose_resolver`).
-    """
-    from creative_py.sim import open_episode
-
-    t0 = time.perf_counter()
-    with open_episode(world, variant, location, tool, seed=seed, images_dir=images_dir,
-                      gui=gui, record=record, pose_target=pose_target) as ep:
-        ex = _act(ep, world.manifest, pose, t0)
-        if verdict is not None:
-            verdict(ex.outcome, ex.reason)  # the physics is done with
-    return ex
-
-
-def _act(ep: Any, m: CaseManifest, pose: tuple[float, ...], t0: float) -> Executed:
-    """Run the manifest's skills in an episode (wall time from ``t0``); see
-    :func:`execute_trial`."""
-    facts: list[tuple] = []
-    action = next(s for s in m.skills if s.tool_action)
-    for skill in m.skills[:m.skills.index(action)]:
-        res = ep.run_skill(skill.name, pose=pose if skill.pose else None)
-        if res.status != "ok":
-            # What the robot sees where the motion stopped: the catalogue and the
-            # task's facts still describe the trial (a planned example needs them).
-            facts = list(ep.observe().facts) if res.status == "blocked" else facts
-            return Executed(res.status, res.reason, facts,
-                            ep.sim_time(), time.perf_counter() - t0)
-    facts = list(ep.observe().facts)
-    res = ep.run_skill(action.name)
-    load = ep.tool_load.to_dict()
-    if res.status != "ok":
-        if res.status == "blocked":
-            # Blocked while acting: the tool could not carry out the action; the
-            # physics says whether the goal was reached with this tool and pose.
-            outcome = "success" if ep.goal_reached() else "failure"
-            return Executed(outcome, res.reason, facts, ep.sim_time(),
-                            time.perf_counter() - t0, tool_load=load)
-        return Executed(res.status, res.reason, facts, ep.sim_time(),
-                        time.perf_counter() - t0, tool_load=load)
-    ok = ep.goal_reached()
-    final = ep.observe()
-    return Executed("success" if ok else "failure",
-                    "goal reached" if ok else "goal not reached", facts,
-                    ep.sim_time(), time.perf_counter() - t0,
-                    perceived_final=final.perceived_poses() if final.frames else {},
-                    tool_load=load)
-
-
 class TrialRunner:
     """Runs planned experiments of one case in the physics and keeps their records.
 
@@ -217,7 +114,7 @@ class TrialRunner:
         Seed of the run; trial ``n`` uses seed ``seed * 1000 + n`` in the physics.
     progress : callable or None
         Called with one line of text per trial.
-    replay : sequence of dict
+    replay : sequence of TrialRecord
         Trials already recorded in ``trials.jsonl`` (a resumed run): the first
         ``len(replay)`` trials take their outcome and observed facts from these records
         instead of the physics, so the version space is rebuilt exactly; the decisions
@@ -231,7 +128,7 @@ class TrialRunner:
 
     def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
                  progress: Optional[Callable[[str], None]] = None,
-                 replay: Sequence[dict[str, Any]] = (), clips: Optional[ClipKeeper] = None,
+                 replay: Sequence[TrialRecord] = (), clips: Optional[ClipKeeper] = None,
                  gui: bool = False) -> None:
         self.engine = engine
         self.world = world
@@ -292,6 +189,8 @@ class TrialRunner:
             if self.clips is not None:
                 self.clips.replayed(self.replay[n - 1])
         else:
+            from creative_py.sim import run_trial
+
             images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
             recorder = self.clips.recorder() if self.clips is not None else None
 
@@ -301,11 +200,11 @@ class TrialRunner:
                     self.clips.write(recorder, why, n, phase, phase_trial, str(tool),
                                      tested_l, outcome, reason, task.location)
 
-            ex = execute_trial(self.world, str(tool), task.variant, task.location,
-                               pose_numbers(pose), self.seed * 1000 + n, images,
-                               record=recorder,
-                               verdict=verdict if recorder is not None else None,
-                               gui=self.gui, pose_target=self.pose_target)
+            ex = run_trial(self.world, str(tool), task.variant, task.location,
+                           pose_numbers(pose), self.seed * 1000 + n, images, gui=self.gui,
+                           record=recorder,
+                           verdict=verdict if recorder is not None else None,
+                           pose_target=self.pose_target)
         td = time.perf_counter()
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is not None and label:
@@ -317,49 +216,49 @@ class TrialRunner:
                                          "planned" if planned else "observed")
         hs, hg = self.bounds(vs)
         decision += time.perf_counter() - td
+        # The hypotheses left between h_g and h_s (version_space:vs_count/3).
+        count, exact = self.engine.vs_count(vs) if label else (None, None)
         rec = TrialRecord(
             trial=n, phase=phase, phase_trial=phase_trial, variant=task.variant,
             location=task.location, tool=str(tool), kind=kind, tested=tested_l,
             violated=[term_text(v) for v in violated], pose=self._pose_dict(pose),
             outcome=ex.outcome, reason=ex.reason, hs=hs, hg=hg,
             wall_time_s=round(ex.wall_time_s, 3), sim_time_s=round(ex.sim_time_s, 3),
-            decision_time_s=round(decision, 4))
-        # What the robot observed before the tool action: a resumed run labels it again.
-        if label:
-            # The hypotheses left between h_g and h_s (version_space:vs_count/3).
-            count, exact = self.engine.vs_count(vs)
-            rec.extra["vs_count"] = count
-            rec.extra["vs_count_exact"] = exact
-        rec.extra["facts"] = [[a.item() if hasattr(a, "item") else a for a in f]
-                              for f in ex.facts_before]
-        if ex.tool_load is not None:
+            decision_time_s=round(decision, 4), vs_count=count, vs_count_exact=exact,
+            # What the robot observed before the tool action: a resumed run labels it again.
+            facts=[[a.item() if hasattr(a, "item") else a for a in f]
+                   for f in ex.facts_before],
             # The largest contact force on the tool while it acted (sim/loads.py), what
             # the strength check of a created tool reads.
-            rec.extra["max_tool_force_n"] = ex.tool_load["max_force_n"]
-            rec.extra["tool_load"] = ex.tool_load
+            max_tool_force_n=ex.tool_load["max_force_n"] if ex.tool_load else None,
+            tool_load=ex.tool_load)
         self.trials.append(rec)
         if self.run_folder and n > len(self.replay):
-            self.run_folder.append_trial(rec.as_dict())
+            self.run_folder.append_trial(rec)
         self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
                       f"loc {task.location}  {ex.outcome:<11} "
                       f"tested {', '.join(tested_l) or '-'}")
         return rec, vs
 
-    def _replayed(self, record: dict[str, Any], tool: str, task: TaskState, pose: Term,
-                  phase: str) -> Executed:
-        """Return what a recorded trial did, after checking it is the trial decided now."""
+    def _replayed(self, record: TrialRecord, tool: str, task: TaskState, pose: Term,
+                  phase: str) -> Any:
+        """Return what a recorded trial did (a :class:`creative_py.sim.TrialResult`),
+        after checking it is the trial decided now."""
+        from creative_py.sim import TrialResult
+
         planned = (phase, tool, task.variant, task.location, self._pose_dict(pose))
-        recorded = (record["phase"], record["tool"], record["variant"], record["location"],
-                    record.get("pose"))
+        recorded = (record.phase, record.tool, record.variant, record.location, record.pose)
         if planned != recorded:
-            raise ValueError(f"trial {record['trial']} of the run being resumed was "
+            raise ValueError(f"trial {record.trial} of the run being resumed was "
                              f"{recorded}, but the learner now plans {planned}: the run "
                              f"cannot be resumed with this code or these files")
-        return Executed(record["outcome"], record.get("reason", ""),
-                        [tuple(f) for f in record.get("facts", [])],
-                        float(record.get("sim_time_s", 0.0)),
-                        float(record.get("wall_time_s", 0.0)),
-                        tool_load=record.get("tool_load"))
+        return TrialResult(
+            case=self.case, object=record.tool, variant=record.variant,
+            location=record.location, pose=pose_numbers(pose), outcome=record.outcome,
+            reason=record.reason, perceived_final=None, true_final={},
+            sim_time_s=float(record.sim_time_s), wall_time_s=float(record.wall_time_s),
+            render_time_s=0.0, steps=0, max_tool_force_n=record.max_tool_force_n or 0.0,
+            tool_load=record.tool_load, facts_before=tuple(tuple(f) for f in record.facts))
 
     def _pose_dict(self, pose: Term) -> dict[str, float]:
         m = self.manifest

@@ -24,7 +24,9 @@ import tempfile
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Union
+
+from creative_py.records.trial import REQUIRED_KEYS, TrialRecord
 
 
 @dataclass
@@ -32,7 +34,7 @@ class RunFolder:
     """A run's output folder; create it with :meth:`create`."""
 
     path: Path
-    trials: list[dict[str, Any]] = field(default_factory=list)
+    trials: list[Union[TrialRecord, dict[str, Any]]] = field(default_factory=list)
 
     @classmethod
     def create(cls, parent: Path, case: str, seed: int, name: str | None = None) -> "RunFolder":
@@ -70,19 +72,19 @@ class RunFolder:
         d.mkdir(exist_ok=True)
         return d
 
-    def append_trial(self, record: dict[str, Any]) -> None:
+    def append_trial(self, record: Union[TrialRecord, dict[str, Any]]) -> None:
         """Append one finished trial to ``trials.jsonl`` and flush it to disk."""
-        line = json.dumps(_jsonable(record), sort_keys=False)
+        line = _line(record)
         with open(self.trials_path, "a", encoding="utf-8") as fh:
             fh.write(line + "\n")
             fh.flush()
             os.fsync(fh.fileno())
         self.trials.append(record)
 
-    def rewrite_trials(self, records: list[dict[str, Any]]) -> None:
+    def rewrite_trials(self, records: list[Union[TrialRecord, dict[str, Any]]]) -> None:
         """Replace ``trials.jsonl`` by ``records`` (atomically): a resumed run keeps its
         readable trials and drops a torn or corrupt line."""
-        text = "".join(json.dumps(_jsonable(r)) + "\n" for r in records)
+        text = "".join(_line(r) + "\n" for r in records)
         write_atomic(self.trials_path, text)
         self.trials = list(records)
 
@@ -95,37 +97,55 @@ class RunFolder:
         return write_atomic(self.path / name, json.dumps(_jsonable(data), indent=2) + "\n")
 
 
-TRIAL_KEYS = ("trial", "phase", "variant", "location", "tool", "outcome")
+TRIAL_KEYS = REQUIRED_KEYS
 """The keys every line of ``trials.jsonl`` has (the report and the plot need them)."""
 
 
-def read_trials(run_dir: Path, warn: Callable[[str], None] | None = None) -> list[dict[str, Any]]:
-    """Return every readable trial of a run folder.
+def read_records(run_dir: Path, warn: Callable[[str], None] | None = None
+                 ) -> list[TrialRecord]:
+    """Return every readable trial of a run folder as a checked :class:`TrialRecord`.
 
-    A line that is not JSON (a torn last line of a killed run, a corrupt one) or lacks
-    one of :data:`TRIAL_KEYS` is skipped, and ``warn`` is called with one sentence
-    naming the file and the line.
+    A line that is not JSON (a torn last line of a killed run, a corrupt one) or not a
+    valid record (:meth:`TrialRecord.from_json`: a missing key, a value of the wrong
+    type, an unknown outcome) is skipped, and ``warn`` is called with one sentence
+    naming the file, the line and the field.
     """
     out = []
-    path = Path(run_dir) / "trials.jsonl"
-    if not path.exists():
-        raise FileNotFoundError(f"{path}: no trials.jsonl in this run folder")
-    for n, line in enumerate(path.read_text(encoding="utf-8", errors="replace").splitlines(), 1):
-        if not line.strip():
-            continue
+    for n, line, path in _lines(run_dir):
         try:
-            record = json.loads(line)
+            data = json.loads(line)
         except json.JSONDecodeError as exc:
             if warn:
                 warn(f"{path}: line {n} is not a JSON object ({exc.msg}); skipped")
             continue
-        missing = [k for k in TRIAL_KEYS if not isinstance(record, dict) or k not in record]
-        if missing:
+        try:
+            out.append(TrialRecord.from_dict(data))
+        except ValueError as exc:
             if warn:
-                warn(f"{path}: line {n} lacks {', '.join(missing)}; skipped")
-            continue
-        out.append(record)
+                warn(f"{path}: line {n} {exc}; skipped")
     return out
+
+
+def read_trials(run_dir: Path, warn: Callable[[str], None] | None = None) -> list[dict[str, Any]]:
+    """Return every readable trial of a run folder as the JSON object of its line
+    (:func:`read_records`, then :meth:`TrialRecord.to_dict`)."""
+    return [r.to_dict() for r in read_records(run_dir, warn)]
+
+
+def _lines(run_dir: Path) -> list[tuple[int, str, Path]]:
+    """Return ``(number, text, file)`` of each non-blank line of ``trials.jsonl``."""
+    path = Path(run_dir) / "trials.jsonl"
+    if not path.exists():
+        raise FileNotFoundError(f"{path}: no trials.jsonl in this run folder")
+    lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
+    return [(n, line, path) for n, line in enumerate(lines, 1) if line.strip()]
+
+
+def _line(record: Union[TrialRecord, dict[str, Any]]) -> str:
+    """Return one line of ``trials.jsonl`` (no newline)."""
+    if not isinstance(record, TrialRecord):
+        record = TrialRecord.from_dict(record)  # checked like a line read back
+    return record.to_json()
 
 
 def write_atomic(path: Path, text: str) -> Path:

@@ -5,7 +5,9 @@
 :class:`RunContents`. Every file name it keeps is relative to the run folder, in POSIX
 form, so a page that links to them works wherever the folder is moved or unzipped; a
 name that points outside the folder is dropped with a warning. The trial columns both
-reports show are defined once, in :data:`TRIAL_COLUMNS`.
+reports show come from the trial record's fields (:data:`TRIAL_COLUMNS`,
+:func:`creative_py.records.trial.trial_columns`), so a new field with a ``column`` shows
+in both without a change here.
 """
 
 from __future__ import annotations
@@ -15,7 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
 
-from creative_py.records.folder import read_trials
+from creative_py.records.folder import read_records
+from creative_py.records.trial import TrialRecord, trial_columns
 
 
 @dataclass
@@ -75,7 +78,7 @@ class RunContents:
     ----------
     path : Path
         The run folder.
-    trials : list of dict
+    trials : list of TrialRecord
         The readable records of ``trials.jsonl``, in order.
     summary : dict
         ``summary.json`` (empty when missing, as in a run still going, or unreadable).
@@ -95,7 +98,7 @@ class RunContents:
     """
 
     path: Path
-    trials: list[dict[str, Any]]
+    trials: list[TrialRecord]
     summary: dict[str, Any]
     model_text: str | None
     plot: str | None
@@ -103,6 +106,14 @@ class RunContents:
     tools: list[ToolEntry]
     pddl_files: list[str]
     warnings: list[str]
+
+    @property
+    def columns(self) -> list[tuple[str, Callable[[TrialRecord], str]]]:
+        """Return the trial columns of this run's records: :data:`TRIAL_COLUMNS`, from the
+        fields of their record type (:func:`~creative_py.records.trial.trial_columns`)."""
+        if self.trials and type(self.trials[0]) is not TrialRecord:
+            return trial_columns(type(self.trials[0]))
+        return TRIAL_COLUMNS
 
 
 def read_run(run_dir: Path | str) -> RunContents:
@@ -124,7 +135,7 @@ def read_run(run_dir: Path | str) -> RunContents:
     """
     root = Path(run_dir)
     warnings: list[str] = []
-    trials = read_trials(root, warn=warnings.append)
+    trials = read_records(root, warn=warnings.append)
     summary = _read_json(root / "summary.json", warnings)
     if not isinstance(summary, dict):
         warnings.append(f"{root / 'summary.json'}: not a JSON object; no summary shown")
@@ -219,13 +230,6 @@ def number_text(value: Any) -> str:
     return str(value)
 
 
-def pose_text(pose: Any) -> str:
-    """Return a trial's pose numbers as ``name=value`` pairs (``-`` when none)."""
-    if isinstance(pose, dict) and pose:
-        return ", ".join(f"{k}={number_text(v)}" for k, v in pose.items())
-    return "-" if pose in (None, {}, []) else str(pose)
-
-
 def literals_text(literals: Any) -> str:
     """Return a list of literals joined by commas (``-`` when empty)."""
     if isinstance(literals, list):
@@ -233,22 +237,11 @@ def literals_text(literals: Any) -> str:
     return "-" if literals in (None, "") else str(literals)
 
 
-TRIAL_COLUMNS: list[tuple[str, Callable[[dict[str, Any]], str]]] = [
-    ("#", lambda t: str(t.get("trial", ""))),
-    ("phase", lambda t: str(t.get("phase", ""))),
-    ("n", lambda t: str(t.get("phase_trial", ""))),
-    ("tool", lambda t: str(t.get("tool", ""))),
-    ("variant", lambda t: str(t.get("variant", ""))),
-    ("loc", lambda t: str(t.get("location", ""))),
-    ("pose", lambda t: pose_text(t.get("pose"))),
-    ("tested", lambda t: literals_text(t.get("tested"))),
-    ("violated", lambda t: literals_text(t.get("violated"))),
-    ("outcome", lambda t: str(t.get("outcome", ""))),
-    ("reason", lambda t: str(t.get("reason", "")) or "-"),
-]
-"""The trial table's columns, ``(header, cell text of a trial record)``: the trial's
-number in the run, its phase and number within the phase, tool, task variant, location,
-pose, the tested and violated literals, outcome and reason."""
+TRIAL_COLUMNS: list[tuple[str, Callable[[TrialRecord], str]]] = trial_columns()
+"""The trial table's columns, ``(header, cell text of a trial record)``: every field of
+:class:`~creative_py.records.trial.TrialRecord` with a ``column`` (the trial's number
+in the run, its phase and number within the phase, tool, task variant, location, pose,
+the tested and violated literals, outcome and reason)."""
 
 
 def split_top_level(text: str, sep: str = ",") -> list[str]:

@@ -19,7 +19,7 @@ from urllib.parse import quote
 
 from creative_py.records.folder import write_atomic
 from creative_py.report.contents import (
-    TRIAL_COLUMNS, Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
+    Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
     plan_steps, read_run, relative_inside,
 )
 
@@ -193,11 +193,11 @@ def _trials_section(run: RunContents) -> str:
         plot = '<p class="none">No trials.png in this run folder.</p>'
     if not run.trials:
         return plot + '<p class="none">No readable trial.</p>'
-    head = "".join(f"<th>{escape(h)}</th>" for h, _ in TRIAL_COLUMNS)
+    head = "".join(f"<th>{escape(h)}</th>" for h, _ in run.columns)
     rows = []
     for t in run.trials:
         cells = []
-        for header, cell in TRIAL_COLUMNS:
+        for header, cell in run.columns:
             text = cell(t)
             if header == "outcome":
                 cells.append(f"<td>{_outcome(text)}</td>")

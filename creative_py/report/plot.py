@@ -10,7 +10,12 @@ it tested. Evaluation trials (no learning) are labelled "EV".
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
+from typing import Any, Sequence, Union
+
+from creative_py.records.trial import TrialRecord, as_record
+
+Trials = Sequence[Union[TrialRecord, dict[str, Any]]]
+"""Trial records, or the JSON objects of their ``trials.jsonl`` lines."""
 
 MARKERS = {
     "success": dict(marker="o", color="tab:green", label="success"),
@@ -21,13 +26,13 @@ MARKERS = {
 }
 
 
-def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Path:
+def plot_trials(trials: Trials, path: Path, title: str = "") -> Path:
     """Draw the trial outcomes of a run and save them as a PNG.
 
     Parameters
     ----------
-    trials : list of dict
-        Records of ``trials.jsonl``; keys used: ``phase``, ``phase_trial``, ``tool``,
+    trials : sequence of TrialRecord or dict
+        Records of ``trials.jsonl``; fields used: ``phase``, ``phase_trial``, ``tool``,
         ``tested`` (written under each trial), ``outcome``.
     path : Path
         PNG file to write.
@@ -39,24 +44,25 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
+    trials = [as_record(t) for t in trials]
     tools: list[str] = []
     for t in trials:
-        if t["tool"] not in tools:
-            tools.append(t["tool"])
-    longest = max((len(", ".join(t.get("tested") or [])) for t in trials), default=0)
+        if t.tool not in tools:
+            tools.append(t.tool)
+    longest = max((len(", ".join(t.tested)) for t in trials), default=0)
     # Room under the axis for the slanted labels (about 0.045 inch per character).
     fig, ax = plt.subplots(figsize=(max(6.0, 0.45 * len(trials) + 2.5),
                                     1.6 + 0.38 * len(tools) + 0.045 * longest))
     seen = set()
     for i, t in enumerate(trials, start=1):
-        style = dict(MARKERS.get(t["outcome"], MARKERS["invalid"]))
+        style = dict(MARKERS.get(t.outcome, MARKERS["invalid"]))
         label = style.pop("label")
-        y = tools.index(t["tool"])
+        y = tools.index(t.tool)
         ax.scatter([i], [y], s=70, label=None if label in seen else label, **style)
         seen.add(label)
     labels = trial_labels(trials)
     # Shade the tool-creation trials and mark the task variant changes.
-    tc = [i for i, t in enumerate(trials, start=1) if t["phase"] == "create"]
+    tc = [i for i, t in enumerate(trials, start=1) if t.phase == "create"]
     if tc:
         ax.axvspan(min(tc) - 0.5, max(tc) + 0.5, color="tab:blue", alpha=0.08, lw=0)
         ax.text(min(tc) - 0.4, len(tools) - 0.6, "tool creation", fontsize=8, color="tab:blue")
@@ -79,25 +85,26 @@ def plot_trials(trials: list[dict[str, Any]], path: Path, title: str = "") -> Pa
     return Path(path)
 
 
-def trial_labels(trials: list[dict[str, Any]]) -> list[str]:
+def trial_labels(trials: Trials) -> list[str]:
     """Return each trial's label in the plot: phase tag, trial number in its phase and
     the literal it tested (``TUL 2  hook_down(hook_a2)``; the model's trials test none)."""
     out = []
-    for i, t in enumerate(trials, start=1):
-        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t["phase"], t["phase"])
-        tested = ", ".join(t.get("tested") or [])
-        out.append(f"{tag} {t.get('phase_trial', i)}" + (f"  {tested}" if tested else ""))
+    for i, t in enumerate((as_record(t) for t in trials), start=1):
+        tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t.phase, t.phase)
+        tested = ", ".join(t.tested)
+        out.append(f"{tag} {t.phase_trial or i}" + (f"  {tested}" if tested else ""))
     return out
 
 
-def summarise_trials(trials: list[dict[str, Any]]) -> dict[str, Any]:
+def summarise_trials(trials: Trials) -> dict[str, Any]:
     """Return counts of trials and successes per phase."""
+    records = [as_record(t) for t in trials]
     out: dict[str, Any] = {}
     for phase in ("use", "create", "eval"):
-        ts = [t for t in trials if t["phase"] == phase]
+        ts = [t for t in records if t.phase == phase]
         out[phase] = {
             "trials": len(ts),
-            "successes": sum(t["outcome"] == "success" for t in ts),
-            "outcomes": [t["outcome"] for t in ts],
+            "successes": sum(t.outcome == "success" for t in ts),
+            "outcomes": [t.outcome for t in ts],
         }
     return out

@@ -17,22 +17,24 @@ from rich.console import Console, Group
 from rich.table import Table
 from rich.text import Text
 
-from creative_py.report.contents import TRIAL_COLUMNS, RunContents, literals_text
+from creative_py.report.contents import RunContents, literals_text
 
 
 def trial_table(run: RunContents) -> Table:
-    """Return the table of every readable trial, with all of :data:`TRIAL_COLUMNS`."""
+    """Return the table of every readable trial, with all of its columns
+    (:attr:`RunContents.columns`: every field of the record with a ``column``)."""
     table = Table(title=str(run.path), title_justify="left")
-    for header, _ in TRIAL_COLUMNS:
+    for header, _ in run.columns:
         table.add_column(header, overflow="fold",
                          justify="right" if header in ("#", "n", "loc") else "left")
     for t in run.trials:
-        table.add_row(*(cell(t) for _, cell in TRIAL_COLUMNS))
+        table.add_row(*(cell(t) for _, cell in run.columns))
     return table
 
 
-_BLOCK_FIELDS = ("pose", "tested", "violated", "reason")
-"""The long columns: their own lines in the narrow layout."""
+_HEAD_FIELDS = ("#", "phase", "n", "tool", "variant", "loc", "outcome")
+"""The short columns: the head line of a trial in the narrow layout; every other column
+(pose, tested, violated, reason, ...) has a line of its own."""
 
 _OUTCOME_STYLE = {"success": "bold green", "failure": "bold red", "blocked": "bold yellow",
                   "unreachable": "bold", "invalid": "bold magenta"}
@@ -41,7 +43,7 @@ _OUTCOME_STYLE = {"success": "bold green", "failure": "bold red", "blocked": "bo
 def trial_blocks(run: RunContents) -> Group:
     """Return every trial as a block of lines (the narrow layout): a head line, then one
     labelled line per long column, folded to the width."""
-    cells = dict(TRIAL_COLUMNS)
+    cells = dict(run.columns)
     blocks = []
     for t in run.trials:
         outcome = cells["outcome"](t)
@@ -51,8 +53,9 @@ def trial_blocks(run: RunContents) -> Group:
         grid = Table.grid(padding=(0, 1))
         grid.add_column(no_wrap=True)
         grid.add_column(overflow="fold")
-        for name in _BLOCK_FIELDS:
-            grid.add_row(Text(f"     {name:<8}"), Text(cells[name](t)))
+        for name, cell in run.columns:
+            if name not in _HEAD_FIELDS:
+                grid.add_row(Text(f"     {name:<8}"), Text(cell(t)))
         blocks += [head, grid]
     return Group(*blocks)
 

@@ -20,15 +20,16 @@ Modules, from the data to the physics:
                 catalogue facts
 ``primitives``  the skill primitives a manifest binds by name
 ``oracles``     the success oracles a world's ``tasks.toml`` configures
-``episode``     one scene driven skill by skill (open_episode, run_trial)
+``episode``     one scene driven skill by skill (open_episode, run_trial, trial_outcome)
 ``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
 """
 
-from creative_py.sim.episode import Episode, PoseTarget, open_episode, run_trial, tool_rests
+from creative_py.sim.episode import (Episode, PoseTarget, open_episode, run_trial, tool_rests,
+                                     trial_outcome)
 from creative_py.sim.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
                                    SkillOutcome, TrialResult)
 from creative_py.sim.world import World, load_world
 
 __all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
            "TRIAL_OUTCOMES", "TrialResult", "World", "load_world", "open_episode", "run_trial",
-           "tool_rests"]
+           "tool_rests", "trial_outcome"]

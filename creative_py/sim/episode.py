@@ -37,9 +37,8 @@ import logging
 import math
 import time
 from contextlib import contextmanager
-from dataclasses import replace
 from pathlib import Path
-from typing import Any, Callable, Iterator, Sequence
+from typing import Any, Callable, Iterator, NamedTuple, Sequence
 
 import numpy as np
 import pybullet as pb
@@ -487,41 +486,133 @@ def run_trial(world: World, tool: str, variant: str, location: int,
               pose: Sequence[float] | None = None, seed: int = 0,
               images_dir: Path | None = None, gui: bool = False,
               pose_target: PoseTarget | None = None,
-              record: Recorder | None = None) -> TrialResult:
+              record: Recorder | None = None,
+              verdict: Callable[[str, str], None] | None = None) -> TrialResult:
     """Run one physical trial: every skill of the manifest in order, then the oracle.
 
     ``pose=None`` uses the demonstration's pose. The outcome comes from the simulated
-    state only: ``success``/``failure`` when every skill ran, else the status of the
-    skill that stopped (``blocked``, ``unreachable``, ``invalid``). With ``record``, the
-    trial's poses are kept for a clip (rendered with ``record.render()`` at the end,
-    after the verdict).
+    state only (:func:`trial_outcome` says what each way of ending means). The
+    robot's observation before the tool action (or where a blocked motion stopped) is
+    the result's ``facts_before``, the state the learner labels. ``verdict(outcome,
+    reason)`` is called once the physics has given the outcome, still inside the
+    episode (where a kept trial's frames are rendered). With ``record``, the trial's
+    poses are kept for a clip: the verdict renders them if it keeps the clip; without a
+    verdict they are rendered (``record.render()``) at the end. ``wall_time_s`` is the
+    wall time until the verdict.
     """
     m = world.manifest
     pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
     t0 = time.perf_counter()
     with open_episode(world, variant, location, tool, seed, gui, images_dir,
                       pose_target, record=record) as ep:
-        outcome, reason = "success", ""
-        for skill in m.skills:
-            res = ep.run_skill(skill.name, pose if skill.pose else None)
-            if not res.ok:
-                outcome, reason = res.status, res.reason
-                break
-        else:
-            if not ep.goal_reached():
-                outcome, reason = "failure", "the goal was not reached"
-        obs = ep.observe()
-        perceived = obs.perceived_poses() if obs.frames else None
-        truth = ep.truth()
-        bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
-        if bad and outcome != "invalid":
-            outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
+        played = play_trial(ep, pose)
+        wall_s = time.perf_counter() - t0
+        if verdict is not None:
+            verdict(played.outcome, played.reason)  # the physics is done with
+        load = ep.tool_load if played.acted else None
+        final = played.final
         result = TrialResult(
             case=m.id, object=tool, variant=variant, location=int(location),
-            pose=tuple(pose), outcome=outcome, reason=reason, perceived_final=perceived,
-            true_final=truth, sim_time_s=ep.sim_time(), wall_time_s=0.0,
+            pose=tuple(pose), outcome=played.outcome, reason=played.reason,
+            perceived_final=(final.perceived_poses() if final is not None and final.frames
+                             else None),
+            true_final=played.truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
             render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
-            max_tool_force_n=ep.tool_load.max_force_n, tool_load=ep.tool_load.to_dict())
-        if record is not None:
+            max_tool_force_n=load.max_force_n if load else 0.0,
+            tool_load=load.to_dict() if load else None, facts_before=played.facts_before)
+        if record is not None and verdict is None:
             record.render()
-    return replace(result, wall_time_s=time.perf_counter() - t0)
+    return result
+
+
+class Played(NamedTuple):
+    """What :func:`play_trial` did: the outcome and reason, the facts observed before
+    the tool action (or where a blocked motion stopped), the last observation (None
+    when none was taken), the true poses after the trial, and whether the tool action
+    started."""
+
+    outcome: str
+    reason: str
+    facts_before: tuple[Fact, ...]
+    final: Observation | None
+    truth: dict[str, tuple[float, ...]]
+    acted: bool
+
+
+def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,
+               by_hand: bool = False, timings: dict[str, float] | None = None) -> Played:
+    """Run the manifest's skills in order in an open episode and judge the trial.
+
+    The body of :func:`run_trial`, for a caller that opens the episode itself (the
+    simulator benchmark). Before the tool action the robot observes (the state the
+    action model's precondition speaks of); a blocked motion is observed where it
+    stopped, a trial whose skills all ran at its end. ``observe=False`` takes no
+    observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
+    the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
+    skipped). ``timings`` receives each skill's wall time as ``<skill>_s``. The outcome
+    is :func:`trial_outcome`'s, or ``invalid`` when a true pose is not finite.
+    """
+    facts: tuple[Fact, ...] = ()
+    final: Observation | None = None
+    acted, status = False, SkillOutcome("ok")
+    for skill in ep.manifest.skills:
+        if by_hand and not (skill.pose or skill.tool_action):
+            continue  # the trainer places the tool: no grasp, no carrying
+        if skill.tool_action:
+            if observe:
+                facts = ep.observe().facts  # what the action model's precondition speaks of
+            acted = True
+        t0 = time.perf_counter()
+        options = {"by_hand": True} if by_hand and skill.pose else {}
+        status = ep.run_skill(skill.name, pose if skill.pose else None, **options)
+        if timings is not None:
+            timings[f"{skill.name}_s"] = time.perf_counter() - t0
+        if not status.ok:
+            break
+    # The oracle is asked when the goal can have been reached: every skill ran, or
+    # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
+    reached = status.ok or (acted and status.status == "blocked")
+    reached = reached and ep.goal_reached()
+    outcome, reason = trial_outcome(status, acted, reached)
+    if observe and outcome == "blocked":
+        # What the robot sees where the motion stopped: the catalogue and the task's
+        # facts still describe the trial (a planned example needs them).
+        final = ep.observe()
+        facts = final.facts
+    elif observe and status.ok:
+        final = ep.observe()
+    truth = ep.truth()
+    bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
+    if bad and outcome != "invalid":
+        outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
+    return Played(outcome, reason, tuple(facts), final, truth, acted)
+
+
+def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
+    """Return a trial's ``(outcome, reason)``: the one place that says what each way of
+    ending a trial means.
+
+    Parameters
+    ----------
+    status : SkillOutcome
+        How the last skill run ended (``ok`` when every skill ran).
+    acted : bool
+        Whether the tool action started (the motion that stopped, if any, was the tool
+        action or a skill after it).
+    reached : bool
+        Whether the goal holds (the oracle), asked when the skills ran or the tool acted.
+
+    Returns
+    -------
+    (str, str)
+        Every skill ran: ``success`` / ``failure`` as the goal was or was not reached.
+        Blocked before the tool action: ``blocked`` (the arm could not carry out the
+        planned motion). Blocked while the tool acted: the tool could not carry out the
+        action to its end, and the physics says ``success`` or ``failure`` by the goal.
+        Otherwise the skill's status (``unreachable``, ``invalid``) with its reason.
+    """
+    if status.ok:
+        return ("success", "goal reached") if reached else ("failure", "goal not reached")
+    if status.status == "blocked" and acted:
+        return ("success" if reached else "failure"), status.reason
+    return status.status, status.reason

@@ -1,13 +1,16 @@
 """The simulator's value types: what a skill, an observation and a trial give back.
 
-A leaf module (it imports nothing from :mod:`creative_py`), so the episode, the
-primitives, the robot and the learning loop can all share one ``SkillOutcome`` without
-an import cycle.
+A leaf of the simulator (it imports only the outcome vocabulary of
+:mod:`creative_py.records.trial`, the bottom layer), so the episode, the primitives,
+the robot and the learning loop can all share one ``SkillOutcome`` without an import
+cycle.
 
-Outcomes of a trial: ``success`` / ``failure`` (every skill ran; the goal was or was
-not reached), ``blocked`` (a move was stopped by a collision: the tracking-error
-guard), ``unreachable`` (no arm posture reaches a waypoint), ``invalid`` (the physics
-blew up: NaN, an object thrown out of the scene).
+Outcomes of a trial (:data:`TRIAL_OUTCOMES`, decided in one place,
+:func:`creative_py.sim.episode.trial_outcome`): ``success`` / ``failure`` (every skill
+ran, or the tool was stopped while acting; the goal was or was not reached),
+``blocked`` (a move before the tool action was stopped by a collision: the
+tracking-error guard), ``unreachable`` (no arm posture reaches a waypoint),
+``invalid`` (the physics blew up: NaN, an object thrown out of the scene).
 """
 
 from __future__ import annotations
@@ -16,10 +19,11 @@ import json
 from dataclasses import asdict, dataclass, field
 from typing import Any, Literal
 
+from creative_py.records.trial import TRIAL_OUTCOMES  # noqa: F401 - the simulator's vocabulary too
+
 SkillStatus = Literal["ok", "blocked", "unreachable", "invalid"]
 TrialOutcome = Literal["success", "failure", "blocked", "unreachable", "invalid"]
 SKILL_STATUSES: tuple[str, ...] = ("ok", "blocked", "unreachable", "invalid")
-TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
 
 Fact = tuple[Any, ...]
 """A primitive fact as a tuple: predicate name then arguments, e.g. ``("held", "t1")``."""
@@ -77,7 +81,10 @@ class Observation:
 
 @dataclass(frozen=True)
 class TrialResult:
-    """The record of one physical trial (one line of ``trials.jsonl``).
+    """What the physics did in one trial (:func:`creative_py.sim.episode.run_trial`).
+
+    The learning loop turns it into a :class:`creative_py.records.trial.TrialRecord`,
+    the line of ``trials.jsonl``.
 
     Attributes
     ----------
@@ -107,7 +114,11 @@ class TrialResult:
         step of the tool action, newtons (:mod:`creative_py.sim.loads`).
     tool_load : dict or None
         Where and how that force acted (``ToolLoad.to_dict``: point and force in the
-        tool frame, the grasp point, the bodies touched).
+        tool frame, the grasp point, the bodies touched); None when the tool action did
+        not start.
+    facts_before : tuple of Fact
+        What the robot observed just before the tool action, or where a blocked motion
+        stopped (empty when a skill before the action ended unreachable or invalid).
     """
 
     case: str
@@ -126,6 +137,7 @@ class TrialResult:
     seed: int = 0
     max_tool_force_n: float = 0.0
     tool_load: dict[str, Any] | None = None
+    facts_before: tuple[Fact, ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
         """Return the result as plain JSON-ready data (tuples become lists)."""

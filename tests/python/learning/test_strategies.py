@@ -59,8 +59,8 @@ def test_informative_stops_certified_without_confirmation_trials(informative):
 
 def test_informative_records_the_count_after_every_trial(informative):
     use = informative
-    counts = [t.extra["vs_count"] for t in use.trials]
-    assert all(t.extra["vs_count_exact"] is True for t in use.trials)
+    counts = [t.vs_count for t in use.trials]
+    assert all(t.vs_count_exact is True for t in use.trials)
     # The demonstration leaves 2^14 hypotheses (14 literals of h_s); no trial adds one,
     # and every trial the strategy chose removed some.
     assert use.vs_count_initial == 2 ** 14

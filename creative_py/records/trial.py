@@ -1,0 +1,309 @@
+"""One trial as a run records it: :class:`TrialRecord`, one line of ``trials.jsonl``.
+
+The record is the single owner of that line's format. The learning loop fills it
+(:class:`creative_py.learning.trials.TrialRunner`), :meth:`TrialRecord.to_json` writes
+it, :meth:`TrialRecord.from_json` reads and checks it (resume, the reports, validated
+replay), and the reports take their trial columns from its fields
+(:func:`trial_columns`). A new field is one typed line here (with a ``column`` in its
+metadata when the reports should show it) and the line that fills it; nothing else
+changes.
+
+The JSON keeps the keys and meaning of every ``trials.jsonl`` written so far: the
+fields in their order, an optional field (default None) left out while None, and the
+keys this module does not know (written by a later version) kept in
+:attr:`TrialRecord.extra` and written back after the known ones.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import types
+import typing
+from dataclasses import dataclass, field, fields
+from typing import Any, Callable, Union
+
+TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
+"""Outcomes of a trial: ``success`` / ``failure`` (the goal was or was not reached),
+``blocked`` (a motion before the tool action was stopped by a collision),
+``unreachable`` (no arm posture reaches a waypoint), ``invalid`` (the physics blew up)."""
+
+PHASES: tuple[str, ...] = ("use", "create", "eval")
+"""Phases of a run: tool-use learning, tool creation, evaluation."""
+
+REQUIRED_KEYS: tuple[str, ...] = ("trial", "phase", "variant", "location", "tool", "outcome")
+"""The keys every line of ``trials.jsonl`` has; the others have defaults."""
+
+
+def _column(header: str) -> dict[str, str]:
+    return {"column": header}
+
+
+@dataclass(kw_only=True)
+class TrialRecord:
+    """One executed trial, as written to ``trials.jsonl``.
+
+    Attributes
+    ----------
+    trial : int
+        Number of the trial in the run (1-based).
+    phase : str
+        One of :data:`PHASES`.
+    phase_trial : int
+        Number of the trial within its phase.
+    variant, location, tool : str, int, str
+        The task variant, the target location (1-based) and the tool tried.
+    kind : str
+        What the planner asked for: ``experiment`` (a tested literal) or ``exploit``.
+    tested, violated : list of str
+        The literal the trial tests, and the literals of h_g the tool or pose violates.
+    pose : dict
+        The pose numbers by name (``{"pose": text}`` for a pose term of another shape).
+    outcome : str
+        One of :data:`TRIAL_OUTCOMES`, given by the physics alone.
+    reason : str
+        Why, in words.
+    hs, hg : str
+        The version space's bounds after the trial.
+    wall_time_s, sim_time_s, decision_time_s : float
+        Wall time of the physics, simulated time, and the learner's decision time.
+    vs_count, vs_count_exact : int or None, bool or None
+        The hypotheses left between h_g and h_s after a labelled trial (None when the
+        trial taught nothing: evaluation, created tools).
+    facts : list of list
+        What the robot observed before the tool action (or where a blocked motion
+        stopped); a resumed run labels the trial with these again.
+    max_tool_force_n : float or None
+        The largest contact force on the tool while it acted (None when it did not act).
+    tool_load : dict or None
+        Where and how that force acted (``ToolLoad.to_dict``; the strength check reads it).
+    extra : dict
+        Keys of the line this version does not know, kept as they were.
+    """
+
+    trial: int = field(metadata=_column("#"))
+    phase: str = field(metadata=_column("phase"))
+    phase_trial: int = field(default=0, metadata=_column("n"))
+    variant: str = field(metadata=_column("variant"))
+    location: int = field(metadata=_column("loc"))
+    tool: str = field(metadata=_column("tool"))
+    kind: str = ""
+    tested: list[str] = field(default_factory=list, metadata=_column("tested"))
+    violated: list[str] = field(default_factory=list, metadata=_column("violated"))
+    pose: dict[str, Union[float, str]] = field(default_factory=dict,
+                                               metadata=_column("pose"))
+    outcome: str = field(metadata=_column("outcome"))
+    reason: str = field(default="", metadata=_column("reason"))
+    hs: str = ""
+    hg: str = ""
+    wall_time_s: float = 0.0
+    sim_time_s: float = 0.0
+    decision_time_s: float = 0.0
+    vs_count: Union[int, None] = None
+    vs_count_exact: Union[bool, None] = None
+    facts: list[list[Any]] = field(default_factory=list)
+    max_tool_force_n: Union[float, None] = None
+    tool_load: Union[dict[str, Any], None] = None
+    extra: dict[str, Any] = field(default_factory=dict, compare=False)
+
+    # The column order of the reports: # phase n tool variant loc pose tested violated
+    # outcome reason (a field's own order otherwise).
+    COLUMN_ORDER: typing.ClassVar[tuple[str, ...]] = (
+        "trial", "phase", "phase_trial", "tool", "variant", "location", "pose", "tested",
+        "violated", "outcome", "reason")
+
+    def __post_init__(self) -> None:
+        _validate(self)
+
+    # ----------------------------------------------------------------- JSON
+    def to_dict(self) -> dict[str, Any]:
+        """Return the record as the JSON object of its ``trials.jsonl`` line."""
+        out: dict[str, Any] = {}
+        for f in fields(self):
+            if f.name == "extra":
+                continue
+            value = getattr(self, f.name)
+            if value is None and f.default is None:
+                continue  # an optional field is written only when it has a value
+            out[f.name] = value
+        out.update({k: v for k, v in self.extra.items() if k not in out})
+        return _jsonable(out)
+
+    def to_json(self) -> str:
+        """Return the record as one line of ``trials.jsonl`` (no newline)."""
+        return json.dumps(self.to_dict())
+
+    @classmethod
+    def from_dict(cls, data: Any) -> "TrialRecord":
+        """Return the record of a ``trials.jsonl`` object, checked.
+
+        Raises
+        ------
+        ValueError
+            Naming the field: a required key is missing, a value has the wrong type,
+            or the outcome or phase is not one of :data:`TRIAL_OUTCOMES` /
+            :data:`PHASES`.
+        """
+        if not isinstance(data, dict):
+            raise ValueError(f"a trial record is a JSON object, not {type(data).__name__}")
+        missing = [k for k in REQUIRED_KEYS if k not in data]
+        if missing:
+            raise ValueError(f"lacks {', '.join(missing)} (field {missing[0]!r} is required)")
+        known = {f.name for f in fields(cls)} - {"extra"}
+        hints = _hints(cls)
+        values = {}
+        for name in known & data.keys():
+            values[name] = _typed(data[name], hints[name], name)
+        extra = {k: v for k, v in data.items() if k not in known}
+        return cls(**values, extra=extra)
+
+    @classmethod
+    def from_json(cls, line: str) -> "TrialRecord":
+        """Return the record of one ``trials.jsonl`` line, checked (see
+        :meth:`from_dict`); a line that is not JSON raises ValueError too."""
+        try:
+            data = json.loads(line)
+        except json.JSONDecodeError as exc:
+            raise ValueError(f"not a JSON object ({exc.msg})") from None
+        return cls.from_dict(data)
+
+    def get(self, key: str, default: Any = None) -> Any:
+        """Return a field or an unknown key of the line by name (``default`` if none)."""
+        if key in _field_names(type(self)):
+            return getattr(self, key)
+        return self.extra.get(key, default)
+
+
+def as_record(trial: "TrialRecord | dict[str, Any]") -> TrialRecord:
+    """Return ``trial`` as a record (a dict is read as a line of ``trials.jsonl``)."""
+    return trial if isinstance(trial, TrialRecord) else TrialRecord.from_dict(trial)
+
+
+def trial_columns(record_type: type = TrialRecord
+                  ) -> list[tuple[str, Callable[[TrialRecord], str]]]:
+    """Return the reports' trial columns, ``(header, cell text of a record)``: every
+    field of ``record_type`` with a ``column`` in its metadata, in the order of
+    ``COLUMN_ORDER`` and then of the fields."""
+    shown = [f for f in fields(record_type) if "column" in f.metadata]
+    order = {n: i for i, n in enumerate(record_type.COLUMN_ORDER)}
+    shown.sort(key=lambda f: order.get(f.name, len(order)))
+    return [(f.metadata["column"], _cell(f.name)) for f in shown]
+
+
+def _cell(name: str) -> Callable[[TrialRecord], str]:
+    return lambda record: cell_text(getattr(record, name))
+
+
+def cell_text(value: Any) -> str:
+    """Return a field's value as the reports show it: numbers in at most six
+    significant digits, mappings as ``name=value`` pairs, lists joined by commas,
+    ``-`` for nothing."""
+    if value is None or value in ("", [], {}):
+        return "-"
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    if isinstance(value, float):
+        return f"{value:.6g}"
+    if isinstance(value, dict):
+        return ", ".join(f"{k}={cell_text(v)}" for k, v in value.items())
+    if isinstance(value, list):
+        return ", ".join(str(x) for x in value)
+    return str(value)
+
+
+# --------------------------------------------------------------------- checking
+_HINTS: dict[type, dict[str, Any]] = {}
+
+
+def _hints(cls: type) -> dict[str, Any]:
+    if cls not in _HINTS:
+        _HINTS[cls] = typing.get_type_hints(cls)
+    return _HINTS[cls]
+
+
+def _field_names(cls: type) -> set[str]:
+    return {f.name for f in fields(cls)} - {"extra"}
+
+
+def _validate(record: TrialRecord) -> None:
+    hints = _hints(type(record))
+    for f in fields(record):
+        _typed(getattr(record, f.name), hints[f.name], f.name, convert=False)
+    if record.outcome not in TRIAL_OUTCOMES:
+        raise ValueError(f"field 'outcome': {record.outcome!r} is not one of "
+                         f"{', '.join(TRIAL_OUTCOMES)}")
+    if record.phase not in PHASES:
+        raise ValueError(f"field 'phase': {record.phase!r} is not one of {', '.join(PHASES)}")
+
+
+def _typed(value: Any, tp: Any, name: str, convert: bool = True) -> Any:
+    """Return ``value`` checked against the type ``tp`` (a float written as ``"nan"``
+    or ``"inf"`` read back as a float); raise ValueError naming field ``name``."""
+    origin = typing.get_origin(tp)
+    if tp is Any:
+        return value
+    if origin in (Union, types.UnionType):
+        for option in typing.get_args(tp):
+            try:
+                return _typed(value, option, name, convert)
+            except ValueError:
+                pass
+        raise _wrong(name, value, tp)
+    if tp is type(None):
+        if value is None:
+            return value
+        raise _wrong(name, value, tp)
+    if tp is float:
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            return value  # an int stays one: the line is written back as it was read
+        if convert and isinstance(value, str) and value in ("nan", "inf", "-inf"):
+            return float(value)
+        raise _wrong(name, value, tp)
+    if tp is int:
+        if isinstance(value, int) and not isinstance(value, bool):
+            return value
+        raise _wrong(name, value, tp)
+    if tp in (str, bool):
+        if isinstance(value, tp):
+            return value
+        raise _wrong(name, value, tp)
+    if origin is list:
+        if not isinstance(value, list):
+            raise _wrong(name, value, tp)
+        (item,) = typing.get_args(tp) or (Any,)
+        return [_typed(v, item, name, convert) for v in value]
+    if origin is dict:
+        if not isinstance(value, dict):
+            raise _wrong(name, value, tp)
+        key, item = typing.get_args(tp) or (Any, Any)
+        return {_typed(k, key, name, convert): _typed(v, item, name, convert)
+                for k, v in value.items()}
+    raise TypeError(f"field {name!r}: type {tp} is not one a trial record can check")
+
+
+def _wrong(name: str, value: Any, tp: Any) -> ValueError:
+    return ValueError(f"field {name!r}: {value!r} is not of type {_type_name(tp)}")
+
+
+def _type_name(tp: Any) -> str:
+    return getattr(tp, "__name__", None) or str(tp).replace("typing.", "")
+
+
+def _jsonable(value: Any) -> Any:
+    """Return ``value`` as plain JSON data: tuples as lists, non-finite floats as
+    strings, anything else that JSON has no type for as its text."""
+    if isinstance(value, dict):
+        return {str(k): _jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return str(value)
+    if isinstance(value, (str, int, float, bool)) or value is None:
+        return value
+    if hasattr(value, "item"):  # a numpy scalar
+        return _jsonable(value.item())
+    return str(value)
+
+
+__all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
+           "trial_columns"]

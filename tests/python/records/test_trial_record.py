@@ -1,0 +1,166 @@
+"""The trial record owns the line of ``trials.jsonl``: written and read back byte for
+byte, checked field by field, and a new field reaches the JSON and the reports
+without a change anywhere else."""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from typing import Union
+
+import pytest
+from rich.console import Console
+
+from creative_py.records import RunFolder, TrialRecord, read_records, read_trials
+from creative_py.records.trial import trial_columns
+from creative_py.report.contents import RunContents
+from creative_py.report.page import render_html
+from creative_py.report.table import print_report
+
+# Two lines of a hook run (seed 0, --strategy paper), shortened: a tool-use trial (with
+# the version space's count) and an evaluation trial (without it).
+USE_LINE = (
+    '{"trial": 2, "phase": "use", "phase_trial": 2, "variant": "standard", "location": 1, '
+    '"tool": "hook_a2", "kind": "experiment", "tested": ["hook_down(hook_a2)"], '
+    '"violated": ["hook_down(hook_a2)"], "pose": {"dx": 0.0375, "dy": 0.0, "roll": 0.9604}, '
+    '"outcome": "failure", "reason": "goal not reached", '
+    '"hs": "tool_pose(_G3,_G4,_G5) :- hook(_G3)", '
+    '"hg": "tool_pose(_G3,_G4,_G5) :- handle_length(_G3,medium)", "wall_time_s": 1.473, '
+    '"sim_time_s": 8.267, "decision_time_s": 0.0198, "vs_count": 7168, '
+    '"vs_count_exact": true, "facts": [["pose", "cube1", 1.131971275328603, '
+    '-0.26002960492287597, -0.0796848854355147, 0.32288591161895086], ["size", "cube1", '
+    '0.03040792442657536, 0.023583940648564172, 0.03]], "max_tool_force_n": 0.0, '
+    '"tool_load": {"max_force_n": 0.0, "point": null, "force": null, "grasp_point": null, '
+    '"contacts": 0, "bodies": [], "step": 0, "steps": 476}}')
+EVAL_LINE = (
+    '{"trial": 12, "phase": "eval", "phase_trial": 3, "variant": "standard", "location": 3, '
+    '"tool": "hook_a2", "kind": "exploit", "tested": [], "violated": [], '
+    '"pose": {"dx": 0.0391, "dy": 0.0, "roll": 0.0}, "outcome": "success", '
+    '"reason": "goal reached", "hs": "h", "hg": "g", "wall_time_s": 1.55, '
+    '"sim_time_s": 7.833, "decision_time_s": 0.0023, "facts": [], "max_tool_force_n": 2.46174, '
+    '"tool_load": {"max_force_n": 2.46174, "point": [0.338733, -0.030723, -0.002053], '
+    '"force": [2.46126, -0.583746, -0.184305], "grasp_point": [0.04, 0.0, 0.0], '
+    '"contacts": 4, "bodies": ["cube1"], "step": 1433, "steps": 476}}')
+
+
+@pytest.mark.parametrize("line", [USE_LINE, EVAL_LINE])
+def test_a_line_of_a_run_is_read_and_written_back_byte_for_byte(line):
+    record = TrialRecord.from_json(line)
+    assert record.to_json() == line
+    assert isinstance(record.location, int) and isinstance(record.pose["roll"], float)
+
+
+def test_an_unlabelled_trial_has_no_count_keys():
+    record = TrialRecord.from_json(EVAL_LINE)
+    assert record.vs_count is None and "vs_count" not in record.to_dict()
+    assert record.tool_load["bodies"] == ["cube1"]
+    assert record.get("max_tool_force_n") == pytest.approx(2.46174)
+
+
+def test_the_fields_are_typed_and_the_outcome_checked():
+    record = TrialRecord.from_json(USE_LINE)
+    assert record.facts[1] == ["size", "cube1", 0.03040792442657536, 0.023583940648564172,
+                               0.03]
+    assert record.vs_count_exact is True
+
+
+@pytest.mark.parametrize("change, field_name", [
+    ({"outcome": "won"}, "outcome"),
+    ({"phase": "learn"}, "phase"),
+    ({"location": "1"}, "location"),
+    ({"location": True}, "location"),
+    ({"trial": 2.5}, "trial"),
+    ({"tested": "hook_down(hook_a2)"}, "tested"),
+    ({"tested": [3]}, "tested"),
+    ({"pose": [0.0375, 0.0, 0.9604]}, "pose"),
+    ({"facts": [["pose", "cube1"], "size"]}, "facts"),
+    ({"tool_load": [1, 2]}, "tool_load"),
+    ({"vs_count_exact": "yes"}, "vs_count_exact"),
+    ({"wall_time_s": "slow"}, "wall_time_s"),
+])
+def test_a_wrong_value_is_refused_naming_its_field(change, field_name):
+    data = {**json.loads(USE_LINE), **change}
+    with pytest.raises(ValueError, match=f"'{field_name}'"):
+        TrialRecord.from_json(json.dumps(data))
+
+
+def test_a_missing_key_and_a_non_object_are_refused():
+    data = json.loads(USE_LINE)
+    del data["tool"]
+    with pytest.raises(ValueError, match="'tool'"):
+        TrialRecord.from_dict(data)
+    with pytest.raises(ValueError, match="JSON object"):
+        TrialRecord.from_json("[1, 2]")
+    with pytest.raises(ValueError, match="not a JSON object"):
+        TrialRecord.from_json('{"trial": 1, "pha')
+
+
+def test_a_record_built_in_code_is_checked_too():
+    with pytest.raises(ValueError, match="'outcome'"):
+        TrialRecord(trial=1, phase="use", variant="v", location=1, tool="t",
+                    outcome="half")
+
+
+def test_non_finite_times_are_written_as_text_and_read_back_as_numbers():
+    record = TrialRecord(trial=1, phase="use", variant="v", location=1, tool="t",
+                         outcome="success", wall_time_s=math.nan)
+    assert record.to_dict()["wall_time_s"] == "nan"
+    assert math.isnan(TrialRecord.from_json(record.to_json()).wall_time_s)
+
+
+def test_keys_of_a_later_version_are_kept_after_the_known_ones():
+    data = {**json.loads(EVAL_LINE), "grip_force_n": 12.5}
+    record = TrialRecord.from_dict(data)
+    assert record.extra == {"grip_force_n": 12.5}
+    assert record.to_json() == json.dumps(data)
+
+
+def test_the_run_folder_writes_records_and_reads_them_back(tmp_path):
+    run = RunFolder.create(tmp_path, "hook", 0)
+    for line in (USE_LINE, EVAL_LINE):
+        run.append_trial(TrialRecord.from_json(line))
+    with open(run.trials_path, "a") as fh:
+        fh.write(json.dumps({**json.loads(EVAL_LINE), "outcome": "won"}) + "\n")
+    assert run.trials_path.read_text().splitlines()[:2] == [USE_LINE, EVAL_LINE]
+    warnings: list[str] = []
+    records = read_records(run.path, warn=warnings.append)
+    assert [r.trial for r in records] == [2, 12]
+    assert len(warnings) == 1 and "line 3" in warnings[0] and "'outcome'" in warnings[0]
+    assert read_trials(run.path) == [json.loads(USE_LINE), json.loads(EVAL_LINE)]
+
+
+@dataclass(kw_only=True)
+class _WithGrip(TrialRecord):
+    """A trial record with one more field, as a later version might add it: one line
+    (with its report column), nothing else."""
+
+    grip_force_n: Union[float, None] = field(default=None, metadata={"column": "grip"})
+
+
+def test_a_new_optional_field_round_trips_and_shows_in_the_reports(tmp_path):
+    base = json.loads(EVAL_LINE)
+    record = _WithGrip.from_dict({**base, "grip_force_n": 12.5})
+    assert record.grip_force_n == 12.5 and record.extra == {}
+    line = record.to_json()
+    assert json.loads(line) == {**base, "grip_force_n": 12.5}
+    assert _WithGrip.from_json(line) == record
+    # Left out while None: the lines of older runs read as they were.
+    assert _WithGrip.from_json(EVAL_LINE).to_json() == EVAL_LINE
+    with pytest.raises(ValueError, match="'grip_force_n'"):
+        _WithGrip.from_dict({**base, "grip_force_n": "strong"})
+    # The reports: the column follows the record's own ones.
+    headers = [h for h, _ in trial_columns(_WithGrip)]
+    assert headers == [h for h, _ in trial_columns()] + ["grip"]
+    run = RunContents(path=tmp_path, trials=[record], summary={}, model_text=None,
+                      plot=None, clips=[], tools=[], pddl_files=[], warnings=[])
+    console = Console(record=True, width=400)
+    print_report(run, console, width=400)
+    table = console.export_text()
+    assert "grip" in table and "12.5" in table
+    narrow = Console(record=True, width=60)
+    print_report(run, narrow, width=60)
+    blocks = narrow.export_text()
+    assert "grip" in blocks and "12.5" in blocks
+    page = render_html(run)
+    assert "<th>grip</th>" in page and "12.5" in page
