@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 from _hook_runs import hook_world
+from _poses import poses
 
 from creative_py.sim import SkillOutcome, TRIAL_OUTCOMES, run_trial, trial_outcome
 
@@ -29,7 +30,8 @@ def test_each_ending_has_one_outcome(status, acted, reached, want):
 
 @pytest.mark.sim
 def test_a_blocked_trial_keeps_what_the_robot_saw_where_it_stopped():
-    result = run_trial(hook_world(), "hook_a1", "standard", 1)
+    world = hook_world()
+    result = run_trial(world, "hook_a1", "standard", 1, pose_target=poses(world))
     assert result.outcome == "blocked", result.reason
     kinds = {f[0] for f in result.facts_before}
     assert {"pose", "object_kind"} <= kinds       # the task and the catalogue
@@ -39,7 +41,8 @@ def test_a_blocked_trial_keeps_what_the_robot_saw_where_it_stopped():
 
 @pytest.mark.sim
 def test_a_finished_trial_keeps_what_the_robot_saw_before_the_tool_action():
-    result = run_trial(hook_world(), "hook_a2", "standard", 1)
+    world = hook_world()
+    result = run_trial(world, "hook_a2", "standard", 1, pose_target=poses(world))
     assert result.outcome == "success" and result.reason == "goal reached"
     assert ("held", "hook_a2") in result.facts_before
     assert result.tool_load is not None and result.tool_load["max_force_n"] > 0
