@@ -231,19 +231,7 @@ class ToolUseLearner:
                 if not strategy.confirm or cons >= opts.consecutive:
                     stop = strategy.stop
                     break
-            before = self._bounds(vs) if strategy.repeat_taught and testing else None
-            rec, vs = runner.run(exp, "use", i, vs, task, decision)
-            taught = rec.outcome in ("success", "failure", "blocked")
-            # Algorithm 1 repeats the task after a failure; it does not repeat an
-            # experiment whose trial left h_s and h_g as they were (what the robot
-            # observed was already excluded: a stick seen outside the tube), which would
-            # give the same answer until the budget is spent. An experiment the arm
-            # could not carry out taught nothing and is not repeated either.
-            idle = taught and before is not None and self._bounds(vs) == before
-            if testing:
-                done = strategy.skip(exp, taught, idle)
-                if done is not None:
-                    skip.append(done)
+            rec, vs = self._trial(strategy, exp, i, vs, task, decision, skip)
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
@@ -264,6 +252,26 @@ class ToolUseLearner:
             converged = stop == strategy.stop
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
                          demo_tool, time.perf_counter() - t0, stop, n0, exact0)
+
+    def _trial(self, strategy: Strategy, exp: Term, i: int, vs: Term, task: Any,
+               decision: float, skip: list[Term]) -> tuple[TrialRecord, Term]:
+        """Run tool-use trial ``i`` and add to ``skip`` what the strategy will not run
+        again; return its record and the version space after it."""
+        testing = exp.name == "experiment"
+        before = self._bounds(vs) if strategy.repeat_taught and testing else None
+        rec, vs = self.runner.run(exp, "use", i, vs, task, decision)
+        taught = rec.outcome in ("success", "failure", "blocked")
+        # Algorithm 1 repeats the task after a failure; it does not repeat an experiment
+        # whose trial left h_s and h_g as they were (what the robot observed was already
+        # excluded: a stick seen outside the tube), which would give the same answer
+        # until the budget is spent. An experiment the arm could not carry out taught
+        # nothing and is not repeated either.
+        idle = taught and before is not None and self._bounds(vs) == before
+        if testing:
+            done = strategy.skip(exp, taught, idle)
+            if done is not None:
+                skip.append(done)
+        return rec, vs
 
     def _bounds(self, vs: Term) -> tuple[str, str]:
         """Return h_s and h_g as text, to tell whether a trial changed them."""

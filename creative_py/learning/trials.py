@@ -189,31 +189,10 @@ class TrialRunner:
             if self.clips is not None:
                 self.clips.replayed(self.replay[n - 1])
         else:
-            from creative_py.sim import run_trial
-
-            images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
-            recorder = self.clips.recorder() if self.clips is not None else None
-
-            def verdict(outcome: str, reason: str) -> None:
-                why = self.clips.why(phase, outcome, reason)
-                if why is not None:
-                    self.clips.write(recorder, why, n, phase, phase_trial, str(tool),
-                                     tested_l, outcome, reason, task.location)
-
-            ex = run_trial(self.world, str(tool), task.variant, task.location,
-                           pose_numbers(pose), self.seed * 1000 + n, images, gui=self.gui,
-                           record=recorder,
-                           verdict=verdict if recorder is not None else None,
-                           pose_target=self.pose_target)
+            ex = self._physical(n, phase, phase_trial, str(tool), tested_l, task, pose)
         td = time.perf_counter()
-        lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
-        if lab is not None and label:
-            facts = [fact_term(f) for f in ex.facts_before]
-            planned = ex.outcome == "blocked"
-            if planned and not facts:
-                facts = self.task_facts(task)
-            vs = self.engine.label_trial(self.case, vs, exp, facts, lab,
-                                         "planned" if planned else "observed")
+        if label:
+            vs = self._label(vs, exp, ex, task)
         hs, hg = self.bounds(vs)
         decision += time.perf_counter() - td
         # The hypotheses left between h_g and h_s (version_space:vs_count/3).
@@ -239,6 +218,40 @@ class TrialRunner:
                       f"loc {task.location}  {ex.outcome:<11} "
                       f"tested {', '.join(tested_l) or '-'}")
         return rec, vs
+
+    def _physical(self, n: int, phase: str, phase_trial: int, tool: str,
+                  tested: list[str], task: TaskState, pose: Term) -> Any:
+        """Run trial ``n`` in the physics (``sim.run_trial``), its snapshots in the run
+        folder and, when the clip keeper wants it, its clip; return the TrialResult."""
+        from creative_py.sim import run_trial
+
+        images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
+        recorder = self.clips.recorder() if self.clips is not None else None
+
+        def verdict(outcome: str, reason: str) -> None:
+            why = self.clips.why(phase, outcome, reason)
+            if why is not None:
+                self.clips.write(recorder, why, n, phase, phase_trial, tool, tested,
+                                 outcome, reason, task.location)
+
+        return run_trial(self.world, tool, task.variant, task.location,
+                         pose_numbers(pose), self.seed * 1000 + n, images, gui=self.gui,
+                         record=recorder, verdict=verdict if recorder is not None else None,
+                         pose_target=self.pose_target)
+
+    def _label(self, vs: Term, exp: Term, ex: Any, task: TaskState) -> Term:
+        """Return the version space after the trial's example (success: ``pos``;
+        failure: ``neg`` of what was observed; blocked: ``neg`` of the planned example);
+        an unreachable or invalid trial leaves it as it was."""
+        lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
+        if lab is None:
+            return vs
+        facts = [fact_term(f) for f in ex.facts_before]
+        planned = ex.outcome == "blocked"
+        if planned and not facts:
+            facts = self.task_facts(task)
+        return self.engine.label_trial(self.case, vs, exp, facts, lab,
+                                       "planned" if planned else "observed")
 
     def _replayed(self, record: TrialRecord, tool: str, task: TaskState, pose: Term,
                   phase: str) -> Any:
