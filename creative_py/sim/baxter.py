@@ -5,16 +5,23 @@ are rewritten once into a cached copy (with or without ``<visual>`` elements). T
 base frame of the robot is the world frame (the floor is at z = -0.926 m).
 
 IK is solved in a second DIRECT client holding a kinematics-only Baxter, so trying a
-target never disturbs the physics.
-
-The light robot (the default, :data:`LIGHT`): the physics holds a Baxter whose idle
-joints (left arm, head, left gripper) are fixed at the posture they are held in and
-whose idle links are merged into the link they hang from, so that a physics step
-simulates the 9 joints that act instead of 19; the kinematics client holds only the
-right arm's chain, is loaded once per process and kept for every robot after, so an
-episode loads one URDF. Both models give the acting arm the same kinematics (IK answers
-are bit for bit those of the full model). The tool frame is the link ``right_gripper`` (the
+target never disturbs the physics. The tool frame is the link ``right_gripper`` (the
 point between the finger tips; its +z axis points out of the gripper).
+
+How heavy the robot is (:data:`ROBOT`): the ``light`` robot (the default) has in the
+physics a Baxter whose idle joints (left arm, head, left gripper) are fixed at the
+posture they are held in and whose idle links are merged into the link they hang from,
+so that a physics step simulates the 9 joints that act instead of 19 (less than half
+the CPU time per step). In every mode but ``heavy`` the kinematics client holds only
+the right arm's chain, is loaded once per process and kept for every robot after (an
+episode loads one URDF), and the start posture's via solution is searched once per
+target; IK answers are bit for bit those of the full model. Fewer joints change the
+rows of pybullet's constraint solver, and with them the rounding of the arm's motion
+(even fixing only the head, which cannot touch the arm, does): the ``light`` gripper's
+path differs from the full model's by about 0.01 mm, so a trial that is borderline for
+a guard (a gripper lag of 3.0 cm against the 3 cm limit) can end differently. The
+``exact`` mode keeps the full physics model and so the heavy robot's results bit for
+bit.
 
 Moves are Cartesian straight lines sampled every ``steps_per_waypoint`` physics steps;
 each waypoint is an IK solution seeded from the previous one, sent as position targets
@@ -59,17 +66,19 @@ IDLE_HOLD: dict[str, float] = {**dict(zip(LEFT_ARM, TUCKED_LEFT)), "head_pan": 0
 """The idle joints (rad or m) and the values they are held at: the light robot fixes
 them there (the left arm tucked, the head straight, the left gripper closed)."""
 
-HEAVY_ROBOT_ENV = "CREATIVE_HEAVY_ROBOT"
-"""Environment variable: set to 1 to build the heavy robot (see :data:`LIGHT`)."""
+ROBOT_MODES = ("light", "exact", "heavy")
+"""How heavy the robot is: ``light`` (idle joints fixed and merged in the physics, a
+shared kinematics client with the right arm's chain, the via solution cached),
+``exact`` (the same but every joint simulated: results bit for bit the heavy ones),
+``heavy`` (the robot of before: every joint simulated, a kinematics client with the
+full model and a second URDF load per robot, no via cache)."""
 
-LIGHT: bool = os.environ.get(HEAVY_ROBOT_ENV, "").strip() in ("", "0")
-"""Build the light robot (default): idle joints fixed and their links merged in the
-physics, one kinematics client per process holding the right arm's chain only, the
-start posture's via solution searched once per target. False (or the environment
-variable ``CREATIVE_HEAVY_ROBOT=1`` at import) restores the heavy robot of before:
-every joint simulated, the left arm held by its motors, a kinematics client and a
-second URDF load per robot. Outcomes are the same; only the cost differs (the
-per-trial CPU benchmark, ``bench/robot_cost_bench.py``, runs both)."""
+ROBOT_ENV = "CREATIVE_ROBOT"
+"""Environment variable read at import into :data:`ROBOT` (one of :data:`ROBOT_MODES`)."""
+
+ROBOT: str = os.environ.get(ROBOT_ENV, "").strip() or "light"
+"""The mode of every :class:`Baxter` built without one (default ``light``); the
+per-trial CPU benchmark (``bench/robot_cost_bench.py``) sets it to run all three."""
 
 READY_RIGHT = (0.3, -0.6, 0.4, 1.6, -0.3, 0.6, 0.0)
 """Right-arm joint angles (rad) of the start posture, gripper in front of the robot."""
@@ -446,16 +455,21 @@ class Baxter:
         The physics client to load the robot into (base at the world origin).
     config : BaxterConfig
         Controller settings.
-    light : bool or None
-        Build the light robot (see :data:`LIGHT`, the default when None) or the heavy.
+    mode : str or None
+        One of :data:`ROBOT_MODES`; None takes :data:`ROBOT`.
     """
 
     def __init__(self, sim: Sim, config: BaxterConfig = BaxterConfig(),
-                 light: bool | None = None) -> None:
+                 mode: str | None = None) -> None:
         self.sim = sim
         self.config = config
-        self.light = LIGHT if light is None else bool(light)
-        self.urdf = baxter_urdf(config.visuals, "light" if self.light else "full")
+        self.mode = ROBOT if mode is None else mode
+        if self.mode not in ROBOT_MODES:
+            raise ValueError(f"robot mode (environment variable {ROBOT_ENV}) must be one of "
+                             f"{', '.join(ROBOT_MODES)}, got {self.mode!r}")
+        self.light = self.mode != "heavy"
+        """Shared kinematics client, cached via solution (every mode but ``heavy``)."""
+        self.urdf = baxter_urdf(config.visuals, "light" if self.mode == "light" else "full")
         """The URDF file the robot was loaded from."""
         self.model = _Model(sim.client, self.urdf)
         self.body = self.model.body

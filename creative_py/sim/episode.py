@@ -223,7 +223,7 @@ class Episode:
         seeds = ()
         if via is not None:
             # The via pose seldom depends on the tool: its search (40 restarts) is
-            # done once per via target (the light robot), not once per start pose.
+            # done once per via target (unless the robot is heavy), not per start pose.
             # The robot was just built at the ready posture, so the answer is the same.
             via_key = ("via", via)
             if self.robot.light and via_key in cache:
