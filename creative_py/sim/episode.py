@@ -222,8 +222,8 @@ class Episode:
             return cache[key]  # the same numbers the search below gives
         seeds = ()
         if via is not None:
-            # The via pose seldom depends on the tool: its search (40 restarts) is
-            # done once per via target (unless the robot is heavy), not per start pose.
+            # The via search (40 restarts) is done once per via target, not once per
+            # start pose (which moves with the tool's reach), unless the robot is heavy.
             # The robot was just built at the ready posture, so the answer is the same.
             via_key = ("via", via)
             if self.robot.light and via_key in cache:
