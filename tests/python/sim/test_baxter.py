@@ -129,3 +129,28 @@ def test_the_kinematics_client_outlives_a_robot_and_a_bad_mode_is_refused():
         assert b.model.left == [] and len(b.model.movable) == 9
         with pytest.raises(ValueError, match="CREATIVE_ROBOT"):
             Baxter(sim, mode="feather")
+
+
+@pytest.mark.parametrize("mode, searches", [("light", 1), ("heavy", 2)])
+def test_the_via_posture_is_searched_once_per_target(monkeypatch, mode, searches):
+    from creative_py.case import get_case
+    from creative_py.sim import baxter, load_world, open_episode
+
+    world = load_world(get_case("hook"))
+    via = world.scene.robot.via
+    assert via is not None
+    calls = []
+    search = Baxter.solve_ik_global
+
+    def counted(self, target, *args, **kw):
+        calls.append(kw.get("keep", 6))
+        return search(self, target, *args, **kw)
+
+    monkeypatch.setattr(Baxter, "solve_ik_global", counted)
+    monkeypatch.setattr(baxter, "ROBOT", mode)
+    # Two tools of different reach: two start poses, one via target.
+    for tool in ("hook_a2", "hook_b2"):
+        with open_episode(world, "standard", 1, tool, robot=True):
+            pass
+    assert len(world.postures) == 2 + (mode != "heavy")
+    assert calls.count(6) == searches  # the via search (the start pose's keeps 1)
