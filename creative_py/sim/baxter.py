@@ -503,9 +503,10 @@ class Baxter:
         """
         m = self.model
         m.reset(m.arm, right_q)
-        self._command(list(right_q))
         if m.left:
             m.reset(m.left, TUCKED_LEFT)
+        self._command(list(right_q))
+        if m.left:
             pb.setJointMotorControlArray(m.body, m.left, pb.POSITION_CONTROL,
                                          targetPositions=list(TUCKED_LEFT),
                                          forces=[m.effort[j] for j in m.left],
