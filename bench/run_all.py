@@ -23,6 +23,7 @@ BENCHES = [
     [sys.executable, str(HERE / "perception_error.py")],
     [sys.executable, str(HERE / "sim_bench.py")],
     [sys.executable, str(HERE / "sim_wedge_bench.py")],
+    [sys.executable, str(HERE / "robot_cost_bench.py")],
     [sys.executable, str(HERE / "decision_bench.py")],
     [sys.executable, str(HERE / "soak_bench.py")],
     [sys.executable, str(HERE / "bad_input_bench.py")],

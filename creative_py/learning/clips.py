@@ -32,6 +32,10 @@ from creative_py.records.trial import TrialRecord
 VIDEO_MODES = ("all", "key", "none")
 """The values of ``--video`` (``RunOptions.video``)."""
 
+CLIP_NICE = 10
+"""How much lower than the run's the scheduling priority of a clip process is: it
+renders and encodes on the CPU the run leaves idle."""
+
 PHASE_TAGS = {"demo": "DEMO", "use": "TUL", "create": "TC", "eval": "EVAL"}
 
 
@@ -54,8 +58,8 @@ class ClipKeeper:
         The world's clip camera (``world.scene.video``); None records nothing.
     background : bool
         Render and encode each clip in a child process (forked inside the trial's
-        episode, after the verdict) while the run goes on; :meth:`finish` waits for
-        them. Off: in this process, at once.
+        episode, after the verdict, at :data:`CLIP_NICE` lower priority) while the run
+        goes on; :meth:`finish` waits for them. Off: in this process, at once.
     max_children : int
         Most clip processes running at once (one more waits for the oldest).
     """
@@ -144,7 +148,7 @@ class ClipKeeper:
 
         if self.background:
             self._wait(self.max_children - 1)
-        pid = recorder.render_then(use, background=self.background)
+        pid = recorder.render_then(use, background=self.background, nice=CLIP_NICE)
         if pid is not None:
             self.children[pid] = name
         n = len(recorder.snapshots)

@@ -8,6 +8,21 @@ IK is solved in a second DIRECT client holding a kinematics-only Baxter, so tryi
 target never disturbs the physics. The tool frame is the link ``right_gripper`` (the
 point between the finger tips; its +z axis points out of the gripper).
 
+How heavy the robot is (:data:`ROBOT`): the ``light`` robot (the default) has in the
+physics a Baxter whose idle joints (left arm, head, left gripper) are fixed at the
+posture they are held in and whose idle links are merged into the link they hang from,
+so that a physics step simulates the 9 joints that act instead of 19 (less than half
+the CPU time per step). In every mode but ``heavy`` the kinematics client holds only
+the right arm's chain, is loaded once per process and kept for every robot after (an
+episode loads one URDF), and the start posture's via solution is searched once per
+target; IK answers are bit for bit those of the full model. Fewer joints change the
+rows of pybullet's constraint solver, and with them the rounding of the arm's motion
+(even fixing only the head, which cannot touch the arm, does): the ``light`` gripper's
+path differs from the full model's by about 0.01 mm, so a trial that is borderline for
+a guard (a gripper lag of 3.0 cm against the 3 cm limit) can end differently. The
+``exact`` mode keeps the full physics model and so the heavy robot's results bit for
+bit.
+
 Moves are Cartesian straight lines sampled every ``steps_per_waypoint`` physics steps;
 each waypoint is an IK solution seeded from the previous one, sent as position targets
 at the URDF effort limits. A move ends ``blocked`` when the gripper lags its target by
@@ -20,8 +35,10 @@ from __future__ import annotations
 import hashlib
 import logging
 import math
+import os
 import re
 import tempfile
+import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Callable, Sequence
@@ -42,6 +59,26 @@ LEFT_ARM = tuple(n.replace("right", "left") for n in RIGHT_ARM)
 
 TUCKED_LEFT = (0.6, -1.0, -0.3, 2.2, 0.0, 0.4, 0.0)
 """Left-arm joint angles (rad) that keep the idle arm out of the workspace."""
+
+IDLE_HOLD: dict[str, float] = {**dict(zip(LEFT_ARM, TUCKED_LEFT)), "head_pan": 0.0,
+                               "l_gripper_l_finger_joint": 0.0,
+                               "l_gripper_r_finger_joint": 0.0}
+"""The idle joints (rad or m) and the values they are held at: the light robot fixes
+them there (the left arm tucked, the head straight, the left gripper closed)."""
+
+ROBOT_MODES = ("light", "exact", "heavy")
+"""How heavy the robot is: ``light`` (idle joints fixed and merged in the physics, a
+shared kinematics client with the right arm's chain, the via solution cached),
+``exact`` (the same but every joint simulated: results bit for bit the heavy ones),
+``heavy`` (the robot of before: every joint simulated, a kinematics client with the
+full model and a second URDF load per robot, no via cache)."""
+
+ROBOT_ENV = "CREATIVE_ROBOT"
+"""Environment variable read at import into :data:`ROBOT` (one of :data:`ROBOT_MODES`)."""
+
+ROBOT: str = os.environ.get(ROBOT_ENV, "").strip() or "light"
+"""The mode of every :class:`Baxter` built without one (default ``light``); the
+per-trial CPU benchmark (``bench/robot_cost_bench.py``) sets it to run all three."""
 
 READY_RIGHT = (0.3, -0.6, 0.4, 1.6, -0.3, 0.6, 0.0)
 """Right-arm joint angles (rad) of the start posture, gripper in front of the robot."""
@@ -68,16 +105,36 @@ def baxter_share_dir() -> Path:
                             "(pip install --no-deps example-robot-data)")
 
 
-_URDF_EDITS = "v2: absolute meshes, base inertial, optional visuals"
+_URDF_EDITS = "v3: absolute meshes, base inertial, optional visuals, light and arm models"
 """Changes with the edits below, so that a stale cached URDF is never reused."""
 
+URDF_MODELS = ("full", "light", "arm")
+"""The Baxter models :func:`baxter_urdf` writes: every joint; the idle joints of
+:data:`IDLE_HOLD` fixed and merged; the right arm's chain only (kinematics)."""
 
-def baxter_urdf(visuals: bool = False) -> Path:
-    """Return a cached Baxter URDF with absolute mesh paths, with or without visuals."""
+
+def baxter_urdf(visuals: bool = False, model: str = "full") -> Path:
+    """Return a cached Baxter URDF with absolute mesh paths.
+
+    Parameters
+    ----------
+    visuals : bool
+        Keep the ``<visual>`` elements (slow to load); never for ``arm``.
+    model : {"full", "light", "arm"}
+        ``full``: the robot as shipped. ``light``: the idle joints of
+        :data:`IDLE_HOLD` fixed at their values and every link below them merged
+        into the link the idle part hangs from (its shapes kept where the held
+        posture puts them, its mass dropped: those links hang from the fixed torso).
+        ``arm``: only the links from the base to ``right_gripper`` (kinematics).
+    """
+    if model not in URDF_MODELS:
+        raise ValueError(f"Baxter model must be one of {', '.join(URDF_MODELS)}, "
+                         f"got {model!r}")
     share = baxter_share_dir()
     src = share / "example-robot-data" / "robots" / "baxter_description" / "urdf" / "baxter.urdf"
     text = src.read_text()
-    key = hashlib.sha1((str(src) + text + str(visuals) + _URDF_EDITS).encode()).hexdigest()[:12]
+    key = hashlib.sha1((str(src) + text + str(visuals) + model + repr(sorted(IDLE_HOLD.items()))
+                        + _URDF_EDITS).encode()).hexdigest()[:12]
     out = Path(tempfile.gettempdir()) / f"creative_py_baxter_{key}.urdf"
     if not out.is_file():
         text = text.replace("package://", str(share) + "/")
@@ -87,12 +144,132 @@ def baxter_urdf(visuals: bool = False) -> Path:
                             '<link name="base"><inertial><mass value="0.001"/><inertia '
                             'ixx="1e-6" ixy="0" ixz="0" iyy="1e-6" iyz="0" izz="1e-6"/>'
                             '</inertial></link>')
-        if not visuals:
+        if not visuals or model == "arm":
             text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
-        tmp = out.with_suffix(f".{id(text)}.tmp")
+        if model != "full":
+            root = ET.fromstring(text)
+            if model == "light":
+                _merge_idle(root, IDLE_HOLD)
+            else:
+                _keep_chain(root, EE_LINK)
+            text = ET.tostring(root, encoding="unicode")
+        tmp = out.with_suffix(f".{os.getpid()}.{id(text)}.tmp")
         tmp.write_text(text)
         tmp.replace(out)
     return out
+
+
+def _floats(text: str) -> tuple[float, ...]:
+    return tuple(float(v) for v in text.split())
+
+
+def _origin(element: ET.Element) -> Pose:
+    """Return the ``<origin>`` of a URDF joint, visual or collision as a pose."""
+    o = element.find("origin")
+    xyz = _floats(o.get("xyz", "0 0 0")) if o is not None else (0.0, 0.0, 0.0)
+    rpy = _floats(o.get("rpy", "0 0 0")) if o is not None else (0.0, 0.0, 0.0)
+    return xyz, tuple(pb.getQuaternionFromEuler(rpy))
+
+
+def _set_origin(element: ET.Element, pose: Pose) -> None:
+    o = element.find("origin")
+    if o is None:
+        o = ET.SubElement(element, "origin")
+    o.set("xyz", " ".join(repr(float(v)) for v in pose[0]))
+    o.set("rpy", " ".join(repr(float(v)) for v in pb.getEulerFromQuaternion(pose[1])))
+
+
+def _joint_pose(joint: ET.Element, value: float) -> Pose:
+    """Return the child link's frame in the parent link's frame at joint ``value``."""
+    origin = _origin(joint)
+    kind = joint.get("type")
+    axis_el = joint.find("axis")
+    axis = _floats(axis_el.get("xyz")) if axis_el is not None else (1.0, 0.0, 0.0)
+    if kind == "fixed" or value == 0.0:
+        motion: Pose = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+    elif kind in ("revolute", "continuous"):
+        motion = ((0.0, 0.0, 0.0), tuple(pb.getQuaternionFromAxisAngle(axis, value)))
+    elif kind == "prismatic":
+        motion = (tuple(a * value for a in axis), (0.0, 0.0, 0.0, 1.0))
+    else:
+        raise ValueError(f"joint {joint.get('name')}: cannot hold a {kind} joint")
+    pos, quat = pb.multiplyTransforms(origin[0], origin[1], motion[0], motion[1])
+    return tuple(pos), tuple(quat)
+
+
+def _merge_idle(root: ET.Element, hold: dict[str, float]) -> None:
+    """Fix the joints of ``hold`` at their values; merge every link below them.
+
+    Each idle part's links are removed with their joints; their visual and collision
+    elements move to the link the part hangs from, with origins composed along the
+    held joints. Raises ValueError if a joint below an idle one moves and is not idle.
+    """
+    links = {e.get("name"): e for e in root.findall("link")}
+    joints = {e.get("name"): e for e in root.findall("joint")}
+    below: dict[str, list[ET.Element]] = {}
+    for j in joints.values():
+        below.setdefault(j.find("parent").get("link"), []).append(j)
+    merged: set[str] = set()
+
+    def absorb(target: ET.Element, joint: ET.Element, frame: Pose) -> None:
+        name = joint.get("name")
+        if joint.get("type") != "fixed" and name not in hold:
+            raise ValueError(f"joint {name} moves below an idle joint but is not idle")
+        child = joint.find("child").get("link")
+        f = _joint_pose(joint, hold.get(name, 0.0))
+        pose = tuple(map(tuple, pb.multiplyTransforms(frame[0], frame[1], f[0], f[1])))
+        link = links[child]
+        for tag in ("visual", "collision"):
+            for e in link.findall(tag):
+                o = _origin(e)
+                _set_origin(e, pb.multiplyTransforms(pose[0], pose[1], o[0], o[1]))
+                target.append(e)
+        root.remove(link)
+        root.remove(joint)
+        merged.add(name)
+        for j in below.get(child, []):
+            absorb(target, j, pose)
+
+    idle_children = {joints[n].find("child").get("link") for n in hold}
+    for name in hold:
+        if name not in joints:
+            raise ValueError(f"the Baxter URDF has no joint {name}")
+    for name in hold:
+        parent = joints[name].find("parent").get("link")
+        if name not in merged and not _below_any(parent, idle_children, joints):
+            absorb(links[parent], joints[name], ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+    for t in root.findall("transmission"):
+        if any(j.get("name") in merged for j in t.iter("joint")):
+            root.remove(t)
+
+
+def _below_any(link: str, tops: set[str], joints: dict[str, ET.Element]) -> bool:
+    """Return whether ``link`` is one of ``tops`` or hangs below one of them."""
+    parent_of = {j.find("child").get("link"): j.find("parent").get("link")
+                 for j in joints.values()}
+    while link is not None:
+        if link in tops:
+            return True
+        link = parent_of.get(link)
+    return False
+
+
+def _keep_chain(root: ET.Element, tip: str) -> None:
+    """Remove every link (and joint) that is not on the way from the root to ``tip``."""
+    parent_of = {j.find("child").get("link"): j.find("parent").get("link")
+                 for j in root.findall("joint")}
+    keep, link = set(), tip
+    while link is not None:
+        keep.add(link)
+        link = parent_of.get(link)
+    for e in root.findall("link"):
+        if e.get("name") not in keep:
+            root.remove(e)
+    for e in root.findall("joint"):
+        if e.find("child").get("link") not in keep:
+            root.remove(e)
+    for e in root.findall("transmission"):
+        root.remove(e)
 
 
 @dataclass(frozen=True)
@@ -225,9 +402,13 @@ class _Model:
                 self.upper.append(info[9])
                 self.effort[j] = info[10]
         self.arm = [self.joint[n] for n in RIGHT_ARM]
-        self.left = [self.joint[n] for n in LEFT_ARM]
+        self.left = [self.joint[n] for n in LEFT_ARM if n in self.joint
+                     and self.joint[n] in self.movable]
+        """The left arm's joints, if it moves (none in the light robot)."""
         self.ee = self.link[EE_LINK]
         self.arm_in_movable = [self.movable.index(j) for j in self.arm]
+        self.arm_lower = np.array([self.lower[i] for i in self.arm_in_movable])
+        self.arm_upper = np.array([self.upper[i] for i in self.arm_in_movable])
 
     def reset(self, joints: Sequence[int], q: Sequence[float]) -> None:
         pb.resetJointStatesMultiDof(self.body, list(joints), [[float(v)] for v in q],
@@ -244,6 +425,27 @@ class _Model:
                 for j in self.arm]
 
 
+_KINEMATICS: list = []
+"""``[(pid, model)]``: this process's kinematics model (a fork loads its own)."""
+
+
+def kinematics_model() -> _Model:
+    """Return this process's kinematics-only Baxter (the right arm's chain).
+
+    It lives in its own DIRECT client, loaded on first use and kept for every robot
+    after: IK resets the arm before each query, so no robot sees another's state.
+    """
+    pid = os.getpid()
+    if _KINEMATICS and _KINEMATICS[0][0] == pid and pb.isConnected(_KINEMATICS[0][1].client):
+        return _KINEMATICS[0][1]
+    client = pb.connect(pb.DIRECT)
+    if client < 0:
+        raise RuntimeError("pybullet: could not connect the kinematics client")
+    model = _Model(client, baxter_urdf(False, "arm"))
+    _KINEMATICS[:] = [(pid, model)]
+    return model
+
+
 class Baxter:
     """A Baxter robot in a :class:`Sim`, with a private kinematics client for IK.
 
@@ -253,17 +455,30 @@ class Baxter:
         The physics client to load the robot into (base at the world origin).
     config : BaxterConfig
         Controller settings.
+    mode : str or None
+        One of :data:`ROBOT_MODES`; None takes :data:`ROBOT`.
     """
 
-    def __init__(self, sim: Sim, config: BaxterConfig = BaxterConfig()) -> None:
+    def __init__(self, sim: Sim, config: BaxterConfig = BaxterConfig(),
+                 mode: str | None = None) -> None:
         self.sim = sim
         self.config = config
-        self.urdf = baxter_urdf(config.visuals)
+        self.mode = ROBOT if mode is None else mode
+        if self.mode not in ROBOT_MODES:
+            raise ValueError(f"robot mode (environment variable {ROBOT_ENV}) must be one of "
+                             f"{', '.join(ROBOT_MODES)}, got {self.mode!r}")
+        self.light = self.mode != "heavy"
+        """Shared kinematics client, cached via solution (every mode but ``heavy``)."""
+        self.urdf = baxter_urdf(config.visuals, "light" if self.mode == "light" else "full")
         """The URDF file the robot was loaded from."""
         self.model = _Model(sim.client, self.urdf)
         self.body = self.model.body
-        self._kin_client = pb.connect(pb.DIRECT)
-        self.kin = _Model(self._kin_client, baxter_urdf(False))
+        if self.light:
+            self._kin_client = -1  # the shared one: not this robot's to close
+            self.kin = kinematics_model()
+        else:
+            self._kin_client = pb.connect(pb.DIRECT)
+            self.kin = _Model(self._kin_client, baxter_urdf(False))
         self.grasp_constraint: int | None = None
         self.held: int | None = None
         self.reset_posture(READY_RIGHT)
@@ -282,15 +497,20 @@ class Baxter:
 
     # ------------------------------------------------------------------ state
     def reset_posture(self, right_q: Sequence[float]) -> None:
-        """Teleport the right arm to ``right_q`` (rad) and tuck the left arm; hold them."""
+        """Teleport the right arm to ``right_q`` (rad) and tuck the left arm; hold them.
+
+        The light robot's left arm is tucked for good (its joints are fixed).
+        """
         m = self.model
         m.reset(m.arm, right_q)
-        m.reset(m.left, TUCKED_LEFT)
+        if m.left:
+            m.reset(m.left, TUCKED_LEFT)
         self._command(list(right_q))
-        pb.setJointMotorControlArray(m.body, m.left, pb.POSITION_CONTROL,
-                                     targetPositions=list(TUCKED_LEFT),
-                                     forces=[m.effort[j] for j in m.left],
-                                     physicsClientId=self.sim.client)
+        if m.left:
+            pb.setJointMotorControlArray(m.body, m.left, pb.POSITION_CONTROL,
+                                         targetPositions=list(TUCKED_LEFT),
+                                         forces=[m.effort[j] for j in m.left],
+                                         physicsClientId=self.sim.client)
 
     def arm_q(self) -> list[float]:
         """Return the right-arm joint angles (rad)."""
@@ -321,8 +541,7 @@ class Baxter:
         """
         k = self.kin
         q = np.array(seed if seed is not None else self.arm_q(), dtype=float)
-        lo = np.array([k.lower[i] for i in k.arm_in_movable])
-        hi = np.array([k.upper[i] for i in k.arm_in_movable])
+        lo, hi = k.arm_lower, k.arm_upper
         q = np.clip(q, lo, hi)
         mid = (lo + hi) / 2
         tpos = np.asarray(target[0], float)
@@ -330,7 +549,8 @@ class Baxter:
         zeros = [0.0] * len(k.movable)
         full = [0.0] * len(k.movable)
         perr = oerr = math.inf
-        damping2 = 1e-4
+        damped = 1e-4 * np.eye(6)
+        eye7 = np.eye(7)
         for _ in range(max_iterations):
             k.reset(k.arm, q)
             pos, quat = k.ee_pose()
@@ -352,11 +572,11 @@ class Baxter:
             free = np.ones(7)
             for _ in range(3):
                 jf = jac * free
-                pinv = jf.T @ np.linalg.inv(jf @ jf.T + damping2 * np.eye(6))
+                pinv = jf.T @ np.linalg.inv(jf @ jf.T + damped)
                 dq = pinv @ err
                 # Secondary task in the null space: drift towards mid-range, so that
                 # long Cartesian paths do not run the arm into a joint limit.
-                dq += (np.eye(7) - pinv @ jf) @ (self.config.ik_centring * (mid - q) * free)
+                dq += (eye7 - pinv @ jf) @ (self.config.ik_centring * (mid - q) * free)
                 pinned = ((q <= lo + 1e-6) & (dq < 0)) | ((q >= hi - 1e-6) & (dq > 0))
                 if not np.any(pinned & (free > 0)):
                     break
@@ -377,8 +597,7 @@ class Baxter:
         random postures of a fixed-seed generator (deterministic), in that order.
         """
         k = self.kin
-        lo = np.array([k.lower[i] for i in k.arm_in_movable])
-        hi = np.array([k.upper[i] for i in k.arm_in_movable])
+        lo, hi = k.arm_lower, k.arm_upper
         rng = np.random.default_rng(0)
         tries = [*map(list, seeds), list(READY_RIGHT), self.arm_q()]
         tries += [list(rng.uniform(lo, hi)) for _ in range(restarts)]
@@ -403,9 +622,7 @@ class Baxter:
         found = self.ik_candidates(target, keep, restarts, seeds)
         if not found:
             return None
-        k = self.kin
-        lo = np.array([k.lower[i] for i in k.arm_in_movable])
-        hi = np.array([k.upper[i] for i in k.arm_in_movable])
+        lo, hi = self.kin.arm_lower, self.kin.arm_upper
 
         def margin(q: list[float]) -> float:
             qa = np.array(q)
@@ -596,7 +813,8 @@ class Baxter:
         self.held = None
 
     def close(self) -> None:
-        """Disconnect the kinematics client (the physics client belongs to the Sim)."""
+        """Disconnect the heavy robot's kinematics client (the physics client belongs
+        to the Sim; the light robot's kinematics client is shared and stays)."""
         if self._kin_client >= 0:
             pb.disconnect(physicsClientId=self._kin_client)
             self._kin_client = -1

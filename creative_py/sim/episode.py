@@ -204,7 +204,16 @@ class Episode:
             return cache[key]  # the same numbers the search below gives
         seeds = ()
         if via is not None:
-            q_via = self.robot.solve_ik_global(via)
+            # The via search (40 restarts) is done once per via target, not once per
+            # start pose (which moves with the tool's reach), unless the robot is heavy.
+            # The robot was just built at the ready posture, so the answer is the same.
+            via_key = ("via", via)
+            if self.robot.light and via_key in cache:
+                q_via = cache[via_key]
+            else:
+                q_via = self.robot.solve_ik_global(via)
+                if self.robot.light:
+                    cache[via_key] = q_via
             seeds = [q_via] if q_via else ()
         q = self.robot.solve_ik_global(home, keep=rs.keep, seeds=seeds)
         if q is None:

@@ -253,7 +253,7 @@ class Recorder:
             self.finished = True
 
     def render_then(self, use: Callable[[list[np.ndarray], list[float]], None],
-                    background: bool = True) -> int | None:
+                    background: bool = True, nice: int = 0) -> int | None:
         """Render the frames (:meth:`render`) and hand them with their times to ``use``.
 
         With ``background`` (and where the system can fork) this happens in a child
@@ -261,7 +261,9 @@ class Recorder:
         rendered and encoded on another core; the child exits 0 once ``use`` returned,
         1 if anything raised (one line on stderr). Returns the child's pid, or None
         when it ran here. The physics of this process is not touched either way in the
-        background case; in the foreground one see :meth:`render`.
+        background case; in the foreground one see :meth:`render`. ``nice`` lowers the
+        child's scheduling priority by that much (``os.nice``), so that it takes the CPU
+        the run leaves idle instead of slowing the run.
         """
         self.finish()
         if not (background and hasattr(os, "fork")):
@@ -275,6 +277,8 @@ class Recorder:
             return pid
         code = 1
         try:
+            if nice > 0:
+                os.nice(nice)
             use(self.render(), self.times)
             code = 0
         except BaseException as exc:  # the child must never return into the run

@@ -82,3 +82,75 @@ def test_a_grasped_tool_follows_the_gripper(robot):
     robot.release()
     robot.sim.step(120)
     assert frame_pose(robot.sim, body)[0][2] < expected[2] - 0.05  # it falls when released
+
+
+def _movable(urdf) -> list[str]:
+    with Sim(PhysicsSettings()) as sim:
+        body = pb.loadURDF(str(urdf), useFixedBase=True, physicsClientId=sim.client)
+        return [pb.getJointInfo(body, j, physicsClientId=sim.client)[1].decode()
+                for j in range(pb.getNumJoints(body, physicsClientId=sim.client))
+                if pb.getJointInfo(body, j, physicsClientId=sim.client)[2] != pb.JOINT_FIXED]
+
+
+def test_the_light_model_fixes_the_idle_joints_and_keeps_every_shape():
+    import xml.etree.ElementTree as ET
+
+    from creative_py.sim.baxter import IDLE_HOLD, RIGHT_ARM
+
+    full, light = baxter_urdf(model="full"), baxter_urdf(model="light")
+    assert set(_movable(full)) - set(_movable(light)) == set(IDLE_HOLD)
+    assert set(RIGHT_ARM) <= set(_movable(light))
+    # The merged links' shapes moved to the link their part hangs from, none lost.
+    count = [len(ET.parse(u).getroot().findall("link/collision")) for u in (full, light)]
+    assert count[0] == count[1] > 0
+    assert _movable(baxter_urdf(model="arm")) == list(RIGHT_ARM)
+    with pytest.raises(ValueError, match="model"):
+        baxter_urdf(model="tiny")
+
+
+def test_the_arm_chain_solves_ik_bit_for_bit_like_the_full_model():
+    with Sim(PhysicsSettings()) as sim:
+        light, heavy = Baxter(sim, mode="exact"), Baxter(sim, mode="heavy")
+        assert len(light.kin.movable) == 7 < len(heavy.kin.movable)
+        for target in [((0.7, -0.3, -0.02), gripper_orientation(0.5)),
+                       ((0.55, -0.5, 0.1), gripper_orientation(-1.5))]:
+            assert light.ik_candidates(target, keep=2, restarts=3) == \
+                heavy.ik_candidates(target, keep=2, restarts=3)
+        heavy.close()
+        light.close()
+
+
+def test_the_kinematics_client_outlives_a_robot_and_a_bad_mode_is_refused():
+    with Sim(PhysicsSettings()) as sim:
+        a = Baxter(sim, mode="light")
+        a.close()
+        b = Baxter(sim, mode="light")
+        assert b.kin is a.kin and pb.isConnected(b.kin.client)
+        assert b.model.left == [] and len(b.model.movable) == 9
+        with pytest.raises(ValueError, match="CREATIVE_ROBOT"):
+            Baxter(sim, mode="feather")
+
+
+@pytest.mark.parametrize("mode, searches", [("light", 1), ("heavy", 2)])
+def test_the_via_posture_is_searched_once_per_target(monkeypatch, mode, searches):
+    from creative_py.case import get_case
+    from creative_py.sim import baxter, load_world, open_episode
+
+    world = load_world(get_case("hook"))
+    via = world.scene.robot.via
+    assert via is not None
+    calls = []
+    search = Baxter.solve_ik_global
+
+    def counted(self, target, *args, **kw):
+        calls.append(kw.get("keep", 6))
+        return search(self, target, *args, **kw)
+
+    monkeypatch.setattr(Baxter, "solve_ik_global", counted)
+    monkeypatch.setattr(baxter, "ROBOT", mode)
+    # Two tools of different reach: two start poses, one via target.
+    for tool in ("hook_a2", "hook_b2"):
+        with open_episode(world, "standard", 1, tool, robot=True):
+            pass
+    assert len(world.postures) == 2 + (mode != "heavy")
+    assert calls.count(6) == searches  # the via search (the start pose's keeps 1)

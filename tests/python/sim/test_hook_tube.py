@@ -79,7 +79,11 @@ def test_medium_handle_succeeds_in_the_standard_tube():
 
 @pytest.mark.sim
 def test_short_handle_cannot_reach_behind_the_cube():
-    r = hook_trial("hook_a1", "standard", 1)
+    # At location 3 the wrist stops at the mouth well within the tracking guard (lag
+    # about 2 cm) and the prong never gets behind the cube. At location 1 the jammed
+    # wrist lags 2.85-3.03 cm against the 3 cm guard depending on the robot model's
+    # rounding (light or full): a borderline trial, not a test of reach.
+    r = hook_trial("hook_a1", "standard", 3)
     assert r.outcome in ("blocked", "failure"), r
     assert r.true_final["cube1"][0] > tube(hook_world()).mouth_x
 

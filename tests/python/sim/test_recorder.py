@@ -80,14 +80,20 @@ def test_render_then_in_a_child_writes_the_clip(recorded, tmp_path):
     path = tmp_path / "child.mp4"
     from creative_py.sim import open_episode
 
+    level = tmp_path / "nice.txt"
+
+    def use(frames, times):
+        level.write_text(str(os.nice(0)))  # the child's priority, lowered before rendering
+        write_clip(path, frames, 10.0, ["child"], times)
+
     with open_episode(world, "standard", 2, "hook_a2", record=rec) as ep:
         ep.run_skill("pick_up")
-        pid = rec.render_then(lambda frames, times: write_clip(path, frames, 10.0,
-                                                               ["child"], times))
+        pid = rec.render_then(use, nice=3)
     assert pid is not None
     _, status = os.waitpid(pid, 0)
     assert os.waitstatus_to_exitcode(status) == 0
     assert len(_decode(path)) == len(rec.snapshots)
+    assert int(level.read_text()) == min(19, os.nice(0) + 3)
 
 
 def test_a_caption_is_drawn_in_the_band():
