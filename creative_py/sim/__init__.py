@@ -24,6 +24,28 @@ Modules, from the data to the physics:
 ``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
 """
 
+
+def _import_pybullet_quietly() -> None:
+    """Import pybullet once, without the build-time banner its C module writes to the
+    standard error at import (every command printed it); errors still show."""
+    import os
+    import sys
+
+    if "pybullet" in sys.modules:
+        return
+    sys.stderr.flush()
+    saved, devnull = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, 2)
+        import pybullet  # noqa: F401
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(devnull)
+
+
+_import_pybullet_quietly()
+
 from creative_py.sim.episode import (Episode, PoseTarget, open_episode, run_trial, tool_rests,
                                      trial_outcome)
 from creative_py.sim.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,

@@ -51,3 +51,12 @@ def test_a_trial_in_another_process_is_bit_identical():
     assert data["outcome"] == "success"
     for key in ("outcome", "true_final", "perceived_final", "steps", "pose"):
         assert data[key] == here[key], key
+
+
+def test_no_command_prints_pybullet_s_build_banner():
+    proc = subprocess.run([sys.executable, "-c", "import creative_py.sim"],
+                          capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0 and proc.stdout == "" and proc.stderr == ""
+    listing = subprocess.run([sys.executable, "-m", "creative_py.cli", "trial", "hook",
+                              "--list"], capture_output=True, text=True, timeout=60)
+    assert "pybullet build time" not in listing.stderr + listing.stdout
