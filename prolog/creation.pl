@@ -51,7 +51,7 @@ hook predicates (case.pl says how a missing one is reported):
 :- use_module(geometry_clp).
 :- use_module(experiment).
 :- use_module(knowledge, [shared_clause/2]).
-:- use_module(subsumption, [clause_covers/2, clause_violations/3, clause_head_body/3]).
+:- use_module(subsumption, [clause_covers/2, clause_head_body/3]).
 :- use_module(case).
 
 %!  creation_candidates(+VS, +Options, -Candidates) is det.
@@ -184,10 +184,11 @@ conj_member_(X, A) :-
 %   named in Exclude (those TC trial 1 tried) are left out.
 %
 %   Result is catalogue(Replaced, General, Objects), Objects a list of
-%   catalogued(Object, Value, Use) best first: the alternative values in the order
-%   creation tries them (the instance next_tool/6 would make first, and so the
-%   created model the planner would use, comes first), then the fewest literals of
-%   h_s violated and the object's name (plan_use/5's order). Use is plan_use/5's
+%   catalogued(Object, Value, Use) best first, in the planner's order: the
+%   alternative values in the order creation tries them (the instance next_tool/6
+%   would make first, and so the created model the planner would use, comes first),
+%   then the object's name (planner:plan/5's tie-break among the objects a model
+%   admits: `hook_a4` before `hook_b4`). Use is plan_use/5's
 %   answer with option tool(Object): exploit(Object, Violated, Pose, Required), or
 %   no_experiment(Reason) when no pose satisfies the spatial literals. Result is
 %   none if no literal of h_s can be generalised.
@@ -206,22 +207,19 @@ catalogue_first(Case, VS, Primitive, Exclude, Result) :-
         exclude(==(Replaced), HGLits, HGLits1),
         observed_state(Case, Primitive, State),
         task_objects(Case, State, Objects),
-        findall(k(VI, NV, O)-O-Value,
+        findall(k(VI, O)-O-Value,
                 ( member(object(O, OStruct), Objects),
                   \+ memberchk(O, Exclude),
                   nth1(VI, Values, LV-AltV),
                   copy_term(LV-AltV, LO-Value),
                   arg(1, LO, O),
                   memberchk(Value, OStruct),
-                  copy_term(Head-(Spatial-Task)-(HS-HGLits1),
-                            HeadC-(Req-TaskC)-(HSC-HGLitsC)),
+                  copy_term(Head-(Spatial-Task)-HGLits1, HeadC-(Req-TaskC)-HGLitsC),
                   HeadC =.. [_, O|_],
                   append([OStruct, Req, TaskC], Body),
                   clause_head_body(Example, HeadC, Body),
                   clause_head_body(HGC, HeadC, HGLitsC),
-                  clause_covers(HGC, Example),
-                  clause_violations(HSC, Example, Viol),
-                  length(Viol, NV)
+                  clause_covers(HGC, Example)
                 ),
                 Keyed),
         keysort(Keyed, Sorted),
