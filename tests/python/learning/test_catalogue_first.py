@@ -112,3 +112,15 @@ def test_short_objects_are_predicted_out_of_reach(setting):
     short = [e for e in out if e["value"].endswith(",short)")]
     assert short and all(e["outcome"] == "predicted_unreachable" and e["trial"] is None
                          for e in short)
+
+
+def test_catalogue_first_is_off_under_the_paper_strategy_unless_asked():
+    from creative_py.learning.run import RunOptions
+
+    assert RunOptions().tries_catalogue is True
+    assert RunOptions(strategy="paper").tries_catalogue is False
+    assert RunOptions(strategy="paper", catalogue_first=True).tries_catalogue is True
+    assert RunOptions(catalogue_first=False).tries_catalogue is False
+    assert RunOptions().demonstrate_creation is False
+    with pytest.raises(ValueError, match="catalogue_first"):
+        RunOptions(catalogue_first="yes")
