@@ -261,7 +261,7 @@ def _tools_section(run: RunContents) -> str:
             bits.append(f"solved by {escape(solver)}")
         tried = [c for c in create.get("catalogue") or [] if isinstance(c, dict)]
         if tried:
-            bits.append("catalogued objects tried first: " + ", ".join(
+            bits.append("catalogued objects considered first: " + ", ".join(
                 f"{escape(str(c.get('tool')))} ({escape(str(c.get('outcome')))})"
                 for c in tried))
         if create.get("exhausted"):
