@@ -9,6 +9,9 @@ RUN   ?=
 SEED  ?= 0
 CASE  ?= hook
 OUT   ?= runs
+# make hook/wedge/rake show tool creation even when a catalogued object solved the
+# harder task first (creative run --demonstrate-creation); CREATE= turns that off.
+CREATE ?= --demonstrate-creation
 
 .PHONY: help setup test test-prolog test-python test-all run cases hook wedge rake repl bench clean
 
@@ -50,7 +53,7 @@ test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs includ
 	$(PY) -m pytest -q -n auto
 
 run: $(STAMP)  ## Any case end to end (CASE=<id>, see make cases).
-	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT)
+	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE)
 
 cases: $(STAMP)  ## List the cases (every worlds/*/case.toml).
 	$(VENV)/bin/creative cases

@@ -321,6 +321,13 @@ def run(
                                              "numbers inside their qualitative ranges, "
                                              "order shuffled, locations jittered); the "
                                              "same N gives the same world."),
+    catalogue_first: Optional[bool] = typer.Option(
+        None, "--catalogue-first/--no-catalogue-first", help="Before manufacturing a tool "
+        "for the harder task, try the catalogued objects the generalised model admits; "
+        "make a tool only if none succeeds (default: on, except with --strategy paper)."),
+    demonstrate_creation: bool = typer.Option(
+        False, "--demonstrate-creation", help="When a catalogued object solved the harder "
+        "task, still create a tool afterwards as a demonstration (make hook does)."),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot,
     video clips)."""
@@ -360,7 +367,9 @@ def run(
     try:
         opts = RunOptions(seed=seed, phase=phase, max_trials=max_trials,
                           consecutive=consecutive, eval_trials=eval_trials, video=video,
-                          gui=gui, strategy=strategy, world_seed=world_seed)
+                          gui=gui, strategy=strategy, world_seed=world_seed,
+                          catalogue_first=catalogue_first,
+                          demonstrate_creation=demonstrate_creation)
     except UnknownStrategy as exc:
         _fail(f"--strategy: {exc}")
     except ValueError as exc:

@@ -58,7 +58,7 @@ if it needs a new module, its use_module/1 below.
                            plan_use/5,
                            label_trial/7, experiment_strategies/1]).
 :- use_module(strategy, []).        % the experiment strategies (experiment's hooks)
-:- use_module(creation, [next_tool/6, creation_candidates/3]).
+:- use_module(creation, [next_tool/6, creation_candidates/3, catalogue_first/5]).
 :- use_module(model_file, [write_model_file/4, load_model_file/1, plan_task/6,
                             plan_models/5, created_models/5, write_model_file/5]).
 :- use_module(planner, [plan/5]).
@@ -143,6 +143,8 @@ api_op(label_trial(Case, VS0, Experiment, Facts, Label, Mode), VS,
        label_trial(Case, VS0, Experiment, Facts, Label, Mode, VS)).
 api_op(next_tool(Case, VS, Tried, Context), R, next_tool(Case, VS, Tried, Context, [], R)).
 api_op(creation_candidates(VS), Cs, creation_candidates(VS, [], Cs)).
+api_op(catalogue_first(Case, VS, Facts, Exclude), R,
+       catalogue_first(Case, VS, Facts, Exclude, R)).
 api_op(write_model_file(File, Case, Models, VS, Created), true,
        write_model_file(File, Case, Models, VS, Created)).
 api_op(write_model_file(File, Case, Models, VS), true,

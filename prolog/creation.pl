@@ -1,5 +1,6 @@
 :- module(creation,
           [ creation_candidates/3,   % +VS, +Options, -Candidates
+            catalogue_first/5,       % +Case, +VS, +Primitive, +Exclude, -Result
             next_tool/6              % +Case, +VS, +Tried, +Context, +Options, -Result
           ]).
 
@@ -50,6 +51,7 @@ hook predicates (case.pl says how a missing one is reported):
 :- use_module(geometry_clp).
 :- use_module(experiment).
 :- use_module(knowledge, [shared_clause/2]).
+:- use_module(subsumption, [clause_covers/2, clause_head_body/3]).
 :- use_module(case).
 
 %!  creation_candidates(+VS, +Options, -Candidates) is det.
@@ -167,6 +169,68 @@ conj_member_(X, (A, B)) :- !,
     ).
 conj_member_(X, A) :-
     X =@= A.
+
+%!  catalogue_first(+Case, +VS, +Primitive, +Exclude, -Result) is det.
+%
+%   The catalogued objects to try before a tool is made. The first candidate of
+%   creation_candidates/3 names the literal Replaced of h_s that creation would
+%   generalise to General; the *generalised model* is h_g with Replaced taken out and
+%   General put in (as created_models/5 builds the created model with an instance).
+%   It admits an available object (Primitive: the harder task's facts) when h_g
+%   without Replaced covers the object's example (its structural literals, h_s's
+%   spatial and task literals, as plan_use/5 builds it) and the object has one of the
+%   alternative values of the property (General holds of it, Replaced does not: an
+%   object with the replaced value is the learned concept that just failed). Objects
+%   named in Exclude (those TC trial 1 tried) are left out.
+%
+%   Result is catalogue(Replaced, General, Objects), Objects a list of
+%   catalogued(Object, Value, Use) best first, in the planner's order: the
+%   alternative values in the order creation tries them (the instance next_tool/6
+%   would make first, and so the created model the planner would use, comes first),
+%   then the object's name (planner:plan/5's tie-break among the objects a model
+%   admits: `hook_a4` before `hook_b4`). Use is plan_use/5's
+%   answer with option tool(Object): exploit(Object, Violated, Pose, Required), or
+%   no_experiment(Reason) when no pose satisfies the spatial literals. Result is
+%   none if no literal of h_s can be generalised.
+
+catalogue_first(Case, VS, Primitive, Exclude, Result) :-
+    must_be(list, Exclude),
+    creation_candidates(VS, [], Candidates),
+    (   Candidates = [candidate(L, General0, _, _)|_]
+    ->  findall(L1-Alt, ( member(candidate(L1, _, Alt, _), Candidates), L1 =@= L ),
+                Values),
+        vs_bounds(VS, HS, HG),
+        hypothesis_parts(HS, Struct, Spatial, Task),
+        once(( member(Replaced, Struct), Replaced =@= L )),
+        copy_term(L-General0, Replaced-General),
+        clause_head_body(HG, Head, HGLits),
+        exclude(==(Replaced), HGLits, HGLits1),
+        observed_state(Case, Primitive, State),
+        task_objects(Case, State, Objects),
+        findall(k(VI, O)-O-Value,
+                ( member(object(O, OStruct), Objects),
+                  \+ memberchk(O, Exclude),
+                  nth1(VI, Values, LV-AltV),
+                  copy_term(LV-AltV, LO-Value),
+                  arg(1, LO, O),
+                  memberchk(Value, OStruct),
+                  copy_term(Head-(Spatial-Task)-HGLits1, HeadC-(Req-TaskC)-HGLitsC),
+                  HeadC =.. [_, O|_],
+                  append([OStruct, Req, TaskC], Body),
+                  clause_head_body(Example, HeadC, Body),
+                  clause_head_body(HGC, HeadC, HGLitsC),
+                  clause_covers(HGC, Example)
+                ),
+                Keyed),
+        keysort(Keyed, Sorted),
+        findall(catalogued(O, Value, Use),
+                ( member(_-O-Value, Sorted),
+                  plan_use(Case, VS, Primitive, [tool(O)], Use)
+                ),
+                Items),
+        Result = catalogue(Replaced, General, Items)
+    ;   Result = none
+    ).
 
 %!  next_tool(+Case, +VS, +Tried, +Context, +Options, -Result) is det.
 %

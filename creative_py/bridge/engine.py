@@ -627,6 +627,15 @@ class Engine:
         ``exhausted(Why)`` (Algorithm 2's choice, ``creation:next_tool/6``)."""
         return self._must("next_tool", case, vs, list(tried), list(facts))
 
+    def catalogue_first(self, case: str, vs: Term, facts: Sequence[Term],
+                        exclude: Sequence[str] = ()) -> Term:
+        """Return ``catalogue(Replaced, General, Objects)``: the available objects (in the
+        task ``facts``) that the generalised model admits, best first, each as
+        ``catalogued(Object, Value, Use)`` with ``Use`` an ``exploit/4`` plan; or
+        ``none`` (``creation:catalogue_first/5``). ``exclude`` names objects to leave
+        out."""
+        return self._must("catalogue_first", case, vs, list(facts), list(exclude))
+
     def created_models(self, models: Term, vs: Term, replaced: Term, instance: Term) -> list:
         """Return the harder task's action models: the learned ones with ``replaced``
         swapped for ``instance``."""

@@ -8,7 +8,14 @@ tool can reach the learned pose in the harder task at all
 perceived apparatus and target); when it cannot, the failure is predicted, no trial is
 run and creation starts at once (:attr:`CreateResult.predicted` says why). When the
 geometry cannot tell (the case sets no reach: a force decides), the trial is run.
-Then, in a loop::
+With catalogued objects first (``catalogue_first``, the default except under the
+paper's strategy) the available objects that the *generalised* model admits are then
+tried in the physics before anything is made (``creation:catalogue_first/5``: h_g
+with the literal creation would replace swapped for its general one, e.g.
+``any_length(T)`` for ``handle_length(T, medium)``; objects with an alternative value,
+in the order creation would make them, best first); a tool is manufactured only when
+none succeeds, or, with ``demonstrate``, afterwards as a demonstration of Algorithm 2
+(:attr:`CreateResult.solved_by` says which solved the task). Then, in a loop::
 
     create(Replaced, General, Instance, Structural, Dims) = engine.next_tool(...)
     spec  = spec_from_dict(kind + Dims)                      # sized by CLP(R)/CLP(FD)
@@ -77,6 +84,16 @@ class CreateResult:
     """What the pose model said of the learned model's best tool in the harder task:
     ``tool``, ``feasible`` (False: unreachable, no trial run; True: reachable; None:
     the geometry cannot tell), ``why``."""
+    catalogue: list[dict[str, Any]] = field(default_factory=list)
+    """The catalogued objects the generalised model admitted, best first: per object
+    ``tool``, ``value`` (its value of the generalised property), ``why`` it was
+    chosen, ``predicted`` (the pose model's answer, as :attr:`predicted`), ``trial``
+    (its trial number, None if not run) and ``outcome`` (the physics' outcome, or
+    ``predicted_unreachable`` / ``no_pose`` when no trial was run)."""
+    solved_by: Optional[str] = None
+    """What solved the harder task: ``learned`` (TC trial 1, the learned model's own
+    best tool), ``catalogue`` (a catalogued object the generalised model admits),
+    ``created`` (a made tool) or None."""
 
 
 class ToolCreator:
@@ -94,10 +111,17 @@ class ToolCreator:
     safety_factor : float or None
         The least safety factor of the strength check (None: the default,
         :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`).
+    catalogue_first : bool
+        Try the catalogued objects the generalised model admits before manufacturing
+        (False: the paper's Algorithm 2, which makes a tool at once).
+    demonstrate : bool
+        When a catalogued object solved the harder task, still create a tool afterwards
+        as a demonstration of Algorithm 2.
     """
 
     def __init__(self, runner: TrialRunner, max_tools: int = 6, eval_trials: int = 5,
-                 safety_factor: Optional[float] = None) -> None:
+                 safety_factor: Optional[float] = None, catalogue_first: bool = False,
+                 demonstrate: bool = False) -> None:
         from creative_py.mesh.spec import MIN_SAFETY_FACTOR
 
         self.safety_factor = MIN_SAFETY_FACTOR if safety_factor is None else safety_factor
@@ -106,6 +130,8 @@ class ToolCreator:
         self.case = runner.case
         self.max_tools = max_tools
         self.eval_trials = eval_trials
+        self.catalogue_first = catalogue_first
+        self.demonstrate = demonstrate
 
     def create(self, vs: Term, variant: str) -> CreateResult:
         """Solve the harder task ``variant``, creating a tool if the available ones fail."""
@@ -126,7 +152,21 @@ class ToolCreator:
                 rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
                 if rec.outcome == "success":
                     return CreateResult(variant, False, [], None, vs, runner.trials[start:],
-                                        time.perf_counter() - t0, predicted=predicted)
+                                        time.perf_counter() - t0, predicted=predicted,
+                                        solved_by="learned")
+        catalogue: list[dict[str, Any]] = []
+        solved = None
+        if self.catalogue_first:
+            tried_first = [str(use.args[0])] if use.name == "exploit" else []
+            catalogue, solved, n = self._try_catalogue(vs, task, tried_first, n)
+            if solved is not None and not self.demonstrate:
+                # The harder task's model: the learned one with the object's value.
+                return CreateResult(variant, False, [], None, vs, runner.trials[start:],
+                                    time.perf_counter() - t0, replaced=solved[0],
+                                    instance=solved[1], predicted=predicted,
+                                    catalogue=catalogue, solved_by="catalogue")
+        by_catalogue = solved is not None
+        solved_by = "catalogue" if by_catalogue else None
         created: list[CreatedTool] = []
         tried: list[Term] = []
         exhausted = None
@@ -165,11 +205,65 @@ class ToolCreator:
                 if ct.trial_outcome != "success" or not usable:
                     continue
                 ct.eval_outcomes = self._evaluate(spec, vs, task)
-                return CreateResult(variant, True, created, ct, vs, runner.trials[start:],
-                                    time.perf_counter() - t0, replaced=replaced,
-                                    instance=instance, predicted=predicted)
-        return CreateResult(variant, True, created, None, vs, runner.trials[start:],
-                            time.perf_counter() - t0, exhausted, predicted=predicted)
+                return CreateResult(variant, not by_catalogue, created, ct, vs,
+                                    runner.trials[start:], time.perf_counter() - t0,
+                                    replaced=replaced, instance=instance,
+                                    predicted=predicted, catalogue=catalogue,
+                                    solved_by=solved_by or "created")
+        return CreateResult(variant, not by_catalogue, created, None, vs,
+                            runner.trials[start:], time.perf_counter() - t0, exhausted,
+                            predicted=predicted, catalogue=catalogue, solved_by=solved_by)
+
+    def _try_catalogue(self, vs: Term, task: TaskState, exclude: list[str], n: int,
+                       ) -> tuple[list[dict[str, Any]], Optional[tuple[Term, Term]], int]:
+        """Try the catalogued objects the generalised model admits, best first.
+
+        Prolog chooses and orders them (``creation:catalogue_first/5``) and gives each
+        its pose; objects in ``exclude`` (TC trial 1's) are left out. An object the
+        pose model predicts cannot reach the pose is not tried (as for TC trial 1);
+        every other is run in the physics as a creation trial (phase ``create``), once
+        more if the motion did not happen as planned, until one succeeds. Returns the
+        record of each object (:attr:`CreateResult.catalogue`), the replaced literal
+        and the successful object's value (None if none succeeded), and the trial
+        count.
+        """
+        runner = self.runner
+        reply = self.engine.catalogue_first(self.case, vs, runner.task_facts(task), exclude)
+        if not (isinstance(reply, Compound) and reply.name == "catalogue"):
+            return [], None, n
+        replaced, general, items = reply.args
+        out: list[dict[str, Any]] = []
+        for item in items:
+            obj, value, use = item.args
+            entry: dict[str, Any] = {
+                "tool": str(obj), "value": term_text(value),
+                "why": f"catalogued object admitted by {term_text(general)} (the "
+                       f"generalised {term_text(replaced)}): {term_text(value)}",
+                "predicted": None, "trial": None, "outcome": None}
+            out.append(entry)
+            if not (isinstance(use, Compound) and use.name == "exploit"):
+                entry.update(outcome="no_pose", reason=term_text(use))
+                continue
+            entry["predicted"] = self.predict(use, task)
+            if entry["predicted"]["feasible"] is False:
+                entry["outcome"] = "predicted_unreachable"
+                runner.progress(f"TC catalogue: {obj} not tried: "
+                                f"{entry['predicted']['why']}")
+                continue
+            runner.progress(f"TC catalogue: trying {obj}, {entry['why']}")
+            n += 1
+            rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
+            if rec.outcome in ("blocked", "unreachable", "invalid"):
+                n += 1
+                runner.progress(f"{obj}: {rec.outcome}, trying once more")
+                rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
+            entry.update(trial=rec.trial, outcome=rec.outcome, reason=rec.reason)
+            if rec.outcome == "success":
+                runner.progress(f"TC catalogue: {obj} solved the {task.variant} task"
+                                + ("; a tool is created as a demonstration"
+                                   if self.demonstrate else "; no tool is made"))
+                return out, (replaced, value), n
+        return out, None, n
 
     def predict(self, use: Term, task: TaskState) -> dict[str, Any]:
         """Return what the pose model predicts of an ``exploit/4`` plan in ``task``.

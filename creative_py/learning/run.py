@@ -68,6 +68,15 @@ class RunOptions:
         (:func:`creative_py.sim.world.draw_world`: the catalogue's numbers inside their
         own qualitative ranges, its order shuffled, the locations jittered), the same
         for the same N.
+    catalogue_first : bool or None
+        Before manufacturing a tool for the harder task, try in the physics the
+        catalogued objects the generalised model admits
+        (:meth:`creative_py.learning.creation.ToolCreator._try_catalogue`); a tool is
+        made only when none succeeds. None: on, except under the paper's strategy
+        (whose Algorithm 2 makes a tool at once, as the parity fixtures record).
+    demonstrate_creation : bool
+        When a catalogued object solved the harder task, still create a tool afterwards
+        as a demonstration of Algorithm 2 (``make hook`` does).
     """
 
     seed: int = 0
@@ -80,6 +89,16 @@ class RunOptions:
     gui: bool = False
     strategy: str = "informative"
     world_seed: Optional[int] = None
+    catalogue_first: Optional[bool] = None
+    demonstrate_creation: bool = False
+
+    @property
+    def tries_catalogue(self) -> bool:
+        """Whether tool creation tries the catalogued objects first (``catalogue_first``,
+        None meaning what the strategy says: on, except under the paper's)."""
+        if self.catalogue_first is None:
+            return strategy_named(self.strategy).catalogue_first
+        return self.catalogue_first
 
     def __post_init__(self) -> None:
         checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
@@ -100,6 +119,12 @@ class RunOptions:
                              f"got {self.video!r}")
         if not isinstance(self.gui, bool):
             raise ValueError(f"option gui must be true or false, got {self.gui!r}")
+        if self.catalogue_first is not None and not isinstance(self.catalogue_first, bool):
+            raise ValueError(f"option catalogue_first must be true, false or unset, got "
+                             f"{self.catalogue_first!r}")
+        if not isinstance(self.demonstrate_creation, bool):
+            raise ValueError(f"option demonstrate_creation must be true or false, got "
+                             f"{self.demonstrate_creation!r}")
         strategy_named(self.strategy)
 
 
@@ -129,9 +154,11 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
     # Keep the readable trials only, so that the run appends after them.
     RunFolder(run_dir).rewrite_trials(trials)
     # A resumed run shows no GUI: the display it was started on may be gone. A run
-    # recorded before there were strategies ran the paper's Algorithm 1.
+    # recorded before there were strategies ran the paper's Algorithm 1, and one
+    # recorded before catalogued objects were tried first made a tool at once.
     try:
-        options = RunOptions(**{"strategy": "paper", **meta["options"], "gui": False})
+        options = RunOptions(**{"strategy": "paper", "catalogue_first": False,
+                                **meta["options"], "gui": False})
     except ValueError as exc:
         raise ValueError(f"{meta_path}: field 'options': {exc}") from None
     world_dir = Path(meta["world"]) if meta.get("world") else None
@@ -247,11 +274,13 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         # Tool creation (Algorithm 2) on the harder variant.
         if options.phase in ("create", "all"):
             t0 = time.perf_counter()
-            creator = ToolCreator(runner, eval_trials=options.create_eval_trials)
+            creator = ToolCreator(runner, eval_trials=options.create_eval_trials,
+                                  catalogue_first=options.tries_catalogue,
+                                  demonstrate=options.demonstrate_creation)
             created = creator.create(use.vs, manifest.harder_variant)
             summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
             summary["create"] = _creation_summary(created)
-            if created.success is not None:
+            if created.instance is not None:
                 models = engine.created_models(use.models, use.vs, created.replaced,
                                                created.instance)
                 engine.write_model_file(run.path / "model.pl", case, use.models, use.vs,
@@ -433,8 +462,10 @@ def _check_pddl(folder: Path, domain: str, problem: str, plan: Any, variant: str
 def _created_pddl(runner: TrialRunner, folder: Path, created: CreateResult,
                   models: Any, say: Callable[[str], None]) -> dict[str, Any]:
     """Write and check the harder task's PDDL: the created tool's model (the learned one
-    with the replaced literal swapped) planning the harder variant, with the created
-    tools in the catalogue, as ``domain_<variant>.pddl`` and ``problem_<variant>.pddl``.
+    with the replaced literal swapped for the created tool's value, or for the value of
+    the catalogued object that solved the task) planning the harder variant, with the
+    created tools in the catalogue, as ``domain_<variant>.pddl`` and
+    ``problem_<variant>.pddl``.
     """
     from creative_py.learning.pddl_check import PLANNER_NAME
 
@@ -474,4 +505,12 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
         "success": res.success.name if res.success else None,
         "eval": res.success.eval_outcomes if res.success else [],
         "exhausted": res.exhausted,
+        # What solved the harder task: learned (TC trial 1), catalogue (an available
+        # object the generalised model admits, tried before manufacturing), created or
+        # None; the catalogued objects tried (or skipped), best first, with why.
+        "solved_by": res.solved_by,
+        "catalogue": res.catalogue,
+        "catalogue_trials": len([c for c in res.catalogue if c["trial"] is not None]),
+        "catalogue_success": next((c["tool"] for c in res.catalogue
+                                   if c["outcome"] == "success"), None),
     }

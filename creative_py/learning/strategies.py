@@ -46,6 +46,10 @@ class Strategy:
     seeded : bool
         The term sent is ``name(Seed)`` with Seed = run seed x 1000 + trial number (the
         same run draws the same experiments, also when resumed); else the atom ``name``.
+    catalogue_first : bool
+        Tool creation tries the catalogued objects that the generalised model admits
+        before it makes a tool (``RunOptions.catalogue_first`` left unset follows
+        this); the paper's Algorithm 2 makes one at once.
     """
 
     name: str
@@ -55,6 +59,7 @@ class Strategy:
     repeat_taught: bool = False
     pose_any_tool: bool = False
     seeded: bool = False
+    catalogue_first: bool = True
 
     def term(self, seed: int, trial: int) -> Term:
         """Return the strategy term of ``next_experiment``'s ``strategy(S)`` option for
@@ -79,7 +84,7 @@ class Strategy:
 STRATEGIES: dict[str, Strategy] = {
     "paper": Strategy(
         "paper", "Algorithm 1: one literal per trial, K successes to stop",
-        stop="confirmed", confirm=True, repeat_taught=True),
+        stop="confirmed", confirm=True, repeat_taught=True, catalogue_first=False),
     "informative": Strategy(
         "informative", "largest expected reduction of the version space, certified stop",
         stop="certified", pose_any_tool=True),

@@ -253,6 +253,17 @@ def _tools_section(run: RunContents) -> str:
         if "needed" in create:
             bits.append("creation needed" if create["needed"] else
                         "creation not needed (a catalogued tool succeeded)")
+        if create.get("solved_by"):
+            by = {"learned": "the learned model's own tool",
+                  "catalogue": f"the catalogued {create.get('catalogue_success')}",
+                  "created": f"the created {create.get('success')}"}
+            solver = by.get(create["solved_by"], str(create["solved_by"]))
+            bits.append(f"solved by {escape(solver)}")
+        tried = [c for c in create.get("catalogue") or [] if isinstance(c, dict)]
+        if tried:
+            bits.append("catalogued objects considered first: " + ", ".join(
+                f"{escape(str(c.get('tool')))} ({escape(str(c.get('outcome')))})"
+                for c in tried))
         if create.get("exhausted"):
             bits.append(f"search exhausted: {escape(str(create['exhausted']))}")
         intro = f"<p>{'; '.join(bits)}.</p>"

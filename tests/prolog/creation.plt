@@ -221,4 +221,58 @@ test(stick_candidate_is_sized_as_a_stick) :-
     next_tool(hook, VS, Tried, Context, [], R),
     assertion(R = create(hook(_), any_kind(_), stick(_), _, _)).
 
+                 /*******************************
+                 *   CATALOGUED OBJECTS FIRST   *
+                 *******************************/
+
+%   The longer tube (0.45 m) with the cube at its end, and the fixture's catalogue.
+longer_tube_primitive_(P) :-
+    fixture_catalogue(hook, C),
+    append(C, [tube_mouth(tube1, 0.70, 0.0, 0.0), tube_length_m(tube1, 0.45),
+               tube_inner_m(tube1, 0.08, 0.07), pose(cube1, 1.05, 0.0, -0.02, 0.0),
+               size(cube1, 0.03, 0.03, 0.03)], P).
+
+catalogued_name_(catalogued(O, _, _), O).
+
+test(catalogue_long_handles_first_refuted_short_last) :-
+    short_hook_failed_vs_(VS),
+    longer_tube_primitive_(P),
+    catalogue_first(hook, VS, P, [hook_a2], R),
+    R = catalogue(Replaced, General, Items),
+    assertion(Replaced =@= handle_length(_, medium)),
+    assertion(General =@= any_length(_)),
+    maplist(catalogued_name_, Items, Names),
+    % hook_a2 tried already; hook_a4 has the replaced (medium) value: neither is new.
+    % The long ones by name (the planner's order), the short hook (refuted during
+    % tool-use learning) last.
+    assertion(Names == [hook_a3, hook_a5, hook_a1]),
+    Items = [catalogued(hook_a3, Value, Use)|_],
+    assertion(Value == handle_length(hook_a3, long)),
+    assertion(Use = exploit(hook_a3, _, hook_pose(_, _, _), _)).
+
+test(catalogue_needs_hg_without_the_replaced_literal) :-
+    left_hook_failed_vs_(VS),
+    longer_tube_primitive_(P),
+    catalogue_first(hook, VS, P, [], catalogue(_, _, Items)),
+    maplist(catalogued_name_, Items, Names),
+    % h_g keeps hook_side(T, right): the stick (no side) is no longer admitted.
+    assertion(Names == [hook_a3, hook_a1]).
+
+test(catalogue_wedge_in_the_ontology_order) :-
+    medium_wedge_vs_(VS),
+    fixture_primitive(wedge, P),
+    catalogue_first(wedge, VS, P, [wedge_a1], catalogue(Replaced, _, Items)),
+    assertion(Replaced =@= block_length(_, medium)),
+    maplist(catalogued_name_, Items, Names),
+    % Short before long, as the ontology lists them (no negative refuted either);
+    % wedge_a1 excluded.
+    assertion(Names == [cylinder_b1, wedge_a2]).
+
+test(catalogue_wedge_refuted_short_last) :-
+    short_wedge_failed_vs_(VS),
+    fixture_primitive(wedge, P),
+    catalogue_first(wedge, VS, P, [], catalogue(_, _, Items)),
+    maplist(catalogued_name_, Items, Names),
+    assertion(Names == [wedge_a2, cylinder_b1, wedge_a1]).
+
 :- end_tests(creation).
