@@ -190,27 +190,9 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Used by :func:`resume_run`: the randomised world recorded in ``run.json``
         (otherwise drawn from ``options.world_seed``).
     """
-    from creative_py.case import get_case, read_manifest
-    from creative_py.mesh.slicer import require_slicer
-    from creative_py.sim import load_world
-
-    if options.phase in ("create", "all"):
-        require_slicer()  # every created tool is sliced: refuse before any physics
-    manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
-    if manifest.id != case:
-        raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "
-                         f"not {case!r}")
     say = progress or (lambda _m: None)
     t_start = time.perf_counter()
-    world = load_world(manifest)
-    engine = Engine.instance()
-    check_manifest(engine, manifest)
-    check_catalogue(engine, world)
-    if options.world_seed is not None:
-        if drawn is None:
-            drawn = draw_catalogue_world(engine, world, options.world_seed)
-        world = apply_drawn(world, drawn)
-        check_catalogue(engine, world)
+    engine, world, drawn = _checked_world(case, options, world_dir, drawn)
     if resume is None:
         run = RunFolder.create(Path(out), case, options.seed, run_name)
         run.write_json("run.json", {"case": case, "options": asdict(options),
@@ -227,77 +209,14 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                            background=not options.gui)
         runner = TrialRunner(engine, world, run, options.seed, say, replay=replay,
                              clips=clips, gui=options.gui)
-        lopts = LearningOptions(max_trials=options.max_trials or manifest.trial_budget,
-                                consecutive=options.consecutive, strategy=options.strategy)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                    "options": asdict(options), "wall_time_s": {},
                                    "world_seed": options.world_seed, "drawn_world": drawn}
-
-        # Demonstration and tool-use learning (Algorithm 1).
-        t0 = time.perf_counter()
-        use = ToolUseLearner(runner, lopts).learn()
-        summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
-        summary["demonstration"] = {"tool": use.demo_tool}
-        summary["use"] = {"trials": len(use.trials), "converged": use.converged,
-                          "trials_to_converge": use.trials_to_converge,
-                          "strategy": options.strategy, "stop": use.stop}
-        # The version space after the demonstration, and the information-theoretic
-        # bound: with binary outcomes, telling N0 hypotheses apart in the worst case
-        # takes ceil(log2 N0) trials.
-        summary["vs_count_initial"] = use.vs_count_initial
-        summary["vs_count_initial_exact"] = use.vs_count_initial_exact
-        summary["info_bound_trials"] = (use.vs_count_initial - 1).bit_length()
-        summary["vs_count_final"] = (use.trials[-1].vs_count
-                                     if use.trials else use.vs_count_initial)
-        engine.write_model_file(run.path / "model.pl", case, use.models, use.vs)
-        hs, hg = runner.bounds(use.vs)
-        summary["hypotheses"] = {"hs": hs, "hg": hg}
-        say(f"h_s: {hs}")
-        say(f"h_g: {hg}")
-
-        # The learned model planning the task (PDDL written for every run).
-        task = runner.task(use.trials[-1].variant if use.trials
-                           else manifest.demonstration.variant)
-        plan = engine.plan_task(case, use.models, use.vs, runner.task_facts(task),
-                                [Compound("pddl", (str(run.path / "domain.pddl"),
-                                                   str(run.path / "problem.pddl")))])
-        summary["plan"] = term_text(plan)
-        say(f"plan: {term_text(plan)}")
-        summary["pddl"] = {"use": _check_pddl(run.path, "domain.pddl", "problem.pddl",
-                                              plan, task.variant, say)}
-
-        # Evaluation of the learned model: the planner's own tool and pose choice.
-        t0 = time.perf_counter()
-        summary["eval"] = _evaluate(runner, use, options.eval_trials)
-        summary["wall_time_s"]["eval"] = round(time.perf_counter() - t0, 2)
-
-        # Tool creation (Algorithm 2) on the harder variant.
+        use = _learn_to_use(runner, options, summary, say)
+        _plan_and_evaluate(runner, use, options, summary, say)
         if options.phase in ("create", "all"):
-            t0 = time.perf_counter()
-            creator = ToolCreator(runner, eval_trials=options.create_eval_trials,
-                                  catalogue_first=options.tries_catalogue,
-                                  demonstrate=options.demonstrate_creation)
-            created = creator.create(use.vs, manifest.harder_variant)
-            summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
-            summary["create"] = _creation_summary(created)
-            if created.instance is not None:
-                models = engine.created_models(use.models, use.vs, created.replaced,
-                                               created.instance)
-                engine.write_model_file(run.path / "model.pl", case, use.models, use.vs,
-                                        [Compound("created", (created.variant, models))])
-                summary["create"]["model"] = [term_text(m) for m in models]
-                summary["pddl"]["create"] = _created_pddl(runner, run.path, created, models,
-                                                          say)
-        trials = runner.trials
-        summary["trials"] = summarise_trials(trials)
-        summary["videos"] = clips.finish()
-        summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
-        summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
-        plot_trials(trials, run.path / "trials.png",
-                    title=f"CREATIVE-py, {case} case, seed {options.seed}")
-        run.write_json("summary.json", summary)
-        write_html_report(run.path)
-        say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
+            _create(runner, use, options, summary, say)
+        _finish(runner, clips, options, summary, t_start, say)
     except BaseException:
         # Nothing learned yet (the demonstration failed, the run was interrupted before
         # its first trial): leave no empty folder behind.
@@ -305,6 +224,120 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
             shutil.rmtree(run.path, ignore_errors=True)
         raise
     return run
+
+
+def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
+                   drawn: Optional[dict[str, Any]]) -> tuple[Engine, Any,
+                                                            Optional[dict[str, Any]]]:
+    """Return the engine, the case's world (drawn when ``options.world_seed`` says so)
+    and the drawn world, all checked against the ontology before any folder or physics."""
+    from creative_py.case import get_case, read_manifest
+    from creative_py.mesh.slicer import require_slicer
+    from creative_py.sim import load_world
+
+    if options.phase in ("create", "all"):
+        require_slicer()  # every created tool is sliced: refuse before any physics
+    manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
+    if manifest.id != case:
+        raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "
+                         f"not {case!r}")
+    world = load_world(manifest)
+    engine = Engine.instance()
+    check_manifest(engine, manifest)
+    check_catalogue(engine, world)
+    if options.world_seed is not None:
+        if drawn is None:
+            drawn = draw_catalogue_world(engine, world, options.world_seed)
+        world = apply_drawn(world, drawn)
+        check_catalogue(engine, world)
+    return engine, world, drawn
+
+
+def _learn_to_use(runner: TrialRunner, options: RunOptions, summary: dict[str, Any],
+                  say: Callable[[str], None]) -> UseResult:
+    """The demonstration and tool-use learning (Algorithm 1); write ``model.pl`` and the
+    phase's part of the summary."""
+    engine, run = runner.engine, runner.run_folder
+    lopts = LearningOptions(max_trials=options.max_trials or runner.manifest.trial_budget,
+                            consecutive=options.consecutive, strategy=options.strategy)
+    t0 = time.perf_counter()
+    use = ToolUseLearner(runner, lopts).learn()
+    summary["wall_time_s"]["use"] = round(time.perf_counter() - t0, 2)
+    summary["demonstration"] = {"tool": use.demo_tool}
+    summary["use"] = {"trials": len(use.trials), "converged": use.converged,
+                      "trials_to_converge": use.trials_to_converge,
+                      "strategy": options.strategy, "stop": use.stop}
+    # The version space after the demonstration, and the information-theoretic bound:
+    # with binary outcomes, telling N0 hypotheses apart in the worst case takes
+    # ceil(log2 N0) trials.
+    summary["vs_count_initial"] = use.vs_count_initial
+    summary["vs_count_initial_exact"] = use.vs_count_initial_exact
+    summary["info_bound_trials"] = (use.vs_count_initial - 1).bit_length()
+    summary["vs_count_final"] = (use.trials[-1].vs_count
+                                 if use.trials else use.vs_count_initial)
+    engine.write_model_file(run.path / "model.pl", runner.case, use.models, use.vs)
+    hs, hg = runner.bounds(use.vs)
+    summary["hypotheses"] = {"hs": hs, "hg": hg}
+    say(f"h_s: {hs}")
+    say(f"h_g: {hg}")
+    return use
+
+
+def _plan_and_evaluate(runner: TrialRunner, use: UseResult, options: RunOptions,
+                       summary: dict[str, Any], say: Callable[[str], None]) -> None:
+    """Plan the task with the learned model (``domain.pddl``/``problem.pddl``, solved by
+    pyperplan and compared), then evaluate the model on fresh trials."""
+    engine, path = runner.engine, runner.run_folder.path
+    task = runner.task(use.trials[-1].variant if use.trials
+                       else runner.manifest.demonstration.variant)
+    plan = engine.plan_task(runner.case, use.models, use.vs, runner.task_facts(task),
+                            [Compound("pddl", (str(path / "domain.pddl"),
+                                               str(path / "problem.pddl")))])
+    summary["plan"] = term_text(plan)
+    say(f"plan: {term_text(plan)}")
+    summary["pddl"] = {"use": _check_pddl(path, "domain.pddl", "problem.pddl",
+                                          plan, task.variant, say)}
+    # Evaluation of the learned model: the planner's own tool and pose choice.
+    t0 = time.perf_counter()
+    summary["eval"] = _evaluate(runner, use, options.eval_trials)
+    summary["wall_time_s"]["eval"] = round(time.perf_counter() - t0, 2)
+
+
+def _create(runner: TrialRunner, use: UseResult, options: RunOptions,
+            summary: dict[str, Any], say: Callable[[str], None]) -> None:
+    """Tool creation (Algorithm 2) on the harder variant; the harder task's model in
+    ``model.pl`` and its PDDL when a tool (catalogued or made) solved it."""
+    engine, path = runner.engine, runner.run_folder.path
+    t0 = time.perf_counter()
+    creator = ToolCreator(runner, eval_trials=options.create_eval_trials,
+                          catalogue_first=options.tries_catalogue,
+                          demonstrate=options.demonstrate_creation)
+    created = creator.create(use.vs, runner.manifest.harder_variant)
+    summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
+    summary["create"] = _creation_summary(created)
+    if created.instance is not None:
+        models = engine.created_models(use.models, use.vs, created.replaced,
+                                       created.instance)
+        engine.write_model_file(path / "model.pl", runner.case, use.models, use.vs,
+                                [Compound("created", (created.variant, models))])
+        summary["create"]["model"] = [term_text(m) for m in models]
+        summary["pddl"]["create"] = _created_pddl(runner, path, created, models, say)
+
+
+def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
+            summary: dict[str, Any], t_start: float, say: Callable[[str], None]) -> None:
+    """Wait for the clips, then write ``trials.png``, ``summary.json`` and, last,
+    ``report.html``."""
+    run, trials = runner.run_folder, runner.trials
+    summary["trials"] = summarise_trials(trials)
+    summary["videos"] = clips.finish()
+    summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
+    summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
+    plot_trials(trials, run.path / "trials.png",
+                title=f"CREATIVE-py, {runner.case} case, seed {options.seed}")
+    run.write_json("summary.json", summary)
+    write_html_report(run.path)
+    say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
 
 
 def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any]:
