@@ -185,3 +185,27 @@ def test_its_urdf_and_its_spec_make_the_same_pybullet_body_lying_flat(tmp_path):
             pos, quat = frame_pose(sim, body)
             assert pos[2] == pytest.approx(PADDLE.shaft_width / 2, abs=1e-3)
             assert abs(quat[0]) < 1e-3 and abs(quat[1]) < 1e-3  # still blade-flat
+
+
+@pytest.mark.sim
+def test_in_the_tube_world_a_paddle_is_picked_up_inserted_and_pulls_the_cube_out():
+    """The simulator's handled-tool motion works for the paddle with no code of its own:
+    added to the hook world's catalogue (in memory; the hook case's files and learning
+    are unchanged), it lies on the pedestal, is gripped by its shaft, carried, inserted
+    blade-flat above the cube, lowered and turned upright behind it, and the pull brings
+    the cube out of the tube (the physics decides)."""
+    from creative_py.case import get_case
+    from creative_py.sim import load_world, open_episode, run_trial
+
+    paddle = PaddleSpec("paddle_t1", 0.35, 0.010, 0.050, 0.012)
+    world = load_world(get_case("hook")).with_tool(paddle)
+    with open_episode(world, "standard", 1, paddle.name, seed=0) as ep:
+        facts = ep.observe().facts
+        assert ("object_kind", paddle.name, "paddle") in facts
+        assert ep.run_skill("pick_up").ok
+        held = ep.observe().facts
+        assert ("held", paddle.name) in held
+        assert {f[0] for f in held} >= {"tip_position", "tool_roll"}
+    result = run_trial(world, paddle.name, "standard", 1, pose=(0.03, 0.0, 0.0))
+    assert result.outcome == "success", result.reason
+    assert result.max_tool_force_n > 0
