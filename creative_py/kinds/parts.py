@@ -10,7 +10,7 @@ project and no third-party engine.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Mapping, Union
 
 PLA_DENSITY = 1240.0  # kg/m^3, printed PLA at 100 % infill
@@ -129,8 +129,6 @@ class KindSpec:
 
     def redrawn(self, values: Mapping[str, float]) -> "KindSpec":
         """Return the spec with drawn ``values`` of its :attr:`FACT_FIELDS`."""
-        from dataclasses import replace
-
         return replace(self, **values)  # type: ignore[type-var]
 
     # ---------------------------------------------------------- manufacturing

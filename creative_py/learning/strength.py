@@ -4,9 +4,10 @@ After a created tool's successful trial, the largest contact force the physics p
 it during the tool action (``max_tool_force_n`` of the trial's record, measured by
 :mod:`creative_py.sim.loads`) is turned into a stress and compared with the strength
 of printed PLA (:data:`creative_py.mesh.spec.PLA_STRENGTH`), asking for a safety factor
-of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`:
+of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`. The tool's kind gives the
+load model (``KindSpec.load_model`` of :mod:`creative_py.kinds`); the shipped ones:
 
-- **hook, stick** (a cantilever): the handle is held by the gripper and loaded where the
+- **hook, stick, paddle** (a cantilever): the handle is held by the gripper and loaded where the
   contact acted, so it is a cantilever from the grasp to the contact. Its lever arm L
   is the distance along the handle (x of the tool frame) between the grasp and the
   contact point; the whole force F is taken as acting across the handle (an upper
@@ -19,7 +20,7 @@ of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`:
 A tool that fails is thickened within the task's constraints: the handle width that
 passes, ``w = (6 F L s / strength)^(1/3)`` (s the safety factor, rounded up to 0.1 mm),
 becomes a context fact ``min_handle_width_m(W)`` of the CLP size model (ontology
-``size_constraint/3`` of ``ontology/kinds/hook_like.pl``) and the tool is sized again
+``size_constraint/3`` of the kind's file, ``ontology/kinds/hook_like.pl``, ``paddle.pl``) and the tool is sized again
 (:func:`thicker_dims`); the creator then writes it and tries it in the physics, since the
 physics is the oracle. When the size model cannot give such a width (the tool must
 stay thin to pass under a shelf, or its literals say ``handle_width(T, thin)``), the
@@ -31,7 +32,6 @@ Units: newtons, metres, pascals (the JSON also gives MPa).
 from __future__ import annotations
 
 import json
-import math
 import os
 import tempfile
 from dataclasses import dataclass, replace
@@ -39,8 +39,7 @@ from pathlib import Path
 from typing import Any, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, Term
-from creative_py.kinds.parts import (WIDTH_STEP, cantilever_stress, required_square_width,
-                                     round_up_width)
+from creative_py.kinds.parts import WIDTH_STEP, cantilever_stress, required_square_width
 from creative_py.mesh.spec import MIN_SAFETY_FACTOR, PLA_STRENGTH, ToolSpec
 
 __all__ = ["MAX_THICKENINGS", "VERDICTS", "WIDTH_STEP", "StrengthCheck", "cantilever_stress",

@@ -156,7 +156,7 @@ class ToolKind:
 
 class HandleHeld(ToolKind):
     """Handled tools (hooks, sticks, paddles): a handle along +x from the butt end, maybe
-    a head (prong, plate) at its end.
+    a head (prong, blade) at its end.
 
     The tool starts lying head-flat on a pedestal (``[tool_start]``: the butt end at
     ``position`` on the pedestal's top, ``roll``; the pedestal is ``pedestal_width``
