@@ -24,7 +24,8 @@ import trimesh
 from creative_py.mesh.check import check_tool_files
 from creative_py.mesh.export import write_tool_files
 from creative_py.mesh.solid import mass_properties, tool_mesh
-from creative_py.mesh.spec import BlockSpec, HookSpec
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 
 KINDS = {
     "hook_right": HookSpec("hook_right", 0.3, hook_side="right"),

@@ -374,13 +374,13 @@ class ToolCreator:
 
     def _kind(self, struct: list) -> str:
         """Return the spec kind of a new tool: its class literal among ``struct``."""
-        from creative_py.mesh.spec import SPEC_KINDS
+        from creative_py.kinds import spec_classes
 
         kinds = [s.name for s in struct
-                 if isinstance(s, Compound) and len(s.args) == 1 and s.name in SPEC_KINDS]
+                 if isinstance(s, Compound) and len(s.args) == 1 and s.name in spec_classes()]
         if not kinds:
             raise RuntimeError(f"{self.case}: the new tool's literals name no tool kind "
-                               f"({', '.join(SPEC_KINDS)}): {term_text(struct)}")
+                               f"({', '.join(spec_classes())}): {term_text(struct)}")
         return kinds[0]
 
     def _manufacture(self, k: int, struct: list, dims: Term,
@@ -388,10 +388,10 @@ class ToolCreator:
         """Turn sized dimensions into a spec, write its files, add it to the world.
 
         The tool's kind is its class literal among the structural literals (a spec
-        kind of :data:`creative_py.mesh.spec.SPEC_KINDS`, e.g. ``hook(T)``).
+        class of a tool kind, :func:`creative_py.kinds.spec_classes`, e.g. ``hook(T)``).
         """
         from creative_py.mesh.export import write_tool_files
-        from creative_py.mesh.spec import spec_from_dict
+        from creative_py.kinds import spec_from_dict
 
         values = {}
         for d in dims:

@@ -40,7 +40,8 @@ from typing import Optional, Sequence
 from creative_py.bridge import Compound, Engine, PrologError, Term, Var, fact_term
 from creative_py.mesh.export import ToolFiles, write_tool_files
 from creative_py.mesh.printability import PrintSettings
-from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict
+from creative_py.kinds import spec_classes, spec_from_dict
+from creative_py.mesh.spec import ToolSpec
 
 log = logging.getLogger(__name__)
 
@@ -91,13 +92,14 @@ class SizedTool:
     case : str
         ``"hook"`` or ``"wedge"``.
     kind : str
-        ``"hook"``, ``"stick"`` or ``"block"`` (the spec kind).
+        The new tool's class (``"hook"``, ``"stick"``, ``"block"``: a class of a tool
+        kind, :func:`creative_py.kinds.spec_classes`).
     literals : tuple of str
         The literals it was sized for, Prolog text, with the tool named ``name``.
     dims : dict
         Spec field -> value as the size model chose it (metres; ``hook_angle_deg`` in
         whole degrees; ``hook_side`` and ``shape`` as names).
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The spec built from ``dims`` (mass None: PLA density times volume).
     seconds : float
         Wall time of the sizing call, seconds.
@@ -108,7 +110,7 @@ class SizedTool:
     kind: str
     literals: tuple[str, ...]
     dims: dict
-    spec: HookSpec | BlockSpec
+    spec: ToolSpec
     seconds: float
 
     def catalogue_facts(self) -> list[Term]:
@@ -129,7 +131,7 @@ class ToolVocabulary:
     case : str
         The case id.
     kinds : dict
-        Spec kind (:data:`creative_py.mesh.spec.SPEC_KINDS`, e.g. ``hook``, ``stick``)
+        Tool class (:func:`creative_py.kinds.spec_classes`, e.g. ``hook``, ``stick``)
         -> ``(class_literals, properties)``: the class literal names every tool of that
         kind carries (outermost first, the kind last) and ``property -> values``.
     """
@@ -174,7 +176,6 @@ def tool_vocabulary(engine: Engine, case: str) -> ToolVocabulary:
         ``case`` is not a case of the ontology (the message lists the known ones).
     """
     from creative_py.case import load_cases
-    from creative_py.mesh.spec import SPEC_KINDS
 
     key = (id(engine), case)
     if key not in _VOCABULARIES:
@@ -186,13 +187,13 @@ def tool_vocabulary(engine: Engine, case: str) -> ToolVocabulary:
         kinds = {}
         for cls in classes:
             name, ancestors, props = cls.args
-            if name in SPEC_KINDS:
+            if name in spec_classes():
                 kinds[str(name)] = (tuple(str(a) for a in ancestors) + (str(name),),
                                     {str(p.args[0]): tuple(str(v) for v in p.args[1])
                                      for p in props})
         if not kinds:
-            raise ValueError(f"case {case}: the ontology's tool classes name no spec kind "
-                             f"({', '.join(SPEC_KINDS)})")
+            raise ValueError(f"case {case}: the ontology's tool classes name no class of a "
+                             f"tool kind ({', '.join(spec_classes())})")
         _VOCABULARIES[key] = ToolVocabulary(case, kinds)
     return _VOCABULARIES[key]
 

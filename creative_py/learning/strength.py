@@ -4,9 +4,10 @@ After a created tool's successful trial, the largest contact force the physics p
 it during the tool action (``max_tool_force_n`` of the trial's record, measured by
 :mod:`creative_py.sim.loads`) is turned into a stress and compared with the strength
 of printed PLA (:data:`creative_py.mesh.spec.PLA_STRENGTH`), asking for a safety factor
-of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`:
+of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`. The tool's kind gives the
+load model (``KindSpec.load_model`` of :mod:`creative_py.kinds`); the shipped ones:
 
-- **hook, stick** (a cantilever): the handle is held by the gripper and loaded where the
+- **hook, stick, paddle** (a cantilever): the handle is held by the gripper and loaded where the
   contact acted, so it is a cantilever from the grasp to the contact. Its lever arm L
   is the distance along the handle (x of the tool frame) between the grasp and the
   contact point; the whole force F is taken as acting across the handle (an upper
@@ -19,7 +20,7 @@ of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`:
 A tool that fails is thickened within the task's constraints: the handle width that
 passes, ``w = (6 F L s / strength)^(1/3)`` (s the safety factor, rounded up to 0.1 mm),
 becomes a context fact ``min_handle_width_m(W)`` of the CLP size model (ontology
-``size_constraint/3`` of ``ontology/kinds/hook_like.pl``) and the tool is sized again
+``size_constraint/3`` of the kind's file, ``ontology/kinds/hook_like.pl``, ``paddle.pl``) and the tool is sized again
 (:func:`thicker_dims`); the creator then writes it and tries it in the physics, since the
 physics is the oracle. When the size model cannot give such a width (the tool must
 stay thin to pass under a shelf, or its literals say ``handle_width(T, thin)``), the
@@ -31,7 +32,6 @@ Units: newtons, metres, pascals (the JSON also gives MPa).
 from __future__ import annotations
 
 import json
-import math
 import os
 import tempfile
 from dataclasses import dataclass, replace
@@ -39,12 +39,12 @@ from pathlib import Path
 from typing import Any, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, Term
-from creative_py.mesh.spec import (MIN_SAFETY_FACTOR, PLA_STRENGTH, BlockSpec, HookSpec,
-                                   ToolSpec)
+from creative_py.kinds.parts import WIDTH_STEP, cantilever_stress, required_square_width
+from creative_py.mesh.spec import MIN_SAFETY_FACTOR, PLA_STRENGTH, ToolSpec
 
-WIDTH_STEP = 1e-4
-"""A required handle width is rounded up to this, metres (0.1 mm, the size model's
-resolution)."""
+__all__ = ["MAX_THICKENINGS", "VERDICTS", "WIDTH_STEP", "StrengthCheck", "cantilever_stress",
+           "check_strength", "rejected", "required_square_width", "thicker_dims",
+           "thickening_fact", "write_strength"]
 
 MAX_THICKENINGS = 3
 """How many times a created tool is thickened and tried again before it is rejected."""
@@ -171,27 +171,6 @@ class StrengthCheck:
         }
 
 
-def cantilever_stress(force_n: float, lever_arm_m: float, width_m: float,
-                      height_m: float) -> float:
-    """Return the largest bending stress (Pa) of a rectangular cantilever.
-
-    ``sigma = M c / I`` with ``M = F L``, ``I = b h^3 / 12`` and ``c = h / 2``, h the
-    section's extent in the direction of the load (``height_m``), b across it.
-    """
-    moment = force_n * lever_arm_m
-    inertia = width_m * height_m ** 3 / 12.0
-    return moment * (height_m / 2.0) / inertia
-
-
-def required_square_width(force_n: float, lever_arm_m: float,
-                          strength_pa: float = PLA_STRENGTH,
-                          safety_factor: float = MIN_SAFETY_FACTOR) -> float:
-    """Return the side (m) of the thinnest square section whose cantilever stress under
-    ``force_n`` at ``lever_arm_m`` is ``strength_pa / safety_factor``:
-    ``(6 F L s / strength)^(1/3)``."""
-    return (6.0 * force_n * lever_arm_m * safety_factor / strength_pa) ** (1.0 / 3.0)
-
-
 def check_strength(spec: ToolSpec, load: Optional[dict[str, Any]], *,
                    strength_pa: float = PLA_STRENGTH,
                    safety_factor: float = MIN_SAFETY_FACTOR,
@@ -201,8 +180,8 @@ def check_strength(spec: ToolSpec, load: Optional[dict[str, Any]], *,
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
-        The tool.
+    spec : ToolSpec
+        The tool; its kind gives the load model (:meth:`KindSpec.load_model`).
     load : dict or None
         The trial's ``tool_load`` (:meth:`creative_py.sim.loads.ToolLoad.to_dict`):
         ``max_force_n``, ``point`` and ``grasp_point`` in the tool frame, ``bodies``.
@@ -220,38 +199,13 @@ def check_strength(spec: ToolSpec, load: Optional[dict[str, Any]], *,
     common = dict(tool=spec.name, strength_pa=strength_pa,
                   required_safety_factor=safety_factor, contact_point_m=point,
                   bodies=bodies, trial=trial, thickened_from=thickened_from)
-    if isinstance(spec, HookSpec):
-        w = spec.handle_width
-        grasp = (tuple(load["grasp_point"]) if load and load.get("grasp_point") is not None
-                 else spec.grip_point)
-        arm = abs(point[0] - grasp[0]) if point is not None else 0.0
-        stress = cantilever_stress(force, arm, w, w)
-        inertia = w ** 4 / 12.0
-        check = StrengthCheck(
-            model="cantilever", force_n=force, lever_arm_m=arm, section_m=(w, w),
-            area_m2=None, second_moment_m4=inertia, section_modulus_m3=inertia / (w / 2),
-            moment_nm=force * arm, stress_pa=stress,
-            safety_factor=strength_pa / stress if stress > 0 else None,
-            verdict="", grasp_point_m=grasp,
-            required_handle_width_m=_round_up(required_square_width(
-                force, arm, strength_pa, safety_factor)),
-            note="the handle as a cantilever from the grasp to the contact, the whole "
-                 "force across it", **common)
-    elif isinstance(spec, BlockSpec):
-        if spec.shape == "cylinder":
-            section, area = (spec.length, spec.length), math.pi * spec.length ** 2 / 4
-        else:
-            section, area = (spec.length, spec.width), spec.length * spec.width
-        stress = force / area
-        check = StrengthCheck(
-            model="compression", force_n=force, lever_arm_m=None, section_m=section,
-            area_m2=area, second_moment_m4=None, section_modulus_m3=None, moment_nm=None,
-            stress_pa=stress, safety_factor=strength_pa / stress if stress > 0 else None,
-            verdict="", note="the beam check does not apply to a block (nothing "
-                             "cantilevers); compression over its footprint instead",
-            **common)
-    else:
-        raise TypeError(f"expected a HookSpec or BlockSpec, got {type(spec).__name__}")
+    grasp = (tuple(load["grasp_point"]) if load and load.get("grasp_point") is not None
+             else None)
+    figures = spec.load_model(force, point, grasp, strength_pa=strength_pa,
+                              safety_factor=safety_factor)
+    stress = figures["stress_pa"]
+    check = StrengthCheck(force_n=force, safety_factor=strength_pa / stress if stress > 0
+                          else None, verdict="", **figures, **common)
     if load is None:
         verdict = "unmeasured"
     elif check.safety_factor is None or check.safety_factor >= safety_factor:
@@ -332,7 +286,3 @@ def write_strength(manifest: Path | str, check: StrengthCheck) -> None:
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
         raise
-
-
-def _round_up(width: float) -> float:
-    return round(math.ceil(width / WIDTH_STEP - 1e-9) * WIDTH_STEP, 6)

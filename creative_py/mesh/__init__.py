@@ -3,7 +3,7 @@
 Modules (import them directly; this package imports nothing heavy so that ``spec`` stays
 cheap for the simulator):
 
-- ``spec``: HookSpec / BlockSpec and their parts (pure Python, shared with sim/ontology).
+- ``spec``: the mesh view of a tool kind's spec (:mod:`creative_py.kinds`): parts, volume, mass.
 - ``solid``: manifold3d union of the parts, trimesh mass properties.
 - ``printability``: minimum feature (refused) and build-volume fit (flagged).
 - ``link``, ``urdf``, ``sdf``, ``scad``, ``render``: one writer per format.

@@ -64,7 +64,7 @@ class ToolFiles:
 
     Attributes
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The tool.
     directory : pathlib.Path
         The tool's folder, ``out_dir/<name>``.
@@ -169,7 +169,7 @@ def write_print_files(spec: ToolSpec, solid, folder: Path, settings: PrintSettin
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The tool.
     solid : manifold3d.Manifold
         Its designed solid (:func:`creative_py.mesh.solid.tool_solid`), metres.
@@ -291,7 +291,7 @@ def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The sized tool (metres).
     out_dir : path
         Parent folder (created if missing); the tool gets its own folder inside it.

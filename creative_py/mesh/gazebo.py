@@ -143,7 +143,7 @@ def write_sim_models(spec: ToolSpec, mass: MassProperties, mesh: trimesh.Trimesh
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The tool.
     mass : MassProperties
         Its mass properties (those of its URDF and SDF).

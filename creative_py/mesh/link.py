@@ -16,13 +16,10 @@ import numpy as np
 import trimesh
 
 from creative_py.mesh.solid import MassProperties
-from creative_py.mesh.spec import Box, Cylinder, Hull, HookSpec, ToolSpec
+from creative_py.mesh.spec import Box, Cylinder, Hull, ToolSpec
 from creative_py.mesh.tolerances import NUMERICAL_NOISE_RTOL
 
 Vec3 = tuple[float, float, float]
-
-TOOL_RGBA = {"hook": (0.90, 0.45, 0.10, 1.0), "block": (0.20, 0.45, 0.85, 1.0)}
-"""Display colour by spec kind (red, green, blue, alpha in [0, 1])."""
 
 
 @dataclass(frozen=True)
@@ -88,8 +85,7 @@ def tool_link(spec: ToolSpec, mass: MassProperties) -> ToolLink:
             shapes.append(Shape("mesh", (0.0, 0.0, 0.0), mesh_file=hull_file_name(spec, i)))
         else:
             raise TypeError(f"{spec.name}: unknown part type {type(part).__name__}")
-    rgba = TOOL_RGBA["hook" if isinstance(spec, HookSpec) else "block"]
-    return ToolLink(spec.name, tuple(shapes), mass, rgba)
+    return ToolLink(spec.name, tuple(shapes), mass, tuple(spec.RGBA))
 
 
 def format_number(value: float) -> str:

@@ -20,7 +20,7 @@ import numpy as np
 if TYPE_CHECKING:  # only a type here; importing trimesh costs the command line seconds
     import trimesh
 
-from creative_py.mesh.spec import BlockSpec, HookSpec, ToolSpec
+from creative_py.mesh.spec import ToolSpec
 from creative_py.mesh.tolerances import (BUILD_VOLUME, FIT_MARGIN, FIT_YAW_STEP_DEG,
                                          JOINT_CLEARANCE, MIN_FEATURE, MIN_TIP, MM_PER_M,
                                          NOZZLE_DIAMETER)
@@ -105,17 +105,7 @@ def feature_dimensions(spec: ToolSpec) -> dict[str, float]:
     """Return the spec's printable dimensions by field name, metres (a blunted wedge's
     ``tip_height`` too: it is held to ``PrintSettings.min_tip``, the rest to
     ``min_feature``)."""
-    if isinstance(spec, HookSpec):
-        fields = ["handle_length", "handle_width"]
-        if not spec.is_stick:
-            fields += ["hook_length", "hook_width"]
-    elif isinstance(spec, BlockSpec):
-        fields = ["length", "width", "height"]
-        if spec.shape == "triangular_prism" and spec.tip_height > 0:
-            fields.append("tip_height")
-    else:
-        raise TypeError(f"expected a HookSpec or BlockSpec, got {type(spec).__name__}")
-    return {f: getattr(spec, f) for f in fields}
+    return spec.feature_dimensions()
 
 
 def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings()) -> None:
@@ -126,7 +116,7 @@ def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings())
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The tool.
     settings : PrintSettings
         The printer (``min_feature`` and ``min_tip`` in metres).
@@ -156,12 +146,7 @@ def thin_tip_length(spec: ToolSpec, min_tip: float = MIN_TIP) -> float:
     a prism whose tip is lower, the run over which its height (falling linearly from
     ``height`` at the back to ``tip_height`` at the tip) is below ``min_tip``.
     """
-    if not (isinstance(spec, BlockSpec) and spec.shape == "triangular_prism"):
-        return 0.0
-    if spec.tip_height >= min_tip:
-        return 0.0
-    slope = (spec.height - spec.tip_height) / spec.length
-    return min(spec.length, (min_tip - spec.tip_height) / slope)
+    return spec.thin_tip_length(min_tip)
 
 
 def printability(spec: ToolSpec, mesh: trimesh.Trimesh,
@@ -170,7 +155,7 @@ def printability(spec: ToolSpec, mesh: trimesh.Trimesh,
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The tool (its minimum features are checked first; see :func:`check_min_feature`).
     mesh : trimesh.Trimesh
         The tool's solid in the tool frame, metres.

@@ -14,10 +14,9 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from creative_py.mesh.link import TOOL_RGBA
 from creative_py.mesh.printability import Printability, feature_dimensions
 from creative_py.mesh.solid import MassProperties
-from creative_py.mesh.spec import HookSpec, ToolSpec
+from creative_py.mesh.spec import ToolSpec
 from creative_py.mesh.tolerances import MM_PER_M
 
 LIGHT_DIRECTION = np.array([0.4, -0.5, 0.75]) / np.linalg.norm([0.4, -0.5, 0.75])
@@ -75,9 +74,7 @@ def _drawing(ax, mesh_mm: trimesh.Trimesh, axes: tuple[int, int], names: tuple[s
 
 def _caption(spec: ToolSpec, mass: MassProperties, verdict: Printability) -> str:
     dims = ", ".join(f"{k} {v * MM_PER_M:.1f}" for k, v in feature_dimensions(spec).items())
-    extra = ""
-    if isinstance(spec, HookSpec) and not spec.is_stick:
-        extra = f", prong {spec.hook_side} at {spec.hook_angle_deg:g} deg"
+    extra = spec.caption_extra()
     return (f"{dims} mm{extra}\nmass {mass.mass * 1000:.1f} g, volume "
             f"{mass.volume * 1e6:.2f} cm^3; {verdict.summary()}")
 
@@ -88,8 +85,9 @@ def render_png(spec: ToolSpec, mesh: trimesh.Trimesh, mass: MassProperties,
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
-        The tool (its dimensions are listed in the caption).
+    spec : ToolSpec
+        The tool (its dimensions are listed in the caption; its kind's colour, drawing
+        plane and title).
     mesh : trimesh.Trimesh
         The tool's solid, tool frame, metres (drawn in millimetres).
     mass : MassProperties
@@ -108,15 +106,15 @@ def render_png(spec: ToolSpec, mesh: trimesh.Trimesh, mass: MassProperties,
     """
     mesh_mm = mesh.copy()
     mesh_mm.apply_scale(MM_PER_M)
-    rgb = np.asarray(TOOL_RGBA["hook" if isinstance(spec, HookSpec) else "block"][:3])
+    rgb = np.asarray(spec.RGBA[:3])
     fig = Figure(figsize=(10, 4.6))
     FigureCanvasAgg(fig)
     _shaded_view(fig.add_subplot(1, 2, 1, projection="3d"), mesh_mm, rgb)
-    top = isinstance(spec, HookSpec)
+    top = spec.DRAWING_PLANE == "top"
     ax2 = fig.add_subplot(1, 2, 2)
     _drawing(ax2, mesh_mm, (0, 1) if top else (0, 2), ("x", "y") if top else ("x", "z"), rgb)
     ax2.set_title("top view" if top else "side view", fontsize=9)
-    fig.suptitle(f"{spec.name} ({spec.kind if top else spec.shape})", fontsize=11)
+    fig.suptitle(f"{spec.name} ({spec.title()})", fontsize=11)
     fig.text(0.5, 0.015, _caption(spec, mass, verdict), ha="center", va="bottom", fontsize=8,
              wrap=True)
     fig.subplots_adjust(left=0.02, right=0.98, top=0.9, bottom=0.2, wspace=0.15)

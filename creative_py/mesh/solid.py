@@ -105,7 +105,7 @@ def mass_properties(spec: ToolSpec, mesh: trimesh.Trimesh | None = None) -> Mass
 
     Parameters
     ----------
-    spec : HookSpec or BlockSpec
+    spec : ToolSpec
         The tool; its mass is ``spec_mass(spec)``.
     mesh : trimesh.Trimesh, optional
         The tool's mesh in metres (``tool_mesh(spec)``); built when not given.

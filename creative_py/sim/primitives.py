@@ -55,7 +55,7 @@ import pybullet as pb
 from creative_py.sim.bodies import frame_pose, set_frame_pose
 from creative_py.sim.core import Pose
 from creative_py.sim.types import SkillOutcome
-from creative_py.sim.tools import (HookLike, grasp_slip, prong_centre, prong_reach,
+from creative_py.sim.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
                                    roll_of, tool_orientation)
 
 
@@ -150,8 +150,8 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     top), inserts it along +x until the prong is at X, raises the handle if needed so
     that the lowered prong clears the tube's floor, and turns the tool to Roll.
     """
-    if not isinstance(ep.kind, HookLike):
-        raise TypeError(f"insert_at_pose moves hook-like tools, not {ep.spec.kind}")
+    if not isinstance(ep.kind, HandleHeld):
+        raise TypeError(f"insert_at_pose moves handled tools, not {ep.spec.kind}")
     _, x_goal, y_goal, roll = target
     top = ep.perceived_top(ep.target_name)
     if top is None:
@@ -159,7 +159,7 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     tb = ep.context_body
     spec, kind = ep.spec, ep.kind
     travel = opts["travel_z"]
-    if abs(roll) >= math.pi / 4 or spec.is_stick:
+    if abs(roll) >= math.pi / 4 or not spec.has_head:
         flat = roll
     else:
         room_left = tb.axis_y + tb.inner_width / 2 - y_goal
@@ -171,7 +171,7 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     q_flat = tool_orientation(spec, flat)
     tip_off = pb.multiplyTransforms((0, 0, 0), q_flat, tip_local, (0, 0, 0, 1))[0]
     goal_origin_x = x_goal - tip_off[0]
-    far_x = max(spec.handle_length, tip_local[0] + spec.hook_width)
+    far_x = max(spec.handle_length, tip_local[0] + spec.head_width)
     pre_origin_x = tb.mouth_x - 0.03 - far_x
     carried = kind.attitude(ep)
     steps = [((pre_origin_x, y_goal, travel), carried, opts["free_speed"]),
@@ -455,10 +455,10 @@ def _robot_in_sweep(ep: Any, door) -> str:
 
 # ------------------------------------------------------------------------ registry
 def _kind_grasp_options() -> dict[str, Any]:
-    from creative_py.sim.tools import TOOL_KINDS
+    from creative_py.sim.tools import HANDLINGS
 
     out: dict[str, Any] = {}
-    for kind in TOOL_KINDS.values():
+    for kind in HANDLINGS.values():
         out.update(kind.GRASP_OPTIONS)
     return out
 

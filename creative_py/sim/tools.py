@@ -1,30 +1,33 @@
-"""Tool kinds: how a kind of catalogued object lies, is grasped, moved and sensed.
+"""How the simulator holds a tool: the handlings, chosen by a tool kind's ``HANDLING``.
 
-A catalogued object's spec (:mod:`creative_py.mesh.spec`) has a ``kind``; the kinds
-registered in :data:`TOOL_KINDS` each bring their own geometry helpers, where the tool
-starts (the ``[tool_start]`` table of ``scene.toml``), the grasp, how the held tool is
-moved and what the arm's proprioception says about it. :func:`catalogue_facts` is the
-one place that writes the catalogue facts of an object.
+A catalogued object's spec is its tool kind's (:mod:`creative_py.kinds`: one plug-in
+module per kind); the spec says, as data, how it is held (``HANDLING``), and the
+handlings registered in :data:`HANDLINGS` bring the motion: where the tool starts (the
+``[tool_start]`` table of ``scene.toml``), the grasp, how the held tool is moved and
+what the arm's proprioception says about it. :func:`catalogue_facts` is the one place
+that gives the catalogue facts of an object (the spec's own).
 
-A kind's methods take the running :class:`~creative_py.sim.episode.Episode` as
+A handling's methods take the running :class:`~creative_py.sim.episode.Episode` as
 ``ep`` (typed ``Any``: the episode imports this module).
 
-Hook-like tools (``HookSpec``: hooks and sticks) are held by the butt end with the
-gripper along the handle (+x); their *roll* is the rotation about the handle axis
-(0 = prong down, +pi/2 = prong towards +y, measured from the prong whatever side of
-the handle it is on). Blocks (``BlockSpec``) are gripped from above, gripper down.
+A *handled* tool (``HANDLING = "handle"``: hooks, sticks, paddles) is held by the butt
+end of a handle along +x, the gripper along the handle; its *roll* is the rotation about
+the handle axis, 0 with the side the spec calls ``roll_side`` (a hook's prong) down,
++pi/2 with it towards +y. The spec gives ``grip_offset``, ``grip_point``,
+``handle_length``, ``handle_width``, ``roll_side``, ``has_head``, ``head_width``,
+``working_point()`` and ``reach()``. A *top-gripped* tool (``"top"``: blocks) is gripped
+from above, gripper down; its spec gives ``height`` and ``centre()``.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import replace
 from typing import Any, Callable, Mapping
 
 import numpy as np
 import pybullet as pb
 
-from creative_py.mesh.spec import BlockSpec, Box, HookSpec
+from creative_py.mesh.spec import Box
 from creative_py.sim.baxter import gripper_down, gripper_forward, quat_angle
 from creative_py.sim.bodies import Surface, frame_pose, load_tool_urdf, spawn_parts, spawn_spec
 from creative_py.sim.core import Pose
@@ -34,30 +37,25 @@ from creative_py.sim.types import Fact, SkillOutcome
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
 
 
-# --------------------------------------------------------------------- hook geometry
-def prong_centre(spec: HookSpec) -> tuple[float, float, float]:
-    """Return the prong box's centre (a stick: its tip), tool frame, metres."""
-    if spec.is_stick:
-        return (spec.handle_length, 0.0, 0.0)
-    prong = spec.parts()[1]
-    assert isinstance(prong, Box)
-    return prong.center
+# ---------------------------------------------------------- handled-tool geometry
+def prong_centre(spec: Any) -> tuple[float, float, float]:
+    """Return the handled tool's working point (a hook's prong centre, a stick's tip),
+    tool frame, metres."""
+    return spec.working_point()
 
 
-def prong_reach(spec: HookSpec) -> float:
-    """Return how far the prong reaches from the handle axis, metres (a stick: its radius)."""
-    if spec.is_stick:
-        return spec.handle_width / 2
-    return spec.handle_width / 2 + spec.hook_length * math.sin(math.radians(spec.hook_angle_deg))
+def prong_reach(spec: Any) -> float:
+    """Return how far the handled tool reaches from the handle axis, metres."""
+    return spec.reach()
 
 
-def tool_orientation(spec: HookSpec, roll: float) -> tuple[float, float, float, float]:
+def tool_orientation(spec: Any, roll: float) -> tuple[float, float, float, float]:
     """Return the world orientation of the tool frame, handle along +x, at ``roll`` (rad)."""
-    side = -1.0 if spec.hook_side == "right" else 1.0
+    side = spec.roll_side
     return tuple(pb.getQuaternionFromEuler((roll - side * math.pi / 2, 0.0, 0.0)))
 
 
-def tool_in_gripper(spec: HookSpec) -> Pose:
+def tool_in_gripper(spec: Any) -> Pose:
     """Return the tool frame's pose in the ``right_gripper`` frame (the known grasp)."""
     g_pos, g_quat = (0.0, 0.0, 0.0), gripper_forward(0.0)
     t_quat = tool_orientation(spec, 0.0)
@@ -68,9 +66,9 @@ def tool_in_gripper(spec: HookSpec) -> Pose:
     return tuple(offset), tuple(rel)
 
 
-def roll_of(spec: HookSpec, quat) -> float:
+def roll_of(spec: Any, quat) -> float:
     """Return the tool roll (rad, 0 = prong down) of a tool-frame orientation."""
-    side = -1.0 if spec.hook_side == "right" else 1.0
+    side = spec.roll_side
     m = np.asarray(pb.getMatrixFromQuaternion(quat)).reshape(3, 3)
     d = side * m[:, 1]
     return math.atan2(float(d[1]), float(-d[2]))
@@ -89,34 +87,30 @@ def grasp_slip(ep: Any) -> tuple[float, float]:
     return quat_angle(want[1], have[1]), math.dist(want[0], have[0])
 
 
-# ------------------------------------------------------------------------- the kinds
+# ---------------------------------------------------------------------- handlings
 class ToolKind:
-    """What the simulator knows about one kind of tool (subclass per kind).
+    """How the simulator holds one family of tools (subclass per handling).
 
-    ``START_FIELDS`` lists the fields of ``[tool_start]`` the kind reads (``name ->
+    ``START_FIELDS`` lists the fields of ``[tool_start]`` the handling reads (``name ->
     default``, None for required); ``GRASP_OPTIONS`` the options of the ``grasp``
-    primitive (``name -> default``).
+    primitive (``name -> default``). What a tool is (its catalogue facts, sizes, the
+    fields a randomised world redraws) its spec says (:class:`creative_py.kinds.parts.KindSpec`).
     """
 
     START_FIELDS: dict[str, Any] = {}
     GRASP_OPTIONS: dict[str, Any] = {}
 
-    FACT_FIELDS: dict[str, str] = {}
-    """The spec field behind each numeric catalogue fact (``handle_length_m`` ->
-    ``handle_length``): what a randomised world redraws."""
-
     def redrawn(self, spec: Any, values: Mapping[str, float]) -> Any:
-        """Return ``spec`` with drawn ``values`` of its :attr:`FACT_FIELDS` (a kind whose
-        fields are tied together unties nothing: it overrides this)."""
-        return replace(spec, **values)
+        """Return ``spec`` with drawn ``values`` of its ``FACT_FIELDS``."""
+        return spec.redrawn(values)
 
     def catalogue_facts(self, spec: Any) -> list[Fact]:
         """Return the catalogue facts of ``spec`` (metres, degrees)."""
-        raise NotImplementedError
+        return spec.catalogue_facts()
 
     def quantities(self, spec: Any) -> dict[str, float]:
         """Return the tool's named sizes that scene expressions may use (``tool.<q>``)."""
-        return {}
+        return spec.quantities()
 
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         """Create the tool where it starts (and any support it needs); return its body."""
@@ -160,48 +154,25 @@ class ToolKind:
         return (0.0, 0.0, 0.0)
 
 
-class HookLike(ToolKind):
-    """Hooks and sticks: a handle along +x from the butt end, maybe a prong at its end.
+class HandleHeld(ToolKind):
+    """Handled tools (hooks, sticks, paddles): a handle along +x from the butt end, maybe
+    a head (prong, blade) at its end.
 
-    The tool starts lying prong-flat on a pedestal (``[tool_start]``: the butt end at
+    The tool starts lying head-flat on a pedestal (``[tool_start]``: the butt end at
     ``position`` on the pedestal's top, ``roll``; the pedestal is ``pedestal_width``
-    wide, stands on ``pedestal_base_z`` and runs under the handle).
+    wide, stands on ``pedestal_base_z`` and runs under the bare handle).
     """
 
     START_FIELDS = {"position": None, "roll": None, "pedestal_width": None,
                     "pedestal_base_z": None, "pedestal_friction": 0.8,
                     "colour": (0.95, 0.8, 0.1, 1.0)}
     GRASP_OPTIONS = {"approach": 0.10, "free_speed": 0.35, "speed": 0.20, "lift_to": None}
-    FACT_FIELDS = {"handle_length_m": "handle_length", "handle_width_m": "handle_width",
-                   "hook_length_m": "hook_length", "hook_width_m": "hook_width",
-                   "hook_angle_deg": "hook_angle_deg"}
-
-    def catalogue_facts(self, spec: HookSpec) -> list[Fact]:
-        """Return kind, handle and prong facts (m, deg); a stick has no prong angle."""
-        n = spec.name
-        facts: list[Fact] = [("object_kind", n, "stick" if spec.is_stick else "hook"),
-                             ("handle_length_m", n, spec.handle_length),
-                             ("handle_width_m", n, spec.handle_width)]
-        if spec.is_stick:
-            facts += [("hook_length_m", n, 0.0), ("hook_width_m", n, 0.0),
-                      ("hook_side_is", n, "none")]
-        else:
-            facts += [("hook_length_m", n, spec.hook_length),
-                      ("hook_width_m", n, spec.hook_width),
-                      ("hook_side_is", n, spec.hook_side),
-                      ("hook_angle_deg", n, spec.hook_angle_deg)]
-        return facts
-
-    def quantities(self, spec: HookSpec) -> dict[str, float]:
-        """``reach`` (prong reach from the handle axis), ``length``, ``width`` (m)."""
-        return {"reach": prong_reach(spec), "length": spec.handle_length,
-                "width": spec.handle_width}
 
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         spec, sim = ep.spec, ep.sim
         butt_x, axis_y, top_z = start["position"]
         x0 = butt_x + spec.grip_offset + 0.06
-        x1 = butt_x + spec.handle_length - (0.0 if spec.is_stick else spec.hook_width) - 0.01
+        x1 = butt_x + spec.handle_length - spec.head_width - 0.01
         if x1 - x0 < 0.03:
             x0 = x1 - 0.03
         base = start["pedestal_base_z"]
@@ -215,7 +186,7 @@ class HookLike(ToolKind):
             return load_tool_urdf(sim, ep.item.urdf, lying, ep.item.friction)
         return spawn_spec(sim, spec, lying, Surface(ep.item.friction, tuple(start["colour"])))
 
-    def initial_grasp(self, spec: HookSpec) -> Pose:
+    def initial_grasp(self, spec: Any) -> Pose:
         return tool_in_gripper(spec)
 
     def attitude(self, ep: Any) -> float:
@@ -268,7 +239,8 @@ class HookLike(ToolKind):
         return self.move(ep, (grip[0], grip[1], opts["lift_to"]), roll, opts["free_speed"])
 
     def working_point(self, ep: Any) -> tuple[float, float, float]:
-        """Return the world position of the prong's centre (a stick: its tip)."""
+        """Return the world position of the spec's working point (a hook's prong centre,
+        a stick's tip)."""
         pos, quat = ep.tool_pose()
         return tuple(pb.multiplyTransforms(pos, quat, prong_centre(ep.spec), IDENTITY)[0])
 
@@ -279,7 +251,7 @@ class HookLike(ToolKind):
                 ("tool_roll", n, self.attitude(ep))]
 
 
-class BlockKind(ToolKind):
+class TopGripped(ToolKind):
     """Blocks (prisms, boxes, cylinders): lying on their base, gripped from above.
 
     ``[tool_start]``: the block frame's (x, y) and the support's top z in ``position``,
@@ -288,26 +260,6 @@ class BlockKind(ToolKind):
 
     START_FIELDS = {"position": None, "yaw": 0.0, "colours": {}}
     GRASP_OPTIONS = {"carry_z": None, "clearance": 0.004, "gripper_yaw": 0.0}
-    FACT_FIELDS = {"block_length_m": "length", "block_width_m": "width",
-                   "block_height_m": "height"}
-
-    def redrawn(self, spec: BlockSpec, values: Mapping[str, float]) -> BlockSpec:
-        """A cylinder's width is its length (its diameter): the drawn length sets both."""
-        values = dict(values)
-        if spec.shape == "cylinder" and "length" in values:
-            values["width"] = values["length"]
-        return replace(spec, **values)
-
-    def catalogue_facts(self, spec: BlockSpec) -> list[Fact]:
-        """Return kind, shape, length, width and height facts (m)."""
-        n = spec.name
-        return [("object_kind", n, "block"), ("block_shape", n, spec.shape),
-                ("block_length_m", n, spec.length), ("block_width_m", n, spec.width),
-                ("block_height_m", n, spec.height)]
-
-    def quantities(self, spec: BlockSpec) -> dict[str, float]:
-        """``length``, ``width``, ``height`` (m)."""
-        return {"length": spec.length, "width": spec.width, "height": spec.height}
 
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         x, y, z = start["position"]
@@ -351,27 +303,27 @@ class BlockKind(ToolKind):
         ep.held = True
         return self.move(ep, (x, y, carry_z), yaw, None)
 
-    def height(self, spec: BlockSpec) -> float:
+    def height(self, spec: Any) -> float:
         return spec.height
 
-    def centre(self, spec: BlockSpec) -> tuple[float, float, float]:
-        """Return the centre of the block's box, (0, 0, height / 2) in its frame."""
-        return (0.0, 0.0, spec.height / 2)
+    def centre(self, spec: Any) -> tuple[float, float, float]:
+        """Return the spec's centre (a block's box: (0, 0, height / 2)) in its frame."""
+        return spec.centre()
 
 
-TOOL_KINDS: dict[str, ToolKind] = {"hook": HookLike(), "block": BlockKind()}
-"""Tool kinds by the ``kind`` of their spec (a stick is a hook without a prong)."""
+HANDLINGS: dict[str, ToolKind] = {"handle": HandleHeld(), "top": TopGripped()}
+"""The handlings by the ``HANDLING`` name a tool kind's spec gives."""
 
 
 def tool_kind(spec: Any) -> ToolKind:
-    """Return the kind of ``spec``; raise naming the registered kinds."""
-    kind = getattr(spec, "kind", None)
-    if kind not in TOOL_KINDS:
-        raise TypeError(f"no tool kind {kind!r} in the simulator; kinds: "
-                        f"{', '.join(TOOL_KINDS)}")
-    return TOOL_KINDS[kind]
+    """Return the handling of ``spec``; raise naming the registered handlings."""
+    handling = getattr(spec, "HANDLING", None)
+    if handling not in HANDLINGS:
+        raise TypeError(f"{getattr(spec, 'name', spec)!r}: no handling {handling!r} in the "
+                        f"simulator; handlings: {', '.join(HANDLINGS)}")
+    return HANDLINGS[handling]
 
 
 def catalogue_facts(spec: Any) -> list[Fact]:
     """Return the catalogue facts of any catalogued object, by its kind."""
-    return tool_kind(spec).catalogue_facts(spec)
+    return spec.catalogue_facts()

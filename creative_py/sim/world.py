@@ -149,7 +149,7 @@ class World:
 
     @property
     def catalogue(self) -> dict[str, Any]:
-        """Return the candidate tools, ``name -> spec`` (HookSpec, BlockSpec ...)."""
+        """Return the candidate tools, ``name -> spec`` (a tool kind's spec)."""
         return {n: item.spec for n, item in self.items.items()}
 
     @property
@@ -250,7 +250,7 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
     from creative_py.sim.camera import cameras_from_tables
     from creative_py.sim.recorder import VideoSpec
     from creative_py.sim.scene import read_bodies
-    from creative_py.sim.tools import TOOL_KINDS
+    from creative_py.sim.tools import HANDLINGS
 
     f = Fields(load_toml(path), path)
     settle = f.float("settle_time", minimum=0.0)
@@ -264,7 +264,7 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
     tf = f.table("tool_start")
     tool_start: dict[str, Any] = {}
     for kind in sorted(kinds):
-        for name, default in TOOL_KINDS[kind].START_FIELDS.items():
+        for name, default in HANDLINGS[kind].START_FIELDS.items():
             if name not in tool_start:
                 tool_start[name] = tf.raw(name) if default is None else tf.raw(name, default)
     tf.done()
@@ -293,7 +293,7 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
     from creative_py.mesh.spec import spec_from_dict
-    from creative_py.sim.tools import TOOL_KINDS
+    from creative_py.sim.tools import HANDLINGS
 
     f = Fields(load_toml(path), path)
     items: dict[str, CatalogueItem] = {}
@@ -309,8 +309,9 @@ def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
             spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
         except ValueError as exc:
             raise WorldFileError(str(exc)) from None
-        if spec.kind not in TOOL_KINDS:
-            raise tf.error("kind", f"the simulator has no tool kind {spec.kind!r}")
+        if spec.HANDLING not in HANDLINGS:
+            raise tf.error("kind", f"the simulator has no handling {spec.HANDLING!r} "
+                                   f"for a {spec.kind}")
         if spec.name in items:
             raise tf.error("name", f"object name {spec.name!r} is used twice")
         items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside)
@@ -389,7 +390,7 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
         af.done()
     pf.done()
     items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
-    scene = _read_scene(world_file(d, "scene.toml"), {i.spec.kind for i in items.values()})
+    scene = _read_scene(world_file(d, "scene.toml"), {i.spec.HANDLING for i in items.values()})
     locations, oracle = _read_tasks(world_file(d, "tasks.toml"))
     world = World(manifest, d, {"rest": rest, "arm": arm}, scene, items, locations, oracle,
                   _read_skills(manifest))
@@ -479,13 +480,11 @@ def _inside(x: float, rng_: Range) -> bool:
 def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, ValueRange]]) -> None:
     """Raise ValueError naming case.toml's table when a value table of
     ``[randomise.catalogue.<field>]`` names a value no catalogued object has."""
-    from creative_py.sim.tools import tool_kind
-
     seen: dict[str, set[str]] = {}
     for name, facts in ranges.items():
         if name not in world.items:
             continue
-        fields = tool_kind(world.items[name].spec).FACT_FIELDS
+        fields = world.items[name].spec.FACT_FIELDS
         for fact, (_lo, _hi, _bounds, value) in facts.items():
             if fact in fields:
                 seen.setdefault(fields[fact], set()).add(value)
@@ -549,7 +548,7 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueR
             continue
         spec = world.items[name].spec
         kind = tool_kind(spec)
-        fields = kind.FACT_FIELDS
+        fields = spec.FACT_FIELDS
         todo = []
         for fact, (lo, hi, bounds, value) in sorted(ranges.get(name, {}).items()):
             if fact not in fields:

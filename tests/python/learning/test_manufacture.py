@@ -19,7 +19,9 @@ from creative_py.learning.manufacture import (InfeasibleSpec, default_context, m
                                               tool_vocabulary)
 from creative_py.mesh.check import check_print_files, check_tool_files
 from creative_py.mesh.printability import PrintSettings
-from creative_py.mesh.spec import PLA_DENSITY, BlockSpec, HookSpec
+from creative_py.mesh.spec import PLA_DENSITY
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.world import WorldFileError
 
 

@@ -17,8 +17,10 @@ from creative_py.learning.strength import (cantilever_stress, check_strength,
                                            rejected, required_square_width, thicker_dims,
                                            thickening_fact, write_strength)
 from creative_py.mesh.export import read_tool_files, write_tool_files
-from creative_py.mesh.spec import (MIN_SAFETY_FACTOR, PLA_STRENGTH, BlockSpec, HookSpec,
-                                   spec_from_dict)
+from creative_py.mesh.spec import MIN_SAFETY_FACTOR, PLA_STRENGTH
+from creative_py.kinds import spec_from_dict
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 
 # The created hook's literals in the hook case (summary.json of a run, seed 0).
 CREATED_HOOK = "handle_length=long,handle_width=thin,hook_angle=right"

@@ -19,7 +19,7 @@ from creative_py.bridge import Engine, fact_term
 from creative_py.case import load_cases
 from creative_py.learning.run import check_catalogue, draw_catalogue_world
 from creative_py.sim import load_world, tool_rests
-from creative_py.sim.tools import catalogue_facts, tool_kind
+from creative_py.sim.tools import catalogue_facts
 from creative_py.sim.world import apply_drawn
 
 CASES = sorted(load_cases())
@@ -82,7 +82,7 @@ def test_every_drawn_number_lies_inside_its_own_range(engine, case, seed):
     changed = 0
     for name, spec in new.catalogue.items():
         old = world.catalogue[name]
-        fields = tool_kind(spec).FACT_FIELDS
+        fields = spec.FACT_FIELDS
         for fact, fld in fields.items():
             if (name, fact) not in ranges:
                 assert getattr(spec, fld) == getattr(old, fld)

@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 
 from creative_py.mesh.export import write_tool_files
-from creative_py.mesh.spec import BlockSpec, HookSpec
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 
 SPECS = {
     "hook_right": HookSpec("hook_right", 0.3, hook_side="right"),

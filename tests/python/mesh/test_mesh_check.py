@@ -10,7 +10,8 @@ from hypothesis import strategies as st
 
 from creative_py.mesh.check import check_tool_files
 from creative_py.mesh.export import write_tool_files
-from creative_py.mesh.spec import BlockSpec, HookSpec
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.mesh.tolerances import SCAD_VOLUME_RTOL, STL_VOLUME_RTOL
 
 needs_openscad = pytest.mark.skipif(shutil.which("openscad") is None,

@@ -13,7 +13,9 @@ import trimesh
 
 from creative_py.mesh import export
 from creative_py.mesh.export import read_tool_files, write_tool_files
-from creative_py.mesh.spec import BlockSpec, Box, Cylinder, HookSpec, spec_mass
+from creative_py.mesh.spec import Box, Cylinder, spec_mass
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 
 
 def test_every_file_is_written_in_its_own_folder(written, kind):

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from creative_py.mesh.export import write_tool_files
-from creative_py.mesh.spec import HookSpec
+from creative_py.kinds.hook_like import HookSpec
 
 
 def _box(center, size, density):

@@ -19,7 +19,8 @@ from creative_py.mesh.export import write_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.mesh.slicer import SliceError, parse_duration, read_gcode, slice_piece
 from creative_py.mesh.solid import tool_solid
-from creative_py.mesh.spec import BlockSpec, HookSpec
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.mesh.split import SplitError, split_tool
 from creative_py.mesh.tolerances import MM_PER_M, SPLIT_VOLUME_RTOL
 

@@ -7,7 +7,8 @@ import pytest
 from creative_py.mesh.printability import (PrintSettings, check_min_feature, feature_dimensions,
                                            printability, thin_tip_length)
 from creative_py.mesh.solid import tool_mesh
-from creative_py.mesh.spec import BlockSpec, HookSpec
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 
 
 @pytest.mark.parametrize("spec, field", [

@@ -7,7 +7,9 @@ import pybullet
 import pybullet_data
 import pytest
 
-from creative_py.mesh.spec import HookSpec, spec_mass
+from creative_py.mesh.spec import spec_mass
+
+from creative_py.kinds.hook_like import HookSpec
 
 pytestmark = pytest.mark.sim
 

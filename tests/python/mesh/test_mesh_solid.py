@@ -10,7 +10,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from creative_py.mesh.solid import mass_properties, tool_mesh
-from creative_py.mesh.spec import BlockSpec, HookSpec, spec_mass, spec_volume
+from creative_py.mesh.spec import spec_mass, spec_volume
+from creative_py.kinds.block import BlockSpec
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.mesh.tolerances import STL_VOLUME_RTOL
 
 

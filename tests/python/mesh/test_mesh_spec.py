@@ -6,7 +6,13 @@ import math
 
 import pytest
 
-from creative_py.mesh.spec import BlockSpec, HookSpec, spec_from_dict, spec_volume
+from creative_py.mesh.spec import spec_volume
+
+from creative_py.kinds import spec_from_dict
+
+from creative_py.kinds.block import BlockSpec
+
+from creative_py.kinds.hook_like import HookSpec
 
 
 @pytest.mark.parametrize("mass", [0, -0.1, math.nan, "heavy"])

@@ -9,7 +9,9 @@ from __future__ import annotations
 import pybullet as p
 import pytest
 
-from creative_py.mesh.spec import BlockSpec, Box, Cylinder, Hull
+from creative_py.mesh.spec import Box, Cylinder, Hull
+
+from creative_py.kinds.block import BlockSpec
 from creative_py.sim.camera import CameraSpec
 
 TABLE_TOP = -0.20

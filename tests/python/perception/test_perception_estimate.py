@@ -7,7 +7,7 @@ import math
 import numpy as np
 import pytest
 
-from creative_py.mesh.spec import BlockSpec
+from creative_py.kinds.block import BlockSpec
 from creative_py.perception import EstimatorConfig, NoiseModel, estimate_objects
 from creative_py.perception.segment import body_mask
 from creative_py.perception.unproject import unproject_mask

@@ -5,7 +5,9 @@ import math
 import pybullet as pb
 import pytest
 
-from creative_py.mesh.spec import Box, HookSpec
+from creative_py.mesh.spec import Box
+
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.sim.baxter import Baxter, baxter_urdf
 from creative_py.sim.bodies import Surface, frame_pose, spawn_parts, spawn_spec
 from creative_py.sim.core import Sim

@@ -8,7 +8,7 @@ import math
 
 import pytest
 
-from creative_py.mesh.spec import HookSpec
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.sim import TRIAL_OUTCOMES, open_episode, run_trial
 from creative_py.sim.tools import catalogue_facts, prong_centre, roll_of, tool_orientation
 
@@ -206,7 +206,7 @@ def test_a_tool_that_falls_off_the_table_makes_the_trial_invalid():
     # A 5 m handle (outside every range of the ontology, which a run refuses before
     # any physics) tips off its stand and the table: the skill cannot pick it up.
     from creative_py.case import get_case
-    from creative_py.mesh.spec import HookSpec
+    from creative_py.kinds.hook_like import HookSpec
     from creative_py.sim import load_world, run_trial
 
     world = load_world(get_case("hook")).with_tool(HookSpec("pole", handle_length=5.0))

@@ -12,7 +12,7 @@ from functools import lru_cache
 import pytest
 
 from creative_py.case import get_case
-from creative_py.mesh.spec import HookSpec
+from creative_py.kinds.hook_like import HookSpec
 from creative_py.sim import load_world, run_trial
 
 from _poses import poses
