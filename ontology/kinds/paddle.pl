@@ -40,6 +40,13 @@ qualitative_range(blade_width, wide,   0.060, 0.120, closed_closed).
 qualitative_range(blade_length, short, 0.010, 0.030, closed_open).
 qualitative_range(blade_length, long,  0.030, 0.060, closed_closed).
 
+%   qualitative_value(+Property, +X, ?Value): the number X lies in Value's range above.
+%   The paddle reads its own ranges: ranges.pl's qualitative_value/3 sees only the
+%   shared ones (this file loads into its own module, kind_paddle).
+qualitative_value(Property, X, Value) :-
+    qualitative_range(Property, Value, Low, High, Bounds),
+    range_contains(Bounds, Low, High, X).
+
 primitive_predicate(object_kind/2).
 primitive_predicate(shaft_length_m/2).
 primitive_predicate(shaft_width_m/2).

@@ -36,7 +36,7 @@ def worlds(tmp_path) -> Path:
 def test_a_broken_manifest_leaves_every_other_case_loadable(worlds):
     assert get_case("hook", worlds).id == "hook"
     assert get_case("wedge", worlds).trial_budget == 9
-    assert sorted(load_cases(worlds, strict=False)) == ["hook", "rake", "wedge"]
+    assert sorted(load_cases(worlds, strict=False)) == sorted(load_cases())
 
 
 def test_the_broken_manifests_are_listed_with_their_error_line(worlds):
@@ -70,7 +70,7 @@ def test_creative_cases_lists_a_broken_case_and_the_others(tmp_path):
                           capture_output=True, text=True, timeout=60, env=env, cwd=tmp_path)
     assert proc.returncode == 0, proc.stderr
     listing = json.loads(proc.stdout)
-    assert sorted(c["id"] for c in listing if c["id"]) == ["hook", "rake", "wedge"]
+    assert sorted(c["id"] for c in listing if c["id"]) == sorted(load_cases())
     [broken] = [c for c in listing if c["id"] is None]
     assert broken["manifest"].endswith("broken_one/case.toml")
     assert "not valid TOML" in broken["broken"]

@@ -80,7 +80,7 @@ def test_the_catalogue_facts_are_the_ontology_s_primitive_predicates():
 def test_the_size_model_sizes_a_paddle_for_its_literals_and_the_task(engine):
     literals = [Compound("tool", ("p",)), Compound("paddle", ("p",)),
                 Compound("shaft_length", ("p", "long")), Compound("blade_width", ("p", "wide"))]
-    reply = engine.solve_size("paddle", literals, [Compound("max_tool_length", (0.5,)),
+    reply = engine.solve_size("paddle_tube", "paddle", literals, [Compound("max_tool_length", (0.5,)),
                                                    Compound("min_wall_m", (0.0008,))])
     assert reply.name == "dims"
     dims = {eq.args[0]: eq.args[1] for eq in reply.args[0]}
@@ -88,7 +88,7 @@ def test_the_size_model_sizes_a_paddle_for_its_literals_and_the_task(engine):
     assert 0.06 <= dims["blade_width"] <= 0.12
     spec = spec_from_dict({"kind": "paddle", "name": "paddle_new1", "mass": None, **dims})
     assert spec.shaft_length == dims["shaft_length"]
-    too_short = engine.solve_size("paddle", literals, [Compound("max_tool_length", (0.3,))])
+    too_short = engine.solve_size("paddle_tube", "paddle", literals, [Compound("max_tool_length", (0.3,))])
     assert too_short.name == "infeasible"
     assert Compound("shaft_length", ("p", "long")) in too_short.args[0]
 
@@ -132,16 +132,16 @@ def test_a_weak_paddle_is_thickened_by_its_size_model_or_rejected(engine):
     load = {"max_force_n": 20.0, "point": [0.28, 0.0, 0.0], "grasp_point": [0.04, 0, 0]}
     weak = check_strength(PADDLE, load)
     literals = [Compound("paddle", ("p",)), Compound("shaft_length", ("p", "medium"))]
-    reply = thicker_dims(engine, "paddle", literals, [], weak)
+    reply = thicker_dims(engine, "paddle_tube", "paddle", literals, [], weak)
     assert reply.name == "dims"
     dims = {eq.args[0]: eq.args[1] for eq in reply.args[0]}
     assert dims["shaft_width"] >= weak.required_handle_width_m
     thicker = spec_from_dict({"kind": "paddle", "name": "p2", "mass": None, **dims})
     assert check_strength(thicker, load).verdict == "pass"
     thin = literals + [Compound("shaft_width", ("p", "thin"))]
-    assert thicker_dims(engine, "paddle", thin, [], weak).name == "dims"  # 10.5 mm is thin
+    assert thicker_dims(engine, "paddle_tube", "paddle", thin, [], weak).name == "dims"  # 10.5 mm is thin
     weaker = check_strength(PADDLE, {**load, "max_force_n": 60.0})  # needs 15.2 mm
-    reply = thicker_dims(engine, "paddle", thin, [], weaker)
+    reply = thicker_dims(engine, "paddle_tube", "paddle", thin, [], weaker)
     assert reply.name == "infeasible"
     assert Compound("shaft_width", ("p", "thin")) in reply.args[0]
 
@@ -199,6 +199,9 @@ def test_in_the_tube_world_a_paddle_is_picked_up_inserted_and_pulls_the_cube_out
 
     paddle = PaddleSpec("paddle_t1", 0.35, 0.010, 0.050, 0.012)
     world = load_world(get_case("hook")).with_tool(paddle)
+    from creative_py.bridge import Engine
+    from creative_py.learning.poses import pose_resolver
+
     with open_episode(world, "standard", 1, paddle.name, seed=0) as ep:
         facts = ep.observe().facts
         assert ("object_kind", paddle.name, "paddle") in facts
@@ -206,6 +209,7 @@ def test_in_the_tube_world_a_paddle_is_picked_up_inserted_and_pulls_the_cube_out
         held = ep.observe().facts
         assert ("held", paddle.name) in held
         assert {f[0] for f in held} >= {"tip_position", "tool_roll"}
-    result = run_trial(world, paddle.name, "standard", 1, pose=(0.03, 0.0, 0.0))
+    result = run_trial(world, paddle.name, "standard", 1, pose=(0.03, 0.0, 0.0),
+                       pose_target=pose_resolver(Engine.instance(), world.manifest))
     assert result.outcome == "success", result.reason
     assert result.max_tool_force_n > 0
