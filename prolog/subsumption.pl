@@ -366,57 +366,75 @@ reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     copy_term_nat(Head-Items-Tests, SH-SItems-STests),
     skolemise_(SH-SItems-STests),
     spec_index_(SItems, Index),
+    arg_index_(SItems, ArgIdx),
     pairs_values(STests, STestLits),
     spec_ranges_(STestLits, Ranges),
     copy_term_nat(Head-Items-Tests, CH-CItems-CTests),
     CH = SH,
     components_(CItems, CTests, Comps),
-    empty_assoc(NoExcl),
-    maplist(candidates_(Index, NoExcl), CItems, CandLists),
-    pairs_keys(Items, Idxs),
-    pairs_keys_values(CandPairs, Idxs, CandLists),
-    list_to_assoc(CandPairs, CandAll),
+    list_to_assoc(CItems, CItemAssoc),
     list_to_assoc(Items, ItemAssoc),
     list_to_assoc(SItems, SAssoc),
     skolem_occurrences_(SItems, SkOcc),
+    skolem_tests_(STests, SkTests),
     skolems_in_(SH, HeadSks),
     empty_assoc(Removed0),
-    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, TestLimit-FullMax, OnLimit,
-              local(SAssoc, SkOcc, HeadSks, STests)),
+    Ctx = red(Head, ItemAssoc, Tests, SH, cands(Index, ArgIdx, CItemAssoc), Ranges,
+              TestLimit-FullMax, OnLimit, local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
     foldl(reduce_component_(Ctx), Comps, Removed0, Removed),
     exclude(removed_item_(Removed), Items, Kept).
 
 removed_item_(Removed, I-_) :-
     get_assoc(I, Removed, _).
 
+%   The literals of a component are tested in body order; Gone (the literals
+%   a test removes) always lie in the component, so the number of its live
+%   literals is kept as a count rather than recounted for every test.
 reduce_component_(Ctx, comp(CItems, _), Removed0, Removed) :-
     pairs_keys(CItems, Idxs),
     (   CItems = [_-L],
         ground(L)
     ->  Removed = Removed0
-    ;   foldl(reduce_literal_(Ctx, Idxs), Idxs, Removed0, Removed)
+    ;   length(Idxs, NAlive),
+        foldl(reduce_literal_(Ctx, Idxs), Idxs, Removed0-NAlive, Removed-_)
     ).
 
 %   Literal I goes when its component maps into the clause without I (and
 %   without the literals removed so far); a literal whose only possible
 %   image is itself is skipped at once.
-reduce_literal_(Ctx, Idxs, I, Removed0, Removed) :-
-    Ctx = red(_, _, _, _, CandAll, _, _, _, _),
+reduce_literal_(Ctx, Idxs, I, Removed0-NAlive0, Removed-NAlive) :-
+    Ctx = red(_, _, _, _, CandCtx, _, _, _, _),
     (   get_assoc(I, Removed0, _)
-    ->  Removed = Removed0
-    ;   get_assoc(I, CandAll, OwnCands),
-        \+ ( member(J-_, OwnCands), J =\= I, \+ get_assoc(J, Removed0, _) )
-    ->  Removed = Removed0
+    ->  Removed = Removed0,
+        NAlive = NAlive0
+    ;   \+ other_image_(CandCtx, I, Removed0)
+    ->  Removed = Removed0,
+        NAlive = NAlive0
     ;   put_assoc(I, Removed0, true, Excl),
-        (   redundant_literal_(Ctx, I, Idxs, Excl, Gone)
-        ->  foldl(mark_removed_, Gone, Removed0, Removed)
-        ;   Removed = Removed0
+        (   redundant_literal_(Ctx, I, Idxs, NAlive0, Excl, Gone)
+        ->  foldl(mark_removed_, Gone, Removed0, Removed),
+            length(Gone, NGone),
+            NAlive is NAlive0 - NGone
+        ;   Removed = Removed0,
+            NAlive = NAlive0
         )
     ).
 
-%   redundant_literal_(+Ctx, +I, +Idxs, +Excl, -Gone): some substitution
-%   maps the component Idxs (less the removed literals) into the clause without literal I; Gone are
-%   the literals of Alive outside its image (I among them). First the
+%   other_image_(+CandCtx, +I, +Removed): literal I (head variables bound)
+%   unifies with some live literal of the clause other than itself.
+other_image_(CandCtx, I, Removed) :-
+    CandCtx = cands(_, _, CItemAssoc),
+    get_assoc(I, CItemAssoc, L),
+    item_candidates_(CandCtx, L, Cands),
+    member(J-_, Cands),
+    J =\= I,
+    \+ get_assoc(J, Removed, _),
+    !.
+
+%   redundant_literal_(+Ctx, +I, +Idxs, +NAlive, +Excl, -Gone): some
+%   substitution maps the component Idxs (less the removed literals; NAlive
+%   of them are left) into the clause without literal I; Gone are the
+%   literals of the component outside its image (I among them). First the
 %   local test: every variable except the non-head variables of literal I
 %   stays itself, so only the literals that contain those variables are
 %   searched (cheap, and it finds most redundancies). Then, for components
@@ -424,28 +442,31 @@ reduce_literal_(Ctx, Idxs, I, Removed0, Removed) :-
 %   bounded by test_limit: when the bound is hit the literal is kept (the
 %   clause stays equivalent, only perhaps not minimal), unless
 %   on_limit(error) was given.
-redundant_literal_(Ctx, I, Idxs, Excl, Gone) :-
-    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit-FullMax, OnLimit, _),
+redundant_literal_(Ctx, I, Idxs, NAlive, Excl, Gone) :-
+    Ctx = red(Head, ItemAssoc, Tests, SH, CandCtx, Ranges, Limit-FullMax, OnLimit, _),
     (   findall(G, local_gone_(Ctx, I, Excl, G), [Gone0|_])
     ->  Gone = Gone0
-    ;   exclude(removed_key_(Excl), Idxs, Alive0),
+    ;   NAlive =< FullMax,
+        exclude(removed_key_(Excl), Idxs, Alive0),
         Alive = [I|Alive0],
-        length(Alive, NAlive),
-        NAlive =< FullMax,
         maplist(item_at_(ItemAssoc), Alive, KItems0),
         copy_term_nat(Head-KItems0-Tests, GH-KItems-GTests),
         GH = SH,
         term_variables(KItems, KVars),
         include(test_on_(KVars), GTests, KTests),
-        maplist(all_candidates_(CandAll), Alive, CandLists),
+        maplist(item_cands_(CandCtx), KItems, CandLists),
         bounded_test_(Limit, OnLimit,
                       reduce_match_(KItems, CandLists, KTests, Ranges, Excl, Image)),
         subtract_idx_(Alive, Image, Gone)
     ).
 
+%   The local test's literals are the clause's own (skolemised) literals
+%   with only literal I's non-head skolems made variables again; their
+%   candidates come from the argument index, so only the literals that
+%   agree on a fixed argument are tried.
 local_gone_(Ctx, I, Excl, Gone) :-
-    Ctx = red(_, _, _, _, CandAll, Ranges, Limit-_, _,
-              local(SAssoc, SkOcc, HeadSks, STests)),
+    Ctx = red(_, _, _, _, CandCtx, Ranges, Limit-_, _,
+              local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
     get_assoc(I, SAssoc, SI),
     skolems_in_(SI, Sks0),
     ord_subtract(Sks0, HeadSks, Sks),
@@ -459,21 +480,76 @@ local_gone_(Ctx, I, Excl, Gone) :-
     pairs_keys_values(SkVars, Sks, Vars),
     list_to_assoc(SkVars, Map),
     maplist(general_item_(SAssoc, Map), NearIdx, NearItems),
-    maplist(all_candidates_(CandAll), NearIdx, CandLists),
-    pairs_values(STests, STestLits),
-    include(local_test_(Map), STestLits, NTests0),
+    maplist(item_cands_(CandCtx), NearItems, CandLists),
+    findall(T, ( member(Sk, Sks), get_assoc(Sk, SkTests, Ts), member(T, Ts) ), TIdx0),
+    sort(TIdx0, TIdx),
+    pairs_at_(TIdx, STests, NTests0),
     maplist(unskolem_(Map), NTests0, NTests1),
     number_items_(NTests1, 1, NTests),
     bounded_test_(Limit, keep,
                   reduce_match_(NearItems, CandLists, NTests, Ranges, Excl, NearImage)),
     subtract_idx_(NearIdx, NearImage, Gone).
 
+item_cands_(CandCtx, _-L, Cands) :-
+    item_candidates_(CandCtx, L, Cands).
+
+%   skolem_tests_(+STests, -SkTests): assoc from a skolem to the positions
+%   of the range tests on it.
+skolem_tests_(STests, SkTests) :-
+    findall(Sk-T, ( member(T-in_range(Sk, _, _), STests), compound(Sk) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, SkTests).
+
+%   arg_index_(+SItems, -ArgIdx): assoc from Key-Position-Value to the
+%   skolemised literals J-C (in the order of J) of predicate Key whose
+%   argument Position is the atomic or skolem Value.
+arg_index_(SItems, ArgIdx) :-
+    findall((Key-P-V)-(J-C), ( member(J-C, SItems), lit_key_(C, Key), lit_atom_(C, A),
+                           arg(P, A, V), fixed_arg_(V) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, ArgIdx).
+
+lit_atom_(L, A) :-
+    (   L = (\+ A0)
+    ->  A = A0
+    ;   A = L
+    ).
+
+fixed_arg_(V) :-
+    (   atomic(V)
+    ->  true
+    ;   V = '$sk'(N),
+        integer(N)
+    ).
+
+%   item_candidates_(+CandCtx, +L, -Cands): the J-C of spec_index_ (in its
+%   order) of L's predicate that unify with L, the same list as
+%   candidates_/4 with no exclusion, found through L's most selective fixed
+%   argument when it has one.
+item_candidates_(cands(Index, ArgIdx, _), L, Cands) :-
+    lit_key_(L, Key),
+    (   get_assoc(Key, Index, All)
+    ->  lit_atom_(L, A),
+        functor(A, _, Arity),
+        findall(N-Js, ( between(1, Arity, P), arg(P, A, V), fixed_arg_(V),
+                        ( get_assoc(Key-P-V, ArgIdx, Js) -> true ; Js = [] ),
+                        length(Js, N) ), Sel),
+        (   Sel == []
+        ->  include(unifiable_with_(L), All, Cands)
+        ;   keysort(Sel, [_-Js|_]),
+            include(unifiable_with_(L), Js, Cands)
+        )
+    ;   Cands = []
+    ).
+
+unifiable_with_(L, _-C) :-
+    \+ L \= C.
+
 general_item_(SAssoc, Map, J, J-L) :-
     get_assoc(J, SAssoc, SL),
     unskolem_(Map, SL, L).
-
-local_test_(Map, in_range(Sk, _, _)) :-
-    get_assoc(Sk, Map, _).
 
 unskolem_(Map, T0, T) :-
     (   T0 = '$sk'(_)
@@ -516,9 +592,6 @@ removed_key_(Removed, I) :-
 
 item_at_(ItemAssoc, I, I-L) :-
     get_assoc(I, ItemAssoc, L).
-
-all_candidates_(CandAll, I, Cands) :-
-    get_assoc(I, CandAll, Cands).
 
 reduce_match_(KItems, CandLists, KTests, Ranges, Excl, Image) :-
     dyn_search_(KItems, CandLists, KTests, Ranges, Excl, Image).

@@ -1,5 +1,6 @@
 :- module(lgg_reference,
           [ ref_clause_lgg/3,        % +C1, +C2, -G
+            ref_lgg_unreduced/3,     % +C1, +C2, -Raw
             ref_clause_reduce/2,     % +Clause, -Reduced
             ref_clause_reduce/3      % +Clause, -Reduced, +Options
           ]).
@@ -27,6 +28,11 @@ ref_clause_head_body(C, H, B) :-
     clause_head_body(C, H, B).
 
 ref_clause_lgg(C1, C2, G) :-
+    ref_lgg_unreduced(C1, C2, Raw),
+    ref_clause_reduce(Raw, G).
+
+%   ref_lgg_unreduced(+C1, +C2, -Raw): the head-connected LGG before reduction.
+ref_lgg_unreduced(C1, C2, Raw) :-
     ref_clause_head_body(C1, H1, B1),
     ref_clause_head_body(C2, H2, B2),
     functor(H1, N, A),
@@ -53,8 +59,7 @@ ref_clause_lgg(C1, C2, G) :-
     term_variables(UH-Connected, Live),
     include(ranged_var_in_(Live), URanges, LiveRanges),
     append(Connected, LiveRanges, Body),
-    ref_clause_head_body(Raw, UH, Body),
-    ref_clause_reduce(Raw, G).
+    ref_clause_head_body(Raw, UH, Body).
 
 %   Anti-unification core. Ctx = ctx(Mode, Ranges1, Ranges2) with Mode plain
 %   or constrained and RangesI an assoc from skolemised ranged variables of
