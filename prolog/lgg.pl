@@ -286,7 +286,9 @@ head_connected_(Head, Lits, Kept) :-
     empty_assoc(Seen0),
     foldl(seen_var_, HeadIds, Seen0, Seen1),
     reach_(HeadIds, Occ, IdTerm, Seen1, _, [], Reached0),
-    sort(Reached0, Reached),
+    sort(Reached0, Reached1),
+    pairs_keys_values(ReachedPairs, Reached1, Reached1),
+    list_to_assoc(ReachedPairs, Reached),
     pairs_keys_values(Positioned, Ps, Lits),
     pairs_keys_values(IdLits, LitIds, Positioned),
     include(connected_lit_(Reached), IdLits, KeptPairs),
@@ -336,5 +338,5 @@ new_var_(V, Q0-S0, Q-S) :-
 connected_lit_(Reached, Ids-(P-_)) :-
     (   Ids == []
     ->  true
-    ;   ord_memberchk(P, Reached)
+    ;   get_assoc(P, Reached, _)
     ).

@@ -379,7 +379,12 @@ reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     skolem_tests_(STests, SkTests),
     skolems_in_(SH, HeadSks),
     empty_assoc(Removed0),
-    Ctx = red(Head, ItemAssoc, Tests, SH, cands(Index, ArgIdx, CItemAssoc), Ranges,
+    findall(C-J, member(J-C, SItems), LitJs0),
+    keysort(LitJs0, LitJs1),
+    group_pairs_by_key(LitJs1, LitJs2),
+    trie_new(LitJs),
+    forall(member(C-Js, LitJs2), trie_insert(LitJs, C, Js)),
+    Ctx = red(Head, ItemAssoc, Tests, SH, cands(Index, ArgIdx, CItemAssoc, LitJs), Ranges,
               TestLimit-FullMax, OnLimit, local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
     foldl(reduce_component_(Ctx), Comps, Removed0, Removed),
     exclude(removed_item_(Removed), Items, Kept).
@@ -423,12 +428,13 @@ reduce_literal_(Ctx, Idxs, I, Removed0-NAlive0, Removed-NAlive) :-
 %   other_image_(+CandCtx, +I, +Removed): literal I (head variables bound)
 %   unifies with some live literal of the clause other than itself.
 other_image_(CandCtx, I, Removed) :-
-    CandCtx = cands(_, _, CItemAssoc),
+    CandCtx = cands(_, _, CItemAssoc, _),
     get_assoc(I, CItemAssoc, L),
-    item_candidates_(CandCtx, L, Cands),
-    member(J-_, Cands),
+    source_candidates_(CandCtx, L, Source),
+    member(J-C, Source),
     J =\= I,
     \+ get_assoc(J, Removed, _),
+    \+ L \= C,
     !.
 
 %   redundant_literal_(+Ctx, +I, +Idxs, +NAlive, +Excl, -Gone): some
@@ -480,15 +486,54 @@ local_gone_(Ctx, I, Excl, Gone) :-
     pairs_keys_values(SkVars, Sks, Vars),
     list_to_assoc(SkVars, Map),
     maplist(general_item_(SAssoc, Map), NearIdx, NearItems),
-    maplist(item_cands_(CandCtx), NearItems, CandLists),
     findall(T, ( member(Sk, Sks), get_assoc(Sk, SkTests, Ts), member(T, Ts) ), TIdx0),
     sort(TIdx0, TIdx),
     pairs_at_(TIdx, STests, NTests0),
     maplist(unskolem_(Map), NTests0, NTests1),
+    local_possible_(CandCtx, Excl, NearItems, NTests1, Ranges),
+    maplist(item_cands_(CandCtx), NearItems, CandLists),
     number_items_(NTests1, 1, NTests),
     bounded_test_(Limit, keep,
                   reduce_match_(NearItems, CandLists, NTests, Ranges, Excl, NearImage)),
     subtract_idx_(NearIdx, NearImage, Gone).
+
+%   local_possible_(+CandCtx, +Excl, +NearItems, +Tests, +Ranges): the local
+%   test has a solution: an exact check, and a cheap one, of what the search
+%   of reduce_match_/6 would find (most literals of a large clause are not
+%   redundant, and this rejects them without the search). A join: ground
+%   literals only have to be in the clause (a trie lookup); otherwise it
+%   branches on the literal with the fewest literals that agree with it on
+%   a fixed argument (argument index), which binds its variables.
+local_possible_(CandCtx, Excl, NearItems, Tests, Ranges) :-
+    pairs_values(NearItems, Lits),
+    \+ \+ join_(Lits, CandCtx, Excl, Tests, Ranges).
+
+join_(Lits, CandCtx, Excl, Tests, Ranges) :-
+    CandCtx = cands(_, _, _, LitJs),
+    partition(ground, Lits, Ground, Open),
+    forall(member(L, Ground), present_(LitJs, Excl, L)),
+    (   Open == []
+    ->  maplist(test_holds_(Ranges), Tests)
+    ;   maplist(source_size_(CandCtx), Open, Sized0),
+        keysort(Sized0, [_-(L-Source)|Sized]),
+        pairs_values(Sized, Rest0),
+        pairs_keys(Rest0, Rest),
+        member(J-C, Source),
+        \+ get_assoc(J, Excl, _),
+        L = C,
+        join_(Rest, CandCtx, Excl, Tests, Ranges)
+    ->  true
+    ).
+
+source_size_(CandCtx, L, N-(L-Source)) :-
+    source_candidates_(CandCtx, L, Source),
+    length(Source, N).
+
+present_(LitJs, Excl, L) :-
+    trie_lookup(LitJs, L, Js),
+    member(J, Js),
+    \+ get_assoc(J, Excl, _),
+    !.
 
 item_cands_(CandCtx, _-L, Cands) :-
     item_candidates_(CandCtx, L, Cands).
@@ -528,7 +573,14 @@ fixed_arg_(V) :-
 %   order) of L's predicate that unify with L, the same list as
 %   candidates_/4 with no exclusion, found through L's most selective fixed
 %   argument when it has one.
-item_candidates_(cands(Index, ArgIdx, _), L, Cands) :-
+item_candidates_(CandCtx, L, Cands) :-
+    source_candidates_(CandCtx, L, Source),
+    include(unifiable_with_(L), Source, Cands).
+
+%   source_candidates_(+CandCtx, +L, -Source): the J-C of L's predicate (in
+%   the order of J) that agree with L on its most selective fixed argument,
+%   all of them when L has none.
+source_candidates_(cands(Index, ArgIdx, _, _), L, Source) :-
     lit_key_(L, Key),
     (   get_assoc(Key, Index, All)
     ->  lit_atom_(L, A),
@@ -537,11 +589,10 @@ item_candidates_(cands(Index, ArgIdx, _), L, Cands) :-
                         ( get_assoc(Key-P-V, ArgIdx, Js) -> true ; Js = [] ),
                         length(Js, N) ), Sel),
         (   Sel == []
-        ->  include(unifiable_with_(L), All, Cands)
-        ;   keysort(Sel, [_-Js|_]),
-            include(unifiable_with_(L), Js, Cands)
+        ->  Source = All
+        ;   keysort(Sel, [_-Source|_])
         )
-    ;   Cands = []
+    ;   Source = []
     ).
 
 unifiable_with_(L, _-C) :-
@@ -690,8 +741,9 @@ components_(Items, Tests, Comps) :-
     numbervars(CItems, 0, _, [functor_name('$cv')]),
     maplist(item_var_ids_, CItems, IdItems),
     var_occurrences_(IdItems, Occ),
+    list_to_assoc(IdItems, IdAssoc),
     empty_assoc(Seen0),
-    group_items_(Items, IdItems, Occ, Seen0, Groups),
+    group_items_(Items, IdAssoc, Occ, Seen0, Groups),
     foldl(group_comp_(Items), Groups, Comps0, Tests, Lone),
     maplist(lone_comp_, Lone, LoneComps),
     append(Comps0, LoneComps, Comps).
@@ -723,7 +775,7 @@ closure_([I|Is], IdItems, Occ, Seen0, Seen, Acc0, Acc) :-
     (   get_assoc(I, Seen0, _)
     ->  closure_(Is, IdItems, Occ, Seen0, Seen, Acc0, Acc)
     ;   put_assoc(I, Seen0, true, Seen1),
-        memberchk(I-Ids, IdItems),
+        get_assoc(I, IdItems, Ids),
         findall(J, ( member(V, Ids), get_assoc(V, Occ, Js), member(J, Js) ), Next),
         append(Next, Is, Queue),
         closure_(Queue, IdItems, Occ, Seen1, Seen, [I|Acc0], Acc)
