@@ -365,7 +365,10 @@ live_test_(Live, in_range(V, _, _)) :-
 reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     copy_term_nat(Head-Items-Tests, SH-SItems-STests),
     skolemise_(SH-SItems-STests),
-    spec_index_(SItems, Index),
+    spec_index_(SItems, Index0),
+    assoc_to_list(Index0, IndexGroups0),
+    maplist(counted_group_, IndexGroups0, IndexGroups),
+    hash_index_(IndexGroups, Index),
     arg_index_(SItems, ArgIdx),
     pairs_values(STests, STestLits),
     spec_ranges_(STestLits, Ranges),
@@ -374,7 +377,8 @@ reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     components_(CItems, CTests, Comps),
     list_to_assoc(CItems, CItemAssoc),
     list_to_assoc(Items, ItemAssoc),
-    list_to_assoc(SItems, SAssoc),
+    pairs_values(SItems, SLits),
+    compound_name_arguments(SAssoc, lits, SLits),
     skolem_occurrences_(SItems, SkOcc),
     skolem_tests_(STests, SkTests),
     skolems_in_(SH, HeadSks),
@@ -382,8 +386,7 @@ reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     findall(C-J, member(J-C, SItems), LitJs0),
     keysort(LitJs0, LitJs1),
     group_pairs_by_key(LitJs1, LitJs2),
-    trie_new(LitJs),
-    forall(member(C-Js, LitJs2), trie_insert(LitJs, C, Js)),
+    pairs_trie_(LitJs2, LitJs),
     Ctx = red(Head, ItemAssoc, Tests, SH, cands(Index, ArgIdx, CItemAssoc, LitJs), Ranges,
               TestLimit-FullMax, OnLimit, local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
     foldl(reduce_component_(Ctx), Comps, Removed0, Removed),
@@ -473,7 +476,7 @@ redundant_literal_(Ctx, I, Idxs, NAlive, Excl, Gone) :-
 local_gone_(Ctx, I, Excl, Gone) :-
     Ctx = red(_, _, _, _, CandCtx, Ranges, Limit-_, _,
               local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
-    get_assoc(I, SAssoc, SI),
+    arg(I, SAssoc, SI),
     skolems_in_(SI, Sks0),
     ord_subtract(Sks0, HeadSks, Sks),
     Sks \== [],
@@ -526,8 +529,7 @@ join_(Lits, CandCtx, Excl, Tests, Ranges) :-
     ).
 
 source_size_(CandCtx, L, N-(L-Source)) :-
-    source_candidates_(CandCtx, L, Source),
-    length(Source, N).
+    source_candidates_(CandCtx, L, N, Source).
 
 present_(LitJs, Excl, L) :-
     trie_lookup(LitJs, L, Js),
@@ -553,8 +555,35 @@ arg_index_(SItems, ArgIdx) :-
     findall((Key-P-V)-(J-C), ( member(J-C, SItems), lit_key_(C, Key), lit_atom_(C, A),
                            arg(P, A, V), fixed_arg_(V) ), Pairs0),
     keysort(Pairs0, Pairs),
-    group_pairs_by_key(Pairs, Groups),
-    list_to_assoc(Groups, ArgIdx).
+    group_pairs_by_key(Pairs, Groups0),
+    maplist(counted_group_, Groups0, Groups),
+    hash_index_(Groups, ArgIdx).
+
+%   hash_index_(+Pairs, -Dict): Pairs (ground keys) as a dict from the keys'
+%   term_hash/2 to buckets of pairs, for lookups with hash_lookup_/3 that
+%   are faster than an assoc's comparisons of compound keys.
+hash_index_(Pairs, Dict) :-
+    map_list_to_pairs(pair_hash_, Pairs, Hashed),
+    keysort(Hashed, Sorted),
+    group_pairs_by_key(Sorted, Buckets),
+    dict_pairs(Dict, hidx, Buckets).
+
+pair_hash_(K-_, H) :-
+    term_hash(K, H).
+
+hash_lookup_(Dict, K, V) :-
+    term_hash(K, H),
+    get_dict(H, Dict, Bucket),
+    memberchk(K-V, Bucket).
+
+%   pairs_trie_(+Pairs, -Trie): a trie mapping each key of Pairs to its value
+%   (a hashed lookup; trie_lookup/3 copies the value, so only for small ones).
+pairs_trie_(Pairs, Trie) :-
+    trie_new(Trie),
+    forall(member(K-V, Pairs), trie_insert(Trie, K, V)).
+
+counted_group_(K-Js, K-(N-Js)) :-
+    length(Js, N).
 
 lit_atom_(L, A) :-
     (   L = (\+ A0)
@@ -580,26 +609,46 @@ item_candidates_(CandCtx, L, Cands) :-
 %   source_candidates_(+CandCtx, +L, -Source): the J-C of L's predicate (in
 %   the order of J) that agree with L on its most selective fixed argument,
 %   all of them when L has none.
-source_candidates_(cands(Index, ArgIdx, _, _), L, Source) :-
+source_candidates_(CandCtx, L, Source) :-
+    source_candidates_(CandCtx, L, _, Source).
+
+%   source_candidates_(+CandCtx, +L, -N, -Source): N is the length of Source.
+source_candidates_(cands(Index, ArgIdx, _, _), L, N, Source) :-
     lit_key_(L, Key),
-    (   get_assoc(Key, Index, All)
+    (   hash_lookup_(Index, Key, NAll-All)
     ->  lit_atom_(L, A),
         functor(A, _, Arity),
-        findall(N-Js, ( between(1, Arity, P), arg(P, A, V), fixed_arg_(V),
-                        ( get_assoc(Key-P-V, ArgIdx, Js) -> true ; Js = [] ),
-                        length(Js, N) ), Sel),
-        (   Sel == []
-        ->  Source = All
-        ;   keysort(Sel, [_-Source|_])
-        )
-    ;   Source = []
+        best_arg_(1, Arity, A, Key, ArgIdx, NAll-All, N-Source)
+    ;   N = 0,
+        Source = []
+    ).
+
+best_arg_(P, Arity, A, Key, ArgIdx, Best0, Best) :-
+    (   P > Arity
+    ->  Best = Best0
+    ;   arg(P, A, V),
+        (   fixed_arg_(V)
+        ->  (   hash_lookup_(ArgIdx, Key-P-V, NJs-Js)
+            ->  true
+            ;   NJs = 0,
+                Js = []
+            ),
+            Best0 = N0-_,
+            (   NJs < N0
+            ->  Best1 = NJs-Js
+            ;   Best1 = Best0
+            )
+        ;   Best1 = Best0
+        ),
+        P1 is P + 1,
+        best_arg_(P1, Arity, A, Key, ArgIdx, Best1, Best)
     ).
 
 unifiable_with_(L, _-C) :-
     \+ L \= C.
 
 general_item_(SAssoc, Map, J, J-L) :-
-    get_assoc(J, SAssoc, SL),
+    arg(J, SAssoc, SL),
     unskolem_(Map, SL, L).
 
 unskolem_(Map, T0, T) :-
@@ -744,7 +793,8 @@ components_(Items, Tests, Comps) :-
     list_to_assoc(IdItems, IdAssoc),
     empty_assoc(Seen0),
     group_items_(Items, IdAssoc, Occ, Seen0, Groups),
-    foldl(group_comp_(Items), Groups, Comps0, Tests, Lone),
+    list_to_assoc(Items, ItemAssoc),
+    foldl(group_comp_(ItemAssoc), Groups, Comps0, Tests, Lone),
     maplist(lone_comp_, Lone, LoneComps),
     append(Comps0, LoneComps, Comps).
 
@@ -781,13 +831,11 @@ closure_([I|Is], IdItems, Occ, Seen0, Seen, Acc0, Acc) :-
         closure_(Queue, IdItems, Occ, Seen1, Seen, [I|Acc0], Acc)
     ).
 
-group_comp_(Items, Group, comp(GItems, GTests), Tests0, Tests) :-
-    include(in_group_(Group), Items, GItems),
+%   The items of a group in the order of their indices (the order of Items).
+group_comp_(ItemAssoc, Group, comp(GItems, GTests), Tests0, Tests) :-
+    maplist(item_at_(ItemAssoc), Group, GItems),
     term_variables(GItems, Vars),
     partition(test_on_(Vars), Tests0, GTests, Tests).
-
-in_group_(Group, I-_) :-
-    memberchk(I, Group).
 
 test_on_(Vars, _-in_range(V, _, _)) :-
     var(V),
