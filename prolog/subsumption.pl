@@ -786,56 +786,64 @@ range_test_(V, Lo, Hi, Ranges) :-
 %   group of its variable, and a test on a bound term or on a variable that
 %   no literal has forms a group of its own.
 components_(Items, Tests, Comps) :-
-    copy_term_nat(Items, CItems),
+    copy_term_nat(Items-Tests, CItems-CTests),
+    maplist(link_item_vars_, CItems, Keys),
     numbervars(CItems, 0, _, [functor_name('$cv')]),
-    maplist(item_var_ids_, CItems, IdItems),
-    var_occurrences_(IdItems, Occ),
-    list_to_assoc(IdItems, IdAssoc),
-    empty_assoc(Seen0),
-    group_items_(Items, IdAssoc, Occ, Seen0, Groups),
-    list_to_assoc(Items, ItemAssoc),
-    foldl(group_comp_(ItemAssoc), Groups, Comps0, Tests, Lone),
+    pairs_keys_values(Keyed0, Keys, Items),
+    keysort(Keyed0, Keyed),
+    group_pairs_by_key(Keyed, KeyGroups),
+    map_list_to_pairs(first_index_, KeyGroups, ByFirst0),
+    keysort(ByFirst0, ByFirst),
+    pairs_values(ByFirst, OrderedGroups),
+    maplist(test_key_, CTests, TestKeys),
+    pairs_keys_values(KeyedTests0, TestKeys, Tests),
+    keysort(KeyedTests0, KeyedTests),
+    group_pairs_by_key(KeyedTests, TestGroups),
+    (   selectchk(lone-Lone, TestGroups, TestGroups1)
+    ->  true
+    ;   Lone = [],
+        TestGroups1 = TestGroups
+    ),
+    list_to_assoc(TestGroups1, TestAssoc),
+    maplist(group_comp_(TestAssoc), OrderedGroups, Comps0),
     maplist(lone_comp_, Lone, LoneComps),
     append(Comps0, LoneComps, Comps).
 
+%   Unifying all variables of each (copied) literal with each other leaves
+%   one variable per component, numbered '$cv'(N) afterwards: the literal's
+%   key; a ground literal is a component of its own.
+link_item_vars_(I-L, Key) :-
+    term_variables(L, Vs),
+    (   Vs = [V|Vs1]
+    ->  maplist(=(V), Vs1),
+        Key = V
+    ;   Key = ground(I)
+    ).
+
+first_index_(_-Group, First) :-
+    pairs_keys(Group, Is),
+    min_list(Is, First).
+
+%   A test's key: the component of its variable, or lone when the variable
+%   is in no literal (still unbound in the copy) or the test is on a bound
+%   term.
+test_key_(_-in_range(V, _, _), Key) :-
+    (   nonvar(V),
+        V = '$cv'(_)
+    ->  Key = V
+    ;   Key = lone
+    ).
+
 lone_comp_(T, comp([], [T])).
 
-item_var_ids_(I-L, I-Ids) :-
-    findall(N, sub_term('$cv'(N), L), Ns),
-    sort(Ns, Ids).
-
-var_occurrences_(IdItems, Occ) :-
-    findall(V-I, ( member(I-Ids, IdItems), member(V, Ids) ), Pairs0),
-    keysort(Pairs0, Pairs),
-    group_pairs_by_key(Pairs, Groups),
-    list_to_assoc(Groups, Occ).
-
-group_items_([], _, _, _, []).
-group_items_([I-_|Items], IdItems, Occ, Seen0, Groups) :-
-    (   get_assoc(I, Seen0, _)
-    ->  group_items_(Items, IdItems, Occ, Seen0, Groups)
-    ;   closure_([I], IdItems, Occ, Seen0, Seen, [], Group0),
-        sort(Group0, Group),
-        Groups = [Group|Groups1],
-        group_items_(Items, IdItems, Occ, Seen, Groups1)
+%   The items of a group in the order of their indices, with the tests on
+%   its variables in their order.
+group_comp_(TestAssoc, Key-Group, comp(GItems, GTests)) :-
+    keysort(Group, GItems),
+    (   get_assoc(Key, TestAssoc, GTests)
+    ->  true
+    ;   GTests = []
     ).
-
-closure_([], _, _, Seen, Seen, Acc, Acc).
-closure_([I|Is], IdItems, Occ, Seen0, Seen, Acc0, Acc) :-
-    (   get_assoc(I, Seen0, _)
-    ->  closure_(Is, IdItems, Occ, Seen0, Seen, Acc0, Acc)
-    ;   put_assoc(I, Seen0, true, Seen1),
-        get_assoc(I, IdItems, Ids),
-        findall(J, ( member(V, Ids), get_assoc(V, Occ, Js), member(J, Js) ), Next),
-        append(Next, Is, Queue),
-        closure_(Queue, IdItems, Occ, Seen1, Seen, [I|Acc0], Acc)
-    ).
-
-%   The items of a group in the order of their indices (the order of Items).
-group_comp_(ItemAssoc, Group, comp(GItems, GTests), Tests0, Tests) :-
-    maplist(item_at_(ItemAssoc), Group, GItems),
-    term_variables(GItems, Vars),
-    partition(test_on_(Vars), Tests0, GTests, Tests).
 
 test_on_(Vars, _-in_range(V, _, _)) :-
     var(V),
