@@ -517,10 +517,7 @@ join_(Lits, CandCtx, Excl, Tests, Ranges) :-
     forall(member(L, Ground), present_(LitJs, Excl, L)),
     (   Open == []
     ->  maplist(test_holds_(Ranges), Tests)
-    ;   maplist(source_size_(CandCtx), Open, Sized0),
-        keysort(Sized0, [_-(L-Source)|Sized]),
-        pairs_values(Sized, Rest0),
-        pairs_keys(Rest0, Rest),
+    ;   pick_driver_(Open, CandCtx, none, [], L-Source, Rest),
         member(J-C, Source),
         \+ get_assoc(J, Excl, _),
         L = C,
@@ -528,8 +525,31 @@ join_(Lits, CandCtx, Excl, Tests, Ranges) :-
     ->  true
     ).
 
-source_size_(CandCtx, L, N-(L-Source)) :-
-    source_candidates_(CandCtx, L, N, Source).
+%   pick_driver_(+Open, +CandCtx, +Best0, +Skipped, -L-Source, -Rest): the
+%   open literal L with the fewest literals agreeing with it on a fixed
+%   argument (Source), taken at once when it has at most two; fails when
+%   some literal has none.
+pick_driver_([], _, N-Best, Skipped, Best, Skipped) :-
+    N > 0.
+pick_driver_([L|Ls], CandCtx, Best0, Skipped, Best, Rest) :-
+    source_candidates_(CandCtx, L, N, Source),
+    N > 0,
+    (   N =< 2
+    ->  Best = L-Source,
+        (   Best0 = _-(B0-_)
+        ->  Rest = [B0|Rest0]
+        ;   Rest = Rest0
+        ),
+        append(Skipped, Ls, Rest0)
+    ;   Best0 = N0-_,
+        N0 =< N
+    ->  pick_driver_(Ls, CandCtx, Best0, [L|Skipped], Best, Rest)
+    ;   (   Best0 = _-(B0-_)
+        ->  Skipped1 = [B0|Skipped]
+        ;   Skipped1 = Skipped
+        ),
+        pick_driver_(Ls, CandCtx, N-(L-Source), Skipped1, Best, Rest)
+    ).
 
 present_(LitJs, Excl, L) :-
     trie_lookup(LitJs, L, Js),
