@@ -308,7 +308,13 @@ pairs_at_([I|Is], Items, [L|Ls]) :-
 %   Each redundancy test is first tried *locally* (only the variables of L
 %   move, everything else maps to itself: cheap, and it finds most
 %   redundancies), then, when the component has at most full_test_max
-%   literals, exactly. Options:
+%   literals, exactly. Candidates come from an index of the clause's literals
+%   by predicate and fixed argument, and a local test is first decided by a
+%   join over that index (every variable of the test is one of L's, so each
+%   image of L makes the rest ground): the search, whose first solution
+%   says which literals go, runs only when the join found one. The test_limit
+%   bound applies to that search (as before: a test cut by it keeps its
+%   literal). Options:
 %
 %     - test_limit(+N)
 %       Inference bound of one exact test, default 20,000 (or `infinite`).
