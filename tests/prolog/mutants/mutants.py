@@ -12,6 +12,12 @@ the mutant) and not counted.
 
     .venv/bin/python tests/prolog/mutants/mutants.py [--only ID ...] [--out FILE]
 
+Two candidates turned out to be equivalent mutants and were replaced: pairing a negated
+literal with a positive one in clause_lgg/3 (their LGG is a bare variable, never
+head-connected, so it is dropped anyway), and keeping range tests on unbound variables
+in nbr_reduce/3 (the prefix search never chooses a range test without the literal that
+binds its variable).
+
 Writes bench/results/prolog_mutants.json (score = killed / applied) and exits 1 when a
 mutant survived or the unmutated suite fails.
 """
@@ -47,9 +53,10 @@ MUTANTS = [
     ("lgg_pair_table_key", "prolog/lgg.pl", ["lgg", "lgg_equivalence"],
      "the same pair of subterms no longer maps to the same variable",
      "        (   get_assoc(T1-T2, Tab0, V)", "        (   get_assoc(T2-T1, Tab0, V)"),
-    ("lgg_sign_ignored", "prolog/lgg.pl", ["lgg", "lgg_equivalence"],
-     "negated literals pair with positive ones",
-     "        Key = neg(N/Ar)", "        Key = pos(N/Ar)"),
+    ("lgg_first_partner_only", "prolog/lgg.pl", ["lgg", "lgg_equivalence"],
+     "a body literal pairs only with the first literal of its predicate in the other clause",
+     "    ->  foldl(lgg_lit_(Ctx, L1), Partners, GLits, S0, S)",
+     "    ->  Partners = [P|_], lgg_lit_(Ctx, L1, P, G1, S0, S), GLits = [G1]"),
     ("subsumption_open_interval", "prolog/subsumption.pl", ["subsumption"],
      "a range test excludes its lower end",
      "    ->  Lo =< V,\n        V =< Hi\n", "    ->  Lo < V,\n        V =< Hi\n"),
@@ -70,9 +77,10 @@ MUTANTS = [
     ("nbr_no_error_on_covered_negative", "prolog/nbr.pl", ["nbr"],
      "nbr_reduce/3 accepts a clause that covers a negative",
      "    ->  domain_error(clause_covering_no_negative, Clause)", "    ->  true"),
-    ("nbr_keeps_unbound_ranges", "prolog/nbr.pl", ["nbr"],
-     "range tests on variables no kept literal binds stay in the result",
-     "    exclude(unbound_test_(Live), Lits, Kept).", "    Kept = Lits."),
+    ("nbr_one_literal_only", "prolog/nbr.pl", ["nbr"],
+     "after choosing a literal, nbr_reduce/3 never chooses another one",
+     "        nbr_(Head, [Last|Fixed], Before, Negatives, Chosen)",
+     "        nbr_(Head, [Last|Fixed], [], Negatives, Chosen)"),
     ("vs_count_drops_other_constraints", "prolog/version_space.pl", ["version_space"],
      "leaving a literal out forgets the constraints it does not hit (disjoint failures)",
      "        append(Left, Rest, CsOut),\n        count_(Free1, Rest, In),",
