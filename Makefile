@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup test test-prolog test-python test-all run cases hook wedge rake repl bench clean
+.PHONY: help setup test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -51,6 +51,9 @@ test-python: $(STAMP)  ## Run pytest without the slow tests, one worker a core.
 
 test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs included.
 	$(PY) -m pytest -q -n auto
+
+mutate-prolog: $(STAMP)  ## Run the hand-written mutants of the Prolog core; score in bench/results/prolog_mutants.json.
+	$(PY) tests/prolog/mutants/mutants.py
 
 run: $(STAMP)  ## Any case end to end (CASE=<id>, see make cases).
 	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE)

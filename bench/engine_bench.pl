@@ -2,6 +2,15 @@
     nbr_reduce/3 on generated clauses of 10, 50, 100 and 200 body literals, and
     one vs_update/3 at the hook case's size.
 
+    clause_lgg/3 is also timed with the algorithm it replaced (issue 18: head
+    connection by repeated passes, a reduction that rescans candidate lists),
+    kept in tests/prolog/reference/lgg_reference.pl, and the two results are
+    compared up to variable renaming: `clause_lgg_same_as_reference` with the
+    default bounds of clause_reduce/3, `reduction_same_unbounded` for the
+    reduction of the same unreduced LGG with test_limit(infinite) (the old
+    reduction's local tests are cut by their inference bound at 100 and 200
+    literals, where the new one finishes them).
+
         swipl bench/engine_bench.pl
 
     Prints a table and writes bench/results/engine.json (milliseconds, median
@@ -18,7 +27,9 @@
 :- prolog_load_context(directory, Dir),
    file_directory_name(Dir, Root),
    directory_file_path(Root, 'prolog/creative.pl', Engine),
-   load_files(user:Engine, [if(not_loaded)]).
+   load_files(user:Engine, [if(not_loaded)]),
+   directory_file_path(Root, 'tests/prolog/reference/lgg_reference.pl', Ref),
+   use_module(Ref).
 
 :- use_module(library(random)).
 :- use_module(library(lists)).
@@ -218,13 +229,23 @@ bench_size(N, Row) :-
     perturbed(E1, 2, E2),
     variabilise(E1, C1),
     (   N >= 200
-    ->  LggRuns = 1
-    ;   LggRuns = Runs
+    ->  RefRuns = 1
+    ;   RefRuns = Runs
     ),
+    LggRuns = Runs,
     median_ms(LggRuns, clause_lgg(E1, E2, _), Lgg),
+    median_ms(RefRuns, ref_clause_lgg(E1, E2, _), RefLgg),
     clause_lgg(E1, E2, G),
     clause_head_body(G, _, GB),
     length(GB, GLen),
+    ref_clause_lgg(E1, E2, RG),
+    clause_head_body(RG, _, RGB),
+    length(RGB, RGLen),
+    same_(G, RG, Same),
+    ref_lgg_unreduced(E1, E2, Raw),
+    clause_reduce(Raw, UG, [test_limit(infinite)]),
+    ref_clause_reduce(Raw, URG, [test_limit(infinite)]),
+    same_(UG, URG, SameUnbounded),
     median_ms(Runs, theta_subsumes(C1, E1), Sub),
     median_ms(Runs, \+ theta_subsumes(C1, E2), SubFail),
     redundant(C1, Big),
@@ -241,10 +262,19 @@ bench_size(N, Row) :-
     length(NRB, NRLen),
     Row = _{ body_literals: N, runs: Runs, clause_lgg_runs: LggRuns,
              clause_lgg_ms: Lgg, lgg_body_literals: GLen,
+             clause_lgg_reference_ms: RefLgg, clause_lgg_reference_runs: RefRuns,
+             reference_lgg_body_literals: RGLen,
+             clause_lgg_same_as_reference: Same, reduction_same_unbounded: SameUnbounded,
              theta_subsumes_ms: Sub, theta_subsumes_failing_ms: SubFail,
              clause_reduce_ms: Red, reduce_input_literals: BigLen,
              reduce_output_literals: RLen,
              nbr_reduce_ms: Nbr, nbr_negatives: 10, nbr_output_literals: NRLen }.
+
+same_(A, B, Same) :-
+    (   A =@= B
+    ->  Same = true
+    ;   Same = false
+    ).
 
 % ---------------------------------------------------------------------------
 % One vs_update at the hook case's size
@@ -288,5 +318,10 @@ print_table(Rows, Vs) :-
     findall(O, ( member(R, Rows), get_dict(nbr_output_literals, R, O) ), Ns),
     format("(ms, median; lgg output literals: ~w; reduce in/out: ~w; nbr out: ~w)~n",
            [Ls, Rs, Ns]),
+    forall(member(R, Rows),
+           format("clause_lgg at ~w: ~2f ms, before issue 18 ~2f ms (~w literals, ~w); same: ~w, same with unbounded tests: ~w~n",
+                  [R.body_literals, R.clause_lgg_ms, R.clause_lgg_reference_ms,
+                   R.reference_lgg_body_literals, R.lgg_body_literals,
+                   R.clause_lgg_same_as_reference, R.reduction_same_unbounded])),
     format("vs_update, hook case (~w body literals): pos ~2f ms, neg ~2f ms; vs_unknown ~3f ms~n",
            [Vs.example_body_literals, Vs.pos_update_ms, Vs.neg_update_ms, Vs.vs_unknown_ms]).

@@ -267,44 +267,76 @@ ranged_var_in_(Live, in_range(V, _, _)) :-
     !.
 
 %   head_connected_(+Head, +Lits, -Kept): keep ground literals and literals
-%   linked to the head's variables through shared variables.
+%   linked to the head's variables through shared variables. A search from
+%   the head's variables over an index variable -> literals, so each literal
+%   and each variable is visited once (linear in the size of the body,
+%   whatever the order of a chain of literals).
 head_connected_(Head, Lits, Kept) :-
     copy_term_nat(Head-Lits, CHead-CLits),
     numbervars(CHead-CLits, 0, _, [functor_name('$hc')]),
     var_ids_(CHead, HeadIds),
+    length(Lits, N),
+    numlist_(1, N, Ps),
     maplist(var_ids_, CLits, LitIds),
-    pairs_keys_values(Pairs, LitIds, Lits),
-    connect_(Pairs, HeadIds, Flags),
-    pairs_keys_values(Flagged, Flags, Lits),
-    include(kept_flag_, Flagged, KeptPairs),
-    pairs_values(KeptPairs, Kept).
+    compound_name_arguments(IdTerm, ids, LitIds),
+    findall(V-P, ( nth1(P, LitIds, Ids), member(V, Ids) ), Occ0),
+    keysort(Occ0, Occ1),
+    group_pairs_by_key(Occ1, Occ2),
+    list_to_assoc(Occ2, Occ),
+    empty_assoc(Seen0),
+    foldl(seen_var_, HeadIds, Seen0, Seen1),
+    reach_(HeadIds, Occ, IdTerm, Seen1, _, [], Reached0),
+    sort(Reached0, Reached1),
+    pairs_keys_values(ReachedPairs, Reached1, Reached1),
+    list_to_assoc(ReachedPairs, Reached),
+    pairs_keys_values(Positioned, Ps, Lits),
+    pairs_keys_values(IdLits, LitIds, Positioned),
+    include(connected_lit_(Reached), IdLits, KeptPairs),
+    pairs_values(KeptPairs, KeptPos),
+    pairs_values(KeptPos, Kept).
 
 var_ids_(T, Ids) :-
     findall(N, sub_term('$hc'(N), T), Ns),
     sort(Ns, Ids).
 
-connect_(Pairs, Connected0, Flags) :-
-    foldl(connect_step_, Pairs, Flags0, Connected0-false, Connected-Changed),
-    (   Changed == true
-    ->  connect_(Pairs, Connected, Flags)
-    ;   Flags = Flags0
+numlist_(I, N, Ps) :-
+    (   I > N
+    ->  Ps = []
+    ;   Ps = [I|Ps1],
+        I1 is I + 1,
+        numlist_(I1, N, Ps1)
     ).
 
-connect_step_(Ids-_, Flag, C0-Ch0, C-Ch) :-
+seen_var_(V, S0, S) :-
+    put_assoc(V, S0, true, S).
+
+%   reach_(+Queue, +Occ, +IdTerm, +Seen0, -Seen, +Acc0, -Acc): Acc are the
+%   positions of the literals reached from the variables in Queue (IdTerm's
+%   argument P: the variables of literal P).
+reach_([], _, _, Seen, Seen, Acc, Acc).
+reach_([V|Vs], Occ, IdTerm, Seen0, Seen, Acc0, Acc) :-
+    (   get_assoc(V, Occ, Ps)
+    ->  foldl(reach_lit_(IdTerm), Ps, Vs-Seen0-Acc0, Queue-Seen1-Acc1)
+    ;   Queue = Vs,
+        Seen1 = Seen0,
+        Acc1 = Acc0
+    ),
+    reach_(Queue, Occ, IdTerm, Seen1, Seen, Acc1, Acc).
+
+reach_lit_(IdTerm, P, Q0-S0-A0, Q-S-[P|A0]) :-
+    arg(P, IdTerm, Ids),
+    foldl(new_var_, Ids, Q0-S0, Q-S).
+
+new_var_(V, Q0-S0, Q-S) :-
+    (   get_assoc(V, S0, _)
+    ->  Q = Q0,
+        S = S0
+    ;   put_assoc(V, S0, true, S),
+        Q = [V|Q0]
+    ).
+
+connected_lit_(Reached, Ids-(P-_)) :-
     (   Ids == []
-    ->  Flag = kept,
-        C = C0,
-        Ch = Ch0
-    ;   ord_intersect(Ids, C0)
-    ->  Flag = kept,
-        ord_union(C0, Ids, C),
-        (   C == C0
-        ->  Ch = Ch0
-        ;   Ch = true
-        )
-    ;   Flag = dropped,
-        C = C0,
-        Ch = Ch0
+    ->  true
+    ;   get_assoc(P, Reached, _)
     ).
-
-kept_flag_(kept-_).

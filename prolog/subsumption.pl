@@ -308,7 +308,13 @@ pairs_at_([I|Is], Items, [L|Ls]) :-
 %   Each redundancy test is first tried *locally* (only the variables of L
 %   move, everything else maps to itself: cheap, and it finds most
 %   redundancies), then, when the component has at most full_test_max
-%   literals, exactly. Options:
+%   literals, exactly. Candidates come from an index of the clause's literals
+%   by predicate and fixed argument, and a local test is first decided by a
+%   join over that index (every variable of the test is one of L's, so each
+%   image of L makes the rest ground): the search, whose first solution
+%   says which literals go, runs only when the join found one. The test_limit
+%   bound applies to that search (as before: a test cut by it keeps its
+%   literal). Options:
 %
 %     - test_limit(+N)
 %       Inference bound of one exact test, default 20,000 (or `infinite`).
@@ -365,58 +371,85 @@ live_test_(Live, in_range(V, _, _)) :-
 reduce_items_(Head, Items, Tests, TestLimit-FullMax-OnLimit, Kept) :-
     copy_term_nat(Head-Items-Tests, SH-SItems-STests),
     skolemise_(SH-SItems-STests),
-    spec_index_(SItems, Index),
+    spec_index_(SItems, Index0),
+    assoc_to_list(Index0, IndexGroups0),
+    maplist(counted_group_, IndexGroups0, IndexGroups),
+    hash_index_(IndexGroups, Index),
+    arg_index_(SItems, ArgIdx),
     pairs_values(STests, STestLits),
     spec_ranges_(STestLits, Ranges),
     copy_term_nat(Head-Items-Tests, CH-CItems-CTests),
     CH = SH,
     components_(CItems, CTests, Comps),
-    empty_assoc(NoExcl),
-    maplist(candidates_(Index, NoExcl), CItems, CandLists),
-    pairs_keys(Items, Idxs),
-    pairs_keys_values(CandPairs, Idxs, CandLists),
-    list_to_assoc(CandPairs, CandAll),
+    list_to_assoc(CItems, CItemAssoc),
     list_to_assoc(Items, ItemAssoc),
-    list_to_assoc(SItems, SAssoc),
+    pairs_values(SItems, SLits),
+    compound_name_arguments(SAssoc, lits, SLits),
     skolem_occurrences_(SItems, SkOcc),
+    skolem_tests_(STests, SkTests),
     skolems_in_(SH, HeadSks),
     empty_assoc(Removed0),
-    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, TestLimit-FullMax, OnLimit,
-              local(SAssoc, SkOcc, HeadSks, STests)),
+    findall(C-J, member(J-C, SItems), LitJs0),
+    keysort(LitJs0, LitJs1),
+    group_pairs_by_key(LitJs1, LitJs2),
+    pairs_trie_(LitJs2, LitJs),
+    Ctx = red(Head, ItemAssoc, Tests, SH, cands(Index, ArgIdx, CItemAssoc, LitJs), Ranges,
+              TestLimit-FullMax, OnLimit, local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
     foldl(reduce_component_(Ctx), Comps, Removed0, Removed),
     exclude(removed_item_(Removed), Items, Kept).
 
 removed_item_(Removed, I-_) :-
     get_assoc(I, Removed, _).
 
+%   The literals of a component are tested in body order; Gone (the literals
+%   a test removes) always lie in the component, so the number of its live
+%   literals is kept as a count rather than recounted for every test.
 reduce_component_(Ctx, comp(CItems, _), Removed0, Removed) :-
     pairs_keys(CItems, Idxs),
     (   CItems = [_-L],
         ground(L)
     ->  Removed = Removed0
-    ;   foldl(reduce_literal_(Ctx, Idxs), Idxs, Removed0, Removed)
+    ;   length(Idxs, NAlive),
+        foldl(reduce_literal_(Ctx, Idxs), Idxs, Removed0-NAlive, Removed-_)
     ).
 
 %   Literal I goes when its component maps into the clause without I (and
 %   without the literals removed so far); a literal whose only possible
 %   image is itself is skipped at once.
-reduce_literal_(Ctx, Idxs, I, Removed0, Removed) :-
-    Ctx = red(_, _, _, _, CandAll, _, _, _, _),
+reduce_literal_(Ctx, Idxs, I, Removed0-NAlive0, Removed-NAlive) :-
+    Ctx = red(_, _, _, _, CandCtx, _, _, _, _),
     (   get_assoc(I, Removed0, _)
-    ->  Removed = Removed0
-    ;   get_assoc(I, CandAll, OwnCands),
-        \+ ( member(J-_, OwnCands), J =\= I, \+ get_assoc(J, Removed0, _) )
-    ->  Removed = Removed0
+    ->  Removed = Removed0,
+        NAlive = NAlive0
+    ;   \+ other_image_(CandCtx, I, Removed0)
+    ->  Removed = Removed0,
+        NAlive = NAlive0
     ;   put_assoc(I, Removed0, true, Excl),
-        (   redundant_literal_(Ctx, I, Idxs, Excl, Gone)
-        ->  foldl(mark_removed_, Gone, Removed0, Removed)
-        ;   Removed = Removed0
+        (   redundant_literal_(Ctx, I, Idxs, NAlive0, Excl, Gone)
+        ->  foldl(mark_removed_, Gone, Removed0, Removed),
+            length(Gone, NGone),
+            NAlive is NAlive0 - NGone
+        ;   Removed = Removed0,
+            NAlive = NAlive0
         )
     ).
 
-%   redundant_literal_(+Ctx, +I, +Idxs, +Excl, -Gone): some substitution
-%   maps the component Idxs (less the removed literals) into the clause without literal I; Gone are
-%   the literals of Alive outside its image (I among them). First the
+%   other_image_(+CandCtx, +I, +Removed): literal I (head variables bound)
+%   unifies with some live literal of the clause other than itself.
+other_image_(CandCtx, I, Removed) :-
+    CandCtx = cands(_, _, CItemAssoc, _),
+    get_assoc(I, CItemAssoc, L),
+    source_candidates_(CandCtx, L, Source),
+    member(J-C, Source),
+    J =\= I,
+    \+ get_assoc(J, Removed, _),
+    \+ L \= C,
+    !.
+
+%   redundant_literal_(+Ctx, +I, +Idxs, +NAlive, +Excl, -Gone): some
+%   substitution maps the component Idxs (less the removed literals; NAlive
+%   of them are left) into the clause without literal I; Gone are the
+%   literals of the component outside its image (I among them). First the
 %   local test: every variable except the non-head variables of literal I
 %   stays itself, so only the literals that contain those variables are
 %   searched (cheap, and it finds most redundancies). Then, for components
@@ -424,29 +457,32 @@ reduce_literal_(Ctx, Idxs, I, Removed0, Removed) :-
 %   bounded by test_limit: when the bound is hit the literal is kept (the
 %   clause stays equivalent, only perhaps not minimal), unless
 %   on_limit(error) was given.
-redundant_literal_(Ctx, I, Idxs, Excl, Gone) :-
-    Ctx = red(Head, ItemAssoc, Tests, SH, CandAll, Ranges, Limit-FullMax, OnLimit, _),
+redundant_literal_(Ctx, I, Idxs, NAlive, Excl, Gone) :-
+    Ctx = red(Head, ItemAssoc, Tests, SH, CandCtx, Ranges, Limit-FullMax, OnLimit, _),
     (   findall(G, local_gone_(Ctx, I, Excl, G), [Gone0|_])
     ->  Gone = Gone0
-    ;   exclude(removed_key_(Excl), Idxs, Alive0),
+    ;   NAlive =< FullMax,
+        exclude(removed_key_(Excl), Idxs, Alive0),
         Alive = [I|Alive0],
-        length(Alive, NAlive),
-        NAlive =< FullMax,
         maplist(item_at_(ItemAssoc), Alive, KItems0),
         copy_term_nat(Head-KItems0-Tests, GH-KItems-GTests),
         GH = SH,
         term_variables(KItems, KVars),
         include(test_on_(KVars), GTests, KTests),
-        maplist(all_candidates_(CandAll), Alive, CandLists),
+        maplist(item_cands_(CandCtx), KItems, CandLists),
         bounded_test_(Limit, OnLimit,
                       reduce_match_(KItems, CandLists, KTests, Ranges, Excl, Image)),
         subtract_idx_(Alive, Image, Gone)
     ).
 
+%   The local test's literals are the clause's own (skolemised) literals
+%   with only literal I's non-head skolems made variables again; their
+%   candidates come from the argument index, so only the literals that
+%   agree on a fixed argument are tried.
 local_gone_(Ctx, I, Excl, Gone) :-
-    Ctx = red(_, _, _, _, CandAll, Ranges, Limit-_, _,
-              local(SAssoc, SkOcc, HeadSks, STests)),
-    get_assoc(I, SAssoc, SI),
+    Ctx = red(_, _, _, _, CandCtx, Ranges, Limit-_, _,
+              local(SAssoc, SkOcc, HeadSks, STests-SkTests)),
+    arg(I, SAssoc, SI),
     skolems_in_(SI, Sks0),
     ord_subtract(Sks0, HeadSks, Sks),
     Sks \== [],
@@ -459,21 +495,187 @@ local_gone_(Ctx, I, Excl, Gone) :-
     pairs_keys_values(SkVars, Sks, Vars),
     list_to_assoc(SkVars, Map),
     maplist(general_item_(SAssoc, Map), NearIdx, NearItems),
-    maplist(all_candidates_(CandAll), NearIdx, CandLists),
-    pairs_values(STests, STestLits),
-    include(local_test_(Map), STestLits, NTests0),
+    findall(T, ( member(Sk, Sks), get_assoc(Sk, SkTests, Ts), member(T, Ts) ), TIdx0),
+    sort(TIdx0, TIdx),
+    pairs_at_(TIdx, STests, NTests0),
     maplist(unskolem_(Map), NTests0, NTests1),
+    local_possible_(CandCtx, Excl, NearItems, NTests1, Ranges),
+    maplist(item_cands_(CandCtx), NearItems, CandLists),
     number_items_(NTests1, 1, NTests),
     bounded_test_(Limit, keep,
                   reduce_match_(NearItems, CandLists, NTests, Ranges, Excl, NearImage)),
     subtract_idx_(NearIdx, NearImage, Gone).
 
-general_item_(SAssoc, Map, J, J-L) :-
-    get_assoc(J, SAssoc, SL),
-    unskolem_(Map, SL, L).
+%   local_possible_(+CandCtx, +Excl, +NearItems, +Tests, +Ranges): the local
+%   test has a solution: an exact check, and a cheap one, of what the search
+%   of reduce_match_/6 would find (most literals of a large clause are not
+%   redundant, and this rejects them without the search). A join: ground
+%   literals only have to be in the clause (a trie lookup); otherwise it
+%   branches on the literal with the fewest literals that agree with it on
+%   a fixed argument (argument index), which binds its variables.
+local_possible_(CandCtx, Excl, NearItems, Tests, Ranges) :-
+    pairs_values(NearItems, Lits),
+    \+ \+ join_(Lits, CandCtx, Excl, Tests, Ranges).
 
-local_test_(Map, in_range(Sk, _, _)) :-
-    get_assoc(Sk, Map, _).
+join_(Lits, CandCtx, Excl, Tests, Ranges) :-
+    CandCtx = cands(_, _, _, LitJs),
+    partition(ground, Lits, Ground, Open),
+    forall(member(L, Ground), present_(LitJs, Excl, L)),
+    (   Open == []
+    ->  maplist(test_holds_(Ranges), Tests)
+    ;   pick_driver_(Open, CandCtx, none, [], L-Source, Rest),
+        member(J-C, Source),
+        \+ get_assoc(J, Excl, _),
+        L = C,
+        join_(Rest, CandCtx, Excl, Tests, Ranges)
+    ->  true
+    ).
+
+%   pick_driver_(+Open, +CandCtx, +Best0, +Skipped, -L-Source, -Rest): the
+%   open literal L with the fewest literals agreeing with it on a fixed
+%   argument (Source), taken at once when it has at most two; fails when
+%   some literal has none.
+pick_driver_([], _, N-Best, Skipped, Best, Skipped) :-
+    N > 0.
+pick_driver_([L|Ls], CandCtx, Best0, Skipped, Best, Rest) :-
+    source_candidates_(CandCtx, L, N, Source),
+    N > 0,
+    (   N =< 2
+    ->  Best = L-Source,
+        (   Best0 = _-(B0-_)
+        ->  Rest = [B0|Rest0]
+        ;   Rest = Rest0
+        ),
+        append(Skipped, Ls, Rest0)
+    ;   Best0 = N0-_,
+        N0 =< N
+    ->  pick_driver_(Ls, CandCtx, Best0, [L|Skipped], Best, Rest)
+    ;   (   Best0 = _-(B0-_)
+        ->  Skipped1 = [B0|Skipped]
+        ;   Skipped1 = Skipped
+        ),
+        pick_driver_(Ls, CandCtx, N-(L-Source), Skipped1, Best, Rest)
+    ).
+
+present_(LitJs, Excl, L) :-
+    trie_lookup(LitJs, L, Js),
+    member(J, Js),
+    \+ get_assoc(J, Excl, _),
+    !.
+
+item_cands_(CandCtx, _-L, Cands) :-
+    item_candidates_(CandCtx, L, Cands).
+
+%   skolem_tests_(+STests, -SkTests): assoc from a skolem to the positions
+%   of the range tests on it.
+skolem_tests_(STests, SkTests) :-
+    findall(Sk-T, ( member(T-in_range(Sk, _, _), STests), compound(Sk) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups),
+    list_to_assoc(Groups, SkTests).
+
+%   arg_index_(+SItems, -ArgIdx): assoc from Key-Position-Value to the
+%   skolemised literals J-C (in the order of J) of predicate Key whose
+%   argument Position is the atomic or skolem Value.
+arg_index_(SItems, ArgIdx) :-
+    findall((Key-P-V)-(J-C), ( member(J-C, SItems), lit_key_(C, Key), lit_atom_(C, A),
+                           arg(P, A, V), fixed_arg_(V) ), Pairs0),
+    keysort(Pairs0, Pairs),
+    group_pairs_by_key(Pairs, Groups0),
+    maplist(counted_group_, Groups0, Groups),
+    hash_index_(Groups, ArgIdx).
+
+%   hash_index_(+Pairs, -Dict): Pairs (ground keys) as a dict from the keys'
+%   term_hash/2 to buckets of pairs, for lookups with hash_lookup_/3 that
+%   are faster than an assoc's comparisons of compound keys.
+hash_index_(Pairs, Dict) :-
+    map_list_to_pairs(pair_hash_, Pairs, Hashed),
+    keysort(Hashed, Sorted),
+    group_pairs_by_key(Sorted, Buckets),
+    dict_pairs(Dict, hidx, Buckets).
+
+pair_hash_(K-_, H) :-
+    term_hash(K, H).
+
+hash_lookup_(Dict, K, V) :-
+    term_hash(K, H),
+    get_dict(H, Dict, Bucket),
+    memberchk(K-V, Bucket).
+
+%   pairs_trie_(+Pairs, -Trie): a trie mapping each key of Pairs to its value
+%   (a hashed lookup; trie_lookup/3 copies the value, so only for small ones).
+pairs_trie_(Pairs, Trie) :-
+    trie_new(Trie),
+    forall(member(K-V, Pairs), trie_insert(Trie, K, V)).
+
+counted_group_(K-Js, K-(N-Js)) :-
+    length(Js, N).
+
+lit_atom_(L, A) :-
+    (   L = (\+ A0)
+    ->  A = A0
+    ;   A = L
+    ).
+
+fixed_arg_(V) :-
+    (   atomic(V)
+    ->  true
+    ;   V = '$sk'(N),
+        integer(N)
+    ).
+
+%   item_candidates_(+CandCtx, +L, -Cands): the J-C of spec_index_ (in its
+%   order) of L's predicate that unify with L, the same list as
+%   candidates_/4 with no exclusion, found through L's most selective fixed
+%   argument when it has one.
+item_candidates_(CandCtx, L, Cands) :-
+    source_candidates_(CandCtx, L, Source),
+    include(unifiable_with_(L), Source, Cands).
+
+%   source_candidates_(+CandCtx, +L, -Source): the J-C of L's predicate (in
+%   the order of J) that agree with L on its most selective fixed argument,
+%   all of them when L has none.
+source_candidates_(CandCtx, L, Source) :-
+    source_candidates_(CandCtx, L, _, Source).
+
+%   source_candidates_(+CandCtx, +L, -N, -Source): N is the length of Source.
+source_candidates_(cands(Index, ArgIdx, _, _), L, N, Source) :-
+    lit_key_(L, Key),
+    (   hash_lookup_(Index, Key, NAll-All)
+    ->  lit_atom_(L, A),
+        functor(A, _, Arity),
+        best_arg_(1, Arity, A, Key, ArgIdx, NAll-All, N-Source)
+    ;   N = 0,
+        Source = []
+    ).
+
+best_arg_(P, Arity, A, Key, ArgIdx, Best0, Best) :-
+    (   P > Arity
+    ->  Best = Best0
+    ;   arg(P, A, V),
+        (   fixed_arg_(V)
+        ->  (   hash_lookup_(ArgIdx, Key-P-V, NJs-Js)
+            ->  true
+            ;   NJs = 0,
+                Js = []
+            ),
+            Best0 = N0-_,
+            (   NJs < N0
+            ->  Best1 = NJs-Js
+            ;   Best1 = Best0
+            )
+        ;   Best1 = Best0
+        ),
+        P1 is P + 1,
+        best_arg_(P1, Arity, A, Key, ArgIdx, Best1, Best)
+    ).
+
+unifiable_with_(L, _-C) :-
+    \+ L \= C.
+
+general_item_(SAssoc, Map, J, J-L) :-
+    arg(J, SAssoc, SL),
+    unskolem_(Map, SL, L).
 
 unskolem_(Map, T0, T) :-
     (   T0 = '$sk'(_)
@@ -516,9 +718,6 @@ removed_key_(Removed, I) :-
 
 item_at_(ItemAssoc, I, I-L) :-
     get_assoc(I, ItemAssoc, L).
-
-all_candidates_(CandAll, I, Cands) :-
-    get_assoc(I, CandAll, Cands).
 
 reduce_match_(KItems, CandLists, KTests, Ranges, Excl, Image) :-
     dyn_search_(KItems, CandLists, KTests, Ranges, Excl, Image).
@@ -613,56 +812,64 @@ range_test_(V, Lo, Hi, Ranges) :-
 %   group of its variable, and a test on a bound term or on a variable that
 %   no literal has forms a group of its own.
 components_(Items, Tests, Comps) :-
-    copy_term_nat(Items, CItems),
+    copy_term_nat(Items-Tests, CItems-CTests),
+    maplist(link_item_vars_, CItems, Keys),
     numbervars(CItems, 0, _, [functor_name('$cv')]),
-    maplist(item_var_ids_, CItems, IdItems),
-    var_occurrences_(IdItems, Occ),
-    empty_assoc(Seen0),
-    group_items_(Items, IdItems, Occ, Seen0, Groups),
-    foldl(group_comp_(Items), Groups, Comps0, Tests, Lone),
+    pairs_keys_values(Keyed0, Keys, Items),
+    keysort(Keyed0, Keyed),
+    group_pairs_by_key(Keyed, KeyGroups),
+    map_list_to_pairs(first_index_, KeyGroups, ByFirst0),
+    keysort(ByFirst0, ByFirst),
+    pairs_values(ByFirst, OrderedGroups),
+    maplist(test_key_, CTests, TestKeys),
+    pairs_keys_values(KeyedTests0, TestKeys, Tests),
+    keysort(KeyedTests0, KeyedTests),
+    group_pairs_by_key(KeyedTests, TestGroups),
+    (   selectchk(lone-Lone, TestGroups, TestGroups1)
+    ->  true
+    ;   Lone = [],
+        TestGroups1 = TestGroups
+    ),
+    list_to_assoc(TestGroups1, TestAssoc),
+    maplist(group_comp_(TestAssoc), OrderedGroups, Comps0),
     maplist(lone_comp_, Lone, LoneComps),
     append(Comps0, LoneComps, Comps).
 
+%   Unifying all variables of each (copied) literal with each other leaves
+%   one variable per component, numbered '$cv'(N) afterwards: the literal's
+%   key; a ground literal is a component of its own.
+link_item_vars_(I-L, Key) :-
+    term_variables(L, Vs),
+    (   Vs = [V|Vs1]
+    ->  maplist(=(V), Vs1),
+        Key = V
+    ;   Key = ground(I)
+    ).
+
+first_index_(_-Group, First) :-
+    pairs_keys(Group, Is),
+    min_list(Is, First).
+
+%   A test's key: the component of its variable, or lone when the variable
+%   is in no literal (still unbound in the copy) or the test is on a bound
+%   term.
+test_key_(_-in_range(V, _, _), Key) :-
+    (   nonvar(V),
+        V = '$cv'(_)
+    ->  Key = V
+    ;   Key = lone
+    ).
+
 lone_comp_(T, comp([], [T])).
 
-item_var_ids_(I-L, I-Ids) :-
-    findall(N, sub_term('$cv'(N), L), Ns),
-    sort(Ns, Ids).
-
-var_occurrences_(IdItems, Occ) :-
-    findall(V-I, ( member(I-Ids, IdItems), member(V, Ids) ), Pairs0),
-    keysort(Pairs0, Pairs),
-    group_pairs_by_key(Pairs, Groups),
-    list_to_assoc(Groups, Occ).
-
-group_items_([], _, _, _, []).
-group_items_([I-_|Items], IdItems, Occ, Seen0, Groups) :-
-    (   get_assoc(I, Seen0, _)
-    ->  group_items_(Items, IdItems, Occ, Seen0, Groups)
-    ;   closure_([I], IdItems, Occ, Seen0, Seen, [], Group0),
-        sort(Group0, Group),
-        Groups = [Group|Groups1],
-        group_items_(Items, IdItems, Occ, Seen, Groups1)
+%   The items of a group in the order of their indices, with the tests on
+%   its variables in their order.
+group_comp_(TestAssoc, Key-Group, comp(GItems, GTests)) :-
+    keysort(Group, GItems),
+    (   get_assoc(Key, TestAssoc, GTests)
+    ->  true
+    ;   GTests = []
     ).
-
-closure_([], _, _, Seen, Seen, Acc, Acc).
-closure_([I|Is], IdItems, Occ, Seen0, Seen, Acc0, Acc) :-
-    (   get_assoc(I, Seen0, _)
-    ->  closure_(Is, IdItems, Occ, Seen0, Seen, Acc0, Acc)
-    ;   put_assoc(I, Seen0, true, Seen1),
-        memberchk(I-Ids, IdItems),
-        findall(J, ( member(V, Ids), get_assoc(V, Occ, Js), member(J, Js) ), Next),
-        append(Next, Is, Queue),
-        closure_(Queue, IdItems, Occ, Seen1, Seen, [I|Acc0], Acc)
-    ).
-
-group_comp_(Items, Group, comp(GItems, GTests), Tests0, Tests) :-
-    include(in_group_(Group), Items, GItems),
-    term_variables(GItems, Vars),
-    partition(test_on_(Vars), Tests0, GTests, Tests).
-
-in_group_(Group, I-_) :-
-    memberchk(I, Group).
 
 test_on_(Vars, _-in_range(V, _, _)) :-
     var(V),

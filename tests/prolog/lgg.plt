@@ -37,6 +37,21 @@ test(daughter_clauses,
 test(cross_pairs_and_head_connection, [true(G =@= (p(X) :- q(X, _)))]) :-
     clause_lgg((p(a) :- q(a, b), q(b, c)), (p(d) :- q(d, e)), G).
 
+%   Head connection through a chain of body literals written in the reverse
+%   order of the chain (r3 reaches the head only through r2, r1 and r0): the
+%   whole chain is kept, the unconnected z/2 is dropped.
+test(head_connected_through_a_reversed_chain,
+     [true(G =@= (p(A) :- r3(D, _), r2(C, D), r1(B, C), r0(A, B)))]) :-
+    clause_lgg((p(a) :- r3(d, e), r2(c, d), r1(b, c), r0(a, b), z(u, v)),
+               (p(a2) :- r3(d2, e2), r2(c2, d2), r1(b2, c2), r0(a2, b2), z(u2, v2)), G).
+
+%   A chain that reaches the head only through a literal paired across the
+%   two bodies in a different order; the ground literal is kept on its own.
+test(head_connected_through_a_shuffled_chain,
+     [true(G =@= (p(A) :- s(C, _), door(d1), q(B, C), q(A, B)))]) :-
+    clause_lgg((p(a) :- s(c, x), door(d1), q(b, c), q(a, b)),
+               (p(e) :- q(e, f), door(d1), s(g, y), q(f, g)), G).
+
 test(negated_literals_pair_by_sign,
      [true(G =@= (p(X) :- q(X), \+ r(X)))]) :-
     clause_lgg((p(a) :- q(a), \+ r(a), s(b)), (p(c) :- q(c), r(c), \+ r(c)), G).

@@ -30,6 +30,11 @@ test(range_kept_with_its_literal,
     nbr_reduce((p(X) :- a(X), len(X, L), in_range(L, 0.3, 0.5)),
                [(p(n) :- a(n), len(n, 0.9))], R).
 
+%   A literal left out takes the range test on its variable with it.
+test(range_dropped_with_its_literal, [true(R =@= (p(X) :- a(X)))]) :-
+    nbr_reduce((p(X) :- a(X), len(X, L), in_range(L, 0.3, 0.5)),
+               [(p(n1) :- len(n1, 0.4))], R).
+
 test(covering_clause_is_an_error,
      [error(domain_error(clause_covering_no_negative, (p(_) :- a(_))))]) :-
     nbr_reduce((p(X) :- a(X)), [(p(n1) :- a(n1), b(n1))], _).

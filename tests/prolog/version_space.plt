@@ -285,6 +285,82 @@ test(count_beyond_twenty_literals_is_a_bound) :-
 
 lit_(O, I, p(O, I)).
 
+%   vs_count/3 against a brute-force count: every subset of h_s's body that,
+%   as the body of a clause with h_s's head, covers none of the negatives.
+%   Two disjoint failure sets ({1,2} and {3,4} of six literals: 3 * 3 * 4 = 36),
+%   two overlapping ones ({1,2} and {2,3}: 5 * 8 = 40), and 30 seeded random
+%   sets of one to four failures.
+test(count_with_disjoint_failures_is_brute_force) :-
+    bf_count_([[1, 2], [3, 4]], N, BF),
+    assertion(N == 36),
+    assertion(BF == 36).
+
+test(count_with_overlapping_failures_is_brute_force) :-
+    bf_count_([[1, 2], [2, 3]], N, BF),
+    assertion(N == 40),
+    assertion(BF == 40).
+
+test(count_is_brute_force_on_random_failures) :-
+    forall(between(1, 30, Seed),
+           ( set_random(seed(Seed)),
+             random_between(1, 4, NF),
+             length(Fs, NF),
+             maplist(random_failure_, Fs),
+             bf_count_(Fs, N, BF),
+             assertion(N == BF) )).
+
+random_failure_(F) :-
+    findall(I, ( between(1, 6, I), random_between(0, 2, 0) ), F0),
+    (   F0 == []
+    ->  random_between(1, 6, I),
+        F = [I]
+    ;   F = F0
+    ).
+
+%   bf_count_(+Failures, -Count, -BruteForce): a version space over six unary
+%   literals updated with one negative per failure set (the literals at those
+%   positions replaced), its vs_count/3, and the brute-force count.
+bf_count_(Failures, Count, BF) :-
+    numlist(1, 6, Is),
+    maplist(bf_lit_(h1), Is, Ls),
+    clause_head_body(E, tp(h1, c, t), Ls),
+    vs_init(E, VS0),
+    maplist(bf_negative_(Is), Failures, Negs),
+    foldl(add_neg_, Negs, VS0, VS),
+    vs_count(VS, Count, Exact),
+    assertion(Exact == true),
+    vs_bounds(VS, HS, _),
+    clause_head_body(HS, Head, Body),
+    findall(S, bf_subset_(Body, S), Subsets),
+    include(bf_consistent_(Head, Negs), Subsets, Consistent),
+    length(Consistent, BF).
+
+bf_lit_(O, I, L) :-
+    atom_concat(p, I, P),
+    L =.. [P, O].
+
+bf_negative_(Is, Failed, E) :-
+    maplist(bf_neg_lit_(Failed), Is, Ls),
+    clause_head_body(E, tp(n, c, t), Ls).
+
+bf_neg_lit_(Failed, I, L) :-
+    (   memberchk(I, Failed)
+    ->  atom_concat(q, I, P)
+    ;   atom_concat(p, I, P)
+    ),
+    L =.. [P, n].
+
+bf_subset_([], []).
+bf_subset_([L|Ls], S) :-
+    bf_subset_(Ls, S0),
+    (   S = [L|S0]
+    ;   S = S0
+    ).
+
+bf_consistent_(Head, Negs, Body) :-
+    clause_head_body(H, Head, Body),
+    \+ ( member(N, Negs), clause_covers(H, N) ).
+
 add_neg_(E, VS0, VS) :-
     vs_update(VS0, neg(E), VS).
 
