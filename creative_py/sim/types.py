@@ -83,9 +83,11 @@ class Verdict:
     def text(self) -> str:
         """Return the verdict in words, e.g. ``door1 angle 12.5 deg (needs >= 20 deg);
         closed 0.3 deg after touching the tool (needs < 2 deg)``."""
-        value = "unmeasured" if self.value is None else f"{_num(self.value)} {self.unit}"
-        limit = "" if self.threshold is None else f"{_num(self.threshold)} {self.unit}"
-        src = f" {self.threshold_name}" if self.threshold_name else ""
+        value = ("unmeasured" if self.value is None
+                 else f"{_num(self.value, self.unit)} {self.unit}")
+        limit = ("" if self.threshold is None
+                 else f"{_num(self.threshold, self.unit)} {self.unit}")
+        src = f", {self.threshold_name}" if self.threshold_name else ""
         text = f"{self.quantity} {value} (needs {self.relation} {limit}{src})"
         return f"{text}; {self.detail}" if self.detail else text
 
@@ -101,9 +103,15 @@ class Verdict:
                 "text": self.text()}
 
 
-def _num(v: float) -> str:
-    """A measured number in at most four significant digits."""
-    return f"{v:.4g}"
+_DECIMALS = {"m": 3, "deg": 1, "rad": 3, "N": 1}
+
+
+def _num(v: float, unit: str = "") -> str:
+    """A measured number as the reports show it: millimetres of metres, tenths of
+    degrees, four significant digits otherwise (no ``-0``)."""
+    d = _DECIMALS.get(unit)
+    text = f"{v:.4g}" if d is None else f"{v:.{d}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
 
 
 @dataclass(frozen=True)
