@@ -127,12 +127,13 @@ class ClipKeeper:
 
     def write(self, recorder: Any, why: str, trial: int, phase: str, phase_trial: int,
               tool: str, tested: Sequence[str], outcome: str, reason: str,
-              location: Any = None, measured: str = "") -> dict[str, Any]:
+              location: Any = None, measured: Sequence[str] = ()) -> dict[str, Any]:
         """Render a trial's recorder and encode its frames with their caption, in a
         child process when :attr:`background` (call it inside the trial's episode);
         add and return the clip's entry (its ``bytes`` once :meth:`finish` ran).
-        ``measured`` is the trial's measured verdict in words (a caption line of each
-        part, and the entry's ``verdict``)."""
+        ``measured`` is the trial's measured verdict in short lines
+        (:func:`creative_py.records.trial.verdict_lines`: caption lines, and the
+        entry's ``verdict``)."""
         import time
 
         from creative_py.video import write_clip
@@ -143,7 +144,7 @@ class ClipKeeper:
                 + (f"  loc {location}" if location is not None else ""))
         lines = [head, f"tested {', '.join(tested) or '-'}",
                  f"{outcome}" + (f": {reason}" if reason else "")]
-        lines += [part.strip() for part in measured.split(" | ") if part.strip()]
+        lines += list(measured)
         path, fps = self.run_dir / name, self.spec.fps
 
         def use(frames, times) -> None:
@@ -157,7 +158,7 @@ class ClipKeeper:
         n = len(recorder.snapshots)
         entry = {"file": name, "phase": phase, "trial": trial, "tool": tool,
                  "tested": list(tested), "outcome": outcome, "reason": reason,
-                 "verdict": measured, "why": why,
+                 "verdict": "; ".join(measured), "why": why,
                  "frames": n, "duration_s": round(n / fps, 2), "bytes": None}
         self.entries.append(entry)
         self.wall_time_s += time.perf_counter() - t0

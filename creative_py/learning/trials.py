@@ -36,7 +36,7 @@ from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
-from creative_py.records.trial import TrialRecord, verdict_words
+from creative_py.records.trial import TrialRecord, verdict_lines
 
 if TYPE_CHECKING:
     from creative_py.sim import PoseTarget
@@ -216,7 +216,7 @@ class TrialRunner:
         self.trials.append(rec)
         if self.run_folder and n > len(self.replay):
             self.run_folder.append_trial(rec)
-        measured = verdict_words(ex.verdict)
+        measured = "; ".join(verdict_lines(ex.verdict))
         self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
                       f"loc {task.location}  {ex.outcome:<11} "
                       f"tested {', '.join(tested_l) or '-'}"
@@ -232,11 +232,12 @@ class TrialRunner:
         images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
         recorder = self.clips.recorder() if self.clips is not None else None
 
-        def verdict(outcome: str, reason: str, measured: str) -> None:
+        def verdict(outcome: str, reason: str, measured: dict | None) -> None:
             why = self.clips.why(phase, outcome, reason)
             if why is not None:
                 self.clips.write(recorder, why, n, phase, phase_trial, tool, tested,
-                                 outcome, reason, task.location, measured=measured)
+                                 outcome, reason, task.location,
+                                 measured=verdict_lines(measured))
 
         return run_trial(self.world, tool, task.variant, task.location,
                          pose_numbers(pose), self.seed * 1000 + n, images, gui=self.gui,

@@ -219,6 +219,26 @@ def verdict_words(verdict: Any) -> str:
     return " | ".join(parts)
 
 
+def verdict_lines(verdict: Any) -> list[str]:
+    """Return a trial's measured verdict as short lines (a clip's caption, the
+    terminal): the guard's measure and what was touching when it stopped a motion,
+    then the oracle's measure and the one beside it (empty for none)."""
+    if not isinstance(verdict, dict):
+        return []
+    lines = []
+    stop = verdict.get("stop")
+    if isinstance(stop, dict):
+        lines.append(f"stopped: {stop.get('brief') or stop.get('text', '')}")
+        touching = (stop.get("measures") or {}).get("touching")
+        if touching:
+            lines.append(f"touching {', '.join(touching)}")
+    if verdict.get("brief") or verdict.get("text"):
+        lines.append(str(verdict.get("brief") or verdict["text"]))
+    if verdict.get("note"):
+        lines.append(str(verdict["note"]))
+    return lines
+
+
 def reason_text(record: TrialRecord) -> str:
     """Return the reason cell of the reports: the reason and, after it, the measured
     verdict (``reason -- measured``; ``-`` for neither)."""
@@ -339,4 +359,4 @@ def _jsonable(value: Any) -> Any:
 
 
 __all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
-           "reason_text", "trial_columns", "verdict_words"]
+           "reason_text", "trial_columns", "verdict_lines", "verdict_words"]

@@ -532,7 +532,8 @@ def run_trial(world: World, tool: str, variant: str, location: int,
               images_dir: Path | None = None, gui: bool = False,
               pose_target: PoseTarget | None = None,
               record: Recorder | None = None,
-              verdict: Callable[[str, str, str], None] | None = None) -> TrialResult:
+              verdict: Callable[[str, str, dict | None], None] | None = None
+              ) -> TrialResult:
     """Run one physical trial: every skill of the manifest in order, then the oracle.
 
     ``pose=None`` uses the demonstration's pose. The outcome comes from the simulated
@@ -541,7 +542,7 @@ def run_trial(world: World, tool: str, variant: str, location: int,
     the result's ``facts_before``, the state the learner labels. The result's
     ``verdict`` is what the oracle measured (:meth:`Episode.verdict`), asked or not,
     with the guard's measure of a stopped motion. ``verdict(outcome, reason,
-    measured)`` (``measured`` the verdict in words) is called once the physics has
+    measured)`` (``measured`` the result's ``verdict``) is called once the physics has
     given the outcome, still inside the
     episode (where a kept trial's frames are rendered). With ``record``, the trial's
     poses are kept for a clip: the verdict renders them if it keeps the clip; without a
@@ -556,8 +557,7 @@ def run_trial(world: World, tool: str, variant: str, location: int,
         played = play_trial(ep, pose)
         wall_s = time.perf_counter() - t0
         if verdict is not None:
-            verdict(played.outcome, played.reason,
-                    verdict_text(played.verdict))  # the physics is done with
+            verdict(played.outcome, played.reason, played.verdict)  # the physics is done with
         load = ep.tool_load if played.acted else None
         final = played.final
         result = TrialResult(
@@ -603,14 +603,6 @@ def verdict_data(oracle: Verdict | None, asked: bool,
     if stop is not None:
         data["stop"] = stop.to_dict()
     return data
-
-
-def verdict_text(data: dict[str, Any] | None) -> str:
-    """Return a trial's measured verdict (:func:`verdict_data`) in words: the guard's
-    measure first when it stopped a motion, then the oracle's."""
-    from creative_py.records.trial import verdict_words
-
-    return verdict_words(data)
 
 
 def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,

@@ -74,7 +74,7 @@ def _position(ep: Any, opts: Mapping[str, Any], relation: str) -> Verdict:
     if moved is not None:
         detail += f"; moved {moved * 100:.1f} cm in the trial"
     return Verdict(f"{name} centre {axis}", value, limit, "m", relation, holds,
-                   detail=detail,
+                   detail=detail, note="" if moved is None else f"moved {moved * 100:.1f} cm",
                    measures={"past_limit_m": round(beyond, 6),
                              "moved_m": None if moved is None else round(moved, 6)})
 
@@ -108,7 +108,7 @@ def joint_held(ep: Any, opts: Mapping[str, Any]) -> Verdict:
         angle = getattr(body, "angle", None)
         value = math.degrees(angle(ep.sim)) if callable(angle) else None
         return Verdict(f"{name} angle", value, min_open, "deg", ">=", False,
-                       detail="not released", measures=measures)
+                       detail="not released", measures=measures, note="not released")
     value = math.degrees(record.final_angle)
     closed = record.closed_after_contact_deg
     measures.update(touched=record.touched,
@@ -117,12 +117,14 @@ def joint_held(ep: Any, opts: Mapping[str, Any]) -> Verdict:
                     else round(math.degrees(record.contact_angle), 4))
     if closed is None:
         holds, detail = False, "never touched the tool"
+        note = detail
     else:
         holds = bool(closed < max_close and value >= min_open)
         detail = (f"closed {closed:.2f} deg after touching the tool at "
                   f"{math.degrees(record.contact_angle):.1f} deg (needs < {max_close:g} deg)")
+        note = f"closed {closed:.1f} deg after contact, needs < {max_close:g}"
     return Verdict(f"{name} angle", value, min_open, "deg", ">=", holds, detail=detail,
-                   measures=measures)
+                   measures=measures, note=note)
 
 
 ORACLES: dict[str, OracleKind] = {o.name: o for o in (

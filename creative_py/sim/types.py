@@ -62,6 +62,9 @@ class Verdict:
         The other measures behind the judgement, in words (empty when none).
     measures : dict
         The other measures by name (numbers, names), JSON-ready.
+    note : str
+        The measure beside the main one that the judgement also rests on, in a few
+        words (``closed 0.3 deg after contact, needs < 2``), for short lines.
     """
 
     quantity: str
@@ -73,6 +76,7 @@ class Verdict:
     threshold_name: str = ""
     detail: str = ""
     measures: dict[str, Any] = field(default_factory=dict)
+    note: str = ""
 
     def met(self) -> bool:
         """Return whether ``value relation threshold`` (False without a value)."""
@@ -91,6 +95,14 @@ class Verdict:
         text = f"{self.quantity} {value} (needs {self.relation} {limit}{src})"
         return f"{text}; {self.detail}" if self.detail else text
 
+    def brief(self) -> str:
+        """Return the main measure on one short line (a clip caption's), e.g.
+        ``door1 angle 12.3 deg, needs >= 20.0``."""
+        value = ("unmeasured" if self.value is None
+                 else f"{_num(self.value, self.unit)} {self.unit}")
+        limit = "" if self.threshold is None else _num(self.threshold, self.unit)
+        return f"{self.quantity} {value}, needs {self.relation} {limit}"
+
     def to_dict(self) -> dict[str, Any]:
         """Return the verdict as JSON-ready data with its :meth:`text`."""
         def r(v):
@@ -100,7 +112,7 @@ class Verdict:
                 "relation": self.relation, "holds": bool(self.holds),
                 "threshold_name": self.threshold_name,
                 "measures": json.loads(json.dumps(self.measures, default=str)),
-                "text": self.text()}
+                "text": self.text(), "brief": self.brief(), "note": self.note}
 
 
 _DECIMALS = {"m": 3, "deg": 1, "rad": 3, "N": 1}
