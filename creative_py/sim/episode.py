@@ -342,7 +342,7 @@ class Episode:
         if self.robot is not None and not self.robot_parked:
             names[self.robot.body] = "robot"
         measures = dict(stop.measures)
-        pairs = sorted({" on ".join(sorted((names.get(a, f"body{a}"), names.get(b, f"body{b}"))))
+        pairs = sorted({f"{names.get(a, f'body{a}')} against {names.get(b, f'body{b}')}"
                         for a, b in measures.pop("touching_ids")})
         measures["touching"] = pairs
         detail = ("touching: " + ", ".join(pairs)) if pairs else "touching nothing"

@@ -143,7 +143,9 @@ def test_a_blocked_motion_names_the_guards_measure_and_what_it_ran_into():
     assert stop["value"] > stop["threshold"] and not stop["holds"]
     assert stop["threshold_name"] == "max_tracking_error"
     assert stop["measures"]["touching"], stop                 # something was hit
-    assert all(" on " in pair for pair in stop["measures"]["touching"])
+    # The robot or the tool it holds first, then what it ran into.
+    pairs = [pair.split(" against ") for pair in stop["measures"]["touching"]]
+    assert all(len(p) == 2 and p[0] in ("robot", "rake_a1") for p in pairs), pairs
     assert "touching" in stop["text"]
     # The oracle is measured too, though the outcome does not rest on it.
     assert r.verdict["asked"] is False and r.verdict["quantity"] == "box1 centre x"
