@@ -115,12 +115,13 @@ class Verdict:
                 "text": self.text(), "brief": self.brief(), "note": self.note}
 
 
-_DECIMALS = {"m": 3, "deg": 1, "rad": 3, "N": 1}
+_DECIMALS = {"m": 4, "deg": 1, "rad": 4, "N": 1}
 
 
 def _num(v: float, unit: str = "") -> str:
-    """A measured number as the reports show it: millimetres of metres, tenths of
-    degrees, four significant digits otherwise (no ``-0``)."""
+    """A measured number as the reports show it: tenths of millimetres in metres, tenths of
+    degrees (a guard's lag of 0.0302 m against 0.03 shows), four significant digits
+    otherwise (no ``-0``)."""
     d = _DECIMALS.get(unit)
     text = f"{v:.4g}" if d is None else f"{v:.{d}f}"
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text

@@ -27,8 +27,8 @@ def test_a_verdict_says_its_value_and_threshold_in_words_and_data():
     assert (d["quantity"], d["value"], d["threshold"], d["unit"], d["relation"],
             d["holds"]) == ("door1 angle", 12.34, 20.0, "deg", ">=", False)
     assert d["text"] == v.text()
-    assert Verdict("x", -1e-9, 0.5, "m", "<", True).text().startswith("x 0.000 m ")
-    assert Verdict("x", None, 0.5, "m", "<", False).text() == "x unmeasured (needs < 0.500 m)"
+    assert Verdict("x", -1e-9, 0.5, "m", "<", True).text().startswith("x 0.0000 m ")
+    assert Verdict("x", None, 0.5, "m", "<", False).text() == "x unmeasured (needs < 0.5000 m)"
 
 
 def test_every_oracle_kind_names_its_threshold_option():
