@@ -172,6 +172,7 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     out: list[str] = []
     from creative_py.bridge import Engine
     from creative_py.learning.poses import pose_resolver
+    from creative_py.records.trial import verdict_words
     from creative_py.sim import load_world, run_trial
     from creative_py.world import WorldFileError
 
@@ -210,6 +211,8 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     p = ", ".join(f"{v:g}" for v in result.pose)
     out.append(f"{case} trial: {tool} at location {location} ({variant}), pose ({p}) -> "
                f"{result.outcome}" + (f": {result.reason}" if result.reason else ""))
+    if result.verdict:
+        out.append(f"  measured: {verdict_words(result.verdict)}")
     out.append(f"  {result.steps} steps, {result.sim_time_s:.2f} s simulated, "
                f"{result.wall_time_s:.2f} s wall ({result.render_time_s:.2f} s rendering)")
     for name, truth in sorted(result.true_final.items()):

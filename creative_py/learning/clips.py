@@ -127,10 +127,13 @@ class ClipKeeper:
 
     def write(self, recorder: Any, why: str, trial: int, phase: str, phase_trial: int,
               tool: str, tested: Sequence[str], outcome: str, reason: str,
-              location: Any = None) -> dict[str, Any]:
+              location: Any = None, measured: Sequence[str] = ()) -> dict[str, Any]:
         """Render a trial's recorder and encode its frames with their caption, in a
         child process when :attr:`background` (call it inside the trial's episode);
-        add and return the clip's entry (its ``bytes`` once :meth:`finish` ran)."""
+        add and return the clip's entry (its ``bytes`` once :meth:`finish` ran).
+        ``measured`` is the trial's measured verdict in short lines
+        (:func:`creative_py.records.trial.verdict_lines`: caption lines, and the
+        entry's ``verdict``)."""
         import time
 
         from creative_py.video import write_clip
@@ -141,6 +144,7 @@ class ClipKeeper:
                 + (f"  loc {location}" if location is not None else ""))
         lines = [head, f"tested {', '.join(tested) or '-'}",
                  f"{outcome}" + (f": {reason}" if reason else "")]
+        lines += list(measured)
         path, fps = self.run_dir / name, self.spec.fps
 
         def use(frames, times) -> None:
@@ -153,7 +157,8 @@ class ClipKeeper:
             self.children[pid] = name
         n = len(recorder.snapshots)
         entry = {"file": name, "phase": phase, "trial": trial, "tool": tool,
-                 "tested": list(tested), "outcome": outcome, "reason": reason, "why": why,
+                 "tested": list(tested), "outcome": outcome, "reason": reason,
+                 "verdict": "; ".join(measured), "why": why,
                  "frames": n, "duration_s": round(n / fps, 2), "bytes": None}
         self.entries.append(entry)
         self.wall_time_s += time.perf_counter() - t0

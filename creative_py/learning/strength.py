@@ -1,11 +1,18 @@
 """Is a created tool strong enough? A beam estimate from the force the physics measured.
 
-After a created tool's successful trial, the largest contact force the physics put on
-it during the tool action (``max_tool_force_n`` of the trial's record, measured by
-:mod:`creative_py.sim.loads`) is turned into a stress and compared with the strength
+After a created tool's successful trial, the contact force the physics put on it during
+the tool action (the trial's ``tool_load``, measured by :mod:`creative_py.sim.loads`)
+is turned into a stress and compared with the strength
 of printed PLA (:data:`creative_py.mesh.spec.PLA_STRENGTH`), asking for a safety factor
 of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`. The tool's kind gives the
 load model (``KindSpec.load_model`` of :mod:`creative_py.kinds`); the shipped ones:
+
+The force is the robust one (``robust_force_n``: the 95th percentile of the per-step
+summed normal force over the steps with contact), not the one-step peak
+(``max_force_n``), which is a contact spike: the wedge's peak was 3,557 N where the
+load it bore was a few hundred newtons, and it moved with the time step (2,859 N in
+another run of the same trial). The peak is kept beside it (``peak_force_n``, with the
+safety factor it would give) and the check says so in its ``caveat``.
 
 - **hook, stick, paddle** (a cantilever): the handle is held by the gripper and loaded where the
   contact acted, so it is a cantilever from the grasp to the contact. Its lever arm L
@@ -67,8 +74,8 @@ class StrengthCheck:
         The estimate: the handle as a cantilever from the grasp, or a block in
         compression over its footprint.
     force_n : float
-        The largest summed normal force of the tool's contacts over one physics step,
-        newtons.
+        The force checked: the load's robust force (the 95th percentile of the
+        per-step summed normal force over the steps with contact), newtons.
     lever_arm_m : float or None
         Cantilever: distance along the handle from the grasp to the contact, metres.
     section_m : tuple of float
@@ -106,6 +113,12 @@ class StrengthCheck:
         What the estimate assumes.
     reason : str
         Why the tool was rejected (empty otherwise).
+    peak_force_n : float or None
+        The one-step peak of the summed normal force (a contact spike), newtons.
+    peak_safety_factor : float or None
+        The safety factor the peak would give (the same model).
+    caveat : str
+        What the force figures rest on, in words.
     """
 
     tool: str
@@ -131,6 +144,9 @@ class StrengthCheck:
     thickened_into: Optional[str] = None
     note: str = ""
     reason: str = ""
+    peak_force_n: Optional[float] = None
+    peak_safety_factor: Optional[float] = None
+    caveat: str = ""
 
     @property
     def passed(self) -> bool:
@@ -168,6 +184,9 @@ class StrengthCheck:
             "thickened_into": self.thickened_into,
             "note": self.note,
             "reason": self.reason,
+            "peak_force_n": r(self.peak_force_n, 6),
+            "peak_safety_factor": r(self.peak_safety_factor, 3),
+            "caveat": self.caveat,
         }
 
 
@@ -184,8 +203,10 @@ def check_strength(spec: ToolSpec, load: Optional[dict[str, Any]], *,
         The tool; its kind gives the load model (:meth:`KindSpec.load_model`).
     load : dict or None
         The trial's ``tool_load`` (:meth:`creative_py.sim.loads.ToolLoad.to_dict`):
-        ``max_force_n``, ``point`` and ``grasp_point`` in the tool frame, ``bodies``.
-        None gives the verdict ``unmeasured``.
+        ``robust_force_n`` (the force checked; ``max_force_n`` for a load recorded
+        before it existed), ``max_force_n`` (the peak, kept beside it), ``point`` and
+        ``grasp_point`` in the tool frame, ``bodies``. None gives the verdict
+        ``unmeasured``.
     strength_pa, safety_factor : float
         The material's strength and the least safety factor accepted.
     trial : int or None
@@ -193,7 +214,8 @@ def check_strength(spec: ToolSpec, load: Optional[dict[str, Any]], *,
     thickened_from : str or None
         The thinner tool this one replaces (recorded).
     """
-    force = 0.0 if not load else float(load.get("max_force_n", 0.0))
+    peak = 0.0 if not load else float(load.get("max_force_n", 0.0))
+    force = peak if not load else float(load.get("robust_force_n", peak))
     point = None if not load or load.get("point") is None else tuple(load["point"])
     bodies = tuple(load.get("bodies", ())) if load else ()
     common = dict(tool=spec.name, strength_pa=strength_pa,
@@ -206,6 +228,17 @@ def check_strength(spec: ToolSpec, load: Optional[dict[str, Any]], *,
     stress = figures["stress_pa"]
     check = StrengthCheck(force_n=force, safety_factor=strength_pa / stress if stress > 0
                           else None, verdict="", **figures, **common)
+    peak_sf = None
+    if load is not None and check.stress_pa > 0 and force > 0:
+        peak_stress = check.stress_pa * peak / force  # every model is linear in F
+        peak_sf = strength_pa / peak_stress if peak_stress > 0 else None
+    caveat = "" if load is None else (
+        f"checked with {force:.1f} N, the 95th percentile of the per-step contact force "
+        f"over {load.get('contact_steps', 0)} steps with contact; the one-step peak "
+        f"{peak:.1f} N (a contact spike, sensitive to the time step) would give a safety "
+        f"factor of {'-' if peak_sf is None else f'{peak_sf:.1f}'}")
+    check = replace(check, peak_force_n=peak if load is not None else None,
+                    peak_safety_factor=peak_sf, caveat=caveat)
     if load is None:
         verdict = "unmeasured"
     elif check.safety_factor is None or check.safety_factor >= safety_factor:

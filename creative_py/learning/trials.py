@@ -36,7 +36,7 @@ from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
-from creative_py.records.trial import TrialRecord
+from creative_py.records.trial import TrialRecord, verdict_lines
 
 if TYPE_CHECKING:
     from creative_py.sim import PoseTarget
@@ -210,13 +210,17 @@ class TrialRunner:
             # The largest contact force on the tool while it acted (sim/loads.py), what
             # the strength check of a created tool reads.
             max_tool_force_n=ex.tool_load["max_force_n"] if ex.tool_load else None,
-            tool_load=ex.tool_load)
+            tool_load=ex.tool_load,
+            # What the physics measured against its thresholds (sim/oracles.py).
+            verdict=ex.verdict)
         self.trials.append(rec)
         if self.run_folder and n > len(self.replay):
             self.run_folder.append_trial(rec)
+        measured = "; ".join(verdict_lines(ex.verdict))
         self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
                       f"loc {task.location}  {ex.outcome:<11} "
-                      f"tested {', '.join(tested_l) or '-'}")
+                      f"tested {', '.join(tested_l) or '-'}"
+                      + (f"  [{measured}]" if measured else ""))
         return rec, vs
 
     def _physical(self, n: int, phase: str, phase_trial: int, tool: str,
@@ -228,11 +232,12 @@ class TrialRunner:
         images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
         recorder = self.clips.recorder() if self.clips is not None else None
 
-        def verdict(outcome: str, reason: str) -> None:
+        def verdict(outcome: str, reason: str, measured: dict | None) -> None:
             why = self.clips.why(phase, outcome, reason)
             if why is not None:
                 self.clips.write(recorder, why, n, phase, phase_trial, tool, tested,
-                                 outcome, reason, task.location)
+                                 outcome, reason, task.location,
+                                 measured=verdict_lines(measured))
 
         return run_trial(self.world, tool, task.variant, task.location,
                          pose_numbers(pose), self.seed * 1000 + n, images, gui=self.gui,
@@ -271,7 +276,8 @@ class TrialRunner:
             reason=record.reason, perceived_final=None, true_final={},
             sim_time_s=float(record.sim_time_s), wall_time_s=float(record.wall_time_s),
             render_time_s=0.0, steps=0, max_tool_force_n=record.max_tool_force_n or 0.0,
-            tool_load=record.tool_load, facts_before=tuple(tuple(f) for f in record.facts))
+            tool_load=record.tool_load, facts_before=tuple(tuple(f) for f in record.facts),
+            verdict=record.verdict)
 
     def _pose_dict(self, pose: Term) -> dict[str, float]:
         m = self.manifest

@@ -77,6 +77,15 @@ class TrialRecord:
         The largest contact force on the tool while it acted (None when it did not act).
     tool_load : dict or None
         Where and how that force acted (``ToolLoad.to_dict``; the strength check reads it).
+    verdict : dict or None
+        What the physics measured against its thresholds
+        (:func:`creative_py.sim.episode.verdict_data`): ``quantity``, ``value``,
+        ``threshold``, ``unit``, ``relation`` (passing needs ``value relation
+        threshold``), ``holds``, ``threshold_name``, ``measures`` (the other measures by
+        name), ``text`` (all of it in words) and ``asked`` (whether the outcome rests on
+        it); for a motion a guard stopped, ``stop`` (the guard's verdict of the same
+        shape, ``measures["touching"]`` naming what the arm and the tool touched). The
+        reports show its text in the reason cell. None for a trial recorded without it.
     extra : dict
         Keys of the line this version does not know, kept as they were.
     """
@@ -93,7 +102,8 @@ class TrialRecord:
     pose: dict[str, Union[float, str]] = field(default_factory=dict,
                                                metadata=_column("pose"))
     outcome: str = field(metadata=_column("outcome"))
-    reason: str = field(default="", metadata=_column("reason"))
+    reason: str = field(default="", metadata={"column": "reason",
+                                              "cell": lambda r: reason_text(r)})
     hs: str = ""
     hg: str = ""
     wall_time_s: float = 0.0
@@ -104,6 +114,7 @@ class TrialRecord:
     facts: list[list[Any]] = field(default_factory=list)
     max_tool_force_n: Union[float, None] = None
     tool_load: Union[dict[str, Any], None] = None
+    verdict: Union[dict[str, Any], None] = None
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
 
     # The column order of the reports: # phase n tool variant loc pose tested violated
@@ -187,11 +198,53 @@ def trial_columns(record_type: type = TrialRecord
     shown = [f for f in fields(record_type) if "column" in f.metadata]
     order = {n: i for i, n in enumerate(record_type.COLUMN_ORDER)}
     shown.sort(key=lambda f: order.get(f.name, len(order)))
-    return [(f.metadata["column"], _cell(f.name)) for f in shown]
+    return [(f.metadata["column"], f.metadata.get("cell") or _cell(f.name)) for f in shown]
 
 
 def _cell(name: str) -> Callable[[TrialRecord], str]:
     return lambda record: cell_text(getattr(record, name))
+
+
+def verdict_words(verdict: Any) -> str:
+    """Return a trial's measured verdict (the ``verdict`` field) in words: the
+    guard's measure of a stopped motion first, then the oracle's (empty for none)."""
+    if not isinstance(verdict, dict):
+        return ""
+    parts = []
+    stop = verdict.get("stop")
+    if isinstance(stop, dict) and stop.get("text"):
+        parts.append(f"stopped: {stop['text']}")
+    if verdict.get("text"):
+        parts.append(str(verdict["text"]))
+    return " | ".join(parts)
+
+
+def verdict_lines(verdict: Any) -> list[str]:
+    """Return a trial's measured verdict as short lines (a clip's caption, the
+    terminal): the guard's measure and what was touching when it stopped a motion,
+    then the oracle's measure and the one beside it (empty for none)."""
+    if not isinstance(verdict, dict):
+        return []
+    lines = []
+    stop = verdict.get("stop")
+    if isinstance(stop, dict):
+        lines.append(f"stopped: {stop.get('brief') or stop.get('text', '')}")
+        touching = (stop.get("measures") or {}).get("touching")
+        if touching:
+            lines.append(f"touching {', '.join(touching)}")
+    if verdict.get("brief") or verdict.get("text"):
+        lines.append(str(verdict.get("brief") or verdict["text"]))
+    if verdict.get("note"):
+        lines.append(str(verdict["note"]))
+    return lines
+
+
+def reason_text(record: TrialRecord) -> str:
+    """Return the reason cell of the reports: the reason and, after it, the measured
+    verdict (``reason -- measured``; ``-`` for neither)."""
+    measured = verdict_words(record.verdict)
+    text = " -- ".join(t for t in (record.reason, measured) if t)
+    return text or "-"
 
 
 def cell_text(value: Any) -> str:
@@ -306,4 +359,4 @@ def _jsonable(value: Any) -> Any:
 
 
 __all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
-           "trial_columns"]
+           "reason_text", "trial_columns", "verdict_lines", "verdict_words"]

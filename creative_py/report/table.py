@@ -145,4 +145,6 @@ def strength_note(strength: dict | None) -> str:
         text += f", thickened into {strength['thickened_into']}"
     if strength.get("reason"):
         text += f": {strength['reason']}"
+    if strength.get("caveat"):
+        text += f" ({strength['caveat']})"
     return text

@@ -47,7 +47,7 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.sim.core import Point, Pose, Quat, Sim
-from creative_py.sim.types import SkillOutcome, SkillStatus
+from creative_py.sim.types import SkillOutcome, SkillStatus, Verdict
 
 log = logging.getLogger(__name__)
 
@@ -758,10 +758,26 @@ class Baxter:
     def _check_turn(self, commanded: Quat, check: bool) -> MoveResult | None:
         err = quat_angle(self.gripper_pose()[1], commanded)
         if check and err > self.config.max_turn_error:
+            stop = Verdict("gripper twist", math.degrees(err),
+                           math.degrees(self.config.max_turn_error), "deg", "<=", False,
+                           threshold_name="max_turn_error",
+                           measures={"touching_ids": self.touching()})
             return MoveResult("blocked", f"the gripper was twisted {math.degrees(err):.0f} "
                               "degrees away from its commanded orientation: something is "
-                              "in the way")
+                              "in the way", stop)
         return None
+
+    def touching(self) -> list[tuple[int, int]]:
+        """Return the pairs of bodies ``(robot or held body, other)`` in contact after
+        the last physics step (what a stopped motion ran into)."""
+        c = self.sim.client
+        mine = [self.body] + ([self.held] if self.held is not None else [])
+        pairs = set()
+        for body in mine:
+            for cp in pb.getContactPoints(bodyA=body, physicsClientId=c):
+                if cp[2] not in mine:  # not the arm on itself or on what it holds
+                    pairs.add((int(body), int(cp[2])))
+        return sorted(pairs)
 
     def _check(self, commanded: Point, check: bool,
                watch: Sequence[int] = ()) -> MoveResult | None:
@@ -775,9 +791,12 @@ class Baxter:
                 return MoveResult("invalid", why)
         err = math.dist(actual, commanded)
         if check and err > self.config.max_tracking_error:
+            stop = Verdict("gripper lag", err, self.config.max_tracking_error, "m", "<=",
+                           False, threshold_name="max_tracking_error",
+                           measures={"touching_ids": self.touching()})
             return MoveResult("blocked", f"gripper lagged its target by {err * 100:.1f} cm "
                               f"at ({commanded[0]:.3f}, {commanded[1]:.3f}, "
-                              f"{commanded[2]:.3f}) m: something is in the way")
+                              f"{commanded[2]:.3f}) m: something is in the way", stop)
         return None
 
     # ----------------------------------------------------------------- grasp

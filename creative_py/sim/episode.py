@@ -45,7 +45,7 @@ import pybullet as pb
 
 from creative_py.sim.loads import ToolLoad, ToolLoadMonitor
 from creative_py.sim.recorder import Recorder
-from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult
+from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult, Verdict
 from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
 from creative_py.world import PhysicsSettings, WorldFileError
@@ -185,6 +185,8 @@ class Episode:
                 steps_per_waypoint=rs.steps_per_waypoint))
             self.robot.reset_posture(self._start_posture())
         self.run(w.scene.settle_time)
+        # Where the tracked objects start (an oracle measures how far they moved).
+        self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
 
     def _pose_of(self, table: dict[str, Any]):
         from creative_py.sim.baxter import GRIPPER_ATTITUDES
@@ -324,8 +326,28 @@ class Episode:
             if monitor is not None:
                 self.tool_load = monitor.stop()
         if not res.ok:
-            return SkillOutcome(res.status, f"{name}: {res.reason}")
+            stop = res.stop
+            if stop is not None and "touching_ids" in stop.measures:
+                stop = self._name_touching(stop)
+            return SkillOutcome(res.status, f"{name}: {res.reason}", stop)
         return res
+
+    def _name_touching(self, stop: Verdict) -> Verdict:
+        """Return a guard's verdict with the bodies it saw touching named (scene
+        bodies, the tool, ``robot``), and them said in its detail."""
+        from dataclasses import replace
+
+        names = {b.id: n for n, b in self.bodies.items()}
+        names[self.tool_body] = self.spec.name
+        if self.robot is not None and not self.robot_parked:
+            names[self.robot.body] = "robot"
+        measures = dict(stop.measures)
+        pairs = sorted({f"{names.get(a, f'body{a}')} against {names.get(b, f'body{b}')}"
+                        for a, b in measures.pop("touching_ids")})
+        measures["touching"] = pairs
+        detail = ("touching: " + ", ".join(pairs)) if pairs else "touching nothing"
+        return replace(stop, measures=measures,
+                       detail="; ".join(t for t in (stop.detail, detail) if t))
 
     def run_primitive(self, primitive: str, pose: Sequence[float] | None = None,
                       **options: Any) -> SkillOutcome:
@@ -450,9 +472,23 @@ class Episode:
     # ------------------------------------------------------------------- oracle
     def goal_reached(self) -> bool:
         """Return whether the case's goal holds in the simulated state (the oracle)."""
+        return bool(self.verdict().holds)
+
+    def verdict(self) -> Verdict:
+        """Return the oracle's measured verdict on the simulated state: whether the goal
+        holds, the quantity measured and the threshold it was judged by
+        (:mod:`creative_py.sim.oracles`)."""
+        from dataclasses import replace
+
         spec = self.world.oracle
         opts = resolve_options(spec.options, self.ns, "oracle", words=oracle_words(self.world))
-        return bool(spec.oracle.holds(self, opts))
+        kind = spec.oracle
+        verdict = kind.judge(self, opts)
+        if kind.threshold and not verdict.threshold_name:
+            raw = spec.options.get(kind.threshold)
+            verdict = replace(verdict, threshold_name=(
+                raw if isinstance(raw, str) else kind.threshold))
+        return verdict
 
     def sim_time(self) -> float:
         """Return the simulated time so far, seconds (across time-step changes)."""
@@ -496,14 +532,18 @@ def run_trial(world: World, tool: str, variant: str, location: int,
               images_dir: Path | None = None, gui: bool = False,
               pose_target: PoseTarget | None = None,
               record: Recorder | None = None,
-              verdict: Callable[[str, str], None] | None = None) -> TrialResult:
+              verdict: Callable[[str, str, dict | None], None] | None = None
+              ) -> TrialResult:
     """Run one physical trial: every skill of the manifest in order, then the oracle.
 
     ``pose=None`` uses the demonstration's pose. The outcome comes from the simulated
     state only (:func:`trial_outcome` says what each way of ending means). The
     robot's observation before the tool action (or where a blocked motion stopped) is
-    the result's ``facts_before``, the state the learner labels. ``verdict(outcome,
-    reason)`` is called once the physics has given the outcome, still inside the
+    the result's ``facts_before``, the state the learner labels. The result's
+    ``verdict`` is what the oracle measured (:meth:`Episode.verdict`), asked or not,
+    with the guard's measure of a stopped motion. ``verdict(outcome, reason,
+    measured)`` (``measured`` the result's ``verdict``) is called once the physics has
+    given the outcome, still inside the
     episode (where a kept trial's frames are rendered). With ``record``, the trial's
     poses are kept for a clip: the verdict renders them if it keeps the clip; without a
     verdict they are rendered (``record.render()``) at the end. ``wall_time_s`` is the
@@ -517,7 +557,7 @@ def run_trial(world: World, tool: str, variant: str, location: int,
         played = play_trial(ep, pose)
         wall_s = time.perf_counter() - t0
         if verdict is not None:
-            verdict(played.outcome, played.reason)  # the physics is done with
+            verdict(played.outcome, played.reason, played.verdict)  # the physics is done with
         load = ep.tool_load if played.acted else None
         final = played.final
         result = TrialResult(
@@ -528,7 +568,8 @@ def run_trial(world: World, tool: str, variant: str, location: int,
             true_final=played.truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
             render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
             max_tool_force_n=load.max_force_n if load else 0.0,
-            tool_load=load.to_dict() if load else None, facts_before=played.facts_before)
+            tool_load=load.to_dict() if load else None, facts_before=played.facts_before,
+            verdict=played.verdict)
         if record is not None and verdict is None:
             record.render()
     return result
@@ -538,7 +579,7 @@ class Played(NamedTuple):
     """What :func:`play_trial` did: the outcome and reason, the facts observed before
     the tool action (or where a blocked motion stopped), the last observation (None
     when none was taken), the true poses after the trial, and whether the tool action
-    started."""
+    started, and the measured verdict (:func:`verdict_data`)."""
 
     outcome: str
     reason: str
@@ -546,6 +587,22 @@ class Played(NamedTuple):
     final: Observation | None
     truth: dict[str, tuple[float, ...]]
     acted: bool
+    verdict: dict[str, Any] | None = None
+
+
+def verdict_data(oracle: Verdict | None, asked: bool,
+                 stop: Verdict | None) -> dict[str, Any] | None:
+    """Return a trial's measured verdict as JSON-ready data: the oracle's
+    (:meth:`Verdict.to_dict`) with ``asked`` (whether the outcome rests on it: every
+    skill ran, or the tool acted until stopped) and, for a motion a guard stopped,
+    ``stop`` (the guard's verdict: what it measured and what was touching)."""
+    if oracle is None and stop is None:
+        return None
+    data = oracle.to_dict() if oracle is not None else {}
+    data["asked"] = bool(asked)
+    if stop is not None:
+        data["stop"] = stop.to_dict()
+    return data
 
 
 def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,
@@ -580,8 +637,17 @@ def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,
             break
     # The oracle is asked when the goal can have been reached: every skill ran, or
     # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
-    reached = status.ok or (acted and status.status == "blocked")
-    reached = reached and ep.goal_reached()
+    asked = status.ok or (acted and status.status == "blocked")
+    # The oracle measures every trial (the measure is reported); it decides only when
+    # asked. A blow-up may leave nothing finite to measure.
+    try:
+        oracle = ep.verdict()
+    except (ValueError, ArithmeticError) as exc:
+        if asked:
+            raise
+        log.debug("no oracle measure after %s: %s", status.status, exc)
+        oracle = None
+    reached = asked and oracle is not None and oracle.holds
     outcome, reason = trial_outcome(status, acted, reached)
     if observe and outcome == "blocked":
         # What the robot sees where the motion stopped: the catalogue and the task's
@@ -594,7 +660,8 @@ def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,
     bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
     if bad and outcome != "invalid":
         outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
-    return Played(outcome, reason, tuple(facts), final, truth, acted)
+    return Played(outcome, reason, tuple(facts), final, truth, acted,
+                  verdict_data(oracle, asked, status.stop))
 
 
 def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:

@@ -54,7 +54,7 @@ import pybullet as pb
 
 from creative_py.sim.bodies import frame_pose, set_frame_pose
 from creative_py.sim.core import Pose
-from creative_py.sim.types import SkillOutcome
+from creative_py.sim.types import SkillOutcome, Verdict
 from creative_py.sim.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
                                    roll_of, tool_orientation)
 
@@ -128,8 +128,16 @@ def slip_guard(ep: Any, opts: Mapping[str, Any]) -> Callable[[], SkillOutcome | 
             return None
         angle, offset = grasp_slip(ep)
         if (max_rad > 0.0 and angle > max_rad) or (max_m > 0.0 and offset > max_m):
+            by_angle = max_rad > 0.0 and angle > max_rad
+            stop = Verdict("grasp slip", angle if by_angle else offset,
+                           max_rad if by_angle else max_m, "rad" if by_angle else "m",
+                           "<=", False,
+                           threshold_name="grasp_slip_max_rad" if by_angle
+                           else "grasp_slip_max_m",
+                           measures={"slip_rad": round(angle, 6), "slip_m": round(offset, 6),
+                                     "touching_ids": ep.robot.touching()})
             return SkillOutcome("blocked", f"the tool slipped in the grasp by "
-                                f"{angle:.3f} rad, {offset * 1000:.1f} mm: it is jammed")
+                                f"{angle:.3f} rad, {offset * 1000:.1f} mm: it is jammed", stop)
         return None
 
     return check
@@ -313,7 +321,7 @@ def place_on_floor(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     for goal in ((g[0], g[1], g[2] + 0.08), tuple(opts["retreat"])):
         res = ep.kind.move(ep, goal, opts["gripper_yaw"], None)
         if not res.ok:
-            return SkillOutcome(res.status, f"retreat: {res.reason}")
+            return SkillOutcome(res.status, f"retreat: {res.reason}", res.stop)
     _swing(ep, holder, None)
     why = ep.sim.blow_up(ep.tool_body)
     return SkillOutcome("invalid", why) if why else SkillOutcome("ok")

@@ -29,6 +29,104 @@ Fact = tuple[Any, ...]
 """A primitive fact as a tuple: predicate name then arguments, e.g. ``("held", "t1")``."""
 
 
+_RELATIONS = {"<": lambda a, b: a < b, "<=": lambda a, b: a <= b,
+              ">": lambda a, b: a > b, ">=": lambda a, b: a >= b}
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """A measured verdict: what the physics measured and the threshold it was judged by.
+
+    Every oracle (:mod:`creative_py.sim.oracles`) and every guard that stops a motion
+    gives one, so a failure says how far it was from success, in the world's units.
+
+    Attributes
+    ----------
+    quantity : str
+        What was measured, in words (``cube1 centre x``, ``door1 angle``,
+        ``gripper lag``).
+    value : float or None
+        The measured value (None when there was nothing to measure).
+    threshold : float or None
+        The limit it is judged against.
+    unit : str
+        The unit of both (``m``, ``deg``, ``rad``).
+    relation : str
+        What passing needs: ``value relation threshold`` with one of ``<``, ``<=``,
+        ``>``, ``>=`` (for a guard: what lets the motion go on).
+    holds : bool
+        Whether the judgement passed (the goal holds; the motion was not stopped).
+    threshold_name : str
+        Where the threshold comes from (a scene expression or an option's name).
+    detail : str
+        The other measures behind the judgement, in words (empty when none).
+    measures : dict
+        The other measures by name (numbers, names), JSON-ready.
+    note : str
+        The measure beside the main one that the judgement also rests on, in a few
+        words (``closed 0.3 deg after contact, needs < 2``), for short lines.
+    """
+
+    quantity: str
+    value: float | None
+    threshold: float | None
+    unit: str
+    relation: str
+    holds: bool
+    threshold_name: str = ""
+    detail: str = ""
+    measures: dict[str, Any] = field(default_factory=dict)
+    note: str = ""
+
+    def met(self) -> bool:
+        """Return whether ``value relation threshold`` (False without a value)."""
+        if self.value is None or self.threshold is None:
+            return False
+        return bool(_RELATIONS[self.relation](self.value, self.threshold))
+
+    def text(self) -> str:
+        """Return the verdict in words, e.g. ``door1 angle 12.5 deg (needs >= 20 deg);
+        closed 0.3 deg after touching the tool (needs < 2 deg)``."""
+        value = ("unmeasured" if self.value is None
+                 else f"{_num(self.value, self.unit)} {self.unit}")
+        limit = ("" if self.threshold is None
+                 else f"{_num(self.threshold, self.unit)} {self.unit}")
+        src = f", {self.threshold_name}" if self.threshold_name else ""
+        text = f"{self.quantity} {value} (needs {self.relation} {limit}{src})"
+        return f"{text}; {self.detail}" if self.detail else text
+
+    def brief(self) -> str:
+        """Return the main measure on one short line (a clip caption's), e.g.
+        ``door1 angle 12.3 deg, needs >= 20.0``."""
+        value = ("unmeasured" if self.value is None
+                 else f"{_num(self.value, self.unit)} {self.unit}")
+        limit = "" if self.threshold is None else _num(self.threshold, self.unit)
+        return f"{self.quantity} {value}, needs {self.relation} {limit}"
+
+    def to_dict(self) -> dict[str, Any]:
+        """Return the verdict as JSON-ready data with its :meth:`text`."""
+        def r(v):
+            return None if v is None else float(f"{float(v):.6g}")
+        return {"quantity": self.quantity, "value": r(self.value),
+                "threshold": r(self.threshold), "unit": self.unit,
+                "relation": self.relation, "holds": bool(self.holds),
+                "threshold_name": self.threshold_name,
+                "measures": json.loads(json.dumps(self.measures, default=str)),
+                "text": self.text(), "brief": self.brief(), "note": self.note}
+
+
+_DECIMALS = {"m": 4, "deg": 1, "rad": 4, "N": 1}
+
+
+def _num(v: float, unit: str = "") -> str:
+    """A measured number as the reports show it: tenths of millimetres in metres, tenths of
+    degrees (a guard's lag of 0.0302 m against 0.03 shows), four significant digits
+    otherwise (no ``-0``)."""
+    d = _DECIMALS.get(unit)
+    text = f"{v:.4g}" if d is None else f"{v:.{d}f}"
+    return text[1:] if text.startswith("-") and float(text) == 0.0 else text
+
+
 @dataclass(frozen=True)
 class SkillOutcome:
     """How a skill or a single arm motion ended: ``status`` and why.
@@ -41,10 +139,15 @@ class SkillOutcome:
         skill that cannot run in this state).
     reason : str
         Why, in words (empty for a plain ``ok``).
+    stop : Verdict or None
+        For a motion a guard stopped: what the guard measured against its limit (the
+        gripper's lag, its twist, the grasp's slip) and which bodies the robot and
+        the held tool touched then (``measures["touching"]``).
     """
 
     status: SkillStatus
     reason: str = ""
+    stop: "Verdict | None" = None
 
     @property
     def ok(self) -> bool:
@@ -119,6 +222,11 @@ class TrialResult:
     facts_before : tuple of Fact
         What the robot observed just before the tool action, or where a blocked motion
         stopped (empty when a skill before the action ended unreachable or invalid).
+    verdict : dict or None
+        What the physics measured against its thresholds
+        (:func:`creative_py.sim.episode.verdict_data`): the oracle's quantity, value,
+        threshold, unit, relation and judgement (measured in every trial, ``asked``
+        when the outcome rests on it) and, for a motion a guard stopped, ``stop``.
     """
 
     case: str
@@ -138,6 +246,7 @@ class TrialResult:
     max_tool_force_n: float = 0.0
     tool_load: dict[str, Any] | None = None
     facts_before: tuple[Fact, ...] = ()
+    verdict: dict[str, Any] | None = None
 
     def to_dict(self) -> dict[str, Any]:
         """Return the result as plain JSON-ready data (tuples become lists)."""

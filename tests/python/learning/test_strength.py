@@ -86,9 +86,35 @@ def test_a_block_gets_a_compression_check_not_a_beam_check():
         thickening_fact(check)
 
 
+def test_the_check_uses_the_robust_force_and_keeps_the_peak_with_a_caveat():
+    spec = HookSpec("h", 0.6, handle_width=0.009, hook_length=0.03, hook_width=0.012)
+    robust = {**load(600.0, 0.589), "robust_force_n": 3.0, "contact_steps": 420}
+    check = check_strength(spec, robust)
+    assert check.force_n == 3.0 and check.peak_force_n == 600.0
+    # The same model under each force: the stress is linear in it.
+    assert check.stress_pa == pytest.approx(6 * 3.0 * 0.549 / 0.009 ** 3)
+    assert check.verdict == "pass"
+    assert check.peak_safety_factor == pytest.approx(check.safety_factor * 3.0 / 600.0)
+    assert check.peak_safety_factor < MIN_SAFETY_FACTOR   # the spike alone would fail it
+    assert "3.0 N" in check.caveat and "600.0 N" in check.caveat
+    assert "420 steps" in check.caveat and "peak" in check.caveat
+    d = check.to_dict()
+    assert d["force_n"] == 3.0 and d["peak_force_n"] == 600.0
+    assert d["peak_safety_factor"] == pytest.approx(check.peak_safety_factor, abs=1e-3)
+    assert d["caveat"] == check.caveat
+
+
+def test_a_load_recorded_before_the_robust_force_is_checked_at_its_peak():
+    spec = HookSpec("h", 0.6, handle_width=0.009, hook_length=0.03, hook_width=0.012)
+    check = check_strength(spec, load(3.0, 0.589))
+    assert check.force_n == check.peak_force_n == 3.0
+    assert check.peak_safety_factor == pytest.approx(check.safety_factor)
+
+
 def test_no_recorded_load_is_unmeasured_not_passed_silently():
     check = check_strength(HookSpec("h", 0.3), None)
     assert check.verdict == "unmeasured" and check.force_n == 0.0
+    assert check.peak_force_n is None and check.caveat == ""
 
 
 @pytest.mark.sim

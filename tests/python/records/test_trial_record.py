@@ -164,3 +164,30 @@ def test_a_new_optional_field_round_trips_and_shows_in_the_reports(tmp_path):
     assert "grip" in blocks and "12.5" in blocks
     page = render_html(run)
     assert "<th>grip</th>" in page and "12.5" in page
+
+
+def test_the_reason_cell_and_the_short_lines_carry_the_measured_verdict():
+    from creative_py.records.trial import reason_text, verdict_lines
+    from creative_py.sim.types import Verdict
+
+    stop = Verdict("gripper lag", 0.032, 0.03, "m", "<=", False,
+                   threshold_name="max_tracking_error",
+                   measures={"touching": ["robot against base1"]},
+                   detail="touching: robot against base1")
+    oracle = Verdict("box1 centre x", 1.07, 0.85, "m", "<", False,
+                     threshold_name="shelf1.mouth_x", note="moved 0.0 cm")
+    verdict = {**oracle.to_dict(), "asked": False, "stop": stop.to_dict()}
+    rec = TrialRecord(trial=1, phase="use", variant="standard", location=1, tool="rake_a1",
+                      outcome="blocked", reason="position_tool: gripper lagged",
+                      verdict=verdict)
+    assert TrialRecord.from_json(rec.to_json()) == rec
+    assert reason_text(rec) == ("position_tool: gripper lagged -- stopped: "
+                                f"{stop.text()} | {oracle.text()}")
+    assert verdict_lines(rec.verdict) == [
+        "stopped: gripper lag 0.0320 m, needs <= 0.0300", "touching robot against base1",
+        "box1 centre x 1.0700 m, needs < 0.8500", "moved 0.0 cm"]
+    # A record written before verdicts: the reason alone.
+    old = TrialRecord(trial=2, phase="use", variant="standard", location=1, tool="t",
+                      outcome="failure", reason="goal not reached")
+    assert reason_text(old) == "goal not reached" and verdict_lines(old.verdict) == []
+    assert "verdict" not in old.to_dict()

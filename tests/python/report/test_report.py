@@ -27,6 +27,7 @@ import numpy as np
 import pytest
 
 from creative_py.learning.run import RunOptions, run_case
+from creative_py.records.trial import TrialRecord, reason_text
 from creative_py.report.contents import read_run
 from creative_py.report.page import render_html
 
@@ -207,11 +208,13 @@ def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real
     images = dom.sources("img")
     assert "trials.png" in images
     assert imageio.imread(_local_file(real_run, "trials.png")).shape[0] > 100
-    # One table row per recorded trial, with its tool, outcome and whole reason.
+    # One table row per recorded trial, with its tool, outcome and whole reason, the
+    # measured verdict after it.
     assert len(dom.rows) == len(trials) >= 3
     for row, t in zip(dom.rows, trials):
         assert row[0] == str(t["trial"]) and t["tool"] in row and t["outcome"] in row
-        assert row[-1] == t["reason"]
+        assert row[-1] == reason_text(TrialRecord.from_dict(t))
+        assert row[-1].startswith(t["reason"]) and t["verdict"]["text"] in row[-1]
     # The created tool: its render and its dimensions.
     summary = json.loads((real_run / "summary.json").read_text())
     created = summary["create"]["created_tools"]
@@ -297,7 +300,7 @@ def test_the_terminal_report_shows_the_longest_reason_whole_in_80_columns(real_r
     out = _creative("report", str(real_run), "--width", "80").stdout
     assert max(len(line) for line in out.splitlines()) <= 80
     reasons = _block_fields(out, "reason")
-    assert reasons[: len(trials)] == [t["reason"] for t in trials]
+    assert reasons[: len(trials)] == [reason_text(TrialRecord.from_dict(t)) for t in trials]
     assert "…" not in out
 
 

@@ -31,3 +31,20 @@ def test_a_hook_trial_records_a_positive_force_where_the_prong_pulls_the_cube():
     # The gripper holds the handle at its grip point.
     assert load.grasp_point == pytest.approx(spec.grip_point, abs=1e-3)
     assert ToolLoad.from_dict(load.to_dict()) == ToolLoad.from_dict(result.tool_load)
+
+
+def test_a_wedge_trial_keeps_a_robust_force_beside_the_contact_spike():
+    # The door meeting the wedge gives a one-step spike; the force it then bears for
+    # the rest of the release is far lower (the strength check uses that one).
+    world = load_world(get_case("wedge"))
+    result = run_trial(world, "wedge_a3", "standard", 1, pose_target=poses(world))
+    assert result.outcome == "success", result.reason
+    load = ToolLoad.from_dict(result.tool_load)
+    assert 0 < load.contact_steps <= load.steps
+    assert 0 < load.robust_force_n < load.max_force_n
+    assert load.impulse_ns > 0
+    # The percentile is of the per-step sums over the steps with contact: at most the
+    # peak, and at least the mean force over the contact time (sums are mostly lower).
+    dt = world.physics["rest"].time_step
+    assert load.robust_force_n >= 0.5 * load.impulse_ns / (load.contact_steps * dt)
+    assert ToolLoad.from_dict(load.to_dict()) == load
