@@ -30,8 +30,12 @@ def test_each_ending_has_one_outcome(status, acted, reached, want):
 
 @pytest.mark.sim
 def test_a_blocked_trial_keeps_what_the_robot_saw_where_it_stopped():
+    # The short handle at the pose the learning runs test it with (dx 0.0375 m): its
+    # wrist jams at the mouth past the tracking guard whatever the robot model (at the
+    # demonstration's dx 0.03 the lag straddles the guard).
     world = hook_world()
-    result = run_trial(world, "hook_a1", "standard", 1, pose_target=poses(world))
+    result = run_trial(world, "hook_a1", "standard", 1, pose=(0.0375, 0.0, 0.0),
+                       pose_target=poses(world))
     assert result.outcome == "blocked", result.reason
     kinds = {f[0] for f in result.facts_before}
     assert {"pose", "object_kind"} <= kinds       # the task and the catalogue
