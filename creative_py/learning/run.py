@@ -274,14 +274,25 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     return run
 
 
-def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any]:
+DEMO_CHECK_SEED = 0
+"""The seed of the sensor noise in the demonstration that checks a drawn world (the
+world must not depend on a run's seed; runs of seed 0 see that very demonstration)."""
+
+
+def draw_catalogue_world(engine: Engine, world: Any, seed: int,
+                         check_demonstration: bool = True) -> dict[str, Any]:
     """Draw a randomised world of ``world`` for world seed ``seed``
     (:func:`creative_py.sim.world.draw_world`): the engine gives each catalogued
     number's own qualitative range (``catalogue_ranges``) and checks that every drawn
     object keeps its structural literals; the physics checks that it lies still where
-    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again."""
+    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again.
+    With ``check_demonstration``, the trainer's demonstration runs in the drawn world
+    (sensor noise of :data:`DEMO_CHECK_SEED`) and the demonstration's location is
+    drawn again until it reaches the goal (the drawn world's ``redraws`` counts the
+    times)."""
     from dataclasses import replace
 
+    from creative_py.learning.tool_use import DemonstrationFailed, run_demonstration
     from creative_py.sim import tool_rests
     from creative_py.sim.tools import catalogue_facts
 
@@ -304,7 +315,16 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any
         item = replace(world.items[name], spec=spec)
         return tool_rests(replace(world, items={**world.items, name: item}), name)
 
-    return draw_world(world, seed, ranges, keeps=keeps)
+    def demonstrates(drawn: dict[str, Any]) -> bool:
+        new = apply_drawn(world, drawn)
+        try:
+            run_demonstration(new, seed=DEMO_CHECK_SEED)
+        except DemonstrationFailed:
+            return False
+        return True
+
+    return draw_world(world, seed, ranges, keeps=keeps,
+                      demonstrates=demonstrates if check_demonstration else None)
 
 
 def check_manifest(engine: Engine, manifest: Any) -> None:
