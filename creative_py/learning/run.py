@@ -274,6 +274,22 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     return run
 
 
+def catalogue_ranges(engine: Engine, world: Any) -> dict[str, dict[str, tuple]]:
+    """Return ``object -> {catalogue fact -> (low, high, bounds, value)}``: the
+    qualitative range of each catalogued number and the value it stands for (the
+    engine's ``catalogue_ranges``; what :func:`creative_py.sim.world.draw_world` draws
+    inside)."""
+    from creative_py.sim.tools import catalogue_facts
+
+    facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
+    ranges: dict[str, dict[str, tuple[float, float, str, str]]] = {}
+    for r in engine.catalogue_ranges(world.manifest.id, facts):
+        obj, fact, _x, _prop, value, lo, hi, bounds = r.args
+        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds),
+                                                      str(value))
+    return ranges
+
+
 DEMO_CHECK_SEED = 0
 """The seed of the sensor noise in the demonstration that checks a drawn world (the
 world must not depend on a run's seed; runs of seed 0 see that very demonstration)."""
@@ -297,12 +313,7 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int,
     from creative_py.sim.tools import catalogue_facts
 
     case = world.manifest.id
-    facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
-    ranges: dict[str, dict[str, tuple[float, float, str, str]]] = {}
-    for r in engine.catalogue_ranges(case, facts):
-        obj, fact, _x, _prop, value, lo, hi, bounds = r.args
-        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds),
-                                                      str(value))
+    ranges = catalogue_ranges(engine, world)
 
     def literals(spec: Any) -> set[str]:
         state = engine.abstract_state(case, [fact_term(f) for f in catalogue_facts(spec)])
