@@ -5,12 +5,14 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
 
 * ``id``, ``title``, ``ontology`` (the file ``ontology/cases/<ontology>.pl`` that holds
   the case's knowledge), ``trial_budget`` (N of Algorithm 1), optional ``paper_trials``
-  (the paper's count of tool-use trials, marked on a sweep's plot);
+  (the paper's count of tool-use trials, marked on a sweep's plot), both within
+  :data:`TRIAL_BUDGET`;
 * ``[roles]``: which ``objects.toml`` tables are the candidate tools, the target and
   the context object; ``goal``: the task's goal literals;
 * ``[[skill]]``: the innate skills in plan order, each bound to a simulator primitive,
   with the roles of its arguments; one takes the pose, one is the tool action;
-* ``[pose]``: the pose term's name and its parameters (name, unit, bounds);
+* ``[pose]``: the pose term's name and its parameters (name, unit, bounds ``min`` and
+  ``max`` within +-:data:`POSE_LIMIT`);
 * ``[[variant]]``: task variants with the scene values they set, one marked ``harder``;
 * ``[demonstration]``: the trainer's tool, variant, location, skills and pose;
 * ``[randomise]`` (optional): how ``--world-seed N`` jitters the target's locations,
@@ -21,7 +23,12 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
   inside each object's own qualitative range, where the simulator needs it, and a
   table per qualitative value (``short = {max = 0.20}``) narrows the draw of the
   objects that have that value, where the physics' boundary lies inside the
-  ontology's range.
+  ontology's range (every ``min``, ``max`` and ``jitter`` within
+  +-:data:`RANDOMISE_LIMIT`).
+
+The skills' ``options`` are checked where they are resolved, in every variant and
+location (:func:`creative_py.sim.world.check_values`, the bounds of
+:data:`creative_py.sim.primitives.OPTION_BOUNDS`).
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under
 ``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field
@@ -45,6 +52,16 @@ ROLES = ("tool", "target", "context")
 """The roles a skill argument can take."""
 
 _ID = re.compile(r"[a-z][a-z0-9_]*\Z")
+
+TRIAL_BUDGET = (1, 10000)
+"""The bounds of ``trial_budget`` and ``paper_trials``, trials."""
+
+POSE_LIMIT = 10.0
+"""The largest size of a ``[[pose.param]]``'s ``min`` and ``max`` (its unit: m, rad)."""
+
+RANDOMISE_LIMIT = 1000.0
+"""The largest size of a ``[randomise]`` ``min``, ``max`` (a scene value's or a spec
+field's own unit: m, rad, degrees) and ``jitter``."""
 
 
 @dataclass(frozen=True)
@@ -216,8 +233,9 @@ def read_manifest(folder: Path) -> CaseManifest:
         raise f.error("id", f"must be a lower-case Prolog atom, got {cid!r}")
     title = f.str("title")
     ontology = f.str("ontology")
-    budget = f.int("trial_budget", minimum=1)
-    paper_trials = f.int("paper_trials", minimum=1) if f.has("paper_trials") else None
+    budget = f.int("trial_budget", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
+    paper_trials = (f.int("paper_trials", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
+                    if f.has("paper_trials") else None)
     roles = f.table("roles")
     tools_table, target, context = roles.str("tools"), roles.str("target"), roles.str("context")
     roles.done()
@@ -271,7 +289,8 @@ def _read_pose(f: Fields) -> tuple[str, tuple[PoseParam, ...]]:
     pose_term = pf.str("term")
     params = []
     for p in pf.tables("param"):
-        lo, hi = p.float("min"), p.float("max")
+        lo = p.float("min", minimum=-POSE_LIMIT, maximum=POSE_LIMIT)
+        hi = p.float("max", minimum=-POSE_LIMIT, maximum=POSE_LIMIT)
         if lo > hi:
             raise p.error("max", f"must be >= min ({lo}), got {hi}")
         params.append(PoseParam(p.str("name"), p.str("unit"), lo, hi, p.str("doc", "")))
@@ -334,10 +353,12 @@ def _read_randomise(f: Fields) -> tuple[tuple[LocationJitter, ...],
     lf = rf.table("location", {})
     for key in list(lf.data):
         jf = lf.table(key)
-        lo, hi = jf.float("min"), jf.float("max")
+        lo = jf.float("min", minimum=-RANDOMISE_LIMIT, maximum=RANDOMISE_LIMIT)
+        hi = jf.float("max", minimum=-RANDOMISE_LIMIT, maximum=RANDOMISE_LIMIT)
         if lo > hi:
             raise jf.error("max", f"must be >= min ({lo}), got {hi}")
-        jitters.append(LocationJitter(key, jf.float("jitter", minimum=0.0), lo, hi))
+        jitters.append(LocationJitter(key, jf.float("jitter", minimum=0.0,
+                                                    maximum=RANDOMISE_LIMIT), lo, hi))
         jf.done()
     lf.done()
     rf.done()
@@ -365,8 +386,9 @@ def _read_catalogue_bounds(cf: Fields) -> tuple[tuple[tuple[str, float, float], 
 
 def _min_max(t: Fields) -> tuple[float, float]:
     """Return a table's optional ``min`` and ``max`` (unbounded when absent), min <= max."""
-    lo = t.float("min", -math.inf) if t.has("min") else -math.inf
-    hi = t.float("max", math.inf) if t.has("max") else math.inf
+    lim = RANDOMISE_LIMIT
+    lo = t.float("min", minimum=-lim, maximum=lim) if t.has("min") else -math.inf
+    hi = t.float("max", minimum=-lim, maximum=lim) if t.has("max") else math.inf
     if lo > hi:
         raise t.error("max", f"must be >= min ({lo}), got {hi}")
     return lo, hi

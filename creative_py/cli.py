@@ -82,6 +82,49 @@ def _fail(message: str) -> None:
     raise typer.Exit(code=2)
 
 
+SEED_MAX = 2 ** 63 - 1
+"""The largest seed (``--seed``, ``--world-seed``): a 64-bit signed integer."""
+
+TRIALS_MAX = 10000
+"""The largest ``--max-trials`` and ``--consecutive``."""
+
+EVAL_TRIALS_MAX = 1000
+"""The largest ``--eval-trials``."""
+
+CPUS_MAX = 1024
+"""The largest ``--num-cpus``."""
+
+
+def _check_counts(*checks: tuple[str, Optional[int], int, int]) -> None:
+    """Fail in one line unless each ``(option, value, least, most)`` has its value
+    (when given) within ``least..most``."""
+    for option, value, least, most in checks:
+        if value is None:
+            continue
+        if value < least:
+            _fail(f"{option} must be at least {least}, got {value}")
+        if value > most:
+            _fail(f"{option} must be at most {most}, got {value}")
+
+
+def _path(option: str, text: Optional[str]) -> Optional[Path]:
+    """Return the path an option names (None if not given); fail in one line on an
+    empty one (``--out ''`` would otherwise mean the current folder)."""
+    if text is None:
+        return None
+    if not text.strip():
+        _fail(f"{option} must name a folder, got an empty string")
+    return Path(text)
+
+
+def _name(option: str, text: Optional[str]) -> Optional[str]:
+    """Return a name an option gives (None if not given); fail in one line on an empty
+    one (``--variant ''`` would otherwise mean the default)."""
+    if text is not None and not text.strip():
+        _fail(f"{option} must not be empty")
+    return text
+
+
 def _need_display() -> None:
     """Fail in one line unless pybullet's GUI can open (an X display is set)."""
     from creative_py.sim.core import display_available
@@ -148,11 +191,11 @@ def trial(
                                             "the demonstration's."),
     seed: int = typer.Option(0, "--seed", help="Seed of every random choice (sensor noise)."),
     as_json: bool = typer.Option(False, "--json", help="Print the result as one JSON line."),
-    save_images: Optional[Path] = typer.Option(None, "--save-images",
+    save_images: Optional[str] = typer.Option(None, "--save-images",
                                                help="Save camera snapshots in this folder."),
     gui: bool = typer.Option(False, "--gui", help="Show the pybullet GUI (needs a display)."),
-    world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
-                                         "shipped one of the case)."),
+    world: Optional[str] = typer.Option(None, "--world", help="World folder (default: the "
+                                        "shipped one of the case)."),
     list_: bool = typer.Option(False, "--list", help="Print objects, locations, variants "
                                "and the default pose as JSON, and exit."),
 ) -> None:
@@ -160,6 +203,8 @@ def trial(
     unreachable or invalid)."""
     if gui:
         _need_display()
+    variant = _name("--variant", variant)
+    save_images, world = _path("--save-images", save_images), _path("--world", world)
     with _one_line_errors(), _stdout_to_stderr():
         lines = _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
                        world, list_)
@@ -177,8 +222,7 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     from creative_py.world import WorldFileError
 
     m = _manifest(case, world)
-    if seed < 0:
-        _fail(f"--seed must be at least 0, got {seed}")
+    _check_counts(("--seed", seed, 0, SEED_MAX))
     if save_images is not None and save_images.exists() and not save_images.is_dir():
         _fail(f"--save-images {save_images}: not a folder")
     try:
@@ -232,8 +276,7 @@ def sweep(
     world_seeds: Optional[str] = typer.Option(None, "--world-seeds", help="World seeds "
                                               "(N, A-B, a comma list); default: the world "
                                               "files as shipped."),
-    out: Path = typer.Option(Path("runs"), "--out", help="Parent folder of the sweep's "
-                             "folder."),
+    out: str = typer.Option("runs", "--out", help="Parent folder of the sweep's folder."),
     address: Optional[str] = typer.Option(None, "--address", help="Attach to this Ray "
                                           "cluster instead of starting a local one."),
     num_cpus: Optional[int] = typer.Option(None, "--num-cpus", help="Cores of the local "
@@ -257,6 +300,7 @@ def sweep(
     from creative_py.sweep import (SweepOptions, parse_ints, parse_strategies, plan_runs,
                                    run_sweep)
 
+    out = _path("--out", out)
     try:
         names = parse_strategies(strategies)
         seed_list = parse_ints(seeds, "--seeds")
@@ -266,11 +310,9 @@ def sweep(
         _fail(str(exc))
     if phase not in PHASES:
         _fail(f"--phase must be one of {', '.join(PHASES)}, got {phase!r}")
-    for option, value, least in (("--max-trials", max_trials, 1), ("--eval-trials",
-                                                                   eval_trials, 0),
-                                 ("--num-cpus", num_cpus, 1)):
-        if value is not None and value < least:
-            _fail(f"{option} must be at least {least}, got {value}")
+    _check_counts(("--max-trials", max_trials, 1, TRIALS_MAX),
+                  ("--eval-trials", eval_trials, 0, EVAL_TRIALS_MAX),
+                  ("--num-cpus", num_cpus, 1, CPUS_MAX))
     if out.exists() and not out.is_dir():
         _fail(f"--out {out}: not a folder")
     if address is not None and not serial:
@@ -299,7 +341,7 @@ def sweep(
 def run(
     case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
     seed: int = typer.Option(0, "--seed", help="Seed of the physics and sensor noise."),
-    out: Path = typer.Option(Path("runs"), "--out", help="Parent folder of the run folder."),
+    out: str = typer.Option("runs", "--out", help="Parent folder of the run folder."),
     phase: str = typer.Option("all", "--phase", help="use (tool-use learning only), "
                               "create or all (then tool creation on the harder task)."),
     max_trials: Optional[int] = typer.Option(None, "--max-trials", help="N of Algorithm 1 "
@@ -309,9 +351,9 @@ def run(
                                     "learned model after tool-use learning."),
     strategy: str = typer.Option("informative", "--strategy", help="How experiments are "
                                  "chosen: " + strategies_help() + "."),
-    world: Optional[Path] = typer.Option(None, "--world", help="World folder (default: the "
+    world: Optional[str] = typer.Option(None, "--world", help="World folder (default: the "
                                          "shipped one of the case)."),
-    resume: Optional[Path] = typer.Option(None, "--resume", help="Resume this interrupted "
+    resume: Optional[str] = typer.Option(None, "--resume", help="Resume this interrupted "
                                           "run folder: replay its recorded trials without "
                                           "physics, then go on (its own options apply)."),
     video: str = typer.Option("key", "--video", help="MP4 clips in videos/: key (the "
@@ -340,6 +382,7 @@ def run(
     from creative_py.world import WorldFileError
 
     console = Console(stderr=True)
+    out, world, resume = _path("--out", out), _path("--world", world), _path("--resume", resume)
     if video not in ("all", "key", "none"):
         _fail(f"--video must be all, key or none, got {video!r}")
     if gui:
@@ -359,12 +402,10 @@ def run(
         typer.echo(str(folder.path))
         return
     _manifest(case, world)
-    for option, value, least in (("--seed", seed, 0), ("--max-trials", max_trials, 1),
-                                 ("--consecutive", consecutive, 1),
-                                 ("--eval-trials", eval_trials, 0),
-                                 ("--world-seed", world_seed, 0)):
-        if value is not None and value < least:
-            _fail(f"{option} must be at least {least}, got {value}")
+    _check_counts(("--seed", seed, 0, SEED_MAX), ("--max-trials", max_trials, 1, TRIALS_MAX),
+                  ("--consecutive", consecutive, 1, TRIALS_MAX),
+                  ("--eval-trials", eval_trials, 0, EVAL_TRIALS_MAX),
+                  ("--world-seed", world_seed, 0, SEED_MAX))
     if out.exists() and not out.is_dir():
         _fail(f"--out {out}: not a folder")
     try:
@@ -411,6 +452,8 @@ def report(run_dir: Path = typer.Argument(..., help="A run folder."),
 
     if width is not None and width < 40:
         _fail(f"--width {width}: under 40 columns")
+    if width is not None and width > 1000:
+        _fail(f"--width {width}: over 1000 columns")
     try:
         contents = read_run(run_dir)
     except FileNotFoundError as exc:
@@ -455,6 +498,10 @@ def repl(run_dir: Optional[Path] = typer.Argument(None, help="A run folder whose
     os.execv(swipl, [swipl, "-g", ", ".join(goals), str(root / "prolog" / "creative.pl")])
 
 
+BUILD_VOLUME_MAX_MM = 10000.0
+"""The largest side of ``--build-volume``, millimetres."""
+
+
 def _print_settings(text: str):
     """Return the print settings of a ``--build-volume X,Y,Z`` (mm), or fail in one line."""
     from creative_py.mesh.printability import PrintSettings
@@ -464,9 +511,9 @@ def _print_settings(text: str):
         values = [float(v) for v in text.split(",")]
     except ValueError:
         values = []
-    if len(values) != 3 or not all(0 < v < float("inf") for v in values):
+    if len(values) != 3 or not all(0 < v <= BUILD_VOLUME_MAX_MM for v in values):
         _fail(f"--build-volume {text!r}: expected three positive numbers of millimetres "
-              "X,Y,Z, e.g. 250,210,210")
+              f"X,Y,Z, each at most {BUILD_VOLUME_MAX_MM:g}, e.g. 250,210,210")
     return PrintSettings(build_volume=tuple(v / MM_PER_M for v in values))
 
 
@@ -485,7 +532,7 @@ def make_tool_cmd(
                                "shape=triangular_prism,block_length=long (wedge); a wrong "
                                "property lists the allowed ones."),
     name: str = typer.Option("new_tool", "--name", help="Tool name (a Prolog atom)."),
-    out: Path = typer.Option(Path("tools"), "--out", help="Folder for the tool's files."),
+    out: str = typer.Option("tools", "--out", help="Folder for the tool's files."),
     variant: Optional[str] = typer.Option(None, "--variant", help="Task variant whose "
                                           "perceived geometry bounds the sizes (default: "
                                           "the demonstration's)."),
@@ -510,6 +557,7 @@ def make_tool_cmd(
     from creative_py.mesh.slicer import require_slicer
     from creative_py.world import WorldFileError
 
+    out, variant, name = _path("--out", out), _name("--variant", variant), _name("--name", name)
     settings = PrintSettings()
     if build_volume is not None:
         settings = _print_settings(build_volume)

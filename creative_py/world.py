@@ -120,13 +120,17 @@ class Fields:
             raise self.error(name, f"must be <= {maximum}, got {value}")
         return value
 
-    def int(self, name: str, default: Any = _MISSING, *, minimum: int | None = None) -> int:
-        """Return an integer, optionally at least ``minimum``."""
+    def int(self, name: str, default: Any = _MISSING, *, minimum: int | None = None,
+            maximum: int | None = None) -> int:
+        """Return an integer within optional bounds (a whole float such as ``1e9`` is
+        refused as not an integer)."""
         value = self.raw(name, default)
         if isinstance(value, bool) or not isinstance(value, int):
             raise self.error(name, f"must be an integer, got {value!r}")
         if minimum is not None and value < minimum:
             raise self.error(name, f"must be >= {minimum}, got {value}")
+        if maximum is not None and value > maximum:
+            raise self.error(name, f"must be <= {maximum}, got {value}")
         return value
 
     def bool(self, name: str, default: Any = _MISSING) -> bool:
@@ -147,13 +151,19 @@ class Fields:
                              + _did_you_mean(value, choices))
         return value
 
-    def vec(self, name: str, n: int, default: Any = _MISSING) -> tuple[float, ...]:
-        """Return a list of ``n`` finite numbers as a tuple."""
+    def vec(self, name: str, n: int, default: Any = _MISSING, *,
+            minimum: float | None = None, maximum: float | None = None) -> tuple[float, ...]:
+        """Return a list of ``n`` finite numbers as a tuple, each within optional bounds."""
         value = self.raw(name, default)
         if (not isinstance(value, (list, tuple)) or len(value) != n
                 or any(isinstance(v, bool) or not isinstance(v, (int, float))
                        or not math.isfinite(v) for v in value)):
             raise self.error(name, f"must be a list of {n} numbers, got {value!r}")
+        for v in value:
+            if minimum is not None and v < minimum:
+                raise self.error(name, f"every number must be >= {minimum}, got {v}")
+            if maximum is not None and v > maximum:
+                raise self.error(name, f"every number must be <= {maximum}, got {v}")
         return tuple(float(v) for v in value)
 
     def table(self, name: str, default: Any = _MISSING) -> "Fields":
@@ -203,11 +213,29 @@ class PhysicsSettings:
     gravity: tuple[float, float, float] = (0.0, 0.0, -9.81)
 
 
-def read_physics(fields: Fields) -> PhysicsSettings:
-    """Return the :class:`PhysicsSettings` of a ``[physics]``-style table."""
-    settings = PhysicsSettings(
-        time_step=fields.float("time_step", minimum=1e-5, maximum=0.1),
-        solver_iterations=fields.int("solver_iterations", minimum=1),
-        gravity=fields.vec("gravity", 3),
-    )
-    return settings
+TIME_STEP_S = (1e-4, 0.05)
+"""The bounds of a physics ``time_step``, seconds (10 kHz to 20 Hz)."""
+
+SOLVER_ITERATIONS = (1, 1000)
+"""The bounds of ``solver_iterations`` per physics step."""
+
+GRAVITY_M_S2 = 100.0
+"""The largest size of each component of ``gravity``, m/s^2 (about 10 g)."""
+
+
+def read_physics(fields: Fields, gravity: tuple[float, float, float] | None = None
+                 ) -> PhysicsSettings:
+    """Return the :class:`PhysicsSettings` of a ``[physics]``-style table.
+
+    ``time_step`` (s) must lie within :data:`TIME_STEP_S`, ``solver_iterations`` within
+    :data:`SOLVER_ITERATIONS`, each component of ``gravity`` (m/s^2) within
+    +-:data:`GRAVITY_M_S2`. With ``gravity`` given (an ``[arm]`` table), the table has
+    no gravity of its own.
+    """
+    time_step = fields.float("time_step", minimum=TIME_STEP_S[0], maximum=TIME_STEP_S[1])
+    iterations = fields.int("solver_iterations", minimum=SOLVER_ITERATIONS[0],
+                            maximum=SOLVER_ITERATIONS[1])
+    if gravity is None:
+        gravity = fields.vec("gravity", 3, minimum=-GRAVITY_M_S2, maximum=GRAVITY_M_S2)
+    return PhysicsSettings(time_step=time_step, solver_iterations=iterations,
+                           gravity=gravity)

@@ -340,24 +340,47 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
     say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
 
 
-def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any]:
+def catalogue_ranges(engine: Engine, world: Any) -> dict[str, dict[str, tuple]]:
+    """Return ``object -> {catalogue fact -> (low, high, bounds, value)}``: the
+    qualitative range of each catalogued number and the value it stands for (the
+    engine's ``catalogue_ranges``; what :func:`creative_py.sim.world.draw_world` draws
+    inside)."""
+    from creative_py.sim.tools import catalogue_facts
+
+    facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
+    ranges: dict[str, dict[str, tuple[float, float, str, str]]] = {}
+    for r in engine.catalogue_ranges(world.manifest.id, facts):
+        obj, fact, _x, _prop, value, lo, hi, bounds = r.args
+        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds),
+                                                      str(value))
+    return ranges
+
+
+DEMO_CHECK_SEED = 0
+"""The seed of the sensor noise in the demonstration that checks a drawn world (the
+world must not depend on a run's seed; runs of seed 0 see that very demonstration)."""
+
+
+def draw_catalogue_world(engine: Engine, world: Any, seed: int,
+                         check_demonstration: bool = True) -> dict[str, Any]:
     """Draw a randomised world of ``world`` for world seed ``seed``
     (:func:`creative_py.sim.world.draw_world`): the engine gives each catalogued
     number's own qualitative range (``catalogue_ranges``) and checks that every drawn
     object keeps its structural literals; the physics checks that it lies still where
-    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again."""
+    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again.
+    With ``check_demonstration``, the trainer's demonstration runs in the drawn world
+    (sensor noise of :data:`DEMO_CHECK_SEED`) and the demonstration's location is
+    drawn again until it reaches the goal (the drawn world's ``redraws`` counts the
+    times)."""
     from dataclasses import replace
 
+    from creative_py.learning.poses import pose_resolver
+    from creative_py.learning.tool_use import DemonstrationFailed, run_demonstration
     from creative_py.sim import tool_rests
     from creative_py.sim.tools import catalogue_facts
 
     case = world.manifest.id
-    facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
-    ranges: dict[str, dict[str, tuple[float, float, str, str]]] = {}
-    for r in engine.catalogue_ranges(case, facts):
-        obj, fact, _x, _prop, value, lo, hi, bounds = r.args
-        ranges.setdefault(str(obj), {})[str(fact)] = (float(lo), float(hi), str(bounds),
-                                                      str(value))
+    ranges = catalogue_ranges(engine, world)
 
     def literals(spec: Any) -> set[str]:
         state = engine.abstract_state(case, [fact_term(f) for f in catalogue_facts(spec)])
@@ -370,7 +393,17 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int) -> dict[str, Any
         item = replace(world.items[name], spec=spec)
         return tool_rests(replace(world, items={**world.items, name: item}), name)
 
-    return draw_world(world, seed, ranges, keeps=keeps)
+    def demonstrates(drawn: dict[str, Any]) -> bool:
+        new = apply_drawn(world, drawn)
+        try:
+            run_demonstration(new, seed=DEMO_CHECK_SEED,
+                              pose_target=pose_resolver(engine, new.manifest))
+        except DemonstrationFailed:
+            return False
+        return True
+
+    return draw_world(world, seed, ranges, keeps=keeps,
+                      demonstrates=demonstrates if check_demonstration else None)
 
 
 def check_manifest(engine: Engine, manifest: Any) -> None:

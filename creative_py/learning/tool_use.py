@@ -84,6 +84,10 @@ class Demonstration:
     goal_reached: bool
 
 
+class DemonstrationFailed(ValueError):
+    """The trainer's demonstration did not reach the goal in the physics."""
+
+
 def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = None,
                       record: Any = None, gui: bool = False,
                       verdict: Optional[Callable[[], None]] = None, *,
@@ -93,7 +97,8 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
     The tool, variant, location, skills and pose come from the manifest's
     ``[demonstration]``. Each step's facts are what the robot perceives (cameras) and
     feels (arm proprioception). A demonstration that fails in the physics raises
-    ValueError naming the manifest: there is nothing to learn from. ``record`` (a
+    :class:`DemonstrationFailed` naming the manifest, or for a drawn world
+    (``--world-seed``) its world seed: there is nothing to learn from. ``record`` (a
     :class:`creative_py.sim.recorder.Recorder`) keeps its poses; ``verdict()`` is
     called at the end of a successful demonstration, inside the episode (where its
     clip is rendered); ``gui`` shows the pybullet GUI. ``pose_target`` gives the pose
@@ -103,6 +108,9 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
 
     m = world.manifest
     demo = m.demonstration
+    where = (f"{world.variation} (drawn from {m.folder / 'case.toml'}): the demonstration"
+             if getattr(world, "variation", "") else
+             f"{m.folder / 'case.toml'}: field 'demonstration'")
     steps: list[DemoStep] = []
     with open_episode(world, demo.variant, demo.location, demo.tool, seed=seed,
                       images_dir=images_dir, gui=gui, record=record,
@@ -115,17 +123,15 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
             steps.append(DemoStep(name, m.skill_args(skill, demo.tool), before, after,
                                   res.status))
             if res.status != "ok":
-                raise ValueError(f"{m.folder / 'case.toml'}: field 'demonstration': the "
-                                 f"trainer's skill {name} ended {res.status} in the physics: "
-                                 f"{res.reason}")
+                raise DemonstrationFailed(f"{where}: the trainer's skill {name} ended "
+                                          f"{res.status} in the physics: {res.reason}")
             before = after
         reached = ep.goal_reached()
         if reached and verdict is not None:
             verdict()  # the physics is done with
     if not reached:
-        raise ValueError(f"{m.folder / 'case.toml'}: field 'demonstration': {demo.tool} at "
-                         f"location {demo.location} did not reach the goal in the physics: "
-                         "nothing to learn from")
+        raise DemonstrationFailed(f"{where}: {demo.tool} at location {demo.location} did "
+                                  "not reach the goal in the physics: nothing to learn from")
     return Demonstration(demo.tool, demo.variant, demo.location, demo.pose, tuple(steps),
                          reached)
 

@@ -139,6 +139,15 @@ ORACLES: dict[str, OracleKind] = {o.name: o for o in (
 """The oracle kinds a world's ``[oracle]`` table may name."""
 
 
+OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
+    "limit": (-10.0, 10.0, "m"),
+    "max_close_deg": (0.0, 180.0, "deg"),
+    "min_open_deg": (0.0, 180.0, "deg"),
+}
+"""The bounds ``(low, high, unit)`` of the oracles' numeric options, by name (checked by
+the loader in every variant and location, :func:`creative_py.sim.world.check_values`)."""
+
+
 @dataclass(frozen=True)
 class OracleSpec:
     """A world's oracle: its kind and raw options (expressions resolved per episode)."""

@@ -492,6 +492,42 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
 """The skill primitives a manifest may bind, by name."""
 
 
+_POSITION = (-10.0, 10.0, "m")
+_SPEED = (1e-3, 2.0, "m/s")
+_ANGLE = (-2 * math.pi, 2 * math.pi, "rad")
+
+OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
+    # where things are: coordinates in the world frame (a list: each of its numbers)
+    "travel_z": _POSITION, "pull_to_x": _POSITION, "until_x": _POSITION,
+    "lift_to": _POSITION, "carry_z": _POSITION, "retreat": _POSITION,
+    # how far
+    "approach": (0.0, 1.0, "m"), "clearance": (0.0, 1.0, "m"),
+    "carry_height": (0.0, 1.0, "m"), "release_height": (0.0, 1.0, "m"),
+    "distance": (-2.0, 2.0, "m"), "contact_distance": (-0.1, 0.1, "m"),
+    # how fast
+    "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED,
+    # angles
+    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE,
+    # how long: what a hang would come from
+    "settle_time": (0.0, 10.0, "s"), "duration": (0.0, 60.0, "s"),
+    "settle_steps": (0, 10000, "steps"),
+    # the grasp-slip guard
+    "grasp_slip_max_rad": (0.0, math.pi, "rad"), "grasp_slip_max_m": (0.0, 1.0, "m"),
+}
+"""The bounds ``(low, high, unit)`` of every numeric option of the primitives and of
+the tool kinds' grasps, by option name; a ``steps`` option must be a whole number, an
+option whose default is true or false (``posture_search``, ``perceive``, ``by_hand``,
+``park_robot``) must be true or false. The loader checks every skill's options in
+every variant and location (:func:`creative_py.sim.world.check_values`), so that no
+number of ``case.toml`` makes a motion or a wait run without end."""
+
+
+def option_flags() -> frozenset[str]:
+    """Return the options that are true or false (their default is a bool)."""
+    return frozenset(n for p in PRIMITIVES.values() for n, d in p.options.items()
+                     if isinstance(d, bool))
+
+
 def primitive(name: str) -> Primitive:
     """Return the primitive ``name``; raise listing the registered ones."""
     if name not in PRIMITIVES:

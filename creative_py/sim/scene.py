@@ -43,6 +43,12 @@ Body kinds
     at ``open_angle`` and swings it for the arm) and a closer (``closing_torque``,
     applied once the door is released). Facts: ``hinge/3``, ``door_width_m/2``,
     ``door_closed_heading/2``, ``door_angle/2``, ``door_gap_m/2``.
+
+Every number of a body has bounds (each kind's ``BOUNDS``), checked in every variant
+and location when the world loads: coordinates within +-10 m and dimensions 0-10 m of
+the robot's base, angles within +-2 pi rad, ``mass`` 0-1000 kg, ``friction`` 0-10,
+``colour`` 0-1; a door's ``swing_speed`` 0.001-100 rad/s, ``hold_force`` 0-1e6 N m,
+``closing_torque`` 0-1e4 N m, ``damping`` 0-1e4 N m s/rad.
 """
 
 from __future__ import annotations
@@ -197,20 +203,41 @@ REQUIRED = object()
 """Marks a body field without a default."""
 
 
+EXTENT_M = 10.0
+"""The largest size of a body's coordinate or dimension, metres."""
+
+POSITION = (-EXTENT_M, EXTENT_M, "m")
+SIZE = (0.0, EXTENT_M, "m")
+ANGLE = (-2 * math.pi, 2 * math.pi, "rad")
+MASS = (0.0, 1000.0, "kg")
+FRICTION = (0.0, 10.0, "(a friction coefficient)")
+COLOUR = (0.0, 1.0, "(RGBA)")
+
+
 class SceneBody:
     """A body of the scene, built in one episode's simulator.
 
     A kind lists its fields in ``FIELDS`` (``name -> default``, :data:`REQUIRED` for
-    none); :meth:`__init__` receives them resolved (numbers, tuples, strings).
+    none) and their bounds in ``BOUNDS`` (``name -> (low, high, unit)``, each number
+    of a vector within them); :meth:`__init__` receives them resolved (numbers,
+    tuples, strings) and raises ValueError for a number outside its bounds.
     """
 
     FIELDS: dict[str, Any] = {}
+    BOUNDS: dict[str, tuple[float, float, str]] = {}
     dynamic = False
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         self.name = name
         self.v = dict(values)
         self.id = -1
+        for field, (lo, hi, unit) in self.BOUNDS.items():
+            value = self.v.get(field)
+            for x in value if isinstance(value, tuple) else (value,):
+                if isinstance(x, (int, float)) and not isinstance(x, bool) \
+                        and not lo <= x <= hi:
+                    raise ValueError(f"body {name}: {field} must lie within [{lo:g}, "
+                                     f"{hi:g}] {unit}, got {x:g}")
 
     def __getattr__(self, item: str) -> Any:
         try:
@@ -247,6 +274,8 @@ class BoxBody(SceneBody):
     FIELDS = {"size": REQUIRED, "position": REQUIRED, "top_z": None, "yaw": 0.0,
               "mass": 0.0, "friction": 0.5, "colour": (0.55, 0.45, 0.35, 1.0),
               "frame": "centre"}
+    BOUNDS = {"size": SIZE, "position": POSITION, "top_z": POSITION, "yaw": ANGLE,
+              "mass": MASS, "friction": FRICTION, "colour": COLOUR}
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         super().__init__(name, values)
@@ -298,6 +327,9 @@ class TubeBody(SceneBody):
     FIELDS = {"mouth_x": REQUIRED, "axis_y": REQUIRED, "floor_z": REQUIRED,
               "length": REQUIRED, "inner_width": REQUIRED, "inner_height": REQUIRED,
               "wall": REQUIRED, "friction": 0.5, "colour": (0.3, 0.6, 0.9, 1.0)}
+    BOUNDS = {"mouth_x": POSITION, "axis_y": POSITION, "floor_z": POSITION,
+              "length": SIZE, "inner_width": SIZE, "inner_height": SIZE, "wall": SIZE,
+              "friction": FRICTION, "colour": COLOUR}
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         super().__init__(name, values)
@@ -340,6 +372,9 @@ class ShelfBody(SceneBody):
               "depth": REQUIRED, "inner_width": REQUIRED, "inner_height": REQUIRED,
               "board": 0.006, "leg": 0.012, "friction": 0.5, "clear_board": True,
               "colour": (0.6, 0.5, 0.35, 1.0)}
+    BOUNDS = {"mouth_x": POSITION, "axis_y": POSITION, "floor_z": POSITION,
+              "depth": SIZE, "inner_width": SIZE, "inner_height": SIZE, "board": SIZE,
+              "leg": SIZE, "friction": FRICTION, "colour": COLOUR}
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         super().__init__(name, values)
@@ -392,6 +427,12 @@ class DoorBody(SceneBody):
               "open_angle": REQUIRED, "max_angle": math.radians(170),
               "swing_speed": 1.0, "hold_force": 200.0, "closing_torque": 0.0,
               "colour": (0.75, 0.7, 0.6, 1.0)}
+    BOUNDS = {"hinge": POSITION, "closed_heading": ANGLE, "width": SIZE,
+              "thickness": SIZE, "height": SIZE, "bottom_gap": SIZE, "floor_z": POSITION,
+              "mass": MASS, "damping": (0.0, 1e4, "N m s/rad"), "friction": FRICTION,
+              "open_angle": (0.0, 2 * math.pi, "rad"), "max_angle": (0.0, 2 * math.pi, "rad"),
+              "swing_speed": (1e-3, 100.0, "rad/s"), "hold_force": (0.0, 1e6, "N m"),
+              "closing_torque": (0.0, 1e4, "N m"), "colour": COLOUR}
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         super().__init__(name, values)

@@ -32,6 +32,15 @@ The folder holds, besides ``case.toml``:
 Every number of the scene, the start, the skills' options and the oracle may be a
 scene expression; the loader resolves them all for every variant and location, so a
 bad value is reported by file and field before any physics runs.
+
+Every number has finite bounds, so that no value makes the physics run without end
+(docs/new-case.md lists them): the physics' (:func:`creative_py.world.read_physics`);
+``settle_time`` 0-10 s (:data:`SETTLE_TIME_S`); ``[robot]`` ``speed`` 0.001-2 m/s,
+``turn_speed`` 0.001-10 rad/s, ``steps_per_waypoint`` 1-1000, ``keep`` 1-100; the
+start poses' and ``[tool_start]``'s numbers within +-10 m (rad); ``depth_sigma_m``
+0-0.1 m; an object's ``friction`` 0-10; the bodies' (:mod:`creative_py.sim.scene`);
+the skills' options (:data:`creative_py.sim.primitives.OPTION_BOUNDS`) and the
+oracle's (:data:`creative_py.sim.oracles.OPTION_BOUNDS`).
 """
 
 from __future__ import annotations
@@ -223,16 +232,49 @@ class World:
         return ns
 
 
+SETTLE_TIME_S = (0.0, 10.0)
+"""The bounds of ``settle_time`` (scene.toml), seconds of physics after building."""
+
+SPEED_M_S = (1e-3, 2.0)
+"""The bounds of the arm's Cartesian speeds (``[robot] speed``, the skills' speeds), m/s."""
+
+TURN_SPEED_RAD_S = (1e-3, 10.0)
+"""The bounds of ``[robot] turn_speed``, rad/s."""
+
+STEPS_PER_WAYPOINT = (1, 1000)
+"""The bounds of ``[robot] steps_per_waypoint``, physics steps."""
+
+KEEP = (1, 100)
+"""The bounds of ``[robot.start] keep``, IK candidates."""
+
+EXTENT_M = 10.0
+"""The largest size of a coordinate of the scene (a start position, a tool's start
+field), metres from the robot's base; angles are bounded by it too, in radians."""
+
+SIGMA_M = (0.0, 0.1)
+"""The bounds of ``[perception] depth_sigma_m``, metres."""
+
+FRICTION = (0.0, 10.0)
+"""The bounds of a friction coefficient (``friction`` of objects.toml)."""
+
+
 def _read_robot(rf: Fields) -> RobotSpec:
+    """Read ``[robot]``: ``speed`` (m/s) within :data:`SPEED_M_S`, ``turn_speed`` (rad/s)
+    within :data:`TURN_SPEED_RAD_S`, ``steps_per_waypoint`` within
+    :data:`STEPS_PER_WAYPOINT`, ``[robot.start] keep`` within :data:`KEEP`; the start's
+    and the via pose's numbers are resolved by :func:`check_values` (each within
+    +-:data:`EXTENT_M`)."""
     visuals = rf.bool("visuals", False)
-    speed = rf.float("speed", 0.10, minimum=1e-3)
-    turn = rf.float("turn_speed", 1.0, minimum=1e-3)
-    spw = rf.int("steps_per_waypoint", 4, minimum=1)
+    speed = rf.float("speed", 0.10, minimum=SPEED_M_S[0], maximum=SPEED_M_S[1])
+    turn = rf.float("turn_speed", 1.0, minimum=TURN_SPEED_RAD_S[0],
+                    maximum=TURN_SPEED_RAD_S[1])
+    spw = rf.int("steps_per_waypoint", 4, minimum=STEPS_PER_WAYPOINT[0],
+                 maximum=STEPS_PER_WAYPOINT[1])
     sf = rf.table("start")
     start = {"position": sf.raw("position"),
              "gripper": sf.str("gripper", choices=("forward", "down")),
              "angle": sf.raw("angle", 0.0)}
-    keep = sf.int("keep", 6, minimum=1)
+    keep = sf.int("keep", 6, minimum=KEEP[0], maximum=KEEP[1])
     via = None
     if sf.has("via"):
         vf = sf.table("via")
@@ -253,7 +295,7 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
     from creative_py.sim.tools import HANDLINGS
 
     f = Fields(load_toml(path), path)
-    settle = f.float("settle_time", minimum=0.0)
+    settle = f.float("settle_time", minimum=SETTLE_TIME_S[0], maximum=SETTLE_TIME_S[1])
     robot = _read_robot(f.table("robot"))
     vf = f.table("values", {})
     values = dict(vf.data)
@@ -270,7 +312,8 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
     tf.done()
     pf = f.table("perception")
     try:
-        noise = NoiseModel(depth_sigma_m=pf.float("depth_sigma_m", minimum=0.0),
+        noise = NoiseModel(depth_sigma_m=pf.float("depth_sigma_m", minimum=SIGMA_M[0],
+                                                  maximum=SIGMA_M[1]),
                            dropout=pf.float("dropout", minimum=0.0, maximum=0.99))
     except ValueError as exc:
         raise WorldFileError(f"{path}: [perception]: {exc}") from None
@@ -300,7 +343,7 @@ def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
     for tf in f.tables(table):
         data = dict(tf.data)
         obj_set = tf.str("set")
-        friction = tf.float("friction", 0.5, minimum=0.0)
+        friction = tf.float("friction", 0.5, minimum=0.0, maximum=FRICTION[1])
         outside = tf.bool("outside_ranges", False)
         data.pop("set")
         data.pop("friction", None)
@@ -384,9 +427,7 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
     arm = rest
     if pf.has("arm"):
         af = pf.table("arm")
-        arm = PhysicsSettings(time_step=af.float("time_step", minimum=1e-5, maximum=0.1),
-                              solver_iterations=af.int("solver_iterations", minimum=1),
-                              gravity=rest.gravity)
+        arm = read_physics(af, gravity=rest.gravity)
         af.done()
     pf.done()
     items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
@@ -415,15 +456,56 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
 
 
 def check_values(world: World, variant: str, location: int, tool: str) -> None:
-    """Resolve every scene value of one episode; raise :class:`WorldFileError` if one fails."""
+    """Resolve every scene value of one episode; raise :class:`WorldFileError` if one
+    fails or lies outside its bounds.
+
+    Bounded, each error naming the file and the field: the bodies' numbers
+    (:mod:`creative_py.sim.scene`), every number of ``[tool_start]`` and of the robot's
+    start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
+    (:data:`creative_py.sim.primitives.OPTION_BOUNDS`) and the oracle's
+    (:data:`creative_py.sim.oracles.OPTION_BOUNDS`).
+    """
+    from creative_py.sim import oracles, primitives
     from creative_py.sim.scene import make_bodies
 
     ns = world.namespace(variant, location, tool)
+    episode = f" (variant {variant}, location {location})"
     bodies = make_bodies(world.scene.bodies, ns)
-    resolve_start(world, ns)
-    for s in world.skills.values():
-        resolve_options(s.options, ns, f"skill {s.name} options")
-    resolve_options(world.oracle.options, ns, "oracle", words=oracle_words(world))
+    scene_file = world.directory / "scene.toml"
+    start = resolve_start(world, ns)
+    for k, v in start.items():
+        if not isinstance(v, (dict, str)):
+            check_bound(v, (-EXTENT_M, EXTENT_M, "(m, rad)"),
+                        f"{scene_file}: field 'tool_start.{k}'", episode)
+    robot = world.scene.robot
+    for name, pose in (("start", robot.start), ("start.via", robot.via)):
+        for k in ("position", "angle") if pose is not None else ():
+            where = f"{scene_file}: field 'robot.{name}.{k}'"
+            value = ns.evaluate(pose[k], f"robot.{name}.{k}")
+            if k == "position" and (not isinstance(value, tuple) or len(value) != 3):
+                raise WorldFileError(f"{where}: must be a list of 3 numbers (m), got "
+                                     f"{pose[k]!r}")
+            check_bound(value, (-EXTENT_M, EXTENT_M, "m" if k == "position" else "rad"),
+                        where, episode)
+    case_file = world.manifest.folder / "case.toml"
+    flags = primitives.option_flags()
+    for i, s in enumerate(world.skills.values()):
+        opts = resolve_options(s.options, ns, f"skill {s.name} options")
+        for k, v in opts.items():
+            where = f"{case_file}: field 'skill[{i}].options.{k}'"
+            if k in flags:
+                if not isinstance(v, bool):
+                    raise WorldFileError(f"{where}: must be true or false, got {v!r}")
+            elif k in primitives.OPTION_BOUNDS:
+                check_bound(v, primitives.OPTION_BOUNDS[k], where,
+                            episode if isinstance(s.options[k], str) else "")
+    words = oracle_words(world)
+    opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
+    for k, v in opts.items():
+        if k not in words and k in oracles.OPTION_BOUNDS:
+            check_bound(v, oracles.OPTION_BOUNDS[k],
+                        f"{world.directory / 'tasks.toml'}: field 'oracle.{k}'",
+                        episode if isinstance(world.oracle.options[k], str) else "")
     for p in world.scene.perceived:
         if p.support_z is not None:
             ns.evaluate(p.support_z, f"perception.object {p.name} support_z")
@@ -433,6 +515,26 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
         if name not in bodies:
             raise WorldFileError(f"{world.directory / 'scene.toml'}: the {role} "
                                  f"{name!r} of case.toml is not a [[body]] of the scene")
+
+
+def check_bound(value: Any, bound: tuple[float, float, str], where: str,
+                context: str = "") -> None:
+    """Raise :class:`WorldFileError` unless ``value`` (a number, or each number of a
+    tuple) lies within ``bound`` = ``(low, high, unit)``; a ``steps`` value must be whole.
+
+    ``where`` names the file and the field, ``context`` (appended) the episode whose
+    scene values gave the number.
+    """
+    lo, hi, unit = bound
+    for v in value if isinstance(value, tuple) else (value,):
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise WorldFileError(f"{where}: must be a number ({unit}), got {v!r}{context}")
+        if not lo <= v <= hi:
+            raise WorldFileError(f"{where}: must lie within [{lo:g}, {hi:g}] {unit}, got "
+                                 f"{v:g}{context}")
+        if unit == "steps" and not float(v).is_integer():
+            raise WorldFileError(f"{where}: must be a whole number of steps, got "
+                                 f"{v:g}{context}")
 
 
 def oracle_words(world: World) -> set[str]:
@@ -498,12 +600,17 @@ def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, ValueRan
 
 def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueRange]],
                keeps: Optional[Callable[[str, Any], bool]] = None,
-               attempts: int = 200) -> dict[str, Any]:
+               attempts: int = 200,
+               demonstrates: Optional[Callable[[dict[str, Any]], bool]] = None,
+               redraws: int = 20) -> dict[str, Any]:
     """Draw a randomised world from ``world`` and return it as JSON-ready data.
 
     Deterministic: one :func:`numpy.random.default_rng` of ``seed`` makes, in order,
     the catalogue's new order (a permutation), each object's numbers (objects in file
-    order, facts in name order) and each location's jittered values.
+    order, facts in name order), each location's jittered values and, while
+    ``demonstrates`` says the demonstration fails in the drawn world, the
+    demonstration's location again (the generator goes on: the same seed gives the
+    same redraws).
 
     Parameters
     ----------
@@ -525,14 +632,24 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueR
         ``keeps(name, spec)`` says whether a drawn object still has every structural
         literal of the original (a ratio of two numbers can change its value); the
         object is drawn again until it does, at most ``attempts`` times.
+    demonstrates : callable or None
+        ``demonstrates(drawn)`` says whether the trainer's demonstration reaches the
+        goal in the drawn world (the physics: a location can be drawn where it does
+        not, e.g. a cube jittered onto the tube's axis, where perception error decides
+        the side the prong is turned to); the demonstration's location is drawn again
+        until it does, at most ``redraws`` times, else ValueError naming the world
+        seed.
+    redraws : int
+        The most redraws of the demonstration's location.
 
     Returns
     -------
     dict
         ``seed``, ``order`` (the catalogue's names in their new order), ``objects``
-        (``name -> {spec field: value}``, the drawn numbers) and ``locations`` (each
+        (``name -> {spec field: value}``, the drawn numbers), ``locations`` (each
         location's ``set`` table with the jittered keys of the manifest's
-        ``[randomise]``, each kept within its ``min`` and ``max``).
+        ``[randomise]``, each kept within its ``min`` and ``max``) and ``redraws``
+        (how many times the demonstration's location was drawn again).
     """
     from creative_py.sim.tools import tool_kind
 
@@ -578,16 +695,37 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueR
             raise ValueError(f"world seed {seed}: {name}: no draw in {attempts} attempts "
                              f"keeps its qualitative values")
     demo = world.manifest.demonstration
-    locations = []
-    for i, loc in enumerate(world.location_sets, 1):
-        ns = world.namespace(demo.variant, i, demo.tool)
-        new = dict(loc)
-        for j in world.manifest.location_jitter:
-            base = float(loc[j.key]) if j.key in loc else float(ns.get(j.key))
-            new[j.key] = round(min(j.max, max(j.min, base + float(rng.uniform(-j.jitter,
-                                                                               j.jitter)))), 5)
-        locations.append(new)
-    return {"seed": int(seed), "order": order, "objects": objects, "locations": locations}
+    locations = [_jittered(world, i, rng) for i in world.locations]
+    drawn = {"seed": int(seed), "order": order, "objects": objects, "locations": locations,
+             "redraws": 0}
+    if demonstrates is None:
+        return drawn
+    if not world.manifest.location_jitter:
+        redraws = 0  # nothing to draw again
+    for n in range(redraws + 1):
+        if demonstrates(drawn):
+            return drawn
+        if n < redraws:
+            locations[demo.location - 1] = _jittered(world, demo.location, rng)
+            drawn["redraws"] = n + 1
+    raise ValueError(f"world seed {seed}: the demonstration ({demo.tool} at location "
+                     f"{demo.location}) failed in the physics in {redraws + 1} draws of "
+                     f"location {demo.location} (its [randomise.location] jitter of "
+                     f"{world.manifest.folder / 'case.toml'} may need narrowing)")
+
+
+def _jittered(world: World, location: int, rng: np.random.Generator) -> dict[str, Any]:
+    """Return location ``location``'s ``set`` table with the manifest's ``[randomise]``
+    keys jittered by ``rng`` (each kept within its ``min`` and ``max``)."""
+    demo = world.manifest.demonstration
+    loc = world.location_sets[location - 1]
+    ns = world.namespace(demo.variant, location, demo.tool)
+    new = dict(loc)
+    for j in world.manifest.location_jitter:
+        base = float(loc[j.key]) if j.key in loc else float(ns.get(j.key))
+        new[j.key] = round(min(j.max, max(j.min, base + float(rng.uniform(-j.jitter,
+                                                                           j.jitter)))), 5)
+    return new
 
 
 def apply_drawn(world: World, drawn: Mapping[str, Any]) -> World:
