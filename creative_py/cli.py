@@ -17,6 +17,7 @@ import json
 import logging
 import os
 import sys
+import traceback
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator, Optional
@@ -78,6 +79,10 @@ def _stdout_to_stderr() -> Iterator[None]:
 
 
 def _fail(message: str) -> None:
+    """Print ``error: message`` and exit with code 2; under ``--debug``, when an
+    exception is being handled, its traceback first."""
+    if _DEBUG["on"] and sys.exc_info()[1] is not None:
+        traceback.print_exc()
     typer.echo(f"error: {message}", err=True)
     raise typer.Exit(code=2)
 
