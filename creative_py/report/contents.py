@@ -235,7 +235,8 @@ def why_text(why: Any) -> str:
     if not isinstance(why, str) or not why:
         return ""
     if why.startswith("failure:"):
-        return f"the first trial that ended {why.removeprefix('failure:')}"
+        outcome = why.removeprefix("failure:").split(":", 1)[0]
+        return f"the first {outcome} trial of its kind"
     return _WHY.get(why, why.replace("_", " "))
 
 
