@@ -97,7 +97,7 @@ def headline(run: RunContents) -> Headline:
         if use.get("stop"):
             text += f"; stopped because {STOP_TEXT.get(use['stop'], use['stop'])}"
         if use.get("converged") and use.get("trials_to_converge"):
-            text += f"; the model stopped changing after trial {use['trials_to_converge']}"
+            text += f"; converged after {use['trials_to_converge']} trials"
         if run.paper_trials:
             text += f"; the paper's robot used {run.paper_trials}"
         out.lines.append(text + ".")
@@ -108,8 +108,8 @@ def headline(run: RunContents) -> Headline:
                                      else "")))
     if "trials" in ev:
         done, total = ev.get("successes", 0), ev["trials"]
-        out.lines.append(f"Evaluation of the learned model (the task it learned, the "
-                         f"catalogued tools): {done} of {total} trials succeeded.")
+        out.lines.append(f"Evaluation of the learned model on the task it learned: "
+                         f"{done} of {total} trials succeeded.")
         out.figures.append(Figure("eval.successes", done, f"{done} / {total}",
                                   "learned model's evaluation: successes / trials"))
     if create:

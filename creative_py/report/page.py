@@ -33,7 +33,7 @@ REPORT_NAME = "report.html"
 _CSS = """
 body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif;
        color: #1d2330; background: #f6f7f9; margin: 0; }
-main { max-width: 1400px; margin: 0 auto; padding: 1.2rem 1.6rem 3rem; }
+main { max-width: 1400px; margin: 0 auto; padding: 1.2rem 1rem 3rem; }
 h1 { font-size: 1.6rem; margin: 0.4rem 0 0.2rem; }
 h2 { font-size: 1.25rem; margin: 2rem 0 0.6rem; padding-bottom: 0.25rem;
      border-bottom: 2px solid #d8dde6; }
@@ -64,8 +64,8 @@ th { background: #eef1f5; position: sticky; top: 0; }
 table.trials { width: 100%; }
 table.trials { font-size: 0.84rem; }
 table.trials code { font-size: 0.78rem; }
-table.trials td.col-reason { min-width: 14rem; }
-table.trials td.col-pose { min-width: 8rem; }
+table.trials td.col-reason { min-width: 10rem; }
+table.trials td.col-pose { min-width: 7rem; }
 table.trials tr:nth-child(even) td { background: #fafbfc; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 code, pre { font: 0.84rem/1.4 ui-monospace, "DejaVu Sans Mono", monospace; }
@@ -319,7 +319,7 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
     spec = m.get("spec")
     if isinstance(spec, dict):
         facts.append("<h4>Specification (the tool's JSON)</h4>" + _key_value_table(
-            {k: (_with_unit(k, v, "m") if isinstance(v, float) else v)
+            {k: _with_unit(k, v, "m" if isinstance(v, float) else "")
              for k, v in spec.items()}))
     physical = {k: m[k] for k in ("mass_kg", "mesh_volume_m3", "spec_volume_m3") if k in m}
     printability = m.get("printability")
