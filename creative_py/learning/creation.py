@@ -393,6 +393,8 @@ class ToolCreator:
         from creative_py.mesh.export import write_tool_files
         from creative_py.mesh.spec import spec_from_dict
 
+        self.runner.progress(f"manufacturing tool {k}: meshing, splitting to the build "
+                             "volume and slicing its pieces")
         values = {}
         for d in dims:
             name, value = d.args
