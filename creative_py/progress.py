@@ -84,18 +84,18 @@ class RunProgress:
             self._live.stop()
 
     def __call__(self, message: str) -> None:
-        """Print one progress line whole and update the status line from it."""
-        self.console.print(message, markup=False, highlight=False, soft_wrap=True)
+        """Update the status line from one progress line and print the line whole."""
         match = _TRIAL.match(message)
         if match:
             tag, k, tool, _, outcome = match.groups()
             self.phase, self.trial = PHASE_NAMES[tag], int(k)
             self.last, self.doing = f"{tool} {outcome}", ""
-            return
-        for start, phase in _DOING:
-            if message.startswith(start):
-                self.phase, self.trial, self.doing = phase, None, message
-                return
+        else:
+            for start, phase in _DOING:
+                if message.startswith(start):
+                    self.phase, self.trial, self.doing = phase, None, message
+                    break
+        self.console.print(message, markup=False, highlight=False, soft_wrap=True)
 
     def status(self) -> str:
         """Return the status line's text."""

@@ -365,6 +365,38 @@ def test_the_page_reads_at_1280_px(real_run, real_page, tmp_path):
         assert clip["reason"] in text
 
 
+def test_the_runs_model_file_loads_in_swipl_without_a_warning(real_run):
+    """Issue 16 item 6: ``swipl <run>/model.pl`` (the learned and the created tool's
+    models) consults without a warning."""
+    text = (real_run / "model.pl").read_text()
+    assert "learned_model(" in text and "needed a created tool" in text
+    proc = subprocess.run(["swipl", "--on-warning=status", "-q", "-g", "halt",
+                           str(real_run / "model.pl")], capture_output=True, text=True,
+                          timeout=60)
+    assert proc.returncode == 0 and "Warning" not in proc.stderr, proc.stderr
+
+
+def test_summary_names_the_runs_files_relative_to_it(real_run):
+    """Issue 16 item 6: the run folder is movable, so summary.json names its own files
+    relative to it."""
+    text = (real_run / "summary.json").read_text()
+    assert str(real_run) not in text
+    for tool in json.loads(text)["create"]["created_tools"]:
+        for name in tool["files"].values():
+            assert name is None or (not Path(name).is_absolute()
+                                    and (real_run / name).is_file()), name
+
+
+def test_the_terminal_report_starts_with_the_headline(real_run):
+    out = _creative("report", str(real_run)).stdout
+    summary = json.loads((real_run / "summary.json").read_text())
+    first = out.splitlines()[0]
+    assert first == f"Case {summary['case']}, strategy {summary['options']['strategy']}, " \
+                    f"seed {summary['seed']}."
+    assert f"Tool-use learning: {summary['use']['trials']} trials" in out
+    assert "design_volume_mm3=" not in out and "{'" not in out
+
+
 def test_the_terminal_report_shows_the_longest_reason_whole_in_80_columns(real_run):
     trials = _trials(real_run)
     longest = max(trials, key=lambda t: len(t["reason"]))
