@@ -339,7 +339,7 @@ def run(
     from rich.console import Console
 
     from creative_py.learning.run import RunOptions, resume_run, run_case
-    from creative_py.progress import RunProgress
+    from creative_py.report.progress import RunProgress
     from creative_py.world import WorldFileError
 
     console = Console(stderr=True)

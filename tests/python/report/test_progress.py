@@ -6,7 +6,7 @@ import logging
 
 from rich.console import Console
 
-from creative_py.progress import RunProgress, elapsed_text
+from creative_py.report.progress import RunProgress, elapsed_text
 
 LONG = ("TC predicted: hook_a2: behind(hook_a2,cube1) cannot hold within the reach of "
         "hook_a2 in the long_tube task: dx_reach = -0.011 m (deepest prong centre the "
