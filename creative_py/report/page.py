@@ -67,6 +67,7 @@ table.trials code { font-size: 0.78rem; }
 table.trials td.col-reason { min-width: 10rem; }
 table.trials td.col-pose { min-width: 7rem; }
 table.trials tr:nth-child(even) td { background: #fafbfc; }
+.nw { white-space: nowrap; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 code, pre { font: 0.84rem/1.4 ui-monospace, "DejaVu Sans Mono", monospace; }
 pre { background: #fff; border: 1px solid #dfe3ea; border-radius: 6px; padding: 0.7rem;
@@ -199,7 +200,11 @@ def _trials_section(run: RunContents) -> str:
                 cells.append(f'<td class="col-outcome">{_outcome(text)}</td>')
             elif header in ("#", "n", "loc"):
                 cells.append(f'<td class="num">{escape(text)}</td>')
-            elif header in ("tested", "violated", "pose"):
+            elif header == "pose":   # breaks between its numbers, never inside one
+                cells.append('<td class="col-pose"><code>' + ", ".join(
+                    f'<span class="nw">{escape(p)}</span>' for p in text.split(", "))
+                    + "</code></td>")
+            elif header in ("tested", "violated"):
                 cells.append(f'<td class="col-{header}"><code>{_breakable(text)}</code></td>')
             else:
                 cells.append(f'<td class="col-{escape(header)}">{escape(text)}</td>')
@@ -327,7 +332,7 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
         if isinstance(printability.get("extent"), list):
             physical["extent_mm"] = " x ".join(
                 f"{float(x) * 1000:.1f}" for x in printability["extent"]
-                if isinstance(x, (int, float)))
+                if isinstance(x, (int, float))) + " mm"
         physical.update({k: v for k, v in printability.items() if k != "extent"})
     if physical:
         facts.append("<h4>Mass and printability</h4>" + _key_value_table(
