@@ -512,7 +512,7 @@ def _plan_section(run: RunContents) -> str:
     if isinstance(pddl, dict) and pddl:
         out.append("<h3>PDDL planner on the run's files</h3>")
         for task, answer in pddl.items():
-            out.append(_pddl_html(str(task), answer) if isinstance(answer, dict)
+            out.append(_pddl_html(run.path, str(task), answer) if isinstance(answer, dict)
                        else f"<p>{escape(str(task))}: {escape(str(answer))}</p>")
     if run.pddl_files:
         out.append("<p>PDDL: " + " · ".join(f'<a href="{_url(n)}">{escape(n)}</a>'
@@ -520,12 +520,13 @@ def _plan_section(run: RunContents) -> str:
     return "".join(out) or '<p class="none">No plan recorded.</p>'
 
 
-def _pddl_html(task: str, answer: dict[str, Any]) -> str:
-    """One PDDL planner answer: status, planner, files, whether it agrees with
-    Prolog's plan, and the plan once."""
-    files = " · ".join(f'<a href="{_url(answer[k])}">{escape(str(answer[k]))}</a>'
-                       for k in ("domain", "problem") if isinstance(answer.get(k), str)
-                       and not Path(answer[k]).is_absolute())
+def _pddl_html(root: Path, task: str, answer: dict[str, Any]) -> str:
+    """One PDDL planner answer: status, planner, files (linked when they are in the run
+    folder), whether it agrees with Prolog's plan, and the plan once."""
+    names = [answer[k] for k in ("domain", "problem") if isinstance(answer.get(k), str)]
+    targets = [(n, relative_inside(root, n)) for n in names]
+    files = " · ".join(f'<a href="{_url(rel)}">{escape(rel)}</a>' if rel and
+                       (root / rel).is_file() else escape(n) for n, rel in targets)
     bits = [f"<b>{escape(task)}</b>"
             + (f" ({escape(str(answer['variant']))} task)" if answer.get("variant") else ""),
             f"{escape(str(answer.get('status', '?')))}"
