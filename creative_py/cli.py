@@ -17,6 +17,7 @@ import json
 import logging
 import os
 import sys
+import traceback
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Iterator, Optional
@@ -78,6 +79,10 @@ def _stdout_to_stderr() -> Iterator[None]:
 
 
 def _fail(message: str) -> None:
+    """Print ``error: message`` and exit with code 2; under ``--debug``, when an
+    exception is being handled, its traceback first."""
+    if _DEBUG["on"] and sys.exc_info()[1] is not None:
+        traceback.print_exc()
     typer.echo(f"error: {message}", err=True)
     raise typer.Exit(code=2)
 
@@ -379,6 +384,7 @@ def run(
     from rich.console import Console
 
     from creative_py.learning.run import RunOptions, resume_run, run_case
+    from creative_py.report.progress import RunProgress
     from creative_py.world import WorldFileError
 
     console = Console(stderr=True)
@@ -395,8 +401,8 @@ def run(
             _fail(f"--resume {resume}: the run is not of case {case!r}")
         try:
             with _one_line_errors(), _stdout_to_stderr():
-                folder = resume_run(resume, progress=lambda m: console.print(
-                    m, markup=False, highlight=False))
+                with RunProgress(console) as progress:
+                    folder = resume_run(resume, progress=progress)
         except (WorldFileError, ValueError) as exc:
             _fail(str(exc))
         typer.echo(str(folder.path))
@@ -420,14 +426,23 @@ def run(
         _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
     try:
         with _one_line_errors(), _stdout_to_stderr():
-            folder = run_case(case, out, opts, progress=lambda m: console.print(m, markup=False,
-                                                                               highlight=False),
-                              world_dir=world)
+            with RunProgress(console, _budget(case, world, max_trials)) as progress:
+                folder = run_case(case, out, opts, progress=progress, world_dir=world)
     except (WorldFileError, ValueError) as exc:
         _fail(str(exc))
     except OSError as exc:
         _fail(f"{exc.filename or out}: {exc.strerror or exc}")
     typer.echo(str(folder.path))
+
+
+def _budget(case: str, world: Optional[Path], max_trials: Optional[int]) -> Optional[int]:
+    """The tool-use trial budget a run will have (for its progress line)."""
+    if max_trials is not None:
+        return max_trials
+    try:
+        return _manifest(case, world).trial_budget
+    except Exception:  # noqa: BLE001 - the run itself reports a bad case or world
+        return None
 
 
 @app.command()
@@ -582,8 +597,27 @@ def make_tool_cmd(
             if not context:
                 raise
             _fail(f"--context {context!r}: the size model cannot use it: {exc.formal}")
+    typer.echo(tool_summary(files.manifest))
     for p in files.paths():
         typer.echo(str(p))
+
+
+def tool_summary(manifest: Path) -> str:
+    """Return a written tool in a few lines: its size, mass, printed pieces, print time
+    and filament (from its JSON)."""
+    from creative_py.report.table import print_text
+
+    data = json.loads(Path(manifest).read_text())
+    extent = (data.get("printability") or {}).get("extent")
+    size = (" x ".join(f"{v * 1000:.1f}" for v in extent) + " mm"
+            if isinstance(extent, list) else "?")
+    mass = data.get("mass_kg")
+    lines = [f"tool {data.get('name', '?')}: {size}, "
+             f"{f'{mass * 1000:.1f} g' if isinstance(mass, (int, float)) else 'mass ?'}"]
+    printed = data.get("print")
+    if isinstance(printed, dict):
+        lines.append(f"print: {print_text(printed)}")
+    return "\n".join(lines)
 
 
 

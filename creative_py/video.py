@@ -2,8 +2,10 @@
 
 The frames come from :class:`creative_py.sim.recorder.Recorder` (RGB, uint8, HxWx3);
 this module knows nothing of the physics. Captions are drawn with Pillow (installed
-with matplotlib) in matplotlib's DejaVu Sans, in a dark band at the bottom of the
-frame; the clip is H.264 in yuv420p (what browsers play), through ``imageio-ffmpeg``::
+with matplotlib) in matplotlib's DejaVu Sans, in a dark band added above the picture
+(the frame is taller than the camera's picture: the caption hides nothing of it, and a
+browser's video controls, drawn over the bottom of a video, do not hide the caption);
+the clip is H.264 in yuv420p (what browsers play), through ``imageio-ffmpeg``::
 
     from creative_py.video import write_clip
     info = write_clip(path, frames, fps=5.0,
@@ -24,8 +26,8 @@ import numpy as np
 LINE_PX = 12
 """Caption text height in pixels (the band is one line more than the text)."""
 
-BAND_ALPHA = 0.72
-"""Opacity of the caption band."""
+BAND_GREY = 28
+"""Grey level of the caption band (white text on it)."""
 
 
 @functools.lru_cache(maxsize=4)
@@ -56,7 +58,8 @@ def band_height(n_lines: int, line_px: int = LINE_PX) -> int:
 
 def caption(frame: np.ndarray, lines: Sequence[str], corner: str = "",
             line_px: int = LINE_PX) -> np.ndarray:
-    """Return a copy of ``frame`` with ``lines`` written in a dark band at its bottom.
+    """Return ``frame`` with a dark band of :func:`band_height` rows added above it, in
+    which ``lines`` are written (the result is that much taller than ``frame``).
 
     Parameters
     ----------
@@ -65,7 +68,7 @@ def caption(frame: np.ndarray, lines: Sequence[str], corner: str = "",
     lines : sequence of str
         Text lines, top to bottom; a line wider than the frame is cut with "...".
     corner : str
-        Short text for the top-right corner (e.g. the simulated time).
+        Short text for the band's top-right corner (e.g. the simulated time).
     line_px : int
         Text size in pixels.
     """
@@ -74,12 +77,13 @@ def caption(frame: np.ndarray, lines: Sequence[str], corner: str = "",
 
 
 class Captioner:
-    """Draws one caption onto many frames of one size (the text is rasterised once).
+    """Draws one caption above many frames of one size (the text is rasterised once).
 
     Parameters
     ----------
     width, height : int
-        Frame size, pixels.
+        Size of the frames given, pixels (the captioned frames are :attr:`band` rows
+        taller).
     lines : sequence of str
         The caption's lines (see :func:`caption`).
     line_px : int
@@ -91,7 +95,7 @@ class Captioner:
         from PIL import Image, ImageDraw
 
         self.width, self.height, self.line_px = width, height, line_px
-        self.band = min(height, band_height(len(lines), line_px))
+        self.band = band_height(len(lines), line_px)
         self.font = _font(line_px)
         mask = Image.new("L", (width, max(self.band, 1)), 0)
         draw = ImageDraw.Draw(mask)
@@ -116,16 +120,16 @@ class Captioner:
         return self._corners[text]
 
     def __call__(self, frame: np.ndarray, corner: str = "") -> np.ndarray:
-        """Return a captioned copy of ``frame`` (RGB, uint8, the size given)."""
+        """Return ``frame`` (RGB, uint8, the size given) with the caption band above it
+        (:attr:`band` rows more) and ``corner`` at the band's (else the picture's) top
+        right."""
         img = np.asarray(frame, dtype=np.uint8)
         if img.shape[:2] != (self.height, self.width):
             raise ValueError(f"caption: frame of {img.shape[1]}x{img.shape[0]} pixels, "
                              f"expected {self.width}x{self.height}")
-        img = img.copy()
-        if self.band:
-            region = img[self.height - self.band:].astype(np.float32) * (1 - BAND_ALPHA)
-            region = region * (1 - self.text) + 255.0 * self.text
-            img[self.height - self.band:] = region.astype(np.uint8)
+        band = np.full((self.band, self.width, 3), BAND_GREY, np.float32)
+        band = band * (1 - self.text) + 255.0 * self.text
+        img = np.concatenate([band.astype(np.uint8), img], axis=0)
         if corner:
             patch = self._corner(corner)
             ph, pw = patch.shape[:2]
@@ -161,7 +165,8 @@ def write_clip(path: Path, frames: Sequence[np.ndarray], fps: float,
     Returns
     -------
     dict
-        ``frames``, ``duration_s``, ``width``, ``height``, ``bytes``.
+        ``frames``, ``duration_s``, ``width``, ``height`` (of the captioned frames: the
+        caption band is above the picture), ``bytes``.
     """
     import imageio.v2 as imageio
 
@@ -185,4 +190,4 @@ def write_clip(path: Path, frames: Sequence[np.ndarray], fps: float,
         writer.close()
     tmp.replace(path)
     return {"frames": len(frames), "duration_s": round(len(frames) / fps, 2), "width": w,
-            "height": h, "bytes": path.stat().st_size}
+            "height": h + draw.band, "bytes": path.stat().st_size}

@@ -54,6 +54,9 @@ write_model_file(File, Case, Models, VS) :-
           format(Out, '%   the skill\'s own precondition, the most general hypothesis h_g, then~n', []),
           format(Out, '%   the spatial literals of h_s that h_g lacks (the pose that worked).~n', []),
           format(Out, '%   learned_hypothesis(Task, hs|hg, Clause): the version space\'s bounds.~n~n', []),
+          % The created tool's models are appended after the hypotheses: consulted
+          % with swipl, the file then loads without a discontiguous warning.
+          format(Out, ':- discontiguous learned_model/4.~n~n', []),
           forall(member(M, Models), write_model_(Out, Case, M, HS-HG)),
           nl(Out),
           portray_clause(Out, learned_hypothesis(Case, hs, HS)),
@@ -249,8 +252,9 @@ write_model_file(File, Case, Models, VS, Created) :-
 %!  load_model_file(+File) is det.
 %
 %   Read a model.pl written by write_model_file/4 and add its terms to the knowledge
-%   base. A missing file raises existence_error(source_sink, File); a syntax error
-%   raises with the file and line; any other term raises a domain_error.
+%   base (its directives, written for a consulting swipl, are skipped). A missing file
+%   raises existence_error(source_sink, File); a syntax error raises with the file and
+%   line; any other term raises a domain_error.
 
 load_model_file(File) :-
     must_be(atom, File),
@@ -268,6 +272,8 @@ read_all_(In, Terms) :-
     read_term(In, T, []),
     (   T == end_of_file
     ->  Terms = []
+    ;   T = (:- _)                      % a directive for swipl (discontiguous/1)
+    ->  read_all_(In, Terms)
     ;   Terms = [T|Ts],
         read_all_(In, Ts)
     ).

@@ -40,6 +40,8 @@ from typing import Any, Optional
 
 from creative_py.bridge import Compound, Engine, Term
 from creative_py.learning.trials import TaskState, TrialRecord, TrialRunner, term_text
+from creative_py.report.contents import readable_term
+from creative_py.report.table import dims_text
 
 log = logging.getLogger(__name__)
 
@@ -185,8 +187,9 @@ class ToolCreator:
                              dict(values), {k: str(v) for k, v in files.items()}, "",
                              mass_kg=mass, print=printed)
             created.append(ct)
-            runner.progress(f"created {ct.name}: {ct.replaced} -> {ct.general} -> "
-                            f"{ct.instance} {ct.dims}")
+            runner.progress(f"created {ct.name}: " + " -> ".join(
+                readable_term(x) for x in (ct.replaced, ct.general, ct.instance))
+                + f"; {dims_text(ct.dims)}")
             n += 1
             rec = self._trial_with(spec, n, vs, task)
             if rec.outcome in ("blocked", "unreachable", "invalid"):
@@ -393,6 +396,8 @@ class ToolCreator:
         from creative_py.mesh.export import write_tool_files
         from creative_py.kinds import spec_from_dict
 
+        self.runner.progress(f"manufacturing tool {k}: meshing, splitting to the build "
+                             "volume and slicing its pieces")
         values = {}
         for d in dims:
             name, value = d.args

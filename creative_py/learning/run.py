@@ -181,7 +181,9 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Parent folder of the run folder.
     options : RunOptions
     progress : callable or None
-        Receives one line of text per step (the CLI shows it).
+        Receives one line of text per step (the CLI shows it); without it, each line is
+        logged at INFO level to the ``creative_py.learning.run`` logger (Python's
+        ``logging``), so a caller that configures logging sees the run go on.
     world_dir : Path or None
         A world folder other than the shipped one (with its own ``case.toml``).
     resume : (Path, list of TrialRecord) or None
@@ -190,7 +192,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Used by :func:`resume_run`: the randomised world recorded in ``run.json``
         (otherwise drawn from ``options.world_seed``).
     """
-    say = progress or (lambda _m: None)
+    say = progress or log.info
     t_start = time.perf_counter()
     engine, world, drawn = _checked_world(case, options, world_dir, drawn)
     if resume is None:
@@ -314,7 +316,7 @@ def _create(runner: TrialRunner, use: UseResult, options: RunOptions,
                           demonstrate=options.demonstrate_creation)
     created = creator.create(use.vs, runner.manifest.harder_variant)
     summary["wall_time_s"]["create"] = round(time.perf_counter() - t0, 2)
-    summary["create"] = _creation_summary(created)
+    summary["create"] = _creation_summary(created, path)
     if created.instance is not None:
         models = engine.created_models(use.models, use.vs, created.replaced,
                                        created.instance)
@@ -330,6 +332,8 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
     ``report.html``."""
     run, trials = runner.run_folder, runner.trials
     summary["trials"] = summarise_trials(trials)
+    if clips.children:
+        say(f"encoding {len(clips.children)} video clip(s)")
     summary["videos"] = clips.finish()
     summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
     summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
@@ -552,7 +556,13 @@ def _created_pddl(runner: TrialRunner, folder: Path, created: CreateResult,
     return _check_pddl(folder, domain, problem, plan, created.variant, say)
 
 
-def _creation_summary(res: CreateResult) -> dict[str, Any]:
+def _creation_summary(res: CreateResult, run_dir: Path) -> dict[str, Any]:
+    """``summary.json``'s ``create``; the created tools' file names relative to the run
+    folder (the folder can be moved)."""
+    created = [asdict(c) for c in res.created]
+    for c in created:
+        if isinstance(c.get("files"), dict):
+            c["files"] = {k: _relative(run_dir, v) for k, v in c["files"].items()}
     return {
         "variant": res.variant,
         "needed": res.needed,
@@ -562,7 +572,7 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
         "trials": len([t for t in res.trials if t.phase == "create"]),
         "failed_trials": len([t for t in res.trials
                               if t.phase == "create" and t.outcome != "success"]),
-        "created_tools": [asdict(c) for c in res.created],
+        "created_tools": created,
         "slice_wall_time_s": round(sum(p.get("slice_wall_time_s", 0.0)
                                        for c in res.created
                                        for p in c.print.get("pieces", [])), 2),
@@ -580,3 +590,15 @@ def _creation_summary(res: CreateResult) -> dict[str, Any]:
         "catalogue_success": next((c["tool"] for c in res.catalogue
                                    if c["outcome"] == "success"), None),
     }
+
+
+def _relative(run_dir: Path, name: Any) -> Any:
+    """A file name as a POSIX path relative to the run folder when it is inside it; any
+    other value as it is."""
+    if not isinstance(name, (str, Path)):
+        return name
+    path = Path(name)
+    try:
+        return path.resolve().relative_to(Path(run_dir).resolve()).as_posix()
+    except ValueError:
+        return str(name)

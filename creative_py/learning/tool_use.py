@@ -192,6 +192,8 @@ class ToolUseLearner:
                 clips.write(recorder, why, 0, "demo", 0, m.tool, [], "success",
                             "goal reached", m.location)
 
+        runner.progress(f"demonstration: the trainer shows the task with {m.tool} "
+                        f"(loc {m.location})")
         demo = run_demonstration(runner.world, seed=runner.seed,
                                  images_dir=run.snapshot_dir("demo", 0) if run else None,
                                  record=recorder, gui=runner.gui,

@@ -98,7 +98,7 @@ class Printability:
         if self.fits_build_volume:
             return (f"fits the build volume: {ex} mm, lying with its {self.up_axis} axis up, "
                     f"turned {self.yaw_deg:g} deg on the bed")
-        return f"DOES NOT FIT the build volume: {self.reason}"
+        return f"printed in pieces (too large for the build volume in one): {self.reason}"
 
 
 def feature_dimensions(spec: ToolSpec) -> dict[str, float]:

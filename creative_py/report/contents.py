@@ -13,6 +13,8 @@ in both without a change here.
 from __future__ import annotations
 
 import json
+import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
@@ -95,6 +97,13 @@ class RunContents:
         ``domain.pddl`` and ``problem.pddl`` when they exist.
     warnings : list of str
         One sentence per thing that could not be read.
+    pose_units : dict
+        The unit of each pose number (``m``, ``rad``) by name, from the case's manifest
+        (empty when the case is not known here).
+    budget : int or None
+        N of Algorithm 1: the run's ``--max-trials``, else the manifest's trial budget.
+    paper_trials : int or None
+        The paper's count of tool-use trials for the case (the manifest's).
     """
 
     path: Path
@@ -106,14 +115,21 @@ class RunContents:
     tools: list[ToolEntry]
     pddl_files: list[str]
     warnings: list[str]
+    pose_units: dict[str, str] = field(default_factory=dict)
+    budget: int | None = None
+    paper_trials: int | None = None
 
     @property
     def columns(self) -> list[tuple[str, Callable[[TrialRecord], str]]]:
         """Return the trial columns of this run's records: :data:`TRIAL_COLUMNS`, from the
-        fields of their record type (:func:`~creative_py.records.trial.trial_columns`)."""
-        if self.trials and type(self.trials[0]) is not TrialRecord:
-            return trial_columns(type(self.trials[0]))
-        return TRIAL_COLUMNS
+        fields of their record type (:func:`~creative_py.records.trial.trial_columns`),
+        with the pose in millimetres and degrees when the units are known."""
+        columns = (trial_columns(type(self.trials[0]))
+                   if self.trials and type(self.trials[0]) is not TrialRecord
+                   else TRIAL_COLUMNS)
+        units = self.pose_units
+        return [(h, (lambda t: pose_text(t.get("pose"), units)) if h == "pose" else cell)
+                for h, cell in columns]
 
 
 def read_run(run_dir: Path | str) -> RunContents:
@@ -142,12 +158,86 @@ def read_run(run_dir: Path | str) -> RunContents:
         summary = {}
     model = root / "model.pl"
     model_text = model.read_text(encoding="utf-8", errors="replace") if model.is_file() else None
+    units, budget, paper = _case_facts(summary)
     return RunContents(
         path=root, trials=trials, summary=summary, model_text=model_text,
         plot="trials.png" if (root / "trials.png").is_file() else None,
         clips=_clips(root, summary, warnings), tools=_tools(root, summary, warnings),
         pddl_files=[n for n in ("domain.pddl", "problem.pddl") if (root / n).is_file()],
-        warnings=warnings)
+        warnings=warnings, pose_units=units, budget=budget, paper_trials=paper)
+
+
+def _case_facts(summary: dict[str, Any]) -> tuple[dict[str, str], int | None, int | None]:
+    """The pose units, trial budget and paper's trial count of the run's case, from its
+    manifest when the case is known here (nothing otherwise: the folder is still read)."""
+    case = summary.get("case")
+    if not isinstance(case, str):
+        return {}, None, None
+    try:
+        from creative_py.case import get_case
+
+        manifest = get_case(case)
+    except Exception:  # noqa: BLE001 - an unknown or broken case only loses the units
+        return {}, None, None
+    options = summary.get("options") if isinstance(summary.get("options"), dict) else {}
+    budget = options.get("max_trials") or manifest.trial_budget
+    return ({p.name: p.unit for p in manifest.pose_params},
+            budget if isinstance(budget, int) else None, manifest.paper_trials)
+
+
+def pose_text(pose: Any, units: dict[str, str]) -> str:
+    """Return a trial's pose with units: metres as millimetres, radians as degrees
+    (``dx 37.5 mm, dy 0 mm, roll 0 deg``); a number of unknown unit as it is."""
+    if not isinstance(pose, dict) or not pose:
+        return "-" if not pose else str(pose)
+    parts = []
+    for name, value in pose.items():
+        unit = units.get(name)
+        if isinstance(value, (int, float)) and not isinstance(value, bool):
+            if unit == "m":
+                parts.append(f"{name} {value * 1000:.1f} mm".replace(".0 mm", " mm"))
+            elif unit == "rad":
+                parts.append(f"{name} {math.degrees(value):.1f} deg".replace(".0 deg", " deg"))
+            else:
+                parts.append(f"{name} {value:.6g}" + (f" {unit}" if unit else ""))
+        else:
+            parts.append(f"{name} {value}")
+    return ", ".join(parts)
+
+
+_PROLOG_VARIABLE = re.compile(r"(?<![\w'])_(?:G)?\d+\b")
+_PAIR = re.compile(r"'-'\(([^(),]+),([^(),]+)\)")
+
+
+def readable_term(text: str) -> str:
+    """Return a Prolog term's text as a person reads it: the variables Prolog wrote as
+    ``_G0``, ``_123`` named ``A``, ``B``, ... in order of appearance, and a pair
+    ``'-'(X,tool)`` written ``X-tool``."""
+    names: dict[str, str] = {}
+
+    def name(match: re.Match) -> str:
+        key = match.group(0)
+        if key not in names:
+            n = len(names)
+            names[key] = chr(ord("A") + n % 26) + (str(n // 26) if n >= 26 else "")
+        return names[key]
+
+    return _PAIR.sub(r"\1-\2", _PROLOG_VARIABLE.sub(name, text))
+
+
+_WHY = {"demonstration": "the demonstration", "creation": "a tool-creation trial",
+        "first_success": "the first success", "trial": "every trial is kept"}
+
+
+def why_text(why: Any) -> str:
+    """Return why a clip was kept, in words (``summary.json`` keeps a key:
+    ``failure:<outcome>: <reason>`` is the first trial that ended so)."""
+    if not isinstance(why, str) or not why:
+        return ""
+    if why.startswith("failure:"):
+        outcome = why.removeprefix("failure:").split(":", 1)[0]
+        return f"the first {outcome} trial of its kind"
+    return _WHY.get(why, why.replace("_", " "))
 
 
 def relative_inside(root: Path, name: str) -> str | None:

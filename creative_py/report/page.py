@@ -20,8 +20,9 @@ from urllib.parse import quote
 from creative_py.records.folder import write_atomic
 from creative_py.report.contents import (
     Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
-    plan_steps, read_run, relative_inside,
+    plan_steps, read_run, readable_term, relative_inside, why_text,
 )
+from creative_py.report.headline import duration_text, headline
 
 Linker = Callable[[str], "str | None"]
 """Returns the relative path of an existing file a JSON value names, or None."""
@@ -32,7 +33,7 @@ REPORT_NAME = "report.html"
 _CSS = """
 body { font: 15px/1.45 system-ui, -apple-system, "Segoe UI", Roboto, sans-serif;
        color: #1d2330; background: #f6f7f9; margin: 0; }
-main { max-width: 1400px; margin: 0 auto; padding: 1.2rem 1.6rem 3rem; }
+main { max-width: 1400px; margin: 0 auto; padding: 1.2rem 1rem 3rem; }
 h1 { font-size: 1.6rem; margin: 0.4rem 0 0.2rem; }
 h2 { font-size: 1.25rem; margin: 2rem 0 0.6rem; padding-bottom: 0.25rem;
      border-bottom: 2px solid #d8dde6; }
@@ -48,16 +49,25 @@ a { color: #1f5fbf; }
 .card span { color: #5b6474; font-size: 0.85rem; }
 .panel { background: #fff; border: 1px solid #dfe3ea; border-radius: 6px;
          padding: 0.8rem 1rem; margin: 0.6rem 0; overflow-x: auto; }
-table { border-collapse: collapse; background: #fff; font-size: 0.88rem; }
+table { border-collapse: collapse; background: #fff; font-size: 0.88rem;
+        max-width: 100%; }
+td { overflow-wrap: break-word; }
+table.trials td.num, table.trials td.col-phase, table.trials td.col-tool,
+table.trials td.col-variant, table.trials td.col-outcome { white-space: nowrap; }
+.headline { background: #fff; border: 1px solid #dfe3ea; border-radius: 6px;
+            padding: 0.6rem 1rem; margin: 0.8rem 0; }
+.headline p { margin: 0.25rem 0; }
+tr.predicted td { background: #f3f0ff; font-style: italic; }
 th, td { border: 1px solid #dfe3ea; padding: 0.3rem 0.5rem; text-align: left;
          vertical-align: top; }
 th { background: #eef1f5; position: sticky; top: 0; }
 table.trials { width: 100%; }
 table.trials { font-size: 0.84rem; }
 table.trials code { font-size: 0.78rem; }
-table.trials td.col-reason { min-width: 14rem; }
-table.trials td.col-pose { min-width: 8rem; }
+table.trials td.col-reason { min-width: 10rem; }
+table.trials td.col-pose { min-width: 7rem; }
 table.trials tr:nth-child(even) td { background: #fafbfc; }
+.nw { white-space: nowrap; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 code, pre { font: 0.84rem/1.4 ui-monospace, "DejaVu Sans Mono", monospace; }
 pre { background: #fff; border: 1px solid #dfe3ea; border-radius: 6px; padding: 0.7rem;
@@ -142,7 +152,7 @@ def render_html(run: RunContents) -> str:
         f'<meta name="viewport" content="width=device-width, initial-scale=1">'
         f"<title>{escape(title)}</title><style>{_CSS}</style></head><body><main>"
         f"<h1>{escape(title)}</h1><p class=\"sub\">{subtitle}</p>"
-        f"<nav>{nav}</nav>{warnings}{_cards(run)}{body}"
+        f"<nav>{nav}</nav>{warnings}{_headline_html(run)}{_cards(run)}{body}"
         "<footer>Written from the files of this run folder, at the end of the run or by "
         "<code>creative report RUN --html</code>; every link is relative to the folder."
         "</footer>"
@@ -151,36 +161,19 @@ def render_html(run: RunContents) -> str:
 
 # --- sections -------------------------------------------------------------------------
 
+def _headline_html(run: RunContents) -> str:
+    """The run in a few sentences (:func:`creative_py.report.headline.headline`)."""
+    return ('<div class="headline">' + "".join(
+        f"<p>{escape(line)}</p>" for line in headline(run).lines) + "</div>")
+
+
 def _cards(run: RunContents) -> str:
-    s = run.summary
-    cards = []
-    counts: dict[str, list[int]] = {}
-    for t in run.trials:
-        c = counts.setdefault(str(t.get("phase", "")), [0, 0])
-        c[0] += 1
-        c[1] += t.get("outcome") == "success"
-    names = {"use": "tool-use learning", "create": "tool creation", "eval": "evaluation"}
-    for phase, (n, ok) in counts.items():
-        cards.append((f"{ok} / {n}", f"{names.get(phase, phase)}: successes / trials"))
-    use = s.get("use")
-    if isinstance(use, dict) and "converged" in use:
-        conv = (f"after {use['trials_to_converge']} trials" if use.get("converged")
-                and use.get("trials_to_converge") else "yes" if use.get("converged") else "no")
-        cards.append((conv, "tool-use learning converged"))
-    demo = s.get("demonstration")
-    if isinstance(demo, dict) and demo.get("tool"):
-        cards.append((str(demo["tool"]), "demonstrated tool"))
-    create = s.get("create")
-    if isinstance(create, dict):
-        cards.append((str(create.get("success") or "none"), "created tool that succeeded"))
-    wall = s.get("wall_time_s")
-    if isinstance(wall, dict) and "total" in wall:
-        parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.items() if k != "total")
-        cards.append((f"{number_text(wall['total'])} s", f"wall time ({parts})" if parts
-                      else "wall time"))
+    """The headline's figures as cards, each marked ``data-figure`` with its
+    ``summary.json`` key (a test compares them)."""
     return '<div class="cards">' + "".join(
-        f'<div class="card"><b>{escape(v)}</b><span>{escape(label)}</span></div>'
-        for v, label in cards) + "</div>"
+        f'<div class="card" data-figure="{escape(f.key)}" '
+        f'data-value="{escape(str(f.raw))}"><b>{escape(f.value)}</b>'
+        f'<span>{escape(f.label)}</span></div>' for f in headline(run).figures) + "</div>"
 
 
 def _trials_section(run: RunContents) -> str:
@@ -195,21 +188,47 @@ def _trials_section(run: RunContents) -> str:
         return plot + '<p class="none">No readable trial.</p>'
     head = "".join(f"<th>{escape(h)}</th>" for h, _ in run.columns)
     rows = []
+    predicted = _predicted_row(run)
     for t in run.trials:
+        if predicted and t.get("phase") == "create":
+            rows.append(predicted)
+            predicted = ""
         cells = []
         for header, cell in run.columns:
-            text = cell(t)
+            text = readable_term(cell(t))
             if header == "outcome":
-                cells.append(f"<td>{_outcome(text)}</td>")
+                cells.append(f'<td class="col-outcome">{_outcome(text)}</td>')
             elif header in ("#", "n", "loc"):
                 cells.append(f'<td class="num">{escape(text)}</td>')
-            elif header in ("tested", "violated", "pose"):
+            elif header == "pose":   # breaks between its numbers, never inside one
+                cells.append('<td class="col-pose"><code>' + ", ".join(
+                    f'<span class="nw">{escape(p)}</span>' for p in text.split(", "))
+                    + "</code></td>")
+            elif header in ("tested", "violated"):
                 cells.append(f'<td class="col-{header}"><code>{_breakable(text)}</code></td>')
             else:
                 cells.append(f'<td class="col-{escape(header)}">{escape(text)}</td>')
         rows.append(f'<tr class="trial {escape(str(t.get("outcome", "")))}">{"".join(cells)}</tr>')
+    rows.append(predicted)
     return (plot + f'<div class="panel"><table class="trials"><thead><tr>{head}</tr></thead>'
             f'<tbody>{"".join(rows)}</tbody></table></div>')
+
+
+def _predicted_row(run: RunContents) -> str:
+    """The creation trial that was predicted to fail and not run, as a row of the trial
+    table (``summary.json``'s ``create.predicted``), or ``""``."""
+    create = run.summary.get("create")
+    predicted = create.get("predicted") if isinstance(create, dict) else None
+    if not isinstance(predicted, dict) or predicted.get("feasible") is not False:
+        return ""
+    values = {"#": "-", "phase": "create", "n": "-", "tool": predicted.get("tool", "?"),
+              "variant": predicted.get("variant", ""), "loc": predicted.get("location", ""),
+              "pose": "-", "tested": "-",
+              "violated": literals_text(predicted.get("conflict")),
+              "outcome": "predicted failure, not run", "reason": predicted.get("why", "")}
+    cells = "".join(f'<td class="col-{escape(h)}">{escape(readable_term(str(values.get(h, ""))))}'
+                    "</td>" for h, _ in run.columns)
+    return f'<tr class="predicted">{cells}</tr>'
 
 
 def _clips_section(run: RunContents) -> str:
@@ -240,8 +259,10 @@ def _clip_caption(clip: Clip) -> str:
     if info.get("outcome"):
         parts.append(_outcome(str(info["outcome"])))
     text = " · ".join(p for p in parts if p)
+    if info.get("reason"):
+        text += f"<br>{escape(str(info['reason']))}"
     if info.get("why"):
-        text += f"<br>{escape(str(info['why']))}"
+        text += f"<br><i>kept as {escape(why_text(info['why']))}</i>"
     return text + f' <a href="{_url(clip.file)}">{escape(Path(clip.file).name)}</a>'
 
 
@@ -281,9 +302,9 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
 
     head = [f"<h3>{escape(tool.name)}</h3>"]
     if c:
-        head.append(f"<p><code>{escape(str(c.get('replaced', '')))}</code> &rarr; "
-                    f"<code>{escape(str(c.get('general', '')))}</code> &rarr; "
-                    f"<code>{escape(str(c.get('instance', '')))}</code></p>")
+        head.append("<p>" + " &rarr; ".join(
+            f"<code>{escape(readable_term(str(c.get(k, ''))))}</code>"
+            for k in ("replaced", "general", "instance")) + "</p>")
         outcomes = [f"creation trial {_outcome(str(c.get('trial_outcome', '?')))}"]
         if c.get("eval_outcomes"):
             outcomes.append("evaluation " + " ".join(_outcome(str(o))
@@ -297,21 +318,25 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
     facts = []
     dims = c.get("dims") if isinstance(c.get("dims"), dict) else None
     if dims:
-        facts.append("<h4>Dimensions (summary.json; lengths in m, angles in deg)</h4>"
-                     + _key_value_table(dims))
+        facts.append("<h4>Dimensions</h4>" + _key_value_table(
+            {k: (_with_unit(k, v, "m") if isinstance(v, (int, float)) else v)
+             for k, v in dims.items()}))
     spec = m.get("spec")
     if isinstance(spec, dict):
-        facts.append("<h4>Specification (the tool's JSON)</h4>" + _key_value_table(spec))
+        facts.append("<h4>Specification (the tool's JSON)</h4>" + _key_value_table(
+            {k: _with_unit(k, v, "m" if isinstance(v, float) else "")
+             for k, v in spec.items()}))
     physical = {k: m[k] for k in ("mass_kg", "mesh_volume_m3", "spec_volume_m3") if k in m}
     printability = m.get("printability")
     if isinstance(printability, dict):
         if isinstance(printability.get("extent"), list):
             physical["extent_mm"] = " x ".join(
                 f"{float(x) * 1000:.1f}" for x in printability["extent"]
-                if isinstance(x, (int, float)))
+                if isinstance(x, (int, float))) + " mm"
         physical.update({k: v for k, v in printability.items() if k != "extent"})
     if physical:
-        facts.append("<h4>Mass and printability</h4>" + _key_value_table(physical))
+        facts.append("<h4>Mass and printability</h4>" + _key_value_table(
+            {k: _with_unit(k, v) for k, v in physical.items()}))
     tail = ["<h4>Print time and filament</h4>" + _print_html(m.get("print"), link)]
     if tool.files:
         tail.append("<h4>Files</h4><p>" + " · ".join(
@@ -322,8 +347,9 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
 
 
 def _print_html(printed: Any, link: Linker) -> str:
-    """The tool JSON's ``print`` key: its pieces as a table (every key a piece has), the
-    rest as a key-value table."""
+    """The tool JSON's ``print`` key: its totals in a sentence, one row per printed piece
+    (size, place on the bed as an offset in mm and a turn, volume, print time,
+    filament, G-code) and one per joint."""
     if printed is None:
         return '<p class="none">Not sliced (the tool\'s JSON has no print figures).</p>'
     if isinstance(printed, list):
@@ -331,13 +357,115 @@ def _print_html(printed: Any, link: Linker) -> str:
     if not isinstance(printed, dict):
         return f"<p>{escape(str(printed))}</p>"
     out = []
-    pieces = printed.get("pieces")
-    if isinstance(pieces, list) and pieces and all(isinstance(p, dict) for p in pieces):
-        out.append(_records_table(pieces, link))
-    rest = {k: v for k, v in printed.items() if k != "pieces"}
+    total = []
+    if isinstance(printed.get("print_time_s"), (int, float)):
+        total.append(f"{duration_text(printed['print_time_s'])} of printing")
+    if isinstance(printed.get("filament_g"), (int, float)):
+        metres = printed.get("filament_mm")
+        total.append(f"{printed['filament_g']:.1f} g of filament"
+                     + (f" ({metres / 1000:.1f} m)" if isinstance(metres, (int, float))
+                        else ""))
+    if isinstance(printed.get("build_volume_mm"), list):
+        total.append("build volume " + " x ".join(
+            f"{v:g}" for v in printed["build_volume_mm"]) + " mm")
+    if printed.get("profile"):
+        total.append(f"profile {printed['profile']}")
+    if total:
+        out.append(f"<p><b>{escape('; '.join(total))}</b></p>")
+    if printed.get("how_they_join"):
+        out.append(f"<p>{escape(str(printed['how_they_join']))}</p>")
+    pieces = [p for p in printed.get("pieces") or [] if isinstance(p, dict)]
+    if pieces:
+        out.append(_pieces_table(pieces, link))
+    joints = [j for j in printed.get("joints") or [] if isinstance(j, dict)]
+    if joints:
+        rows = "".join(
+            f"<tr><td>{escape(str(j.get('pin', '')))}</td>"
+            f"<td>{escape(' + '.join(str(x) for x in j.get('joins') or []))}</td>"
+            f"<td>{escape(_mm(j.get('cut_mm')))} along {escape(str(j.get('axis', '?')))}</td>"
+            f"<td>{escape(_mm(j.get('pin_section_mm')))} square, "
+            f"{escape(_mm(j.get('pin_length_mm')))} long</td>"
+            f"<td>{escape(_mm(j.get('hole_section_mm')))} square, "
+            f"{escape(_mm(j.get('hole_depth_mm')))} deep</td></tr>" for j in joints)
+        out.append("<table><thead><tr><th>pin</th><th>joins</th><th>cut at</th>"
+                   "<th>pin</th><th>holes</th></tr></thead>"
+                   f"<tbody>{rows}</tbody></table>")
+    shown = {"pieces", "joints", "print_time_s", "filament_g", "filament_mm",
+             "build_volume_mm", "profile", "how_they_join"}
+    rest = {k: _with_unit(k, v) for k, v in printed.items() if k not in shown}
     if rest:
-        out.append(_key_value_table(rest, link))
+        out.append("<details><summary>Other print figures</summary>"
+                   + _key_value_table(rest, link) + "</details>")
     return "".join(out) or '<p class="none">No print figures.</p>'
+
+
+def _pieces_table(pieces: list[dict[str, Any]], link: Linker) -> str:
+    rows = []
+    for p in pieces:
+        box = p.get("bounding_box_mm")
+        size = (" x ".join(f"{v:.1f}" for v in box) + " mm"
+                if isinstance(box, list) else "-")
+        place = _placement_text(p)
+        volume = p.get("volume_mm3")
+        grams, metres = p.get("filament_g"), p.get("filament_mm")
+        filament = (f"{grams:.1f} g" if isinstance(grams, (int, float)) else "-") + (
+            f" ({metres / 1000:.2f} m)" if isinstance(metres, (int, float)) else "")
+        seconds = p.get("print_time_s")
+        files = " · ".join(
+            f'<a href="{_url(target)}">{escape(kind)}</a>' for kind, target in
+            ((k, link(p[k]) if isinstance(p.get(k), str) else None) for k in ("stl", "gcode"))
+            if target)
+        rows.append(
+            f"<tr><td>{escape(str(p.get('name', '')))}</td>"
+            f"<td>{escape(str(p.get('role', '')))}</td><td>{escape(size)}</td>"
+            f"<td>{escape(place)}</td>"
+            f"<td class=\"num\">{escape(f'{volume / 1000:.1f} cm³' if isinstance(volume, (int, float)) else '-')}</td>"
+            f"<td class=\"num\">{escape(duration_text(seconds) if isinstance(seconds, (int, float)) else '-')}</td>"
+            f"<td class=\"num\">{escape(filament)}</td><td>{files or '-'}</td></tr>")
+    return ("<table><thead><tr><th>piece</th><th>role</th><th>size</th><th>on the bed</th>"
+            "<th>volume</th><th>print time</th><th>filament</th><th>files</th></tr></thead>"
+            f"<tbody>{''.join(rows)}</tbody></table>")
+
+
+def _placement_text(piece: dict[str, Any]) -> str:
+    """Where a piece lies on the bed: the tool-frame axis up, the turn about the bed's
+    normal and the offset of the piece's origin on the bed (the translation of its 4 x 4
+    ``placement``), in mm."""
+    bits = []
+    if piece.get("up_axis"):
+        bits.append(f"{piece['up_axis']} axis up")
+    if isinstance(piece.get("yaw_deg"), (int, float)):
+        bits.append(f"turned {piece['yaw_deg']:g} deg")
+    matrix = piece.get("placement")
+    if (isinstance(matrix, list) and len(matrix) >= 3
+            and all(isinstance(r, list) and len(r) >= 4 for r in matrix[:3])):
+        bits.append("origin at (" + ", ".join(f"{float(r[3]):.1f}" for r in matrix[:3])
+                    + ") mm")
+    return ", ".join(bits) or "-"
+
+
+def _mm(value: Any) -> str:
+    return f"{value:.1f} mm" if isinstance(value, (int, float)) else "-"
+
+
+_UNITS = (("_mm3", "mm³"), ("_m3", "m³"), ("_mm", "mm"), ("_kg", "kg"), ("_deg", "deg"),
+          ("_pct", "%"), ("_mpa", "MPa"), ("_m", "m"), ("_g", "g"), ("_s", "s"))
+
+
+def _with_unit(key: str, value: Any, default: str = "") -> Any:
+    """A number of the run's JSON with the unit its key names (``mass_kg`` → kg), or
+    ``default``; anything else as it is."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        if isinstance(value, list) and key.endswith("_mm") and all(
+                isinstance(v, (int, float)) for v in value):
+            return " x ".join(f"{v:g}" for v in value) + " mm"
+        return value
+    for suffix, unit in _UNITS:
+        if key.endswith(suffix):
+            if unit == "s" and value >= 60:
+                return f"{number_text(value)} s ({duration_text(value)})"
+            return f"{number_text(value)} {unit}"
+    return f"{number_text(value)} {default}" if default else value
 
 
 def _hypotheses_section(run: RunContents) -> str:
@@ -353,7 +481,7 @@ def _hypotheses_section(run: RunContents) -> str:
     models = create.get("model") if isinstance(create, dict) else None
     if isinstance(models, list) and models:
         out.append("<h3>Model of the created tool</h3><pre>"
-                   + escape("\n".join(str(x) for x in models)) + "</pre>")
+                   + escape("\n".join(readable_term(str(x)) for x in models)) + "</pre>")
     if run.model_text is not None:
         out.append('<details><summary><a href="model.pl">model.pl</a> (the learned models '
                    f'and hypotheses, loadable in <code>creative repl</code>)</summary>'
@@ -362,7 +490,7 @@ def _hypotheses_section(run: RunContents) -> str:
 
 
 def _clause_html(clause: str) -> str:
-    head, body = clause_parts(clause)
+    head, body = clause_parts(readable_term(clause))
     if not body:
         return f"<pre>{escape(clause)}</pre>"
     items = "".join(f"<li><code>{escape(b)}</code></li>" for b in body)
@@ -383,14 +511,43 @@ def _plan_section(run: RunContents) -> str:
     pddl = run.summary.get("pddl")
     if isinstance(pddl, dict) and pddl:
         out.append("<h3>PDDL planner on the run's files</h3>")
-        if all(isinstance(v, dict) for v in pddl.values()):
-            out.append(_records_table([{"task": k, **v} for k, v in pddl.items()]))
-        else:
-            out.append(_key_value_table(pddl))
+        for task, answer in pddl.items():
+            out.append(_pddl_html(run.path, str(task), answer) if isinstance(answer, dict)
+                       else f"<p>{escape(str(task))}: {escape(str(answer))}</p>")
     if run.pddl_files:
         out.append("<p>PDDL: " + " · ".join(f'<a href="{_url(n)}">{escape(n)}</a>'
                                            for n in run.pddl_files) + "</p>")
     return "".join(out) or '<p class="none">No plan recorded.</p>'
+
+
+def _pddl_html(root: Path, task: str, answer: dict[str, Any]) -> str:
+    """One PDDL planner answer: status, planner, files (linked when they are in the run
+    folder), whether it agrees with Prolog's plan, and the plan once."""
+    names = [answer[k] for k in ("domain", "problem") if isinstance(answer.get(k), str)]
+    targets = [(n, relative_inside(root, n)) for n in names]
+    files = " · ".join(f'<a href="{_url(rel)}">{escape(rel)}</a>' if rel and
+                       (root / rel).is_file() else escape(n) for n, rel in targets)
+    bits = [f"<b>{escape(task)}</b>"
+            + (f" ({escape(str(answer['variant']))} task)" if answer.get("variant") else ""),
+            f"{escape(str(answer.get('status', '?')))}"
+            + (f" by {escape(str(answer['planner']))}" if answer.get("planner") else "")]
+    if "equals_prolog" in answer:
+        bits.append("the same plan as Prolog's" if answer["equals_prolog"] else
+                    "a plan other than Prolog's")
+    if "prolog_plan_valid" in answer:
+        bits.append("Prolog's plan is valid in PDDL" if answer["prolog_plan_valid"] else
+                    "Prolog's plan is NOT valid in PDDL")
+    if files:
+        bits.append(files)
+    plan = answer.get("plan")
+    steps = ("<ol class=\"plan\">" + "".join(f"<li><code>{escape(str(x))}</code></li>"
+                                             for x in plan) + "</ol>"
+             if isinstance(plan, list) and plan else "")
+    if not answer.get("equals_prolog") and isinstance(answer.get("prolog_plan"), list):
+        steps += ("<p>Prolog's plan:</p><ol class=\"plan\">" + "".join(
+            f"<li><code>{escape(str(x))}</code></li>" for x in answer["prolog_plan"])
+            + "</ol>")
+    return f"<p>{'; '.join(bits)}</p>{steps}"
 
 
 # --- small pieces ---------------------------------------------------------------------

@@ -17,7 +17,7 @@ from rich.console import Console, Group
 from rich.table import Table
 from rich.text import Text
 
-from creative_py.report.contents import RunContents, literals_text
+from creative_py.report.contents import RunContents, literals_text, readable_term, why_text
 
 
 def trial_table(run: RunContents) -> Table:
@@ -67,7 +67,7 @@ def summary_lines(run: RunContents) -> list[str]:
     lines = []
     hyp = s.get("hypotheses") if isinstance(s.get("hypotheses"), dict) else {}
     for key in ("hs", "hg"):
-        lines.append(f"{key}: {hyp.get(key, '?')}")
+        lines.append(f"{key}: {readable_term(str(hyp.get(key, '?')))}")
     if "plan" in s:
         lines.append(f"plan: {s['plan']}")
     pddl = s.get("pddl")
@@ -79,15 +79,17 @@ def summary_lines(run: RunContents) -> list[str]:
     for tool in run.tools:
         c = tool.created
         if c:
-            lines.append(f"created {tool.name}: {c.get('replaced')} -> {c.get('instance')} "
-                         f"{c.get('dims')} ({c.get('trial_outcome')}"
-                         f"{strength_note(c.get('strength'))})")
+            lines.append(f"created {tool.name}: {readable_term(str(c.get('replaced')))} -> "
+                         f"{readable_term(str(c.get('instance')))}; {dims_text(c.get('dims'))} "
+                         f"({c.get('trial_outcome')}{strength_note(c.get('strength'))})")
         printed = (tool.manifest or {}).get("print")
-        if printed is not None:
-            lines.append(f"print {tool.name}: {_plain(printed)}")
+        if isinstance(printed, dict):
+            lines.append(f"print {tool.name}: {print_text(printed)}")
     for clip in run.clips:
-        what = " ".join(_plain(clip.info[k]) for k in ("phase", "trial", "tool", "outcome",
-                                                        "why") if clip.info.get(k) is not None)
+        what = " ".join(_plain(clip.info[k]) for k in ("phase", "trial", "tool", "outcome")
+                        if clip.info.get(k) is not None)
+        if clip.info.get("why"):
+            what += f" (kept as {why_text(clip.info['why'])})"
         lines.append(f"video {clip.file}{'' if clip.exists else ' (missing)'}"
                      f"{': ' + what if what else ''}")
     return lines
@@ -109,10 +111,18 @@ def report_width(console: Console, table: Table, width: int | None) -> int:
 
 
 def print_report(run: RunContents, console: Console, width: int | None = None) -> None:
-    """Print the trials (a table when it fits the width, else blocks) and the summary
-    lines of a run on ``console``."""
+    """Print the run's headline (:func:`creative_py.report.headline.headline`), then the
+    trials (a table when it fits the width, else blocks) and the summary lines of a run
+    on ``console``."""
+    from creative_py.report.headline import headline
+
     table = trial_table(run)
     console.width = report_width(console, table, width)
+    lines = headline(run).lines
+    for line in lines:
+        console.print(line, markup=False, highlight=False)
+    if lines:
+        console.print()
     if natural_width(table) <= console.width:
         console.print(table)
     else:
@@ -120,6 +130,36 @@ def print_report(run: RunContents, console: Console, width: int | None = None) -
         console.print(trial_blocks(run))
     for line in summary_lines(run):
         console.print(line, markup=False, highlight=False)
+
+
+def dims_text(dims: Any) -> str:
+    """Return a created tool's dimensions (metres, degrees) as ``handle_length 600 mm,
+    hook_angle_deg 90, ...``."""
+    if not isinstance(dims, dict):
+        return str(dims)
+    return ", ".join(f"{k} {v * 1000:.1f} mm" if isinstance(v, float) else f"{k} {v}"
+                     for k, v in dims.items())
+
+
+def print_text(printed: dict[str, Any]) -> str:
+    """Return a tool's print figures (its JSON's ``print``) on one line: pieces, print
+    time, filament, and each piece's size, time and filament."""
+    from creative_py.report.headline import duration_text
+
+    pieces = [p for p in printed.get("pieces") or [] if isinstance(p, dict)]
+    bits = [f"{len(pieces)} piece{'s' if len(pieces) != 1 else ''}"]
+    if isinstance(printed.get("print_time_s"), (int, float)):
+        bits.append(duration_text(printed["print_time_s"]))
+    if isinstance(printed.get("filament_g"), (int, float)):
+        bits.append(f"{printed['filament_g']:.1f} g of filament")
+    for p in pieces:
+        box = p.get("bounding_box_mm")
+        size = " x ".join(f"{v:.0f}" for v in box) + " mm" if isinstance(box, list) else "?"
+        seconds, grams = p.get("print_time_s"), p.get("filament_g")
+        bits.append(f"{p.get('name', '?')} {size}"
+                    + (f" {duration_text(seconds)}" if isinstance(seconds, (int, float)) else "")
+                    + (f" {grams:.1f} g" if isinstance(grams, (int, float)) else ""))
+    return "; ".join(bits)
 
 
 def _plain(value: Any) -> str:

@@ -192,16 +192,17 @@ def capture_all(client_id: int, specs: Iterable[CameraSpec]) -> list[Frame]:
 
 
 def capture_frames(client_id: int, specs: Iterable[CameraSpec], images_dir=None,
-                   shot: int = 0) -> tuple[Frame, ...]:
+                   shot: int = 0, step: str = "") -> tuple[Frame, ...]:
     """Render every camera; with ``images_dir``, also save each RGB image there as
-    ``<shot>_<camera>.png`` (two digits for ``shot``)."""
+    ``<shot>_<step>_<camera>.png`` (two digits for ``shot``; ``step`` says when the
+    picture was taken, e.g. ``after_pick_up``; left out when empty)."""
     frames = tuple(capture_all(client_id, specs))
     if images_dir is not None:
         import matplotlib.image
 
         images_dir.mkdir(parents=True, exist_ok=True)
         for f in frames:
-            matplotlib.image.imsave(images_dir / f"{shot:02d}_{f.name}.png", f.rgb)
+            matplotlib.image.imsave(images_dir / f"{shot:02d}_{step + '_' if step else ''}{f.name}.png", f.rgb)
     return frames
 
 

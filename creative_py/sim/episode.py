@@ -135,6 +135,7 @@ class Episode:
         self.images_dir = images_dir
         self.render_time_s = 0.0
         self._shots = 0
+        self._last_skill = ""  # the skill run last: names the snapshots taken after it
         self.held = False
         self.grasp = self.kind.initial_grasp(self.spec)
         self.state: dict[str, Any] = {}
@@ -323,6 +324,7 @@ class Episode:
         try:
             res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
         finally:
+            self._last_skill = name
             if monitor is not None:
                 self.tool_load = monitor.stop()
         if not res.ok:
@@ -395,8 +397,9 @@ class Episode:
     def _frames(self) -> tuple:
         from creative_py.sim.camera import capture_frames
 
+        step = f"after_{self._last_skill}" if self._last_skill else "start"
         frames = capture_frames(self.sim.client, self.world.scene.cameras, self.images_dir,
-                                self._shots)
+                                self._shots, step)
         self.render_time_s += sum(f.render_time_s for f in frames)
         self._shots += self.images_dir is not None
         return frames

@@ -25,10 +25,16 @@
 %   failed or ran out of time, naming them.
 test_limit_s(60).
 
+%   Each passing test prints one dot, all on one line (plunit's silent option: no line
+%   per test), then a count; a failing test prints its message as usual.
 run_all :-
     findall(U:T, current_test(U, T, _, _, _), Tests),
     test_limit_s(Limit),
+    set_test_options([silent(true)]),
     foldl(run_test_limited_(Limit), Tests, [], Bad),
+    length(Tests, N),
+    length(Bad, NBad),
+    format(user_error, "~n~w plunit tests, ~w failed~n", [N, NBad]),
     (   Bad == []
     ->  true
     ;   reverse(Bad, Failed),

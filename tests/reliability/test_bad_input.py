@@ -92,6 +92,10 @@ def test_make_tool_refuses_an_existing_tool_folder_unless_told_to_overwrite(tmp_
     first = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
                      "--out", str(tmp_path), "--name", "h1", "--no-slice")
     assert first.returncode == 0, first.stderr
+    # Issue 16 item 5: the tool's size and mass first, then its files.
+    head = first.stdout.splitlines()[0]
+    assert head.startswith("tool h1: ") and " x " in head and head.endswith(" g"), head
+    assert "print: " in first.stdout and " pieces" in first.stdout
     stl = tmp_path / "h1" / "h1.stl"
     before = stl.read_bytes()
     again = creative("make-tool", "hook", "handle_length=long", "--variant", "long_tube",
@@ -251,6 +255,24 @@ def test_a_broken_ontology_file_is_one_line_and_debug_shows_the_traceback(tmp_pa
     debug = subprocess.run(cmd[:3] + ["--debug"] + cmd[3:], capture_output=True, text=True,
                            timeout=60, env=env, cwd=tmp_path)
     assert debug.returncode != 0 and "Traceback" in debug.stderr
+
+
+@pytest.mark.parametrize("command", [
+    ["report", "{tmp}/no_such_run"],
+    ["make-tool", "hook", "handle_length=huge", "--out", "{tmp}/t"],
+    ["run", "hook", "--world", "{tmp}", "--out", "{tmp}/runs"],
+    ["trial", "hook", "--world", "{tmp}"],
+])
+def test_debug_shows_the_traceback_of_every_commands_error(tmp_path, command):
+    """Issue 16 item 6: an error a command catches and words in one line shows its
+    traceback under ``--debug`` (and the same line last)."""
+    command = [c.format(tmp=tmp_path) for c in command]
+    plain = creative(*command)
+    lines = [line for line in plain.stderr.splitlines() if line and BANNER not in line]
+    assert plain.returncode == 2 and len(lines) == 1 and lines[0].startswith("error: ")
+    debug = creative("--debug", *command)
+    assert debug.returncode == 2 and "Traceback (most recent call last)" in debug.stderr
+    assert debug.stderr.rstrip().splitlines()[-1] == lines[0]
 
 
 def test_a_case_file_lacking_a_hook_predicate_is_named_before_the_run(tmp_path):

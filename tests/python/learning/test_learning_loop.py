@@ -141,6 +141,7 @@ def test_the_short_run_keeps_its_key_trials_as_clips_that_decode(short_run):
     import imageio.v2 as imageio
 
     from creative_py.learning.clips import failure_reason
+    from creative_py.video import band_height
 
     path, trials, summary = short_run
     videos = summary["videos"]
@@ -159,7 +160,9 @@ def test_the_short_run_keeps_its_key_trials_as_clips_that_decode(short_run):
         assert v["file"].startswith("videos/") and v["file"].endswith(".mp4")
         with imageio.get_reader(str(path / v["file"])) as reader:
             frames = [f for f in reader]
-        assert len(frames) == v["frames"] > 0 and frames[0].shape == (240, 320, 3)
+        # The 320x240 picture with its three-line caption in a band above it.
+        band = band_height(3)
+        assert len(frames) == v["frames"] > 0 and frames[0].shape == (240 + band, 320, 3)
         assert v["bytes"] == (path / v["file"]).stat().st_size
     assert sorted(p.name for p in (path / "videos").iterdir()) == sorted(
         v["file"].split("/")[1] for v in videos)

@@ -88,7 +88,8 @@ def test_scad_starts_with_named_parameters_in_millimetres(written):
 def test_an_oversize_tool_is_written_and_flagged(tmp_path):
     files = write_tool_files(HookSpec("hook_long", 0.55), tmp_path, picture=False)
     assert not files.fits_build_volume
-    assert "DOES NOT FIT" in files.scad.read_text()
+    assert "printed in pieces (too large for the build volume in one)" in \
+        files.scad.read_text()
     manifest = json.loads(files.manifest.read_text())
     assert manifest["printability"]["fits_build_volume"] is False
     assert "split" in manifest["printability"]["reason"]

@@ -15,6 +15,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -28,7 +29,7 @@ import pytest
 
 from creative_py.learning.run import RunOptions, run_case
 from creative_py.records.trial import TrialRecord, reason_text
-from creative_py.report.contents import read_run
+from creative_py.report.contents import read_run, readable_term
 from creative_py.report.page import render_html
 
 pytestmark = pytest.mark.sim
@@ -228,7 +229,7 @@ def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real
                 f"{key} {value}" in text
     # The learned hypotheses, literal by literal, and the plan's steps.
     for key in ("hs", "hg"):
-        head, _, body = summary["hypotheses"][key].partition(" :- ")
+        head, _, body = readable_term(summary["hypotheses"][key]).partition(" :- ")
         assert head in text and all(lit in text for lit in body.split(", "))
     steps = summary["plan"].removeprefix("plan([").removesuffix("])")
     assert steps.split(",", 1)[0] in text
@@ -282,6 +283,121 @@ def test_a_moved_folder_shows_its_clips_from_the_videos_folder(real_run, tmp_pat
     _assert_plays(_local_file(moved, "videos/frames.mp4"), tmp_path)
     assert "trials.png" in dom.sources("img")
     _assert_not_blank(screenshot)
+
+
+_LAYOUT_PROBE = """<script>
+(() => {
+  const width = document.documentElement.clientWidth;
+  const wide = [];
+  for (const e of document.querySelectorAll("body *")) {
+    const r = e.getBoundingClientRect();
+    if (r.width > 0 && (r.right > width + 0.5 || r.left < -0.5))
+      wide.push(e.tagName + "." + e.className + " " + Math.round(r.right));
+  }
+  const hidden = [];
+  for (const v of document.querySelectorAll("video")) {
+    const cap = v.closest("figure") && v.closest("figure").querySelector("figcaption");
+    const rv = v.getBoundingClientRect(), rc = cap && cap.getBoundingClientRect();
+    if (!rc || rc.height < 10 || rc.top < rv.bottom - 0.5 || rc.right > width + 0.5
+        || getComputedStyle(cap).visibility !== "visible" || cap.innerText.trim() === "")
+      hidden.push(v.getAttribute("src"));
+  }
+  const b = document.body.dataset;
+  b.viewport = width;
+  b.scrollWidth = document.documentElement.scrollWidth;
+  b.wide = JSON.stringify(wide.slice(0, 20));
+  b.hidden = JSON.stringify(hidden);
+  b.text = document.body.innerText;
+})();
+</script>"""
+"""Appended to a copy of the page (the report has no script of its own): measures, in
+Chromium's layout at the window's width, every element's box and each clip's caption."""
+
+
+def _summary_value(summary: dict, key: str):
+    """The value at a headline figure's dotted key, ``created_tools[<name>]`` choosing a
+    tool by name."""
+    value = summary
+    for part in key.split("."):
+        name = None
+        if part.endswith("]"):
+            part, _, name = part[:-1].partition("[")
+        value = value[part]
+        if name is not None:
+            value = next(v for v in value if v.get("name") == name)
+    return value
+
+
+@needs_chromium
+def test_the_page_reads_at_1280_px(real_run, real_page, tmp_path):
+    """Issue 16 item 3: in Chromium at 1280 px no element is wider than the window,
+    every clip's caption is visible under its video, no Prolog variable or internal key
+    shows, and the headline's figures are those of summary.json."""
+    real_page  # the page as the command wrote it
+    probe = real_run / ".layout-probe.html"
+    probe.write_text((real_run / "report.html").read_text().replace(
+        "</body>", _LAYOUT_PROBE + "</body>"))
+    try:
+        proc = subprocess.run(
+            [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
+             f"--user-data-dir={tmp_path / 'chromium-profile'}", "--window-size=1280,2000",
+             "--virtual-time-budget=3000", "--dump-dom", probe.resolve().as_uri()],
+            capture_output=True, text=True, timeout=120, cwd=tmp_path)
+    finally:
+        probe.unlink()
+    body = next(a for t, a in Dom(proc.stdout).elements if t == "body")
+    assert body.get("data-viewport") == "1280", proc.stderr[-1000:]
+    assert json.loads(body["data-wide"]) == [] and body["data-scroll-width"] == "1280"
+    summary = json.loads((real_run / "summary.json").read_text())
+    videos = summary["videos"]
+    assert videos and json.loads(body["data-hidden"]) == []
+    text = body["data-text"]
+    for bad in (r"\b_G\d+", r"(?<![\w.])_\d+\b", r"'-'\(", r"failure:\w+:", r"\bfirst_success\b",
+                r"\bsolved_by\b", r"\btrials_to_converge\b"):
+        assert not re.search(bad, text), (bad, re.search(bad, text))
+    # The headline: each card's figure is the summary's number at its key.
+    cards = [a for t, a in Dom(proc.stdout).elements if t == "div" and "data-figure" in a]
+    keys = {a["data-figure"] for a in cards}
+    assert {"use.trials", "create.solved_by", "wall_time_s.total"} <= keys
+    for a in cards:
+        assert a["data-value"] == str(_summary_value(summary, a["data-figure"])), a
+    use = summary["use"]
+    assert f"Tool-use learning: {use['trials']} trials of a budget of 2" in text
+    assert f"strategy {summary['options']['strategy']}" in text.lower()
+    for clip in videos:                                   # the caption says the outcome
+        assert clip["reason"] in text
+
+
+def test_the_runs_model_file_loads_in_swipl_without_a_warning(real_run):
+    """Issue 16 item 6: ``swipl <run>/model.pl`` (the learned and the created tool's
+    models) consults without a warning."""
+    text = (real_run / "model.pl").read_text()
+    assert "learned_model(" in text and "needed a created tool" in text
+    proc = subprocess.run(["swipl", "--on-warning=status", "-q", "-g", "halt",
+                           str(real_run / "model.pl")], capture_output=True, text=True,
+                          timeout=60)
+    assert proc.returncode == 0 and "Warning" not in proc.stderr, proc.stderr
+
+
+def test_summary_names_the_runs_files_relative_to_it(real_run):
+    """Issue 16 item 6: the run folder is movable, so summary.json names its own files
+    relative to it."""
+    text = (real_run / "summary.json").read_text()
+    assert str(real_run) not in text
+    for tool in json.loads(text)["create"]["created_tools"]:
+        for name in tool["files"].values():
+            assert name is None or (not Path(name).is_absolute()
+                                    and (real_run / name).is_file()), name
+
+
+def test_the_terminal_report_starts_with_the_headline(real_run):
+    out = _creative("report", str(real_run)).stdout
+    summary = json.loads((real_run / "summary.json").read_text())
+    first = out.splitlines()[0]
+    assert first == f"Case {summary['case']}, strategy {summary['options']['strategy']}, " \
+                    f"seed {summary['seed']}."
+    assert f"Tool-use learning: {summary['use']['trials']} trials" in out
+    assert "design_volume_mm3=" not in out and "{'" not in out
 
 
 def test_the_terminal_report_shows_the_longest_reason_whole_in_80_columns(real_run):

@@ -1,0 +1,67 @@
+"""The progress of ``creative run`` (issue 16 item 4): every line whole, a status line on
+a terminal only, and ``run_case``'s lines through ``logging`` without a callback."""
+
+import io
+import logging
+
+from rich.console import Console
+
+from creative_py.report.progress import RunProgress, elapsed_text
+
+LONG = ("TC predicted: hook_a2: behind(hook_a2,cube1) cannot hold within the reach of "
+        "hook_a2 in the long_tube task: dx_reach = -0.011 m (deepest prong centre the "
+        "held tool reaches, minus the cube centre); the trial would fail, so none is run")
+
+
+def test_lines_into_a_log_are_never_folded_and_have_no_status_line():
+    out = io.StringIO()
+    console = Console(file=out, width=80)            # not a terminal: a log file
+    with RunProgress(console, budget=12) as progress:
+        progress("TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)")
+        progress(LONG)
+    assert out.getvalue().splitlines() == [
+        "TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)", LONG]
+
+
+def test_the_status_line_says_phase_trial_of_budget_elapsed_and_last_outcome():
+    console = Console(file=io.StringIO(), width=120, force_terminal=True)
+    progress = RunProgress(console, budget=12, live=False)
+    progress.start -= 65
+    progress("demonstration: the trainer shows the task with hook_a2 (loc 1)")
+    assert progress.status().startswith("demonstration · 1:05 elapsed · demonstration:")
+    progress("TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)")
+    assert progress.status() == "tool-use learning · trial 3 of 12 · 1:05 elapsed · " \
+                                "last: hook_a2 failure"
+    progress("EVAL  2  hook_a2        loc 2  success     tested -")
+    assert progress.status() == "evaluation · trial 2 · 1:05 elapsed · last: hook_a2 success"
+    progress("manufacturing tool 1: meshing, splitting to the build volume and slicing "
+             "its pieces")
+    assert progress.status().startswith("tool creation · 1:05 elapsed · manufacturing")
+    assert elapsed_text(3725) == "1:02:05"
+
+
+def test_a_terminal_shows_the_status_line_under_the_lines():
+    out = io.StringIO()
+    console = Console(file=out, width=100, force_terminal=True)
+    with RunProgress(console, budget=12) as progress:
+        progress("TUL   1  hook_a1        loc 1  blocked     tested x")
+        console.file.flush()
+        text = out.getvalue()
+    assert "TUL   1  hook_a1" in text and "trial 1 of 12" in text
+
+
+def test_run_case_without_a_callback_logs_its_lines(monkeypatch, caplog, tmp_path):
+    """``run_case`` from Python, no callback: its first line (the run folder) is logged
+    before any physics (the world is stopped there by a failing load)."""
+    import creative_py.learning.run as run_module
+
+    def stop(*_a, **_k):
+        raise RuntimeError("stop here")
+
+    monkeypatch.setattr(run_module.ClipKeeper, "__init__", stop)
+    caplog.set_level(logging.INFO, logger="creative_py.learning.run")
+    try:
+        run_module.run_case("hook", tmp_path, run_module.RunOptions(phase="use"))
+    except RuntimeError:
+        pass
+    assert any(r.getMessage().startswith("run folder ") for r in caplog.records)
