@@ -213,9 +213,10 @@ class TrialRunner:
             for name, now in (("hs", hs), ("hg", hg)):
                 if rec.get(name) is not None and rec.get(name) != now:
                     raise ValueError(
-                        f"{self._where(n)}: field {name!r} is {rec.get(name)}, but "
-                        f"replaying the recorded outcome {rec.outcome!r} and facts gives "
-                        f"{now}: the record was changed; the run cannot be resumed")
+                        f"{self._where(n)}: fields 'outcome' and {name!r} disagree: "
+                        f"replaying the outcome {rec.outcome!r} with the line's facts "
+                        f"gives another {name[0]}_{name[1]}; the record was changed, the "
+                        f"run cannot be resumed")
             # The record as it was: its timings, clip and measurements stay.
             self.trials.append(rec)
             if self.clips is not None:
