@@ -298,8 +298,11 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         before: dict[str, Any] = {}
     else:
         run, replay, lines = resume
-        # Nothing is written until the replay is checked (TrialRunner unseals it).
+        # Nothing is written until the replay is checked (TrialRunner unseals it); with
+        # nothing to replay (killed before its first trial) the run starts afresh.
         run.seal(replay)
+        if not replay:
+            run.unseal()
         before = _earlier_summary(run.path)
         say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
     say(f"run folder {run.path}")

@@ -37,6 +37,9 @@ def test_a_run_killed_during_the_demonstration_resumes(uninterrupted, tmp_path, 
     assert trials(folder) == trials(uninterrupted)
     a, b = (json.loads((d / "summary.json").read_text()) for d in (uninterrupted, folder))
     assert a["hypotheses"] == b["hypotheses"]
+    # The demonstration ran again: its frames and clip are there.
+    assert any((folder / "snapshots" / "demo-000").iterdir())
+    assert [v["file"] for v in b["videos"]] == [v["file"] for v in a["videos"]]
 
 
 def test_a_folder_without_trials_has_none_to_replay(tmp_path):
