@@ -51,6 +51,24 @@ class FolderInUse(ValueError):
 LOCK_NAME = ".lock"
 """The lock file of a run folder (:meth:`RunFolder.lock`)."""
 
+_HELD: set[int] = set()
+"""The descriptors of the run-folder locks this process holds."""
+
+
+def _close_inherited() -> None:
+    """In a forked child (a clip being rendered): close the inherited lock descriptors,
+    so that the lock dies with the run's own process, not with its last child (the
+    parent's descriptor keeps the lock)."""
+    for fd in list(_HELD):
+        try:
+            os.close(fd)
+        except OSError:
+            pass
+    _HELD.clear()
+
+
+os.register_at_fork(after_in_child=_close_inherited)
+
 
 @dataclass
 class RunFolder:
@@ -111,11 +129,13 @@ class RunFolder:
         os.ftruncate(fd, 0)
         os.write(fd, f"{os.getpid()}\n".encode())
         self._lock_fd = fd
+        _HELD.add(fd)
 
     def release(self) -> None:
         """Release the folder's lock (the lock file stays; its pid is stale)."""
         if self._lock_fd is not None:
             fd, self._lock_fd = self._lock_fd, None
+            _HELD.discard(fd)
             fcntl.flock(fd, fcntl.LOCK_UN)
             os.close(fd)
 

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import signal
 import subprocess
 import sys
 import textwrap
@@ -88,3 +89,30 @@ def test_resumed_twice_at_once_one_is_refused(tmp_path):
     assert numbers == list(range(1, len(numbers) + 1)), numbers
     summary = json.loads((folder / "summary.json").read_text())
     assert summary["use"]["trials"] == len([t for t in trials(folder) if t["phase"] == "use"])
+
+
+def test_a_forked_child_does_not_keep_the_lock(tmp_path):
+    """A clip is rendered in a forked child that may outlive a killed run: the lock
+    must die with the run's process, not with the child."""
+    code = textwrap.dedent("""
+        import os, sys, time
+        from creative_py.records.folder import RunFolder
+        run = RunFolder.create(sys.argv[1], "rake", 0, "run")
+        child = os.fork()
+        if child == 0:
+            time.sleep(600)
+            os._exit(0)
+        print(child, flush=True)
+        time.sleep(600)
+    """)
+    proc = subprocess.Popen([sys.executable, "-c", code, str(tmp_path)],
+                            stdout=subprocess.PIPE, text=True)
+    child = int(proc.stdout.readline())
+    try:
+        with pytest.raises(FolderInUse):
+            RunFolder.open(tmp_path / "run")
+        os.kill(proc.pid, signal.SIGKILL)  # the child sleeps on, as a clip process would
+        proc.wait()
+        RunFolder.open(tmp_path / "run").release()
+    finally:
+        os.kill(child, signal.SIGKILL)
