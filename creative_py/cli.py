@@ -131,12 +131,13 @@ def _name(option: str, text: Optional[str]) -> Optional[str]:
 
 
 def _need_display() -> None:
-    """Fail in one line unless pybullet's GUI can open (an X display is set)."""
-    from creative_py.sim.core import display_available
+    """Fail in one line unless pybullet's GUI can open (the display is set and can be
+    opened: pybullet aborts the process on one it cannot open)."""
+    from creative_py.sim.core import display_reachable
 
-    if not display_available():
-        _fail("--gui: no display to open pybullet's GUI on (DISPLAY is not set); run "
-              "without --gui, or under a display (e.g. xvfb-run)")
+    why = display_reachable()
+    if why:
+        _fail(f"--gui: {why}; run without --gui, or under a display (e.g. xvfb-run)")
 
 
 @app.command()
@@ -383,7 +384,7 @@ def run(
     video clips)."""
     from rich.console import Console
 
-    from creative_py.learning.run import RunOptions, resume_run, run_case
+    from creative_py.learning.run import RunOptions, read_run_json, resume_run, run_case
     from creative_py.report.progress import RunProgress
     from creative_py.world import WorldFileError
 
@@ -394,10 +395,13 @@ def run(
     if gui:
         _need_display()
     if resume is not None:
-        meta = resume / "run.json"
-        if not meta.is_file():
+        if not (resume / "run.json").is_file():
             _fail(f"--resume {resume}: not a resumable run folder (no run.json)")
-        if json.loads(meta.read_text()).get("case") != case:
+        try:
+            recorded = read_run_json(resume)[0]
+        except ValueError as exc:
+            _fail(str(exc))
+        if recorded != case:
             _fail(f"--resume {resume}: the run is not of case {case!r}")
         try:
             with _one_line_errors(), _stdout_to_stderr():

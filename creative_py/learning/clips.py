@@ -18,10 +18,14 @@ whether the trial is kept, and only a kept trial is rendered and written, as
 
 ``why`` is ``demonstration``, ``creation``, ``first_success``, ``failure:<reason>``
 or, with ``all``, ``trial`` for a trial kept only because every trial is.
+
+Each entry is also appended to ``videos/clips.jsonl`` when its clip is started, so a
+resumed run keeps the entries (frames, duration) of the clips the interrupted run made.
 """
 
 from __future__ import annotations
 
+import json
 import os
 import re
 from pathlib import Path
@@ -35,6 +39,9 @@ VIDEO_MODES = ("all", "key", "none")
 CLIP_NICE = 10
 """How much lower than the run's the scheduling priority of a clip process is: it
 renders and encodes on the CPU the run leaves idle."""
+
+CLIPS_FILE = "videos/clips.jsonl"
+"""The entries of the clips started so far, one JSON object a line."""
 
 PHASE_TAGS = {"demo": "DEMO", "use": "TUL", "create": "TC", "eval": "EVAL"}
 
@@ -81,6 +88,10 @@ class ClipKeeper:
         self.background = background
         self.max_children = max_children
         self.children: dict[int, str] = {}
+        self.held = False
+        """True while a resumed run replays its recorded trials: nothing is written,
+        and a clip the interrupted run made is kept with its entry."""
+        self.earlier = self._earlier_entries()
         if self.mode != "none":
             from creative_py.video import prepare
 
@@ -140,6 +151,11 @@ class ClipKeeper:
 
         t0 = time.perf_counter()
         name = self.file_name(trial, phase, tool)
+        if self.held:  # a resume's replay: the clip, if any, was made before
+            entry = self._kept(name, why)
+            if entry is not None:
+                self.entries.append(entry)
+            return entry
         head = (f"#{trial} {PHASE_TAGS.get(phase, phase)} {phase_trial}  {tool}"
                 + (f"  loc {location}" if location is not None else ""))
         lines = [head, f"tested {', '.join(tested) or '-'}",
@@ -161,6 +177,7 @@ class ClipKeeper:
                  "verdict": "; ".join(measured), "why": why,
                  "frames": n, "duration_s": round(n / fps, 2), "bytes": None}
         self.entries.append(entry)
+        self._note(entry)
         self.wall_time_s += time.perf_counter() - t0
         return entry
 
@@ -194,11 +211,45 @@ class ClipKeeper:
 
     def replayed(self, record: TrialRecord) -> None:
         """Account for a trial of a resumed run (no physics): note its outcome and keep
-        the entry of its clip if the interrupted run wrote one."""
+        the entry of its clip, as the interrupted run recorded it, if it wrote one."""
         why = self.why(record.phase, record.outcome, record.reason)
         name = self.file_name(record.trial, record.phase, record.tool)
-        if why is not None and (self.run_dir / name).is_file():
-            self.entries.append({"file": name, "phase": record.phase,
-                                 "trial": record.trial, "tool": record.tool,
-                                 "tested": list(record.tested), "outcome": record.outcome,
-                                 "reason": record.reason, "why": why})
+        if why is not None:
+            entry = self._kept(name, why)
+            if entry is None and (self.run_dir / name).is_file():
+                entry = {"file": name, "phase": record.phase, "trial": record.trial,
+                         "tool": record.tool, "tested": list(record.tested),
+                         "outcome": record.outcome, "reason": record.reason, "why": why,
+                         "frames": None, "duration_s": None, "bytes": None}
+            if entry is not None:
+                self.entries.append(entry)
+
+    def _kept(self, name: str, why: str) -> Optional[dict[str, Any]]:
+        """Return the recorded entry of an existing clip ``name`` (its ``why`` as
+        decided now), or None."""
+        if not (self.run_dir / name).is_file() or name not in self.earlier:
+            return None
+        return {**self.earlier[name], "why": why, "bytes": None}
+
+    def _note(self, entry: dict[str, Any]) -> None:
+        """Append a clip's entry to :data:`CLIPS_FILE`."""
+        path = self.run_dir / CLIPS_FILE
+        path.parent.mkdir(parents=True, exist_ok=True)
+        with open(path, "a", encoding="utf-8") as fh:
+            fh.write(json.dumps({k: v for k, v in entry.items() if k != "bytes"}) + "\n")
+
+    def _earlier_entries(self) -> dict[str, dict[str, Any]]:
+        """Return the entries :data:`CLIPS_FILE` holds, by file (the last of each)."""
+        out: dict[str, dict[str, Any]] = {}
+        try:
+            text = (self.run_dir / CLIPS_FILE).read_text(encoding="utf-8")
+        except OSError:
+            return out
+        for line in text.splitlines():
+            try:
+                entry = json.loads(line)
+            except ValueError:
+                continue  # a torn last line of a killed run
+            if isinstance(entry, dict) and isinstance(entry.get("file"), str):
+                out[entry["file"]] = entry
+        return out

@@ -11,14 +11,14 @@ import json
 import logging
 import shutil
 import time
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, PrologError, fact_term
 from creative_py.learning.clips import VIDEO_MODES, ClipKeeper
 from creative_py.learning.creation import CreateResult, ToolCreator
-from creative_py.records.folder import RunFolder, read_records
+from creative_py.records.folder import RunFolder, read_resume
 from creative_py.learning.strategies import strategy_named
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
@@ -128,42 +128,104 @@ class RunOptions:
         strategy_named(self.strategy)
 
 
-def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
-    """Resume a run that was interrupted (killed, out of power) and return its folder.
+RUN_JSON_KEYS = ("case", "options", "world", "drawn_world")
+"""The keys of a run folder's ``run.json`` (:func:`read_run_json`)."""
 
-    The run's case, options and world come from its ``run.json``; the trials already in
-    ``trials.jsonl`` are replayed into the version space without physics (a torn last
-    line is dropped), then the run goes on from the next trial. Runs are deterministic,
-    so the result equals an uninterrupted run of the same seed, timings aside.
+
+def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
+                                          Optional[dict[str, Any]]]:
+    """Return the case, options, world folder and drawn world of a run folder's
+    ``run.json``, checked.
+
+    A run recorded before there were strategies ran the paper's Algorithm 1, and one
+    recorded before catalogued objects were tried first made a tool at once; other
+    missing options take their defaults. A resumed run shows no GUI (the display it
+    was started on may be gone).
 
     Raises
     ------
     ValueError
-        ``run_dir`` is not a run folder that can be resumed (no ``run.json``), or the
-        recorded trials are not those the learner decides now.
+        One line naming ``run.json`` and the field: no ``run.json``, not JSON, not an
+        object, a missing key, an unknown option or a bad option value, a
+        ``drawn_world`` that is not an object.
     """
-    run_dir = Path(run_dir)
-    meta_path = run_dir / "run.json"
+    meta_path = Path(run_dir) / "run.json"
     if not meta_path.is_file():
         raise ValueError(f"{run_dir}: not a resumable run folder (no run.json)")
-    meta = json.loads(meta_path.read_text())
-    warnings: list[str] = []
-    trials = read_records(run_dir, warn=warnings.append)
-    for w in warnings:
-        log.warning("%s", w)
-    # Keep the readable trials only, so that the run appends after them.
-    RunFolder(run_dir).rewrite_trials(trials)
-    # A resumed run shows no GUI: the display it was started on may be gone. A run
-    # recorded before there were strategies ran the paper's Algorithm 1, and one
-    # recorded before catalogued objects were tried first made a tool at once.
+    try:
+        meta = json.loads(meta_path.read_text(encoding="utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{meta_path}: not JSON ({getattr(exc, 'msg', exc)})") from None
+    if not isinstance(meta, dict):
+        raise ValueError(f"{meta_path}: a JSON object with keys {', '.join(RUN_JSON_KEYS)} "
+                         f"was expected, not a {type(meta).__name__}")
+    for key in ("case", "options"):
+        if key not in meta:
+            raise ValueError(f"{meta_path}: field {key!r} is missing")
+    if not isinstance(meta["case"], str):
+        raise ValueError(f"{meta_path}: field 'case' must be text, got {meta['case']!r}")
+    opts = meta["options"]
+    if not isinstance(opts, dict):
+        raise ValueError(f"{meta_path}: field 'options' must be an object, got "
+                         f"{type(opts).__name__}")
+    names = {f.name for f in fields(RunOptions)}
+    unknown = sorted(set(opts) - names)
+    if unknown:
+        raise ValueError(f"{meta_path}: field 'options.{unknown[0]}' is not an option "
+                         f"({', '.join(sorted(names))})")
     try:
         options = RunOptions(**{"strategy": "paper", "catalogue_first": False,
-                                **meta["options"], "gui": False})
+                                **opts, "gui": False})
     except ValueError as exc:
         raise ValueError(f"{meta_path}: field 'options': {exc}") from None
-    world_dir = Path(meta["world"]) if meta.get("world") else None
-    return run_case(meta["case"], run_dir.parent, options, progress, world_dir,
-                    resume=(run_dir, trials), drawn=meta.get("drawn_world"))
+    world = meta.get("world")
+    if world is not None and not isinstance(world, str):
+        raise ValueError(f"{meta_path}: field 'world' must be a folder or null, got "
+                         f"{world!r}")
+    drawn = meta.get("drawn_world")
+    if drawn is not None and not isinstance(drawn, dict):
+        raise ValueError(f"{meta_path}: field 'drawn_world' must be an object or null, "
+                         f"got {type(drawn).__name__}")
+    return meta["case"], options, Path(world) if world else None, drawn
+
+
+def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
+    """Resume a run that was interrupted (killed, out of power) and return its folder.
+
+    The folder is locked first (:meth:`RunFolder.open`: a run still going refuses the
+    resume). The run's case, options and world come from its ``run.json``
+    (:func:`read_run_json`); every line of ``trials.jsonl`` is checked
+    (:func:`creative_py.records.folder.read_resume`; a torn last line is dropped, and
+    a run killed before its first trial has none), then the trials are replayed into
+    the version space without physics, each checked against its record (the trial
+    decided now, and the h_s and h_g it led to), and the run goes on from the next
+    trial. Until the replay is checked the folder is sealed: a refused resume writes
+    nothing. Runs are deterministic, so the result equals an uninterrupted run of the
+    same seed, timings aside.
+
+    Raises
+    ------
+    ValueError
+        One line naming the file, line and field: ``run_dir`` is not a run folder
+        that can be resumed, a line or ``run.json`` is invalid, or the recorded trials
+        are not those the learner decides now;
+        :class:`~creative_py.records.folder.FolderInUse` when another process holds
+        the folder.
+    """
+    run_dir = Path(run_dir)
+    if not (run_dir / "run.json").is_file():
+        raise ValueError(f"{run_dir}: not a resumable run folder (no run.json)")
+    folder = RunFolder.open(run_dir)
+    try:
+        case, options, world_dir, drawn = read_run_json(run_dir)
+        warnings: list[str] = []
+        trials, lines = read_resume(run_dir, warn=warnings.append)
+        for w in warnings:
+            log.warning("%s", w)
+        return run_case(case, run_dir.parent, options, progress, world_dir,
+                        resume=(folder, trials, lines), drawn=drawn)
+    finally:
+        folder.release()
 
 
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
@@ -186,31 +248,26 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         ``logging``), so a caller that configures logging sees the run go on.
     world_dir : Path or None
         A world folder other than the shipped one (with its own ``case.toml``).
-    resume : (Path, list of TrialRecord) or None
-        Used by :func:`resume_run`: the run folder and its recorded trials.
+    resume : (RunFolder, list of TrialRecord, list of int) or None
+        Used by :func:`resume_run`: the run folder (locked), its recorded trials and
+        their line numbers in ``trials.jsonl``.
     drawn : dict or None
         Used by :func:`resume_run`: the randomised world recorded in ``run.json``
         (otherwise drawn from ``options.world_seed``).
     """
     say = progress or log.info
     t_start = time.perf_counter()
-    engine, world, drawn = _checked_world(case, options, world_dir, drawn)
-    if resume is None:
-        run = RunFolder.create(Path(out), case, options.seed, run_name)
-        run.write_json("run.json", {"case": case, "options": asdict(options),
-                                    "world": str(world_dir) if world_dir else None,
-                                    "drawn_world": drawn})
-        replay: list = []
-    else:
-        run, replay = RunFolder(resume[0]), resume[1]
-        say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
-    say(f"run folder {run.path}")
+    engine, world, drawn = _checked_world(case, options, world_dir, drawn,
+                                          resume[0].path / "run.json" if resume else None)
+    run, replay, lines, before = _open_folder(out, case, options, world_dir, drawn,
+                                              run_name, resume, say)
     try:
         # In the GUI the client has a thread of its own: no forking it.
         clips = ClipKeeper(options.video, run.path, world.scene.video,
                            background=not options.gui)
+        clips.held = run.sealed
         runner = TrialRunner(engine, world, run, options.seed, say, replay=replay,
-                             clips=clips, gui=options.gui)
+                             clips=clips, gui=options.gui, replay_lines=lines)
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                    "options": asdict(options), "wall_time_s": {},
                                    "world_seed": options.world_seed, "drawn_world": drawn}
@@ -218,21 +275,60 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         _plan_and_evaluate(runner, use, options, summary, say)
         if options.phase in ("create", "all"):
             _create(runner, use, options, summary, say)
-        _finish(runner, clips, options, summary, t_start, say)
+        runner.end_replay()  # a resume with nothing left to run: the replay was checked
+        _finish(runner, clips, options, summary, t_start, say,
+                before if resume is not None and runner.physical == 0 else {})
     except BaseException:
         # Nothing learned yet (the demonstration failed, the run was interrupted before
-        # its first trial): leave no empty folder behind.
+        # its first trial): leave no empty folder behind. (A run killed outright leaves
+        # run.json: --resume starts it again from there.)
         if not run.trials and resume is None:
+            run.release()
             shutil.rmtree(run.path, ignore_errors=True)
         raise
+    finally:
+        if resume is None:
+            run.release()  # a resumed folder's lock is resume_run's
     return run
 
 
+def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[Path],
+                 drawn: Optional[dict[str, Any]], run_name: Optional[str],
+                 resume: Optional[tuple], say: Callable[[str], None]
+                 ) -> tuple[RunFolder, list, list, dict[str, Any]]:
+    """Return the run folder (created and locked with its ``run.json``, or the resumed
+    one, sealed until its replay is checked), the trials to replay, their line numbers
+    and the summary of a resumed run that had finished ({} otherwise)."""
+    if resume is None:
+        run = RunFolder.create(Path(out), case, options.seed, run_name)
+        try:
+            run.write_json("run.json", {"case": case, "options": asdict(options),
+                                        "world": str(world_dir) if world_dir else None,
+                                        "drawn_world": drawn})
+        except BaseException:
+            run.release()
+            shutil.rmtree(run.path, ignore_errors=True)
+            raise
+        say(f"run folder {run.path}")
+        return run, [], [], {}
+    run, replay, lines = resume
+    # Nothing is written until the replay is checked (TrialRunner unseals it); with
+    # nothing to replay (killed before its first trial) the run starts afresh.
+    run.seal(replay)
+    if not replay:
+        run.unseal()
+    say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
+    say(f"run folder {run.path}")
+    return run, replay, lines, _earlier_summary(run.path)
+
+
 def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
-                   drawn: Optional[dict[str, Any]]) -> tuple[Engine, Any,
-                                                            Optional[dict[str, Any]]]:
-    """Return the engine, the case's world (drawn when ``options.world_seed`` says so)
-    and the drawn world, all checked against the ontology before any folder or physics."""
+                   drawn: Optional[dict[str, Any]], run_json: Optional[Path] = None
+                   ) -> tuple[Engine, Any, Optional[dict[str, Any]]]:
+    """Return the engine, the case's world (drawn when ``options.world_seed`` says so,
+    or as ``drawn`` read back from a resumed run's ``run_json``) and the drawn world, all
+    checked against the ontology, and the display for ``--gui``, before any folder or
+    physics."""
     from creative_py.case import get_case, read_manifest
     from creative_py.mesh.slicer import require_slicer
     from creative_py.sim import load_world
@@ -250,8 +346,17 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
     if options.world_seed is not None:
         if drawn is None:
             drawn = draw_catalogue_world(engine, world, options.world_seed)
-        world = apply_drawn(world, drawn)
+            world = apply_drawn(world, drawn)
+        else:  # read back from run.json
+            try:
+                world = apply_drawn(world, drawn)
+            except (KeyError, TypeError, AttributeError, ValueError) as exc:
+                raise ValueError(f"{run_json or 'run.json'}: field 'drawn_world' is not a "
+                                 f"drawn world of this case ({type(exc).__name__}: {exc})"
+                                 ) from None
         check_catalogue(engine, world)
+    if options.gui:
+        require_display()  # before the folder exists: an unreachable display aborts
     return engine, world, drawn
 
 
@@ -327,9 +432,11 @@ def _create(runner: TrialRunner, use: UseResult, options: RunOptions,
 
 
 def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
-            summary: dict[str, Any], t_start: float, say: Callable[[str], None]) -> None:
+            summary: dict[str, Any], t_start: float, say: Callable[[str], None],
+            before: dict[str, Any]) -> None:
     """Wait for the clips, then write ``trials.png``, ``summary.json`` and, last,
-    ``report.html``."""
+    ``report.html``; ``before`` is the summary of a finished run resumed again, which
+    ran nothing (its wall times are kept)."""
     run, trials = runner.run_folder, runner.trials
     summary["trials"] = summarise_trials(trials)
     if clips.children:
@@ -337,6 +444,8 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
     summary["videos"] = clips.finish()
     summary["wall_time_s"]["video"] = round(clips.wall_time_s, 2)
     summary["wall_time_s"]["total"] = round(time.perf_counter() - t_start, 2)
+    if "wall_time_s" in before:
+        summary["wall_time_s"] = before["wall_time_s"]
     plot_trials(trials, run.path / "trials.png",
                 title=f"CREATIVE-py, {runner.case} case, seed {options.seed}")
     run.write_json("summary.json", summary)
@@ -363,6 +472,26 @@ def catalogue_ranges(engine: Engine, world: Any) -> dict[str, dict[str, tuple]]:
 DEMO_CHECK_SEED = 0
 """The seed of the sensor noise in the demonstration that checks a drawn world (the
 world must not depend on a run's seed; runs of seed 0 see that very demonstration)."""
+
+
+def _earlier_summary(run_dir: Path) -> dict[str, Any]:
+    """Return the ``summary.json`` of a run folder that finished before, or {}."""
+    try:
+        data = json.loads((run_dir / "summary.json").read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+    return data if isinstance(data, dict) else {}
+
+
+def require_display() -> None:
+    """Raise ValueError unless pybullet's GUI can open on the display
+    (:func:`creative_py.sim.core.display_reachable`)."""
+    from creative_py.sim.core import display_reachable
+
+    why = display_reachable()
+    if why:
+        raise ValueError(f"--gui: {why}; run without --gui, or under a display "
+                         f"(e.g. xvfb-run)")
 
 
 def draw_catalogue_world(engine: Engine, world: Any, seed: int,

@@ -31,7 +31,7 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
-from creative_py.bridge import Compound, Engine, Term, fact_term
+from creative_py.bridge import Compound, Engine, PrologError, Term, fact_term
 from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
@@ -118,7 +118,11 @@ class TrialRunner:
         Trials already recorded in ``trials.jsonl`` (a resumed run): the first
         ``len(replay)`` trials take their outcome and observed facts from these records
         instead of the physics, so the version space is rebuilt exactly; the decisions
-        are Prolog's again and must name the recorded tool and pose.
+        are Prolog's again and must name the recorded tool and pose, and the labels
+        must give the recorded h_s and h_g.
+    replay_lines : sequence of int or None
+        The line of ``trials.jsonl`` of each replayed trial (for the error naming a
+        record that does not replay); None: the trial numbers.
     clips : ClipKeeper or None
         Which trials become video clips (:mod:`creative_py.learning.clips`); None
         records none.
@@ -129,7 +133,7 @@ class TrialRunner:
     def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
                  progress: Optional[Callable[[str], None]] = None,
                  replay: Sequence[TrialRecord] = (), clips: Optional[ClipKeeper] = None,
-                 gui: bool = False) -> None:
+                 gui: bool = False, replay_lines: Optional[Sequence[int]] = None) -> None:
         self.engine = engine
         self.world = world
         self.run_folder = run
@@ -137,6 +141,9 @@ class TrialRunner:
         self.progress = progress or (lambda _msg: None)
         self.trials: list[TrialRecord] = []
         self.replay = list(replay)
+        self.replay_lines = list(replay_lines or [r.trial for r in self.replay])
+        self.physical = 0
+        """Trials run in the physics (not replayed) by this runner."""
         self.clips = clips
         self.gui = gui
         self.pose_target = pose_resolver(engine, world.manifest)
@@ -184,16 +191,40 @@ class TrialRunner:
         else:  # exploit
             tool, violated, pose, _req = exp.args
             tested_l = []
-        if n <= len(self.replay):
+        replayed = n <= len(self.replay)
+        if replayed:
             ex = self._replayed(self.replay[n - 1], str(tool), task, pose, phase)
-            if self.clips is not None:
-                self.clips.replayed(self.replay[n - 1])
         else:
+            self.end_replay()  # every recorded trial was checked: the folder opens
+            self.physical += 1
             ex = self._physical(n, phase, phase_trial, str(tool), tested_l, task, pose)
         td = time.perf_counter()
         if label:
-            vs = self._label(vs, exp, ex, task)
+            try:
+                vs = self._label(vs, exp, ex, task)
+            except (TypeError, ValueError, PrologError) as exc:
+                if not replayed:
+                    raise
+                raise ValueError(f"{self._where(n)}: field 'facts' does not label "
+                                 f"({exc}); the run cannot be resumed") from None
         hs, hg = self.bounds(vs)
+        if replayed:
+            rec = self.replay[n - 1]
+            for name, now in (("hs", hs), ("hg", hg)):
+                if rec.get(name) is not None and rec.get(name) != now:
+                    raise ValueError(
+                        f"{self._where(n)}: fields 'outcome' and {name!r} disagree: "
+                        f"replaying the outcome {rec.outcome!r} with the line's facts "
+                        f"gives another {name[0]}_{name[1]}; the record was changed, the "
+                        f"run cannot be resumed")
+            # The record as it was: its timings, clip and measurements stay.
+            self.trials.append(rec)
+            if self.clips is not None:
+                self.clips.replayed(rec)
+            self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
+                          f"loc {task.location}  {rec.outcome:<11} "
+                          f"tested {', '.join(tested_l) or '-'}  (replayed)")
+            return rec, vs
         decision += time.perf_counter() - td
         # The hypotheses left between h_g and h_s (version_space:vs_count/3).
         count, exact = self.engine.vs_count(vs) if label else (None, None)
@@ -214,7 +245,7 @@ class TrialRunner:
             # What the physics measured against its thresholds (sim/oracles.py).
             verdict=ex.verdict)
         self.trials.append(rec)
-        if self.run_folder and n > len(self.replay):
+        if self.run_folder:
             self.run_folder.append_trial(rec)
         measured = "; ".join(verdict_lines(ex.verdict))
         self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
@@ -222,6 +253,19 @@ class TrialRunner:
                       f"tested {', '.join(tested_l) or '-'}"
                       + (f"  [{measured}]" if measured else ""))
         return rec, vs
+
+    def end_replay(self) -> None:
+        """Open the run folder and the clips again after a resume's replay (checked):
+        ``trials.jsonl`` is rewritten with the replayed records, if it must be."""
+        if self.run_folder is not None:
+            self.run_folder.unseal()
+        if self.clips is not None:
+            self.clips.held = False
+
+    def _where(self, n: int) -> str:
+        """Return ``<run>/trials.jsonl: line L`` of replayed trial ``n``."""
+        path = self.run_folder.trials_path if self.run_folder else "trials.jsonl"
+        return f"{path}: line {self.replay_lines[n - 1]}"
 
     def _physical(self, n: int, phase: str, phase_trial: int, tool: str,
                   tested: list[str], task: TaskState, pose: Term) -> Any:
@@ -267,9 +311,10 @@ class TrialRunner:
         planned = (phase, tool, task.variant, task.location, self._pose_dict(pose))
         recorded = (record.phase, record.tool, record.variant, record.location, record.pose)
         if planned != recorded:
-            raise ValueError(f"trial {record.trial} of the run being resumed was "
-                             f"{recorded}, but the learner now plans {planned}: the run "
-                             f"cannot be resumed with this code or these files")
+            raise ValueError(f"{self._where(record.trial)}: trial {record.trial} of the "
+                             f"run being resumed was {recorded}, but the learner now plans "
+                             f"{planned}: the run cannot be resumed with this code or "
+                             f"these files")
         return TrialResult(
             case=self.case, object=record.tool, variant=record.variant,
             location=record.location, pose=pose_numbers(pose), outcome=record.outcome,

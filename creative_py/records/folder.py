@@ -13,10 +13,21 @@ Layout (docs/architecture.md, section 5)::
     <run>/tools/<name>.*      created tools (urdf, sdf, scad, stl, png)
     <run>/summary.json        trials per phase, successes, created tools, wall time per phase
     <run>/report.html         the run on one page (creative_py.report.page), written last
+    <run>/run.json            case, options and world of the run (what --resume reads)
+    <run>/.lock               advisory lock (fcntl.flock) held by the process running it
+
+A run folder is locked for the life of the run that writes it (:meth:`RunFolder.create`,
+:meth:`RunFolder.open`): a second run or resume of the same folder is refused with
+:class:`FolderInUse`. A resumed run reads its trials through :func:`read_resume`, which
+refuses any invalid line (a torn last line aside), and keeps the folder *sealed* while
+it replays them: nothing is written (no rewrite of ``trials.jsonl``, no snapshot) until
+the replay has been checked and the first new trial runs (:meth:`RunFolder.unseal`).
 """
 
 from __future__ import annotations
 
+import errno
+import fcntl
 import json
 import math
 import os
@@ -24,17 +35,52 @@ import tempfile
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
-from typing import Any, Callable, Union
+from typing import Any, Callable, Optional, Union
 
 from creative_py.records.trial import REQUIRED_KEYS, TrialRecord
 
 
+class FolderInUse(ValueError):
+    """The run folder is locked by another process (a run or a resume still going)."""
+
+    def __init__(self, path: Path, pid: str) -> None:
+        super().__init__(f"{path}: another run is using this folder (pid {pid or '?'})")
+        self.path, self.pid = path, pid
+
+
+LOCK_NAME = ".lock"
+"""The lock file of a run folder (:meth:`RunFolder.lock`)."""
+
+_HELD: set[int] = set()
+"""The descriptors of the run-folder locks this process holds."""
+
+
+def _close_inherited() -> None:
+    """In a forked child (a clip being rendered): close the inherited lock descriptors,
+    so that the lock dies with the run's own process, not with its last child (the
+    parent's descriptor keeps the lock)."""
+    for fd in list(_HELD):
+        try:
+            os.close(fd)
+        except OSError:
+            pass
+    _HELD.clear()
+
+
+os.register_at_fork(after_in_child=_close_inherited)
+
+
 @dataclass
 class RunFolder:
-    """A run's output folder; create it with :meth:`create`."""
+    """A run's output folder; create it with :meth:`create`, or :meth:`open` it to
+    resume; :meth:`release` its lock when the run ends."""
 
     path: Path
     trials: list[Union[TrialRecord, dict[str, Any]]] = field(default_factory=list)
+    sealed: bool = False
+    """Nothing may be written while True (a resume replaying its recorded trials)."""
+    _lock_fd: Optional[int] = field(default=None, repr=False)
+    _pending: Optional[list] = field(default=None, repr=False)
 
     @classmethod
     def create(cls, parent: Path, case: str, seed: int, name: str | None = None) -> "RunFolder":
@@ -52,16 +98,71 @@ class RunFolder:
             except FileExistsError:
                 n += 1
                 path = parent / f"{name}-{n}"
+        run = cls(path)
+        run.lock()
         (path / "snapshots").mkdir()
-        return cls(path)
+        return run
+
+    @classmethod
+    def open(cls, path: Path) -> "RunFolder":
+        """Return an existing run folder, locked (raise :class:`FolderInUse` when
+        another process holds it), for a resume."""
+        run = cls(Path(path))
+        run.lock()
+        return run
+
+    def lock(self) -> None:
+        """Take the folder's advisory lock (``<run>/.lock``, ``fcntl.flock``) for the
+        life of this process or until :meth:`release`; raise :class:`FolderInUse`
+        naming the holder's pid when another process holds it."""
+        if self._lock_fd is not None:
+            return
+        fd = os.open(self.path / LOCK_NAME, os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except OSError as exc:
+            pid = os.read(fd, 32).decode("ascii", "replace").strip()
+            os.close(fd)
+            if exc.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
+                raise FolderInUse(self.path, pid) from None
+            raise
+        os.ftruncate(fd, 0)
+        os.write(fd, f"{os.getpid()}\n".encode())
+        self._lock_fd = fd
+        _HELD.add(fd)
+
+    def release(self) -> None:
+        """Release the folder's lock (the lock file stays; its pid is stale)."""
+        if self._lock_fd is not None:
+            fd, self._lock_fd = self._lock_fd, None
+            _HELD.discard(fd)
+            fcntl.flock(fd, fcntl.LOCK_UN)
+            os.close(fd)
+
+    def seal(self, records: list[TrialRecord]) -> None:
+        """Write nothing until :meth:`unseal`, which then makes ``trials.jsonl`` hold
+        exactly ``records`` (the checked trials a resume replays)."""
+        self.sealed, self._pending, self.trials = True, list(records), list(records)
+
+    def unseal(self) -> None:
+        """End a resume's replay (checked): rewrite ``trials.jsonl`` as :meth:`seal`
+        was given it (dropping a torn last line) and allow writing again."""
+        if self.sealed:
+            self.sealed = False
+            pending, self._pending = self._pending, None
+            if pending is not None and _needs_rewrite(self.trials_path, pending):
+                self.rewrite_trials(pending)
 
     @property
     def trials_path(self) -> Path:
         """Return the path of ``trials.jsonl``."""
         return self.path / "trials.jsonl"
 
-    def snapshot_dir(self, phase: str, trial: int) -> Path:
-        """Return (and create) the folder for one trial's camera frames."""
+    def snapshot_dir(self, phase: str, trial: int) -> Optional[Path]:
+        """Return (and create) the folder for one trial's camera frames; None while
+        the folder is sealed (a resume replaying: the frames are there already)."""
+        if self.sealed:
+            return None
         d = self.path / "snapshots" / f"{phase}-{trial:03d}"
         d.mkdir(parents=True, exist_ok=True)
         return d
@@ -73,7 +174,9 @@ class RunFolder:
         return d
 
     def append_trial(self, record: Union[TrialRecord, dict[str, Any]]) -> None:
-        """Append one finished trial to ``trials.jsonl`` and flush it to disk."""
+        """Append one finished trial to ``trials.jsonl`` and flush it to disk (a
+        sealed folder is unsealed first)."""
+        self.unseal()
         line = _line(record)
         with open(self.trials_path, "a", encoding="utf-8") as fh:
             fh.write(line + "\n")
@@ -130,6 +233,75 @@ def read_trials(run_dir: Path, warn: Callable[[str], None] | None = None) -> lis
     """Return every readable trial of a run folder as the JSON object of its line
     (:func:`read_records`, then :meth:`TrialRecord.to_dict`)."""
     return [r.to_dict() for r in read_records(run_dir, warn)]
+
+
+def read_resume(run_dir: Path, warn: Callable[[str], None] | None = None
+                ) -> tuple[list[TrialRecord], list[int]]:
+    """Return the trials a resume replays, strictly checked, and their line numbers.
+
+    No ``trials.jsonl`` (a run killed before its first trial) is no trial. A last line
+    that is not JSON is the torn line of a killed run: dropped, with ``warn``. Any other
+    line that is not a valid record (:meth:`TrialRecord.from_dict`: a missing key, a
+    value of the wrong type, an outcome or phase outside the allowed set), a ``facts``
+    entry that is not a list of ``[name, argument, ...]``, or trial numbers that do not
+    run 1, 2, 3, ... raise ValueError naming the file, the line and the field.
+    """
+    if not (Path(run_dir) / "trials.jsonl").exists():
+        return [], []
+    lines = _lines(run_dir)
+    records, numbers = [], []
+    for i, (n, line, path) in enumerate(lines):
+        try:
+            data = json.loads(line)
+        except json.JSONDecodeError as exc:
+            if i == len(lines) - 1:
+                if warn:
+                    warn(f"{path}: line {n} is not a JSON object ({exc.msg}): the torn "
+                         f"last line of a killed run; dropped")
+                break
+            raise ValueError(f"{path}: line {n} is not a JSON object ({exc.msg}); the "
+                             f"run cannot be resumed") from None
+        try:
+            rec = TrialRecord.from_dict(data)
+            _check_facts(rec.facts)
+            if rec.trial != len(records) + 1:
+                raise ValueError(f"field 'trial' is {rec.trial}, expected "
+                                 f"{len(records) + 1} (trials are numbered in order)")
+        except ValueError as exc:
+            raise ValueError(f"{path}: line {n}: {exc}; the run cannot be resumed") from None
+        records.append(rec)
+        numbers.append(n)
+    return records, numbers
+
+
+def _check_facts(facts: Any) -> None:
+    """Raise ValueError unless ``facts`` is a list of ``[name, argument, ...]`` lists
+    (names text, arguments text, numbers or such lists)."""
+    def atomic(v: Any) -> bool:
+        return (isinstance(v, (str, int, float)) and not isinstance(v, bool)) or (
+            isinstance(v, list) and all(atomic(x) for x in v))
+
+    if facts is None:
+        return
+    if not isinstance(facts, list):
+        raise ValueError(f"field 'facts' must be a list, got {type(facts).__name__}")
+    for k, f in enumerate(facts):
+        if not (isinstance(f, list) and f and isinstance(f[0], str) and f[0]
+                and all(atomic(a) for a in f[1:])):
+            raise ValueError(f"field 'facts': entry {k} is not [name, argument, ...] "
+                             f"({json.dumps(f)[:60]})")
+
+
+def _needs_rewrite(path: Path, records: list[TrialRecord]) -> bool:
+    """Return whether ``trials.jsonl`` differs from the lines of ``records``."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        return bool(records)
+    lines = [line for line in text.splitlines() if line.strip()]
+    if len(lines) != len(records) or not text.endswith("\n") and text:
+        return True
+    return any(json.loads(a) != json.loads(b.to_json()) for a, b in zip(lines, records))
 
 
 def _lines(run_dir: Path) -> list[tuple[int, str, Path]]:

@@ -29,6 +29,48 @@ def display_available() -> bool:
     return bool(os.environ.get("DISPLAY"))
 
 
+def display_reachable() -> str | None:
+    """Return None when pybullet's GUI can open on ``$DISPLAY``, else why not.
+
+    A set ``DISPLAY`` is not enough (pybullet aborts the process on a display it
+    cannot open): the display is opened with Xlib (``XOpenDisplay``), or, without
+    libX11, its socket is connected to.
+    """
+    import ctypes
+    import ctypes.util
+    import socket
+
+    name = os.environ.get("DISPLAY")
+    if not name:
+        return "no display to open pybullet's GUI on (DISPLAY is not set)"
+    lib = ctypes.util.find_library("X11")
+    if lib:
+        x11 = ctypes.CDLL(lib)
+        x11.XOpenDisplay.restype = ctypes.c_void_p
+        x11.XOpenDisplay.argtypes = [ctypes.c_char_p]
+        x11.XCloseDisplay.argtypes = [ctypes.c_void_p]
+        handle = x11.XOpenDisplay(name.encode())
+        if not handle:
+            return f"the display {name} cannot be opened (DISPLAY={name})"
+        x11.XCloseDisplay(handle)
+        return None
+    host, _, rest = name.rpartition(":")
+    try:
+        number = int(rest.split(".")[0])
+    except ValueError:
+        return f"DISPLAY={name} is not a display name (host:number)"
+    try:
+        if host in ("", "unix"):
+            with socket.socket(socket.AF_UNIX) as s:
+                s.settimeout(2)
+                s.connect(f"/tmp/.X11-unix/X{number}")
+        else:
+            socket.create_connection((host, 6000 + number), timeout=2).close()
+    except OSError as exc:
+        return f"the display {name} cannot be reached ({exc.strerror or exc})"
+    return None
+
+
 class Sim:
     """A pybullet physics client with a world's settings.
 
