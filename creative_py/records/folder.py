@@ -29,7 +29,6 @@ from __future__ import annotations
 import errno
 import fcntl
 import json
-import math
 import os
 import tempfile
 from dataclasses import dataclass, field
@@ -37,7 +36,7 @@ from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any, Callable, Optional, Union
 
-from creative_py.records.trial import REQUIRED_KEYS, TrialRecord
+from creative_py.records.trial import REQUIRED_KEYS, TrialRecord, jsonable
 
 
 class FolderInUse(ValueError):
@@ -197,7 +196,7 @@ class RunFolder:
 
     def write_json(self, name: str, data: Any) -> Path:
         """Write a JSON file of the run atomically."""
-        return write_atomic(self.path / name, json.dumps(_jsonable(data), indent=2) + "\n")
+        return write_atomic(self.path / name, json.dumps(jsonable(data), indent=2) + "\n")
 
 
 TRIAL_KEYS = REQUIRED_KEYS
@@ -340,18 +339,3 @@ def _umask() -> int:
     mask = os.umask(0)
     os.umask(mask)
     return mask
-
-
-def _jsonable(value: Any) -> Any:
-    """Return ``value`` with Prolog terms as text and non-finite floats as strings."""
-    if isinstance(value, dict):
-        return {str(k): _jsonable(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_jsonable(v) for v in value]
-    if isinstance(value, float) and not math.isfinite(value):
-        return str(value)
-    if isinstance(value, (str, int, float, bool)) or value is None:
-        return value
-    if isinstance(value, Path):
-        return str(value)
-    return str(value)

@@ -138,7 +138,7 @@ class TrialRecord:
                 continue  # an optional field is written only when it has a value
             out[f.name] = value
         out.update({k: v for k, v in self.extra.items() if k not in out})
-        return _jsonable(out)
+        return jsonable(out)
 
     def to_json(self) -> str:
         """Return the record as one line of ``trials.jsonl`` (no newline)."""
@@ -342,19 +342,19 @@ def _type_name(tp: Any) -> str:
     return getattr(tp, "__name__", None) or str(tp).replace("typing.", "")
 
 
-def _jsonable(value: Any) -> Any:
-    """Return ``value`` as plain JSON data: tuples as lists, non-finite floats as
+def jsonable(value: Any) -> Any:
+    """Return ``value`` as plain JSON data (what every file of a run folder holds): tuples as lists, non-finite floats as
     strings, anything else that JSON has no type for as its text."""
     if isinstance(value, dict):
-        return {str(k): _jsonable(v) for k, v in value.items()}
+        return {str(k): jsonable(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
-        return [_jsonable(v) for v in value]
+        return [jsonable(v) for v in value]
     if isinstance(value, float) and not math.isfinite(value):
         return str(value)
     if isinstance(value, (str, int, float, bool)) or value is None:
         return value
     if hasattr(value, "item"):  # a numpy scalar
-        return _jsonable(value.item())
+        return jsonable(value.item())
     return str(value)
 
 
