@@ -111,10 +111,12 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--max-children", type=int, default=None)
     parser.add_argument("--label", default=None,
                         help="a note stored with the figures (e.g. 'before the new tests')")
-    parser.add_argument("--fresh", action="store_true",
-                        help="remove mutants/ first (mutmut otherwise reuses its results)")
+    parser.add_argument("--reuse", action="store_true",
+                        help="keep mutants/ and mutmut's results of the last run (only "
+                             "with the same --only: mutmut does not mutate again a "
+                             "file it copied unmutated)")
     args = parser.parse_args(argv)
-    if args.fresh:
+    if not args.reuse:
         shutil.rmtree(ROOT / "mutants", ignore_errors=True)
     start = time.monotonic()
     run_mutmut(args.only, args.tests, args.max_children)
