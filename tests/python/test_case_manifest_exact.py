@@ -16,7 +16,7 @@ import pytest
 
 from creative_py.case import (CaseManifest, DemonstrationSpec, LocationJitter, PoseParam,
                               SkillBinding, Variant, broken_cases, case_index, get_case,
-                              load_cases, read_manifest)
+                              load_cases, manifest_of_folder, read_manifest)
 from creative_py.world import WorldFileError
 
 MINIMAL = """\
@@ -258,3 +258,15 @@ def test_load_cases_strict_raises_for_a_case_that_does_not_read(tmp_path):
     with pytest.raises(WorldFileError, match="trial_budget"):
         load_cases(tmp_path)
     assert set(load_cases(tmp_path, strict=False)) == {"mini"}
+
+
+def test_a_world_folder_s_manifest_and_a_three_number_pose_error(tmp_path):
+    folder = _write(tmp_path, MINIMAL)
+    assert manifest_of_folder(str(folder)) == read_manifest(folder)
+    hook = get_case("hook")
+    with pytest.raises(ValueError) as caught:
+        hook.parse_pose("1,x,0")
+    assert str(caught.value) == "--pose must be DX,DY,ROLL (m, m, rad), got '1,x,0'"
+    with pytest.raises(ValueError) as caught:
+        hook.check_pose((0.0, 0.0))
+    assert str(caught.value) == "pose: hook poses have 3 numbers (dx,dy,roll), got 2"
