@@ -243,6 +243,8 @@ def test_a_case_index_with_a_duplicate_and_a_broken_manifest(tmp_path):
         load_cases(tmp_path)
     assert sorted(broken_cases(tmp_path)) == [tmp_path / f"{x}_world" / "case.toml"
                                               for x in "bcd"]
+    assert broken_cases(tmp_path)[tmp_path / "d_world" / "case.toml"].startswith(
+        f"{tmp_path / 'd_world' / 'case.toml'}: field 'trial_budget'")
     with pytest.raises(KeyError) as caught:
         get_case("nope", tmp_path)
     assert caught.value.args[0] == (
