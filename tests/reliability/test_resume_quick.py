@@ -1,10 +1,10 @@
 """A short run interrupted after its first trial and resumed equals an uninterrupted one.
 
 The quick counterpart of ``test_resume.py`` (which kills whole runs at a random trial,
-in the slow suite): the rake case, tool-use learning only, three trials, no evaluation
+in the slow suite): the rake case, tool-use learning only, two trials, no evaluation
 (a few seconds a run). The run is interrupted as soon as ``trials.jsonl`` has a line
 (its progress callback raises KeyboardInterrupt, as Ctrl-C would), then resumed through
-:func:`resume_run`: the trials must be numbered 1..3 once each (the replayed one is not
+:func:`resume_run`: the trials must be numbered 1..2 once each (the replayed one is not
 appended again) and equal, timings aside, to those of the uninterrupted run, and so
 must the summary's learning figures and hypotheses.
 """
@@ -21,7 +21,7 @@ from creative_py.learning.run import RunOptions, resume_run, run_case
 pytestmark = pytest.mark.sim
 
 TIMINGS = ("wall_time_s", "decision_time_s", "sim_time_s")
-OPTIONS = RunOptions(seed=0, phase="use", max_trials=3, eval_trials=0, strategy="paper",
+OPTIONS = RunOptions(seed=0, phase="use", max_trials=2, eval_trials=0, strategy="paper",
                      video="none")
 
 
@@ -63,8 +63,8 @@ def test_a_short_run_interrupted_after_trial_1_resumes_to_the_same_trials(tmp_pa
     assert resumed == killed
     assert lines[0] == f"resuming {killed}: replaying 1 recorded trials"
     trials = _trials(killed)
-    assert [t["trial"] for t in trials] == [1, 2, 3]
+    assert [t["trial"] for t in trials] == [1, 2]
     assert trials == _trials(full)
     assert _summary(killed) == _summary(full)
-    assert _summary(killed)["use"]["trials"] == 3
+    assert _summary(killed)["use"]["trials"] == 2
 
