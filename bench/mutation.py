@@ -12,7 +12,7 @@ Usage::
 
     python bench/mutation.py                                   # everything configured
     python bench/mutation.py --only creative_py/learning/strategies.py \\
-        --tests tests/python/learning/test_strategy_registry.py
+        --tests tests/python/learning/test_learning_stop.py --marks "not slow and not sim"
 """
 
 from __future__ import annotations
@@ -80,7 +80,8 @@ def module_results(mutants: Path) -> dict[str, dict]:
     return out
 
 
-def run_mutmut(only: list[str], tests: list[str], max_children: int | None) -> None:
+def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
+               marks: str | None = None) -> None:
     """Run ``mutmut run`` in this process with the configuration narrowed as asked."""
     os.chdir(ROOT)
     import mutmut.configuration as configuration
@@ -91,6 +92,13 @@ def run_mutmut(only: list[str], tests: list[str], max_children: int | None) -> N
         changes["only_mutate"] = only
     if tests:
         changes["pytest_add_cli_args_test_selection"] = tests
+    if marks:
+        args = list(config.pytest_add_cli_args)
+        if "-m" in args:
+            args[args.index("-m") + 1] = marks
+        else:
+            args += ["-m", marks]
+        changes["pytest_add_cli_args"] = args
     configuration._config = dataclasses.replace(config, **changes)
     from mutmut.__main__ import cli
 
@@ -108,6 +116,10 @@ def main(argv: list[str] | None = None) -> int:
                         help="a glob of source paths to mutate (repeatable)")
     parser.add_argument("--tests", action="append", default=[],
                         help="a test path to run against the mutants (repeatable)")
+    parser.add_argument("--marks", default=None,
+                        help="pytest's -m for the mutants' test runs, in place of the "
+                             "configured 'not slow' (e.g. 'not slow and not sim': no "
+                             "physics)")
     parser.add_argument("--max-children", type=int, default=None)
     parser.add_argument("--label", default=None,
                         help="a note stored with the figures (e.g. 'before the new tests')")
@@ -119,7 +131,7 @@ def main(argv: list[str] | None = None) -> int:
     if not args.reuse:
         shutil.rmtree(ROOT / "mutants", ignore_errors=True)
     start = time.monotonic()
-    run_mutmut(args.only, args.tests, args.max_children)
+    run_mutmut(args.only, args.tests, args.max_children, args.marks)
     modules = module_results(ROOT / "mutants")
     if args.only:
         from fnmatch import fnmatch
@@ -129,7 +141,7 @@ def main(argv: list[str] | None = None) -> int:
     stamp = datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ")
     for source, entry in modules.items():
         entry["run"] = {"at": stamp, "tests": args.tests or "pyproject [tool.mutmut]",
-                        "label": args.label}
+                        "marks": args.marks or "not slow", "label": args.label}
         merged[source] = entry
     totals = {k: sum(m[k] for m in merged.values())
               for k in ("killed", "survived", "timeout", "suspicious", "no_tests",
@@ -145,6 +157,7 @@ def main(argv: list[str] | None = None) -> int:
         "modules": merged,
         "history": previous.get("history", []) + [{
             "at": stamp, "only": args.only or "all configured", "label": args.label,
+            "tests": args.tests or "pyproject [tool.mutmut]", "marks": args.marks or "not slow",
             "seconds": round(time.monotonic() - start),
             "modules": {k: {s: v[s] for s in ("killed", "survived", "timeout",
                                               "suspicious", "no_tests", "score")}

@@ -180,3 +180,61 @@ def test_text_helpers_exact(tmp_path):
     assert relative_inside(tmp_path, "a/b.txt") == "a/b.txt"
     assert relative_inside(tmp_path, str(tmp_path / "c")) == "c"
     assert relative_inside(tmp_path, "../d") is None
+
+
+def test_odd_entries_are_skipped_with_a_warning_and_the_rest_kept(tmp_path):
+    run = _folder(tmp_path)
+    summary = json.loads((run / "summary.json").read_text())
+    # Bad video entries first: the good one after them is still shown.
+    summary["videos"] = ["videos/use-1.mp4", {"file": 7}] + summary["videos"][:1]
+    summary["create"]["created_tools"] = [{"dims": 1}, "hook_x", CREATED]
+    (run / "summary.json").write_text(json.dumps(summary))
+    with (run / "trials.jsonl").open("a") as fh:
+        fh.write('{"trial": 3, "pha\n')
+    (run / "model.pl").write_bytes(b"model(\xff).\n")
+    (run / "trials.png").unlink()
+    (run / "problem.pddl").write_text("(define)")
+    odd = run / "tools" / "odd"
+    odd.mkdir()
+    (odd / "odd.json").write_text(json.dumps({"files": ["odd.stl"]}))
+    broken = run / "tools" / "broken"
+    broken.mkdir()
+    (broken / "broken.json").write_text("{")
+    numbered = run / "tools" / "numbered"
+    numbered.mkdir()
+    (numbered / "numbered.json").write_text(json.dumps({"files": {"stl": [3, "n.stl"]}}))
+    for name in ("3", "n.stl"):
+        (numbered / name).write_text("x")
+    c = read_run(run)
+    assert [t.trial for t in c.trials] == [1, 2]
+    assert c.model_text == "model(\ufffd).\n"
+    assert c.plot is None
+    assert c.pddl_files == ["domain.pddl", "problem.pddl"]
+    assert [clip.file for clip in c.clips] == ["videos/use-1.mp4"]
+    s = run / "summary.json"
+    assert c.warnings == [
+        f"{run / 'trials.jsonl'}: line 3 is not a JSON object (Unterminated string "
+        f"starting at); skipped",
+        f"{s}: a videos entry has no file: 'videos/use-1.mp4'",
+        f"{s}: a videos entry has no file: {{'file': 7}}",
+        f"{broken / 'broken.json'}: not JSON (Expecting property name enclosed in double "
+        f"quotes, line 1); not shown",
+    ]
+    assert [t.name for t in c.tools] == ["hook_new", "broken", "numbered", "odd", "orphan"]
+    by_name = {t.name: t for t in c.tools}
+    assert by_name["broken"].manifest is None and by_name["broken"].files == []
+    assert by_name["odd"].files == [("json", "tools/odd/odd.json")]
+    assert by_name["numbered"].files == [("stl", "tools/numbered/n.stl"),
+                                         ("json", "tools/numbered/numbered.json")]
+
+
+def test_a_creation_summary_without_created_tools(tmp_path):
+    run = _folder(tmp_path)
+    (run / "summary.json").write_text(json.dumps({"create": {"trials": 1}}))
+    assert [(t.name, t.created) for t in read_run(run).tools] == [("hook_new", {}),
+                                                                  ("orphan", {})]
+
+
+def test_plan_steps_needs_the_whole_plan_term():
+    assert plan_steps("no_plan([a])") is None
+    assert plan_steps("plan([a]) extra") is None
