@@ -32,64 +32,88 @@ EXPLOIT = Compound("exploit", ("t1", [], "pose", []))
 
 @dataclass
 class ScriptedEngine:
-    """Proposes ``proposals[i - 1]`` for trial i (the last one once the script ends)."""
+    """Proposes ``proposals[i - 1]`` for trial i (the last one once the script ends) and
+    records what it is asked."""
 
     proposals: list
     asked: list = field(default_factory=list)
+    calls: list = field(default_factory=list)
+    exact: bool = True
 
     def vs_init(self, example):
-        return ("vs", 0)
+        self.calls.append(("vs_init", example))
+        return ("vs", 0, None)
 
     def vs_count(self, vs):
-        return 16, True
+        self.calls.append(("vs_count", vs))
+        return 16, self.exact
 
     def vs_bounds(self, vs):
-        return "hs", f"hg{vs[1]}"
+        """h_s and h_g: the one a trial changed carries its number."""
+        self.calls.append(("vs_bounds", vs))
+        _, i, which = vs
+        return (f"hs{i}" if which == "hs" else "hs"), (f"hg{i}" if which == "hg" else "hg")
 
     def next_experiment(self, case, vs, facts, skip, strategy):
         self.asked.append((list(skip), strategy))
+        self.calls.append(("next_experiment", case, vs, list(facts)))
         i = len(self.asked)
         return self.proposals[min(i, len(self.proposals)) - 1]
 
 
 class ScriptedRunner:
-    """Answers trial i with ``outcomes[i - 1]``; a trial in ``changes`` changes h_g."""
+    """Answers trial i with ``outcomes[i - 1]``; a trial in ``changes`` changes h_g (or
+    the bound ``changes[i]`` names, when a dict)."""
 
     def __init__(self, engine, outcomes, changes=None, seed=3):
         self.engine, self.outcomes, self.seed = engine, outcomes, seed
-        self.changes = set(range(1, len(outcomes) + 1)) if changes is None else changes
+        if changes is None:
+            changes = set(range(1, len(outcomes) + 1))
+        self.changes = changes if isinstance(changes, dict) else dict.fromkeys(changes, "hg")
         self.case = "stub"
         self.trials = []
+        self.runs = []
+        self.lines = []
+        self.variants = []
         self.locations = 0
         self.manifest = SimpleNamespace(demonstration=SimpleNamespace(variant="v"))
 
     def progress(self, text):
-        pass
+        self.lines.append(text)
 
     def task(self, variant):
         runner = self
+        self.variants.append(variant)
 
         class Task:
             def next_location(self):
                 runner.locations += 1
-        return Task()
+        self.the_task = Task()
+        return self.the_task
 
     def task_facts(self, task):
-        return []
+        return [("facts_of", id(task))]
 
     def run(self, exp, phase, i, vs, task, decision):
+        self.runs.append((phase, i, vs, task, decision))
         rec = SimpleNamespace(n=i, kind=exp.name, outcome=self.outcomes[i - 1])
         self.trials.append(rec)
-        return rec, (("vs", i) if i in self.changes else vs)
+        return rec, (("vs", i, self.changes[i]) if i in self.changes else vs)
+
+
+MODELS = [Compound("model", ("m1",)), Compound("model", ("m2",)), "plain"]
 
 
 class StubLearner(ToolUseLearner):
+    models = MODELS
+
     def observe_demonstration(self):
-        return [Compound("model", ("m",))], "example", "demo_tool"
+        return self.models, "example", "demo_tool"
 
 
-def _learn(strategy, proposals, outcomes, max_trials=12, consecutive=2, changes=None):
-    engine = ScriptedEngine(proposals)
+def _learn(strategy, proposals, outcomes, max_trials=12, consecutive=2, changes=None,
+           exact=True):
+    engine = ScriptedEngine(proposals, exact=exact)
     runner = ScriptedRunner(engine, outcomes, changes)
     use = StubLearner(runner, LearningOptions(max_trials=max_trials,
                                               consecutive=consecutive,
@@ -214,7 +238,9 @@ def test_the_result_carries_the_demonstration_and_the_initial_count():
     assert use.stop == "certified" and use.converged is True
     assert (use.vs_count_initial, use.vs_count_initial_exact) == (16, True)
     assert use.demo_tool == "demo_tool"
-    assert use.vs == ("vs", 0)
+    assert use.vs == ("vs", 0, None)
+    assert use.models == MODELS
+    assert 0 <= use.wall_time_s < 60
 
 
 # -- what each strategy tells Prolog not to run again ---------------------------------
@@ -316,3 +342,81 @@ def test_the_help_line_exact():
         "paper (Algorithm 1: one literal per trial, K successes to stop); "
         "informative (largest expected reduction of the version space, certified stop); "
         "random (a seeded draw among the experiments h_g covers)")
+
+
+# -- what the loop sends to the engine and the runner ---------------------------------
+
+def test_the_loop_passes_its_state_to_the_engine_and_the_runner():
+    use, engine, runner = _learn("paper", [_experiment(literal="a"), EXPLOIT],
+                                 ["failure", "success", "success"])
+    assert len(use.trials) == 3
+    assert engine.calls[:2] == [("vs_init", "example"), ("vs_count", ("vs", 0, None))]
+    assert runner.lines[0] == "demonstration with demo_tool: new model m1, m2, plain; 16 hypotheses"
+    assert runner.variants == ["v"]
+    facts = [("facts_of", id(runner.the_task))]
+    asked = [c for c in engine.calls if c[0] == "next_experiment"]
+    # Trial i is decided on the version space after trial i - 1.
+    assert asked == [("next_experiment", "stub", ("vs", i, None if i == 0 else "hg"), facts)
+                     for i in range(4)]
+    assert [(phase, i, vs) for phase, i, vs, _, _ in runner.runs] == [
+        ("use", 1, ("vs", 0, None)), ("use", 2, ("vs", 1, "hg")), ("use", 3, ("vs", 2, "hg"))]
+    for _, _, _, task, decision in runner.runs:
+        assert task is runner.the_task
+        assert isinstance(decision, float) and 0 <= decision < 10
+
+
+def test_an_upper_bound_count_is_said_and_kept():
+    use, _, runner = _learn("informative", [EXPLOIT], [], exact=False)
+    assert runner.lines == ["demonstration with demo_tool: new model m1, m2, plain; "
+                            "16 hypotheses at most"]
+    assert (use.vs_count_initial, use.vs_count_initial_exact) == (16, False)
+
+
+def test_a_model_that_is_not_a_list_is_named_whole():
+    class One(StubLearner):
+        models = Compound("model", ("m1",))
+    engine = ScriptedEngine([EXPLOIT])
+    runner = ScriptedRunner(engine, [])
+    One(runner, LearningOptions(strategy="informative")).learn()
+    assert runner.lines[0] == "demonstration with demo_tool: new model model(m1); 16 hypotheses"
+
+
+def test_paper_a_first_success_counts_once():
+    # Trial 1 succeeds and leaves nothing to test: one more success is needed (K = 2).
+    use, _, _ = _learn("paper", [_experiment(), EXPLOIT], ["success"] * 4, consecutive=2)
+    assert len(use.trials) == 2
+    assert use.stop == "confirmed" and use.trials_to_converge == 1
+
+
+def test_random_asks_the_trial_after_the_budget_with_its_number():
+    _, engine, _ = _learn("random", [_experiment()], ["failure"] * 2, max_trials=2)
+    assert [a[1] for a in engine.asked] == [Compound("random", (3000 + i,)) for i in (1, 2, 3)]
+
+
+@pytest.mark.parametrize("outcome,tool", [
+    ("success", "t1"), ("failure", "t1"), ("blocked", "t1"),
+    # A pose the arm could not carry out taught nothing: skipped whatever the tool.
+    ("unreachable", "any"), ("invalid", "any"),
+])
+def test_paper_which_outcomes_taught_something(outcome, tool):
+    pose = _experiment(literal="behind", negated=["behind"])
+    _, engine, _ = _learn("paper", [pose, EXPLOIT], [outcome, "success", "success"],
+                          changes=set())
+    assert engine.asked[1][0] == [Compound("skip", (tool, ["behind"]))]
+
+
+def test_paper_a_trial_that_changed_h_s_only_is_run_again():
+    _, engine, _ = _learn("paper", [_experiment(literal="a"), EXPLOIT],
+                          ["failure", "success", "success"], changes={1: "hs"})
+    assert engine.asked[1][0] == []
+
+
+def test_the_bounds_are_read_only_when_the_strategy_repeats_experiments():
+    # paper: h_s and h_g before and after each experiment that taught; none around an
+    # exploitation trial. informative never reads them in the loop.
+    _, engine, _ = _learn("paper", [_experiment(literal="a"), _experiment(literal="b"),
+                                    EXPLOIT], ["failure", "unreachable", "success", "success"])
+    assert sum(c[0] == "vs_bounds" for c in engine.calls) == 3
+    _, engine, _ = _learn("informative", [_experiment(literal="a"), _experiment(literal="b"),
+                                          EXPLOIT], ["failure", "failure"])
+    assert sum(c[0] == "vs_bounds" for c in engine.calls) == 0
