@@ -389,8 +389,11 @@ def test_paper_a_first_success_counts_once():
 
 
 def test_random_asks_the_trial_after_the_budget_with_its_number():
-    _, engine, _ = _learn("random", [_experiment()], ["failure"] * 2, max_trials=2)
+    _, engine, runner = _learn("random", [_experiment()], ["failure"] * 2, max_trials=2)
     assert [a[1] for a in engine.asked] == [Compound("random", (3000 + i,)) for i in (1, 2, 3)]
+    # Asked on the version space after the last trial, with the task's facts.
+    assert engine.calls[-1] == ("next_experiment", "stub", ("vs", 2, "hg"),
+                                [("facts_of", id(runner.the_task))])
 
 
 @pytest.mark.parametrize("outcome,tool", [
