@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench clean
+.PHONY: help setup test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -76,5 +76,11 @@ repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads it
 bench: $(STAMP)  ## Run the benchmarks (about 40 min) and record their figures in bench/results/.
 	$(PY) bench/run_all.py
 
+# MUTATE_ARGS narrows the run, e.g. MUTATE_ARGS="--only creative_py/report/table.py".
+MUTATE_ARGS ?=
+mutate: $(STAMP)  ## Mutation testing of learning/, case.py, report/ (hours); score in bench/results/mutation.json.
+	$(PY) -m pip install -q -e '.[mutate]'
+	$(PY) bench/mutation.py $(MUTATE_ARGS)
+
 clean:  ## Remove the environment and run folders.
-	rm -rf $(VENV) runs .pytest_cache
+	rm -rf $(VENV) runs .pytest_cache mutants

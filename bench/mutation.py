@@ -1,0 +1,219 @@
+"""Mutation testing of the learning, case and report modules (``make mutate``).
+
+Runs mutmut (``pyproject.toml``, ``[tool.mutmut]``: the modules mutated, the quick tests
+run against each mutant) and records its counts in ``bench/results/mutation.json``:
+killed, survived, timeout, suspicious, no tests, and the score, killed / (all checked
+mutants), overall and per module. A whole run takes hours on two cores, so ``--only``
+narrows it to some modules (glob patterns of paths, as mutmut's ``only_mutate``) and
+``--tests`` to some test files; the JSON names what the run covered, and a narrowed run
+is merged into the file by module, so the figures of earlier runs of other modules stay.
+
+Usage::
+
+    python bench/mutation.py                                   # everything configured
+    python bench/mutation.py --only creative_py/learning/strategies.py \\
+        --tests tests/python/learning/test_learning_stop.py --marks "not slow and not sim"
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import json
+import os
+import shutil
+import sys
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+RESULTS = ROOT / "bench" / "results" / "mutation.json"
+
+# mutmut's exit codes of a mutant's test run (mutmut.stats.status_by_exit_code).
+KILLED, SURVIVED = {1, 3, 37}, {0}
+TIMEOUT, NO_TESTS, NOT_CHECKED = {36, 24, -24, 152, 255}, {5, 33}, {None}
+
+
+EQUIVALENT = {
+    # Surviving mutants judged equivalent by reading them (the names are mutmut's and
+    # hold for the source they were read on; a changed function renumbers its mutants).
+    "creative_py.report.contents.x__read_json__mutmut_3":
+        "encoding None reads the locale's, UTF-8 on every machine the project runs on",
+    "creative_py.report.contents.x__read_json__mutmut_5": "'UTF-8' names 'utf-8'",
+    "creative_py.report.contents.x_read_run__mutmut_30":
+        "encoding None reads the locale's, UTF-8 on every machine the project runs on",
+    "creative_py.report.contents.x_read_run__mutmut_32":
+        "no encoding reads the locale's, UTF-8 on every machine the project runs on",
+    "creative_py.report.contents.x_read_run__mutmut_35": "'UTF-8' names 'utf-8'",
+    "creative_py.report.contents.x__tools__mutmut_49":
+        "files None is not a dict: the same empty loop as {}",
+    "creative_py.report.contents.x__tools__mutmut_51":
+        "files None is not a dict: the same empty loop as {}",
+    "creative_py.report.contents.x_clause_parts__mutmut_6":
+        "without ':-' the body is '', and split_top_level('') is [] anyway",
+    "creative_py.report.contents.x_relative_inside__mutmut_4":
+        "root / an absolute path is that absolute path",
+}
+"""Mutants that no test can kill: the code means the same with them."""
+
+
+def classify(code: int | None) -> str:
+    """Return the status of one mutant from mutmut's recorded exit code."""
+    if code in KILLED:
+        return "killed"
+    if code in SURVIVED:
+        return "survived"
+    if code in TIMEOUT:
+        return "timeout"
+    if code in NO_TESTS:
+        return "no_tests"
+    if code in NOT_CHECKED:
+        return "not_checked"
+    return "suspicious"
+
+
+def tally(exit_codes: dict[str, int | None]) -> dict:
+    """Return the counts of each status and the score of mutants' exit codes.
+
+    The score is killed / (killed + survived + timeout + suspicious + no_tests): a
+    mutant that no test runs counts as a survivor, one never checked is left out.
+    """
+    counts = dict.fromkeys(("killed", "survived", "timeout", "suspicious", "no_tests",
+                            "not_checked"), 0)
+    for code in exit_codes.values():
+        counts[classify(code)] += 1
+    checked = sum(v for k, v in counts.items() if k != "not_checked")
+    counts["score"] = round(counts["killed"] / checked, 4) if checked else None
+    return counts
+
+
+def module_results(mutants: Path) -> dict[str, dict]:
+    """Return, by source path, the tally and the surviving mutants' names."""
+    out = {}
+    for meta in sorted(mutants.rglob("*.py.meta")):
+        source = meta.relative_to(mutants).as_posix()[: -len(".meta")]
+        codes = json.loads(meta.read_text())["exit_code_by_key"]
+        if not codes:
+            continue
+        entry = tally(codes)
+        entry["survivors"] = sorted(k for k, v in codes.items()
+                                    if classify(v) in ("survived", "no_tests", "suspicious"))
+        entry["equivalent"] = [k for k in entry["survivors"] if k in EQUIVALENT]
+        entry["score_non_equivalent"] = _score(entry, len(entry["equivalent"]))
+        out[source] = entry
+    return out
+
+
+def _score(counts: dict, equivalent: int) -> float | None:
+    """Return killed / (checked mutants less the equivalent ones)."""
+    checked = sum(counts[k] for k in ("killed", "survived", "timeout", "suspicious",
+                                      "no_tests")) - equivalent
+    return round(counts["killed"] / checked, 4) if checked > 0 else None
+
+
+def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
+               marks: str | None = None) -> None:
+    """Run ``mutmut run`` in this process with the configuration narrowed as asked."""
+    os.chdir(ROOT)
+    import mutmut.configuration as configuration
+
+    config = configuration._load_config()
+    changes = {}
+    if only:
+        changes["only_mutate"] = only
+    if tests:
+        changes["pytest_add_cli_args_test_selection"] = tests
+    if marks:
+        args = list(config.pytest_add_cli_args)
+        if "-m" in args:
+            args[args.index("-m") + 1] = marks
+        else:
+            args += ["-m", marks]
+        changes["pytest_add_cli_args"] = args
+    configuration._config = dataclasses.replace(config, **changes)
+    from mutmut.__main__ import cli
+
+    args = ["run"] + (["--max-children", str(max_children)] if max_children else [])
+    try:
+        cli.main(args, standalone_mode=False)
+    except SystemExit as stop:
+        if stop.code not in (0, None):
+            raise
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--only", action="append", default=[],
+                        help="a glob of source paths to mutate (repeatable)")
+    parser.add_argument("--tests", action="append", default=[],
+                        help="a test path to run against the mutants (repeatable)")
+    parser.add_argument("--marks", default=None,
+                        help="pytest's -m for the mutants' test runs, in place of the "
+                             "configured 'not slow' (e.g. 'not slow and not sim': no "
+                             "physics)")
+    parser.add_argument("--max-children", type=int, default=None)
+    parser.add_argument("--label", default=None,
+                        help="a note stored with the figures (e.g. 'before the new tests')")
+    parser.add_argument("--reuse", action="store_true",
+                        help="keep mutants/ and mutmut's results of the last run (only "
+                             "with the same --only: mutmut does not mutate again a "
+                             "file it copied unmutated)")
+    parser.add_argument("--summarise", action="store_true",
+                        help="run nothing: recompute the totals and the equivalent "
+                             "mutants of the recorded modules")
+    args = parser.parse_args(argv)
+    if not args.reuse and not args.summarise:
+        shutil.rmtree(ROOT / "mutants", ignore_errors=True)
+    start = time.monotonic()
+    if args.summarise:
+        modules = {}
+    else:
+        run_mutmut(args.only, args.tests, args.max_children, args.marks)
+        modules = module_results(ROOT / "mutants")
+    if args.only:
+        from fnmatch import fnmatch
+        modules = {k: v for k, v in modules.items() if any(fnmatch(k, p) for p in args.only)}
+    previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
+    merged = dict(previous.get("modules", {}))
+    stamp = datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ")
+    for source, entry in modules.items():
+        entry["run"] = {"at": stamp, "tests": args.tests or "pyproject [tool.mutmut]",
+                        "marks": args.marks or "not slow", "label": args.label}
+        merged[source] = entry
+    for entry in merged.values():  # the equivalent mutants as this file knows them now
+        entry["equivalent"] = [k for k in entry["survivors"] if k in EQUIVALENT]
+        entry["score_non_equivalent"] = _score(entry, len(entry["equivalent"]))
+    totals = {k: sum(m[k] for m in merged.values())
+              for k in ("killed", "survived", "timeout", "suspicious", "no_tests",
+                        "not_checked")}
+    checked = sum(v for k, v in totals.items() if k != "not_checked")
+    totals["score"] = round(totals["killed"] / checked, 4) if checked else None
+    totals["equivalent"] = sum(len(m.get("equivalent", [])) for m in merged.values())
+    totals["score_non_equivalent"] = _score(totals, totals["equivalent"])
+    result = {
+        "tool": "mutmut",
+        "configured": "pyproject.toml [tool.mutmut]: creative_py/learning/, "
+                      "creative_py/case.py, creative_py/report/",
+        "modules_covered": sorted(merged),
+        "total": totals,
+        "modules": merged,
+        "equivalent": {k: v for k, v in EQUIVALENT.items()
+                       if any(k in m["equivalent"] for m in merged.values())},
+        "history": previous.get("history", []) + ([] if args.summarise else [{
+            "at": stamp, "only": args.only or "all configured", "label": args.label,
+            "tests": args.tests or "pyproject [tool.mutmut]", "marks": args.marks or "not slow",
+            "seconds": round(time.monotonic() - start),
+            "modules": {k: {s: v[s] for s in ("killed", "survived", "timeout",
+                                              "suspicious", "no_tests", "score",
+                                              "score_non_equivalent")}
+                        for k, v in modules.items()}}]),
+    }
+    RESULTS.write_text(json.dumps(result, indent=2) + "\n")
+    print(f"mutation score {totals['score']} ({totals['score_non_equivalent']} of the "
+          f"non-equivalent mutants) over {', '.join(sorted(merged))}: {RESULTS}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
