@@ -8,6 +8,8 @@ import pytest
 from creative_py.case import get_case
 from creative_py.sim import load_world, run_trial
 
+from _poses import poses
+
 pytestmark = pytest.mark.sim
 
 
@@ -29,9 +31,11 @@ def test_the_catalogue_is_paddles_of_the_paddle_kind():
     ("paddle_a2", (-0.04, 0.0, 0.0), "failure"),       # the blade in front of the cube
 ])
 def test_the_physics_decides_the_blade_s_width_roll_and_place(tool, pose, outcome):
-    result = run_trial(paddle_world(), tool, "standard", 1, pose=pose)
+    result = run_trial(paddle_world(), tool, "standard", 1, pose=pose,
+                       pose_target=poses(paddle_world()))
     assert result.outcome == outcome, result.reason
 
 
 def test_a_short_shaft_cannot_put_the_blade_behind_the_cube():
-    assert run_trial(paddle_world(), "paddle_a1", "standard", 1).outcome == "blocked"
+    assert run_trial(paddle_world(), "paddle_a1", "standard", 1,
+                     pose_target=poses(paddle_world())).outcome == "blocked"
