@@ -96,7 +96,7 @@ def test_every_column_and_cell_exact(tmp_path):
                                          "tested", "violated", "outcome", "reason"]
     rows = [[cell(t) for _, cell in c.columns] for t in c.trials]
     assert rows == [
-        ["1", "use", "1", "hook_a1", "standard", "2", "dx=0.0312346, dy=0, roll=-1",
+        ["1", "use", "1", "hook_a1", "standard", "2", "dx 0.0312346, dy 0, roll -1",
          "hook_length(hook_a1,short)", "handle_length(hook_a1,medium), behind(hook_a1,cube1)",
          "blocked", "the arm hit the tube"],
         ["2", "eval", "1", "hook_new", "long_tube", "1", "-", "-", "-", "success", "-"],
@@ -140,10 +140,10 @@ def test_summary_lines_exact(tmp_path):
         "hg: h :- a",
         "plan: plan([pick_up(t), pull(t)])",
         "pddl use: valid pick_up t, pull t",
-        "created hook_new: hook_a2 -> hook_new {'handle_length': 0.4} (success; strength "
+        "created hook_new: hook_a2 -> hook_new; handle_length 400.0 mm (success; strength "
         "pass, 13.8 MPa, safety factor 3.61)",
-        "print hook_new: grams=12, layers=1, 2",
-        "video videos/use-1.mp4: use 1 hook_a1 blocked first failure",
+        "print hook_new: 0 pieces",  # this print record names no pieces
+        "video videos/use-1.mp4: use 1 hook_a1 blocked (kept as first failure)",
     ]
 
 
