@@ -604,6 +604,21 @@ def make_tool_cmd(
     typer.echo(tool_summary(files.manifest))
     for p in files.paths():
         typer.echo(str(p))
+    if no_slice:
+        typer.echo(unsliced_warning(files.manifest), err=True)
+
+
+def unsliced_warning(manifest: Path) -> str:
+    """Return the one-line warning of a tool written with ``--no-slice``: that it cannot
+    be printed (its print entry says why), or that no slicer has checked its pieces."""
+    data = json.loads(Path(manifest).read_text())
+    name, printed = data.get("name", "?"), data.get("print") or {}
+    if not printed.get("printable", False):
+        why = " ".join(str(printed.get("reason") or "no printable pieces").split())
+        return f"warning: {name}: cannot be printed: {why}"
+    pieces = len(printed.get("pieces") or [])
+    return (f"warning: {name}: {pieces} printed piece(s) written but not sliced "
+            f"(--no-slice): no slicer has checked them")
 
 
 def tool_summary(manifest: Path) -> str:
