@@ -178,35 +178,11 @@ class ToolCreator:
                 exhausted = term_text(reply.args[0])
                 runner.progress(f"no literal left to generalise: {exhausted}")
                 break
-            replaced, general, instance, struct, dims = reply.args
+            replaced, _general, instance, _struct, _dims = reply.args
             tried.append(instance)
-            spec, values, files, mass, printed = self._manufacture(len(created) + 1, struct,
-                                                                   dims)
-            ct = CreatedTool(spec.name, term_text(replaced), term_text(general),
-                             term_text(instance), [term_text(s) for s in struct],
-                             dict(values), {k: str(v) for k, v in files.items()}, "",
-                             mass_kg=mass, print=printed)
-            created.append(ct)
-            runner.progress(f"created {ct.name}: " + " -> ".join(
-                readable_term(x) for x in (ct.replaced, ct.general, ct.instance))
-                + f"; {dims_text(ct.dims)}")
-            n += 1
-            rec = self._trial_with(spec, n, vs, task)
-            if rec.outcome in ("blocked", "unreachable", "invalid"):
-                # The motion did not happen as planned: that says nothing about the
-                # design, so the trial is repeated once (the paper repeats a task after
-                # a failure to confirm the result).
-                n += 1
-                runner.progress(f"{ct.name}: {rec.outcome}, trying once more")
-                rec = self._trial_with(spec, n, vs, task)
-            ct.trial_outcome = rec.outcome
-            if rec.outcome == "success":
-                # The physics measured the load; a tool too weak for it is thickened
-                # (tried again) or rejected, and then the next candidate is created.
-                spec, ct, n = self._strengthen(spec, ct, struct, rec, n, vs, task, created)
-                usable = ct.strength.get("verdict") in ("pass", "unmeasured")
-                if ct.trial_outcome != "success" or not usable:
-                    continue
+            spec, ct, n = self._make_and_try(reply, created, n, vs, task)
+            if (ct.trial_outcome == "success"
+                    and ct.strength.get("verdict") in ("pass", "unmeasured")):
                 ct.eval_outcomes = self._evaluate(spec, vs, task)
                 return CreateResult(variant, not by_catalogue, created, ct, vs,
                                     runner.trials[start:], time.perf_counter() - t0,
@@ -216,6 +192,39 @@ class ToolCreator:
         return CreateResult(variant, not by_catalogue, created, None, vs,
                             runner.trials[start:], time.perf_counter() - t0, exhausted,
                             predicted=predicted, catalogue=catalogue, solved_by=solved_by)
+
+    def _make_and_try(self, reply: Compound, created: list[CreatedTool], n: int,
+                      vs: Term, task: TaskState) -> tuple[Any, CreatedTool, int]:
+        """Manufacture the candidate ``reply`` (``create/5`` of ``next_tool``), try it in
+        the physics (once more when the motion, not the design, failed) and, after a
+        success, check it against the load the physics measured; return its spec, its
+        record (appended to ``created``) and the creation trials so far."""
+        runner = self.runner
+        replaced, general, instance, struct, dims = reply.args
+        spec, values, files, mass, printed = self._manufacture(len(created) + 1, struct, dims)
+        ct = CreatedTool(spec.name, term_text(replaced), term_text(general),
+                         term_text(instance), [term_text(s) for s in struct],
+                         dict(values), {k: str(v) for k, v in files.items()}, "",
+                         mass_kg=mass, print=printed)
+        created.append(ct)
+        runner.progress(f"created {ct.name}: " + " -> ".join(
+            readable_term(x) for x in (ct.replaced, ct.general, ct.instance))
+            + f"; {dims_text(ct.dims)}")
+        n += 1
+        rec = self._trial_with(spec, n, vs, task)
+        if rec.outcome in ("blocked", "unreachable", "invalid"):
+            # The motion did not happen as planned: that says nothing about the design,
+            # so the trial is repeated once (the paper repeats a task after a failure to
+            # confirm the result).
+            n += 1
+            runner.progress(f"{ct.name}: {rec.outcome}, trying once more")
+            rec = self._trial_with(spec, n, vs, task)
+        ct.trial_outcome = rec.outcome
+        if rec.outcome == "success":
+            # The physics measured the load; a tool too weak for it is thickened (tried
+            # again) or rejected, and then the next candidate is created.
+            spec, ct, n = self._strengthen(spec, ct, struct, rec, n, vs, task, created)
+        return spec, ct, n
 
     def _try_catalogue(self, vs: Term, task: TaskState, exclude: list[str], n: int,
                        ) -> tuple[list[dict[str, Any]], Optional[tuple[Term, Term]], int]:
@@ -351,9 +360,15 @@ class ToolCreator:
             if rec.outcome != "success":
                 check = replace(check, reason=f"the thickened tool's trial ended {rec.outcome}")
                 break
+        self._final_strength(ct, check, MAX_THICKENINGS)
+        return spec, ct, n
+
+    def _final_strength(self, ct: CreatedTool, check: Any, thickenings: int) -> None:
+        """Record the last strength check of ``ct`` (a failing one is a rejection: no
+        more thickening helps) and say it."""
         if check.verdict == "fail":
             check = replace(check, verdict="rejected", reason=(
-                f"still too weak after {MAX_THICKENINGS} thickenings"
+                f"still too weak after {thickenings} thickenings"
                 if check.model == "cantilever" else
                 f"a {check.model} check is not met by thickening a handle"))
         self._record_strength(ct, check)
@@ -364,7 +379,6 @@ class ToolCreator:
             self.runner.progress(f"{ct.name}: strength {check.verdict} ({check.model}, "
                                  f"{check.force_n:.2f} N, {check.stress_pa / 1e6:.2f} MPa, "
                                  f"safety factor {got})")
-        return spec, ct, n
 
     def _record_strength(self, ct: CreatedTool, check: Any) -> None:
         """Put a strength check into the created tool and its JSON manifest."""

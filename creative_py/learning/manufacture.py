@@ -35,7 +35,7 @@ import re
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Optional, Sequence
+from typing import Any, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, PrologError, Term, Var, fact_term
 from creative_py.mesh.export import ToolFiles, write_tool_files
@@ -236,6 +236,21 @@ def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL, *,
     if not isinstance(text, str) or not text.strip():
         raise ValueError(f"{case} spec: empty; give property=value pairs separated by "
                          f"commas, from: {allowed}")
+    chosen = _spec_pairs(case, text, props, allowed)
+    kind = chosen.pop("kind", vocab.default_kind)
+    classes, kind_props = vocab.kinds[kind]
+    lacking = [p for p in chosen if p not in kind_props]
+    if lacking:
+        raise ValueError(f"{case} spec {text!r}: a {kind} has no {', '.join(lacking)} "
+                         f"(its properties: {', '.join(kind_props)})")
+    _check_atom(tool, "tool")
+    return ([Compound(c, (tool,)) for c in classes]
+            + [Compound(p, (tool, v)) for p, v in chosen.items()])
+
+
+def _spec_pairs(case: str, text: str, props: dict[str, Any], allowed: str) -> dict[str, str]:
+    """Return the ``property -> value`` pairs of a spec's text, each property and value
+    one that ``props`` allows; raise ValueError naming the pair that is not."""
     chosen: dict[str, str] = {}
     for item in text.split(","):
         prop, sep, value = (s.strip() for s in item.partition("="))
@@ -254,15 +269,7 @@ def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL, *,
             raise ValueError(f"{case} spec {text!r}: {prop} given twice ({chosen[prop]} "
                              f"and {value})")
         chosen[prop] = value
-    kind = chosen.pop("kind", vocab.default_kind)
-    classes, kind_props = vocab.kinds[kind]
-    lacking = [p for p in chosen if p not in kind_props]
-    if lacking:
-        raise ValueError(f"{case} spec {text!r}: a {kind} has no {', '.join(lacking)} "
-                         f"(its properties: {', '.join(kind_props)})")
-    _check_atom(tool, "tool")
-    return ([Compound(c, (tool,)) for c in classes]
-            + [Compound(p, (tool, v)) for p, v in chosen.items()])
+    return chosen
 
 
 def parse_context(engine: Engine, text: str) -> list[Term]:
@@ -369,14 +376,35 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
     renamed = _rename_tool(vocab, literals, name)
     kind = next((lit.name for lit in renamed if lit.name in vocab.kinds
                  and lit.args == (name,)), vocab.default_kind)
+    start = time.perf_counter()
+    dims = _solved_dims(engine, case, kind, renamed,
+                        _with_printer(context_facts, settings), name)
+    seconds = time.perf_counter() - start
+    spec = spec_from_dict({"kind": kind, "name": name, "mass": None, **dims},
+                          source=f"solve_size({kind}) for {name}")
+    log.info("sized %s %s in %.1f ms: %s", kind, name, 1e3 * seconds, dims)
+    return SizedTool(name=name, case=case, kind=kind, literals=tuple(str(t) for t in renamed),
+                     dims=dims, spec=spec, seconds=seconds)
+
+
+def _with_printer(context_facts: Sequence[Term], settings: PrintSettings) -> list[Term]:
+    """Return the task facts with the printer's least wall and least wedge tip added
+    (``min_wall_m``, ``min_tip_height_m``), unless the facts give their own."""
     context = list(context_facts)
     if not any(isinstance(f, Compound) and f.name == "min_wall_m" for f in context):
         context.append(Compound("min_wall_m", (settings.min_feature,)))
     if not any(isinstance(f, Compound) and f.name == "min_tip_height_m" for f in context):
         context.append(Compound("min_tip_height_m", (settings.min_tip,)))
-    start = time.perf_counter()
+    return context
+
+
+def _solved_dims(engine: Engine, case: str, kind: str, literals: list[Term],
+                 context: list[Term], name: str) -> dict[str, Any]:
+    """Return the dimensions CLP(R) gives a ``kind`` tool with ``literals`` in
+    ``context`` (``geometry_clp:solve_size/5``); raise InfeasibleSpec naming a minimal
+    conflict, or ValueError for a literal the knowledge base does not know."""
     try:
-        result = engine.solve_size(case, kind, renamed, context)
+        result = engine.solve_size(case, kind, literals, context)
     except PrologError as exc:
         formal = exc.formal
         if isinstance(formal, Compound) and formal.name == "domain_error":
@@ -384,18 +412,12 @@ def size_tool(engine: Engine, case: str, literals: Sequence[Term],
                 f"{name}: the knowledge base does not know the literal {formal.args[1]} "
                 f"({exc}); load the ontology first (engine.load_default_ontology())") from None
         raise
-    seconds = time.perf_counter() - start
     if result.name == "infeasible":
         conflict = result.args[0]
-        lits = [str(t) for t in conflict if t in renamed]
-        facts = [str(t) for t in conflict if t not in renamed]
+        lits = [str(t) for t in conflict if t in literals]
+        facts = [str(t) for t in conflict if t not in literals]
         raise InfeasibleSpec(name, lits, facts)
-    dims = {eq.args[0]: eq.args[1] for eq in result.args[0]}
-    spec = spec_from_dict({"kind": kind, "name": name, "mass": None, **dims},
-                          source=f"solve_size({kind}) for {name}")
-    log.info("sized %s %s in %.1f ms: %s", kind, name, 1e3 * seconds, dims)
-    return SizedTool(name=name, case=case, kind=kind, literals=tuple(str(t) for t in renamed),
-                     dims=dims, spec=spec, seconds=seconds)
+    return {eq.args[0]: eq.args[1] for eq in result.args[0]}
 
 
 def make_tool(engine: Engine, case: str, literals: Sequence[Term],

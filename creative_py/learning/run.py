@@ -231,7 +231,7 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
              progress: Optional[Callable[[str], None]] = None,
              world_dir: Optional[Path] = None, run_name: Optional[str] = None,
-             resume: Optional[tuple[Path, list]] = None,
+             resume: Optional[tuple[RunFolder, list, list]] = None,
              drawn: Optional[dict[str, Any]] = None) -> RunFolder:
     """Run one case end to end and return its run folder.
 
@@ -262,12 +262,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     run, replay, lines, before = _open_folder(out, case, options, world_dir, drawn,
                                               run_name, resume, say)
     try:
-        # In the GUI the client has a thread of its own: no forking it.
-        clips = ClipKeeper(options.video, run.path, world.scene.video,
-                           background=not options.gui)
-        clips.held = run.sealed
-        runner = TrialRunner(engine, world, run, options.seed, say, replay=replay,
-                             clips=clips, gui=options.gui, replay_lines=lines)
+        runner = _trial_runner(engine, world, run, options, say, replay, lines)
+        clips = runner.clips
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                    "options": asdict(options), "wall_time_s": {},
                                    "world_seed": options.world_seed, "drawn_world": drawn}
@@ -290,6 +286,17 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         if resume is None:
             run.release()  # a resumed folder's lock is resume_run's
     return run
+
+
+def _trial_runner(engine: Engine, world: Any, run: RunFolder, options: RunOptions,
+                  say: Callable[[str], None], replay: list, lines: list) -> TrialRunner:
+    """Return the run's trial runner with its clip keeper (held while a resume's replay
+    is checked), replaying ``replay`` (recorded at ``lines`` of ``trials.jsonl``)."""
+    # In the GUI the client has a thread of its own: no forking it.
+    clips = ClipKeeper(options.video, run.path, world.scene.video, background=not options.gui)
+    clips.held = run.sealed
+    return TrialRunner(engine, world, run, options.seed, say, replay=replay, clips=clips,
+                       gui=options.gui, replay_lines=lines)
 
 
 def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[Path],

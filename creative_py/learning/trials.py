@@ -182,15 +182,7 @@ class TrialRunner:
         tools). Returns the trial's record and the version space after it.
         """
         n = len(self.trials) + 1
-        kind = exp.name if isinstance(exp, Compound) else str(exp)
-        if kind == "no_experiment":
-            raise RuntimeError(f"{self.case}: no experiment is possible: {exp.args[0]}")
-        if kind == "experiment":
-            tool, tested, violated, pose, _req, _neg = exp.args
-            tested_l = [term_text(tested)]
-        else:  # exploit
-            tool, violated, pose, _req = exp.args
-            tested_l = []
+        kind, tool, tested_l, violated, pose = self._planned(exp)
         replayed = n <= len(self.replay)
         if replayed:
             ex = self._replayed(self.replay[n - 1], str(tool), task, pose, phase)
@@ -208,22 +200,11 @@ class TrialRunner:
                 raise ValueError(f"{self._where(n)}: field 'facts' does not label "
                                  f"({exc}); the run cannot be resumed") from None
         hs, hg = self.bounds(vs)
+        line = (f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
+                f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}")
         if replayed:
-            rec = self.replay[n - 1]
-            for name, now in (("hs", hs), ("hg", hg)):
-                if rec.get(name) is not None and rec.get(name) != now:
-                    raise ValueError(
-                        f"{self._where(n)}: fields 'outcome' and {name!r} disagree: "
-                        f"replaying the outcome {rec.outcome!r} with the line's facts "
-                        f"gives another {name[0]}_{name[1]}; the record was changed, the "
-                        f"run cannot be resumed")
-            # The record as it was: its timings, clip and measurements stay.
-            self.trials.append(rec)
-            if self.clips is not None:
-                self.clips.replayed(rec)
-            self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
-                          f"loc {task.location}  {rec.outcome:<11} "
-                          f"tested {', '.join(tested_l) or '-'}  (replayed)")
+            rec = self._checked_replay(n, hs, hg)
+            self.progress(line + "  (replayed)")
             return rec, vs
         decision += time.perf_counter() - td
         # The hypotheses left between h_g and h_s (version_space:vs_count/3).
@@ -248,11 +229,38 @@ class TrialRunner:
         if self.run_folder:
             self.run_folder.append_trial(rec)
         measured = "; ".join(verdict_lines(ex.verdict))
-        self.progress(f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
-                      f"loc {task.location}  {ex.outcome:<11} "
-                      f"tested {', '.join(tested_l) or '-'}"
-                      + (f"  [{measured}]" if measured else ""))
+        self.progress(line + (f"  [{measured}]" if measured else ""))
         return rec, vs
+
+    def _planned(self, exp: Term) -> tuple[str, Term, list[str], list[Term], Term]:
+        """Return what an ``experiment/6`` or ``exploit/4`` term plans: its kind, the
+        tool, the tested literal (as text; none for an exploit), the literals of h_s it
+        violates and the pose."""
+        kind = exp.name if isinstance(exp, Compound) else str(exp)
+        if kind == "no_experiment":
+            raise RuntimeError(f"{self.case}: no experiment is possible: {exp.args[0]}")
+        if kind == "experiment":
+            tool, tested, violated, pose, _req, _neg = exp.args
+            return kind, tool, [term_text(tested)], violated, pose
+        tool, violated, pose, _req = exp.args  # exploit
+        return kind, tool, [], violated, pose
+
+    def _checked_replay(self, n: int, hs: str, hg: str) -> TrialRecord:
+        """Return replayed trial ``n``'s record as it was (its timings, clip and
+        measurements stay), after checking that relabelling it gave its recorded h_s and
+        h_g (an edited outcome does not)."""
+        rec = self.replay[n - 1]
+        for name, now in (("hs", hs), ("hg", hg)):
+            if rec.get(name) is not None and rec.get(name) != now:
+                raise ValueError(
+                    f"{self._where(n)}: fields 'outcome' and {name!r} disagree: "
+                    f"replaying the outcome {rec.outcome!r} with the line's facts "
+                    f"gives another {name[0]}_{name[1]}; the record was changed, the "
+                    f"run cannot be resumed")
+        self.trials.append(rec)
+        if self.clips is not None:
+            self.clips.replayed(rec)
+        return rec
 
     def end_replay(self) -> None:
         """Open the run folder and the clips again after a resume's replay (checked):
