@@ -50,7 +50,7 @@ hook predicates (case.pl says how a missing one is reported):
 :- use_module(replacement).
 :- use_module(geometry_clp).
 :- use_module(experiment).
-:- use_module(knowledge, [shared_clause/2]).
+:- use_module(knowledge, [ontology_clause/2]).
 :- use_module(subsumption, [clause_covers/2, clause_head_body/3]).
 :- use_module(case).
 
@@ -120,7 +120,7 @@ is_a_(C, Super) :-
 %   the order the ontology lists its operators.
 operator_rank_(General, Rank) :-
     functor(General, Op, _),
-    findall(O, shared_clause(replacement_operator(O), true), Ops),
+    findall(O, ontology_clause(replacement_operator(O), true), Ops),
     (   nth1(Rank, Ops, Op)
     ->  true
     ;   Rank = 0

@@ -5,6 +5,7 @@
             shared_holds/1,           % :Goal
             shared_prove/2,           % +Goal, +Facts
             shared_clause/2,          % ?Head, ?Body
+            ontology_clause/2,        % ?Head, ?Body
             kb_case_module/2,         % ?Case, ?Module
             kb_kind_module/2,         % ?Kind, ?Module
             kb_modules/1,             % -Modules
@@ -515,6 +516,22 @@ shared_holds(Goal) :-
 %   ==
 shared_clause(Head, Body) :-
     kb_module_clause(kb, Head, Body).
+
+%!  ontology_clause(?Head, ?Body) is nondet.
+%
+%   Head :- Body is a clause of the loaded ontology in any of its modules (kb, then the
+%   case and kind modules in load order): what a kind brings of the shared vocabulary,
+%   such as its replacement operators (ontology/kinds/paddle.pl), beside ontology/
+%   replacement.pl's.
+%
+%   ==
+%   ?- load_default_ontology, ontology_clause(replacement_operator(O), true).
+%   O = any_length ; ...
+%   ==
+ontology_clause(Head, Body) :-
+    kb_modules(Modules),
+    member(M, Modules),
+    kb_module_clause(M, Head, Body).
 
 %!  shared_prove(+Goal, +Facts:list) is nondet.
 %

@@ -19,7 +19,7 @@ clauses are the alternative instances, which do not satisfy the replaced literal
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
-:- use_module(knowledge, [shared_clause/2]).
+:- use_module(knowledge, [ontology_clause/2]).
 
 %!  replacement(+Literal, -General, -Alternatives:list) is semidet.
 %
@@ -40,7 +40,7 @@ replacement(Literal, General, Alternatives) :-
     must_be(callable, Literal),
     compound(Literal),
     arg(1, Literal, Object),
-    once(( shared_clause(replacement_operator(Op), true),
+    once(( ontology_clause(replacement_operator(Op), true),
            operator_bodies_(Op, Object, Bodies),
            select(B, Bodies, Others),
            B =@= Literal
@@ -51,7 +51,7 @@ replacement(Literal, General, Alternatives) :-
 %   operator_bodies_(+Op, ?Object, -Bodies): the clause bodies of Op(Object), in order.
 operator_bodies_(Op, Object, Bodies) :-
     Head =.. [Op, X],
-    findall(X-Body, shared_clause(Head, Body), Pairs),
+    findall(X-Body, ontology_clause(Head, Body), Pairs),
     maplist(body_for_(Object), Pairs, Bodies).
 
 body_for_(Object, X-Body, Body) :-

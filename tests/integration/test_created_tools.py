@@ -17,8 +17,11 @@ pytestmark = [pytest.mark.slow, pytest.mark.sim]
 
 
 def test_every_created_tool_checks(tmp_path):
+    # The catalogued wedge_a3 solves the big door first; --demonstrate-creation still
+    # makes the tool whose files are checked here.
     folder = run_case("wedge", tmp_path, RunOptions(seed=1, eval_trials=0,
-                                                    create_eval_trials=1))
+                                                    create_eval_trials=1,
+                                                    demonstrate_creation=True))
     tools = sorted((folder.path / "tools").iterdir())
     assert tools, "the run created no tool"
     for d in tools:
