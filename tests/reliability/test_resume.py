@@ -18,25 +18,13 @@ import time
 from pathlib import Path
 
 import pytest
+from _runs import trials
 
 pytestmark = [pytest.mark.slow, pytest.mark.sim]
-
-TIMINGS = ("wall_time_s", "decision_time_s")
-
 
 def _creative(*args: str) -> subprocess.Popen:
     return subprocess.Popen([sys.executable, "-m", "creative_py.cli", *args],
                             stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
-
-
-def _trials(run: Path) -> list[dict]:
-    out = []
-    for line in (run / "trials.jsonl").read_text().splitlines():
-        record = json.loads(line)
-        for key in TIMINGS:
-            record.pop(key, None)
-        out.append(record)
-    return out
 
 
 @pytest.mark.parametrize("case", ["hook", "rake"])
@@ -61,7 +49,7 @@ def test_a_run_killed_at_a_random_trial_resumes_to_the_same_result(tmp_path, cas
     out = resumed.communicate(timeout=600)[0]
     assert resumed.returncode == 0, f"killed after {kill_after} trials"
     assert Path(out.strip().splitlines()[-1]) == run_dir
-    assert _trials(run_dir) == _trials(full_dir), f"killed after {kill_after} trials"
+    assert trials(run_dir) == trials(full_dir), f"killed after {kill_after} trials"
     a, b = (json.loads((d / "summary.json").read_text()) for d in (full_dir, run_dir))
     assert a["hypotheses"] == b["hypotheses"]
     assert a["create"]["created_tools"][0]["dims"] == b["create"]["created_tools"][0]["dims"]
