@@ -133,11 +133,12 @@ def _name(option: str, text: Optional[str]) -> Optional[str]:
 def _need_display() -> None:
     """Fail in one line unless pybullet's GUI can open (the display is set and can be
     opened: pybullet aborts the process on one it cannot open)."""
-    from creative_py.sim.core import display_reachable
+    from creative_py.learning.run import require_display
 
-    why = display_reachable()
-    if why:
-        _fail(f"--gui: {why}; run without --gui, or under a display (e.g. xvfb-run)")
+    try:
+        require_display()
+    except ValueError as exc:
+        _fail(str(exc))
 
 
 @app.command()
