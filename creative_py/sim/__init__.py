@@ -3,8 +3,8 @@
 This package is the ``pybullet`` backend of the simulator boundary
 (:mod:`creative_py.simulator`): its module-level functions are the
 :class:`~creative_py.simulator.Backend` protocol (``load_world``, ``open_episode``,
-``run_trial``, ``tool_rests``, ``catalogue_facts``, ``draw_world``, ``apply_drawn``,
-``display_reachable``, ``recorder``), and the learning loop reaches them through
+``run_trial``, ``tool_rests``, ``draw_world``, ``apply_drawn``, ``display_reachable``,
+``recorder``), and the learning loop reaches them through
 ``backend_for(manifest)``, never by importing this package. Public API::
 
     from creative_py.sim import load_world, open_episode, run_trial
@@ -55,7 +55,6 @@ from creative_py.sim.core import display_reachable
 from creative_py.sim.episode import (Episode, open_episode, run_trial, tool_rests,
                                      trial_outcome)
 from creative_py.sim.recorder import Recorder, VideoSpec
-from creative_py.sim.tools import catalogue_facts
 from creative_py.sim.world import World, apply_drawn, draw_world, load_world
 from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
                                          PoseTarget, SkillOutcome, TrialResult)
@@ -68,6 +67,6 @@ def recorder(camera: VideoSpec) -> Recorder:
 
 
 __all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
-           "TRIAL_OUTCOMES", "TrialResult", "World", "apply_drawn", "catalogue_facts",
-           "display_reachable", "draw_world", "load_world", "open_episode", "recorder",
-           "run_trial", "tool_rests", "trial_outcome"]
+           "TRIAL_OUTCOMES", "TrialResult", "World", "apply_drawn", "display_reachable",
+           "draw_world", "load_world", "open_episode", "recorder", "run_trial",
+           "tool_rests", "trial_outcome"]

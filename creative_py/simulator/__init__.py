@@ -36,8 +36,8 @@ How to write a backend
    ``learning`` or ``bridge``: the physics asks no one).
 2. At its top level, define the functions of :class:`Backend`, with the signatures and
    the meaning their docstrings give (``load_world``, ``open_episode``, ``run_trial``,
-   ``tool_rests``, ``catalogue_facts``, ``draw_world``, ``apply_drawn``,
-   ``display_reachable``, ``recorder``). Its worlds have the attributes of
+   ``tool_rests``, ``draw_world``, ``apply_drawn``, ``display_reachable``,
+   ``recorder``). Its worlds have the attributes of
    :class:`World`, its episodes those of :class:`Episode`, its recorders those of
    :class:`ClipRecorder`. Return the value types of :mod:`creative_py.simulator.types`
    (``from creative_py.simulator import SkillOutcome, TrialResult, ...``), in the
@@ -46,8 +46,8 @@ How to write a backend
    skills ran, never from a tool's properties; every skill a manifest binds is the
    primitive it names, with its options; an episode's facts are what its cameras and
    the robot's proprioception give, in the facts' vocabulary (``pose``, sizes,
-   ``held``, the catalogue's facts of :meth:`Backend.catalogue_facts`), so the engine
-   reads them as it reads the pybullet backend's.
+   ``held``, each object's catalogue facts exactly as its kind's ``catalogue_facts()``
+   gives them), so the engine reads them as it reads the pybullet backend's.
 4. Register it: one line ``"<name>": BackendEntry("creative_py.<name>", extra=...)`` in
    :data:`creative_py.case.BACKENDS` (``extra``: the ``pyproject.toml`` optional
    dependencies it needs, named in the error when they are missing). A case chooses

@@ -2,7 +2,10 @@
 and its :class:`Episode`, as :class:`typing.Protocol` classes.
 
 The protocols hold exactly what ``creative_py/learning/`` (and the command line's
-``creative trial``) use of a simulator, no more. A backend is a module (or any object)
+``creative trial``) use of a simulator, no more. What is not a simulator's is not
+here: an object's catalogue facts are its tool kind's
+(:meth:`creative_py.kinds.parts.KindSpec.catalogue_facts`), the same whatever the
+physics, and every backend's episode must report exactly those. A backend is a module (or any object)
 with the :class:`Backend` functions; its worlds and episodes have the attributes and
 methods of :class:`World` and :class:`Episode`. The pybullet backend
 (:mod:`creative_py.sim`) is the reference: its behaviour is what each docstring says.
@@ -18,7 +21,7 @@ from pathlib import Path
 from typing import (TYPE_CHECKING, Any, Callable, ContextManager, Mapping, Optional,
                     Protocol, Sequence, Sized)
 
-from creative_py.simulator.types import Fact, Observation, PoseTarget, SkillOutcome, TrialResult
+from creative_py.simulator.types import Observation, PoseTarget, SkillOutcome, TrialResult
 
 if TYPE_CHECKING:
     from creative_py.case import CaseManifest
@@ -232,11 +235,6 @@ class Backend(Protocol):
         puts it: the demonstration's scene built without the robot, settled, then
         two seconds more of physics; it rests unless it dropped off its stand (a trial
         with it would be ``invalid``)."""
-
-    def catalogue_facts(self, spec: Any) -> list[Fact]:
-        """Return the catalogue facts the robot perceives of an object of spec
-        ``spec`` (metres, degrees): the same facts for a catalogued and a created
-        tool, so the engine derives both's structural literals alike."""
 
     def draw_world(self, world: World, seed: int,
                    ranges: Mapping[str, Mapping[str, tuple[float, float, str, str]]],

@@ -233,3 +233,16 @@ def test_each_third_party_engine_has_one_home() -> None:
     errors = misplaced_libraries(import_statements(), owners)
     assert errors == [], "\n".join(errors)
 
+
+def test_the_learning_loop_imports_no_simulator_backend() -> None:
+    # Whatever the table says: learning (and the sweep and reports above or beside it)
+    # reaches a physics through the boundary, creative_py.simulator, alone.
+    backends = backend_packages()
+    assert {"sim", "maniskill"} <= backends
+    known = set(modules())
+    rules = layer_rules(DOC.read_text())
+    loop = ("learning", "sweep", "report")
+    assert [p for p in loop if rules[p] & backends] == []
+    assert [where(s) for s in import_statements()
+            if package_of(s.module) in loop and s.target in known
+            and package_of(s.target) in backends] == []
