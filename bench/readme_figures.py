@@ -255,9 +255,12 @@ def created_tools() -> str:
                                f"({q['print_time']}, {q['filament_g']:.1f} g)"
                                for q in p["pieces"])
             n = len(p["pieces"])
+            ev = t.get("eval_outcomes") or []
+            evaluation = (f", evaluation {sum(o == 'success' for o in ev)} of {len(ev)}"
+                          if ev else "")
             lines.append(
                 f"- {case}, `{t['name']}` ({t['instance'].replace('_G0', 'T')}, "
-                f"{t['trial_outcome']}): {size}; {t['mass_kg'] * 1000:.1f} g; "
+                f"{t['trial_outcome']}{evaluation}): {size}; {t['mass_kg'] * 1000:.1f} g; "
                 f"{n} piece{'s' if n != 1 else ''} ({pieces}); in all "
                 f"{hours(p['print_time_s'])} and {p['filament_g']:.1f} g of filament "
                 f"(union {p['union_volume_error_pct']:+.2f} % of the design's volume; "
