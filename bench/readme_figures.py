@@ -95,6 +95,7 @@ def outcome_counts(outcomes: list[str]) -> str:
 # --- Results: ten seeds per case (learning.json) --------------------------------------
 
 def _creation_cell(case: dict[str, Any]) -> str:
+    """The creation trials of one case of learning.json, with the seeds that differ."""
     failed, trials = case["create_failed"], case["create_trials"]
     text = (f"{med(failed['median'])} failed + "
             f"{med(trials['median'] - failed['median'])} successful")
@@ -148,6 +149,7 @@ def learning_table() -> str:
 # --- Results: the strategies on the shipped worlds, seed 0 (release_runs.json) ---------
 
 def _kinds(r: dict[str, Any]) -> str:
+    """A run's tool-use trials, with its tests and confirmations when it had both."""
     use = [t for t in r["trial_lines"] if t["phase"] == "use"]
     tests = sum(1 for t in use if t.get("kind") != "exploit")
     confirm = len(use) - tests
@@ -157,6 +159,7 @@ def _kinds(r: dict[str, Any]) -> str:
 
 
 def _model_eval(r: dict[str, Any]) -> str:
+    """A run's evaluation of the learned model, ``model 4 of 4``."""
     e = r["eval"]
     return f"model {e['successes']} of {e['trials']}"
 
@@ -190,6 +193,7 @@ def strategies_seed0() -> str:
 
 
 def _solved(r: dict[str, Any]) -> str:
+    """What a run's creation phase tried, in order, and what solved the harder task."""
     c = r["create"]
     cat = c.get("catalogue") or []
     created = r["created_tools"]
@@ -231,6 +235,7 @@ def catalogue_first() -> str:
 
 
 def _strength(t: dict[str, Any]) -> str:
+    """A created tool's strength check: model, robust and peak force, stress, verdict."""
     s = t["strength"]
     where = (f" at {s['lever_arm_m']:.3f} m from the grasp" if s.get("lever_arm_m")
              else " over its footprint")
@@ -346,6 +351,7 @@ def _pretty(line: str) -> list[str]:
 
 
 def _models(text: str) -> str:
+    """The learned models and h_g of a ``model.pl`` (not h_s), wrapped, as a code block."""
     keep = [line for line in text.splitlines()
             if line.startswith(("learned_model(", "learned_hypothesis("))
             and ", hs," not in line]
@@ -438,6 +444,7 @@ a paragraph of its own (``other-cases``)."""
 
 
 def _other_cases() -> list[str]:
+    """The cases of release_runs.json outside :data:`TABLED`."""
     cases = sorted({k.rsplit("-", 1)[0] for k in result("release_runs")["runs"]})
     return [c for c in cases if c not in TABLED]
 
@@ -634,6 +641,7 @@ def robot_cost() -> str:
 
 
 def _engine_row(size: dict[str, Any]) -> str:
+    """The four engine timings of one clause size of engine.json, in ms."""
     keys = ("clause_lgg_ms", "theta_subsumes_ms", "clause_reduce_ms", "nbr_reduce_ms")
     vals = []
     for k in keys:

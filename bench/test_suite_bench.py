@@ -44,9 +44,11 @@ def main() -> int:
     prolog, python = part("test-prolog"), part("test-python")
     m = re.search(r"(\d+) plunit tests, (\d+) failed", prolog["output"])
     n_prolog = int(m.group(1)) if m else None
+    summary = [line for line in python["output"].splitlines()
+               if re.search(r"\d+ (passed|failed).* in [\d.]+s", line)]
     counts = {k: int(v) for v, k in re.findall(
         r"(\d+) (passed|failed|skipped|deselected|errors?|xfailed|xpassed)",
-        python["output"].strip().splitlines()[-1] if python["output"].strip() else "")}
+        summary[-1] if summary else "")}
     for p in (prolog, python):
         p["tail"] = p.pop("output").strip().splitlines()[-3:]
     record = {"bench": "test_suite", "command": "make test", "cores": os.cpu_count(),
