@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench mutate clean
+.PHONY: help setup test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -75,6 +75,9 @@ repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads it
 
 bench: $(STAMP)  ## Run the benchmarks (about 40 min) and record their figures in bench/results/.
 	$(PY) bench/run_all.py
+
+readme-figures: $(STAMP)  ## Write the README's figures about runs from bench/results/ (the marked blocks).
+	$(PY) bench/readme_figures.py
 
 # MUTATE_ARGS narrows the run, e.g. MUTATE_ARGS="--only creative_py/report/table.py".
 MUTATE_ARGS ?=

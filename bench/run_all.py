@@ -2,7 +2,10 @@
 
 Each benchmark is a separate process (one embedded Prolog and one physics client per
 process); a failing one is reported and the others still run. The learning benchmark
-(several whole runs per case) is the long one: ``--quick`` leaves it out.
+(several whole runs per case) and the whole runs of every case as a user makes them
+(``release_runs.py``, ``video_cost_bench.py``) are the long ones: ``--quick`` leaves them
+out. ``bench/readme_figures.py`` (``make readme-figures``) then writes the README's
+figures from what they recorded.
 """
 
 from __future__ import annotations
@@ -29,16 +32,18 @@ BENCHES = [
     [sys.executable, str(HERE / "bad_input_bench.py")],
 ]
 LEARNING = [sys.executable, str(HERE / "learning_bench.py")]
+RUNS = [[sys.executable, str(HERE / "release_runs.py")],
+        [sys.executable, str(HERE / "video_cost_bench.py")]]
 
 
 def main() -> int:
     """Run the benchmarks; return 1 if any failed."""
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--quick", action="store_true", help="leave out the learning runs")
+    ap.add_argument("--quick", action="store_true", help="leave out the whole runs")
     args = ap.parse_args()
     (HERE / "results").mkdir(exist_ok=True)
     failed = []
-    for cmd in BENCHES + ([] if args.quick else [LEARNING]):
+    for cmd in BENCHES + ([] if args.quick else [LEARNING, *RUNS]):
         if not Path(cmd[1]).exists():
             print(f"skip {cmd[1]}: not present")
             continue

@@ -266,7 +266,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         clips = runner.clips
         summary: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
                                    "options": asdict(options), "wall_time_s": {},
-                                   "world_seed": options.world_seed, "drawn_world": drawn}
+                                   "world_seed": options.world_seed, "drawn_world": drawn,
+                                   **_case_facts(world.manifest, options)}
         use = _learn_to_use(runner, options, summary, say)
         _plan_and_evaluate(runner, use, options, summary, say)
         if options.phase in ("create", "all"):
@@ -286,6 +287,16 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         if resume is None:
             run.release()  # a resumed folder's lock is resume_run's
     return run
+
+
+def _case_facts(manifest: Any, options: RunOptions) -> dict[str, Any]:
+    """What the reports need of the case, written into ``summary.json`` so that they read
+    the run folder alone: the unit of each pose number (``pose_units``), N of Algorithm 1
+    as this run used it (``trial_budget``) and the paper's count of tool-use trials
+    (``paper_trials``, None when the paper has no such case)."""
+    return {"pose_units": {p.name: p.unit for p in manifest.pose_params},
+            "trial_budget": options.max_trials or manifest.trial_budget,
+            "paper_trials": manifest.paper_trials}
 
 
 def _trial_runner(engine: Engine, world: World, run: RunFolder, options: RunOptions,

@@ -98,12 +98,13 @@ class RunContents:
     warnings : list of str
         One sentence per thing that could not be read.
     pose_units : dict
-        The unit of each pose number (``m``, ``rad``) by name, from the case's manifest
-        (empty when the case is not known here).
+        The unit of each pose number (``m``, ``rad``) by name, from ``summary.json``
+        (empty for a folder written before the run recorded them).
     budget : int or None
-        N of Algorithm 1: the run's ``--max-trials``, else the manifest's trial budget.
+        N of Algorithm 1 as the run used it (``summary.json``'s ``trial_budget``; for an
+        older folder its ``--max-trials``, else None).
     paper_trials : int or None
-        The paper's count of tool-use trials for the case (the manifest's).
+        The paper's count of tool-use trials for the case, from ``summary.json``.
     """
 
     path: Path
@@ -168,21 +169,26 @@ def read_run(run_dir: Path | str) -> RunContents:
 
 
 def _case_facts(summary: dict[str, Any]) -> tuple[dict[str, str], int | None, int | None]:
-    """The pose units, trial budget and paper's trial count of the run's case, from its
-    manifest when the case is known here (nothing otherwise: the folder is still read)."""
-    case = summary.get("case")
-    if not isinstance(case, str):
-        return {}, None, None
-    try:
-        from creative_py.case import get_case
+    """The pose units, trial budget and paper's trial count of the run's case, as the run
+    wrote them into ``summary.json`` (``pose_units``, ``trial_budget``, ``paper_trials``).
 
-        manifest = get_case(case)
-    except Exception:  # noqa: BLE001 - an unknown or broken case only loses the units
-        return {}, None, None
+    A folder written before these fields has none of them: its poses are shown as the
+    numbers they are, without units; its budget is the run's ``--max-trials`` when that
+    was given, else unknown; the paper's count is not shown. The case's manifest is not
+    read: the folder says everything the reports show.
+    """
+    raw = summary.get("pose_units")
+    units = ({k: v for k, v in raw.items() if isinstance(k, str) and isinstance(v, str)}
+             if isinstance(raw, dict) else {})
     options = summary.get("options") if isinstance(summary.get("options"), dict) else {}
-    budget = options.get("max_trials") or manifest.trial_budget
-    return ({p.name: p.unit for p in manifest.pose_params},
-            budget if isinstance(budget, int) else None, manifest.paper_trials)
+    budget = summary.get("trial_budget", options.get("max_trials"))
+    paper = summary.get("paper_trials")
+    return (units, budget if _count(budget) else None, paper if _count(paper) else None)
+
+
+def _count(value: Any) -> bool:
+    """Whether a value read from a file is a positive whole number (not a bool)."""
+    return isinstance(value, int) and not isinstance(value, bool) and value > 0
 
 
 def pose_text(pose: Any, units: dict[str, str]) -> str:
