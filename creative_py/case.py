@@ -7,6 +7,9 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
   the case's knowledge), ``trial_budget`` (N of Algorithm 1), optional ``paper_trials``
   (the paper's count of tool-use trials, marked on a sweep's plot), both within
   :data:`TRIAL_BUDGET`;
+* ``backend`` (optional, default ``"pybullet"``): the simulator backend that builds
+  and runs the case's world, a name of :data:`BACKENDS`
+  (:func:`creative_py.simulator.backend_for`);
 * ``[roles]``: which ``objects.toml`` tables are the candidate tools, the target and
   the context object; ``goal``: the task's goal literals;
 * ``[[skill]]``: the innate skills in plan order, each bound to a simulator primitive,
@@ -62,6 +65,36 @@ POSE_LIMIT = 10.0
 RANDOMISE_LIMIT = 1000.0
 """The largest size of a ``[randomise]`` ``min``, ``max`` (a scene value's or a spec
 field's own unit: m, rad, degrees) and ``jitter``."""
+
+
+@dataclass(frozen=True)
+class BackendEntry:
+    """Where a simulator backend lives and what installs it.
+
+    Attributes
+    ----------
+    module : str
+        The module that implements :class:`creative_py.simulator.Backend` (imported
+        only when a case names the backend).
+    extra : str
+        The optional dependencies of ``pyproject.toml`` that it needs
+        (``pip install -e '.[<extra>]'``); empty for one the core dependencies install.
+    """
+
+    module: str
+    extra: str = ""
+
+
+BACKENDS: dict[str, BackendEntry] = {
+    "pybullet": BackendEntry("creative_py.sim"),
+    "maniskill": BackendEntry("creative_py.maniskill", extra="maniskill"),
+}
+"""The simulator backends a manifest's ``backend`` may name: the registry that
+:func:`creative_py.simulator.backend` reads (here, below the simulator boundary, so
+that the manifest reader can refuse an unknown name with the file and the field)."""
+
+DEFAULT_BACKEND = "pybullet"
+"""The backend of a manifest that names none."""
 
 
 @dataclass(frozen=True)
@@ -146,6 +179,8 @@ class CaseManifest:
     ``[randomise.catalogue.<field>]`` (``short = {max = 0.20}``): a drawn number whose
     object has that value stays within them, where the physics' boundary lies inside
     the ontology's range (a 0.24 m "short" handle already reaches the cube)."""
+    backend: str = DEFAULT_BACKEND
+    """The simulator backend of the case's world (a name of :data:`BACKENDS`)."""
 
     @property
     def harder_variant(self) -> str:
@@ -213,7 +248,8 @@ class CaseManifest:
     def listing(self) -> dict[str, Any]:
         """Return the manifest as plain JSON-ready data (``creative cases --json``)."""
         return {"id": self.id, "title": self.title, "world": str(self.folder),
-                "ontology": self.ontology, "trial_budget": self.trial_budget,
+                "ontology": self.ontology, "backend": self.backend,
+                "trial_budget": self.trial_budget,
                 "variants": [{"name": v.name, "harder": v.harder,
                               "description": v.description} for v in self.variants],
                 "harder_variant": self.harder_variant,
@@ -233,6 +269,7 @@ def read_manifest(folder: Path) -> CaseManifest:
         raise f.error("id", f"must be a lower-case Prolog atom, got {cid!r}")
     title = f.str("title")
     ontology = f.str("ontology")
+    backend = f.str("backend", DEFAULT_BACKEND, choices=tuple(sorted(BACKENDS)))
     budget = f.int("trial_budget", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
     paper_trials = (f.int("paper_trials", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
                     if f.has("paper_trials") else None)
@@ -250,7 +287,8 @@ def read_manifest(folder: Path) -> CaseManifest:
     f.done()
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), skills, pose_term, params,
-                            variants, demo, jitters, paper_trials, bounds, value_bounds)
+                            variants, demo, jitters, paper_trials, bounds, value_bounds,
+                            backend)
     try:
         manifest.check_pose(demo.pose, "demonstration.pose")
     except ValueError as exc:

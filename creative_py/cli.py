@@ -130,13 +130,14 @@ def _name(option: str, text: Optional[str]) -> Optional[str]:
     return text
 
 
-def _need_display() -> None:
-    """Fail in one line unless pybullet's GUI can open (the display is set and can be
-    opened: pybullet aborts the process on one it cannot open)."""
+def _need_display(manifest=None) -> None:
+    """Fail in one line unless the simulator's window can open (the display is set and
+    can be opened: pybullet aborts the process on one it cannot open): the window of
+    ``manifest``'s backend, or the default backend's before a manifest is read."""
     from creative_py.learning.run import require_display
 
     try:
-        require_display()
+        require_display(manifest)
     except ValueError as exc:
         _fail(str(exc))
 
@@ -208,8 +209,6 @@ def trial(
 ) -> None:
     """Run one physical trial and report its outcome (success, failure, blocked,
     unreachable or invalid)."""
-    if gui:
-        _need_display()
     variant = _name("--variant", variant)
     save_images, world = _path("--save-images", save_images), _path("--world", world)
     with _one_line_errors(), _stdout_to_stderr():
@@ -225,7 +224,7 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     from creative_py.bridge import Engine
     from creative_py.learning.poses import pose_resolver
     from creative_py.records.trial import verdict_words
-    from creative_py.sim import load_world, run_trial
+    from creative_py.simulator import backend_for
     from creative_py.world import WorldFileError
 
     m = _manifest(case, world)
@@ -233,9 +232,12 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     if save_images is not None and save_images.exists() and not save_images.is_dir():
         _fail(f"--save-images {save_images}: not a folder")
     try:
-        w = load_world(m)
+        physics = backend_for(m)
+        w = physics.load_world(m)
     except WorldFileError as exc:
         _fail(str(exc))
+    if gui:
+        _need_display(m)
     if list_:
         return [json.dumps(w.listing(), indent=2, sort_keys=True)]
     objects = list(w.catalogue)
@@ -254,9 +256,9 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
             parsed = m.parse_pose(pose)
         except ValueError as exc:
             _fail(str(exc))
-    result = run_trial(w, tool, variant, location, pose=parsed, seed=seed,
-                       images_dir=save_images, gui=gui,
-                       pose_target=pose_resolver(Engine.instance(), m))
+    result = physics.run_trial(w, tool, variant, location, pose=parsed, seed=seed,
+                               images_dir=save_images, gui=gui,
+                               pose_target=pose_resolver(Engine.instance(), m))
     if as_json:
         return [result.to_json()]
     p = ", ".join(f"{v:g}" for v in result.pose)

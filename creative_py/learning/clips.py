@@ -5,8 +5,8 @@ tool-creation trial and the first trial of each distinct failure (its outcome an
 reason, numbers left out: two ``blocked`` trials whose gripper lagged by 3.1 and 3.4 cm
 are one reason); ``--video all`` keeps every trial; ``--video none`` records nothing.
 
-Every trial's poses are kept while it runs (cheap, :class:`creative_py.sim.recorder.
-Recorder`); once the physics has given the outcome, :meth:`ClipKeeper.why` says
+Every trial's poses are kept while it runs (cheap: the backend's recorder,
+:class:`creative_py.simulator.ClipRecorder`); once the physics has given the outcome, :meth:`ClipKeeper.why` says
 whether the trial is kept, and only a kept trial is rendered and written, as
 ``videos/<trial>-<phase>-<tool>.mp4`` (the demonstration is trial 0). Each entry of
 :attr:`ClipKeeper.entries` (``summary["videos"]``) is::
@@ -29,7 +29,7 @@ import json
 import os
 import re
 from pathlib import Path
-from typing import Any, Optional, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 from creative_py.records.trial import TrialRecord
 
@@ -61,22 +61,32 @@ class ClipKeeper:
     mode : {"all", "key", "none"}
     run_dir : Path
         The run folder.
-    spec : VideoSpec or None
-        The world's clip camera (``world.scene.video``); None records nothing.
+    spec : ClipCamera or None
+        The world's clip camera (``world.video``, :class:`creative_py.simulator.
+        ClipCamera`); None records nothing.
     background : bool
         Render and encode each clip in a child process (forked inside the trial's
         episode, after the verdict, at :data:`CLIP_NICE` lower priority) while the run
         goes on; :meth:`finish` waits for them. Off: in this process, at once.
     max_children : int
         Most clip processes running at once (one more waits for the oldest).
+    new_recorder : callable or None
+        ``new_recorder(spec)`` returns an empty recorder of one trial (the world's
+        backend's ``recorder``, :meth:`creative_py.simulator.Backend.recorder`); needed
+        unless nothing is recorded.
     """
 
     def __init__(self, mode: str, run_dir: Path, spec: Any, background: bool = True,
-                 max_children: int = 2) -> None:
+                 max_children: int = 2,
+                 new_recorder: Optional[Callable[[Any], Any]] = None) -> None:
         if mode not in VIDEO_MODES:
             raise ValueError(f"option video must be one of {', '.join(VIDEO_MODES)}, "
                              f"got {mode!r}")
         self.mode = mode if spec is not None else "none"
+        if self.mode != "none" and new_recorder is None:
+            raise ValueError("a clip keeper that records needs the backend's recorder "
+                             "(new_recorder)")
+        self.new_recorder = new_recorder
         self.run_dir = Path(run_dir)
         self.spec = spec
         self.entries: list[dict[str, Any]] = []
@@ -101,9 +111,7 @@ class ClipKeeper:
         """Return a new recorder for one trial, or None when nothing is recorded."""
         if self.mode == "none":
             return None
-        from creative_py.sim.recorder import Recorder
-
-        return Recorder(self.spec)
+        return self.new_recorder(self.spec)
 
     def why(self, phase: str, outcome: str, reason: str) -> Optional[str]:
         """Return why the trial that just ended is kept, or None; note what it showed.

@@ -114,12 +114,11 @@ class SizedTool:
     seconds: float
 
     def catalogue_facts(self) -> list[Term]:
-        """Return the tool's catalogue facts (metres, degrees), as the simulator gives
-        them for its own objects (:func:`creative_py.sim.tools.catalogue_facts`), so the
-        knowledge base derives the tool's structural literals the same way."""
-        from creative_py.sim.tools import catalogue_facts
-
-        return [fact_term(f) for f in catalogue_facts(self.spec)]
+        """Return the tool's catalogue facts (metres, degrees): its kind's, as the robot
+        perceives them for every catalogued object
+        (:meth:`creative_py.kinds.parts.KindSpec.catalogue_facts`), so the knowledge
+        base derives the tool's structural literals the same way."""
+        return [fact_term(f) for f in self.spec.catalogue_facts()]
 
 
 @dataclass(frozen=True)
@@ -318,7 +317,7 @@ def default_context(case: str, variant: Optional[str] = None, *,
     """
     from creative_py.case import get_case, read_manifest
     from creative_py.learning.trials import task_facts
-    from creative_py.sim import load_world
+    from creative_py.simulator import backend_for
 
     try:
         manifest = get_case(case) if world_dir is None else read_manifest(Path(world_dir))
@@ -326,7 +325,7 @@ def default_context(case: str, variant: Optional[str] = None, *,
         manifest.variant(variant)
     except KeyError as exc:
         raise ValueError(exc.args[0]) from None
-    world = load_world(manifest)
+    world = backend_for(manifest).load_world(manifest)
     facts = task_facts(world, variant, world.locations[0])
     known = context_facts(Engine.instance())
     return [fact_term(f) for f in facts if known.get(f[0]) == len(f) - 1]

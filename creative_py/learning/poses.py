@@ -1,13 +1,14 @@
 """The pose resolver: the engine's pose solution, handed to the simulator.
 
-A pose skill of the simulator (:meth:`creative_py.sim.episode.Episode.run_primitive`)
+A pose skill of the simulator (:meth:`creative_py.simulator.Episode.run_skill`)
 needs the world target of a relative pose in the state the robot perceives at that
 moment (``tip(X, Y, Roll)``, ``place(X, Y, Heading)``). The case's ontology knows it
 (its ``pose_target/5`` hook), so the learning layer, which talks to the engine, builds
 the resolver and gives it to every episode it opens; the simulator asks no one::
 
     poses = pose_resolver(Engine.instance(), world.manifest)
-    run_trial(world, tool, variant, location, pose_target=poses)
+    backend_for(world.manifest).run_trial(world, tool, variant, location,
+                                          pose_target=poses)
 """
 
 from __future__ import annotations
@@ -18,11 +19,11 @@ from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.case import CaseManifest
 
 if TYPE_CHECKING:
-    from creative_py.sim import Fact, PoseTarget
+    from creative_py.simulator import Fact, PoseTarget
 
 
 def pose_resolver(engine: Engine, manifest: CaseManifest) -> "PoseTarget":
-    """Return the :data:`~creative_py.sim.PoseTarget` of a case: ``engine`` solves it.
+    """Return the :data:`~creative_py.simulator.PoseTarget` of a case: ``engine`` solves it.
 
     The returned callable ``(facts, tool, pose) -> target`` asks the engine (``api``
     operation ``pose_target``, the case's ``abstract_state:pose_world/5``) for the world

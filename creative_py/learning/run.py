@@ -24,7 +24,7 @@ from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseRe
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 from creative_py.report.page import write_html_report
-from creative_py.sim.world import apply_drawn, draw_world
+from creative_py.simulator import backend_for
 
 log = logging.getLogger(__name__)
 
@@ -293,7 +293,8 @@ def _trial_runner(engine: Engine, world: Any, run: RunFolder, options: RunOption
     """Return the run's trial runner with its clip keeper (held while a resume's replay
     is checked), replaying ``replay`` (recorded at ``lines`` of ``trials.jsonl``)."""
     # In the GUI the client has a thread of its own: no forking it.
-    clips = ClipKeeper(options.video, run.path, world.scene.video, background=not options.gui)
+    clips = ClipKeeper(options.video, run.path, world.video, background=not options.gui,
+                       new_recorder=backend_for(world.manifest).recorder)
     clips.held = run.sealed
     return TrialRunner(engine, world, run, options.seed, say, replay=replay, clips=clips,
                        gui=options.gui, replay_lines=lines)
@@ -338,7 +339,6 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
     physics."""
     from creative_py.case import get_case, read_manifest
     from creative_py.mesh.slicer import require_slicer
-    from creative_py.sim import load_world
 
     if options.phase in ("create", "all"):
         require_slicer()  # every created tool is sliced: refuse before any physics
@@ -346,24 +346,25 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
     if manifest.id != case:
         raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "
                          f"not {case!r}")
-    world = load_world(manifest)
+    physics = backend_for(manifest)
+    world = physics.load_world(manifest)
     engine = Engine.instance()
     check_manifest(engine, manifest)
     check_catalogue(engine, world)
     if options.world_seed is not None:
         if drawn is None:
             drawn = draw_catalogue_world(engine, world, options.world_seed)
-            world = apply_drawn(world, drawn)
+            world = physics.apply_drawn(world, drawn)
         else:  # read back from run.json
             try:
-                world = apply_drawn(world, drawn)
+                world = physics.apply_drawn(world, drawn)
             except (KeyError, TypeError, AttributeError, ValueError) as exc:
                 raise ValueError(f"{run_json or 'run.json'}: field 'drawn_world' is not a "
                                  f"drawn world of this case ({type(exc).__name__}: {exc})"
                                  ) from None
         check_catalogue(engine, world)
     if options.gui:
-        require_display()  # before the folder exists: an unreachable display aborts
+        require_display(manifest)  # before the folder exists: an unreachable display aborts
     return engine, world, drawn
 
 
@@ -463,11 +464,8 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
 def catalogue_ranges(engine: Engine, world: Any) -> dict[str, dict[str, tuple]]:
     """Return ``object -> {catalogue fact -> (low, high, bounds, value)}``: the
     qualitative range of each catalogued number and the value it stands for (the
-    engine's ``catalogue_ranges``; what :func:`creative_py.sim.world.draw_world` draws
-    inside)."""
-    from creative_py.sim.tools import catalogue_facts
-
-    facts = [fact_term(f) for spec in world.catalogue.values() for f in catalogue_facts(spec)]
+    engine's ``catalogue_ranges``; what the backend's ``draw_world`` draws inside)."""
+    facts = [fact_term(f) for spec in world.catalogue.values() for f in spec.catalogue_facts()]
     ranges: dict[str, dict[str, tuple[float, float, str, str]]] = {}
     for r in engine.catalogue_ranges(world.manifest.id, facts):
         obj, fact, _x, _prop, value, lo, hi, bounds = r.args
@@ -490,12 +488,15 @@ def _earlier_summary(run_dir: Path) -> dict[str, Any]:
     return data if isinstance(data, dict) else {}
 
 
-def require_display() -> None:
-    """Raise ValueError unless pybullet's GUI can open on the display
-    (:func:`creative_py.sim.core.display_reachable`)."""
-    from creative_py.sim.core import display_reachable
+def require_display(manifest: Optional[Any] = None) -> None:
+    """Raise ValueError unless the simulator's window (``--gui``) can open on the
+    display: the window of ``manifest``'s backend, or, without a manifest (the command
+    line's check before it reads one), the default backend's (its
+    ``display_reachable``)."""
+    from creative_py.simulator import backend
 
-    why = display_reachable()
+    physics = backend() if manifest is None else backend_for(manifest)
+    why = physics.display_reachable()
     if why:
         raise ValueError(f"--gui: {why}; run without --gui, or under a display "
                          f"(e.g. xvfb-run)")
@@ -503,38 +504,34 @@ def require_display() -> None:
 
 def draw_catalogue_world(engine: Engine, world: Any, seed: int,
                          check_demonstration: bool = True) -> dict[str, Any]:
-    """Draw a randomised world of ``world`` for world seed ``seed``
-    (:func:`creative_py.sim.world.draw_world`): the engine gives each catalogued
-    number's own qualitative range (``catalogue_ranges``) and checks that every drawn
-    object keeps its structural literals; the physics checks that it lies still where
-    the scene puts it (:func:`creative_py.sim.tool_rests`), else it is drawn again.
+    """Draw a randomised world of ``world`` for world seed ``seed`` (its backend's
+    ``draw_world``): the engine gives each catalogued number's own qualitative range
+    (``catalogue_ranges``) and checks that every drawn object keeps its structural
+    literals; the physics checks that it lies still where the scene puts it (the
+    backend's ``tool_rests``), else it is drawn again.
     With ``check_demonstration``, the trainer's demonstration runs in the drawn world
     (sensor noise of :data:`DEMO_CHECK_SEED`) and the demonstration's location is
     drawn again until it reaches the goal (the drawn world's ``redraws`` counts the
     times)."""
-    from dataclasses import replace
-
     from creative_py.learning.poses import pose_resolver
     from creative_py.learning.tool_use import DemonstrationFailed, run_demonstration
-    from creative_py.sim import tool_rests
-    from creative_py.sim.tools import catalogue_facts
 
+    physics = backend_for(world.manifest)
     case = world.manifest.id
     ranges = catalogue_ranges(engine, world)
 
     def literals(spec: Any) -> set[str]:
-        state = engine.abstract_state(case, [fact_term(f) for f in catalogue_facts(spec)])
+        state = engine.abstract_state(case, [fact_term(f) for f in spec.catalogue_facts()])
         return {str(lit) for lit in state}
 
     originals = {name: literals(spec) for name, spec in world.catalogue.items()}
     def keeps(name: str, spec: Any) -> bool:
         if literals(spec) != originals[name]:
             return False
-        item = replace(world.items[name], spec=spec)
-        return tool_rests(replace(world, items={**world.items, name: item}), name)
+        return physics.tool_rests(world.with_spec(name, spec), name)
 
     def demonstrates(drawn: dict[str, Any]) -> bool:
-        new = apply_drawn(world, drawn)
+        new = physics.apply_drawn(world, drawn)
         try:
             run_demonstration(new, seed=DEMO_CHECK_SEED,
                               pose_target=pose_resolver(engine, new.manifest))
@@ -542,8 +539,8 @@ def draw_catalogue_world(engine: Engine, world: Any, seed: int,
             return False
         return True
 
-    return draw_world(world, seed, ranges, keeps=keeps,
-                      demonstrates=demonstrates if check_demonstration else None)
+    return physics.draw_world(world, seed, ranges, keeps=keeps,
+                              demonstrates=demonstrates if check_demonstration else None)
 
 
 def check_manifest(engine: Engine, manifest: Any) -> None:
@@ -581,11 +578,9 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
 
 
 def check_catalogue(engine: Engine, world: Any) -> None:
-    """Check that the simulator describes every catalogued object in the ontology's
-    vocabulary (the catalogue predicates of the case's tool class); raise ValueError
-    naming the object and the fact otherwise."""
-    from creative_py.sim.tools import catalogue_facts
-
+    """Check that every catalogued object's facts (its kind's, as the robot perceives
+    them) are in the ontology's vocabulary (the catalogue predicates of the case's tool
+    class); raise ValueError naming the object and the fact otherwise."""
     from creative_py.learning.manufacture import tool_vocabulary
 
     m = world.manifest
@@ -599,7 +594,7 @@ def check_catalogue(engine: Engine, world: Any) -> None:
                                  f"size_choice/4 in ontology/kinds/)")
     where = m.folder / "objects.toml"
     for name, spec in world.catalogue.items():
-        facts = catalogue_facts(spec)
+        facts = spec.catalogue_facts()
         for fact in facts:
             if (fact[0], len(fact) - 1) not in known:
                 raise ValueError(

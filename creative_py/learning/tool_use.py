@@ -34,7 +34,7 @@ from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
 
 if TYPE_CHECKING:
-    from creative_py.sim import PoseTarget
+    from creative_py.simulator import PoseTarget
 
 
 @dataclass(frozen=True)
@@ -99,22 +99,23 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
     feels (arm proprioception). A demonstration that fails in the physics raises
     :class:`DemonstrationFailed` naming the manifest, or for a drawn world
     (``--world-seed``) its world seed: there is nothing to learn from. ``record`` (a
-    :class:`creative_py.sim.recorder.Recorder`) keeps its poses; ``verdict()`` is
+    :class:`creative_py.simulator.ClipRecorder`) keeps its poses; ``verdict()`` is
     called at the end of a successful demonstration, inside the episode (where its
-    clip is rendered); ``gui`` shows the pybullet GUI. ``pose_target`` gives the pose
+    clip is rendered); ``gui`` shows the simulator's window. The episode is the
+    manifest's backend's (:func:`creative_py.simulator.backend_for`). ``pose_target`` gives the pose
     skill its world target (:func:`creative_py.learning.poses.pose_resolver`).
     """
-    from creative_py.sim import open_episode
+    from creative_py.simulator import backend_for
 
     m = world.manifest
     demo = m.demonstration
     where = (f"{world.variation} (drawn from {m.folder / 'case.toml'}): the demonstration"
-             if getattr(world, "variation", "") else
+             if world.variation else
              f"{m.folder / 'case.toml'}: field 'demonstration'")
     steps: list[DemoStep] = []
-    with open_episode(world, demo.variant, demo.location, demo.tool, seed=seed,
-                      images_dir=images_dir, gui=gui, record=record,
-                      pose_target=pose_target) as ep:
+    with backend_for(m).open_episode(world, demo.variant, demo.location, demo.tool,
+                                     seed=seed, images_dir=images_dir, gui=gui,
+                                     record=record, pose_target=pose_target) as ep:
         before = tuple(ep.observe().facts)
         for name in demo.steps:
             skill = m.skill(name)

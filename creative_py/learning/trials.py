@@ -6,7 +6,9 @@ by composition. A trial::
     runner.task_facts(task)                 # what the robot sees of the task: catalogue,
                                             # apparatus, target (one observation per scene)
     runner.run(experiment, "use", 3, vs, task, decision_s)
-        -> sim.run_trial(tool, task, pose)  # the manifest's skills, in order, in pybullet;
+        -> backend.run_trial(tool, task, pose)
+                                            # the manifest's skills, in order, in the
+                                            # manifest's backend (pybullet by default);
                                             # the facts before the tool action are observed
         -> engine.label_trial(...)          # success: pos; failure or blocked: neg
         -> TrialRecord                      # one line of trials.jsonl (records.trial)
@@ -15,8 +17,9 @@ Which skills run, with which arguments and which of them takes the pose, comes f
 case manifest (``[[skill]]`` of ``worlds/<folder>/case.toml``); nothing here names a
 case. The physics alone decides the outcome.
 
-What each way of ending a trial means is decided by the simulator alone
-(:func:`creative_py.sim.episode.trial_outcome`). Outcomes ``blocked`` (the arm could
+What each way of ending a trial means is decided by the simulator alone (its
+backend's ``run_trial``, :class:`creative_py.simulator.Backend`; pybullet's is
+:func:`creative_py.sim.episode.trial_outcome`). Outcomes ``blocked`` (the arm could
 not carry out a motion before the tool action, e.g. a short handle whose gripper hits
 the tube mouth before the prong is behind the cube) count as failures of the *planned*
 example, so they are evidence about the tested literal only; outcomes
@@ -39,7 +42,7 @@ from creative_py.records.folder import RunFolder
 from creative_py.records.trial import TrialRecord, verdict_lines
 
 if TYPE_CHECKING:
-    from creative_py.sim import PoseTarget
+    from creative_py.simulator import PoseTarget
 
 log = logging.getLogger(__name__)
 
@@ -81,19 +84,19 @@ def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
     available objects, the apparatus and the target's pose.
 
     The scene is built and observed once per (world folder, available objects, variant,
-    location); nothing moves.
+    location) by the manifest's backend; nothing moves.
     """
-    from creative_py.sim import open_episode
+    from creative_py.simulator import backend_for
 
     m: CaseManifest = world.manifest
-    key = (m.id, str(m.folder), getattr(world, "variation", ""),
+    key = (m.id, str(m.folder), world.variation,
            tuple(sorted(world.catalogue)), variant, int(location))
     if key not in _TASK_FACTS:
         # The robot is not built: it is invisible to the cameras and holds nothing yet,
         # so the facts are the same (checked for every case, variant and location) and
         # the scene builds seven times faster.
-        with open_episode(world, variant, int(location), m.demonstration.tool, seed=0,
-                          robot=False) as ep:
+        with backend_for(m).open_episode(world, variant, int(location),
+                                         m.demonstration.tool, seed=0, robot=False) as ep:
             _TASK_FACTS[key] = list(ep.observe().facts)
     return _TASK_FACTS[key]
 
@@ -106,8 +109,9 @@ class TrialRunner:
     engine : Engine
         The Prolog engine (bridge).
     world : World
-        The case's world (:func:`creative_py.sim.load_world`); its manifest names the
-        case, the skills and the pose.
+        The case's world (its backend's ``load_world``,
+        :class:`creative_py.simulator.World`); its manifest names the case, the
+        skills, the pose and the backend that runs the trials.
     run : RunFolder or None
         Where trials are logged; None logs nowhere.
     seed : int
@@ -127,7 +131,7 @@ class TrialRunner:
         Which trials become video clips (:mod:`creative_py.learning.clips`); None
         records none.
     gui : bool
-        Show every trial in the pybullet GUI (needs a display).
+        Show every trial in the simulator's window (needs a display).
     """
 
     def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
@@ -277,9 +281,10 @@ class TrialRunner:
 
     def _physical(self, n: int, phase: str, phase_trial: int, tool: str,
                   tested: list[str], task: TaskState, pose: Term) -> Any:
-        """Run trial ``n`` in the physics (``sim.run_trial``), its snapshots in the run
-        folder and, when the clip keeper wants it, its clip; return the TrialResult."""
-        from creative_py.sim import run_trial
+        """Run trial ``n`` in the physics (the backend's ``run_trial``), its snapshots in
+        the run folder and, when the clip keeper wants it, its clip; return the
+        TrialResult."""
+        from creative_py.simulator import backend_for
 
         images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
         recorder = self.clips.recorder() if self.clips is not None else None
@@ -291,10 +296,10 @@ class TrialRunner:
                                  outcome, reason, task.location,
                                  measured=verdict_lines(measured))
 
-        return run_trial(self.world, tool, task.variant, task.location,
-                         pose_numbers(pose), self.seed * 1000 + n, images, gui=self.gui,
-                         record=recorder, verdict=verdict if recorder is not None else None,
-                         pose_target=self.pose_target)
+        return backend_for(self.manifest).run_trial(
+            self.world, tool, task.variant, task.location, pose_numbers(pose),
+            self.seed * 1000 + n, images, gui=self.gui, record=recorder,
+            verdict=verdict if recorder is not None else None, pose_target=self.pose_target)
 
     def _label(self, vs: Term, exp: Term, ex: Any, task: TaskState) -> Term:
         """Return the version space after the trial's example (success: ``pos``;
@@ -312,9 +317,9 @@ class TrialRunner:
 
     def _replayed(self, record: TrialRecord, tool: str, task: TaskState, pose: Term,
                   phase: str) -> Any:
-        """Return what a recorded trial did (a :class:`creative_py.sim.TrialResult`),
+        """Return what a recorded trial did (a :class:`creative_py.simulator.TrialResult`),
         after checking it is the trial decided now."""
-        from creative_py.sim import TrialResult
+        from creative_py.simulator import TrialResult
 
         planned = (phase, tool, task.variant, task.location, self._pose_dict(pose))
         recorded = (record.phase, record.tool, record.variant, record.location, record.pose)

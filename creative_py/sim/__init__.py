@@ -1,6 +1,11 @@
-"""The simulator: a case's world built in pybullet, driven by the manifest's skills.
+"""The pybullet backend: a case's world built in pybullet, driven by the manifest's skills.
 
-Public API::
+This package is the ``pybullet`` backend of the simulator boundary
+(:mod:`creative_py.simulator`): its module-level functions are the
+:class:`~creative_py.simulator.Backend` protocol (``load_world``, ``open_episode``,
+``run_trial``, ``tool_rests``, ``draw_world``, ``apply_drawn``, ``display_reachable``,
+``recorder``), and the learning loop reaches them through
+``backend_for(manifest)``, never by importing this package. Public API::
 
     from creative_py.sim import load_world, open_episode, run_trial
     world = load_world(manifest)                # World (creative_py.case.CaseManifest)
@@ -13,7 +18,7 @@ learning layer's :func:`creative_py.learning.poses.pose_resolver` asks the engin
 
 Modules, from the data to the physics:
 
-``types``       value types shared by everything (SkillOutcome, Observation, TrialResult)
+``types``       the boundary's value types, re-exported (:mod:`creative_py.simulator.types`)
 ``world``       a world folder read for a manifest (World, load_world)
 ``scene``       ``[[body]]`` tables and scene expressions; body kinds (box, tube, shelf, door)
 ``tools``       tool kinds (hook-like, block): start, grasp, motion, proprioception,
@@ -46,12 +51,22 @@ def _import_pybullet_quietly() -> None:
 
 _import_pybullet_quietly()
 
-from creative_py.sim.episode import (Episode, PoseTarget, open_episode, run_trial, tool_rests,
+from creative_py.sim.core import display_reachable
+from creative_py.sim.episode import (Episode, open_episode, run_trial, tool_rests,
                                      trial_outcome)
-from creative_py.sim.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
-                                   SkillOutcome, TrialResult)
-from creative_py.sim.world import World, load_world
+from creative_py.sim.recorder import Recorder, VideoSpec
+from creative_py.sim.world import World, apply_drawn, draw_world, load_world
+from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
+                                         PoseTarget, SkillOutcome, TrialResult)
+
+
+def recorder(camera: VideoSpec) -> Recorder:
+    """Return a new recorder of one trial's clip for ``camera`` (a world's ``video``):
+    :meth:`creative_py.simulator.Backend.recorder`."""
+    return Recorder(camera)
+
 
 __all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
-           "TRIAL_OUTCOMES", "TrialResult", "World", "load_world", "open_episode", "run_trial",
+           "TRIAL_OUTCOMES", "TrialResult", "World", "apply_drawn", "display_reachable",
+           "draw_world", "load_world", "open_episode", "recorder", "run_trial",
            "tool_rests", "trial_outcome"]

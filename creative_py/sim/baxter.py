@@ -47,7 +47,7 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.sim.core import Point, Pose, Quat, Sim
-from creative_py.sim.types import SkillOutcome, SkillStatus, Verdict
+from creative_py.simulator.types import SkillOutcome, SkillStatus, Verdict
 
 log = logging.getLogger(__name__)
 

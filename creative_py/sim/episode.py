@@ -45,18 +45,13 @@ import pybullet as pb
 
 from creative_py.sim.loads import ToolLoad, ToolLoadMonitor
 from creative_py.sim.recorder import Recorder
-from creative_py.sim.types import Fact, Observation, SkillOutcome, TrialResult, Verdict
 from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
+from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
+                                         TrialResult, Verdict)
 from creative_py.world import PhysicsSettings, WorldFileError
 
 log = logging.getLogger(__name__)
-
-PoseTarget = Callable[[list[Fact], str, tuple[float, ...]], tuple]
-"""``(facts, tool, pose) -> world target`` of a pose, e.g. ``("tip", x, y, roll)``, or
-``()`` if the perceived state lacks what it needs. The caller gives it to the episode
-(the learning layer builds it from the engine's pose solution,
-:func:`creative_py.learning.poses.pose_resolver`); the simulator asks no one."""
 
 
 @contextmanager

@@ -33,7 +33,7 @@ import math
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
-from creative_py.sim.types import Verdict
+from creative_py.simulator.types import Verdict
 
 log = logging.getLogger(__name__)
 

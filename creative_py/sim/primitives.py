@@ -54,7 +54,7 @@ import pybullet as pb
 
 from creative_py.sim.bodies import frame_pose, set_frame_pose
 from creative_py.sim.core import Pose
-from creative_py.sim.types import SkillOutcome, Verdict
+from creative_py.simulator.types import SkillOutcome, Verdict
 from creative_py.sim.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
                                    roll_of, tool_orientation)
 

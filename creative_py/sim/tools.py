@@ -31,7 +31,7 @@ from creative_py.mesh.spec import Box
 from creative_py.sim.baxter import gripper_down, gripper_forward, quat_angle
 from creative_py.sim.bodies import Surface, frame_pose, load_tool_urdf, spawn_parts, spawn_spec
 from creative_py.sim.core import Pose
-from creative_py.sim.types import Fact, SkillOutcome
+from creative_py.simulator.types import Fact, SkillOutcome
 
 
 IDENTITY = (0.0, 0.0, 0.0, 1.0)

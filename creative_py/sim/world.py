@@ -166,6 +166,12 @@ class World:
         """Return the 1-based indices of the target's predefined locations."""
         return tuple(range(1, len(self.location_sets) + 1))
 
+    @property
+    def video(self) -> Any:
+        """Return the camera of the trial clips (``scene.video``,
+        :class:`~creative_py.sim.recorder.VideoSpec`), or None."""
+        return self.scene.video
+
     def item(self, name: str) -> CatalogueItem:
         """Return the catalogued object ``name``; raise listing the available ones."""
         if name not in self.items:
@@ -188,6 +194,12 @@ class World:
         friction = next(iter(self.items.values())).friction
         item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
         return replace(self, items={**self.items, spec.name: item})
+
+    def with_spec(self, name: str, spec: Any) -> "World":
+        """Return this world with the available object ``name`` given ``spec`` (a drawn
+        one), its place in the catalogue, its ``set`` values and friction kept."""
+        item = replace(self.item(name), spec=spec)
+        return replace(self, items={**self.items, name: item})
 
     def listing(self) -> dict[str, Any]:
         """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created

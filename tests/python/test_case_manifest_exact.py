@@ -110,14 +110,15 @@ def test_a_manifest_with_every_optional_field_absent_reads_with_the_defaults(tmp
         variants=(Variant("easy", "", False, {}), Variant("hard", "", True, {})),
         demonstration=DemonstrationSpec("stick1", "easy", 2, ("grab", "push"), (0.05,)),
         location_jitter=(), paper_trials=None, catalogue_bounds=(),
-        catalogue_value_bounds=())
+        catalogue_value_bounds=(), backend="pybullet")
     assert m.harder_variant == "hard"
     assert m.variant_names == ("easy", "hard")
     assert m.pose_names == ("dx",)
 
 
 def test_a_manifest_with_every_optional_field_set_reads_each_value(tmp_path):
-    text = MINIMAL.replace('trial_budget = 3\n', 'trial_budget = 3\npaper_trials = 5\n')
+    text = MINIMAL.replace('trial_budget = 3\n', 'trial_budget = 3\npaper_trials = 5\n'
+                           'backend = "maniskill"\n')
     text = text.replace('args = ["tool"]\n',
                         'args = ["tool"]\noptions = {speed = 0.2, lift_to = "z"}\n')
     text = text.replace('max = 0.2\n', 'max = 0.2\ndoc = "along the shelf"\n')
@@ -126,6 +127,7 @@ def test_a_manifest_with_every_optional_field_set_reads_each_value(tmp_path):
                         '[variant.set]\n"shelf1.depth" = 0.4\n')
     m = read_manifest(_write(tmp_path, text + FULL_EXTRA))
     assert m.paper_trials == 5
+    assert m.backend == "maniskill"
     assert m.skills[0].options == {"speed": 0.2, "lift_to": "z"}
     assert m.skills[1].options == {}
     assert m.pose_params == (PoseParam("dx", "m", -0.1, 0.2, "along the shelf"),)
@@ -142,7 +144,7 @@ def test_the_listing_exact(tmp_path):
     folder = _write(tmp_path, MINIMAL)
     assert read_manifest(folder).listing() == {
         "id": "mini", "title": "A minimal case", "world": str(folder),
-        "ontology": "mini_onto", "trial_budget": 3,
+        "ontology": "mini_onto", "backend": "pybullet", "trial_budget": 3,
         "variants": [{"name": "easy", "harder": False, "description": ""},
                      {"name": "hard", "harder": True, "description": ""}],
         "harder_variant": "hard", "skills": ["grab", "push"],
@@ -204,6 +206,12 @@ def test_pose_bounds_are_inclusive_and_errors_exact(tmp_path):
     ('dx = 0.05', 'dx = 0.5',
      "field 'demonstration.pose': demonstration.pose: dx must be within [-0.1, 0.2] m, "
      "got 0.5"),
+    ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "mujoco"\n',
+     "field 'backend': must be one of maniskill, pybullet, got 'mujoco'"),
+    ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "PyBullet"\n',
+     "field 'backend': must be one of maniskill, pybullet, got 'PyBullet' (did you mean"),
+    ('trial_budget = 3\n', 'trial_budget = 3\nbackend = 1\n',
+     "field 'backend': must be a string, got 1"),
 ])
 def test_manifest_errors_name_the_file_and_field(tmp_path, old, new, message):
     assert old in MINIMAL

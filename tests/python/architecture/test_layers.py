@@ -14,6 +14,8 @@ from pathlib import Path
 
 from _imports import PACKAGE, ROOT, ImportStatement, cycles, import_statements, modules
 
+from creative_py.simulator import backend_packages
+
 DOC = ROOT / "docs" / "architecture.md"
 SECTION = "## 3. The layers"
 WHERE = "docs/architecture.md section 3"
@@ -194,8 +196,9 @@ def test_the_checker_finds_a_forbidden_import_a_missing_row_and_a_misplaced_libr
 def test_every_package_of_creative_py_has_a_row_in_the_layer_table() -> None:
     rules = layer_rules(DOC.read_text())
     on_disk = packages(modules())
-    assert {"cli", "learning", "sim", "bridge", "records", "report"} <= on_disk
-    errors = unnamed_packages(rules, on_disk)
+    assert {"cli", "learning", "sim", "simulator", "bridge", "records", "report"} <= on_disk
+    # A registered backend's package has its row even in a checkout without it.
+    errors = unnamed_packages(rules, on_disk | backend_packages())
     assert errors == [], "\n".join(errors)
 
 
@@ -229,3 +232,17 @@ def test_each_third_party_engine_has_one_home() -> None:
     assert {"pyswip": "bridge", "pybullet": "sim", "trimesh": "mesh"}.items() <= owners.items()
     errors = misplaced_libraries(import_statements(), owners)
     assert errors == [], "\n".join(errors)
+
+
+def test_the_learning_loop_imports_no_simulator_backend() -> None:
+    # Whatever the table says: learning (and the sweep and reports above or beside it)
+    # reaches a physics through the boundary, creative_py.simulator, alone.
+    backends = backend_packages()
+    assert {"sim", "maniskill"} <= backends
+    known = set(modules())
+    rules = layer_rules(DOC.read_text())
+    loop = ("learning", "sweep", "report")
+    assert [p for p in loop if rules[p] & backends] == []
+    assert [where(s) for s in import_statements()
+            if package_of(s.module) in loop and s.target in known
+            and package_of(s.target) in backends] == []

@@ -25,7 +25,7 @@ RUN = [("demo", "success", "goal reached"),
 
 
 def _whys(mode):
-    keeper = ClipKeeper(mode, "/nonexistent", spec=object())
+    keeper = ClipKeeper(mode, "/nonexistent", spec=object(), new_recorder=lambda spec: None)
     return [keeper.why(*t) for t in RUN]
 
 

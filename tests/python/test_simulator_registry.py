@@ -1,0 +1,200 @@
+"""The simulator boundary's registry: a manifest's ``backend`` picks the module that runs
+its world, and every way that can go wrong is one line naming the file.
+
+A tiny backend defined here, registered under a test name, proves the dispatch (the
+learning loop's task facts come from whichever backend the manifest names); it is a
+test of the registry only. The pybullet backend itself is tested by ``tests/python/sim``
+and by every learning test.
+"""
+
+from __future__ import annotations
+
+import sys
+import types
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+
+import pytest
+from typer.testing import CliRunner
+
+from creative_py.case import BACKENDS, DEFAULT_BACKEND, BackendEntry, read_manifest
+from creative_py.cli import app
+from creative_py.simulator import (Backend, BackendUnavailable, Observation, UnknownBackend,
+                                   backend, backend_for, backend_packages)
+from creative_py.world import WorldFileError
+
+MANIFEST = """\
+id = "regcase"
+title = "A case for the registry"
+ontology = "regcase"
+trial_budget = 2
+goal = ["at(box1, shelf1)"]
+{backend}
+[roles]
+tools = "tool"
+target = "box1"
+context = "shelf1"
+
+[[skill]]
+name = "push"
+primitive = "push_at_pose"
+args = ["tool", "target", "context"]
+pose = true
+tool_action = true
+
+[pose]
+term = "push_pose"
+
+[[pose.param]]
+name = "dx"
+unit = "m"
+min = -0.1
+max = 0.2
+
+[[variant]]
+name = "easy"
+
+[[variant]]
+name = "hard"
+harder = true
+
+[demonstration]
+tool = "stick1"
+variant = "easy"
+location = 1
+steps = ["push"]
+[demonstration.pose]
+dx = 0.05
+"""
+
+
+def _folder(tmp_path, backend_line: str):
+    folder = tmp_path / "regcase"
+    folder.mkdir()
+    (folder / "case.toml").write_text(MANIFEST.format(backend=backend_line))
+    return folder
+
+
+@dataclass(frozen=True)
+class _FakeWorld:
+    manifest: object
+    catalogue: dict = field(default_factory=lambda: {"stick1": None})
+    locations: tuple = (1,)
+    variation: str = ""
+
+
+def _fake_backend_module(calls: list) -> types.ModuleType:
+    """A backend whose episodes observe one fact naming the backend and the scene."""
+    module = types.ModuleType("creative_test_fake_backend")
+
+    def load_world(manifest):
+        calls.append(("load_world", manifest.id))
+        return _FakeWorld(manifest)
+
+    @contextmanager
+    def open_episode(world, variant, location, tool, seed=0, gui=False, images_dir=None,
+                     pose_target=None, *, robot=True, record=None):
+        calls.append(("open_episode", variant, location, tool, robot))
+        yield types.SimpleNamespace(
+            observe=lambda cameras=True: Observation(
+                facts=(("fake_scene", variant, location, tool),)))
+
+    module.load_world = load_world
+    module.open_episode = open_episode
+    return module
+
+
+@pytest.fixture
+def fake(monkeypatch):
+    """Register the fake backend as ``fake_test``; return the calls it receives."""
+    calls: list = []
+    monkeypatch.setitem(sys.modules, "creative_test_fake_backend", _fake_backend_module(calls))
+    monkeypatch.setitem(BACKENDS, "fake_test", BackendEntry("creative_test_fake_backend"))
+    return calls
+
+
+def test_a_manifest_without_a_backend_runs_in_pybullet(tmp_path):
+    import creative_py.sim
+
+    m = read_manifest(_folder(tmp_path, ""))
+    assert m.backend == DEFAULT_BACKEND == "pybullet"
+    assert backend_for(m) is creative_py.sim
+    assert backend() is creative_py.sim
+    # The pybullet package has every function of the protocol.
+    members = {n for n in vars(Backend) if not n.startswith("_")}
+    assert members == {"load_world", "open_episode", "run_trial", "tool_rests", "draw_world",
+                       "apply_drawn", "display_reachable", "recorder"}
+    assert all(callable(getattr(creative_py.sim, n)) for n in members)
+
+
+def test_the_manifest_s_backend_runs_the_learning_loop_s_episodes(tmp_path, fake):
+    from creative_py.learning.trials import task_facts
+
+    m = read_manifest(_folder(tmp_path, 'backend = "fake_test"'))
+    assert m.backend == "fake_test"
+    world = backend_for(m).load_world(m)
+    assert task_facts(world, "hard", 1) == [("fake_scene", "hard", 1, "stick1")]
+    assert fake == [("load_world", "regcase"), ("open_episode", "hard", 1, "stick1", False)]
+
+
+def test_an_unknown_backend_is_a_field_error_of_the_manifest(tmp_path):
+    folder = _folder(tmp_path, 'backend = "mujoco"')
+    with pytest.raises(WorldFileError) as caught:
+        read_manifest(folder)
+    assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': must be one of "
+                                 "maniskill, pybullet, got 'mujoco'")
+    with pytest.raises(UnknownBackend) as caught:
+        backend("mujoco", folder / "case.toml")
+    assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': unknown simulator "
+                                 "backend 'mujoco'; backends: maniskill, pybullet")
+    with pytest.raises(UnknownBackend, match="^unknown simulator backend 'mujoco'; "):
+        backend("mujoco")
+
+
+def test_a_backend_that_is_not_installed_says_what_installs_it(tmp_path, monkeypatch):
+    monkeypatch.syspath_prepend(str(tmp_path))
+    (tmp_path / "creative_test_needs_lib.py").write_text("import creative_test_absent_lib\n")
+    monkeypatch.setitem(BACKENDS, "needs_lib", BackendEntry("creative_test_needs_lib",
+                                                           extra="needs_lib"))
+    monkeypatch.setitem(BACKENDS, "core_gone", BackendEntry("creative_test_gone_backend"))
+    with pytest.raises(BackendUnavailable) as caught:
+        backend("needs_lib", "w/case.toml")
+    assert str(caught.value) == (
+        "w/case.toml: field 'backend': the simulator backend 'needs_lib' needs the module "
+        "creative_test_absent_lib, which is not installed: pip install -e '.[needs_lib]'")
+    with pytest.raises(BackendUnavailable) as caught:
+        backend("core_gone")
+    assert str(caught.value) == (
+        "the simulator backend 'core_gone' needs the module creative_test_gone_backend, "
+        "which is not installed: pip install -e . (make setup)")
+
+
+def test_a_broken_import_inside_the_project_is_not_taken_for_a_missing_install(
+        tmp_path, monkeypatch):
+    monkeypatch.syspath_prepend(str(tmp_path))
+    (tmp_path / "creative_test_buggy_backend.py").write_text(
+        "import creative_py.no_such_module\n")
+    monkeypatch.setitem(BACKENDS, "buggy", BackendEntry("creative_test_buggy_backend"))
+    with pytest.raises(ModuleNotFoundError, match="creative_py.no_such_module"):
+        backend("buggy")
+
+
+def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatch):
+    runner = CliRunner()
+    folder = _folder(tmp_path, 'backend = "mujoco"')
+    result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
+    assert result.exit_code == 2
+    assert result.output.strip() == (f"error: {folder / 'case.toml'}: field 'backend': must "
+                                     "be one of maniskill, pybullet, got 'mujoco'")
+    monkeypatch.setitem(BACKENDS, "core_gone", BackendEntry("creative_test_gone_backend"))
+    (folder / "case.toml").write_text(MANIFEST.format(backend='backend = "core_gone"'))
+    result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
+    assert result.exit_code == 2
+    assert result.output.strip() == (
+        f"error: {folder / 'case.toml'}: field 'backend': the simulator backend 'core_gone' "
+        "needs the module creative_test_gone_backend, which is not installed: "
+        "pip install -e . (make setup)")
+
+
+def test_the_backend_packages_are_the_registry_s():
+    assert backend_packages() == {"sim", "maniskill"}
