@@ -151,6 +151,9 @@ class Episode:
         self.held = True
         self.grasp_offset = self.driver.tcp() - self._p(self.u.l_shape_tool)
         self.grasp_z = self.driver.tcp()[2]
+        d = self.driver
+        if not d.move(d.tcp() * [1, 1, 0] + [0, 0, float(opts["lift_to"])]):
+            return self._out_of_steps()
         return SkillOutcome("ok")
 
     def _place_at_pose(self, opts, pose) -> SkillOutcome:

@@ -32,7 +32,7 @@ VARIANT_VALUES = {"cube_dx": (0.0, 0.5)}
 """The values a variant may set, with their bounds (metres)."""
 
 PRIMITIVES = {
-    "grasp": {"approach": 0.08},
+    "grasp": {"approach": 0.08, "lift_to": 0.25},
     "place_at_pose": {"carry_z": 0.25, "settle_steps": 4},
     "pull_along_axis": {"until_x": -0.08, "step_m": 0.015, "settle_steps": 3},
 }

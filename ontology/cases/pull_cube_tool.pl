@@ -103,7 +103,7 @@ pose_domain(pull_cube_tool, pull_pose(Dx, Dy),
 geometry_default(pull_cube_tool, cube_half, 0.02, 'half the cube side (ManiSkill: 4 cm cube)').
 geometry_default(pull_cube_tool, prong_half, 0.025, 'half the prong thickness along x').
 geometry_default(pull_cube_tool, handle_half, 0.025, 'half the handle width').
-geometry_default(pull_cube_tool, clearance, 0.012, 'clearance, covering the cube turned 30 degrees').
+geometry_default(pull_cube_tool, clearance, 0.005, 'clearance between the prong or handle and the cube').
 geometry_default(pull_cube_tool, dx_max, 0.12, 'bound of Dx either side of the cube').
 geometry_default(pull_cube_tool, dy_room, 0.09, 'bound of Dy either side of the cube').
 
