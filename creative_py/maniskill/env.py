@@ -97,6 +97,10 @@ def env_class():
                     # the tool frame on the handle's axis, its lowest face on the table
                     p[..., 2] = -min(part.center[2] - part.size[2] / 2
                                      for part in self.tool_parts)
+                    # its far end where ManiSkill's tool has its own (a longer handle
+                    # reaches back towards the robot, not into the cube's region)
+                    far = max(part.center[0] + part.size[0] / 2 for part in self.tool_parts)
+                    p[..., 0] -= max(0.0, far - self.handle_length)
                 self.l_shape_tool.set_pose(Pose.create_from_pq(p=p, q=tool.q))
                 cube = self.cube.pose
                 c = cube.p.clone()

@@ -176,21 +176,30 @@ class Episode:
         tcp = np.array([x - prong_x, y, 0.0]) + self.grasp_offset
         tcp[2] = self.grasp_z
         carry = float(opts["carry_z"])
+        # Lowered beside the target, away from the prong's side, then slid sideways
+        # into place: the drooping tool is levelled by the table, not on the cube.
+        side = -1.0 if getattr(self.spec, "hook_side", "left") == "right" else 1.0
+        beside = tcp - [0.0, side * float(opts["side_clear"]), 0.0]
         ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry])
-              and d.move(tcp * [1, 1, 0] + [0, 0, carry])
-              and d.move(tcp, settle=int(opts["settle_steps"])))
+              and d.move(beside * [1, 1, 0] + [0, 0, carry])
+              and d.move(beside, settle=int(opts["settle_steps"]))
+              and d.move(tcp, settle=1, step_m=float(opts["slide_step_m"])))
         self.state["place_tcp"] = tcp
         return SkillOutcome("ok") if ok else self._out_of_steps()
 
-    def _pull_along_axis(self, opts, pose) -> SkillOutcome:
+    def _pull_to_radius(self, opts, pose) -> SkillOutcome:
+        """Draw the held tool straight towards the robot base (in xy, at the grasp's
+        height) until its prong's centre is ``radius`` metres from the base."""
         if not self.held:
             return SkillOutcome("blocked", "no tool is held (pick it up first)")
         d = self.driver
-        prong_x = self.spec.parts()[1].center[0] if len(self.spec.parts()) > 1 \
-            else self.spec.handle_length
-        end = d.tcp().copy()
+        base = self._p(self.u.agent.robot)
+        tip = self.prong_centre()
+        out = (tip - base) * [1, 1, 0]
+        dist = float(np.linalg.norm(out))
+        travel = max(0.0, dist - float(opts["radius"]))
+        end = d.tcp() - out / max(dist, 1e-9) * travel
         end[2] = self.grasp_z
-        end[0] = float(opts["until_x"]) - prong_x + self.grasp_offset[0]
         ok = d.move(end, settle=int(opts["settle_steps"]), step_m=float(opts["step_m"]))
         return SkillOutcome("ok") if ok else self._out_of_steps()
 

@@ -86,13 +86,18 @@ tool_in_use(pull_cube_tool, Tool) :-
     The cube turns up to 30 degrees about z, so its half extent in x and y reaches
     0.027 m (cube_half 0.02 plus the clearance 0.012 covers it).
 */
+%   behind: the prong's centre behind the cube (+x), its front face clear of it, within
+%   a band of 4 cm (farther back, the prong meets the cube late in the pull).
 spatial_definition(pull_cube_tool, behind(tool, target), pull_pose(Dx, _Dy),
-                   [Dx >= cube_half + prong_half + clearance, Dx =< dx_max]).
+                   [Dx >= cube_half + prong_half + clearance,
+                    Dx =< cube_half + prong_half + clearance + 2*band]).
 spatial_definition(pull_cube_tool, in_front(tool, target), pull_pose(Dx, _Dy),
                    [Dx =< -(cube_half + prong_half + clearance), Dx >= -dx_max]).
-%   beside: the handle clear of the cube on its right (-y), the prong reaching across.
+%   beside: the handle clear of the cube on its right (-y), within a band of 2 cm, so
+%   that the prong reaches across the cube.
 spatial_definition(pull_cube_tool, beside(tool, target), pull_pose(_Dx, Dy),
-                   [Dy =< -(cube_half + handle_half + clearance), Dy >= -dy_room]).
+                   [Dy =< -(cube_half + handle_half + clearance),
+                    Dy >= -(cube_half + handle_half + clearance + band)]).
 %   across: the handle clear of the cube on its left (+y).
 spatial_definition(pull_cube_tool, across(tool, target), pull_pose(_Dx, Dy),
                    [Dy >= cube_half + handle_half + clearance, Dy =< dy_room]).
@@ -104,6 +109,7 @@ geometry_default(pull_cube_tool, cube_half, 0.02, 'half the cube side (ManiSkill
 geometry_default(pull_cube_tool, prong_half, 0.025, 'half the prong thickness along x').
 geometry_default(pull_cube_tool, handle_half, 0.025, 'half the handle width').
 geometry_default(pull_cube_tool, clearance, 0.005, 'clearance between the prong or handle and the cube').
+geometry_default(pull_cube_tool, band, 0.02, 'width of the band beside the cube the handle lies in, m').
 geometry_default(pull_cube_tool, dx_max, 0.12, 'bound of Dx either side of the cube').
 geometry_default(pull_cube_tool, dy_room, 0.09, 'bound of Dy either side of the cube').
 
