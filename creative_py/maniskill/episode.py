@@ -183,13 +183,15 @@ class Episode:
         ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry])
               and d.move(beside * [1, 1, 0] + [0, 0, carry])
               and d.move(beside, settle=int(opts["settle_steps"]))
-              and d.move(tcp, settle=1, step_m=float(opts["slide_step_m"])))
+              and d.move(tcp, settle=int(opts["settle_steps"]),
+                         step_m=float(opts["slide_step_m"])))
         self.state["place_tcp"] = tcp
         return SkillOutcome("ok") if ok else self._out_of_steps()
 
     def _pull_to_radius(self, opts, pose) -> SkillOutcome:
         """Draw the held tool straight towards the robot base (in xy, at the grasp's
-        height) until its prong's centre is ``radius`` metres from the base."""
+        height) until its prong's centre is ``radius`` metres from the base, then lift
+        it ``lift_by`` metres off the table (the tool is no longer in use)."""
         if not self.held:
             return SkillOutcome("blocked", "no tool is held (pick it up first)")
         d = self.driver
@@ -200,7 +202,8 @@ class Episode:
         travel = max(0.0, dist - float(opts["radius"]))
         end = d.tcp() - out / max(dist, 1e-9) * travel
         end[2] = self.grasp_z
-        ok = d.move(end, settle=int(opts["settle_steps"]), step_m=float(opts["step_m"]))
+        ok = (d.move(end, settle=int(opts["settle_steps"]), step_m=float(opts["step_m"]))
+              and d.move(d.tcp() + [0.0, 0.0, float(opts["lift_by"])], settle=0))
         return SkillOutcome("ok") if ok else self._out_of_steps()
 
     # ------------------------------------------------------------ perception

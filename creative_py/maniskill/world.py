@@ -35,7 +35,7 @@ PRIMITIVES = {
     "grasp": {"approach": 0.08, "lift_to": 0.25},
     "place_at_pose": {"carry_z": 0.25, "settle_steps": 4, "side_clear": 0.08,
                       "slide_step_m": 0.02},
-    "pull_to_radius": {"radius": 0.55, "step_m": 0.015, "settle_steps": 3},
+    "pull_to_radius": {"radius": 0.55, "step_m": 0.02, "settle_steps": 3, "lift_by": 0.06},
 }
 """The skill primitives of this backend and their options with defaults
 (:mod:`creative_py.maniskill.episode`)."""

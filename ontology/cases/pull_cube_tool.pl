@@ -96,7 +96,7 @@ spatial_definition(pull_cube_tool, in_front(tool, target), pull_pose(Dx, _Dy),
 %   beside: the handle clear of the cube on its right (-y), within a band of 2 cm, so
 %   that the prong reaches across the cube.
 spatial_definition(pull_cube_tool, beside(tool, target), pull_pose(_Dx, Dy),
-                   [Dy =< -(cube_half + handle_half + clearance),
+                   [Dy =< -(cube_half + handle_half),
                     Dy >= -(cube_half + handle_half + clearance + band)]).
 %   across: the handle clear of the cube on its left (+y).
 spatial_definition(pull_cube_tool, across(tool, target), pull_pose(_Dx, Dy),
@@ -109,7 +109,7 @@ geometry_default(pull_cube_tool, cube_half, 0.02, 'half the cube side (ManiSkill
 geometry_default(pull_cube_tool, prong_half, 0.025, 'half the prong thickness along x').
 geometry_default(pull_cube_tool, handle_half, 0.025, 'half the handle width').
 geometry_default(pull_cube_tool, clearance, 0.005, 'clearance between the prong or handle and the cube').
-geometry_default(pull_cube_tool, band, 0.02, 'width of the band beside the cube the handle lies in, m').
+geometry_default(pull_cube_tool, band, 0.025, 'width of the band beside the cube the handle lies in, m').
 geometry_default(pull_cube_tool, dx_max, 0.12, 'bound of Dx either side of the cube').
 geometry_default(pull_cube_tool, dy_room, 0.09, 'bound of Dy either side of the cube').
 
