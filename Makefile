@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup setup-maniskill test-maniskill test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench mutate clean
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -64,6 +64,13 @@ setup-maniskill: $(MS_STAMP)  ## Install the ManiSkill3 backend (Mesa 25 Vulkan 
 
 test-maniskill: $(MS_STAMP)  ## Run the ManiSkill backend's tests (a real short episode each).
 	VK_ICD_FILENAMES=$(LAVAPIPE) $(PY) -m pytest -q -p no:randomly -n 0 tests/python/maniskill
+
+# A learning run of the ManiSkill case, then its learned model on 20 fresh ManiSkill seeds
+# (bench/results/maniskill.json) and the demonstration's tool and pose on the same seeds.
+bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate the model on 20 fresh seeds (about 4 min).
+	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
+	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
+	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 
