@@ -14,7 +14,14 @@ implements :class:`creative_py.simulator.Backend`:
 
 from __future__ import annotations
 
+import importlib.util
 from typing import Any, Optional
+
+for _package in ("mani_skill", "sapien", "torch", "gymnasium"):
+    # Imported when an episode is built (they take seconds to load); missing, the
+    # backend is not installed, which the registry reports with what installs it.
+    if importlib.util.find_spec(_package) is None:
+        raise ModuleNotFoundError(f"No module named {_package!r}", name=_package)
 
 from creative_py.maniskill.episode import Episode, open_episode, run_trial, tool_rests
 from creative_py.maniskill.world import World, load_world

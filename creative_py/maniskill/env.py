@@ -49,7 +49,7 @@ def env_class():
     import numpy as np
     import sapien
     import torch
-    from mani_skill.envs.tasks.tabletop.pull_cube_tool import PullCubeToolEnv
+    from mani_skill.envs.tasks import PullCubeToolEnv
     from mani_skill.utils.registration import register_env
     from mani_skill.utils.structs import Pose
 
