@@ -6,9 +6,9 @@ reason, numbers left out: two ``blocked`` trials whose gripper lagged by 3.1 and
 are one reason); ``--video all`` keeps every trial; ``--video none`` records nothing.
 
 Every trial's poses are kept while it runs (cheap: the backend's recorder,
-:class:`creative_py.simulator.ClipRecorder`); once the physics has given the outcome, :meth:`ClipKeeper.why` says
-whether the trial is kept, and only a kept trial is rendered and written, as
-``videos/<trial>-<phase>-<tool>.mp4`` (the demonstration is trial 0). Each entry of
+:class:`creative_py.simulator.ClipRecorder`); once the physics has given the outcome,
+:meth:`ClipKeeper.why` says whether the trial is kept, and only a kept trial is
+rendered and written, as ``videos/<trial>-<phase>-<tool>.mp4`` (the demonstration is trial 0). Each entry of
 :attr:`ClipKeeper.entries` (``summary["videos"]``) is::
 
     {"file": "videos/002-use-hook_a2.mp4", "phase": "use", "trial": 2,

@@ -24,7 +24,7 @@ from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseRe
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 from creative_py.report.page import write_html_report
-from creative_py.simulator import backend_for
+from creative_py.simulator import World, backend_for
 
 log = logging.getLogger(__name__)
 
@@ -288,7 +288,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     return run
 
 
-def _trial_runner(engine: Engine, world: Any, run: RunFolder, options: RunOptions,
+def _trial_runner(engine: Engine, world: World, run: RunFolder, options: RunOptions,
                   say: Callable[[str], None], replay: list, lines: list) -> TrialRunner:
     """Return the run's trial runner with its clip keeper (held while a resume's replay
     is checked), replaying ``replay`` (recorded at ``lines`` of ``trials.jsonl``)."""
@@ -461,7 +461,7 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, options: RunOptions,
     say(f"done in {summary['wall_time_s']['total']} s: {run.path}")
 
 
-def catalogue_ranges(engine: Engine, world: Any) -> dict[str, dict[str, tuple]]:
+def catalogue_ranges(engine: Engine, world: World) -> dict[str, dict[str, tuple]]:
     """Return ``object -> {catalogue fact -> (low, high, bounds, value)}``: the
     qualitative range of each catalogued number and the value it stands for (the
     engine's ``catalogue_ranges``; what the backend's ``draw_world`` draws inside)."""
@@ -502,7 +502,7 @@ def require_display(manifest: Optional[Any] = None) -> None:
                          f"(e.g. xvfb-run)")
 
 
-def draw_catalogue_world(engine: Engine, world: Any, seed: int,
+def draw_catalogue_world(engine: Engine, world: World, seed: int,
                          check_demonstration: bool = True) -> dict[str, Any]:
     """Draw a randomised world of ``world`` for world seed ``seed`` (its backend's
     ``draw_world``): the engine gives each catalogued number's own qualitative range
@@ -577,7 +577,7 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
                              f"{theirs} (ontology/cases/{manifest.ontology}.pl)")
 
 
-def check_catalogue(engine: Engine, world: Any) -> None:
+def check_catalogue(engine: Engine, world: World) -> None:
     """Check that every catalogued object's facts (its kind's, as the robot perceives
     them) are in the ontology's vocabulary (the catalogue predicates of the case's tool
     class); raise ValueError naming the object and the fact otherwise."""

@@ -34,7 +34,7 @@ from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
 
 if TYPE_CHECKING:
-    from creative_py.simulator import PoseTarget
+    from creative_py.simulator import PoseTarget, World
 
 
 @dataclass(frozen=True)
@@ -88,7 +88,7 @@ class DemonstrationFailed(ValueError):
     """The trainer's demonstration did not reach the goal in the physics."""
 
 
-def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = None,
+def run_demonstration(world: World, seed: int = 0, images_dir: Optional[Path] = None,
                       record: Any = None, gui: bool = False,
                       verdict: Optional[Callable[[], None]] = None, *,
                       pose_target: PoseTarget) -> Demonstration:
@@ -102,8 +102,8 @@ def run_demonstration(world: Any, seed: int = 0, images_dir: Optional[Path] = No
     :class:`creative_py.simulator.ClipRecorder`) keeps its poses; ``verdict()`` is
     called at the end of a successful demonstration, inside the episode (where its
     clip is rendered); ``gui`` shows the simulator's window. The episode is the
-    manifest's backend's (:func:`creative_py.simulator.backend_for`). ``pose_target`` gives the pose
-    skill its world target (:func:`creative_py.learning.poses.pose_resolver`).
+    manifest's backend's (:func:`creative_py.simulator.backend_for`). ``pose_target``
+    gives the pose skill its world target (:func:`creative_py.learning.poses.pose_resolver`).
     """
     from creative_py.simulator import backend_for
 

@@ -42,7 +42,7 @@ from creative_py.records.folder import RunFolder
 from creative_py.records.trial import TrialRecord, verdict_lines
 
 if TYPE_CHECKING:
-    from creative_py.simulator import PoseTarget
+    from creative_py.simulator import PoseTarget, World
 
 log = logging.getLogger(__name__)
 
@@ -79,7 +79,7 @@ def pose_numbers(pose: Term) -> tuple[float, ...]:
 _TASK_FACTS: dict[tuple, list[tuple]] = {}
 
 
-def task_facts(world: Any, variant: str, location: int) -> list[tuple]:
+def task_facts(world: World, variant: str, location: int) -> list[tuple]:
     """Return what the robot perceives of a task before acting: the catalogue of
     available objects, the apparatus and the target's pose.
 
@@ -134,7 +134,7 @@ class TrialRunner:
         Show every trial in the simulator's window (needs a display).
     """
 
-    def __init__(self, engine: Engine, world: Any, run: Optional[RunFolder], seed: int = 0,
+    def __init__(self, engine: Engine, world: World, run: Optional[RunFolder], seed: int = 0,
                  progress: Optional[Callable[[str], None]] = None,
                  replay: Sequence[TrialRecord] = (), clips: Optional[ClipKeeper] = None,
                  gui: bool = False, replay_lines: Optional[Sequence[int]] = None) -> None:

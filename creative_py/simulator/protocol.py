@@ -5,10 +5,12 @@ The protocols hold exactly what ``creative_py/learning/`` (and the command line'
 ``creative trial``) use of a simulator, no more. What is not a simulator's is not
 here: an object's catalogue facts are its tool kind's
 (:meth:`creative_py.kinds.parts.KindSpec.catalogue_facts`), the same whatever the
-physics, and every backend's episode must report exactly those. A backend is a module (or any object)
-with the :class:`Backend` functions; its worlds and episodes have the attributes and
-methods of :class:`World` and :class:`Episode`. The pybullet backend
-(:mod:`creative_py.sim`) is the reference: its behaviour is what each docstring says.
+physics, and every backend's episode must report exactly those.
+
+A backend is a module (or any object) with the :class:`Backend` functions; its worlds
+and episodes have the attributes and methods of :class:`World` and :class:`Episode`.
+The pybullet backend (:mod:`creative_py.sim`) is the reference: its behaviour is what
+each docstring says.
 
 Units, as everywhere in the project: metres, radians (degrees only where a name says
 ``_deg``), seconds, newtons, kilograms; the world frame has z up, the target's

@@ -4,11 +4,14 @@ its world, and every way that can go wrong is one line naming the file.
 A tiny backend defined here, registered under a test name, proves the dispatch (the
 learning loop's task facts come from whichever backend the manifest names); it is a
 test of the registry only. The pybullet backend itself is tested by ``tests/python/sim``
-and by every learning test.
+and by every learning test. Every installed backend is checked against the protocol's
+signatures (:func:`signature_mismatches`); one whose packages are missing is skipped
+with the error that names them.
 """
 
 from __future__ import annotations
 
+import inspect
 import sys
 import types
 from contextlib import contextmanager
@@ -19,8 +22,9 @@ from typer.testing import CliRunner
 
 from creative_py.case import BACKENDS, DEFAULT_BACKEND, BackendEntry, read_manifest
 from creative_py.cli import app
-from creative_py.simulator import (Backend, BackendUnavailable, Observation, UnknownBackend,
-                                   backend, backend_for, backend_packages)
+from creative_py.simulator import (Backend, BackendError, BackendUnavailable, Episode,
+                                   Observation, UnknownBackend, World, backend, backend_for,
+                                   backend_packages)
 from creative_py.world import WorldFileError
 
 MANIFEST = """\
@@ -198,3 +202,76 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
 
 def test_the_backend_packages_are_the_registry_s():
     assert backend_packages() == {"sim", "maniskill"}
+
+
+def _members(protocol) -> list[str]:
+    return sorted(n for n in vars(protocol) if not n.startswith("_"))
+
+
+def signature_mismatches(protocol, implementation) -> list[str]:
+    """Return what ``implementation`` (a backend module, a class) lacks of ``protocol``'s
+    methods: a missing method, or a parameter the protocol passes that it does not take
+    the same way (by position or keyword, with a default where the protocol has one).
+    Extra parameters with defaults are the implementation's own."""
+    errors = []
+    for name in _members(protocol):
+        want = getattr(protocol, name)
+        if isinstance(want, property):
+            if not hasattr(implementation, name):
+                errors.append(f"{name}: missing")
+            continue
+        have = getattr(implementation, name, None)
+        if not callable(have):
+            errors.append(f"{name}: missing")
+            continue
+        wanted = list(inspect.signature(want).parameters.values())[1:]  # self
+        params = inspect.signature(have).parameters
+        if inspect.isclass(implementation):
+            params = dict(list(params.items())[1:])
+        for p in wanted:
+            got = params.get(p.name)
+            if got is None or got.kind != p.kind:
+                errors.append(f"{name}: parameter {p.name} ({p.kind.description}) missing")
+            elif p.default is not p.empty and got.default is got.empty:
+                errors.append(f"{name}: parameter {p.name} needs a default")
+        extra = [q for q in params.values() if q.name not in {p.name for p in wanted}
+                 and q.default is q.empty and q.kind not in (q.VAR_POSITIONAL, q.VAR_KEYWORD)]
+        errors += [f"{name}: parameter {q.name} the protocol does not pass" for q in extra]
+    return errors
+
+
+def test_the_checker_finds_a_missing_method_and_a_mismatched_parameter():
+    def module_of_protocol(name: str) -> types.ModuleType:
+        module = types.ModuleType(name)
+        for n in _members(Backend):
+            setattr(module, n, getattr(Backend, n).__get__(module))  # the same signatures
+        return module
+
+    assert signature_mismatches(Backend, module_of_protocol("good_backend")) == []
+    bad = module_of_protocol("bad_backend")
+    del bad.recorder
+    bad.tool_rests = lambda world, name: True
+    bad.apply_drawn = lambda world, drawn, strict: world
+    assert signature_mismatches(Backend, bad) == [
+        "apply_drawn: parameter strict the protocol does not pass",
+        "recorder: missing",
+        "tool_rests: parameter tool (positional or keyword) missing",
+        "tool_rests: parameter name the protocol does not pass"]
+
+
+@pytest.mark.parametrize("name", sorted(BACKENDS))
+def test_every_installed_backend_has_the_protocol_s_functions(name):
+    try:
+        module = backend(name)
+    except BackendError as exc:
+        pytest.skip(str(exc))
+    assert signature_mismatches(Backend, module) == []
+
+
+def test_the_pybullet_world_and_episode_have_the_protocol_s_members():
+    from creative_py.case import get_case
+    from creative_py.sim import Episode as PybulletEpisode
+
+    world = backend("pybullet").load_world(get_case("hook"))
+    assert signature_mismatches(World, world) == []
+    assert signature_mismatches(Episode, PybulletEpisode) == []
