@@ -78,3 +78,13 @@ def test_unknown_variant_value_names_the_file(tmp_path):
     (folder / "case.toml").write_text(text)
     with pytest.raises(WorldFileError, match=r"case.toml: variant 'far_cube': set: unknown"):
         load_world(read_manifest(folder))
+
+
+def test_world_and_episode_have_the_protocol_s_members(world):
+    """The ManiSkill world and episode offer what the learning loop uses of any backend."""
+    from creative_py.maniskill import Episode as ManiSkillEpisode
+    from creative_py.simulator import Episode, World
+    from tests.python.test_simulator_registry import signature_mismatches
+
+    assert signature_mismatches(World, world) == []
+    assert signature_mismatches(Episode, ManiSkillEpisode) == []
