@@ -12,6 +12,9 @@ size; the held tool's ``tip_position/4``, ``tool_roll/2`` and ``tool_axis_y/2`` 
 the tool actor's pose and its spec; ``reach_zone/4`` of the goal region from the robot
 base's pose and ``tasks.toml``'s radius; every object's catalogue facts from its kind).
 
+While the tool acts, the contact load on it is read from SAPIEN's contacts
+(:mod:`creative_py.maniskill.loads`), for the strength check of a created tool.
+
 The goal verdict is ManiSkill's ``env.evaluate()["success"]`` and nothing else; the
 Verdict records the cube's distance to the base in xy and ManiSkill's own
 ``cube_distance`` and ``cube_progress``. Steps are ManiSkill control steps
@@ -92,6 +95,7 @@ class Episode:
         self.grasp_offset = np.zeros(3)
         self.grasp_z = 0.0
         self.state: dict[str, Any] = {}
+        self.tool_load: Optional[dict[str, Any]] = None
         self.with_robot = robot
 
     # ----------------------------------------------------------------- state
@@ -135,7 +139,18 @@ class Episode:
             pose = tuple(float(v) for v in pose)
             if not all(math.isfinite(v) for v in pose):
                 raise ValueError(f"pose numbers must be finite, got {pose}")
-        res = getattr(self, "_" + primitive)(opts, pose)
+        monitor = None
+        if binding.tool_action:
+            from creative_py.maniskill.loads import LoadMonitor
+
+            monitor = LoadMonitor(self)  # the contact load on the tool while it acts
+            self.driver.on_step = monitor.sample
+        try:
+            res = getattr(self, "_" + primitive)(opts, pose)
+        finally:
+            if monitor is not None:
+                self.driver.on_step = None
+                self.tool_load = monitor.result()
         if not res.ok:
             return SkillOutcome(res.status, f"{name}: {res.reason}", res.stop)
         return res
@@ -319,7 +334,9 @@ def run_trial(world: World, tool: str, variant: str, location: int,
             case=m.id, object=tool, variant=variant, location=int(location), pose=tuple(pose),
             outcome=outcome, reason=reason, perceived_final=None, true_final=ep.truth(),
             sim_time_s=ep.sim_time(), wall_time_s=wall, render_time_s=0.0, steps=ep.steps,
-            seed=seed, facts_before=tuple(facts), verdict=data)
+            seed=seed, max_tool_force_n=(ep.tool_load or {}).get("max_force_n", 0.0)
+            if acted else 0.0, tool_load=ep.tool_load if acted else None,
+            facts_before=tuple(facts), verdict=data)
 
 
 def _outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:

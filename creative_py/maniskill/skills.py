@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
-from typing import Any, Sequence
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
@@ -54,6 +54,8 @@ class Driver:
     steps: int = 0
     gripper: float = OPEN
     yaw: float = 0.0
+    on_step: Optional[Callable[[], None]] = None
+    """Called after every control step (the tool action's load monitor), or None."""
 
     def __post_init__(self) -> None:
         u = self.env.unwrapped
@@ -67,6 +69,8 @@ class Driver:
         action = np.concatenate([target - self.base, down_rotvec(self.yaw), [self.gripper]])
         self.env.step(action.astype(np.float32))
         self.steps += 1
+        if self.on_step is not None:
+            self.on_step()
 
     def move(self, target: Sequence[float], settle: int = 1,
              step_m: float | None = None) -> bool:

@@ -40,6 +40,8 @@ def test_demonstration_succeeds_by_maniskills_evaluate(world):
     assert r.verdict["measures"]["evaluate_success"] is True
     assert 0 < r.steps <= world.max_steps
     assert r.verdict["value"] < 0.6
+    # the load on the tool while it pulled, read from SAPIEN's contacts
+    assert r.max_tool_force_n > 0 and r.tool_load["contact_steps"] > 0
 
 
 def test_prong_in_front_of_the_cube_fails(world):
