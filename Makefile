@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -40,6 +40,37 @@ $(STAMP): pyproject.toml | /usr/bin/swipl
 	touch $(STAMP)
 
 setup: $(STAMP)  ## Install SWI-Prolog, OpenSCAD, PrusaSlicer, ffmpeg, Chromium and the Python environment.
+
+# The ManiSkill3 backend (optional): Mesa 25's Vulkan drivers from bookworm-backports
+# (SAPIEN needs a Vulkan device even without rendering; Debian 12's Mesa 22 lavapipe lacks
+# an extension it asks for), then the maniskill extra into the project's environment.
+# Idempotent: the backports source is written once, pip skips what is installed.
+BACKPORTS := /etc/apt/sources.list.d/bookworm-backports.sources
+LAVAPIPE  := /usr/share/vulkan/icd.d/lvp_icd.json
+MS_STAMP  := $(VENV)/.maniskill
+
+$(BACKPORTS):
+	printf 'Types: deb\nURIs: http://deb.debian.org/debian\nSuites: bookworm-backports\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' | $(SUDO) tee $@ >/dev/null
+
+$(MS_STAMP): pyproject.toml $(STAMP) | $(BACKPORTS)
+	@dpkg-query -W -f='$${Version}' mesa-vulkan-drivers 2>/dev/null | grep -q '^2[5-9]' || \
+	  ($(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install \
+	  -y -qq -t bookworm-backports mesa-vulkan-drivers libvulkan1 >/dev/null)
+	$(PY) -m pip install -q torch==2.13.0
+	$(PY) -m pip install -q -e '.[test,maniskill]'
+	touch $(MS_STAMP)
+
+setup-maniskill: $(MS_STAMP)  ## Install the ManiSkill3 backend (Mesa 25 Vulkan on the CPU, mani-skill, CPU torch).
+
+test-maniskill: $(MS_STAMP)  ## Run the ManiSkill backend's tests (a real short episode each).
+	VK_ICD_FILENAMES=$(LAVAPIPE) $(PY) -m pytest -q -p no:randomly -n 0 tests/python/maniskill
+
+# A learning run of the ManiSkill case, then its learned model on 20 fresh ManiSkill seeds
+# (bench/results/maniskill.json) and the demonstration's tool and pose on the same seeds.
+bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate the model on 20 fresh seeds (about 4 min).
+	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
+	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
+	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 

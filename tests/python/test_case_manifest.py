@@ -105,10 +105,15 @@ def test_every_catalogue_is_described_in_the_ontology_s_vocabulary():
     from creative_py.bridge import Engine
     from creative_py.learning.run import check_catalogue
     from creative_py.sim import load_world
+    from creative_py.simulator import BackendUnavailable, backend_for
 
     engine = Engine.instance()
     for manifest in load_cases().values():
-        check_catalogue(engine, load_world(manifest))
+        try:
+            sim = backend_for(manifest)
+        except BackendUnavailable:
+            continue  # an optional backend (the maniskill extra) is not installed here
+        check_catalogue(engine, sim.load_world(manifest))
     wedge = load_world(get_case("wedge"))
     hook_tools = load_world(get_case("hook")).catalogue
     mixed = wedge.with_tool(hook_tools["hook_a2"])

@@ -115,6 +115,8 @@ def test_a_number_outside_its_bounds_is_refused_naming_file_and_field(
 
 def test_the_shipped_worlds_lie_inside_every_bound():
     for case, manifest in load_cases().items():
+        if manifest.backend != "pybullet":
+            continue  # these bounds are the pybullet world files' (scene.toml, physics.toml)
         world = load_world(manifest)
         assert world.locations, case
 

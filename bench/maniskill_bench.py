@@ -1,0 +1,112 @@
+"""Evaluate a tool and pose of a ManiSkill case on fresh ManiSkill seeds.
+
+    python bench/maniskill_bench.py CASE [--run RUN_FOLDER] [--seeds 1000:1020]
+
+Each seed is ManiSkill's seeded initial state (``env.reset(seed=...)``), none of them a
+learning location. Without ``--run`` the demonstration's tool and pose are evaluated;
+with it, the learned model's choice (the tool and pose of the run's evaluation trials).
+The pose's world target comes from the engine's pose solution, the verdict from
+ManiSkill's ``evaluate()["success"]``. Each seed is also tried without a tool (a bare-finger
+pull: the closed gripper lowered 4.5 cm behind the cube's centre, then drawn towards the
+robot base): a seed solved that way needs no tool, and the success rate is given both
+over all seeds and over the seeds that need the tool. Writes ``bench/results/maniskill.json``: per
+seed the outcome, ManiSkill's measures and the control steps; the success rate; the
+trials and simulated environment steps the run took to learn (with ``--run``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from dataclasses import replace
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+
+
+def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
+    """Return whether ManiSkill's evaluate() says success after a bare-finger pull: the
+    closed gripper goes down 4.5 cm behind the cube (away from the robot) and is drawn
+    straight towards the robot base until it is 0.45 m from it (same step budget)."""
+    import numpy as np
+
+    from creative_py.maniskill.skills import CLOSED
+
+    with sim.open_episode(world, variant, location, tool) as ep:
+        d = ep.driver
+        cube = next(f for f in ep.observe().facts if f[0] == "pose")
+        base = np.array([f for f in ep.observe().facts if f[0] == "reach_zone"][0][2:4])
+        behind = np.array([cube[2] + 0.045, cube[3], 0.02])
+        out = behind[:2] - base
+        end = np.array([*(base + out / np.linalg.norm(out) * 0.45), 0.02])
+        (d.set_gripper(CLOSED, 2) and d.move(behind + [0, 0, 0.08])
+         and d.move(behind, settle=2) and d.move(end, settle=3, step_m=0.02))
+        return ep.goal_reached()
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("case")
+    ap.add_argument("--run", type=Path, default=None)
+    ap.add_argument("--seeds", default="1000:1020")
+    ap.add_argument("--out", type=Path, default=HERE / "results" / "maniskill.json")
+    a = ap.parse_args()
+
+    from creative_py.bridge import Engine
+    from creative_py.case import get_case
+    from creative_py.learning.poses import pose_resolver
+    from creative_py.simulator import backend_for
+
+    manifest = get_case(a.case)
+    sim = backend_for(manifest)
+    world = sim.load_world(manifest)
+    lo, hi = (int(v) for v in a.seeds.split(":"))
+    seeds = list(range(lo, hi))
+    learning = None
+    tool, pose = manifest.demonstration.tool, tuple(manifest.demonstration.pose)
+    source = "demonstration"
+    if a.run is not None:
+        recs = [json.loads(line) for line in (a.run / "trials.jsonl").read_text().splitlines()]
+        ev = [r for r in recs if r["phase"] == "eval"]
+        if not ev:
+            raise SystemExit(f"error: {a.run}: no evaluation trial in trials.jsonl")
+        tool = ev[0]["tool"]
+        pose = tuple(ev[0]["pose"][n] for n in manifest.pose_names)
+        source = f"learned model of {a.run.name}"
+        use = [r for r in recs if r["phase"] == "use"]
+        learning = {"trials": len(use), "demonstrations": 1,
+                    "env_steps": sum(int(r["verdict"]["measures"]["control_steps"]) for r in use)}
+    engine = Engine.instance()
+    poses = pose_resolver(engine, manifest)
+    fresh = replace(world, seeds=tuple(seeds))
+    rows = []
+    t0 = time.perf_counter()
+    for i, seed in enumerate(seeds, 1):
+        r = sim.run_trial(fresh, tool, manifest.demonstration.variant, i, pose,
+                          pose_target=poses)
+        finger = bare_finger(sim, fresh, manifest.demonstration.variant, i, tool)
+        rows.append({"seed": seed, "outcome": r.outcome, "steps": r.steps,
+                     "cube_distance_to_base_m": r.verdict["value"],
+                     "evaluate_success": r.verdict["measures"]["evaluate_success"],
+                     "bare_finger_success": finger})
+        print(seed, r.outcome, r.steps, "bare finger", finger, flush=True)
+    ok = sum(r["evaluate_success"] for r in rows)
+    need = [r for r in rows if not r["bare_finger_success"]]
+    ok_need = sum(r["evaluate_success"] for r in need)
+    out = {"case": manifest.id, "backend": manifest.backend, "source": source,
+           "tool": tool, "pose": dict(zip(manifest.pose_names, pose)),
+           "variant": manifest.demonstration.variant, "seeds": seeds,
+           "successes": ok, "success_rate": ok / len(rows),
+           "seeds_needing_tool": len(need), "successes_needing_tool": ok_need,
+           "success_rate_needing_tool": ok_need / len(need) if need else None,
+           "env_steps": sum(r["steps"] for r in rows), "learning": learning,
+           "wall_s": round(time.perf_counter() - t0, 1), "trials": rows}
+    a.out.parent.mkdir(parents=True, exist_ok=True)
+    a.out.write_text(json.dumps(out, indent=1) + "\n")
+    print(f"{ok}/{len(rows)} seeds succeed ({source}), {ok_need}/{len(need)} of those a "
+          f"bare finger does not solve; {a.out}")
+
+
+if __name__ == "__main__":
+    main()
