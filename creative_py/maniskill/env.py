@@ -18,6 +18,7 @@ at Mesa's lavapipe when the variable is unset.
 from __future__ import annotations
 
 import glob
+import logging
 import os
 from typing import Any
 
@@ -49,9 +50,15 @@ def env_class():
     import numpy as np
     import sapien
     import torch
+    from mani_skill import logger as maniskill_logger
     from mani_skill.envs.tasks import PullCubeToolEnv
     from mani_skill.utils.registration import register_env
     from mani_skill.utils.structs import Pose
+
+    # ManiSkill warns at every environment it builds that no initial pose was set for the
+    # builders (the episode's initialisation sets them) and that CUDA is missing (the CPU
+    # backend is meant): a run printed 7 such lines a trial. Its errors still show.
+    maniskill_logger.setLevel(logging.ERROR)
 
     class CataloguePullCubeToolEnv(PullCubeToolEnv):
         """``PullCubeTool-v1`` whose L-tool is built from ``tool_parts`` and whose cube
