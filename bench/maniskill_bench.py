@@ -45,6 +45,33 @@ def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
         return ep.goal_reached()
 
 
+def run_figures(run: Path, recs: list[dict]) -> dict:
+    """What the README says of the learning run ``run`` (its ``summary.json`` and
+    ``trials.jsonl``): tool-use trials and their control steps, the stop, h_g, the tool
+    the model chose with its evaluation, and the creation phase (catalogued objects
+    tried, the tools made with their sizes, outcomes and strength)."""
+    summary = json.loads((run / "summary.json").read_text())
+    use = [r for r in recs if r["phase"] == "use"]
+    create = summary.get("create") or {}
+    made = [{"name": t["name"], "replaced": t["replaced"], "instance": t["instance"],
+             "dims": t["dims"], "trial_outcome": t.get("trial_outcome"),
+             "eval_outcomes": t.get("eval_outcomes"),
+             "strength": {k: (t.get("strength") or {}).get(k)
+                          for k in ("force_n", "safety_factor", "verdict")}}
+            for t in create.get("created_tools", [])]
+    return {"run": run.name, "trials": len(use), "demonstrations": 1,
+            "budget": summary.get("trial_budget"), "strategy": summary["use"]["strategy"],
+            "stop": summary["use"]["stop"],
+            "env_steps": sum(int(r["verdict"]["measures"]["control_steps"]) for r in use),
+            "hg": summary["hypotheses"]["hg"],
+            "eval": summary["eval"]["outcomes"],
+            "wall_time_s": summary.get("wall_time_s"),
+            "create": {"variant": create.get("variant"), "trials": create.get("trials"),
+                       "sequence": [{"tool": r["tool"], "outcome": r["outcome"]}
+                                    for r in recs if r["phase"] == "create"],
+                       "solved_by": create.get("solved_by"), "made": made}}
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("case")
@@ -74,9 +101,7 @@ def main() -> None:
         tool = ev[0]["tool"]
         pose = tuple(ev[0]["pose"][n] for n in manifest.pose_names)
         source = f"learned model of {a.run.name}"
-        use = [r for r in recs if r["phase"] == "use"]
-        learning = {"trials": len(use), "demonstrations": 1,
-                    "env_steps": sum(int(r["verdict"]["measures"]["control_steps"]) for r in use)}
+        learning = run_figures(a.run, recs)
     engine = Engine.instance()
     poses = pose_resolver(engine, manifest)
     fresh = replace(world, seeds=tuple(seeds))

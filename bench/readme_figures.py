@@ -443,6 +443,71 @@ TABLED = ("hook", "wedge", "rake")
 a paragraph of its own (``other-cases``)."""
 
 
+def _hg_body(hg: str) -> str:
+    """The body literals of an h_g clause, the tool variable shown as ``T``."""
+    body = hg.split(":-", 1)[1].strip()
+    return ", ".join(f"`{lit}`" for lit in _top_level(body)).replace("_G3", "T").replace(
+        "_G4", "C")
+
+
+def _made_tool(t: dict[str, Any]) -> str:
+    """A tool made in a ManiSkill run: its sizes and what the physics said of it."""
+    d = t["dims"]
+    text = (f"`{t['name']}` ({d['handle_length']:.2f} m handle, {d['hook_side']} prong at "
+            f"{d['hook_angle_deg']} degrees; `{t['instance'].replace('_G0', 'T')}` for "
+            f"`{t['replaced'].replace('_G0', 'T')}`): {t['trial_outcome']}")
+    st = t["strength"]
+    if st.get("verdict"):
+        text += (f", strength {st['verdict']} at {st['force_n']:.1f} N (safety factor "
+                 f"{st['safety_factor']:,.0f})")
+    if t["eval_outcomes"]:
+        ok = t["eval_outcomes"].count("success")
+        text += f", evaluation {ok} of {len(t['eval_outcomes'])}"
+    return text
+
+
+@block("maniskill")
+def maniskill() -> str:
+    """The ManiSkill case's learning run and its learned model on fresh ManiSkill seeds
+    against the demonstration's tool and pose (maniskill.json,
+    maniskill_demonstration.json; ``make bench-maniskill``)."""
+    m, d = result("maniskill"), result("maniskill_demonstration")
+    lr = m["learning"]
+    ok = lr["eval"].count("success")
+    cr = lr["create"]
+    tried = ", ".join(f"`{c['tool']}` {c['outcome']}" for c in cr["sequence"])
+    made = "; ".join(_made_tool(t) for t in cr["made"])
+    seeds = m["seeds"]
+    need = m["seeds_needing_tool"]
+    lines = [
+        f"`make run CASE=pull_cube_tool` (seed 0, run `{lr['run']}`, "
+        f"{lr['wall_time_s']['total']:.0f} s of wall time): the demonstration with "
+        f"ManiSkill's tool, then {lr['trials']} tool-use trials ({lr['strategy']}, stop "
+        f"{lr['stop']}, budget {lr['budget']}; {lr['env_steps']} ManiSkill control steps "
+        f"besides the demonstration's). h_g: {_hg_body(lr['hg'])}; the plan takes "
+        f"`{m['tool']}`, evaluation {ok} of {len(lr['eval'])}. In `{cr['variant']}`, "
+        f"{cr['trials']} creation trials ({tried}); the tools made: {made}.",
+        "",
+        f"`make bench-maniskill` (`bench/maniskill_bench.py`, {len(seeds)} fresh seeds "
+        f"{seeds[0]}-{seeds[-1]}, none a learning location; each seed is also tried with a "
+        f"bare-finger pull, and {len(seeds) - need} of the {len(seeds)} need no tool that way):",
+        "",
+        f"| evaluated on seeds {seeds[0]}-{seeds[-1]} | all {len(seeds)} seeds | "
+        f"the {need} that need a tool | control steps |",
+        "|---|---|---|---|",
+    ]
+    for label, r, name in (("the learned model", m, "maniskill"),
+                           ("the demonstration's tool and pose", d,
+                            "maniskill_demonstration")):
+        lines.append(f"| {label} (`{r['tool']}`, `bench/results/{name}.json`) | "
+                     f"{r['successes']} / {len(r['seeds'])} | {r['successes_needing_tool']} / "
+                     f"{r['seeds_needing_tool']} | {r['env_steps']} |")
+    lines += ["", f"So the learner reached a model that succeeds on {m['successes']} of "
+              f"{len(seeds)} fresh seeds after one demonstration and {lr['trials']} trials "
+              f"({lr['env_steps']} simulated control steps)."]
+    return "\n".join(lines)
+
+
 def _other_cases() -> list[str]:
     """The cases of release_runs.json outside :data:`TABLED`."""
     cases = sorted({k.rsplit("-", 1)[0] for k in result("release_runs")["runs"]})
