@@ -54,6 +54,14 @@ EQUIVALENT = {
         "without ':-' the body is '', and split_top_level('') is [] anyway",
     "creative_py.report.contents.x_relative_inside__mutmut_4":
         "root / an absolute path is that absolute path",
+    "creative_py.report.table.x_natural_width__mutmut_3":
+        "a console 100001 columns wide measures a table as one 100000 wide does",
+    **{f"creative_py.report.table.x_trial_blocks__mutmut_{n}":
+       "the outcome style's default: a trial record's outcome is one of the five styled "
+       "ones (records.trial refuses any other, read or built in code)"
+       for n in (32, 34, 35, 36)},
+    "creative_py.report.headline.x_headline__mutmut_178":
+        "with solved None the mapping's .get(None) is None, as the else branch",
 }
 """Mutants that no test can kill: the code means the same with them."""
 

@@ -30,8 +30,8 @@ FULL = {
         "solved_by": "created", "success": "hook_new", "trials": 2,
         "eval": ["success", "failure", "success"],
         "created_tools": [
-            {"name": "hook_new", "mass_kg": 0.0123,
-             "print": {"print_time_s": 5400, "filament_g": 12.34, "filament_mm": 4100,
+            {"name": "hook_new", "mass_kg": 0.2,
+             "print": {"print_time_s": 5400, "filament_g": 12.34, "filament_mm": 12960,
                        "pieces": [{}, {}]}},
             {"name": "hook_x", "print": {"print_time_s": 30}}, "junk"]},
     "wall_time_s": {"total": 83.456, "use": 40, "create": 43.456},
@@ -53,8 +53,8 @@ def test_every_sentence_and_figure_of_a_full_run():
         "trial was not run; catalogued objects tried first: stick (failure), rake_a1 "
         "(blocked); solved by the created hook_new after 2 creation trials; the created "
         "tool's evaluation: 2 of 3 trials succeeded.",
-        "Printing hook_new: 2 pieces, 1 h 30 min of printing, 12.3 g of filament (4.1 m); "
-        "mass 12.3 g.",
+        "Printing hook_new: 2 pieces, 1 h 30 min of printing, 12.3 g of filament (13.0 m); "
+        "mass 200.0 g.",
         "Wall time 83.456 s (use 40 s, create 43.456 s).",
     ]
     assert h.figures == [

@@ -159,3 +159,35 @@ def test_print_figures_dimensions_and_json_values_exact():
     assert _plain({"a": [1, "b"], "c": {"d": 2}}) == "a=1, b, c=d=2"
     assert _plain([{"x": 1}, {"y": [2]}]) == "[x=1]; [y=2]"
     assert _plain(["p", "q"]) == "p, q" and _plain([]) == "" and _plain(3.5) == "3.5"
+
+
+def test_text_is_printed_as_written_and_the_path_in_italics(tmp_path):
+    """No Rich markup or highlighting in the headline and summary lines (a plan may hold
+    brackets, a figure is not coloured); the narrow layout's path line is italic."""
+    run = _folder(tmp_path)
+    summary = json.loads((run / "summary.json").read_text())
+    summary.update({"plan": "[bold]p[/bold] 42", "wall_time_s": {"total": 5},
+                    "pddl": {"use": {"plan": []}, "create": {"status": "none"}},
+                    "videos": [{"file": "videos/gone.mp4"},
+                               {"file": "videos/use-1.mp4", "why": "x"}]})
+    (run / "summary.json").write_text(json.dumps(summary))
+    (run / "trials.jsonl").write_text(json.dumps(TRIALS[1]) + "\n")
+    out = io.StringIO()
+    print_report(read_run(run), Console(file=out, force_terminal=True,
+                                        color_system="standard"), width=60)
+    lines = out.getvalue().splitlines()
+    assert lines[:4] == [HEADLINE, "Wall time 5 s.", "", f"\x1b[3m{run}\x1b[0m"]
+    assert lines[-10:-1] == [
+        "hs: h :- a, b", "hg: h :- a", "plan: [bold]p[/bold] 42", "pddl use: ?",
+        "pddl create: none",
+        "created hook_new: hook_a2 -> hook_new; handle_length 400.0 ",
+        "mm (success; strength pass, 13.8 MPa, safety factor 3.61)",
+        "print hook_new: 0 pieces", "video videos/gone.mp4 (missing)"]
+    assert lines[-1] == "video videos/use-1.mp4:  (kept as x)"
+
+
+def test_a_block_s_labels_never_wrap_and_its_values_fold(tmp_path):
+    grid = trial_blocks(read_run(_folder(tmp_path))).renderables[1]
+    assert [(c.no_wrap, c.overflow) for c in grid.columns] == [(True, "ellipsis"),
+                                                               (False, "fold")]
+    assert grid.padding == (0, 1, 0, 1)
