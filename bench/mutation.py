@@ -60,6 +60,10 @@ EQUIVALENT = {
        "the outcome style's default: a trial record's outcome is one of the five styled "
        "ones (records.trial refuses any other, read or built in code)"
        for n in (32, 34, 35, 36)},
+    "creative_py.report.table.x_print_report__mutmut_33":
+        "Rich reads style names in any case: 'ITALIC' is 'italic'",
+    "creative_py.report.progress.xǁRunProgressǁ__init____mutmut_25":
+        "4 refreshes a second is rich.live.Live's default",
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
 }

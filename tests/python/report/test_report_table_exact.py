@@ -167,6 +167,7 @@ def test_text_is_printed_as_written_and_the_path_in_italics(tmp_path):
     run = _folder(tmp_path)
     summary = json.loads((run / "summary.json").read_text())
     summary.update({"plan": "[bold]p[/bold] 42", "wall_time_s": {"total": 5},
+                    "demonstration": {"tool": "[bold]t[/bold]"},
                     "pddl": {"use": {"plan": []}, "create": {"status": "none"}},
                     "videos": [{"file": "videos/gone.mp4"},
                                {"file": "videos/use-1.mp4", "why": "x"}]})
@@ -176,7 +177,8 @@ def test_text_is_printed_as_written_and_the_path_in_italics(tmp_path):
     print_report(read_run(run), Console(file=out, force_terminal=True,
                                         color_system="standard"), width=60)
     lines = out.getvalue().splitlines()
-    assert lines[:4] == [HEADLINE, "Wall time 5 s.", "", f"\x1b[3m{run}\x1b[0m"]
+    assert lines[:5] == ["One demonstration, with [bold]t[/bold].", HEADLINE,
+                         "Wall time 5 s.", "", f"\x1b[3m{run}\x1b[0m"]
     assert lines[-10:-1] == [
         "hs: h :- a, b", "hg: h :- a", "plan: [bold]p[/bold] 42", "pddl use: ?",
         "pddl create: none",
