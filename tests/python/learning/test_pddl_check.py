@@ -8,6 +8,7 @@ problem.pddl and its own plan.  unified-planning then solves and validates.
 
 from __future__ import annotations
 
+import logging
 import re
 import shutil
 import subprocess
@@ -208,3 +209,33 @@ def test_check_files_records_an_error_and_never_raises(door, caplog):
     assert step_text(("pull_out", ["hook_a2", "cube1", "tube1"])) == \
         "(pull_out hook_a2 cube1 tube1)"
     assert step_text(("stop", [])) == "(stop)"
+
+
+def _infos(caplog) -> list[str]:
+    return [r.getMessage() for r in caplog.records
+            if r.name == "creative_py.learning.pddl_check" and r.levelname == "INFO"]
+
+
+def test_solve_logs_its_answer_and_validate_plan_says_why_not(door, caplog):
+    caplog.set_level(logging.INFO, logger="creative_py.learning.pddl_check")
+    domain, problem = door
+    assert solve(domain, problem) == [("unlock", ["d1"]), ("open_door", ["d1"])]
+    assert _infos(caplog) == [f"{problem}: pyperplan found 2 steps"]
+    assert validate_plan(domain, problem, [("open_door", ["d1"])]) == (
+        False, "inapplicable_action: [INFO] Preconditions [(not locked(d1))] of 1-th action "
+               "instance open_door(d1) are not satisfied.")
+    assert validate_plan(domain, problem, [("unlock", ["d1"])]) == (
+        False, "unsatisfied_goals: [INFO] Goals [open(d1)] are not satisfied by the plan.")
+    assert validate_plan(domain, problem, ["x"]) == (
+        False, "plan step 1: 'x' is not (action_name, [args])")
+    assert validate_plan(domain, problem, [("unlock", ["d1"]), ("unlock", ["d1", "d1"])]) == (
+        False, "plan step 2: unlock takes 1 arguments, got 2")
+    assert validate_plan(domain, problem, [("nope", ["d1"])]) == (
+        False, "plan step 1: unknown action 'nope'")
+    assert validate_plan(domain, problem, [("unlock", ["zz"])]) == (
+        False, "plan step 1: unknown object 'zz'")
+    problem.write_text(NEGATIVE_PROBLEM.replace("(:goal (and (open d1)))",
+                                                "(:goal (and (open d1) (locked d1)))"))
+    caplog.clear()
+    assert solve(domain, problem) is None
+    assert _infos(caplog) == [f"{problem}: no plan (UNSOLVABLE_INCOMPLETELY)"]
