@@ -64,6 +64,21 @@ EQUIVALENT = {
         "Rich reads style names in any case: 'ITALIC' is 'italic'",
     "creative_py.report.progress.xǁRunProgressǁ__init____mutmut_25":
         "4 refreshes a second is rich.live.Live's default",
+    "creative_py.report.plot.x_plot_trials__mutmut_181":
+        "fontsize None is matplotlib's font.size, 10, the size asked",
+    "creative_py.report.plot.x_plot_trials__mutmut_204":
+        "plt.close(None) closes the current figure, the one just saved",
+    **{f"creative_py.report.plot.x_plot_trials__mutmut_{n}":
+       "matplotlib reads backend names in any case" for n in (4, 5)},
+    **{f"creative_py.report.plot.x_plot_trials__mutmut_{n}":
+       "a patch's default colour is C0, tab:blue, and colour names are read in any case"
+       for n in (83, 88, 98)},
+    **{f"creative_py.report.plot.x_plot_trials__mutmut_{n}":
+       "the outcome marker's default: a trial record's outcome is one of the five "
+       "(records.trial refuses any other)" for n in (44, 46)},
+    **{f"creative_py.report.plot.x_trial_labels__mutmut_{n}":
+       "the phase tag's default: a trial record's phase is use, create or eval "
+       "(records.trial refuses any other)" for n in (10, 11, 12)},
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
 }

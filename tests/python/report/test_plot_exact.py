@@ -114,3 +114,9 @@ def test_labels_and_counts_exact():
         "create": {"trials": 3, "successes": 1,
                    "outcomes": ["blocked", "unreachable", "success"]},
         "eval": {"trials": 1, "successes": 0, "outcomes": ["invalid"]}}
+
+
+def test_a_run_without_trials_is_an_empty_plot(tmp_path, saved):
+    plot_trials([], tmp_path / "e.png")
+    (fig, _), = saved
+    assert fig.get_size_inches() == pytest.approx([6.0, 1.6])
