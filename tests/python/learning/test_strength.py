@@ -8,14 +8,15 @@ Algorithm 2 sizes it for the long tube, whose context the simulator perceives.
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import pytest
 
-from creative_py.bridge import Engine
+from creative_py.bridge import Compound, Engine
 from creative_py.learning.manufacture import default_context, parse_spec, size_tool
-from creative_py.learning.strength import (cantilever_stress, check_strength,
-                                           rejected, required_square_width, thicker_dims,
-                                           thickening_fact, write_strength)
+from creative_py.learning.strength import (StrengthCheck, cantilever_stress,
+                                           check_strength, rejected, required_square_width,
+                                           thicker_dims, thickening_fact, write_strength)
 from creative_py.mesh.export import read_tool_files, write_tool_files
 from creative_py.mesh.spec import MIN_SAFETY_FACTOR, PLA_STRENGTH
 from creative_py.kinds import spec_from_dict
@@ -177,3 +178,70 @@ def test_the_figures_go_into_the_tool_json(tmp_path):
     assert data["strength"]["verdict"] == "pass"
     assert data["strength"]["lever_arm_m"] == pytest.approx(0.15)
     assert read_tool_files(files.directory).spec == spec
+
+
+FULL_CHECK = StrengthCheck(
+    "h", "cantilever", 3.123456789, 0.1500000049, (0.0090000004, 0.012), 1.23456789e-5,
+    1.234567891e-9, 2.345678912e-7, 0.46851852, 13.84567891e6, 50e6, 3.61234, 3.0, "fail",
+    (0.1, 0.2000000004, 0.3), (0.0, 0.01, 0.02), ("cube1", "tube1"), 4, 0.0112345678,
+    "h0", "h2", "a note", "", 9.87654321, 1.23456, "a caveat")
+"""A check with every field set, its numbers with more digits than the JSON keeps."""
+
+FULL_DICT = {
+    "model": "cantilever", "force_n": 3.123457, "lever_arm_m": 0.15,
+    "section_m": [0.009, 0.012], "area_m2": 1.2345679e-05, "second_moment_m4": 1.23457e-09,
+    "section_modulus_m3": 2.34568e-07, "moment_nm": 0.468519, "stress_mpa": 13.845679,
+    "strength_mpa": 50.0, "safety_factor": 3.612, "required_safety_factor": 3.0,
+    "verdict": "fail", "contact_point_m": [0.1, 0.2, 0.3], "grasp_point_m": [0.0, 0.01, 0.02],
+    "bodies": ["cube1", "tube1"], "trial": 4, "required_handle_width_m": 0.011235,
+    "thickened_from": "h0", "thickened_into": "h2", "note": "a note", "reason": "",
+    "peak_force_n": 9.876543, "peak_safety_factor": 1.235, "caveat": "a caveat"}
+
+
+def test_the_json_figures_of_a_check_exact():
+    assert FULL_CHECK.to_dict() == FULL_DICT
+    bare = StrengthCheck("b", "compression", 2.0, None, (0.02, 0.03), None, None, None,
+                         None, 0.0, 50e6, None, 3.0, "unmeasured")
+    assert bare.to_dict() == {
+        "model": "compression", "force_n": 2.0, "lever_arm_m": None, "section_m": [0.02, 0.03],
+        "area_m2": None, "second_moment_m4": None, "section_modulus_m3": None,
+        "moment_nm": None, "stress_mpa": 0.0, "strength_mpa": 50.0, "safety_factor": None,
+        "required_safety_factor": 3.0, "verdict": "unmeasured", "contact_point_m": None,
+        "grasp_point_m": None, "bodies": [], "trial": None, "required_handle_width_m": None,
+        "thickened_from": None, "thickened_into": None, "note": "", "reason": "",
+        "peak_force_n": None, "peak_safety_factor": None, "caveat": ""}
+    assert bare.passed and not FULL_CHECK.passed
+
+
+def test_a_rejected_check_says_the_width_the_force_and_the_conflict():
+    out = rejected(FULL_CHECK, ["a(x)", "b(y)"])
+    assert (out.verdict, out.tool, out.force_n) == ("rejected", "h", FULL_CHECK.force_n)
+    assert out.reason == (
+        "its handle would need to be at least 11.2 mm wide for a safety factor of 3 under "
+        "3.12 N at 150 mm, and the size model cannot give that: a(x), b(y) cannot hold "
+        "together")
+    assert thickening_fact(FULL_CHECK) == Compound("min_handle_width_m", (0.0112345678,))
+    with pytest.raises(ValueError) as info:
+        thickening_fact(out)
+    assert str(info.value) == ("h: only a failed cantilever check asks for a thicker handle "
+                               "(this is a rejected cantilever check)")
+    block = replace(FULL_CHECK, model="compression")
+    with pytest.raises(ValueError, match=r"\(this is a fail compression check\)$"):
+        thickening_fact(block)
+
+
+def test_write_strength_replaces_the_json_whole_and_keeps_its_mode(tmp_path):
+    manifest = tmp_path / "t.json"
+    manifest.write_text(json.dumps({"name": "t", "strength": {"old": 1}}))
+    manifest.chmod(0o640)
+    write_strength(manifest, FULL_CHECK)
+    assert manifest.read_text(encoding="utf-8") == json.dumps(
+        {"name": "t", "strength": FULL_DICT}, indent=2) + "\n"
+    assert manifest.stat().st_mode & 0o777 == 0o640
+    assert [p.name for p in tmp_path.iterdir()] == ["t.json"]
+    (tmp_path / "bad.json").write_text("{}")
+    (tmp_path / "bad.json").chmod(0o644)
+    with pytest.raises(TypeError):
+        write_strength(tmp_path / "bad.json", replace(FULL_CHECK, bodies=(object(),)))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json", "t.json"]
+    assert (tmp_path / "bad.json").read_text() == "{}"
