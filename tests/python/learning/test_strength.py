@@ -245,3 +245,58 @@ def test_write_strength_replaces_the_json_whole_and_keeps_its_mode(tmp_path):
         write_strength(tmp_path / "bad.json", replace(FULL_CHECK, bodies=(object(),)))
     assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json", "t.json"]
     assert (tmp_path / "bad.json").read_text() == "{}"
+
+
+HOOK = HookSpec("h", 0.6, handle_width=0.009, hook_length=0.03, hook_width=0.012)
+NOTE = "the handle as a cantilever from the grasp to the contact, the whole force across it"
+
+
+def _caveat(force, steps, peak, sf):
+    return (f"checked with {force} N, the 95th percentile of the per-step contact force over "
+            f"{steps} steps with contact; the one-step peak {peak} N (a contact spike, "
+            f"sensitive to the time step) would give a safety factor of {sf}")
+
+
+def test_a_failing_hook_check_exact():
+    # 6 F L / w^3 = 6 * 20 * 0.549 / 0.009^3 = 90.37 MPa; 50 / 90.37 = 0.553
+    loaded = {"max_force_n": 30.0, "robust_force_n": 20.0, "point": [0.589, -0.03, 0.0],
+              "grasp_point": [0.04, 0.0, 0.0], "bodies": ["cube1"], "contact_steps": 42}
+    check = check_strength(HOOK, loaded, trial=7, thickened_from="h0")
+    assert check.tool == "h"
+    assert check.to_dict() == {
+        "model": "cantilever", "force_n": 20.0, "lever_arm_m": 0.549,
+        "section_m": [0.009, 0.009], "area_m2": None, "second_moment_m4": 5.4675e-10,
+        "section_modulus_m3": 1.215e-07, "moment_nm": 10.98, "stress_mpa": 90.37037,
+        "strength_mpa": 50.0, "safety_factor": 0.553, "required_safety_factor": 2.0,
+        "verdict": "fail", "contact_point_m": [0.589, -0.03, 0.0],
+        "grasp_point_m": [0.04, 0.0, 0.0], "bodies": ["cube1"], "trial": 7,
+        "required_handle_width_m": 0.0139, "thickened_from": "h0", "thickened_into": None,
+        "note": NOTE, "reason": "", "peak_force_n": 30.0, "peak_safety_factor": 0.369,
+        "caveat": _caveat("20.0", 42, "30.0", "0.4")}
+
+
+def test_a_load_without_force_steps_or_bodies_passes_with_no_safety_factor():
+    bare = {"point": [0.589, -0.03, 0.0], "grasp_point": [0.04, 0.0, 0.0]}
+    check = check_strength(HOOK, bare)
+    assert (check.force_n, check.stress_pa, check.safety_factor, check.verdict) == (
+        0.0, 0.0, None, "pass")
+    assert (check.bodies, check.peak_force_n, check.peak_safety_factor) == ((), 0.0, None)
+    assert check.caveat == _caveat("0.0", 0, "0.0", "-")
+    # A robust force with no recorded peak: no peak safety factor either.
+    robust_only = check_strength(HOOK, {**bare, "robust_force_n": 2.0})
+    assert (robust_only.peak_force_n, robust_only.peak_safety_factor) == (0.0, None)
+    assert robust_only.caveat == _caveat("2.0", 0, "0.0", "-")
+
+
+def test_small_forces_still_have_safety_factors_and_the_limit_passes():
+    tiny = check_strength(HOOK, {"max_force_n": 1e-7, "point": [0.589, -0.03, 0.0],
+                                 "grasp_point": [0.04, 0.0, 0.0]})
+    assert 0 < tiny.stress_pa < 1
+    assert tiny.safety_factor == pytest.approx(50e6 / tiny.stress_pa)
+    assert tiny.peak_safety_factor == pytest.approx(tiny.safety_factor)
+    half = {"max_force_n": 0.5, "point": [0.589, -0.03, 0.0], "grasp_point": [0.04, 0.0, 0.0]}
+    check = check_strength(HOOK, half)
+    assert check.caveat == _caveat("0.5", 0, "0.5", "22.1")
+    # A safety factor exactly the required one passes.
+    limit = check_strength(HOOK, half, strength_pa=2.0 * check.stress_pa)
+    assert (limit.safety_factor, limit.verdict) == (2.0, "pass")
