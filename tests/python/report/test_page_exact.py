@@ -40,8 +40,19 @@ PRINT = {
                 "pin_section_mm": 6, "pin_length_mm": 20, "hole_section_mm": 6.2,
                 "hole_depth_mm": 10.5}, {}],
     "layer_height_mm": 0.2, "mass_g": 12.3, "support": False, "slicer_s": 75,
-    "bed_mm": [250, 210], "note": "first try", "tiny_s": 5,
+    "bed_mm": [250, 210], "note": "first try", "tiny_s": 5, "slicer_total_s": 7250,
+    "retries": [{"piece": "handle", "slicer_s": 61}, {"piece": "prong", "ok": True}],
+    "settings": {"nozzle_mm": 0.4, "log": "handle.gcode", "none": None},
+    "layers": [1, 2.5], "empty": [], "missing": None,
 }
+
+MANIFEST = {
+    "spec": {"handle_length": 0.4, "hook_angle_deg": 90, "side": "left", "pieces": 2},
+    "mass_kg": 0.0123, "mesh_volume_m3": 1.1e-05, "spec_volume_m3": 1.2e-05,
+    "printability": {"extent": [0.4, 0.02, "x", 0.06], "printable": True,
+                     "overhang_deg": 45},
+}
+"""The created tool's JSON beyond its files and print figures."""
 
 SUMMARY = {
     "case": "hook", "seed": 3, "phase": "all", "options": {"strategy": "paper"},
@@ -66,7 +77,9 @@ SUMMARY = {
                "predicted": {"feasible": False, "tool": "hook_a2", "variant": "long_tube",
                              "location": 2, "conflict": ["behind(hook_a2,cube1)"],
                              "why": "dx_reach = -0.011 m"},
-               "created_tools": [{**CREATED, "print": PRINT, "mass_kg": 0.0123}]},
+               "created_tools": [{**CREATED, "general": "hook(H, long)",
+                                  "eval_outcomes": ["success", "failure"],
+                                  "print": PRINT, "mass_kg": 0.0123}]},
     "wall_time_s": {"total": 83.5, "use": 40},
     "videos": [{"file": "videos/use-1.mp4", "phase": "use", "trial": 1, "tool": "hook_a1",
                 "outcome": "blocked", "why": "first failure"},
@@ -80,7 +93,7 @@ def _full(root: Path) -> Path:
     (run / "problem.pddl").write_text("(define)")
     tool = run / "tools" / "hook_new"
     manifest = json.loads((tool / "hook_new.json").read_text())
-    manifest["print"] = PRINT
+    manifest.update(MANIFEST, print=PRINT)
     (tool / "hook_new.json").write_text(json.dumps(manifest))
     for name in ("handle.stl", "handle.gcode"):
         (tool / name).write_text("x")
