@@ -79,6 +79,22 @@ EQUIVALENT = {
     **{f"creative_py.report.plot.x_trial_labels__mutmut_{n}":
        "the phase tag's default: a trial record's phase is use, create or eval "
        "(records.trial refuses any other)" for n in (10, 11, 12)},
+    **{f"creative_py.learning.strength.x_check_strength__mutmut_{n}":
+       "the verdict given at construction is a placeholder, replaced before the return"
+       for n in (97, 108)},
+    **{f"creative_py.learning.strength.x_check_strength__mutmut_{n}":
+       "every load model's stress is linear in the force with a positive lever or area: "
+       "a stress of 0 comes with a force of 0 and a positive force with a positive stress"
+       for n in (110, 113, 115)},
+    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+       "encoding None or no encoding reads the locale's, UTF-8 on every machine the "
+       "project runs on; 'UTF-8' names 'utf-8'" for n in (5, 7, 18, 21, 25)},
+    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+       "the temporary file's prefix: it is renamed over the JSON or removed, never seen"
+       for n in (12, 14)},
+    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+       "on the failure path the temporary file exists (mkstemp made it), so missing_ok "
+       "is never used" for n in (44, 46)},
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
 }

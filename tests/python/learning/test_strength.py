@@ -181,18 +181,20 @@ def test_the_figures_go_into_the_tool_json(tmp_path):
 
 
 FULL_CHECK = StrengthCheck(
-    "h", "cantilever", 3.123456789, 0.1500000049, (0.0090000004, 0.012), 1.23456789e-5,
-    1.234567891e-9, 2.345678912e-7, 0.46851852, 13.84567891e6, 50e6, 3.61234, 3.0, "fail",
-    (0.1, 0.2000000004, 0.3), (0.0, 0.01, 0.02), ("cube1", "tube1"), 4, 0.0112345678,
+    "h", "cantilever", 3.123456789, 0.1512345678, (0.0091234567, 0.012), 1.23456789e-5,
+    1.234567891e-9, 2.345678912e-7, 0.46851852, 13.84567891e6, 50.12345678e6, 3.61234, 3.0,
+    "fail", (0.1, 0.2012345678, 0.3), (0.0, 0.01, 0.0212345678), ("cube1", "tube1"), 4,
+    0.0112345678,
     "h0", "h2", "a note", "", 9.87654321, 1.23456, "a caveat")
 """A check with every field set, its numbers with more digits than the JSON keeps."""
 
 FULL_DICT = {
-    "model": "cantilever", "force_n": 3.123457, "lever_arm_m": 0.15,
-    "section_m": [0.009, 0.012], "area_m2": 1.2345679e-05, "second_moment_m4": 1.23457e-09,
+    "model": "cantilever", "force_n": 3.123457, "lever_arm_m": 0.151235,
+    "section_m": [0.009123, 0.012], "area_m2": 1.2345679e-05, "second_moment_m4": 1.23457e-09,
     "section_modulus_m3": 2.34568e-07, "moment_nm": 0.468519, "stress_mpa": 13.845679,
-    "strength_mpa": 50.0, "safety_factor": 3.612, "required_safety_factor": 3.0,
-    "verdict": "fail", "contact_point_m": [0.1, 0.2, 0.3], "grasp_point_m": [0.0, 0.01, 0.02],
+    "strength_mpa": 50.123457, "safety_factor": 3.612, "required_safety_factor": 3.0,
+    "verdict": "fail", "contact_point_m": [0.1, 0.201235, 0.3],
+    "grasp_point_m": [0.0, 0.01, 0.021235],
     "bodies": ["cube1", "tube1"], "trial": 4, "required_handle_width_m": 0.011235,
     "thickened_from": "h0", "thickened_into": "h2", "note": "a note", "reason": "",
     "peak_force_n": 9.876543, "peak_safety_factor": 1.235, "caveat": "a caveat"}
@@ -218,8 +220,12 @@ def test_a_rejected_check_says_the_width_the_force_and_the_conflict():
     assert (out.verdict, out.tool, out.force_n) == ("rejected", "h", FULL_CHECK.force_n)
     assert out.reason == (
         "its handle would need to be at least 11.2 mm wide for a safety factor of 3 under "
-        "3.12 N at 150 mm, and the size model cannot give that: a(x), b(y) cannot hold "
+        "3.12 N at 151 mm, and the size model cannot give that: a(x), b(y) cannot hold "
         "together")
+    wide = rejected(replace(FULL_CHECK, required_handle_width_m=0.09999, lever_arm_m=0.9996),
+                    [])
+    assert wide.reason.startswith("its handle would need to be at least 100.0 mm wide for a "
+                                  "safety factor of 3 under 3.12 N at 1000 mm, ")
     assert thickening_fact(FULL_CHECK) == Compound("min_handle_width_m", (0.0112345678,))
     with pytest.raises(ValueError) as info:
         thickening_fact(out)
@@ -297,6 +303,12 @@ def test_small_forces_still_have_safety_factors_and_the_limit_passes():
     half = {"max_force_n": 0.5, "point": [0.589, -0.03, 0.0], "grasp_point": [0.04, 0.0, 0.0]}
     check = check_strength(HOOK, half)
     assert check.caveat == _caveat("0.5", 0, "0.5", "22.1")
+    # The lever arm runs from the recorded grasp; the width asked follows the factor.
+    assert check_strength(HOOK, {**half, "grasp_point": [0.1, 0.0, 0.0]}).lever_arm_m == \
+        pytest.approx(0.489)
+    assert (check.required_handle_width_m,
+            check_strength(HOOK, half, safety_factor=4.0).required_handle_width_m) == (
+        0.0041, 0.0051)   # (6 F L SF / strength)^(1/3), up to the next 0.1 mm
     # A safety factor exactly the required one passes.
     limit = check_strength(HOOK, half, strength_pa=2.0 * check.stress_pa)
     assert (limit.safety_factor, limit.verdict) == (2.0, "pass")
