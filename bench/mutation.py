@@ -95,6 +95,8 @@ EQUIVALENT = {
     **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
        "on the failure path the temporary file exists (mkstemp made it), so missing_ok "
        "is never used" for n in (44, 46)},
+    "creative_py.learning.strength.xǁStrengthCheckǁto_dict__mutmut_1":
+        "every call of r() in to_dict names its digits: the default is never used",
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
 }
