@@ -54,6 +54,51 @@ EQUIVALENT = {
         "without ':-' the body is '', and split_top_level('') is [] anyway",
     "creative_py.report.contents.x_relative_inside__mutmut_4":
         "root / an absolute path is that absolute path",
+    "creative_py.report.table.x_natural_width__mutmut_3":
+        "a console 100001 columns wide measures a table as one 100000 wide does",
+    **{f"creative_py.report.table.x_trial_blocks__mutmut_{n}":
+       "the outcome style's default: a trial record's outcome is one of the five styled "
+       "ones (records.trial refuses any other, read or built in code)"
+       for n in (32, 34, 35, 36)},
+    "creative_py.report.table.x_print_report__mutmut_33":
+        "Rich reads style names in any case: 'ITALIC' is 'italic'",
+    "creative_py.report.progress.xǁRunProgressǁ__init____mutmut_25":
+        "4 refreshes a second is rich.live.Live's default",
+    "creative_py.report.plot.x_plot_trials__mutmut_181":
+        "fontsize None is matplotlib's font.size, 10, the size asked",
+    "creative_py.report.plot.x_plot_trials__mutmut_204":
+        "plt.close(None) closes the current figure, the one just saved",
+    **{f"creative_py.report.plot.x_plot_trials__mutmut_{n}":
+       "matplotlib reads backend names in any case" for n in (4, 5)},
+    **{f"creative_py.report.plot.x_plot_trials__mutmut_{n}":
+       "a patch's default colour is C0, tab:blue, and colour names are read in any case"
+       for n in (83, 88, 98)},
+    **{f"creative_py.report.plot.x_plot_trials__mutmut_{n}":
+       "the outcome marker's default: a trial record's outcome is one of the five "
+       "(records.trial refuses any other)" for n in (44, 46)},
+    **{f"creative_py.report.plot.x_trial_labels__mutmut_{n}":
+       "the phase tag's default: a trial record's phase is use, create or eval "
+       "(records.trial refuses any other)" for n in (10, 11, 12)},
+    **{f"creative_py.learning.strength.x_check_strength__mutmut_{n}":
+       "the verdict given at construction is a placeholder, replaced before the return"
+       for n in (97, 108)},
+    **{f"creative_py.learning.strength.x_check_strength__mutmut_{n}":
+       "every load model's stress is linear in the force with a positive lever or area: "
+       "a stress of 0 comes with a force of 0 and a positive force with a positive stress"
+       for n in (110, 113, 115)},
+    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+       "encoding None or no encoding reads the locale's, UTF-8 on every machine the "
+       "project runs on; 'UTF-8' names 'utf-8'" for n in (5, 7, 18, 21, 25)},
+    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+       "the temporary file's prefix: it is renamed over the JSON or removed, never seen"
+       for n in (12, 14)},
+    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+       "on the failure path the temporary file exists (mkstemp made it), so missing_ok "
+       "is never used" for n in (44, 46)},
+    "creative_py.learning.strength.xǁStrengthCheckǁto_dict__mutmut_1":
+        "every call of r() in to_dict names its digits: the default is never used",
+    "creative_py.report.headline.x_headline__mutmut_178":
+        "with solved None the mapping's .get(None) is None, as the else branch",
 }
 """Mutants that no test can kill: the code means the same with them."""
 

@@ -185,7 +185,8 @@ def _print_line(tool: Any) -> tuple[str, list[Figure]]:
     name = tool.get("name", "?")
     pieces = printed.get("pieces") if isinstance(printed.get("pieces"), list) else []
     metres = printed.get("filament_mm")
-    line = (f"Printing {name}: {len(pieces) or 1} piece{'s' if len(pieces) != 1 else ''}, "
+    count = len(pieces) or 1  # a print record without its pieces is of one piece
+    line = (f"Printing {name}: {count} piece{'s' if count != 1 else ''}, "
             f"{duration_text(seconds)} of printing, {grams:.1f} g of filament"
             + (f" ({metres / 1000:.1f} m)" if isinstance(metres, (int, float)) else "")
             + (f"; mass {tool['mass_kg'] * 1000:.1f} g" if isinstance(tool.get("mass_kg"),

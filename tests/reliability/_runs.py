@@ -2,8 +2,10 @@
 
 from __future__ import annotations
 
+import fcntl
 import hashlib
 import json
+import os
 import subprocess
 import sys
 import time
@@ -32,6 +34,25 @@ def short_run(out: Path, *extra: str) -> Path:
     proc = run_cli("run", "rake", "--out", str(out), *SHORT, *extra)
     assert proc.returncode == 0, proc.stderr[-2000:]
     return Path(proc.stdout.strip().splitlines()[-1])
+
+
+def shared_short_run(tmp_path_factory) -> Path:
+    """Return the session's short rake run (:func:`short_run`, no extra option), run once
+    for every test that only reads it, whichever pytest-xdist worker asks first.
+
+    The folder is under the session's temporary root (shared by the workers of one
+    session, not by two sessions); a file lock makes the other workers wait for it.
+    Tests must not change it (copy it first).
+    """
+    root = tmp_path_factory.getbasetemp()
+    if os.environ.get("PYTEST_XDIST_WORKER"):
+        root = root.parent  # the session's root, above each worker's own folder
+    with open(root / "short_run.lock", "w") as lock:
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        done = root / "short_run.path"
+        if not done.exists():
+            done.write_text(str(short_run(root / "short_run")))
+        return Path(done.read_text())
 
 
 def wait_for(test, timeout: float = 300) -> None:

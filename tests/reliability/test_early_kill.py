@@ -11,15 +11,16 @@ from pathlib import Path
 
 import pytest
 
-from _runs import SHORT, creative, one_error_line, run_cli, short_run, trials, wait_for
+from _runs import SHORT, creative, one_error_line, run_cli, shared_short_run, trials, wait_for
 from creative_py.learning.run import RunOptions, run_case
 from creative_py.records.folder import read_resume
 
 
 @pytest.fixture(scope="module")
 def uninterrupted(tmp_path_factory) -> Path:
-    """The short rake run, not interrupted."""
-    return short_run(tmp_path_factory.mktemp("whole"))
+    """The short rake run, not interrupted: the session's, shared with
+    ``test_replay.py``."""
+    return shared_short_run(tmp_path_factory)
 
 
 @pytest.mark.sim

@@ -99,10 +99,10 @@ def test_a_forked_child_does_not_keep_the_lock(tmp_path):
         from creative_py.records.folder import RunFolder
         run = RunFolder.create(sys.argv[1], "rake", 0, "run")
         child = os.fork()
-        if child == 0:
+        if child == 0:  # the fork hooks have run: say so (the parent may be killed now)
+            print(os.getpid(), flush=True)
             time.sleep(600)
             os._exit(0)
-        print(child, flush=True)
         time.sleep(600)
     """)
     proc = subprocess.Popen([sys.executable, "-c", code, str(tmp_path)],

@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from _runs import SHORT, one_error_line, run_cli, short_run, trials, tree_digest
+from _runs import SHORT, one_error_line, run_cli, shared_short_run, trials, tree_digest
 from creative_py.records.folder import read_resume
 
 RUN_JSON = {"case": "rake", "options": {"phase": "use", "max_trials": 3, "eval_trials": 1},
@@ -98,8 +98,9 @@ def test_a_garbage_drawn_world_stops_the_resume_in_one_line(tmp_path):
 
 @pytest.fixture(scope="module")
 def finished(tmp_path_factory) -> Path:
-    """A finished short rake run (with its clips)."""
-    return short_run(tmp_path_factory.mktemp("finished"))
+    """A finished short rake run (with its clips): the session's, shared with
+    ``test_early_kill.py`` (the tests copy it before changing it)."""
+    return shared_short_run(tmp_path_factory)
 
 
 def _copy(run: Path, where: Path) -> Path:

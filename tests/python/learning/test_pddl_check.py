@@ -8,6 +8,7 @@ problem.pddl and its own plan.  unified-planning then solves and validates.
 
 from __future__ import annotations
 
+import logging
 import re
 import shutil
 import subprocess
@@ -15,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from creative_py.learning.pddl_check import PddlError, parse, solve, validate_plan
+from creative_py.learning.pddl_check import (PddlError, check_files, parse, solve, step_text,
+                                             validate_plan)
 
 ROOT = Path(__file__).resolve().parents[3]
 FIXTURES = ROOT / "tests" / "prolog" / "fixtures" / "demonstrations.pl"
@@ -142,3 +144,98 @@ def test_bad_files_raise_an_error_naming_them(tmp_path):
         parse(broken, problem)
     with pytest.raises(PddlError, match="missing.pddl: no such PDDL file"):
         parse(tmp_path / "missing.pddl", problem)
+
+
+@pytest.fixture
+def door(tmp_path) -> tuple[Path, Path]:
+    domain, problem = tmp_path / "d.pddl", tmp_path / "p.pddl"
+    domain.write_text(NEGATIVE_DOMAIN)
+    problem.write_text(NEGATIVE_PROBLEM)
+    return domain, problem
+
+
+def test_check_files_records_a_plan_equal_to_prolog_s(door, caplog):
+    plan = [("unlock", ["d1"]), ("open_door", ["d1"])]
+    assert check_files(*door, plan) == {
+        "domain": "d.pddl", "problem": "p.pddl", "status": "solved",
+        "plan": ["(unlock d1)", "(open_door d1)"], "equals_prolog": True,
+        "planner": "pyperplan", "prolog_plan": ["(unlock d1)", "(open_door d1)"],
+        "prolog_plan_valid": True}
+    assert [r.getMessage() for r in caplog.records if r.levelname == "WARNING"] == []
+
+
+def test_check_files_records_a_prolog_plan_that_differs_or_is_missing(door, caplog):
+    domain, problem = door
+    record = check_files(domain, problem, [("open_door", ["d1"])])
+    assert record == {
+        "domain": "d.pddl", "problem": "p.pddl", "status": "solved",
+        "plan": ["(unlock d1)", "(open_door d1)"], "equals_prolog": False,
+        "planner": "pyperplan", "prolog_plan": ["(open_door d1)"],
+        "prolog_plan_valid": False}
+    assert [r.getMessage() for r in caplog.records if r.levelname == "WARNING"] == [
+        f"{problem}: pyperplan's plan (unlock d1) (open_door d1) differs from Prolog's "
+        "['(open_door d1)']"]
+    assert check_files(domain, problem, None) == {
+        "domain": "d.pddl", "problem": "p.pddl", "status": "solved",
+        "plan": ["(unlock d1)", "(open_door d1)"], "equals_prolog": False,
+        "planner": "pyperplan", "prolog_plan": None}
+
+
+def test_check_files_records_an_unsolvable_task(door, caplog):
+    domain, problem = door
+    problem.write_text(NEGATIVE_PROBLEM.replace("(:goal (and (open d1)))",
+                                                "(:goal (and (open d1) (locked d1)))"))
+    assert check_files(domain, problem, None) == {
+        "domain": "d.pddl", "problem": "p.pddl", "status": "unsolvable", "plan": [],
+        "equals_prolog": True, "planner": "pyperplan", "prolog_plan": None}
+    record = check_files(domain, problem, [("unlock", ["d1"])])
+    assert (record["status"], record["equals_prolog"], record["prolog_plan_valid"]) == (
+        "unsolvable", False, False)
+    assert [r.getMessage() for r in caplog.records if r.levelname == "WARNING"] == [
+        f"{problem}: pyperplan finds no plan for the run's own PDDL"] * 2
+
+
+def test_check_files_records_an_error_and_never_raises(door, caplog):
+    domain, problem = door
+    domain.write_text(NEGATIVE_DOMAIN[:-3])
+    record = check_files(domain, problem, [("unlock", ["d1"])])
+    error = record.pop("error")
+    assert record == {"domain": "d.pddl", "problem": "p.pddl", "status": "error",
+                      "plan": [], "equals_prolog": False, "planner": "pyperplan",
+                      "prolog_plan": ["(unlock d1)"]}
+    assert error.startswith(f"{domain} + {problem}: cannot parse: ")
+    assert [r.getMessage() for r in caplog.records if r.levelname == "WARNING"] == [
+        f"{problem}: pyperplan could not solve its own PDDL: {error}"]
+    assert step_text(("pull_out", ["hook_a2", "cube1", "tube1"])) == \
+        "(pull_out hook_a2 cube1 tube1)"
+    assert step_text(("stop", [])) == "(stop)"
+
+
+def _infos(caplog) -> list[str]:
+    return [r.getMessage() for r in caplog.records
+            if r.name == "creative_py.learning.pddl_check" and r.levelname == "INFO"]
+
+
+def test_solve_logs_its_answer_and_validate_plan_says_why_not(door, caplog):
+    caplog.set_level(logging.INFO, logger="creative_py.learning.pddl_check")
+    domain, problem = door
+    assert solve(domain, problem) == [("unlock", ["d1"]), ("open_door", ["d1"])]
+    assert _infos(caplog) == [f"{problem}: pyperplan found 2 steps"]
+    assert validate_plan(domain, problem, [("open_door", ["d1"])]) == (
+        False, "inapplicable_action: [INFO] Preconditions [(not locked(d1))] of 1-th action "
+               "instance open_door(d1) are not satisfied.")
+    assert validate_plan(domain, problem, [("unlock", ["d1"])]) == (
+        False, "unsatisfied_goals: [INFO] Goals [open(d1)] are not satisfied by the plan.")
+    assert validate_plan(domain, problem, ["x"]) == (
+        False, "plan step 1: 'x' is not (action_name, [args])")
+    assert validate_plan(domain, problem, [("unlock", ["d1"]), ("unlock", ["d1", "d1"])]) == (
+        False, "plan step 2: unlock takes 1 arguments, got 2")
+    assert validate_plan(domain, problem, [("nope", ["d1"])]) == (
+        False, "plan step 1: unknown action 'nope'")
+    assert validate_plan(domain, problem, [("unlock", ["zz"])]) == (
+        False, "plan step 1: unknown object 'zz'")
+    problem.write_text(NEGATIVE_PROBLEM.replace("(:goal (and (open d1)))",
+                                                "(:goal (and (open d1) (locked d1)))"))
+    caplog.clear()
+    assert solve(domain, problem) is None
+    assert _infos(caplog) == [f"{problem}: no plan (UNSOLVABLE_INCOMPLETELY)"]

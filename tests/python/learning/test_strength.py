@@ -8,14 +8,15 @@ Algorithm 2 sizes it for the long tube, whose context the simulator perceives.
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 
 import pytest
 
-from creative_py.bridge import Engine
+from creative_py.bridge import Compound, Engine
 from creative_py.learning.manufacture import default_context, parse_spec, size_tool
-from creative_py.learning.strength import (cantilever_stress, check_strength,
-                                           rejected, required_square_width, thicker_dims,
-                                           thickening_fact, write_strength)
+from creative_py.learning.strength import (StrengthCheck, cantilever_stress,
+                                           check_strength, rejected, required_square_width,
+                                           thicker_dims, thickening_fact, write_strength)
 from creative_py.mesh.export import read_tool_files, write_tool_files
 from creative_py.mesh.spec import MIN_SAFETY_FACTOR, PLA_STRENGTH
 from creative_py.kinds import spec_from_dict
@@ -177,3 +178,137 @@ def test_the_figures_go_into_the_tool_json(tmp_path):
     assert data["strength"]["verdict"] == "pass"
     assert data["strength"]["lever_arm_m"] == pytest.approx(0.15)
     assert read_tool_files(files.directory).spec == spec
+
+
+FULL_CHECK = StrengthCheck(
+    "h", "cantilever", 3.123456789, 0.1512345678, (0.0091234567, 0.012), 1.23456789e-5,
+    1.234567891e-9, 2.345678912e-7, 0.46851852, 13.84567891e6, 50.12345678e6, 3.61234, 3.0,
+    "fail", (0.1, 0.2012345678, 0.3), (0.0, 0.01, 0.0212345678), ("cube1", "tube1"), 4,
+    0.0112345678,
+    "h0", "h2", "a note", "", 9.87654321, 1.23456, "a caveat")
+"""A check with every field set, its numbers with more digits than the JSON keeps."""
+
+FULL_DICT = {
+    "model": "cantilever", "force_n": 3.123457, "lever_arm_m": 0.151235,
+    "section_m": [0.009123, 0.012], "area_m2": 1.2345679e-05, "second_moment_m4": 1.23457e-09,
+    "section_modulus_m3": 2.34568e-07, "moment_nm": 0.468519, "stress_mpa": 13.845679,
+    "strength_mpa": 50.123457, "safety_factor": 3.612, "required_safety_factor": 3.0,
+    "verdict": "fail", "contact_point_m": [0.1, 0.201235, 0.3],
+    "grasp_point_m": [0.0, 0.01, 0.021235],
+    "bodies": ["cube1", "tube1"], "trial": 4, "required_handle_width_m": 0.011235,
+    "thickened_from": "h0", "thickened_into": "h2", "note": "a note", "reason": "",
+    "peak_force_n": 9.876543, "peak_safety_factor": 1.235, "caveat": "a caveat"}
+
+
+def test_the_json_figures_of_a_check_exact():
+    assert FULL_CHECK.to_dict() == FULL_DICT
+    bare = StrengthCheck("b", "compression", 2.0, None, (0.02, 0.03), None, None, None,
+                         None, 0.0, 50e6, None, 3.0, "unmeasured")
+    assert bare.to_dict() == {
+        "model": "compression", "force_n": 2.0, "lever_arm_m": None, "section_m": [0.02, 0.03],
+        "area_m2": None, "second_moment_m4": None, "section_modulus_m3": None,
+        "moment_nm": None, "stress_mpa": 0.0, "strength_mpa": 50.0, "safety_factor": None,
+        "required_safety_factor": 3.0, "verdict": "unmeasured", "contact_point_m": None,
+        "grasp_point_m": None, "bodies": [], "trial": None, "required_handle_width_m": None,
+        "thickened_from": None, "thickened_into": None, "note": "", "reason": "",
+        "peak_force_n": None, "peak_safety_factor": None, "caveat": ""}
+    assert bare.passed and not FULL_CHECK.passed
+
+
+def test_a_rejected_check_says_the_width_the_force_and_the_conflict():
+    out = rejected(FULL_CHECK, ["a(x)", "b(y)"])
+    assert (out.verdict, out.tool, out.force_n) == ("rejected", "h", FULL_CHECK.force_n)
+    assert out.reason == (
+        "its handle would need to be at least 11.2 mm wide for a safety factor of 3 under "
+        "3.12 N at 151 mm, and the size model cannot give that: a(x), b(y) cannot hold "
+        "together")
+    wide = rejected(replace(FULL_CHECK, required_handle_width_m=0.09999, lever_arm_m=0.9996),
+                    [])
+    assert wide.reason.startswith("its handle would need to be at least 100.0 mm wide for a "
+                                  "safety factor of 3 under 3.12 N at 1000 mm, ")
+    assert thickening_fact(FULL_CHECK) == Compound("min_handle_width_m", (0.0112345678,))
+    with pytest.raises(ValueError) as info:
+        thickening_fact(out)
+    assert str(info.value) == ("h: only a failed cantilever check asks for a thicker handle "
+                               "(this is a rejected cantilever check)")
+    block = replace(FULL_CHECK, model="compression")
+    with pytest.raises(ValueError, match=r"\(this is a fail compression check\)$"):
+        thickening_fact(block)
+
+
+def test_write_strength_replaces_the_json_whole_and_keeps_its_mode(tmp_path):
+    manifest = tmp_path / "t.json"
+    manifest.write_text(json.dumps({"name": "t", "strength": {"old": 1}}))
+    manifest.chmod(0o640)
+    write_strength(manifest, FULL_CHECK)
+    assert manifest.read_text(encoding="utf-8") == json.dumps(
+        {"name": "t", "strength": FULL_DICT}, indent=2) + "\n"
+    assert manifest.stat().st_mode & 0o777 == 0o640
+    assert [p.name for p in tmp_path.iterdir()] == ["t.json"]
+    (tmp_path / "bad.json").write_text("{}")
+    (tmp_path / "bad.json").chmod(0o644)
+    with pytest.raises(TypeError):
+        write_strength(tmp_path / "bad.json", replace(FULL_CHECK, bodies=(object(),)))
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["bad.json", "t.json"]
+    assert (tmp_path / "bad.json").read_text() == "{}"
+
+
+HOOK = HookSpec("h", 0.6, handle_width=0.009, hook_length=0.03, hook_width=0.012)
+NOTE = "the handle as a cantilever from the grasp to the contact, the whole force across it"
+
+
+def _caveat(force, steps, peak, sf):
+    return (f"checked with {force} N, the 95th percentile of the per-step contact force over "
+            f"{steps} steps with contact; the one-step peak {peak} N (a contact spike, "
+            f"sensitive to the time step) would give a safety factor of {sf}")
+
+
+def test_a_failing_hook_check_exact():
+    # 6 F L / w^3 = 6 * 20 * 0.549 / 0.009^3 = 90.37 MPa; 50 / 90.37 = 0.553
+    loaded = {"max_force_n": 30.0, "robust_force_n": 20.0, "point": [0.589, -0.03, 0.0],
+              "grasp_point": [0.04, 0.0, 0.0], "bodies": ["cube1"], "contact_steps": 42}
+    check = check_strength(HOOK, loaded, trial=7, thickened_from="h0")
+    assert check.tool == "h"
+    assert check.to_dict() == {
+        "model": "cantilever", "force_n": 20.0, "lever_arm_m": 0.549,
+        "section_m": [0.009, 0.009], "area_m2": None, "second_moment_m4": 5.4675e-10,
+        "section_modulus_m3": 1.215e-07, "moment_nm": 10.98, "stress_mpa": 90.37037,
+        "strength_mpa": 50.0, "safety_factor": 0.553, "required_safety_factor": 2.0,
+        "verdict": "fail", "contact_point_m": [0.589, -0.03, 0.0],
+        "grasp_point_m": [0.04, 0.0, 0.0], "bodies": ["cube1"], "trial": 7,
+        "required_handle_width_m": 0.0139, "thickened_from": "h0", "thickened_into": None,
+        "note": NOTE, "reason": "", "peak_force_n": 30.0, "peak_safety_factor": 0.369,
+        "caveat": _caveat("20.0", 42, "30.0", "0.4")}
+
+
+def test_a_load_without_force_steps_or_bodies_passes_with_no_safety_factor():
+    bare = {"point": [0.589, -0.03, 0.0], "grasp_point": [0.04, 0.0, 0.0]}
+    check = check_strength(HOOK, bare)
+    assert (check.force_n, check.stress_pa, check.safety_factor, check.verdict) == (
+        0.0, 0.0, None, "pass")
+    assert (check.bodies, check.peak_force_n, check.peak_safety_factor) == ((), 0.0, None)
+    assert check.caveat == _caveat("0.0", 0, "0.0", "-")
+    # A robust force with no recorded peak: no peak safety factor either.
+    robust_only = check_strength(HOOK, {**bare, "robust_force_n": 2.0})
+    assert (robust_only.peak_force_n, robust_only.peak_safety_factor) == (0.0, None)
+    assert robust_only.caveat == _caveat("2.0", 0, "0.0", "-")
+
+
+def test_small_forces_still_have_safety_factors_and_the_limit_passes():
+    tiny = check_strength(HOOK, {"max_force_n": 1e-7, "point": [0.589, -0.03, 0.0],
+                                 "grasp_point": [0.04, 0.0, 0.0]})
+    assert 0 < tiny.stress_pa < 1
+    assert tiny.safety_factor == pytest.approx(50e6 / tiny.stress_pa)
+    assert tiny.peak_safety_factor == pytest.approx(tiny.safety_factor)
+    half = {"max_force_n": 0.5, "point": [0.589, -0.03, 0.0], "grasp_point": [0.04, 0.0, 0.0]}
+    check = check_strength(HOOK, half)
+    assert check.caveat == _caveat("0.5", 0, "0.5", "22.1")
+    # The lever arm runs from the recorded grasp; the width asked follows the factor.
+    assert check_strength(HOOK, {**half, "grasp_point": [0.1, 0.0, 0.0]}).lever_arm_m == \
+        pytest.approx(0.489)
+    assert (check.required_handle_width_m,
+            check_strength(HOOK, half, safety_factor=4.0).required_handle_width_m) == (
+        0.0041, 0.0051)   # (6 F L SF / strength)^(1/3), up to the next 0.1 mm
+    # A safety factor exactly the required one passes.
+    limit = check_strength(HOOK, half, strength_pa=2.0 * check.stress_pa)
+    assert (limit.safety_factor, limit.verdict) == (2.0, "pass")

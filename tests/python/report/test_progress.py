@@ -65,3 +65,56 @@ def test_run_case_without_a_callback_logs_its_lines(monkeypatch, caplog, tmp_pat
     except RuntimeError:
         pass
     assert any(r.getMessage().startswith("run folder ") for r in caplog.records)
+
+
+def test_each_step_line_names_its_phase_and_the_status_line_is_cut_to_the_width():
+    console = Console(file=io.StringIO(), width=30, force_terminal=True)
+    progress = RunProgress(console, budget=None, live=False)
+    assert progress.status() == "starting · 0:00 elapsed"
+    assert (progress.phase, progress.trial, progress.last, progress.doing) == (
+        "starting", None, "", "")
+    steps = [("demonstration: x", "demonstration"), ("manufacturing y", "tool creation"),
+             ("TC catalogue: z", "tool creation"), ("TC predicted: w", "tool creation"),
+             ("encoding 3 clips", "video"), ("pddl check", "planning"),
+             ("plan: [a]", "planning")]
+    for line, phase in steps:
+        progress("TC    1  hook_a1  loc 2  success")
+        assert (progress.phase, progress.trial, progress.last) == (
+            "tool creation", 1, "hook_a1 success")
+        progress(line)
+        assert (progress.phase, progress.trial, progress.doing) == (phase, None, line)
+        assert progress.status() == f"{phase} · 0:00 elapsed · {line}"
+    progress("a line that starts no step")
+    assert progress.status() == "planning · 0:00 elapsed · plan: [a]"
+    progress("DEMO  1  hook_a2  loc 1  success")
+    assert progress.status() == "demonstration · trial 1 · 0:00 elapsed · last: hook_a2 success"
+    progress("TUL   4  hook_a3  loc 3  blocked")
+    assert progress.status() == "tool-use learning · trial 4 · 0:00 elapsed · last: hook_a3 " \
+                                "blocked"   # no budget: no "of N"
+    rich = progress.__rich__()
+    assert (rich.plain, str(rich.style)) == ("tool-use learning · trial 4 …", "bold")
+    console.width = 10   # never narrower than 20 columns
+    assert progress.__rich__().plain == "tool-use learning ·…"
+    console.width = len(progress.status()) + 1   # a status exactly as wide: whole
+    assert progress.__rich__().plain == progress.status()
+    console.width -= 1
+    assert progress.__rich__().plain == progress.status()[:-2] + "…"
+    assert [elapsed_text(s) for s in (0, 59.9, 65, 120, 3599, 3600, 36000)] == [
+        "0:00", "0:59", "1:05", "2:00", "59:59", "1:00:00", "10:00:00"]
+
+
+def test_a_progress_line_is_printed_as_written():
+    out = io.StringIO()
+    progress = RunProgress(Console(file=out, width=80, force_terminal=True,
+                                   color_system="standard"), live=False)
+    progress("plan: [bold]pick_up(hook_a2)[/bold] in 42 s")
+    assert out.getvalue() == "plan: [bold]pick_up(hook_a2)[/bold] in 42 s\n"
+
+
+def test_a_run_progress_on_a_pipe_has_no_live_line_unless_asked():
+    pipe = Console(file=io.StringIO(), force_terminal=False)
+    assert RunProgress(pipe)._live is None
+    live = RunProgress(pipe, live=True)._live
+    assert live is not None and live.transient and live.refresh_per_second == 4
+    assert RunProgress(Console(file=io.StringIO(), force_terminal=True), live=False)._live \
+        is None

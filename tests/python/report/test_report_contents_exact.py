@@ -156,8 +156,10 @@ def test_strength_note_exact():
     assert strength_note(None) == ""
     assert strength_note({}) == ""
     assert strength_note({"verdict": "fail", "stress_mpa": 41.25, "safety_factor": None,
-                          "thickened_into": "hook_new_2", "reason": "too thin"}) == (
-        "; strength fail, 41.2 MPa, safety factor -, thickened into hook_new_2: too thin")
+                          "thickened_into": "hook_new_2", "reason": "too thin",
+                          "caveat": "one load case"}) == (
+        "; strength fail, 41.2 MPa, safety factor -, thickened into hook_new_2: too thin "
+        "(one load case)")
     assert strength_note({"verdict": "pass"}) == "; strength pass, 0.0 MPa, safety factor -"
 
 

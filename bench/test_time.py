@@ -1,0 +1,104 @@
+"""Where ``make test``'s time goes: wall and CPU seconds of its two parts, and per test.
+
+Runs the two commands of ``make test`` as the Makefile does (the plunit tests, then
+pytest ``-m "not slow" -n auto``) and records for each the wall seconds and the CPU
+seconds (user + system of the command and every process it waited for: the machine is
+shared, so the CPU figure is the one that does not depend on the other processes), the
+load average before and after, and, through the pytest plugin ``bench/_test_cpu.py``,
+the CPU and wall seconds of every test, summed by file and the ``--top`` dearest.
+Writes ``bench/results/test_time.json`` (``--label`` names the measurement; earlier
+measurements are kept under ``history``).
+
+    .venv/bin/python bench/test_time.py [--label "after the shared short run"] [--top 40]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import resource
+import subprocess
+import sys
+import tempfile
+import time
+from collections import defaultdict
+from datetime import datetime, timezone
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parent
+RESULTS = HERE / "results" / "test_time.json"
+
+
+def _children_cpu() -> float:
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
+
+
+def timed(cmd: list[str], env: dict) -> dict:
+    """Run ``cmd`` in the project's root; return its exit code, wall and CPU seconds."""
+    cpu, wall = _children_cpu(), time.perf_counter()
+    rc = subprocess.call(cmd, cwd=ROOT, env=env)
+    return {"exit_code": rc, "wall_s": round(time.perf_counter() - wall, 1),
+            "cpu_s": round(_children_cpu() - cpu, 1)}
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--label", default=None)
+    ap.add_argument("--top", type=int, default=40)
+    args = ap.parse_args(argv)
+    env = dict(os.environ)
+    env["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT), str(HERE),
+                                                    env.get("PYTHONPATH")) if p)
+    load_before = os.getloadavg()
+    prolog = timed(["swipl", "--on-warning=status", "-q", "-g", "run_all", "-t", "halt",
+                    "tests/prolog/run_tests.pl"], env)
+    with tempfile.NamedTemporaryFile(suffix=".jsonl", delete=False) as tmp:
+        lines_path = Path(tmp.name)
+    env["CREATIVE_TEST_CPU"] = str(lines_path)
+    python = timed([sys.executable, "-m", "pytest", "-q", "-m", "not slow", "-n", "auto",
+                    "-p", "_test_cpu"], env)
+    load_after = os.getloadavg()
+    tests = [json.loads(line) for line in lines_path.read_text().splitlines()]
+    lines_path.unlink()
+    by_file: dict[str, list[float]] = defaultdict(lambda: [0.0, 0])
+    for t in tests:
+        by_file[t["test"].split("::")[0]][0] += t["cpu_s"]
+        by_file[t["test"].split("::")[0]][1] += 1
+    python["tests"] = len(tests)
+    python["cpu_in_tests_s"] = round(sum(t["cpu_s"] for t in tests), 1)
+    entry = {
+        "at": datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ"),
+        "label": args.label,
+        "cpus": os.cpu_count(),
+        "load_average_before": [round(x, 2) for x in load_before],
+        "load_average_after": [round(x, 2) for x in load_after],
+        "prolog": prolog,
+        "python": python,
+        "total_wall_s": round(prolog["wall_s"] + python["wall_s"], 1),
+        "total_cpu_s": round(prolog["cpu_s"] + python["cpu_s"], 1),
+        "cpu_by_file_s": {f: {"cpu_s": round(c, 1), "tests": n} for f, (c, n) in
+                          sorted(by_file.items(), key=lambda kv: -kv[1][0])},
+        "dearest_tests": sorted(tests, key=lambda t: -t["cpu_s"])[:args.top],
+    }
+    previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
+    history = previous.get("history", [])
+    if previous.get("latest"):
+        history.append({k: previous["latest"][k] for k in
+                        ("at", "label", "load_average_before", "load_average_after",
+                         "prolog", "python", "total_wall_s", "total_cpu_s")})
+    RESULTS.write_text(json.dumps({
+        "what": "make test (plunit, then pytest -m 'not slow' -n auto): wall and CPU "
+                "seconds (user + system, the commands and their children); per test "
+                "through bench/_test_cpu.py",
+        "latest": entry, "history": history}, indent=2) + "\n")
+    print(f"make test: {entry['total_wall_s']} s wall, {entry['total_cpu_s']} s CPU "
+          f"(load {entry['load_average_before'][0]} -> {entry['load_average_after'][0]}):"
+          f" {RESULTS}")
+    return 0 if prolog["exit_code"] == 0 and python["exit_code"] == 0 else 1
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
