@@ -821,16 +821,17 @@ def mutation_table() -> str:
 
 @block("test-suite")
 def test_suite() -> str:
-    """How many tests ``make test`` runs and how long it took (test_suite.json)."""
-    d = result("test_suite")
-    py = d["pytest"]
-    pl, pt = d["parts"]
+    """How many tests ``make test`` runs and how long it took (test_time.json's latest
+    run of ``bench/test_time.py``)."""
+    d = result("test_time")["latest"]
+    c, py = d["counts"], d["counts"]["pytest"]
     minutes = lambda x: f"{int(x // 60)} min {x % 60:02.0f} s"  # noqa: E731
-    return (f"`make test` ({d['plunit_tests']} plunit and {py.get('passed', 0)} pytest tests"
+    return (f"`make test` ({c['plunit_tests']} plunit and {py.get('passed', 0)} pytest tests"
             + (f", {py['skipped']} skipped" if py.get("skipped") else "")
-            + f") took {minutes(d['wall_s'])} after set-up on this {d['cores']}-core "
-            f"machine shared with other work (load {pl['load_before']:.1f} at the start; "
-            f"pytest {minutes(pt['wall_s'])} of it).")
+            + f") took {minutes(d['total_wall_s'])} of wall time and {d['total_cpu_s']:.0f} s "
+            f"of CPU after set-up on this {d['cpus']}-core machine (load "
+            f"{d['load_average_before'][0]:.1f} at the start; pytest "
+            f"{minutes(d['python']['wall_s'])} of it; `{d['label']}`).")
 
 
 # --- the README -------------------------------------------------------------------------

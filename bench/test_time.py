@@ -17,6 +17,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import resource
 import subprocess
 import sys
@@ -36,12 +37,32 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def timed(cmd: list[str], env: dict) -> dict:
-    """Run ``cmd`` in the project's root; return its exit code, wall and CPU seconds."""
+def timed(cmd: list[str], env: dict) -> tuple[dict, str]:
+    """Run ``cmd`` in the project's root, its output shown as it comes; return its exit
+    code, wall and CPU seconds, and its output."""
     cpu, wall = _children_cpu(), time.perf_counter()
-    rc = subprocess.call(cmd, cwd=ROOT, env=env)
-    return {"exit_code": rc, "wall_s": round(time.perf_counter() - wall, 1),
-            "cpu_s": round(_children_cpu() - cpu, 1)}
+    proc = subprocess.Popen(cmd, cwd=ROOT, env=env, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT, text=True)
+    out = []
+    for line in proc.stdout:
+        sys.stdout.write(line)
+        out.append(line)
+    rc = proc.wait()
+    return ({"exit_code": rc, "wall_s": round(time.perf_counter() - wall, 1),
+             "cpu_s": round(_children_cpu() - cpu, 1)}, "".join(out))
+
+
+def counts(prolog_out: str, python_out: str) -> dict:
+    """The tests each part ran: plunit's "N plunit tests, K failed" and pytest's summary
+    line ("N passed, M skipped, K deselected in S s")."""
+    m = re.search(r"(\d+) plunit tests, (\d+) failed", prolog_out)
+    summary = [line for line in python_out.splitlines()
+               if re.search(r"\d+ (passed|failed).* in [\d.]+s", line)]
+    pytest = {k.rstrip("s") if k.startswith("error") else k: int(v) for v, k in re.findall(
+        r"(\d+) (passed|failed|skipped|deselected|errors?|xfailed|xpassed)",
+        summary[-1] if summary else "")}
+    return {"plunit_tests": int(m.group(1)) if m else None,
+            "plunit_failed": int(m.group(2)) if m else None, "pytest": pytest}
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -53,12 +74,12 @@ def main(argv: list[str] | None = None) -> int:
     env["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT), str(HERE),
                                                     env.get("PYTHONPATH")) if p)
     load_before = os.getloadavg()
-    prolog = timed(["swipl", "--on-warning=status", "-q", "-g", "run_all", "-t", "halt",
+    prolog, prolog_out = timed(["swipl", "--on-warning=status", "-q", "-g", "run_all", "-t", "halt",
                     "tests/prolog/run_tests.pl"], env)
     with tempfile.NamedTemporaryFile(suffix=".jsonl", delete=False) as tmp:
         lines_path = Path(tmp.name)
     env["CREATIVE_TEST_CPU"] = str(lines_path)
-    python = timed([sys.executable, "-m", "pytest", "-q", "-m", "not slow", "-n", "auto",
+    python, python_out = timed([sys.executable, "-m", "pytest", "-q", "-m", "not slow", "-n", "auto",
                     "-p", "_test_cpu"], env)
     load_after = os.getloadavg()
     tests = [json.loads(line) for line in lines_path.read_text().splitlines()]
@@ -73,6 +94,7 @@ def main(argv: list[str] | None = None) -> int:
         "at": datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ"),
         "label": args.label,
         "cpus": os.cpu_count(),
+        "counts": counts(prolog_out, python_out),
         "load_average_before": [round(x, 2) for x in load_before],
         "load_average_after": [round(x, 2) for x in load_after],
         "prolog": prolog,
@@ -86,8 +108,8 @@ def main(argv: list[str] | None = None) -> int:
     previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
     history = previous.get("history", [])
     if previous.get("latest"):
-        history.append({k: previous["latest"][k] for k in
-                        ("at", "label", "load_average_before", "load_average_after",
+        history.append({k: previous["latest"].get(k) for k in
+                        ("at", "label", "counts", "load_average_before", "load_average_after",
                          "prolog", "python", "total_wall_s", "total_cpu_s")})
     RESULTS.write_text(json.dumps({
         "what": "make test (plunit, then pytest -m 'not slow' -n auto): wall and CPU "

@@ -3,15 +3,12 @@
 Each marked block ``<!-- figures:NAME -->`` of ``README.md`` is regenerated in memory by
 ``bench/readme_figures.py`` from ``bench/results/*.json`` and compared with the README;
 a block that differs, is missing or is written twice fails, naming the block (run
-``make readme-figures`` after re-running a benchmark). The one exception: while
-``bench/test_suite_bench.py`` runs ``make test`` to measure it, the ``test-suite``
-block (that measurement) is not checked.
+``make readme-figures`` after re-running a benchmark, ``bench/test_time.py`` included).
 """
 
 from __future__ import annotations
 
 import importlib.util
-import os
 from pathlib import Path
 
 import pytest
@@ -33,9 +30,6 @@ README = (ROOT / "README.md").read_text(encoding="utf-8")
 
 @pytest.mark.parametrize("name", sorted(FIGURES.BLOCKS))
 def test_the_readme_block_equals_its_figures(name):
-    if name == "test-suite" and os.environ.get("CREATIVE_TEST_SUITE_BENCH"):
-        pytest.skip("bench/test_suite_bench.py is measuring this suite: its block is "
-                    "written after the run")
     want = FIGURES.BLOCKS[name]().rstrip("\n")
     have = FIGURES.blocks_in(README).get(name, [])
     assert len(have) == 1, (f"README block {name}: found {len(have)} times, want once "

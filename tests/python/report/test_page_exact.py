@@ -56,6 +56,9 @@ MANIFEST = {
 
 SUMMARY = {
     "case": "hook", "seed": 3, "phase": "all", "options": {"strategy": "paper"},
+    # the case's facts a run writes for the reports (learning/run.py)
+    "pose_units": {"dx": "m", "dy": "m", "roll": "rad"}, "trial_budget": 12,
+    "paper_trials": 12,
     "demonstration": {"tool": "hook_a2"},
     "use": {"trials": 1, "stop": "budget", "strategy": "paper"},
     "eval": {"trials": 1, "successes": 1},
