@@ -16,12 +16,12 @@ The world folder of a ManiSkill case holds ``case.toml`` (``backend = "maniskill
     radius = 0.6             # ManiSkill's evaluate() threshold, cube to base in xy, m
 
     [video]                  # optional: the trial clips' camera (maniskill/recorder.py)
-    eye = [0.35, -1.0, 0.75]
-    target = [-0.15, -0.05, 0.0]
+    eye = [0.25, -1.15, 0.95]
+    target = [-0.3, 0.0, 0.05]
     fov_deg = 55.0
     width = 320
     height = 240
-    fps = 10.0               # frames per second of simulated time
+    fps = 5.0                # frames per second of simulated time
 
 A variant's ``set`` may give ``cube_dx``: how much farther along +x than ManiSkill
 draws it the cube starts (metres). Errors name the file and the field.
