@@ -104,3 +104,12 @@ def test_video_table_errors_name_the_file_and_field(tmp_path):
     tasks.write_text(tasks.read_text().replace("fps = 5.0", "fps = 50.0"))
     with pytest.raises(WorldFileError, match=r"tasks.toml: field 'video.fps': must be <= 20"):
         load_world(read_manifest(folder))
+
+
+def test_recorder_and_camera_have_the_protocol_s_members(world):
+    """The backend's recorder and the world's camera offer what ClipKeeper uses."""
+    from creative_py.simulator import ClipCamera, ClipRecorder
+    from tests.python.test_simulator_registry import signature_mismatches
+
+    assert signature_mismatches(ClipCamera, world.video) == []
+    assert signature_mismatches(ClipRecorder, recorder(world.video)) == []
