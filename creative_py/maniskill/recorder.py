@@ -15,7 +15,7 @@ poses, the steps) was taken before. SAPIEN renders through Vulkan (lavapipe on t
 machine, :func:`creative_py.maniskill.env.vulkan_ready`), whose first frame in a process
 costs seconds (the shaders are compiled once, and kept while an environment that
 used them lives: the last clip's is kept, :data:`_WARM`); later frames cost about
-0.15 s.
+0.05-0.15 s at 320x240.
 
 The frames are rendered in this process even when the caller asks for the background
 (:meth:`Recorder.render_then`): a forked copy of a process whose Vulkan device and
