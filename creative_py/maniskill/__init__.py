@@ -10,6 +10,7 @@ implements :class:`creative_py.simulator.Backend`:
 ``skills``    straight end-effector moves through ManiSkill's ``pd_ee_pose`` controller
 ``world``     the world folder (catalogue, ManiSkill seeds as locations, step budget)
 ``episode``   one episode: skills, perception from the simulator's state, the verdict
+``recorder``  a trial's clip: its states kept while it runs, rendered after the verdict
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ for _package in ("mani_skill", "sapien", "torch", "gymnasium"):
         raise ModuleNotFoundError(f"No module named {_package!r}", name=_package)
 
 from creative_py.maniskill.episode import Episode, open_episode, run_trial, tool_rests
+from creative_py.maniskill.recorder import Recorder, VideoCamera
 from creative_py.maniskill.world import World, load_world
 
 
@@ -45,10 +47,11 @@ def display_reachable() -> Optional[str]:
     return "the maniskill backend runs without a window (SAPIEN's viewer is not used)"
 
 
-def recorder(camera):
-    """No clips on this backend (a world's ``video`` is None, so this is not called)."""
-    raise ValueError("the maniskill backend records no clips")
+def recorder(camera: VideoCamera) -> Recorder:
+    """Return a new, empty recorder of one trial's clip for ``camera`` (a world's
+    ``video``, the ``[video]`` table of its ``tasks.toml``)."""
+    return Recorder(camera)
 
 
-__all__ = ["Episode", "World", "apply_drawn", "display_reachable", "draw_world",
-           "load_world", "open_episode", "recorder", "run_trial", "tool_rests"]
+__all__ = ["Episode", "Recorder", "VideoCamera", "World", "apply_drawn", "display_reachable",
+           "draw_world", "load_world", "open_episode", "recorder", "run_trial", "tool_rests"]

@@ -128,7 +128,8 @@ def _yaw_quat_wxyz(yaw: float) -> list[float]:
 
 
 def make_env(parts=(), mass: float = 0.5, friction: float | None = None,
-             cube_dx: float = 0.0, max_steps: int = 100, render: bool = False):
+             cube_dx: float = 0.0, max_steps: int = 100, render: bool = False,
+             camera: dict | None = None):
     """Return a gymnasium environment of the task on the CPU backend, state observations,
     ManiSkill's end-effector pose controller (``pd_ee_pose``).
 
@@ -146,6 +147,10 @@ def make_env(parts=(), mass: float = 0.5, friction: float | None = None,
         The episode's step limit (ManiSkill's task: 100 control steps at 20 Hz).
     render : bool
         Build the human render camera (``rgb_array``) for clips.
+    camera : dict or None
+        ManiSkill's ``human_render_camera_configs`` (pose, size, field of view) of that
+        camera (:meth:`creative_py.maniskill.recorder.VideoCamera.camera_config`); None:
+        the task's own.
     """
     import gymnasium as gym
 
@@ -153,5 +158,6 @@ def make_env(parts=(), mass: float = 0.5, friction: float | None = None,
     return gym.make(ENV_ID, obs_mode="state", control_mode="pd_ee_pose", sim_backend="cpu",
                     render_mode="rgb_array" if render else None,
                     max_episode_steps=max_steps, tool_parts=parts, tool_mass=mass,
-                    tool_friction=friction, cube_dx=cube_dx)
+                    tool_friction=friction, cube_dx=cube_dx,
+                    **({"human_render_camera_configs": camera} if camera else {}))
 

@@ -72,7 +72,8 @@ class Episode:
     """
 
     def __init__(self, world: World, variant: str, location: int, tool: str, seed: int = 0,
-                 pose_target: Optional[PoseTarget] = None, robot: bool = True) -> None:
+                 pose_target: Optional[PoseTarget] = None, robot: bool = True,
+                 record=None) -> None:
         from creative_py.maniskill.env import make_env
 
         m = world.manifest
@@ -86,11 +87,17 @@ class Episode:
         self.reset_seed = world.seed(location)
         m.variant(variant)
         self.env = make_env(self.spec.parts(), tool_mass(self.item), self.item.friction,
-                            world.cube_dx(variant), world.max_steps)
+                            world.cube_dx(variant), world.max_steps,
+                            render=record is not None,
+                            camera=None if record is None else record.camera.camera_config())
         self.env.reset(seed=self.reset_seed)
         u = self.env.unwrapped
         self.u = u
         self.driver = Driver(self.env, max_steps=world.max_steps)
+        self.record = record
+        if record is not None:  # keeps the states from the reset on; reads only
+            record.attach(self.env, self.sim_time)
+            self.driver.on_record = record.tick
         self.held = False
         self.grasp_offset = np.zeros(3)
         self.grasp_z = 0.0
@@ -287,10 +294,12 @@ class Episode:
 def open_episode(world: World, variant: str, location: int, tool: str, seed: int = 0,
                  gui: bool = False, images_dir=None, pose_target: Optional[PoseTarget] = None,
                  *, robot: bool = True, record=None) -> Iterator[Episode]:
-    """Build ManiSkill's scene for the location's seed and yield an :class:`Episode`."""
+    """Build ManiSkill's scene for the location's seed and yield an :class:`Episode`;
+    with ``record`` (:class:`creative_py.maniskill.recorder.Recorder`) the environment
+    has the clip's camera and the recorder keeps its states from the reset on."""
     if gui:
         raise ValueError("the ManiSkill backend has no window here (no display)")
-    ep = Episode(world, variant, location, tool, seed, pose_target, robot)
+    ep = Episode(world, variant, location, tool, seed, pose_target, robot, record)
     try:
         yield ep
     finally:
@@ -306,11 +315,16 @@ def run_trial(world: World, tool: str, variant: str, location: int,
     Outcomes: every skill ran: ``success``/``failure`` by ``evaluate()["success"]``;
     the step budget ran out before the tool action: ``blocked``; while pulling: the
     verdict decides. ``steps`` of the result counts ManiSkill control steps.
+
+    The result is taken once the physics has given the outcome; then ``verdict(outcome,
+    reason, measured)`` is called inside the episode (where a kept trial's clip is
+    rendered from ``record``); without it, ``record`` is rendered at the end.
     """
     m = world.manifest
     pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
     t0 = time.perf_counter()
-    with open_episode(world, variant, location, tool, seed, pose_target=pose_target) as ep:
+    with open_episode(world, variant, location, tool, seed, pose_target=pose_target,
+                      record=record) as ep:
         facts: tuple = ()
         acted, status = False, SkillOutcome("ok")
         for skill in m.skills:
@@ -328,15 +342,19 @@ def run_trial(world: World, tool: str, variant: str, location: int,
         data = oracle.to_dict()
         data["asked"] = bool(asked)
         wall = time.perf_counter() - t0
-        if verdict is not None:
-            verdict(outcome, reason, data)
-        return TrialResult(
+        result = TrialResult(
             case=m.id, object=tool, variant=variant, location=int(location), pose=tuple(pose),
             outcome=outcome, reason=reason, perceived_final=None, true_final=ep.truth(),
             sim_time_s=ep.sim_time(), wall_time_s=wall, render_time_s=0.0, steps=ep.steps,
             seed=seed, max_tool_force_n=(ep.tool_load or {}).get("max_force_n", 0.0)
             if acted else 0.0, tool_load=ep.tool_load if acted else None,
             facts_before=tuple(facts), verdict=data)
+        # Everything judged is taken: a clip's rendering sets states back from here on.
+        if verdict is not None:
+            verdict(outcome, reason, data)
+        elif record is not None:
+            record.render()
+    return result
 
 
 def _outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:

@@ -56,6 +56,8 @@ class Driver:
     yaw: float = 0.0
     on_step: Optional[Callable[[], None]] = None
     """Called after every control step (the tool action's load monitor), or None."""
+    on_record: Optional[Callable[[], None]] = None
+    """Called after every control step (a clip's recorder, which only reads), or None."""
 
     def __post_init__(self) -> None:
         u = self.env.unwrapped
@@ -71,6 +73,8 @@ class Driver:
         self.steps += 1
         if self.on_step is not None:
             self.on_step()
+        if self.on_record is not None:
+            self.on_record()
 
     def move(self, target: Sequence[float], settle: int = 1,
              step_m: float | None = None) -> bool:

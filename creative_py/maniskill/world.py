@@ -15,6 +15,14 @@ The world folder of a ManiSkill case holds ``case.toml`` (``backend = "maniskill
     [zone]                   # what the robot knows of the goal region (a fixed fact):
     radius = 0.6             # ManiSkill's evaluate() threshold, cube to base in xy, m
 
+    [video]                  # optional: the trial clips' camera (maniskill/recorder.py)
+    eye = [0.25, -1.15, 0.95]
+    target = [-0.3, 0.0, 0.05]
+    fov_deg = 55.0
+    width = 320
+    height = 240
+    fps = 5.0                # frames per second of simulated time
+
 A variant's ``set`` may give ``cube_dx``: how much farther along +x than ManiSkill
 draws it the cube starts (metres). Errors name the file and the field.
 """
@@ -26,6 +34,7 @@ from pathlib import Path
 from typing import Any, Optional
 
 from creative_py.case import CaseManifest
+from creative_py.maniskill.recorder import VideoCamera, read_video
 from creative_py.world import Fields, WorldFileError, load_toml, world_file
 
 VARIANT_VALUES = {"cube_dx": (0.0, 0.5)}
@@ -82,7 +91,9 @@ class World:
     zone_radius: float
     skills: dict[str, tuple[str, dict[str, Any]]]
     variation: str = ""
-    video: Any = None
+    video: Optional[VideoCamera] = None
+    """The clips' camera and frame rate (the ``[video]`` table of ``tasks.toml``), or
+    None: no clip is recorded."""
     env_cache: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
@@ -193,6 +204,7 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
     zf = f.table("zone")
     radius = zf.float("radius", minimum=0.05, maximum=2.0)
     zf.done()
+    video = read_video(f)
     f.done()
     case_file = manifest.folder / "case.toml"
     skills = {}
@@ -222,4 +234,4 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
     if demo.location > len(seeds):
         raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
                              f"{len(seeds)}, got {demo.location}")
-    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills)
+    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills, video=video)
