@@ -480,8 +480,9 @@ def maniskill() -> str:
     seeds = m["seeds"]
     need = m["seeds_needing_tool"]
     lines = [
-        f"`make run CASE=pull_cube_tool` (seed 0, run `{lr['run']}`, "
-        f"{lr['wall_time_s']['total']:.0f} s of wall time): the demonstration with "
+        f"The learning run of `make bench-maniskill` (`creative run pull_cube_tool --seed 0 "
+        f"--video none`, run `{lr['run']}`, {lr['wall_time_s']['total']:.0f} s of wall "
+        f"time; `make run CASE=pull_cube_tool` makes the same run with clips): the demonstration with "
         f"ManiSkill's tool, then {lr['trials']} tool-use trials ({lr['strategy']}, stop "
         f"{lr['stop']}, budget {lr['budget']}; {lr['env_steps']} ManiSkill control steps "
         f"besides the demonstration's). h_g: {_hg_body(lr['hg'])}; the plan takes "
