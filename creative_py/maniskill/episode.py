@@ -33,7 +33,7 @@ import numpy as np
 from creative_py.maniskill.skills import OPEN, Driver, grasp_handle
 from creative_py.maniskill.world import World
 from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
-                                         TrialResult, Verdict)
+                                         TrialResult, Verdict, pose_numbers)
 
 CUBE_HALF_M = 0.02
 """ManiSkill's cube half size in PullCubeTool-v1 (``cube_half_size``), m."""
@@ -140,12 +140,7 @@ class Episode:
         primitive, opts = self.world.skills[name]
         opts = {**opts, **options}
         if binding.pose:
-            if pose is None:
-                raise ValueError(f"skill {name} needs the pose numbers "
-                                 f"({', '.join(self.manifest.pose_names)})")
-            pose = tuple(float(v) for v in pose)
-            if not all(math.isfinite(v) for v in pose):
-                raise ValueError(f"pose numbers must be finite, got {pose}")
+            pose = pose_numbers(name, pose, self.manifest.pose_names)
         monitor = None
         if binding.tool_action:
             from creative_py.maniskill.loads import LoadMonitor

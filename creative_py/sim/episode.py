@@ -48,7 +48,7 @@ from creative_py.sim.recorder import Recorder
 from creative_py.sim.world import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
 from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
-                                         TrialResult, Verdict)
+                                         TrialResult, Verdict, pose_numbers)
 from creative_py.world import PhysicsSettings, WorldFileError
 
 log = logging.getLogger(__name__)
@@ -306,12 +306,7 @@ class Episode:
         binding = self.manifest.skill(name)
         skill = self.world.skills[name]
         if binding.pose:
-            if pose is None:
-                raise ValueError(f"skill {name} needs the pose numbers "
-                                 f"({', '.join(self.manifest.pose_names)})")
-            pose = tuple(float(v) for v in pose)
-            if not all(math.isfinite(v) for v in pose):
-                raise ValueError(f"pose numbers must be finite, got {pose}")
+            pose = pose_numbers(name, pose, self.manifest.pose_names)
         monitor = ToolLoadMonitor(self) if binding.tool_action else None
         if monitor is not None:
             # The largest contact force on the tool while it acts (sim/loads.py).

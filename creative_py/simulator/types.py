@@ -18,8 +18,9 @@ tracking-error guard), ``unreachable`` (no arm posture reaches a waypoint),
 from __future__ import annotations
 
 import json
+import math
 from dataclasses import asdict, dataclass, field
-from typing import Any, Callable, Literal
+from typing import Any, Callable, Literal, Optional, Sequence
 
 from creative_py.records.trial import TRIAL_OUTCOMES  # noqa: F401 - the simulator's vocabulary too
 
@@ -125,6 +126,25 @@ class Verdict:
 
 
 _DECIMALS = {"m": 4, "deg": 1, "rad": 4, "N": 1}
+
+
+def pose_numbers(skill: str, pose: Optional[Sequence[float]],
+                 names: Sequence[str]) -> tuple[float, ...]:
+    """Return the pose numbers a pose skill is given, as floats; what every backend's
+    ``run_skill`` checks before it moves.
+
+    Raises
+    ------
+    ValueError
+        ``pose`` is None (the message names the skill and the pose's ``names``) or a
+        number is not finite.
+    """
+    if pose is None:
+        raise ValueError(f"skill {skill} needs the pose numbers ({', '.join(names)})")
+    numbers = tuple(float(v) for v in pose)
+    if not all(math.isfinite(v) for v in numbers):
+        raise ValueError(f"pose numbers must be finite, got {numbers}")
+    return numbers
 
 
 def _num(v: float, unit: str = "") -> str:
