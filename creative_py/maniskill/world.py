@@ -35,6 +35,7 @@ from typing import Any, Optional
 
 from creative_py.case import CaseManifest
 from creative_py.maniskill.recorder import VideoCamera, read_video
+from creative_py.simulator.catalogue import CatalogueWorld
 from creative_py.world import Fields, WorldFileError, load_toml, world_file
 
 VARIANT_VALUES = {"cube_dx": (0.0, 0.5)}
@@ -64,7 +65,7 @@ class CatalogueItem:
 
 
 @dataclass(frozen=True)
-class World:
+class World(CatalogueWorld):
     """A ManiSkill case's world (see the module docstring for its files).
 
     Attributes
@@ -97,20 +98,9 @@ class World:
     env_cache: dict = field(default_factory=dict, compare=False, repr=False)
 
     @property
-    def catalogue(self) -> dict[str, Any]:
-        """Return ``name -> spec`` of every available object."""
-        return {n: i.spec for n, i in self.items.items()}
-
-    @property
     def locations(self) -> tuple[int, ...]:
         """Return the 1-based indices of the locations (ManiSkill seeds)."""
         return tuple(range(1, len(self.seeds) + 1))
-
-    def item(self, name: str) -> CatalogueItem:
-        """Return the available object ``name``; KeyError listing the others."""
-        if name not in self.items:
-            raise KeyError(f"unknown tool {name!r}; available tools: {', '.join(self.items)}")
-        return self.items[name]
 
     def seed(self, location: int) -> int:
         """Return ManiSkill's reset seed of ``location`` (1-based)."""
@@ -131,10 +121,6 @@ class World:
         friction = next(iter(self.items.values())).friction
         item = CatalogueItem(spec, "created", friction, None, None if urdf is None else Path(urdf))
         return replace(self, items={**self.items, spec.name: item})
-
-    def with_spec(self, name: str, spec: Any) -> "World":
-        """Return this world with the object ``name`` given another spec."""
-        return replace(self, items={**self.items, name: replace(self.items[name], spec=spec)})
 
     def listing(self) -> dict[str, Any]:
         """Return JSON-ready data: objects, locations (seeds), variants, pose, demonstration."""

@@ -52,6 +52,7 @@ from typing import Any, Callable, Mapping, Optional
 import numpy as np
 
 from creative_py.case import CaseManifest
+from creative_py.simulator.catalogue import CatalogueWorld
 from creative_py.world import (Fields, PhysicsSettings, WorldFileError, load_toml,
                                read_physics, world_file)
 
@@ -120,7 +121,7 @@ class SkillSpec:
 
 
 @dataclass(frozen=True)
-class World:
+class World(CatalogueWorld):
     """Everything the simulator needs to build a case's scenes.
 
     Attributes
@@ -157,11 +158,6 @@ class World:
     every cache key that depends on the world's numbers)."""
 
     @property
-    def catalogue(self) -> dict[str, Any]:
-        """Return the candidate tools, ``name -> spec`` (a tool kind's spec)."""
-        return {n: item.spec for n, item in self.items.items()}
-
-    @property
     def locations(self) -> tuple[int, ...]:
         """Return the 1-based indices of the target's predefined locations."""
         return tuple(range(1, len(self.location_sets) + 1))
@@ -171,12 +167,6 @@ class World:
         """Return the camera of the trial clips (``scene.video``,
         :class:`~creative_py.sim.recorder.VideoSpec`), or None."""
         return self.scene.video
-
-    def item(self, name: str) -> CatalogueItem:
-        """Return the catalogued object ``name``; raise listing the available ones."""
-        if name not in self.items:
-            raise KeyError(f"unknown tool {name!r}; available tools: {', '.join(self.items)}")
-        return self.items[name]
 
     def with_tool(self, spec: Any, urdf: Path | None = None) -> "World":
         """Return this world with one more available tool (a created one).
@@ -194,12 +184,6 @@ class World:
         friction = next(iter(self.items.values())).friction
         item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
         return replace(self, items={**self.items, spec.name: item})
-
-    def with_spec(self, name: str, spec: Any) -> "World":
-        """Return this world with the available object ``name`` given ``spec`` (a drawn
-        one), its place in the catalogue, its ``set`` values and friction kept."""
-        item = replace(self.item(name), spec=spec)
-        return replace(self, items={**self.items, name: item})
 
     def listing(self) -> dict[str, Any]:
         """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created

@@ -17,9 +17,12 @@ case's manifest for its backend and talks to it through the protocols of
 Modules:
 
 ``types``       the value types every backend returns (SkillOutcome, Verdict,
-                Observation, TrialResult, Fact) and the PoseTarget it is given
+                Observation, TrialResult, Fact), the PoseTarget it is given and
+                ``pose_numbers`` (the check of a pose skill's numbers)
 ``protocol``    Backend, World, Episode (and CatalogueEntry, ClipCamera, ClipRecorder):
                 typing.Protocol classes, exactly what the learning loop uses
+``catalogue``   CatalogueWorld: a backend world's ``catalogue``, ``item`` and
+                ``with_spec``, written once for every backend
 ``registry``    ``backend(name)``, ``backend_for(manifest)``: the manifest's
                 ``backend`` name to its module, imported on first use (the names:
                 :data:`creative_py.case.BACKENDS`)
