@@ -13,6 +13,7 @@ Usage::
     python bench/mutation.py                                   # everything configured
     python bench/mutation.py --only creative_py/learning/strategies.py \\
         --tests tests/python/learning/test_learning_stop.py --marks "not slow and not sim"
+    python bench/mutation.py --merge ../other-checkout/bench/results/mutation.json
 """
 
 from __future__ import annotations
@@ -150,6 +151,19 @@ def module_results(mutants: Path) -> dict[str, dict]:
     return out
 
 
+def configured_modules() -> list[str]:
+    """Return the source files ``[tool.mutmut] only_mutate`` names that hold code (not
+    an ``__init__.py`` of imports alone), relative to the project."""
+    import tomllib
+    from fnmatch import fnmatch
+
+    globs = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["mutmut"][
+        "only_mutate"]
+    files = sorted(p.relative_to(ROOT).as_posix() for p in (ROOT / "creative_py").rglob("*.py"))
+    return [f for f in files if any(fnmatch(f, g) for g in globs)
+            and "def " in (ROOT / f).read_text()]
+
+
 def _score(counts: dict, equivalent: int) -> float | None:
     """Return killed / (checked mutants less the equivalent ones)."""
     checked = sum(counts[k] for k in ("killed", "survived", "timeout", "suspicious",
@@ -204,10 +218,16 @@ def main(argv: list[str] | None = None) -> int:
                         help="keep mutants/ and mutmut's results of the last run (only "
                              "with the same --only: mutmut does not mutate again a "
                              "file it copied unmutated)")
+    parser.add_argument("--merge", action="append", default=[], type=Path,
+                        help="run nothing: take the modules and history of another "
+                             "results file (a narrowed run made in another checkout); a "
+                             "module recorded in both keeps its later run (repeatable)")
     parser.add_argument("--summarise", action="store_true",
                         help="run nothing: recompute the totals and the equivalent "
                              "mutants of the recorded modules")
     args = parser.parse_args(argv)
+    if args.merge:
+        args.summarise = True
     if not args.reuse and not args.summarise:
         shutil.rmtree(ROOT / "mutants", ignore_errors=True)
     start = time.monotonic()
@@ -221,6 +241,14 @@ def main(argv: list[str] | None = None) -> int:
         modules = {k: v for k, v in modules.items() if any(fnmatch(k, p) for p in args.only)}
     previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
     merged = dict(previous.get("modules", {}))
+    history = list(previous.get("history", []))
+    for other in args.merge:
+        theirs = json.loads(other.read_text())
+        for source, entry in theirs.get("modules", {}).items():
+            if source not in merged or entry["run"]["at"] > merged[source]["run"]["at"]:
+                merged[source] = entry
+        history += [h for h in theirs.get("history", []) if h not in history]
+    history.sort(key=lambda h: h["at"])
     stamp = datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ")
     for source, entry in modules.items():
         entry["run"] = {"at": stamp, "tests": args.tests or "pyproject [tool.mutmut]",
@@ -241,11 +269,14 @@ def main(argv: list[str] | None = None) -> int:
         "configured": "pyproject.toml [tool.mutmut]: creative_py/learning/, "
                       "creative_py/case.py, creative_py/report/",
         "modules_covered": sorted(merged),
+        # Configured modules with code to mutate that no recorded run covers: the total
+        # is not the whole configured score while this list is not empty.
+        "modules_not_run": [m for m in configured_modules() if m not in merged],
         "total": totals,
         "modules": merged,
         "equivalent": {k: v for k, v in EQUIVALENT.items()
                        if any(k in m["equivalent"] for m in merged.values())},
-        "history": previous.get("history", []) + ([] if args.summarise else [{
+        "history": history + ([] if args.summarise else [{
             "at": stamp, "only": args.only or "all configured", "label": args.label,
             "tests": args.tests or "pyproject [tool.mutmut]", "marks": args.marks or "not slow",
             "seconds": round(time.monotonic() - start),

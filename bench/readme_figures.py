@@ -815,9 +815,13 @@ def mutation_table() -> str:
                     f"{m['survived']} | {m['no_tests']} | {score} | {before} |")
     t = d["total"]
     reached = t["killed"] + t["survived"] + t["timeout"] + t["suspicious"]
+    missing = d.get("modules_not_run", [])
     return ("\n".join(rows) + f"\n\nOver the {len(d['modules'])} modules: {t['killed']} "
             f"of {reached} reached mutants killed, {t['equivalent']} survivors equivalent, "
-            f"{t['no_tests']} not reached by a quick test.")
+            f"{t['no_tests']} not reached by a quick test: "
+            f"{t['score_non_equivalent'] * 100:.1f} % of the non-equivalent mutants killed. "
+            + (f"Not run yet: {', '.join(f'`{m}`' for m in missing)}." if missing
+               else "Every configured module has a recorded run."))
 
 
 @block("test-suite")
