@@ -118,9 +118,10 @@ def test_the_page_of_a_full_run_exact(tmp_path):
 def test_the_page_of_a_run_still_going_exact(tmp_path):
     run = tmp_path / "going"
     run.mkdir()
-    # the last line torn, as a run killed while writing it leaves it
+    # a line that is no trial record, and the last line torn, as a run killed while
+    # writing it leaves it: each a warning on the page
     (run / "trials.jsonl").write_text("".join(json.dumps(t) + "\n" for t in TRIALS)
-                                      + '{"trial": 3, "pha')
+                                      + '{"trial": 3}\n{"trial": 4, "pha')
     path = write_html_report(run)
     assert path == run / "report.html"
     assert path.read_text(encoding="utf-8") == _expected("page_going.html", run)
