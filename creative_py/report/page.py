@@ -124,7 +124,6 @@ def write_html_report(run_dir: Path | str) -> Path:
 def render_html(run: RunContents) -> str:
     """Return the page of a run folder's contents as HTML text."""
     s = run.summary
-    case = s.get("case", "")
     title = f"CREATIVE-py run {run.path.name}"
     sections = [
         ("trials", "Trials", _trials_section(run)),
@@ -137,7 +136,7 @@ def render_html(run: RunContents) -> str:
     body = "".join(f'<section id="{key}"><h2>{escape(label)}</h2>{html}</section>'
                    for key, label, html in sections)
     subtitle = " · ".join(escape(x) for x in (
-        f"case {case}" if case else "", f"seed {s['seed']}" if "seed" in s else "",
+        f"case {s['case']}" if s.get("case") else "", f"seed {s['seed']}" if "seed" in s else "",
         f"phase {s['phase']}" if "phase" in s else "") if x)
     warnings = ""
     if not (run.path / "summary.json").is_file():
@@ -208,7 +207,7 @@ def _trials_section(run: RunContents) -> str:
                 cells.append(f'<td class="col-{header}"><code>{_breakable(text)}</code></td>')
             else:
                 cells.append(f'<td class="col-{escape(header)}">{escape(text)}</td>')
-        rows.append(f'<tr class="trial {escape(str(t.get("outcome", "")))}">{"".join(cells)}</tr>')
+        rows.append(f'<tr class="trial {escape(t.outcome)}">{"".join(cells)}</tr>')
     rows.append(predicted)
     return (plot + f'<div class="panel"><table class="trials"><thead><tr>{head}</tr></thead>'
             f'<tbody>{"".join(rows)}</tbody></table></div>')
@@ -553,8 +552,10 @@ def _pddl_html(root: Path, task: str, answer: dict[str, Any]) -> str:
 # --- small pieces ---------------------------------------------------------------------
 
 def _url(rel: str) -> str:
-    """A relative path as an escaped URL attribute value."""
-    return escape(quote(rel), quote=True)
+    """A relative path as a URL attribute value: percent-encoded, which leaves no
+    character that HTML would need escaped (``&``, ``<``, ``>`` and quotes become
+    ``%26``, ``%3C``, ``%3E``, ``%22``, ``%27``)."""
+    return quote(rel)
 
 
 def _breakable(text: str) -> str:

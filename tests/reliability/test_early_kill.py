@@ -24,7 +24,13 @@ def uninterrupted(tmp_path_factory) -> Path:
 
 
 @pytest.mark.sim
-@pytest.mark.parametrize("sig", [signal.SIGKILL, signal.SIGTERM])
+@pytest.mark.parametrize("sig", [
+    signal.SIGKILL,
+    # The run catches no SIGTERM (no handler in creative_py; with the engine and pybullet
+    # loaded the process catches SIGINT and SIGUSR2 only): it ends at once, as under
+    # SIGKILL, and leaves the same folder. The quick suite checks SIGKILL's.
+    pytest.param(signal.SIGTERM, marks=pytest.mark.slow),
+])
 def test_a_run_killed_during_the_demonstration_resumes(uninterrupted, tmp_path, sig):
     proc = creative("run", "rake", "--out", str(tmp_path), *SHORT)
     wait_for(lambda: list(tmp_path.glob("*/run.json")))

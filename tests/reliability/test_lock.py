@@ -12,7 +12,7 @@ import textwrap
 
 import pytest
 
-from _runs import SHORT, creative, one_error_line, run_cli, trials, wait_for
+from _runs import creative, one_error_line, run_cli, trials, wait_for
 from creative_py.records.folder import FolderInUse, RunFolder
 
 HOLD = textwrap.dedent("""
@@ -73,7 +73,9 @@ def test_resuming_a_folder_in_use_is_refused_in_one_line(tmp_path):
 def test_resumed_twice_at_once_one_is_refused(tmp_path):
     """Two resumes of the same folder at once: one runs it, the other is refused at
     once; the trials are written once."""
-    first = creative("run", "rake", "--out", str(tmp_path), *SHORT, "--video", "none")
+    # two tool-use trials and no evaluation: the resume that runs has one trial to do
+    first = creative("run", "rake", "--out", str(tmp_path), "--phase", "use",
+                     "--max-trials", "2", "--eval-trials", "0", "--video", "none")
     wait_for(lambda: list(tmp_path.glob("*/trials.jsonl")))
     first.kill()  # killed after its first trial
     first.communicate()

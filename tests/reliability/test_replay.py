@@ -143,8 +143,11 @@ def test_resuming_a_finished_run_keeps_its_clips_and_wall_times(finished, tmp_pa
 def test_a_resumed_run_keeps_the_replayed_clips_entries(finished, tmp_path):
     run = _copy(finished, tmp_path / "cut")
     lines = (run / "trials.jsonl").read_text().splitlines()
-    (run / "trials.jsonl").write_text("\n".join(lines[:2]) + "\n")
-    (run / "summary.json").unlink()  # as a run killed after its second trial leaves it
+    # as a run killed after its last tool-use trial leaves it: the resume replays the
+    # three trials (and their clips' entries) and runs the evaluation trial (a resume
+    # within a phase is test_resume_quick.py's and test_lock.py's)
+    (run / "trials.jsonl").write_text("\n".join(lines[:3]) + "\n")
+    (run / "summary.json").unlink()
     before = json.loads((finished / "summary.json").read_text())
     proc = run_cli("run", "rake", "--resume", str(run))
     assert proc.returncode == 0, proc.stderr[-2000:]
@@ -155,4 +158,4 @@ def test_a_resumed_run_keeps_the_replayed_clips_entries(finished, tmp_path):
         assert v["frames"] == kept[v["file"]]["frames"], v
         assert v["duration_s"] == kept[v["file"]]["duration_s"], v
     # The replayed trials' records are the recorded ones, timings included.
-    assert (run / "trials.jsonl").read_text().splitlines()[:2] == lines[:2]
+    assert (run / "trials.jsonl").read_text().splitlines()[:3] == lines[:3]

@@ -1,5 +1,6 @@
-"""`creative make-tool --no-slice` says when the tool cannot be printed, and that no
-slicer checked the pieces when it can."""
+"""`creative make-tool --no-slice` says when the tool cannot be printed (that no slicer
+checked the pieces when it can: test_bad_input.py's make-tool test, whose tools are made
+with --no-slice)."""
 
 import subprocess
 import sys
@@ -21,10 +22,3 @@ def test_a_tool_that_no_printer_bed_takes_is_a_warning(tmp_path):
                      "46.5 x 18.0 mm; cut across its x axis into up to 8 parts, some part "
                      "still does not fit the 20 x 20 x 20 mm build volume"]
 
-
-def test_unsliced_pieces_are_said_to_be_unchecked(tmp_path):
-    proc, lines = _make_tool(tmp_path)
-    assert proc.returncode == 0, proc.stderr
-    assert lines == ["warning: new_tool: 3 printed piece(s) written but not sliced "
-                     "(--no-slice): no slicer has checked them"]
-    assert not list(tmp_path.rglob("*.gcode"))

@@ -52,7 +52,12 @@ def _drawn(engine, case, seed):
 @pytest.mark.parametrize("case", CASES)
 def test_same_seed_same_world_and_different_seeds_differ(engine, case):
     world = load_world(load_cases()[case])
-    a, b = _drawn(engine, case, 0), draw_catalogue_world(engine, world, 0)
+    a = _drawn(engine, case, 0)
+    # The second draw runs the demonstration (physics, the dearest part) only where the
+    # first one needed a redraw (paddle_tube's seed 0): when the first demonstration
+    # reaches the goal, draw_world returns the draw as it stands, so the check changes
+    # nothing in the world and the same sampler code is compared without it.
+    b = draw_catalogue_world(engine, world, 0, check_demonstration=a["redraws"] > 0)
     assert a == b
     c = _drawn(engine, case, 1)
     assert c["objects"] != a["objects"]

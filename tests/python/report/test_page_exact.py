@@ -7,7 +7,9 @@ trial, clips kept and missing, a created tool with its print pieces, placements,
 and other figures, the hypotheses, Prolog's plan and PDDL answers that agree and that do
 not) and a bare one (trials only, as a run still going). A change of the page shows as
 a failing test here: read the new page, then record it again by hand, e.g.
-``render_html(read_run(folder)).replace(str(folder), "{RUN}")``.
+``render_html(read_run(folder)).replace(str(folder), "{RUN}")`` with the style sheet
+written ``{CSS}``: the recorded pages hold every byte the page's code writes, and the
+CSS, a constant, stays in ``page.py`` alone.
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from test_report_contents_exact import CREATED, TRIALS, _folder  # noqa: E402
 
 from creative_py.report.contents import read_run  # noqa: E402
-from creative_py.report.page import render_html, write_html_report  # noqa: E402
+from creative_py.report.page import _CSS, render_html, write_html_report  # noqa: E402
 
 FIXTURES = Path(__file__).resolve().parents[2] / "fixtures" / "report"
 
@@ -104,7 +106,8 @@ def _full(root: Path) -> Path:
 
 
 def _expected(name: str, run: Path) -> str:
-    return (FIXTURES / name).read_text(encoding="utf-8").replace("{RUN}", str(run))
+    page = (FIXTURES / name).read_text(encoding="utf-8")
+    return page.replace("{CSS}", _CSS).replace("{RUN}", str(run))
 
 
 def test_the_page_of_a_full_run_exact(tmp_path):
@@ -115,7 +118,10 @@ def test_the_page_of_a_full_run_exact(tmp_path):
 def test_the_page_of_a_run_still_going_exact(tmp_path):
     run = tmp_path / "going"
     run.mkdir()
-    (run / "trials.jsonl").write_text("".join(json.dumps(t) + "\n" for t in TRIALS))
+    # a line that is no trial record, and the last line torn, as a run killed while
+    # writing it leaves it: each a warning on the page
+    (run / "trials.jsonl").write_text("".join(json.dumps(t) + "\n" for t in TRIALS)
+                                      + '{"trial": 3}\n{"trial": 4, "pha')
     path = write_html_report(run)
     assert path == run / "report.html"
     assert path.read_text(encoding="utf-8") == _expected("page_going.html", run)

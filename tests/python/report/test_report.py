@@ -108,18 +108,17 @@ class Dom(HTMLParser):
 
 
 def _open_in_chromium(page: Path, tmp: Path) -> tuple[Dom, np.ndarray]:
-    """Return the DOM Chromium builds from ``page`` and its 1280 x 2000 screenshot."""
-    base = [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--hide-scrollbars",
-            f"--user-data-dir={tmp / 'chromium-profile'}"]
-    url = page.resolve().as_uri()
-    dom = subprocess.run(base + ["--dump-dom", url], capture_output=True, text=True,
-                         timeout=120, cwd=tmp)
-    assert dom.returncode == 0 and "<html" in dom.stdout, dom.stderr[-2000:]
+    """Return the DOM Chromium builds from ``page`` and its 1280 x 2000 screenshot (one
+    Chromium: the DOM on stdout, the screenshot in a file)."""
     shot = tmp / "screenshot.png"
-    proc = subprocess.run(base + [f"--screenshot={shot}", "--window-size=1280,2000", url],
+    proc = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu",
+                           "--hide-scrollbars", f"--user-data-dir={tmp / 'chromium-profile'}",
+                           "--dump-dom", f"--screenshot={shot}", "--window-size=1280,2000",
+                           page.resolve().as_uri()],
                           capture_output=True, text=True, timeout=120, cwd=tmp)
-    assert proc.returncode == 0 and shot.is_file(), proc.stderr[-2000:]
-    return Dom(dom.stdout), imageio.imread(shot)
+    assert proc.returncode == 0 and "<html" in proc.stdout, proc.stderr[-2000:]
+    assert shot.is_file(), proc.stderr[-2000:]
+    return Dom(proc.stdout), imageio.imread(shot)
 
 
 def _local_file(folder: Path, src: str) -> Path:
@@ -131,40 +130,45 @@ def _local_file(folder: Path, src: str) -> Path:
     return path
 
 
-_PROBE = """<!DOCTYPE html><html><body data-state="waiting">
-<video id="v" muted preload="auto" src="{src}"></video>
+_PROBE = """<!DOCTYPE html><html><body>
+{videos}
 <script>
-const v = document.getElementById("v");
-v.addEventListener("loadeddata", () => {{
-  document.body.dataset.state = "loaded " + v.videoWidth + "x" + v.videoHeight; }});
-v.addEventListener("error", () => {{
-  document.body.dataset.state = "error " + (v.error && v.error.code); }});
+for (const v of document.querySelectorAll("video")) {{
+  v.dataset.state = "waiting";
+  v.addEventListener("loadeddata", () => {{
+    v.dataset.state = "loaded " + v.videoWidth + "x" + v.videoHeight; }});
+  v.addEventListener("error", () => {{
+    v.dataset.state = "error " + (v.error && v.error.code); }});
+}}
 </script></body></html>
 """
-"""A test page (not the report, which has no script) that says whether Chromium's own
-decoder loads a clip's first frame."""
+"""A test page (not the report, which has no script) that says of each clip whether
+Chromium's own decoder loads its first frame."""
 
 
-def _assert_plays(mp4: Path, tmp: Path) -> None:
-    """The clip plays: Chromium loads its first frame, and imageio's ffmpeg decodes
-    frames of a picture, not all one colour."""
+def _assert_plays(mp4s: list[Path], tmp: Path) -> None:
+    """Each clip plays: Chromium (one instance for them all) loads its first frame, and
+    imageio's ffmpeg decodes frames of a picture, not all one colour."""
     probe = tmp / "probe.html"
-    probe.write_text(_PROBE.format(src=mp4.resolve().as_uri()))
+    probe.write_text(_PROBE.format(videos="\n".join(
+        f'<video muted preload="auto" src="{mp4.resolve().as_uri()}"></video>'
+        for mp4 in mp4s)))
     proc = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu",
                            f"--user-data-dir={tmp / 'chromium-profile'}",
                            "--virtual-time-budget=10000", "--dump-dom", probe.as_uri()],
                           capture_output=True, text=True, timeout=120, cwd=tmp)
-    state = Dom(proc.stdout).elements
-    states = [a.get("data-state") for t, a in state if t == "body"]
-    assert states and states[0].startswith("loaded "), (mp4, states, proc.stderr[-1000:])
-    reader = imageio.get_reader(mp4)
-    try:
-        frames = [frame for _, frame in zip(range(5), reader)]
-    finally:
-        reader.close()
-    assert frames, f"{mp4}: no frame decodes"
-    assert frames[0].ndim == 3 and frames[0].shape[0] >= 64 and frames[0].shape[1] >= 64
-    assert frames[0].std() > 1.0, f"{mp4}: the first frame is one colour"
+    states = [a.get("data-state") for t, a in Dom(proc.stdout).elements if t == "video"]
+    assert len(states) == len(mp4s), (states, proc.stderr[-1000:])
+    for mp4, state in zip(mp4s, states):
+        assert state and state.startswith("loaded "), (mp4, state, proc.stderr[-1000:])
+        reader = imageio.get_reader(mp4)
+        try:
+            frames = [frame for _, frame in zip(range(5), reader)]
+        finally:
+            reader.close()
+        assert frames, f"{mp4}: no frame decodes"
+        assert frames[0].ndim == 3 and frames[0].shape[0] >= 64 and frames[0].shape[1] >= 64
+        assert frames[0].std() > 1.0, f"{mp4}: the first frame is one colour"
 
 
 def _assert_not_blank(screenshot: np.ndarray) -> None:
@@ -255,8 +259,7 @@ def test_the_runs_own_clips_are_on_the_page_and_play(real_run, real_page, tmp_pa
     assert all("controls" in a for a in controls)
     sources = dom.sources("video")
     assert sorted(unquote(s) for s in sources) == sorted(v["file"] for v in videos)
-    for src in sources:
-        _assert_plays(_local_file(real_run, src), tmp_path)
+    _assert_plays([_local_file(real_run, src) for src in sources], tmp_path)
 
 
 @needs_chromium
@@ -280,7 +283,7 @@ def test_a_moved_folder_shows_its_clips_from_the_videos_folder(real_run, tmp_pat
     _creative("report", str(moved), "--html")
     dom, screenshot = _open_in_chromium(moved / "report.html", tmp_path)
     assert dom.sources("video") == ["videos/frames.mp4"]
-    _assert_plays(_local_file(moved, "videos/frames.mp4"), tmp_path)
+    _assert_plays([_local_file(moved, "videos/frames.mp4")], tmp_path)
     assert "trials.png" in dom.sources("img")
     _assert_not_blank(screenshot)
 

@@ -16,7 +16,10 @@ def _trial_json(args):
 
 
 @pytest.mark.parametrize("args", [
-    ["hook", "--tool", "hook_a2", "--location", "2", "--seed", "7"],
+    # The quick suite checks the hook's trial across processes in test_cli_trial.py
+    # (test_a_trial_in_another_process_is_bit_identical: the same keys and the pose).
+    pytest.param(["hook", "--tool", "hook_a2", "--location", "2", "--seed", "7"],
+                 marks=pytest.mark.slow),
     ["wedge", "--object", "wedge_a2", "--seed", "7"],
 ])
 def test_same_seed_same_trial_in_two_processes(args):
