@@ -362,6 +362,20 @@ def test_size_tool_renames_an_atom_tool_and_keeps_other_objects(engine):
         "stick", ("stick(y)", "handle_length(y,short)"), 0.175)
 
 
+def test_size_tool_gives_the_cases_first_kind_when_no_literal_names_one(engine):
+    hook = size_tool(engine, "hook", [C("hook_like", Var("T")),
+                                      C("handle_length", Var("T"), "short")], [], "z")
+    assert (hook.kind, hook.literals, hook.dims) == (
+        "hook", ("hook_like(z)", "handle_length(z,short)"),
+        {"handle_length": 0.175, "handle_width": 0.018, "hook_length": 0.03,
+         "hook_width": 0.012, "hook_angle_deg": 90, "hook_side": "right"})
+    block = size_tool(engine, "wedge", [C("block_length", "w", "short")], [], "z")
+    assert (block.kind, block.literals, block.dims) == (
+        "block", ("block_length(z,short)",),
+        {"length": 0.05, "width": 0.085, "height": 0.0475, "tip_height": 0.0024,
+         "shape": "triangular_prism"})
+
+
 def test_size_tool_names_a_minimal_conflict_in_one_line(engine):
     cases = [
         ("hook", "handle_length=long", [C("max_tool_length", 0.3)], "hb",
