@@ -100,6 +100,15 @@ EQUIVALENT = {
         "every call of r() in to_dict names its digits: the default is never used",
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
+    # creative_py/learning/manufacture.py
+    **{f"creative_py.learning.manufacture.x__did_you_mean__mutmut_{n}":
+       "difflib.get_close_matches lists the best match first whatever n (>= 1) is, and "
+       "only close[0] is used" for n in (7, 9)},
+    "creative_py.learning.manufacture.x_parse_context__mutmut_3":
+        "Prolog reads '[' + blank text + ']' as [], the else branch's value",
+    "creative_py.learning.manufacture.x_tool_vocabulary__mutmut_2":
+        "a process has one engine (Engine refuses a second), so id(None) in place of "
+        "id(engine) keys the same one vocabulary per case",
 }
 """Mutants that no test can kill: the code means the same with them."""
 
