@@ -158,8 +158,9 @@ def _score(counts: dict, equivalent: int) -> float | None:
 
 
 def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
-               marks: str | None = None) -> None:
-    """Run ``mutmut run`` in this process with the configuration narrowed as asked."""
+               marks: str | None = None, names: list[str] | None = None) -> None:
+    """Run ``mutmut run`` in this process with the configuration narrowed as asked
+    (``names``: only the mutants of these names, ``*`` a wildcard)."""
     os.chdir(ROOT)
     import mutmut.configuration as configuration
 
@@ -180,6 +181,7 @@ def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
     from mutmut.__main__ import cli
 
     args = ["run"] + (["--max-children", str(max_children)] if max_children else [])
+    args += names or []
     try:
         cli.main(args, standalone_mode=False)
     except SystemExit as stop:
@@ -200,6 +202,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--max-children", type=int, default=None)
     parser.add_argument("--label", default=None,
                         help="a note stored with the figures (e.g. 'before the new tests')")
+    parser.add_argument("--mutants", action="append", default=[],
+                        help="run only the mutants of this name (repeatable; '*' a "
+                             "wildcard, e.g. 'creative_py.learning.run.x_read_run_json*'); "
+                             "with --reuse, the others keep their results, and a mutant "
+                             "never run counts as not checked")
     parser.add_argument("--reuse", action="store_true",
                         help="keep mutants/ and mutmut's results of the last run (only "
                              "with the same --only: mutmut does not mutate again a "
@@ -214,7 +221,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.summarise:
         modules = {}
     else:
-        run_mutmut(args.only, args.tests, args.max_children, args.marks)
+        run_mutmut(args.only, args.tests, args.max_children, args.marks, args.mutants)
         modules = module_results(ROOT / "mutants")
     if args.only:
         from fnmatch import fnmatch
@@ -247,6 +254,7 @@ def main(argv: list[str] | None = None) -> int:
                        if any(k in m["equivalent"] for m in merged.values())},
         "history": previous.get("history", []) + ([] if args.summarise else [{
             "at": stamp, "only": args.only or "all configured", "label": args.label,
+            **({"mutants": args.mutants} if args.mutants else {}),
             "tests": args.tests or "pyproject [tool.mutmut]", "marks": args.marks or "not slow",
             "seconds": round(time.monotonic() - start),
             "modules": {k: {s: v[s] for s in ("killed", "survived", "timeout",

@@ -21,10 +21,13 @@ from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
 from creative_py.learning.creation import CreatedTool, CreateResult
 from creative_py.learning.run import (
-    RunOptions, _case_facts, _checked_world, _creation_summary, _earlier_summary,
-    _plan_steps, _relative, catalogue_ranges, check_catalogue, check_manifest,
-    read_run_json, require_display, resume_run, run_case)
+    RunOptions, _case_facts, _check_pddl, _checked_world, _created_pddl, _creation_summary,
+    _earlier_summary, _plan_steps, _relative, catalogue_ranges, check_catalogue,
+    check_manifest, read_run_json, require_display, resume_run, run_case)
+from creative_py.learning.trials import TrialRunner
+from creative_py.mesh.slicer import SliceError
 from creative_py.records.folder import read_resume
+from creative_py.report import plot_trials
 from creative_py.simulator import backend_for
 
 RECORDED = Path(__file__).resolve().parents[2] / "fixtures" / "runs" / "hook_s0"
@@ -157,7 +160,10 @@ def test_the_resumed_hook_run_writes_the_recorded_run_again(request):
         "problem_long_tube.pddl": ["(define (problem task_long_tube)",
                                    "  (:domain creative_long_tube)"],
     }
-    assert (run / "trials.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    trials, _ = read_resume(run)
+    plot_trials(trials, run / "expected.png", title="CREATIVE-py, hook case, seed 0")
+    assert (run / "trials.png").read_bytes() == (run / "expected.png").read_bytes()
+    (run / "expected.png").unlink()
     assert (run / "report.html").read_text().startswith("<!DOCTYPE html>")
     assert sorted(p.name for p in (run / "tools" / "hook_new1").glob("hook_new1.*")) == [
         "hook_new1.json", "hook_new1.png", "hook_new1.scad", "hook_new1.sdf",
@@ -336,6 +342,12 @@ def test_relative_names_inside_the_run_folder(tmp_path):
     assert _relative(run, Path("/elsewhere/c.stl")) == "/elsewhere/c.stl"
     assert _relative(run, None) is None
     assert _relative(run, 3) == 3
+
+
+def test_relative_resolves_a_relative_run_folder(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert _relative("run", "run/tools/../a.stl") == "a.stl"
+    assert _relative(Path("run"), str(tmp_path / "run" / "b.stl")) == "b.stl"
 
 
 def _created(run: Path, name: str, print_: dict) -> CreatedTool:
@@ -531,11 +543,136 @@ def test_require_display_without_a_display(monkeypatch, hook_world):
         assert str(err.value) == message
 
 
-def test_a_run_refused_before_its_first_trial_leaves_no_folder(tmp_path):
+def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
+    """A new run writes its ``run.json`` first, and a run stopped before it learned
+    anything leaves no folder behind."""
+    options = RunOptions(phase="use", video="none", world_seed=None)
+    seen = []
+
     def stop(line: str) -> None:
+        seen.append(line)
         if line.startswith("demonstration"):
+            folder = Path(seen[0][len("run folder "):])
+            seen.append(json.loads((folder / "run.json").read_text()))
             raise KeyboardInterrupt
 
     with pytest.raises(KeyboardInterrupt):
-        run_case("hook", tmp_path, RunOptions(phase="use", video="none"), progress=stop)
+        run_case("hook", tmp_path, options, progress=stop, run_name="stopped")
+    assert seen == [f"run folder {tmp_path / 'stopped'}",
+                    "demonstration: the trainer shows the task with hook_a2 (loc 1)",
+                    {"case": "hook", "options": asdict(options), "world": None,
+                     "drawn_world": None}]
     assert list(tmp_path.iterdir()) == []
+
+
+def test_resume_run_warns_of_a_torn_line_and_releases_the_folder(tmp_path, caplog,
+                                                                   hook_world):
+    """The torn last line of a killed run is dropped with a warning; a resume refused
+    after that (here: the world folder declares another case) leaves the folder free."""
+    folder = tmp_path / "run"
+    folder.mkdir()
+    world = hook_world[1].manifest.folder
+    _run_json(folder, {"case": "rake", "options": {"phase": "use"}, "world": str(world)})
+    (folder / "trials.jsonl").write_text('{"trial": 1, "pha', encoding="utf-8")
+    with pytest.raises(ValueError) as err:
+        resume_run(folder)
+    assert str(err.value) == f"{world}/case.toml: declares case 'hook', not 'rake'"
+    assert [(r.name, r.levelname, r.getMessage()) for r in caplog.records] == [
+        ("creative_py.learning.run", "WARNING",
+         f"{folder / 'trials.jsonl'}: line 1 is not a JSON object (Unterminated string "
+         f"starting at): the torn last line of a killed run; dropped")]
+    assert sorted(p.name for p in folder.iterdir()) == [".lock", "run.json", "trials.jsonl"]
+    with pytest.raises(ValueError, match="declares case 'hook'"):
+        resume_run(folder)  # not "in use": the first resume released the folder
+
+
+def test_a_created_model_the_planner_refuses_is_an_error_record(hook_world, tmp_path,
+                                                                 caplog):
+    engine, world = hook_world
+    runner = TrialRunner(engine, world, None)
+    created = CreateResult(variant="long_tube", needed=True, created=[], success=None,
+                           vs=None, trials=[], wall_time_s=0.0)
+    lines = []
+    record = _created_pddl(runner, tmp_path, created, "oops", lines.append)
+    error = "plan_models: error(type_error(action_model,o),_G0)"
+    assert record == {"domain": "domain_long_tube.pddl",
+                      "problem": "problem_long_tube.pddl", "status": "error", "plan": [],
+                      "equals_prolog": False, "planner": "pyperplan",
+                      "variant": "long_tube", "error": error}
+    assert lines == []
+    assert [(r.name, r.levelname, r.getMessage()) for r in caplog.records] == [
+        ("creative_py.learning.run", "WARNING",
+         f"{tmp_path}: the harder task's PDDL was not written: {error}")]
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_created_model_with_no_plan_is_checked_against_pyperplan(hook_world, tmp_path):
+    """No model: Prolog has no plan, and the PDDL files it wrote (named after the
+    variant) have none either; a plan Prolog would give differs from pyperplan's."""
+    engine, world = hook_world
+    runner = TrialRunner(engine, world, None)
+    created = CreateResult(variant="long_tube", needed=True, created=[], success=None,
+                           vs=None, trials=[], wall_time_s=0.0)
+    lines = []
+    record = _created_pddl(runner, tmp_path, created, [], lines.append)
+    no_plan = "no_plan(no_model_achieves([out_of_tube(cube1,tube1)]))"
+    assert record == {"domain": "domain_long_tube.pddl",
+                      "problem": "problem_long_tube.pddl", "status": "unsolvable",
+                      "plan": [], "equals_prolog": True, "planner": "pyperplan",
+                      "prolog_plan": None, "variant": "long_tube", "prolog": no_plan}
+    assert lines == [f"plan (long_tube, created model): {no_plan}",
+                     "pddl problem_long_tube.pddl: unsolvable by pyperplan  (equals "
+                     "Prolog's)"]
+    assert [(tmp_path / n).read_text().split("\n")[:2] for n in
+            ("domain_long_tube.pddl", "problem_long_tube.pddl")] == [
+        ["(define (domain creative_long_tube)", "  (:requirements :strips :typing)"],
+        ["(define (problem task_long_tube)", "  (:domain creative_long_tube)"]]
+    plan = Compound("plan", ([Compound("pick_up", ("hook_a2",))],))
+    record = _check_pddl(tmp_path, "domain_long_tube.pddl", "problem_long_tube.pddl",
+                         plan, "standard", lines.append)
+    assert (record["variant"], record["prolog"], record["equals_prolog"]) == (
+        "standard", "plan([pick_up(hook_a2)])", False)
+    assert lines[2:] == ["pddl problem_long_tube.pddl: unsolvable by pyperplan  "
+                         "(DIFFERS from Prolog's)"]
+
+
+def test_checked_world_refuses_a_create_phase_without_the_slicer(monkeypatch):
+    monkeypatch.setenv("PATH", "")
+    with pytest.raises(SliceError):
+        _checked_world("hook", RunOptions(phase="create"), None, None)
+    with pytest.raises(SliceError):
+        _checked_world("hook", RunOptions(phase="all"), None, None)
+    with pytest.raises(KeyError):  # no slicer needed: the case comes next
+        _checked_world("nocase", RunOptions(phase="use"), None, None)
+
+
+def test_checked_world_reads_back_a_drawn_world(hook_world, tmp_path):
+    world = hook_world[1]
+    order = list(reversed(world.catalogue))
+    drawn = {"seed": 4, "order": order, "objects": {},
+             "locations": [dict(s) for s in world.location_sets]}
+    options = RunOptions(phase="use", world_seed=4)
+    engine, new, back = _checked_world("hook", options, None, drawn)
+    assert (engine, back, list(new.catalogue), new.variation) == (
+        hook_world[0], drawn, order, "world seed 4")
+    with pytest.raises(ValueError) as err:
+        _checked_world("hook", options, None, {**drawn, "order": order[1:]},
+                       tmp_path / "run.json")
+    assert str(err.value) == (
+        f"{tmp_path / 'run.json'}: field 'drawn_world' is not a drawn world of this case "
+        f"(ValueError: world seed 4: the drawn catalogue {sorted(order[1:])} is not the "
+        f"world's {sorted(order)})")
+    with pytest.raises(ValueError) as err:
+        _checked_world("hook", options, None, {"seed": 4})
+    assert str(err.value) == ("run.json: field 'drawn_world' is not a drawn world of this "
+                              "case (KeyError: 'order')")
+    for bad in ({"order": 3}, {"order": order, "objects": 3}, {"order": order, "objects": {
+            "hook_a1": {"colour": 1}}}):
+        with pytest.raises(ValueError, match="^run.json: field 'drawn_world' is not"):
+            _checked_world("hook", options, None, bad)
+
+
+def test_checked_world_asks_for_a_display_under_gui(monkeypatch):
+    monkeypatch.delenv("DISPLAY", raising=False)
+    with pytest.raises(ValueError, match="^--gui: no display"):
+        _checked_world("hook", RunOptions(phase="use", gui=True), None, None)
