@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import copy
 import json
+import shutil
+import time
 from dataclasses import asdict, fields, replace
 from pathlib import Path
 
@@ -19,14 +21,16 @@ import pytest
 
 from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
+from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.creation import CreatedTool, CreateResult
 from creative_py.learning.run import (
     RunOptions, _case_facts, _check_pddl, _checked_world, _created_pddl, _creation_summary,
-    _earlier_summary, _plan_steps, _relative, catalogue_ranges, check_catalogue,
-    check_manifest, read_run_json, require_display, resume_run, run_case)
+    _earlier_summary, _finish, _open_folder, _plan_steps, _relative, _trial_runner,
+    catalogue_ranges, check_catalogue, check_manifest, read_run_json, require_display,
+    resume_run, run_case)
 from creative_py.learning.trials import TrialRunner
 from creative_py.mesh.slicer import SliceError
-from creative_py.records.folder import read_resume
+from creative_py.records.folder import RunFolder, read_resume
 from creative_py.report import plot_trials
 from creative_py.simulator import backend_for
 
@@ -676,3 +680,109 @@ def test_checked_world_asks_for_a_display_under_gui(monkeypatch):
     monkeypatch.delenv("DISPLAY", raising=False)
     with pytest.raises(ValueError, match="^--gui: no display"):
         _checked_world("hook", RunOptions(phase="use", gui=True), None, None)
+
+
+# ---------------------------------------------------------------- the run's steps
+
+def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):
+    folder = tmp_path / "hook_s0"
+    shutil.copytree(RECORDED, folder)
+    trials, lines = read_resume(folder)
+    run = RunFolder.open(folder)
+    try:
+        said = []
+        got = _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
+                           (run, trials, lines), said.append)
+        assert got == (run, trials, lines,
+                       json.loads((RECORDED / "summary.json").read_text()))
+        assert (run.sealed, run.trials) == (True, trials)
+        assert said == [f"resuming {folder}: replaying 19 recorded trials",
+                        f"run folder {folder}"]
+        (folder / "summary.json").unlink()
+        assert _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
+                            (run, [], []), said.append) == (run, [], [], {})
+        assert (run.sealed, run.trials) == (False, [])
+        assert said[2:] == [f"resuming {folder}: replaying 0 recorded trials",
+                            f"run folder {folder}"]
+    finally:
+        run.release()
+
+
+def test_open_folder_of_a_new_run_writes_run_json(tmp_path, hook_world):
+    options = RunOptions(seed=3, world_seed=2)
+    drawn = {"seed": 2}
+    said = []
+    run, replay, lines, before = _open_folder(tmp_path, "hook", options,
+                                              hook_world[1].manifest.folder, drawn,
+                                              "new", None, said.append)
+    try:
+        assert (run.path, replay, lines, before, run.sealed) == (
+            tmp_path / "new", [], [], {}, False)
+        assert said == [f"run folder {tmp_path / 'new'}"]
+        assert json.loads((run.path / "run.json").read_text()) == {
+            "case": "hook", "options": asdict(options),
+            "world": str(hook_world[1].manifest.folder), "drawn_world": drawn}
+    finally:
+        run.release()
+
+
+def test_trial_runner_of_a_run(tmp_path, hook_world):
+    engine, world = hook_world
+    run = RunFolder.create(tmp_path, "hook", 0, "r")
+    trials, lines = read_resume(RECORDED)
+    run.seal(trials)
+    said = []
+    try:
+        runner = _trial_runner(engine, world, run, RunOptions(seed=5, video="all"),
+                               said.append, trials, [n + 10 for n in lines])
+        runner.progress("hello")
+        clips = runner.clips
+        assert (runner.engine, runner.world, runner.run_folder, runner.seed, runner.gui,
+                runner.replay, runner.replay_lines, said) == (
+            engine, world, run, 5, False, trials, list(range(11, 30)), ["hello"])
+        assert (clips.mode, clips.run_dir, clips.spec, clips.background, clips.held,
+                clips.new_recorder) == ("all", run.path, world.video, True, True,
+                                        backend_for(world.manifest).recorder)
+        gui = _trial_runner(engine, world, run, RunOptions(gui=True, video="none"),
+                            said.append, [], [])
+        assert (gui.gui, gui.clips.background, gui.clips.mode, gui.seed) == (
+            True, False, "none", 0)
+    finally:
+        run.release()
+
+
+@pytest.mark.filterwarnings("ignore:No artists with labels found")
+def test_finish_writes_the_summary_plot_and_report(tmp_path, hook_world):
+    """A new run's wall times are measured; a finished run resumed again (``before``)
+    keeps its own."""
+    engine, world = hook_world
+    run = RunFolder.create(tmp_path, "hook", 0, "r")
+    (run.path / "trials.jsonl").write_text("", encoding="utf-8")  # no trial: a quick plot
+    try:
+        runner = TrialRunner(engine, world, run)
+        clips = ClipKeeper("none", run.path, world.video)
+        summary = {"case": "hook", "wall_time_s": {"use": 1.25}}
+        said = []
+        _finish(runner, clips, RunOptions(seed=7), summary, time.perf_counter() - 2.5,
+                said.append, {})
+        total = summary["wall_time_s"]["total"]
+        assert 2.5 <= total < 3.5 and total == round(total, 2)
+        empty = {"trials": 0, "successes": 0, "outcomes": []}
+        assert summary == {"case": "hook",
+                           "wall_time_s": {"use": 1.25, "video": 0.0, "total": total},
+                           "trials": {"use": empty, "create": empty, "eval": empty},
+                           "videos": []}
+        assert json.loads((run.path / "summary.json").read_text()) == summary
+        assert said == [f"done in {total} s: {run.path}"]
+        assert (run.path / "report.html").read_text().startswith("<!DOCTYPE html>")
+        plot_trials([], tmp_path / "expected.png",
+                    title="CREATIVE-py, hook case, seed 7")
+        assert (run.path / "trials.png").read_bytes() == (
+            tmp_path / "expected.png").read_bytes()
+        again = {"wall_time_s": {}}
+        _finish(runner, clips, RunOptions(), again, 0.0, said.append,
+                {"wall_time_s": {"use": 1.0, "total": 9.99}, "case": "x"})
+        assert again["wall_time_s"] == {"use": 1.0, "total": 9.99}
+        assert said[1:] == [f"done in 9.99 s: {run.path}"]
+    finally:
+        run.release()
