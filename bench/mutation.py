@@ -13,6 +13,13 @@ Usage::
     python bench/mutation.py                                   # everything configured
     python bench/mutation.py --only creative_py/learning/strategies.py \\
         --tests tests/python/learning/test_learning_stop.py --marks "not slow and not sim"
+    python bench/mutation.py --reuse --only creative_py/learning/run.py \\
+        --tests tests/python/learning/test_run_exact.py \\
+        --mutants 'creative_py.learning.run.x_read_run_json__mutmut_*'   # some mutants
+
+The score counts the mutants checked; a narrowed run leaves the others ``not_checked``.
+Each mutant runs in a child of mutmut's fork server (``process_isolation``): a child
+forked from a process that has started the Prolog engine cannot use that engine.
 """
 
 from __future__ import annotations
