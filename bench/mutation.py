@@ -14,6 +14,13 @@ Usage::
     python bench/mutation.py --only creative_py/learning/strategies.py \\
         --tests tests/python/learning/test_learning_stop.py --marks "not slow and not sim"
     python bench/mutation.py --merge ../other-checkout/bench/results/mutation.json
+    python bench/mutation.py --reuse --only creative_py/learning/run.py \\
+        --tests tests/python/learning/test_run_exact.py \\
+        --mutants 'creative_py.learning.run.x_read_run_json__mutmut_*'   # some mutants
+
+The score counts the mutants checked; a narrowed run leaves the others ``not_checked``.
+Each mutant runs in a child of mutmut's fork server (``process_isolation``): a child
+forked from a process that has started the Prolog engine cannot use that engine.
 """
 
 from __future__ import annotations
@@ -109,6 +116,18 @@ EQUIVALENT = {
     "creative_py.learning.manufacture.x_tool_vocabulary__mutmut_2":
         "a process has one engine (Engine refuses a second), so id(None) in place of "
         "id(engine) keys the same one vocabulary per case",
+    # creative_py/learning/run.py
+    **{f"creative_py.learning.run.x_read_run_json__mutmut_{n}":
+       "encoding None reads the locale's, UTF-8 on every machine the project runs on; "
+       "'UTF-8' names 'utf-8'" for n in (10, 12)},
+    **{f"creative_py.learning.run.x__earlier_summary__mutmut_{n}":
+       "encoding None reads the locale's, UTF-8 on every machine the project runs on; "
+       "'UTF-8' names 'utf-8'" for n in (3, 8)},
+    "creative_py.learning.run.x_resume_run__mutmut_20":
+        "logging %-formats a message only when it has arguments: log.warning(w) logs w "
+        "as log.warning('%s', w) does",
+    "creative_py.learning.run.x_resume_run__mutmut_25":
+        "run_case uses out only for a new run's folder; a resume's folder is given whole",
 }
 """Mutants that no test can kill: the code means the same with them."""
 
@@ -181,8 +200,9 @@ def _score(counts: dict, equivalent: int) -> float | None:
 
 
 def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
-               marks: str | None = None) -> None:
-    """Run ``mutmut run`` in this process with the configuration narrowed as asked."""
+               marks: str | None = None, names: list[str] | None = None) -> None:
+    """Run ``mutmut run`` in this process with the configuration narrowed as asked
+    (``names``: only the mutants of these names, ``*`` a wildcard)."""
     os.chdir(ROOT)
     import mutmut.configuration as configuration
 
@@ -203,6 +223,7 @@ def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
     from mutmut.__main__ import cli
 
     args = ["run"] + (["--max-children", str(max_children)] if max_children else [])
+    args += names or []
     try:
         cli.main(args, standalone_mode=False)
     except SystemExit as stop:
@@ -223,6 +244,11 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--max-children", type=int, default=None)
     parser.add_argument("--label", default=None,
                         help="a note stored with the figures (e.g. 'before the new tests')")
+    parser.add_argument("--mutants", action="append", default=[],
+                        help="run only the mutants of this name (repeatable; '*' a "
+                             "wildcard, e.g. 'creative_py.learning.run.x_read_run_json*'); "
+                             "with --reuse, the others keep their results, and a mutant "
+                             "never run counts as not checked")
     parser.add_argument("--reuse", action="store_true",
                         help="keep mutants/ and mutmut's results of the last run (only "
                              "with the same --only: mutmut does not mutate again a "
@@ -243,7 +269,7 @@ def main(argv: list[str] | None = None) -> int:
     if args.summarise:
         modules = {}
     else:
-        run_mutmut(args.only, args.tests, args.max_children, args.marks)
+        run_mutmut(args.only, args.tests, args.max_children, args.marks, args.mutants)
         modules = module_results(ROOT / "mutants")
     if args.only:
         from fnmatch import fnmatch
@@ -287,6 +313,7 @@ def main(argv: list[str] | None = None) -> int:
                        if any(k in m["equivalent"] for m in merged.values())},
         "history": history + ([] if args.summarise else [{
             "at": stamp, "only": args.only or "all configured", "label": args.label,
+            **({"mutants": args.mutants} if args.mutants else {}),
             "tests": args.tests or "pyproject [tool.mutmut]", "marks": args.marks or "not slow",
             "seconds": round(time.monotonic() - start),
             "modules": {k: {s: v[s] for s in ("killed", "survived", "timeout",

@@ -414,8 +414,8 @@ def _plan_and_evaluate(runner: TrialRunner, use: UseResult, options: RunOptions,
     """Plan the task with the learned model (``domain.pddl``/``problem.pddl``, solved by
     pyperplan and compared), then evaluate the model on fresh trials."""
     engine, path = runner.engine, runner.run_folder.path
-    task = runner.task(use.trials[-1].variant if use.trials
-                       else runner.manifest.demonstration.variant)
+    # Tool-use learning runs every trial on the demonstration's variant.
+    task = runner.task(runner.manifest.demonstration.variant)
     plan = engine.plan_task(runner.case, use.models, use.vs, runner.task_facts(task),
                             [Compound("pddl", (str(path / "domain.pddl"),
                                                str(path / "problem.pddl")))])
