@@ -347,3 +347,95 @@ def test_the_learned_tool_fails_first_where_the_geometry_cannot_tell(engine, tmp
         "wedge_new1: strength pass (compression, 802.12 N, 0.06 MPa, safety factor 847.75)",
         *[f"EVAL {i:2d}  wedge_new1     loc 1  success     tested -  (replayed)"
           for i in range(1, 6)]]
+
+
+def test_catalogued_objects_out_of_reach_are_not_tried(engine, world, vs):
+    """With the long objects left out, the short ones the generalised model admits are
+    all predicted out of reach: none is tried."""
+    runner, lines, _ = _runner(engine, world, "hook_s0")
+    creator = ToolCreator(runner, catalogue_first=True)
+    out, solved, n = creator._try_catalogue(vs, runner.task("long_tube"),
+                                            ["hook_a2", "hook_a4", "hook_b4", "stick_b5"], 3)
+
+    def entry(tool, reach):
+        why = (f"behind({tool},cube1) cannot hold within the reach of {tool} in the "
+               f"long_tube task: dx_reach = {reach} m (deepest prong centre the held tool "
+               f"reaches, minus the cube centre); the trial would fail, so none is run")
+        return {"tool": tool, "value": f"handle_length({tool},short)",
+                "why": f"catalogued object admitted by any_length(_G0) (the generalised "
+                       f"handle_length(_G0,medium)): handle_length({tool},short)",
+                "predicted": {"tool": tool, "variant": "long_tube", "location": 1,
+                              "feasible": False, "conflict": [f"behind({tool},cube1)"],
+                              "why": why},
+                "trial": None, "outcome": "predicted_unreachable"}, why
+
+    (a1, why1), (b1, why2) = entry("hook_a1", "-0.161"), entry("hook_b1", "-0.178")
+    assert (out, solved, n) == ([a1, b1], None, 3)
+    assert lines == [f"TC catalogue: hook_a1 not tried: {why1}",
+                     f"TC catalogue: hook_b1 not tried: {why2}"]
+    assert runner.trials == _runner(engine, world, "hook_s0")[0].trials
+
+
+def test_no_catalogued_object_when_nothing_can_be_generalised(engine, world):
+    """A model whose h_s has no literal to generalise admits no catalogued object."""
+    runner = TrialRunner(engine, world, None)
+    lone = engine.vs_init(engine.parse("(tool_pose(hook_a2,cube1,tube1) :- "
+                                       "in_tube(hook_a2,tube1))"))
+    creator = ToolCreator(runner, catalogue_first=True)
+    assert creator._try_catalogue(lone, runner.task("long_tube"), [], 4) == ([], None, 4)
+
+
+def test_a_tool_is_manufactured_into_the_run_folder(engine, world, vs, tmp_path):
+    """Sized, written, split, sliced and added to the world: hook_s0's hook_new1 again,
+    and its strength check in its manifest."""
+    from creative_py.learning.strength import check_strength
+    from creative_py.records.folder import RunFolder
+
+    run = RunFolder.create(tmp_path, "hook", 0, "run")
+    try:
+        lines: list[str] = []
+        runner = TrialRunner(engine, world, run, progress=lines.append)
+        creator = ToolCreator(runner)
+        task = runner.task("long_tube")
+        reply = engine.next_tool("hook", vs, [], runner.task_facts(task))
+        struct, dims = reply.args[3], reply.args[4]
+        spec, values, files, mass, printed = creator._manufacture(1, struct, dims)
+    finally:
+        run.release()
+    recorded = json.loads((RUNS / "hook_s0" / "summary.json").read_text(encoding="utf-8"))
+    tool = recorded["create"]["created_tools"][0]
+    folder = run.path / "tools" / "hook_new1"
+    assert (spec.name, values, mass) == ("hook_new1", tool["dims"], tool["mass_kg"])
+    assert files == {k: folder / f"hook_new1.{ext}" for k, ext in (
+        ("urdf", "urdf"), ("sdf", "sdf"), ("scad", "scad"), ("stl", "stl"), ("png", "png"),
+        ("manifest", "json"))}
+    manifest = json.loads(files["manifest"].read_text(encoding="utf-8"))
+    assert printed == print_summary(manifest["print"])
+    entry = {"created_tools": [{"print": printed}], **dict.fromkeys(WALL_TIMES, 0)}
+    recorded_entry = {"created_tools": [{"print": tool["print"]}],
+                      **dict.fromkeys(WALL_TIMES, 0)}
+    assert _without_run_dependent(entry)[0] == _without_run_dependent(recorded_entry)[0]
+    assert runner.world.items["hook_new1"].urdf == files["urdf"]
+    assert runner.world.items["hook_new1"].set == "created"
+    assert lines == [MAKE_1]
+    ct = CreatedTool("hook_new1", "r", "g", "i", [], values, {"urdf": str(files["urdf"])}, "")
+    record = read_resume(RUNS / "hook_s0")[0][LEARNED]
+    creator._record_strength(ct, check_strength(spec, record.tool_load, trial=record.trial,
+                                                safety_factor=2.0))
+    assert ct.strength == tool["strength"]
+    assert json.loads(files["manifest"].read_text(encoding="utf-8"))["strength"] \
+        == tool["strength"]
+
+
+def test_the_learned_tool_solves_a_task_within_its_reach(engine, world, vs, tmp_path):
+    """Creation asked for the standard task: TC trial 1 with the learned model's tool
+    succeeds, and nothing is made."""
+    runner, lines, records = _runner(engine, world, "hook_std_s0")
+    res = ToolCreator(runner).create(vs, "standard")
+    _check(res, vs, records, "hook_std_s0", tmp_path)
+    assert res == CreateResult("standard", False, [], None, vs, records[LEARNED:],
+                               res.wall_time_s, predicted=_recorded("hook_std_s0")["predicted"],
+                               solved_by="learned")
+    assert lines == ["TC predicted: hook_a2: hook_a2 reaches the learned pose in the standard "
+                     "task (e.g. hook_pose(0.0375,0.0,0.0)); the physics decides",
+                     _tc(1, "hook_a2")]
