@@ -111,10 +111,11 @@ def _check(res, vs, records, name, tmp_path, learned=LEARNED):
 
 
 @pytest.mark.slow  # a replay of the tool-use learning (2 to 3 CPU s a case)
-@pytest.mark.parametrize("case, learned, others", [
-    ("hook", 9, ("hook_cf_s0", "hook_cfd_s0", "hook_sf15_s0", "hook_sf1000_s0")),
-    ("wedge", 8, ())])
-def test_the_stored_version_space_is_the_learned_one(engine, case, learned, others):
+@pytest.mark.parametrize("case, learned, before, others", [
+    ("hook", 9, LEARNED, ("hook_cf_s0", "hook_cfd_s0", "hook_sf15_s0", "hook_sf1000_s0",
+                          "hook_std_s0")),
+    ("wedge", 8, 12, ("wedge_cf_s0",))])
+def test_the_stored_version_space_is_the_learned_one(engine, case, learned, before, others):
     """``<case>_s0_vs.txt`` is what replaying the run's tool-use learning gives, and the
     other runs of the case learned as it did."""
     from creative_py.learning.tool_use import LearningOptions, ToolUseLearner
@@ -128,8 +129,8 @@ def test_the_stored_version_space_is_the_learned_one(engine, case, learned, othe
     assert len(runner.trials) == learned
     for name in others:
         other, _ = read_resume(RUNS / name)
-        assert [(r.tool, r.pose, r.outcome, r.hs, r.hg, r.facts) for r in other[:LEARNED]] \
-            == [(r.tool, r.pose, r.outcome, r.hs, r.hg, r.facts) for r in records[:LEARNED]]
+        assert [(r.tool, r.pose, r.outcome, r.hs, r.hg, r.facts) for r in other[:before]] \
+            == [(r.tool, r.pose, r.outcome, r.hs, r.hg, r.facts) for r in records[:before]]
 
 
 def test_a_tool_made_at_once(engine, world, vs, tmp_path):
@@ -439,3 +440,22 @@ def test_the_learned_tool_solves_a_task_within_its_reach(engine, world, vs, tmp_
     assert lines == ["TC predicted: hook_a2: hook_a2 reaches the learned pose in the standard "
                      "task (e.g. hook_pose(0.0375,0.0,0.0)); the physics decides",
                      _tc(1, "hook_a2")]
+
+
+def test_a_catalogued_object_after_the_learned_tool_failed(engine, tmp_path):
+    """Wedge with catalogued objects first: TC trial 1 fails, then the long wedge_a3
+    the generalised model admits solves the big door."""
+    vs = _vs(engine, "wedge")
+    runner, lines, records = _runner(engine, load_world(get_case("wedge")), "wedge_cf_s0", 12)
+    res = ToolCreator(runner, catalogue_first=True).create(vs, "big_door")
+    _check(res, vs, records, "wedge_cf_s0", tmp_path, 12)
+    assert (res.created, res.success, str(res.replaced), str(res.instance)) == (
+        [], None, "block_length(_G0,medium)", "block_length(wedge_a3,long)")
+    assert lines == [
+        "TC predicted: wedge_a2: the case's geometry sets no reach: the pose model cannot "
+        "tell whether wedge_a2 works in the big_door task; the physics decides",
+        "TC    1  wedge_a2       loc 1  failure     tested -  (replayed)",
+        "TC catalogue: trying wedge_a3, catalogued object admitted by any_block_length(_G0) "
+        "(the generalised block_length(_G0,medium)): block_length(wedge_a3,long)",
+        "TC    2  wedge_a3       loc 1  success     tested -  (replayed)",
+        "TC catalogue: wedge_a3 solved the big_door task; no tool is made"]
