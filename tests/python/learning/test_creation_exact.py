@@ -89,6 +89,16 @@ def _runner(engine, world, name, learned=LEARNED):
     lines: list[str] = []
     runner = TrialRunner(engine, world, None, replay=records, progress=lines.append)
     runner.trials = list(records[:learned])
+    # What creation asks of each trial (a replay reads neither the decision time nor,
+    # for these, a label; the physics would: decision time 0, no label).
+    runner.calls = []
+    replay = runner.run
+
+    def run(exp, phase, phase_trial, vs, task, decision, label=True):
+        runner.calls.append((phase, phase_trial, decision, label))
+        return replay(exp, phase, phase_trial, vs, task, decision, label=label)
+
+    runner.run = run
     return runner, lines, records
 
 
@@ -103,10 +113,13 @@ def _recorded(name):
     return entry
 
 
-def _check(res, vs, records, name, tmp_path, learned=LEARNED):
+def _check(res, runner, vs, records, name, tmp_path, learned=LEARNED):
     assert _creation_summary(res, tmp_path) == _recorded(name)
     assert res.vs is vs
     assert res.trials == records[learned:]
+    assert runner.trials == records
+    assert runner.calls == [(r.phase, r.phase_trial, 0.0, False) for r in records[learned:]]
+    assert all(type(c[2]) is float and c[3] is False for c in runner.calls)
     assert 0 < res.wall_time_s < 120
 
 
@@ -136,7 +149,7 @@ def test_the_stored_version_space_is_the_learned_one(engine, case, learned, befo
 def test_a_tool_made_at_once(engine, world, vs, tmp_path):
     runner, lines, records = _runner(engine, world, "hook_s0")
     res = ToolCreator(runner, eval_trials=5).create(vs, "long_tube")
-    _check(res, vs, records, "hook_s0", tmp_path)
+    _check(res, runner, vs, records, "hook_s0", tmp_path)
     assert (res.variant, res.needed, res.solved_by, res.exhausted) == (
         "long_tube", True, "created", None)
     assert res.success is res.created[0]
@@ -157,12 +170,13 @@ def test_no_tool_is_made_when_none_may_be(engine, world, vs, tmp_path):
                                predicted=predicted)
     assert 0 < res.wall_time_s < 60
     assert lines == [PREDICTED]
+    assert runner.calls == []
 
 
 def test_a_catalogued_object_first(engine, world, vs, tmp_path):
     runner, lines, records = _runner(engine, world, "hook_cf_s0")
     res = ToolCreator(runner, catalogue_first=True).create(vs, "long_tube")
-    _check(res, vs, records, "hook_cf_s0", tmp_path)
+    _check(res, runner, vs, records, "hook_cf_s0", tmp_path)
     assert (res.created, res.success, res.exhausted) == ([], None, None)
     assert (str(res.replaced), str(res.instance)) == (
         "handle_length(_G0,medium)", "handle_length(hook_a4,long)")
@@ -174,7 +188,7 @@ def test_a_catalogued_object_first_then_a_tool_as_a_demonstration(engine, world,
                                                                    tmp_path):
     runner, lines, records = _runner(engine, world, "hook_cfd_s0")
     res = ToolCreator(runner, catalogue_first=True, demonstrate=True).create(vs, "long_tube")
-    _check(res, vs, records, "hook_cfd_s0", tmp_path)
+    _check(res, runner, vs, records, "hook_cfd_s0", tmp_path)
     assert res.success is res.created[0]
     assert (str(res.replaced), str(res.instance)) == (
         "handle_length(_G0,medium)", "handle_length(_G0,long)")
@@ -188,7 +202,7 @@ def test_a_catalogued_object_first_then_a_tool_as_a_demonstration(engine, world,
 def test_a_tool_too_weak_is_thickened(engine, world, vs, tmp_path):
     runner, lines, records = _runner(engine, world, "hook_sf15_s0")
     res = ToolCreator(runner, safety_factor=15.0).create(vs, "long_tube")
-    _check(res, vs, records, "hook_sf15_s0", tmp_path)
+    _check(res, runner, vs, records, "hook_sf15_s0", tmp_path)
     assert res.success is res.created[1]
     assert lines == [PREDICTED, MAKE_1, CREATED_1, _tc(1, "hook_new1"), MAKE_2,
                      "hook_new1: safety factor 12.21 < 15 under 0.91 N; thickened into "
@@ -202,7 +216,7 @@ def test_a_tool_too_weak_is_thickened(engine, world, vs, tmp_path):
 def test_a_tool_that_cannot_be_made_strong_enough_is_rejected(engine, world, vs, tmp_path):
     runner, lines, records = _runner(engine, world, "hook_sf1000_s0")
     res = ToolCreator(runner, safety_factor=1000.0).create(vs, "long_tube")
-    _check(res, vs, records, "hook_sf1000_s0", tmp_path)
+    _check(res, runner, vs, records, "hook_sf1000_s0", tmp_path)
     exhausted = _recorded("hook_sf1000_s0")["exhausted"]
     assert exhausted.startswith("[Compound(name='-', args=(Compound(name='handle_length'")
     assert (res.success, res.replaced, res.instance, res.solved_by) == (None, None, None, None)
@@ -333,7 +347,7 @@ def test_the_learned_tool_fails_first_where_the_geometry_cannot_tell(engine, tmp
     vs = _vs(engine, "wedge")
     runner, lines, records = _runner(engine, load_world(get_case("wedge")), "wedge_s0", 12)
     res = ToolCreator(runner, eval_trials=5).create(vs, "big_door")
-    _check(res, vs, records, "wedge_s0", tmp_path, 12)
+    _check(res, runner, vs, records, "wedge_s0", tmp_path, 12)
     assert res.success is res.created[0]
     assert (str(res.replaced), str(res.instance)) == (
         "block_length(_G0,medium)", "block_length(_G0,long)")
@@ -375,6 +389,7 @@ def test_catalogued_objects_out_of_reach_are_not_tried(engine, world, vs):
     assert lines == [f"TC catalogue: hook_a1 not tried: {why1}",
                      f"TC catalogue: hook_b1 not tried: {why2}"]
     assert runner.trials == _runner(engine, world, "hook_s0")[0].trials
+    assert runner.calls == []
 
 
 def test_no_catalogued_object_when_nothing_can_be_generalised(engine, world):
@@ -433,7 +448,7 @@ def test_the_learned_tool_solves_a_task_within_its_reach(engine, world, vs, tmp_
     succeeds, and nothing is made."""
     runner, lines, records = _runner(engine, world, "hook_std_s0")
     res = ToolCreator(runner).create(vs, "standard")
-    _check(res, vs, records, "hook_std_s0", tmp_path)
+    _check(res, runner, vs, records, "hook_std_s0", tmp_path)
     assert res == CreateResult("standard", False, [], None, vs, records[LEARNED:],
                                res.wall_time_s, predicted=_recorded("hook_std_s0")["predicted"],
                                solved_by="learned")
@@ -448,7 +463,7 @@ def test_a_catalogued_object_after_the_learned_tool_failed(engine, tmp_path):
     vs = _vs(engine, "wedge")
     runner, lines, records = _runner(engine, load_world(get_case("wedge")), "wedge_cf_s0", 12)
     res = ToolCreator(runner, catalogue_first=True).create(vs, "big_door")
-    _check(res, vs, records, "wedge_cf_s0", tmp_path, 12)
+    _check(res, runner, vs, records, "wedge_cf_s0", tmp_path, 12)
     assert (res.created, res.success, str(res.replaced), str(res.instance)) == (
         [], None, "block_length(_G0,medium)", "block_length(wedge_a3,long)")
     assert lines == [
