@@ -12,9 +12,11 @@ checked whole: the :class:`CreateResult`, its ``summary.json`` entry and the pro
 lines. The runs cover making a tool at once (``hook_s0``), a catalogued object first
 (``hook_cf_s0``), and then a tool as a demonstration (``hook_cfd_s0``), a tool too weak
 for the load the physics measured, thickened (``hook_sf15_s0``) or rejected until no
-literal is left (``hook_sf1000_s0``). The resumed ``hook_s0`` (the ``resumed_hook``
-fixture) checks what a run folder adds: the tool's files, mass, print and strength
-manifest.
+literal is left (``hook_sf1000_s0``), the learned tool solving the task it is asked
+(``hook_std_s0``) or failing it first where the geometry cannot tell (``wedge_s0``,
+then a catalogued object in ``wedge_cf_s0``). The resumed ``hook_s0`` (the
+``resumed_hook`` fixture) checks what a run folder adds: the tool's files, mass, print
+and strength manifest.
 """
 
 from __future__ import annotations
