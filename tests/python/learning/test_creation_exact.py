@@ -415,6 +415,9 @@ def test_a_tool_is_manufactured_into_the_run_folder(engine, world, vs, tmp_path)
         runner = TrialRunner(engine, world, run, progress=lines.append)
         creator = ToolCreator(runner)
         task = runner.task("long_tube")
+        # A resumed run may have made it before: the tool's folder is replaced.
+        (run.tools_dir() / "hook_new1").mkdir(parents=True)
+        (run.tools_dir() / "hook_new1" / "stale.txt").write_text("before", encoding="utf-8")
         reply = engine.next_tool("hook", vs, [], runner.task_facts(task))
         struct, dims = reply.args[3], reply.args[4]
         spec, values, files, mass, printed = creator._manufacture(1, struct, dims)
@@ -427,6 +430,7 @@ def test_a_tool_is_manufactured_into_the_run_folder(engine, world, vs, tmp_path)
     assert files == {k: folder / f"hook_new1.{ext}" for k, ext in (
         ("urdf", "urdf"), ("sdf", "sdf"), ("scad", "scad"), ("stl", "stl"), ("png", "png"),
         ("manifest", "json"))}
+    assert not (folder / "stale.txt").exists()
     manifest = json.loads(files["manifest"].read_text(encoding="utf-8"))
     assert printed == print_summary(manifest["print"])
     entry = {"created_tools": [{"print": printed}], **dict.fromkeys(WALL_TIMES, 0)}
