@@ -23,14 +23,13 @@ from __future__ import annotations
 
 import json
 import re
-from dataclasses import asdict
 from pathlib import Path
 
 import pytest
 
 from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
-from creative_py.learning.creation import CreatedTool, CreateResult, ToolCreator, print_summary
+from creative_py.learning.creation import CreateResult, ToolCreator, print_summary
 from creative_py.learning.run import _creation_summary
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import read_resume
@@ -84,12 +83,12 @@ def vs(engine):
     return _vs(engine, "hook")
 
 
-def _runner(engine, world, name, learned=LEARNED):
-    """A runner replaying run ``name``, its ``learned`` trials before creation done:
-    (runner, lines, records)."""
+def _runner(engine, world, name, learned=LEARNED, run=None):
+    """A runner replaying run ``name``, its ``learned`` trials before creation done,
+    writing into ``run`` (a RunFolder or None): (runner, lines, records)."""
     records, _ = read_resume(RUNS / name)
     lines: list[str] = []
-    runner = TrialRunner(engine, world, None, replay=records, progress=lines.append)
+    runner = TrialRunner(engine, world, run, replay=records, progress=lines.append)
     runner.trials = list(records[:learned])
     # What creation asks of each trial (a replay reads neither the decision time nor,
     # for these, a label; the physics would: decision time 0, no label).
@@ -404,49 +403,42 @@ def test_no_catalogued_object_when_nothing_can_be_generalised(engine, world):
 
 
 def test_a_tool_is_manufactured_into_the_run_folder(engine, world, vs, tmp_path):
-    """Sized, written, split, sliced and added to the world: hook_s0's hook_new1 again,
-    and its strength check in its manifest."""
-    from creative_py.learning.strength import check_strength
+    """With a run folder, hook_s0's hook_new1 is sized, written, split, sliced, added to
+    the world and tried again (no evaluation asked), and its strength check goes into
+    its manifest."""
     from creative_py.records.folder import RunFolder
 
     run = RunFolder.create(tmp_path, "hook", 0, "run")
     try:
-        lines: list[str] = []
-        runner = TrialRunner(engine, world, run, progress=lines.append)
-        creator = ToolCreator(runner)
-        task = runner.task("long_tube")
+        runner, lines, records = _runner(engine, world, "hook_s0", run=run)
         # A resumed run may have made it before: the tool's folder is replaced.
         (run.tools_dir() / "hook_new1").mkdir(parents=True)
         (run.tools_dir() / "hook_new1" / "stale.txt").write_text("before", encoding="utf-8")
-        reply = engine.next_tool("hook", vs, [], runner.task_facts(task))
-        struct, dims = reply.args[3], reply.args[4]
-        spec, values, files, mass, printed = creator._manufacture(1, struct, dims)
+        res = ToolCreator(runner, eval_trials=0).create(vs, "long_tube")
     finally:
         run.release()
+    folder = run.path / "tools" / "hook_new1"
     recorded = json.loads((RUNS / "hook_s0" / "summary.json").read_text(encoding="utf-8"))
     tool = recorded["create"]["created_tools"][0]
-    folder = run.path / "tools" / "hook_new1"
-    assert (spec.name, values, mass) == ("hook_new1", tool["dims"], tool["mass_kg"])
-    assert files == {k: folder / f"hook_new1.{ext}" for k, ext in (
-        ("urdf", "urdf"), ("sdf", "sdf"), ("scad", "scad"), ("stl", "stl"), ("png", "png"),
-        ("manifest", "json"))}
+    made = _creation_summary(res, run.path)["created_tools"][0]
+    assert made["files"] == tool["files"]
+    assert {k: str(folder / Path(v).name) for k, v in tool["files"].items()} \
+        == res.success.files
     assert not (folder / "stale.txt").exists()
-    manifest = json.loads(files["manifest"].read_text(encoding="utf-8"))
-    assert printed == print_summary(manifest["print"])
-    entry = {"created_tools": [{"print": printed}], **dict.fromkeys(WALL_TIMES, 0)}
-    recorded_entry = {"created_tools": [{"print": tool["print"]}],
-                      **dict.fromkeys(WALL_TIMES, 0)}
-    assert _without_run_dependent(entry)[0] == _without_run_dependent(recorded_entry)[0]
-    assert runner.world.items["hook_new1"].urdf == files["urdf"]
+    made, _, _ = _without_run_dependent({"created_tools": [made],
+                                         **dict.fromkeys(WALL_TIMES, 0)})
+    expected, _, _ = _without_run_dependent({"created_tools": [{**tool, "eval_outcomes": []}],
+                                             **dict.fromkeys(WALL_TIMES, 0)})
+    assert made == expected
+    manifest = json.loads((folder / "hook_new1.json").read_text(encoding="utf-8"))
+    assert res.success.print == print_summary(manifest["print"])
+    assert manifest["strength"] == tool["strength"]
+    assert runner.world.items["hook_new1"].urdf == folder / "hook_new1.urdf"
     assert runner.world.items["hook_new1"].set == "created"
-    assert lines == [MAKE_1]
-    ct = CreatedTool("hook_new1", "r", "g", "i", [], values, {"urdf": str(files["urdf"])}, "")
-    record = read_resume(RUNS / "hook_s0")[0][LEARNED]
-    creator._record_strength(ct, check_strength(spec, record.tool_load, trial=record.trial,
-                                                safety_factor=2.0))
-    assert ct.strength == tool["strength"]
-    assert json.loads(files["manifest"].read_text(encoding="utf-8"))["strength"] \
-        == tool["strength"]
+    assert res.trials == records[LEARNED:LEARNED + 1]
+    assert lines == [PREDICTED, MAKE_1, CREATED_1, _tc(1, "hook_new1"),
+                     "hook_new1: strength pass (cantilever, 0.91 N, 4.10 MPa, "
+                     "safety factor 12.21)"]
 
 
 def test_the_learned_tool_solves_a_task_within_its_reach(engine, world, vs, tmp_path):
