@@ -128,6 +128,12 @@ EQUIVALENT = {
         "as log.warning('%s', w) does",
     "creative_py.learning.run.x_resume_run__mutmut_25":
         "run_case uses out only for a new run's folder; a resume's folder is given whole",
+    # creative_py/learning/creation.py
+    **{f"creative_py.learning.creation.xǁToolCreatorǁ{name}__mutmut_{n}":
+       "a created tool's trial outcome placeholder: the trial's outcome replaces it before "
+       "anything reads it (a trial that raises leaves create() with no result)"
+       for name, n in (("_make_and_try", 20), ("_make_and_try", 39), ("_strengthen", 71),
+                       ("_strengthen", 87))},
 }
 """Mutants that no test can kill: the code means the same with them."""
 

@@ -36,7 +36,7 @@ import logging
 import time
 from dataclasses import dataclass, field, replace
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term
 from creative_py.learning.trials import TaskState, TrialRecord, TrialRunner, term_text
@@ -44,6 +44,10 @@ from creative_py.report.contents import readable_term
 from creative_py.report.table import dims_text
 
 log = logging.getLogger(__name__)
+
+NOT_AS_PLANNED = ("blocked", "unreachable", "invalid")
+"""Outcomes of a trial whose motion did not happen as planned: a creation trial that
+ends so is run once more (:meth:`ToolCreator._once_more`)."""
 
 
 @dataclass
@@ -210,21 +214,27 @@ class ToolCreator:
         runner.progress(f"created {ct.name}: " + " -> ".join(
             readable_term(x) for x in (ct.replaced, ct.general, ct.instance))
             + f"; {dims_text(ct.dims)}")
-        n += 1
-        rec = self._trial_with(spec, n, vs, task)
-        if rec.outcome in ("blocked", "unreachable", "invalid"):
-            # The motion did not happen as planned: that says nothing about the design,
-            # so the trial is repeated once (the paper repeats a task after a failure to
-            # confirm the result).
-            n += 1
-            runner.progress(f"{ct.name}: {rec.outcome}, trying once more")
-            rec = self._trial_with(spec, n, vs, task)
+        rec, n = self._once_more(lambda k: self._trial_with(spec, k, vs, task), n, ct.name)
         ct.trial_outcome = rec.outcome
         if rec.outcome == "success":
             # The physics measured the load; a tool too weak for it is thickened (tried
             # again) or rejected, and then the next candidate is created.
             spec, ct, n = self._strengthen(spec, ct, struct, rec, n, vs, task, created)
         return spec, ct, n
+
+    def _once_more(self, trial: Callable[[int], TrialRecord], n: int,
+                   tool: Optional[str] = None) -> tuple[TrialRecord, int]:
+        """Run ``trial`` as creation trial ``n + 1`` and, when its motion did not happen
+        as planned (:data:`NOT_AS_PLANNED`), once more: that says nothing about the tool,
+        so the trial is repeated (the paper repeats a task after a failure to confirm
+        the result), saying so for ``tool`` when given. Return the last trial's record
+        and the creation trials so far."""
+        rec = trial(n + 1)
+        if rec.outcome not in NOT_AS_PLANNED:
+            return rec, n + 1
+        if tool is not None:
+            self.runner.progress(f"{tool}: {rec.outcome}, trying once more")
+        return trial(n + 2), n + 2
 
     def _try_catalogue(self, vs: Term, task: TaskState, exclude: list[str], n: int,
                        ) -> tuple[list[dict[str, Any]], Optional[tuple[Term, Term]], int]:
@@ -263,12 +273,9 @@ class ToolCreator:
                                 f"{entry['predicted']['why']}")
                 continue
             runner.progress(f"TC catalogue: trying {obj}, {entry['why']}")
-            n += 1
-            rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
-            if rec.outcome in ("blocked", "unreachable", "invalid"):
-                n += 1
-                runner.progress(f"{obj}: {rec.outcome}, trying once more")
-                rec, _ = runner.run(use, "create", n, vs, task, 0.0, label=False)
+            rec, n = self._once_more(
+                lambda k: runner.run(use, "create", k, vs, task, 0.0, label=False)[0], n,
+                str(obj))
             entry.update(trial=rec.trial, outcome=rec.outcome, reason=rec.reason)
             if rec.outcome == "success":
                 runner.progress(f"TC catalogue: {obj} solved the {task.variant} task"
@@ -348,11 +355,7 @@ class ToolCreator:
                 f"{ct.name}: safety factor {check.safety_factor:.2f} < "
                 f"{check.required_safety_factor:g} under {check.force_n:.2f} N; thickened "
                 f"into {thick.name} {ct2.dims}")
-            n += 1
-            rec = self._trial_with(thick, n, vs, task)
-            if rec.outcome in ("blocked", "unreachable", "invalid"):
-                n += 1
-                rec = self._trial_with(thick, n, vs, task)
+            rec, n = self._once_more(lambda k: self._trial_with(thick, k, vs, task), n)
             ct2.trial_outcome = rec.outcome
             spec, ct = thick, ct2
             check = check_strength(thick, rec.tool_load, trial=rec.trial,
