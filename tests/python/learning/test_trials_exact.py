@@ -20,6 +20,8 @@ import json
 from pathlib import Path
 from types import SimpleNamespace
 
+import imageio.v2 as imageio
+import numpy as np
 import pytest
 
 from creative_py.bridge import Compound, Engine
@@ -33,6 +35,7 @@ from creative_py.learning.trials import (PHASE_TAGS, TaskState, TrialRunner, pos
 from creative_py.records.folder import RunFolder, read_resume
 from creative_py.sim import load_world, recorder
 from creative_py.simulator import TrialResult
+from creative_py.video import Captioner
 
 pytestmark = pytest.mark.sim
 
@@ -99,49 +102,69 @@ def _replay_first(hook, record, phase="use", variant="standard", run=None, lines
     return runner, runner.run(exp, phase, 1, hook.vs0, task, 0.0, label=label)
 
 
-def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
-    # A resume: the folder sealed with the use trials, the clip keeper held.
-    run = RunFolder.create(tmp_path, "hook", 0, "run")
-    (run.path / "trials.jsonl").write_text((RECORDED / "trials.jsonl").read_text())
-    use = hook.records[:9]
-    run.seal(use)
-    clips = ClipKeeper("key", run.path, hook.world.video, background=False,
-                       new_recorder=recorder)
-    clips.held = True
-    lines = []
-    runner = _runner(hook, use, run=run, clips=clips, progress=lines.append)
-    learner, strategy = ToolUseLearner(runner), strategy_named("paper")
-    task, vs, skip = runner.task("standard"), hook.vs0, []
-    assert (task.variant, task.location, task.locations) == ("standard", 1, (1, 2, 3, 4))
-    for i in range(1, 10):
-        exp = learner._next(strategy, vs, task, skip, i)
-        rec, vs = learner._trial(strategy, exp, i, vs, task, 0.0, skip)
-        assert rec is use[i - 1]
-        if rec.outcome == "success":
-            task.next_location()
-    assert lines == USE_LINES
-    assert all(a is b for a, b in zip(runner.trials, use)) and len(runner.trials) == 9
-    assert runner.bounds(vs) == (use[-1].hs, use[-1].hg)
-    assert runner.physical == 0
-    # Nothing was written while replaying; the clip keeper saw every trial.
-    assert run.sealed and clips.held
-    assert sorted(p.name for p in run.path.rglob("*")) == [".lock", "snapshots",
-                                                          "trials.jsonl"]
-    assert clips.entries == [] and clips.succeeded
-    assert clips.seen == {
-        "blocked: position_tool: gripper lagged its target by N cm at (N, N, N) m: "
-        "something is in the way", "failure: goal not reached"}
-    runner.end_replay()
-    assert not run.sealed and not clips.held
-    # The folder holds the replayed trials again, as they were recorded.
-    assert (run.path / "trials.jsonl").read_text().splitlines() == (
-        (RECORDED / "trials.jsonl").read_text().splitlines()[:9])
-
-
-def test_end_replay_without_a_folder_or_clips(hook):
+def test_poses_as_numbers_and_as_records(hook):
     runner = _runner(hook)
-    runner.end_replay()
-    assert (runner.run_folder, runner.clips, runner.physical) == (None, None, 0)
+    pose = Compound("hook_pose", (0.1234567, -2, 0.5))
+    assert pose_numbers(pose) == (0.1234567, -2.0, 0.5)
+    assert runner._pose_dict(pose) == {"dx": 0.12346, "dy": -2.0, "roll": 0.5}
+    assert runner._pose_dict(Compound("other_pose", (1.0,))) == {"pose": "other_pose(1.0)"}
+    assert runner._pose_dict("hook_pose") == {"pose": "hook_pose"}
+    with pytest.raises(ValueError) as err:
+        pose_numbers("hook_pose")
+    assert str(err.value) == "not a pose term: 'hook_pose'"
+    assert term_text(pose) == "hook_pose(0.1234567,-2,0.5)"
+
+
+def test_planned_experiments_exploits_and_none(hook):
+    runner = _runner(hook)
+    exp = hook.engine.parse(EXP1)
+    assert runner._planned(exp) == ("experiment", "hook_a1", ["handle_length(hook_a1,medium)"],
+                                    exp.args[2], exp.args[3])
+    exploit = Compound("exploit", ("hook_a2", ["v"], Compound("hook_pose", (1.0, 2.0, 3.0)),
+                                   []))
+    assert runner._planned(exploit) == ("exploit", "hook_a2", [], ["v"], exploit.args[2])
+    with pytest.raises(RuntimeError) as err:
+        runner._planned(Compound("no_experiment", ("nothing_left",)))
+    assert str(err.value) == "hook: no experiment is possible: nothing_left"
+
+
+def test_the_runner_s_case_task_and_settings(hook):
+    runner = _runner(hook, hook.records[:2])
+    assert (runner.case, runner.manifest, runner.world) == ("hook", hook.world.manifest,
+                                                            hook.world)
+    assert (runner.seed, runner.gui, runner.trials, runner.replay_lines) == (0, False, [],
+                                                                              [1, 2])
+    assert runner.progress("x") is None
+    assert _runner(hook, hook.records[:2], replay_lines=[4, 9]).replay_lines == [4, 9]
+    assert PHASE_TAGS == {"use": "TUL", "create": "TC", "eval": "EVAL"}
+    task = TaskState("standard", 3, (1, 3, 4))
+    task.next_location()
+    assert task.location == 4
+    task.next_location()
+    assert task.location == 1
+
+
+def test_the_result_of_a_replayed_trial(hook):
+    runner = _runner(hook, hook.records)
+    pose = Compound("hook_pose", (0.0375, 0.0, 0.9604))
+    two = hook.records[1]
+    task = TaskState("standard", 1, (1, 2, 3, 4))
+    assert runner._replayed(two, "hook_a2", task, pose, "use") == TrialResult(
+        case="hook", object="hook_a2", variant="standard", location=1,
+        pose=(0.0375, 0.0, 0.9604), outcome="failure", reason="goal not reached",
+        perceived_final=None, true_final={}, sim_time_s=two.sim_time_s,
+        wall_time_s=two.wall_time_s, render_time_s=0.0, steps=0, seed=0,
+        max_tool_force_n=0.0, tool_load=two.tool_load,
+        facts_before=tuple(tuple(f) for f in two.facts), verdict=two.verdict)
+    one = dataclasses.replace(hook.records[0], sim_time_s=4, wall_time_s=1)
+    got = runner._replayed(one, "hook_a1", task, Compound("hook_pose", (0.0375, 0.0, 0.0)),
+                           "use")
+    assert (got.max_tool_force_n, got.tool_load, got.sim_time_s, got.wall_time_s) == (
+        0.0, None, 4.0, 1.0)
+    assert type(got.sim_time_s) is type(got.wall_time_s) is float
+    assert got.facts_before[0] == ("pose", "cube1", 1.0978333768235253, -0.2619286922781563,
+                                   -0.0801174103231533, 0.0)
+    assert dataclasses.replace(hook.records[4], max_tool_force_n=3.5).max_tool_force_n == 3.5
 
 
 def test_a_replayed_trial_is_its_record_and_its_labels(hook):
@@ -150,27 +173,6 @@ def test_a_replayed_trial_is_its_record_and_its_labels(hook):
     assert rec is hook.records[0] and runner.trials == [rec]
     assert runner.bounds(vs) == (rec.hs, rec.hg) != runner.bounds(hook.vs0)
     assert hook.engine.vs_count(vs) == (8192, True)
-
-
-def test_a_blocked_trial_without_facts_is_labelled_with_the_task_s(hook):
-    # A blocked motion that stopped before anything was observed: the planned example,
-    # on the facts of the task as the robot sees it before acting.
-    _, (rec, vs) = _replay_first(hook, _edited(hook, facts=[]))
-    assert _runner(hook).bounds(vs) == (rec.hs, rec.hg) == (hook.records[0].hs,
-                                                            hook.records[0].hg)
-
-
-@pytest.mark.parametrize("outcome", ["unreachable", "invalid"])
-def test_an_unreachable_or_invalid_trial_leaves_the_version_space(hook, outcome):
-    hs, hg = _runner(hook).bounds(hook.vs0)
-    _, (rec, vs) = _replay_first(hook, _edited(hook, outcome=outcome, hs=hs, hg=hg))
-    assert vs is hook.vs0 and rec.outcome == outcome
-
-
-def test_an_unlabelled_trial_leaves_the_version_space(hook):
-    hs, hg = _runner(hook).bounds(hook.vs0)
-    _, (rec, vs) = _replay_first(hook, _edited(hook, hs=hs, hg=hg), label=False)
-    assert vs is hook.vs0
 
 
 @pytest.mark.parametrize("change, planned, recorded", [
@@ -232,69 +234,31 @@ def test_facts_that_do_not_label_do_not_replay(hook, facts, why):
                               f"the run cannot be resumed")
 
 
-def test_the_result_of_a_replayed_trial(hook):
-    runner = _runner(hook, hook.records)
-    pose = Compound("hook_pose", (0.0375, 0.0, 0.9604))
-    two = hook.records[1]
-    task = TaskState("standard", 1, (1, 2, 3, 4))
-    assert runner._replayed(two, "hook_a2", task, pose, "use") == TrialResult(
-        case="hook", object="hook_a2", variant="standard", location=1,
-        pose=(0.0375, 0.0, 0.9604), outcome="failure", reason="goal not reached",
-        perceived_final=None, true_final={}, sim_time_s=two.sim_time_s,
-        wall_time_s=two.wall_time_s, render_time_s=0.0, steps=0, seed=0,
-        max_tool_force_n=0.0, tool_load=two.tool_load,
-        facts_before=tuple(tuple(f) for f in two.facts), verdict=two.verdict)
-    one = dataclasses.replace(hook.records[0], sim_time_s=4, wall_time_s=1)
-    got = runner._replayed(one, "hook_a1", task, Compound("hook_pose", (0.0375, 0.0, 0.0)),
-                           "use")
-    assert (got.max_tool_force_n, got.tool_load, got.sim_time_s, got.wall_time_s) == (
-        0.0, None, 4.0, 1.0)
-    assert type(got.sim_time_s) is type(got.wall_time_s) is float
-    assert got.facts_before[0] == ("pose", "cube1", 1.0978333768235253, -0.2619286922781563,
-                                   -0.0801174103231533, 0.0)
-    assert dataclasses.replace(hook.records[4], max_tool_force_n=3.5).max_tool_force_n == 3.5
+def test_a_blocked_trial_without_facts_is_labelled_with_the_task_s(hook):
+    # A blocked motion that stopped before anything was observed: the planned example,
+    # on the facts of the task as the robot sees it before acting.
+    _, (rec, vs) = _replay_first(hook, _edited(hook, facts=[]))
+    assert _runner(hook).bounds(vs) == (rec.hs, rec.hg) == (hook.records[0].hs,
+                                                            hook.records[0].hg)
 
 
-def test_planned_experiments_exploits_and_none(hook):
+@pytest.mark.parametrize("outcome", ["unreachable", "invalid"])
+def test_an_unreachable_or_invalid_trial_leaves_the_version_space(hook, outcome):
+    hs, hg = _runner(hook).bounds(hook.vs0)
+    _, (rec, vs) = _replay_first(hook, _edited(hook, outcome=outcome, hs=hs, hg=hg))
+    assert vs is hook.vs0 and rec.outcome == outcome
+
+
+def test_an_unlabelled_trial_leaves_the_version_space(hook):
+    hs, hg = _runner(hook).bounds(hook.vs0)
+    _, (rec, vs) = _replay_first(hook, _edited(hook, hs=hs, hg=hg), label=False)
+    assert vs is hook.vs0
+
+
+def test_end_replay_without_a_folder_or_clips(hook):
     runner = _runner(hook)
-    exp = hook.engine.parse(EXP1)
-    assert runner._planned(exp) == ("experiment", "hook_a1", ["handle_length(hook_a1,medium)"],
-                                    exp.args[2], exp.args[3])
-    exploit = Compound("exploit", ("hook_a2", ["v"], Compound("hook_pose", (1.0, 2.0, 3.0)),
-                                   []))
-    assert runner._planned(exploit) == ("exploit", "hook_a2", [], ["v"], exploit.args[2])
-    with pytest.raises(RuntimeError) as err:
-        runner._planned(Compound("no_experiment", ("nothing_left",)))
-    assert str(err.value) == "hook: no experiment is possible: nothing_left"
-
-
-def test_poses_as_numbers_and_as_records(hook):
-    runner = _runner(hook)
-    pose = Compound("hook_pose", (0.1234567, -2, 0.5))
-    assert pose_numbers(pose) == (0.1234567, -2.0, 0.5)
-    assert runner._pose_dict(pose) == {"dx": 0.12346, "dy": -2.0, "roll": 0.5}
-    assert runner._pose_dict(Compound("other_pose", (1.0,))) == {"pose": "other_pose(1.0)"}
-    assert runner._pose_dict("hook_pose") == {"pose": "hook_pose"}
-    with pytest.raises(ValueError) as err:
-        pose_numbers("hook_pose")
-    assert str(err.value) == "not a pose term: 'hook_pose'"
-    assert term_text(pose) == "hook_pose(0.1234567,-2,0.5)"
-
-
-def test_the_runner_s_case_task_and_settings(hook):
-    runner = _runner(hook, hook.records[:2])
-    assert (runner.case, runner.manifest, runner.world) == ("hook", hook.world.manifest,
-                                                            hook.world)
-    assert (runner.seed, runner.gui, runner.trials, runner.replay_lines) == (0, False, [],
-                                                                              [1, 2])
-    assert runner.progress("x") is None
-    assert _runner(hook, hook.records[:2], replay_lines=[4, 9]).replay_lines == [4, 9]
-    assert PHASE_TAGS == {"use": "TUL", "create": "TC", "eval": "EVAL"}
-    task = TaskState("standard", 3, (1, 3, 4))
-    task.next_location()
-    assert task.location == 4
-    task.next_location()
-    assert task.location == 1
+    runner.end_replay()
+    assert (runner.run_folder, runner.clips, runner.physical) == (None, None, 0)
 
 
 def test_task_facts_are_observed_once_per_task(hook, monkeypatch):
@@ -321,13 +285,52 @@ def test_task_facts_are_observed_once_per_task(hook, monkeypatch):
         Compound(f[0], tuple(f[1:])) if len(f) > 1 else f[0] for f in one]
 
 
+def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
+    # A resume: the folder sealed with the use trials, the clip keeper held.
+    run = RunFolder.create(tmp_path, "hook", 0, "run")
+    (run.path / "trials.jsonl").write_text((RECORDED / "trials.jsonl").read_text())
+    use = hook.records[:9]
+    run.seal(use)
+    clips = ClipKeeper("key", run.path, hook.world.video, background=False,
+                       new_recorder=recorder)
+    clips.held = True
+    lines = []
+    runner = _runner(hook, use, run=run, clips=clips, progress=lines.append)
+    learner, strategy = ToolUseLearner(runner), strategy_named("paper")
+    task, vs, skip = runner.task("standard"), hook.vs0, []
+    assert (task.variant, task.location, task.locations) == ("standard", 1, (1, 2, 3, 4))
+    for i in range(1, 10):
+        exp = learner._next(strategy, vs, task, skip, i)
+        rec, vs = learner._trial(strategy, exp, i, vs, task, 0.0, skip)
+        assert rec is use[i - 1]
+        if rec.outcome == "success":
+            task.next_location()
+    assert lines == USE_LINES
+    assert all(a is b for a, b in zip(runner.trials, use)) and len(runner.trials) == 9
+    assert runner.bounds(vs) == (use[-1].hs, use[-1].hg)
+    assert runner.physical == 0
+    # Nothing was written while replaying; the clip keeper saw every trial.
+    assert run.sealed and clips.held
+    assert sorted(p.name for p in run.path.rglob("*")) == [".lock", "snapshots",
+                                                          "trials.jsonl"]
+    assert clips.entries == [] and clips.succeeded
+    assert clips.seen == {
+        "blocked: position_tool: gripper lagged its target by N cm at (N, N, N) m: "
+        "something is in the way", "failure: goal not reached"}
+    runner.end_replay()
+    assert not run.sealed and not clips.held
+    # The folder holds the replayed trials again, as they were recorded.
+    assert (run.path / "trials.jsonl").read_text().splitlines() == (
+        (RECORDED / "trials.jsonl").read_text().splitlines()[:9])
+
+
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     # A resume of trial 1: trial 2 runs in the physics, is labelled, recorded, filmed.
     run = RunFolder.create(tmp_path, "hook", 0, "run")
     one, two = hook.records[:2]
     (run.path / "trials.jsonl").write_text(one.to_json() + "\n")
     run.seal([one])
-    camera = dataclasses.replace(hook.world.video.camera, width=160, height=120)
+    camera = dataclasses.replace(hook.world.video.camera, width=320, height=60)
     clips = ClipKeeper("key", run.path, dataclasses.replace(hook.world.video, camera=camera),
                        background=False, new_recorder=recorder)
     clips.held = True
@@ -341,6 +344,9 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     assert rec1 is one and runner.trials == [one, rec2] and runner.physical == 1
     assert lines == [USE_LINES[0], TRIAL2_LINE]
     assert 100.0 <= rec2.decision_time_s < 101.0 and 0 < rec2.wall_time_s < 60
+    assert (rec2.decision_time_s, rec2.wall_time_s) == (round(rec2.decision_time_s, 4),
+                                                        round(rec2.wall_time_s, 3))
+    assert {type(a) for f in rec2.facts for a in f} == {str, float}
     assert dataclasses.replace(rec2, decision_time_s=0.0, wall_time_s=0.0) == (
         dataclasses.replace(two, decision_time_s=0.0, wall_time_s=0.0))
     assert rec2.to_dict().keys() == two.to_dict().keys()
@@ -360,3 +366,12 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
         "duration_s": 8.4, "bytes": size}]
     assert json.loads((run.path / "videos" / "clips.jsonl").read_text()) == {
         k: v for k, v in entries[0].items() if k != "bytes"}
+    # The caption above the picture, the first frame's simulated time at its right.
+    with imageio.get_reader(str(run.path / entries[0]["file"])) as reader:
+        first = np.asarray(reader.get_data(0)).astype(int).mean(axis=2)
+    draw = Captioner(320, 60, ["#2 TUL 2  hook_a2  loc 1", "tested hook_down(hook_a2)",
+                                "failure: goal not reached", "cube1 centre x 1.1313 m, "
+                                "needs < 0.8500", "moved 3.7 cm"])
+    band = draw(np.zeros((60, 320, 3), np.uint8), "t = 0.0 s")[:draw.band]
+    assert first.shape == (60 + draw.band, 320)
+    assert int((np.abs(band.astype(int).mean(axis=2) - first[:draw.band]) > 100).sum()) == 0
