@@ -2,6 +2,7 @@
 
 import json
 import os
+import time
 from pathlib import Path
 
 import imageio.v2 as imageio
@@ -11,7 +12,7 @@ import pytest
 from typer.testing import CliRunner
 
 from creative_py.cli import app
-from creative_py.learning.clips import ClipKeeper, failure_reason
+from creative_py.learning.clips import CLIP_NICE, ClipKeeper, failure_reason
 from creative_py.learning.run import RunOptions
 from creative_py.records.trial import TrialRecord
 from creative_py.sim import recorder
@@ -105,11 +106,12 @@ def test_gui_without_a_display_is_one_line_and_exit_2(args, monkeypatch):
 # ---------------------------------------------------------------- writing clips
 # A real recorder (the pybullet backend's, what ``new_recorder`` gives a run) films a
 # box falling in a scene of its own for 0.2 s of simulated time: three snapshots (the
-# first, one 1/fps later, the last), rendered and encoded as a run's clips are. The
+# first, one 1/fps later, the last), rendered and encoded as a run's clips are (7 frames
+# a second: 3 frames last 0.428571 s, rounded to 0.43 in the entry). The
 # picture is 320 x 48 pixels: the captions are a run's, the rendering is cheap.
 
 SPEC = VideoSpec.from_table({"eye": [1.0, -1.0, 0.8], "target": [0.0, 0.0, 0.1],
-                             "fov_deg": 50.0, "width": 320, "height": 48, "fps": 5.0},
+                             "fov_deg": 50.0, "width": 320, "height": 48, "fps": 7.0},
                             "test")
 
 
@@ -190,26 +192,28 @@ def test_a_clip_written_here_is_the_trial_s_frames_under_its_caption(tmp_path, f
             "tool": "hook_a1", "tested": ["handle_length(hook_a1,medium)"],
             "outcome": "blocked", "reason": "lag 3.1 cm",
             "verdict": "stopped: gripper lag 0.031 m; moved 1.1 cm",
-            "why": "failure:blocked: lag N cm", "frames": 3, "duration_s": 0.6,
+            "why": "failure:blocked: lag N cm", "frames": 3, "duration_s": 0.43,
             "bytes": None}
     assert entry == want and keeper.entries == [entry] and keeper.children == {}
-    assert rec.times == pytest.approx([0.0, 0.2, 0.2]) and len(rec.frames) == 3
+    assert rec.times == pytest.approx([0.0, 35 / 240, 0.2]) and len(rec.frames) == 3
     assert _captioned_as(clip, rec.frames, [
         "#3 TUL 2  hook_a1  loc 1", "tested handle_length(hook_a1,medium)",
         "blocked: lag 3.1 cm", "stopped: gripper lag 0.031 m", "moved 1.1 cm"],
         rec.times) == 0
     assert (tmp_path / "videos" / "clips.jsonl").read_text() == json.dumps(
         {k: v for k, v in want.items() if k != "bytes"}) + "\n"
-    spent = keeper.wall_time_s
-    assert spent > 0
+    assert keeper.wall_time_s > 0
+    keeper.wall_time_s = 1000.0   # finish adds its wait to what the clips took
     assert keeper.finish() == [{**want, "bytes": clip.stat().st_size}] == keeper.entries
-    assert keeper.wall_time_s > spent
+    assert keeper.wall_time_s > 1000.0
 
 
 def test_a_clip_without_location_reason_or_test_is_captioned_so(tmp_path, film):
     keeper = _keeper(tmp_path, background=False)
+    keeper.wall_time_s = 1000.0   # each clip adds the time it took
     rec = film(keeper.recorder())
     entry = keeper.write(rec, "demonstration", 0, "demo", 0, "hook_a2", [], "success", "")
+    assert keeper.wall_time_s > 1000.0
     assert (entry["file"], entry["tested"], entry["verdict"], entry["why"]) == (
         "videos/000-demo-hook_a2.mp4", [], "", "demonstration")
     assert _captioned_as(tmp_path / entry["file"], rec.frames,
@@ -225,11 +229,25 @@ def test_a_clip_without_location_reason_or_test_is_captioned_so(tmp_path, film):
         "videos/000-demo-hook_a2.mp4", "videos/012-walk-hook_a2.mp4"]
 
 
-def test_clips_written_in_the_background_wait_for_the_oldest(tmp_path, film):
+def _nice_when_done(pid):
+    """Return the scheduling niceness of child ``pid`` once it has exited (a zombie until
+    it is waited for: its last niceness is still read in /proc)."""
+    stat = Path(f"/proc/{pid}/stat")
+    for _ in range(6000):
+        fields = stat.read_text().rsplit(")", 1)[1].split()
+        if fields[0] == "Z":
+            return int(fields[16])
+        time.sleep(0.005)
+    raise AssertionError(f"clip process {pid} did not end")
+
+
+def test_clips_written_in_the_background_wait_for_the_oldest(tmp_path, film, caplog):
     keeper = _keeper(tmp_path, max_children=1)
     names = ["videos/001-eval-hook_a2.mp4", "videos/002-eval-hook_a2.mp4"]
     keeper.write(film(keeper.recorder()), "trial", 1, "eval", 1, "hook_a2", [], "success", "")
     assert list(keeper.children.values()) == names[:1]
+    # The clip is rendered and encoded at CLIP_NICE lower priority than the run.
+    assert _nice_when_done(next(iter(keeper.children))) == min(os.nice(0) + CLIP_NICE, 19)
     keeper.write(film(keeper.recorder()), "trial", 2, "eval", 2, "hook_a2", [], "success", "")
     assert list(keeper.children.values()) == names[1:]   # the oldest was waited for
     assert (tmp_path / names[0]).is_file()
@@ -238,6 +256,7 @@ def test_clips_written_in_the_background_wait_for_the_oldest(tmp_path, film):
     assert [(e["file"], e["frames"], e["bytes"]) for e in kept] == [
         (n, 3, (tmp_path / n).stat().st_size) for n in names]
     assert [len(_decoded(tmp_path / n)) for n in names] == [3, 3]
+    assert caplog.records == []
 
 
 def test_a_clip_that_fails_in_the_background_is_dropped_with_a_warning(tmp_path, film,
@@ -247,8 +266,9 @@ def test_a_clip_that_fails_in_the_background_is_dropped_with_a_warning(tmp_path,
     keeper.write(film(keeper.recorder()), "trial", 1, "use", 1, "hook_a1", [], "failure", "x")
     assert len(keeper.children) == 1 and keeper.entries[0]["bytes"] is None
     assert keeper.finish() == [] == keeper.entries
-    assert [(r.levelname, r.getMessage()) for r in caplog.records] == [
-        ("WARNING", "videos/001-use-hook_a1.mp4: the clip was not written")]
+    assert [(r.name, r.levelname, r.getMessage()) for r in caplog.records] == [
+        ("creative_py.learning.clips", "WARNING",
+         "videos/001-use-hook_a1.mp4: the clip was not written")]
 
 
 def _earlier(run_dir, *files):
@@ -293,10 +313,12 @@ def _record(trial, outcome, tool="a", phase="use"):
 
 
 def test_replayed_trials_keep_the_clips_the_interrupted_run_made(tmp_path):
-    # Trial 1's clip has its entry; trial 2's file has none (killed before the entry
-    # was read back? no: an entry of an older version); trial 3 made no clip; trial 4
-    # is not kept (the same failure as trial 3); trial 5 is the first success.
-    _earlier(tmp_path, "videos/001-use-a.mp4")
+    # Trial 1's clip has its entry in clips.jsonl; trial 2's has none (a version
+    # without clips.jsonl wrote it); trial 3 made no clip; trial 4 is not kept (the
+    # same failure as trial 3), its file aside; trial 5, the first success, has an
+    # entry but its clip was never written (the run was killed first).
+    _earlier(tmp_path, "videos/001-use-a.mp4", "videos/005-use-a.mp4")
+    (tmp_path / "videos" / "005-use-a.mp4").unlink()
     (tmp_path / "videos" / "002-use-a.mp4").write_bytes(b"mp4")
     (tmp_path / "videos" / "004-use-a.mp4").write_bytes(b"mp4")
     keeper = _keeper(tmp_path)
