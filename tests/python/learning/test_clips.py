@@ -179,6 +179,9 @@ def test_a_keeper_starts_empty_and_reads_no_earlier_clips(tmp_path):
     assert str(err.value) == ("a clip keeper that records needs the backend's recorder "
                               "(new_recorder)")
     assert ClipKeeper.file_name(7, "create", "hook_new1") == "videos/007-create-hook_new1.mp4"
+    with pytest.raises(ValueError) as err:
+        ClipKeeper("loud", tmp_path, SPEC)
+    assert str(err.value) == "option video must be one of all, key, none, got 'loud'"
 
 
 def test_a_clip_written_here_is_the_trial_s_frames_under_its_caption(tmp_path, film):
