@@ -190,6 +190,18 @@ def test_a_record_of_another_trial_does_not_replay(hook, change, planned, record
         f"but the learner now plans ({planned}, {pose}): {NOT_RESUMED}")
 
 
+def test_the_second_record_names_its_own_line(hook):
+    second = dataclasses.replace(hook.records[1], tool="hook_a3")
+    runner = _runner(hook, [hook.records[0], second], replay_lines=[4, 9])
+    task, exp = _first(hook, runner)
+    _, vs = runner.run(exp, "use", 1, hook.vs0, task, 0.0)
+    exp2 = hook.engine.next_experiment("hook", vs, runner.task_facts(task), [])
+    with pytest.raises(ValueError) as err:
+        runner.run(exp2, "use", 2, vs, task, 0.0)
+    assert str(err.value).startswith("trials.jsonl: line 9: trial 2 of the run being "
+                                     "resumed was ('use', 'hook_a3', ")
+
+
 def test_a_record_of_another_pose_names_its_line_in_the_folder(hook, tmp_path):
     run = RunFolder.create(tmp_path, "hook", 0, "run")
     record = _edited(hook, pose={"dx": 0.04, "dy": 0.0, "roll": 0.0})
@@ -322,6 +334,26 @@ def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
     # The folder holds the replayed trials again, as they were recorded.
     assert (run.path / "trials.jsonl").read_text().splitlines() == (
         (RECORDED / "trials.jsonl").read_text().splitlines()[:9])
+
+
+def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
+    # Trial 1 of the recorded run again (its seed, 0 * 1000 + 1), as an evaluation
+    # trial: recorded as it was, the version space left as it was.
+    lines = []
+    runner = _runner(hook, progress=lines.append)
+    task, exp = _first(hook, runner)
+    rec, vs = runner.run(exp, "eval", 1, hook.vs0, task, 0.0, label=False)
+    one = hook.records[0]
+    hs, hg = runner.bounds(hook.vs0)
+    assert vs is hook.vs0 and runner.trials == [rec] and runner.physical == 1
+    assert dataclasses.replace(rec, decision_time_s=0.0, wall_time_s=0.0) == (
+        dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
+                            vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
+    assert lines == [
+        "EVAL  1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
+        "[stopped: gripper lag 0.0301 m, needs <= 0.0300; touching hook_a1 against cube1, "
+        "hook_a1 against tube1, robot against riser1, robot against tube1; cube1 centre x "
+        "1.0985 m, needs < 0.8500; moved 1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
