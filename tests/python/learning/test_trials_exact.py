@@ -164,7 +164,10 @@ def test_the_result_of_a_replayed_trial(hook):
     assert type(got.sim_time_s) is type(got.wall_time_s) is float
     assert got.facts_before[0] == ("pose", "cube1", 1.0978333768235253, -0.2619286922781563,
                                    -0.0801174103231533, 0.0)
-    assert dataclasses.replace(hook.records[4], max_tool_force_n=3.5).max_tool_force_n == 3.5
+    five = hook.records[4]   # hook_a3 pulled the cube out: the tool was loaded
+    got = runner._replayed(five, "hook_a3", task, Compound("hook_pose", (0.0375, 0.0, 0.0)),
+                           "use")
+    assert (got.max_tool_force_n, got.tool_load) == (3.531635, five.tool_load)
 
 
 def test_a_replayed_trial_is_its_record_and_its_labels(hook):
@@ -378,6 +381,7 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     assert 100.0 <= rec2.decision_time_s < 101.0 and 0 < rec2.wall_time_s < 60
     assert (rec2.decision_time_s, rec2.wall_time_s) == (round(rec2.decision_time_s, 4),
                                                         round(rec2.wall_time_s, 3))
+    assert type(rec2.decision_time_s) is type(rec2.wall_time_s) is float
     assert {type(a) for f in rec2.facts for a in f} == {str, float}
     assert dataclasses.replace(rec2, decision_time_s=0.0, wall_time_s=0.0) == (
         dataclasses.replace(two, decision_time_s=0.0, wall_time_s=0.0))
