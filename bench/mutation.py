@@ -134,6 +134,32 @@ EQUIVALENT = {
        "anything reads it (a trial that raises leaves create() with no result)"
        for name, n in (("_make_and_try", 20), ("_make_and_try", 39), ("_strengthen", 71),
                        ("_strengthen", 87))},
+    # learning/clips.py
+    **{f"creative_py.learning.clips.xǁClipKeeperǁ__init____mutmut_{n}":
+       "prepare() only imports the encoder and loads the font ahead of the clips (a "
+       "forked clip process inherits them): every clip is the same whether or not it ran"
+       for n in (39, 40, 41)},
+    **{f"creative_py.learning.clips.xǁClipKeeperǁ_note__mutmut_{n}":
+       "json.dumps writes ASCII only (ensure_ascii): every encoding writes the same bytes"
+       for n in (11, 14, 18)},
+    **{f"creative_py.learning.clips.xǁClipKeeperǁ_earlier_entries__mutmut_{n}":
+       "clips.jsonl holds ASCII JSON (_note), read the same in any ASCII-compatible "
+       "encoding; 'UTF-8' names 'utf-8'" for n in (3, 6)},
+    # learning/trials.py
+    "creative_py.learning.trials.x_task_facts__mutmut_13":
+        "robot=None builds no robot, as robot=False (the episode tests its truth)",
+    "creative_py.learning.trials.x_task_facts__mutmut_18": "seed 0 is open_episode's default",
+    **{f"creative_py.learning.trials.x_task_facts__mutmut_{n}":
+       "a scene with the robot gives the same facts (the cameras do not see it, it holds "
+       "nothing), only later" for n in (19, 23)},
+    "creative_py.learning.trials.xǁTrialRunnerǁ_label__mutmut_22":
+        "a blocked trial's planned example takes only the tool's parts from the facts "
+        "(experiment:label_trial/7), and its catalogue facts where the motion stopped "
+        "are the task's",
+    "creative_py.learning.trials.xǁTrialRunnerǁend_replay__mutmut_3":
+        "held is only tested for its truth (ClipKeeper.write): None is False",
+    "creative_py.learning.trials.xǁTrialRunnerǁrun__mutmut_61":
+        "a trial tests one literal at most (_planned): the separator is never written",
 }
 """Mutants that no test can kill: the code means the same with them."""
 
