@@ -34,7 +34,7 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
-from creative_py.bridge import Compound, Engine, PrologError, Term, fact_term
+from creative_py.bridge import Compound, Engine, PrologError, PrologFailed, Term, fact_term
 from creative_py.case import CaseManifest
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
@@ -198,7 +198,7 @@ class TrialRunner:
         if label:
             try:
                 vs = self._label(vs, exp, ex, task)
-            except (TypeError, ValueError, PrologError) as exc:
+            except (TypeError, ValueError, PrologError, PrologFailed) as exc:
                 if not replayed:
                     raise
                 raise ValueError(f"{self._where(n)}: field 'facts' does not label "

@@ -411,3 +411,4 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     band = draw(np.zeros((60, 320, 3), np.uint8), "t = 0.0 s")[:draw.band]
     assert first.shape == (60 + draw.band, 320)
     assert int((np.abs(band.astype(int).mean(axis=2) - first[:draw.band]) > 100).sum()) == 0
+
