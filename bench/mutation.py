@@ -29,6 +29,7 @@ import argparse
 import dataclasses
 import json
 import os
+import random
 import shutil
 import sys
 import time
@@ -263,6 +264,40 @@ def run_mutmut(only: list[str], tests: list[str], max_children: int | None,
             raise
 
 
+def mutant_names(source: str) -> list[str]:
+    """Return the names mutmut gives the mutants of one source file, in its order."""
+    import io
+
+    from mutmut.__main__ import write_all_mutants_to_file
+
+    path = ROOT / source
+    made = write_all_mutants_to_file(out=io.StringIO(), source=path.read_text(),
+                                     filename=Path(source))
+    module = source.removesuffix(".py").replace("/", ".")
+    return [n if n.startswith(module + ".") else f"{module}.{n}" for n in made.mutant_names]
+
+
+def sample_entry(source: str, names: list[str], seed: int) -> dict:
+    """Return the tally of a random sample's mutants (those of ``names`` that mutmut
+    checked) with the score's 95 % Wilson interval, an estimate of the whole module."""
+    codes = json.loads((ROOT / "mutants" / f"{source}.meta").read_text())["exit_code_by_key"]
+    chosen = {k: v for k, v in codes.items() if k in names}
+    entry = tally(chosen)
+    entry["survivors"] = sorted(k for k, v in chosen.items()
+                                if classify(v) in ("survived", "no_tests", "suspicious"))
+    entry["equivalent"] = [k for k in entry["survivors"] if k in EQUIVALENT]
+    entry["score_non_equivalent"] = _score(entry, len(entry["equivalent"]))
+    n = sum(entry[k] for k in ("killed", "survived", "timeout", "suspicious", "no_tests")) \
+        - len(entry["equivalent"])
+    if n:
+        p, z = entry["killed"] / n, 1.96
+        centre = (p + z * z / (2 * n)) / (1 + z * z / n)
+        half = z * ((p * (1 - p) / n + z * z / (4 * n * n)) ** 0.5) / (1 + z * z / n)
+        entry["interval95_non_equivalent"] = [round(centre - half, 4), round(centre + half, 4)]
+    entry.update(sample=len(names), seed=seed, of=len(mutant_names(source)))
+    return entry
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--only", action="append", default=[],
@@ -281,6 +316,13 @@ def main(argv: list[str] | None = None) -> int:
                              "wildcard, e.g. 'creative_py.learning.run.x_read_run_json*'); "
                              "with --reuse, the others keep their results, and a mutant "
                              "never run counts as not checked")
+    parser.add_argument("--sample", type=int, default=None,
+                        help="run a random sample of this many mutants of the one --only "
+                             "module and record it under 'samples' (an estimate with its "
+                             "95 %% interval), leaving the module's recorded counts as "
+                             "they are; for modules whose every mutant costs a whole "
+                             "replayed run")
+    parser.add_argument("--seed", type=int, default=1, help="the seed of --sample")
     parser.add_argument("--reuse", action="store_true",
                         help="keep mutants/ and mutmut's results of the last run (only "
                              "with the same --only: mutmut does not mutate again a "
@@ -298,25 +340,39 @@ def main(argv: list[str] | None = None) -> int:
     if not args.reuse and not args.summarise:
         shutil.rmtree(ROOT / "mutants", ignore_errors=True)
     start = time.monotonic()
+    sampled = None
+    if args.sample:
+        if len(args.only) != 1 or "*" in args.only[0]:
+            parser.error("--sample needs one --only module file")
+        names = mutant_names(args.only[0])
+        args.mutants = random.Random(args.seed).sample(names, min(args.sample, len(names)))
+        sampled = args.only[0]
     if args.summarise:
         modules = {}
     else:
         run_mutmut(args.only, args.tests, args.max_children, args.marks, args.mutants)
-        modules = module_results(ROOT / "mutants")
+        modules = {} if sampled else module_results(ROOT / "mutants")
     if args.only:
         from fnmatch import fnmatch
         modules = {k: v for k, v in modules.items() if any(fnmatch(k, p) for p in args.only)}
     previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
     merged = dict(previous.get("modules", {}))
     history = list(previous.get("history", []))
+    stamp = datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ")
+    samples = dict(previous.get("samples", {}))
+    if sampled:
+        samples[sampled] = {"at": stamp, "label": args.label, "tests": args.tests,
+                            **sample_entry(sampled, args.mutants, args.seed)}
     for other in args.merge:
         theirs = json.loads(other.read_text())
+        for source, entry in theirs.get("samples", {}).items():
+            if source not in samples or entry["at"] > samples[source]["at"]:
+                samples[source] = entry
         for source, entry in theirs.get("modules", {}).items():
             if source not in merged or entry["run"]["at"] > merged[source]["run"]["at"]:
                 merged[source] = entry
         history += [h for h in theirs.get("history", []) if h not in history]
     history.sort(key=lambda h: h["at"])
-    stamp = datetime.now(timezone.utc).strftime("%Y-%m-%dT%H:%MZ")
     for source, entry in modules.items():
         entry["run"] = {"at": stamp, "tests": args.tests or "pyproject [tool.mutmut]",
                         "marks": args.marks or "not slow", "label": args.label}
@@ -343,6 +399,9 @@ def main(argv: list[str] | None = None) -> int:
         "modules": merged,
         "equivalent": {k: v for k, v in EQUIVALENT.items()
                        if any(k in m["equivalent"] for m in merged.values())},
+        # Random samples of modules too dear to run whole: estimates, kept apart from the
+        # modules' counts (``--sample``); a module's latest sample replaces its earlier.
+        "samples": samples,
         "history": history + ([] if args.summarise else [{
             "at": stamp, "only": args.only or "all configured", "label": args.label,
             **({"mutants": args.mutants} if args.mutants else {}),
@@ -353,6 +412,11 @@ def main(argv: list[str] | None = None) -> int:
                                               "score_non_equivalent")}
                         for k, v in modules.items()}}]),
     }
+    if sampled:
+        print(f"sample of {sampled}: {samples[sampled]['killed']} of "
+              f"{samples[sampled]['sample']} killed, non-equivalent score "
+              f"{samples[sampled]['score_non_equivalent']} "
+              f"(95 % interval {samples[sampled].get('interval95_non_equivalent')})")
     RESULTS.write_text(json.dumps(result, indent=2) + "\n")
     print(f"mutation score {totals['score']} ({totals['score_non_equivalent']} of the "
           f"non-equivalent mutants) over {', '.join(sorted(merged))}: {RESULTS}")
