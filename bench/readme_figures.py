@@ -798,8 +798,9 @@ def engine_note() -> str:
 def mutation_table() -> str:
     """The mutation scores measured so far, and each module's first run (mutation.json)."""
     d = result("mutation")
-    rows = ["| module | mutants | killed | survived | not reached | score | first run |",
-            "| --- | ---: | ---: | ---: | ---: | ---: | --- |"]
+    rows = ["| module | mutants | killed | survived | not reached | not checked | score of "
+            "the checked | first run |",
+            "| --- | ---: | ---: | ---: | ---: | ---: | ---: | --- |"]
     keys = ("killed", "survived", "timeout", "suspicious", "no_tests", "not_checked")
     for name, m in d["modules"].items():
         total = sum(m[k] for k in keys)
@@ -812,16 +813,29 @@ def mutation_table() -> str:
                   else f"{first['score'] * 100:.1f} % ({first['killed']} killed, "
                        f"{first['survived']} survived, {first['no_tests']} not reached)")
         rows.append(f"| `{name.removeprefix('creative_py/')}` | {total} | {m['killed']} | "
-                    f"{m['survived']} | {m['no_tests']} | {score} | {before} |")
+                    f"{m['survived']} | {m['no_tests']} | {m.get('not_checked', 0)} | "
+                    f"{score} | {before} |")
     t = d["total"]
     reached = t["killed"] + t["survived"] + t["timeout"] + t["suspicious"]
     missing = d.get("modules_not_run", [])
     return ("\n".join(rows) + f"\n\nOver the {len(d['modules'])} modules: {t['killed']} "
             f"of {reached} reached mutants killed, {t['equivalent']} survivors equivalent, "
-            f"{t['no_tests']} not reached by a quick test: "
-            f"{t['score_non_equivalent'] * 100:.1f} % of the non-equivalent mutants killed. "
+            f"{t['no_tests']} not reached by a quick test"
+            + (f", {t['not_checked']} not checked (runs stopped before the end)"
+               if t.get("not_checked") else "")
+            + f": {t['score_non_equivalent'] * 100:.1f} % of the checked non-equivalent "
+            "mutants killed. "
             + (f"Not run yet: {', '.join(f'`{m}`' for m in missing)}." if missing
-               else "Every configured module has a recorded run."))
+               else "Every configured module has a recorded run.")
+            + "".join(f"\n\nA random sample (seed {e['seed']}) of {e['sample']} of the "
+                      f"{e['of']} mutants of `{name.removeprefix('creative_py/')}`: "
+                      f"{e['killed']} killed, {e['survived'] + e['no_tests']} not, "
+                      f"{len(e['equivalent'])} of these equivalent: an estimated "
+                      f"{e['score_non_equivalent'] * 100:.1f} % of its non-equivalent mutants "
+                      f"killed (95 % interval "
+                      f"{e['interval95_non_equivalent'][0] * 100:.1f}-"
+                      f"{e['interval95_non_equivalent'][1] * 100:.1f} %)."
+                      for name, e in sorted(d.get("samples", {}).items())))
 
 
 @block("test-suite")
