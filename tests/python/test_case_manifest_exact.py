@@ -187,39 +187,145 @@ def test_pose_bounds_are_inclusive_and_errors_exact(tmp_path):
     assert str(caught.value) == "--pose must be DX (m), got 'x'"
 
 
+def _error(folder):
+    """Return the error of reading ``folder``'s manifest, after its file prefix."""
+    with pytest.raises(WorldFileError) as caught:
+        read_manifest(folder)
+    prefix = f"{folder / 'case.toml'}: "
+    assert str(caught.value).startswith(prefix)
+    return str(caught.value)[len(prefix):]
+
+
 @pytest.mark.parametrize("old,new,message", [
     ('id = "mini"', 'id = "Mini"', "field 'id': must be a lower-case Prolog atom, got 'Mini'"),
-    ('trial_budget = 3\n', 'trial_budget = 3\npaper_trials = 0\n', "paper_trials"),
+    ('trial_budget = 3\n', 'trial_budget = 3\npaper_trials = 0\n',
+     "field 'paper_trials': must be >= 1, got 0"),
+    ('trial_budget = 3\n', 'trial_budget = 3\npaper_trials = 10001\n',
+     "field 'paper_trials': must be <= 10000, got 10001"),
+    ('trial_budget = 3\n', 'trial_budget = 10001\n',
+     "field 'trial_budget': must be <= 10000, got 10001"),
     ('goal = ["at(box1, shelf1)"]', 'goal = []',
      "field 'goal': must be a non-empty list of literals written as text"),
     ('args = ["tool"]\n', 'args = ["tool", "hand"]\n',
-     "must be a list of roles among tool, target, context, got ['tool', 'hand']"),
-    ('args = ["tool"]\n', 'args = ["tool"]\noptions = 3\n', "field 'skill[0].options': must be a table"),
-    ('pose = true\n', '', "exactly one skill must set pose = true, got 0 (none)"),
-    ('min = -0.1\nmax = 0.2', 'min = 0.3\nmax = 0.2', "must be >= min (0.3), got 0.2"),
+     "field 'skill[0].args': must be a list of roles among tool, target, context, "
+     "got ['tool', 'hand']"),
+    ('args = ["tool"]\n', 'args = ["tool"]\noptions = 3\n',
+     "field 'skill[0].options': must be a table"),
+    ('pose = true\n', '', "field 'skill': exactly one skill must set pose = true, got 0 (none)"),
+    ('args = ["tool"]\n', 'args = ["tool"]\npose = true\n',
+     "field 'skill': exactly one skill must set pose = true, got 2 (grab, push)"),
+    ('tool_action = true\n', '',
+     "field 'skill': exactly one skill must set tool_action = true, got 0 (none)"),
+    ('min = -0.1\nmax = 0.2', 'min = 0.3\nmax = 0.2',
+     "field 'pose.param[0].max': must be >= min (0.3), got 0.2"),
+    ('min = -0.1\n', 'min = -10.5\n', "field 'pose.param[0].min': must be >= -10.0, got -10.5"),
+    ('min = -0.1\n', 'min = 10.5\n', "field 'pose.param[0].min': must be <= 10.0, got 10.5"),
+    ('max = 0.2\n', 'max = -10.5\n', "field 'pose.param[0].max': must be >= -10.0, got -10.5"),
+    ('max = 0.2\n', 'max = 10.5\n', "field 'pose.param[0].max': must be <= 10.0, got 10.5"),
+    ('name = "easy"\n', 'name = "easy"\nset = 3\n',
+     "field 'variant[0].set': must be a table of dotted scene keys and values"),
     ('name = "hard"\nharder = true\n', 'name = "easy"\nharder = true\n',
-     "needs at least one [[variant]] with unique names, got ['easy', 'easy']"),
+     "field 'variant': needs at least one [[variant]] with unique names, got ['easy', 'easy']"),
     ('name = "hard"\nharder = true\n', 'name = "hard"\n',
-     "exactly one variant must be marked harder = true"),
+     "field 'variant': exactly one variant must be marked harder = true"),
     ('steps = ["grab", "push"]', 'steps = ["grab", "pull"]',
-     "must be a list of the case's skills (grab, push), got ['grab', 'pull']"),
+     "field 'demonstration.steps': must be a list of the case's skills (grab, push), "
+     "got ['grab', 'pull']"),
+    ('variant = "easy"', 'variant = "medium"',
+     "field 'demonstration.variant': must be one of easy, hard, got 'medium'"),
+    ('location = 2', 'location = 0', "field 'demonstration.location': must be >= 1, got 0"),
     ('dx = 0.05', 'dx = 0.5',
      "field 'demonstration.pose': demonstration.pose: dx must be within [-0.1, 0.2] m, "
      "got 0.5"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "mujoco"\n',
      "field 'backend': must be one of maniskill, pybullet, got 'mujoco'"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "PyBullet"\n',
-     "field 'backend': must be one of maniskill, pybullet, got 'PyBullet' (did you mean"),
+     "field 'backend': must be one of maniskill, pybullet, got 'PyBullet' "
+     "(did you mean 'pybullet'?)"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = 1\n',
      "field 'backend': must be a string, got 1"),
 ])
 def test_manifest_errors_name_the_file_and_field(tmp_path, old, new, message):
     assert old in MINIMAL
-    folder = _write(tmp_path, MINIMAL.replace(old, new, 1))
+    assert _error(_write(tmp_path, MINIMAL.replace(old, new, 1))) == message
+
+
+def test_empty_arrays_of_skills_and_pose_parameters_are_refused(tmp_path):
+    skills = MINIMAL[MINIMAL.index("[[skill]]"):MINIMAL.index("[pose]")]
+    text = MINIMAL.replace(skills, "").replace("[roles]", "skill = []\n\n[roles]")
+    assert _error(_write(tmp_path, text)) == "field 'skill': at least one [[skill]] is needed"
+    params = MINIMAL[MINIMAL.index("[[pose.param]]"):MINIMAL.index("[[variant]]")]
+    text = MINIMAL.replace(params, "").replace('term = "push_pose"\n',
+                                               'term = "push_pose"\nparam = []\n')
+    assert _error(_write(tmp_path, text, "no_params")) == (
+        "field 'pose.param': at least one [[pose.param]] is needed")
+
+
+def test_a_folder_without_a_manifest(tmp_path):
     with pytest.raises(WorldFileError) as caught:
-        read_manifest(folder)
-    assert str(caught.value).startswith(str(folder / "case.toml") + ": ")
-    assert message in str(caught.value)
+        read_manifest(tmp_path)
+    assert str(caught.value) == (f"{tmp_path / 'case.toml'}: file not found "
+                                 f"(a case folder needs a case.toml)")
+
+
+def test_bounds_equal_to_each_other_or_to_the_limits_are_kept(tmp_path):
+    text = (MINIMAL.replace("min = -0.1\nmax = 0.2", "min = 0.05\nmax = 0.05")
+            .replace("trial_budget = 3\n", "trial_budget = 10000\npaper_trials = 10000\n")
+            + "[randomise.location.gap]\njitter = 1000.0\nmin = 0.5\nmax = 0.5\n"
+            "[randomise.location.side]\njitter = 0\nmin = -1000.0\nmax = 1000.0\n")
+    m = read_manifest(_write(tmp_path, text))
+    assert (m.trial_budget, m.paper_trials) == (10000, 10000)
+    assert m.pose_params == (PoseParam("dx", "m", 0.05, 0.05, ""),)
+    assert m.location_jitter == (LocationJitter("gap", 1000.0, 0.5, 0.5),
+                                 LocationJitter("side", 0.0, -1000.0, 1000.0))
+    assert (m.catalogue_bounds, m.catalogue_value_bounds) == ((), ())
+    text = MINIMAL.replace("min = -0.1\nmax = 0.2", "min = -10.0\nmax = 10.0")
+    text += ("[randomise.catalogue.length]\nmin = -1000.0\nmax = 1000.0\n"
+             "short = {min = 7, max = 7}\n")
+    m = read_manifest(_write(tmp_path, text, "limits"))
+    assert m.pose_params == (PoseParam("dx", "m", -10.0, 10.0, ""),)
+    assert m.location_jitter == ()
+    assert m.catalogue_bounds == (("length", -1000.0, 1000.0),)
+    assert m.catalogue_value_bounds == (("length", "short", 7.0, 7.0),)
+
+
+@pytest.mark.parametrize("table,old,new,message", [
+    ("location.gap", "min = 0.0\n", "min = -1000.5\n", "min: must be >= -1000.0, got -1000.5"),
+    ("location.gap", "min = 0.0\n", "min = 1000.5\n", "min: must be <= 1000.0, got 1000.5"),
+    ("location.gap", "max = 0.04\n", "max = -1000.5\n",
+     "max: must be >= -1000.0, got -1000.5"),
+    ("location.gap", "max = 0.04\n", "max = 1000.5\n", "max: must be <= 1000.0, got 1000.5"),
+    ("location.gap", "min = 0.0\nmax = 0.04", "min = 0.05\nmax = 0.04",
+     "max: must be >= min (0.05), got 0.04"),
+    ("location.gap", "jitter = 0.01\n", "jitter = -0.01\n", "jitter: must be >= 0.0, got -0.01"),
+    ("location.gap", "jitter = 0.01\n", "jitter = 1000.5\n",
+     "jitter: must be <= 1000.0, got 1000.5"),
+    ("catalogue.length", "min = 0.1\n", "min = -1000.5\n",
+     "min: must be >= -1000.0, got -1000.5"),
+    ("catalogue.length", "min = 0.1\n", "min = 1000.5\n", "min: must be <= 1000.0, got 1000.5"),
+    ("catalogue.width", "max = 0.03\n", "max = -1000.5\n",
+     "max: must be >= -1000.0, got -1000.5"),
+    ("catalogue.width", "max = 0.03\n", "max = 1000.5\n", "max: must be <= 1000.0, got 1000.5"),
+    ("catalogue.length.long", "long = {min = 0.3, max = 0.5}", "long = {min = 0.6, max = 0.5}",
+     "max: must be >= min (0.6), got 0.5"),
+])
+def test_randomise_errors_exact(tmp_path, table, old, new, message):
+    assert old in FULL_EXTRA
+    error = _error(_write(tmp_path, MINIMAL + FULL_EXTRA.replace(old, new, 1)))
+    field, cause = message.split(": ", 1)
+    assert error == f"field 'randomise.{table}.{field}': {cause}"
+
+
+def test_a_randomise_table_with_only_locations_or_only_catalogue_bounds(tmp_path):
+    locations, catalogue = FULL_EXTRA.split("[randomise.catalogue.length]")
+    m = read_manifest(_write(tmp_path, MINIMAL + locations))
+    assert m.location_jitter == (LocationJitter("gap", 0.01, 0.0, 0.04),
+                                 LocationJitter("side", 0.0, -0.02, 0.02))
+    assert (m.catalogue_bounds, m.catalogue_value_bounds) == ((), ())
+    m = read_manifest(_write(tmp_path, MINIMAL + "[randomise.catalogue.length]" + catalogue,
+                             "catalogue_only"))
+    assert m.location_jitter == ()
+    assert m.catalogue_bounds == (("length", 0.1, math.inf), ("width", -math.inf, 0.03))
 
 
 def test_randomise_bounds_errors(tmp_path):
@@ -234,7 +340,7 @@ def test_randomise_bounds_errors(tmp_path):
 def test_a_case_index_with_a_duplicate_and_a_broken_manifest(tmp_path):
     _write(tmp_path, MINIMAL, "a_world")
     _write(tmp_path, MINIMAL, "b_world")
-    _write(tmp_path, "id = [", "c_world")
+    _write(tmp_path, 'title = "no id"\n', "c_world")
     _write(tmp_path, MINIMAL.replace('id = "mini"', 'id = "other"')
            .replace("trial_budget = 3", "trial_budget = 0"), "d_world")
     index = case_index(tmp_path)
@@ -251,6 +357,8 @@ def test_a_case_index_with_a_duplicate_and_a_broken_manifest(tmp_path):
         load_cases(tmp_path)
     assert sorted(broken_cases(tmp_path)) == [tmp_path / f"{x}_world" / "case.toml"
                                               for x in "bcd"]
+    assert index.broken[tmp_path / "c_world" / "case.toml"] == (
+        f"{tmp_path / 'c_world' / 'case.toml'}: field 'id': missing")
     assert broken_cases(tmp_path)[tmp_path / "d_world" / "case.toml"].startswith(
         f"{tmp_path / 'd_world' / 'case.toml'}: field 'trial_budget'")
     with pytest.raises(KeyError) as caught:
