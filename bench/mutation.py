@@ -277,7 +277,7 @@ def mutant_names(source: str) -> list[str]:
     return [n if n.startswith(module + ".") else f"{module}.{n}" for n in made.mutant_names]
 
 
-def sample_entry(source: str, names: list[str], seed: int) -> dict:
+def sample_entry(source: str, names: list[str], seed: int, of: int) -> dict:
     """Return the tally of a random sample's mutants (those of ``names`` that mutmut
     checked) with the score's 95 % Wilson interval, an estimate of the whole module."""
     codes = json.loads((ROOT / "mutants" / f"{source}.meta").read_text())["exit_code_by_key"]
@@ -294,7 +294,7 @@ def sample_entry(source: str, names: list[str], seed: int) -> dict:
         centre = (p + z * z / (2 * n)) / (1 + z * z / n)
         half = z * ((p * (1 - p) / n + z * z / (4 * n * n)) ** 0.5) / (1 + z * z / n)
         entry["interval95_non_equivalent"] = [round(centre - half, 4), round(centre + half, 4)]
-    entry.update(sample=len(names), seed=seed, of=len(mutant_names(source)))
+    entry.update(sample=len(names), seed=seed, of=of)
     return entry
 
 
@@ -340,12 +340,13 @@ def main(argv: list[str] | None = None) -> int:
     if not args.reuse and not args.summarise:
         shutil.rmtree(ROOT / "mutants", ignore_errors=True)
     start = time.monotonic()
-    sampled = None
+    sampled, population = None, 0
     if args.sample:
         if len(args.only) != 1 or "*" in args.only[0]:
             parser.error("--sample needs one --only module file")
         names = mutant_names(args.only[0])
-        args.mutants = random.Random(args.seed).sample(names, min(args.sample, len(names)))
+        population = len(names)
+        args.mutants = random.Random(args.seed).sample(names, min(args.sample, population))
         sampled = args.only[0]
     if args.summarise:
         modules = {}
@@ -362,7 +363,7 @@ def main(argv: list[str] | None = None) -> int:
     samples = dict(previous.get("samples", {}))
     if sampled:
         samples[sampled] = {"at": stamp, "label": args.label, "tests": args.tests,
-                            **sample_entry(sampled, args.mutants, args.seed)}
+                            **sample_entry(sampled, args.mutants, args.seed, population)}
     for other in args.merge:
         theirs = json.loads(other.read_text())
         for source, entry in theirs.get("samples", {}).items():
