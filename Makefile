@@ -63,7 +63,7 @@ $(MS_STAMP): pyproject.toml $(STAMP) | $(BACKPORTS)
 setup-maniskill: $(MS_STAMP)  ## Install the ManiSkill3 backend (Mesa 25 Vulkan on the CPU, mani-skill, CPU torch).
 
 test-maniskill: $(MS_STAMP)  ## Run the ManiSkill backend's tests (a real short episode each).
-	VK_ICD_FILENAMES=$(LAVAPIPE) $(PY) -m pytest -q -p no:randomly -n 0 tests/python/maniskill
+	VK_ICD_FILENAMES=$(LAVAPIPE) $(PY) -m pytest -q -p no:randomly -n 0 tests/python/backends/maniskill
 
 # A learning run of the ManiSkill case, then its learned model on 20 fresh ManiSkill seeds
 # (bench/results/maniskill.json) and the demonstration's tool and pose on the same seeds.

@@ -18,8 +18,8 @@ from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.case import load_cases
 from creative_py.learning.poses import pose_resolver
 from creative_py.learning.tool_use import run_demonstration
-from creative_py.learning.trials import task_facts
-from creative_py.sim import load_world
+from creative_py.simulator.trial import task_facts
+from creative_py.backends.pybullet import load_world
 
 N = 30
 

@@ -29,7 +29,7 @@ def main() -> int:
     from creative_py.bridge import Engine
     from creative_py.case import get_case
     from creative_py.learning.run import draw_catalogue_world
-    from creative_py.sim import load_world
+    from creative_py.backends.pybullet import load_world
     from creative_py.sweep import parse_ints
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])

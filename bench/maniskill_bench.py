@@ -31,7 +31,7 @@ def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
     straight towards the robot base until it is 0.45 m from it (same step budget)."""
     import numpy as np
 
-    from creative_py.maniskill.skills import CLOSED
+    from creative_py.backends.maniskill.skills import CLOSED
 
     with sim.open_episode(world, variant, location, tool) as ep:
         d = ep.driver

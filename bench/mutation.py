@@ -88,33 +88,33 @@ EQUIVALENT = {
     **{f"creative_py.report.plot.x_trial_labels__mutmut_{n}":
        "the phase tag's default: a trial record's phase is use, create or eval "
        "(records.trial refuses any other)" for n in (10, 11, 12)},
-    **{f"creative_py.learning.strength.x_check_strength__mutmut_{n}":
+    **{f"creative_py.fabrication.strength.x_check_strength__mutmut_{n}":
        "the verdict given at construction is a placeholder, replaced before the return"
        for n in (97, 108)},
-    **{f"creative_py.learning.strength.x_check_strength__mutmut_{n}":
+    **{f"creative_py.fabrication.strength.x_check_strength__mutmut_{n}":
        "every load model's stress is linear in the force with a positive lever or area: "
        "a stress of 0 comes with a force of 0 and a positive force with a positive stress"
        for n in (110, 113, 115)},
-    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+    **{f"creative_py.fabrication.strength.x_write_strength__mutmut_{n}":
        "encoding None or no encoding reads the locale's, UTF-8 on every machine the "
        "project runs on; 'UTF-8' names 'utf-8'" for n in (5, 7, 18, 21, 25)},
-    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+    **{f"creative_py.fabrication.strength.x_write_strength__mutmut_{n}":
        "the temporary file's prefix: it is renamed over the JSON or removed, never seen"
        for n in (12, 14)},
-    **{f"creative_py.learning.strength.x_write_strength__mutmut_{n}":
+    **{f"creative_py.fabrication.strength.x_write_strength__mutmut_{n}":
        "on the failure path the temporary file exists (mkstemp made it), so missing_ok "
        "is never used" for n in (44, 46)},
-    "creative_py.learning.strength.xǁStrengthCheckǁto_dict__mutmut_1":
+    "creative_py.fabrication.strength.xǁStrengthCheckǁto_dict__mutmut_1":
         "every call of r() in to_dict names its digits: the default is never used",
     "creative_py.report.headline.x_headline__mutmut_178":
         "with solved None the mapping's .get(None) is None, as the else branch",
-    # creative_py/learning/manufacture.py
-    **{f"creative_py.learning.manufacture.x__did_you_mean__mutmut_{n}":
+    # creative_py/fabrication/manufacture.py
+    **{f"creative_py.fabrication.manufacture.x__did_you_mean__mutmut_{n}":
        "difflib.get_close_matches lists the best match first whatever n (>= 1) is, and "
        "only close[0] is used" for n in (7, 9)},
-    "creative_py.learning.manufacture.x_parse_context__mutmut_3":
+    "creative_py.fabrication.manufacture.x_parse_context__mutmut_3":
         "Prolog reads '[' + blank text + ']' as [], the else branch's value",
-    "creative_py.learning.manufacture.x_tool_vocabulary__mutmut_2":
+    "creative_py.fabrication.manufacture.x_tool_vocabulary__mutmut_2":
         "a process has one engine (Engine refuses a second), so id(None) in place of "
         "id(engine) keys the same one vocabulary per case",
     # creative_py/learning/run.py

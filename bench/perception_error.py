@@ -1,7 +1,7 @@
 """Measure perception error and render time; record them in bench/results/perception.json.
 
 For every case (``worlds/*/case.toml``), every variant and location is built by the
-generic simulator (:mod:`creative_py.sim`) and each object its cameras track
+generic simulator (:mod:`creative_py.backends.pybullet`) and each object its cameras track
 (``[[perception.object]]`` of ``scene.toml``) is measured: a scene body as it lies and
 turned by a random yaw in place; a tracked tool, for every catalogued tool, put by hand
 at the demonstration's pose and at poses around it (when the pose skill can be done
@@ -28,8 +28,8 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.perception import estimate_objects
-from creative_py.sim.bodies import frame_pose, set_frame_pose
-from creative_py.sim.camera import CameraSpec, capture
+from creative_py.backends.pybullet.bodies import frame_pose, set_frame_pose
+from creative_py.backends.pybullet.camera import CameraSpec, capture
 
 ROOT = Path(__file__).resolve().parents[1]
 log = logging.getLogger("bench.perception")
@@ -127,8 +127,8 @@ def run_case(manifest, seeds: int) -> dict:
     """Measure every tracked object of one case's world (see the module docstring)."""
     from creative_py.bridge import Engine
     from creative_py.learning.poses import pose_resolver
-    from creative_py.sim import load_world, open_episode
-    from creative_py.sim.primitives import PRIMITIVES
+    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.backends.pybullet.primitives import PRIMITIVES
 
     world = load_world(manifest)
     poses = pose_resolver(Engine.instance(), manifest)
@@ -181,7 +181,7 @@ def render_times(repeats: int) -> dict:
     estimate time is for every tracked object in a 320 x 240 view.
     """
     from creative_py.case import load_cases
-    from creative_py.sim import load_world, open_episode
+    from creative_py.backends.pybullet import load_world, open_episode
 
     manifest = load_cases()[sorted(load_cases())[0]]
     world = load_world(manifest)

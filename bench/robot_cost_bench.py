@@ -1,12 +1,12 @@
 """Benchmark what a trial costs with the light robot against the heavy one, in one run.
 
 For each case (default: hook and wedge, the case ids of ``worlds/*/case.toml``) runs
-the same trials once per robot mode of :data:`creative_py.sim.baxter.ROBOT_MODES`:
+the same trials once per robot mode of :data:`creative_py.backends.pybullet.baxter.ROBOT_MODES`:
 ``heavy`` (the robot of before: every joint simulated, a kinematics client with the
 full model and a second URDF load per episode, the start posture's via solution
 searched per tool), ``exact`` (the full physics model, the rest light: results bit for
 bit the heavy ones) and ``light`` (the default: idle joints fixed and merged). A trial
-is :func:`creative_py.sim.run_trial`, as a learning run calls it: the scene built, every
+is :func:`creative_py.backends.pybullet.run_trial`, as a learning run calls it: the scene built, every
 skill of the manifest, the engine's pose target, the oracle. The trials are the first
 ``--trials`` catalogued tools at the demonstration's variant, location and pose, each
 mode in a world of its own (so every mode searches its start postures), the modes
@@ -34,7 +34,7 @@ import time
 from pathlib import Path
 
 from creative_py.case import load_cases
-from creative_py.sim import baxter, load_world, open_episode, run_trial
+from creative_py.backends.pybullet import baxter, load_world, open_episode, run_trial
 
 RESULTS = Path(__file__).resolve().parent / "results"
 MODES = baxter.ROBOT_MODES

@@ -33,8 +33,8 @@ from pathlib import Path
 from creative_py.bridge import Engine
 from creative_py.case import load_cases
 from creative_py.learning.poses import pose_resolver
-from creative_py.sim import load_world, open_episode
-from creative_py.sim.episode import play_trial
+from creative_py.backends.pybullet import load_world, open_episode
+from creative_py.backends.pybullet.episode import play_trial
 
 RESULTS = Path(__file__).resolve().parent / "results"
 SHORT = {"success": "S", "failure": "F", "blocked": "B", "unreachable": "U", "invalid": "I"}

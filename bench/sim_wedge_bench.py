@@ -19,7 +19,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from sim_bench import main as sim_bench_main  # noqa: E402
 
 from creative_py.case import load_cases  # noqa: E402
-from creative_py.sim.primitives import PRIMITIVES  # noqa: E402
+from creative_py.backends.pybullet.primitives import PRIMITIVES  # noqa: E402
 
 
 def by_hand_cases() -> list[str]:

@@ -30,12 +30,12 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
   +-:data:`RANDOMISE_LIMIT`).
 
 The skills' ``options`` are checked where they are resolved, in every variant and
-location (:func:`creative_py.sim.world.check_values`, the bounds of
-:data:`creative_py.sim.primitives.OPTION_BOUNDS`).
+location (:func:`creative_py.backends.pybullet.world.check_values`, the bounds of
+:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`).
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under
 ``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field
-(:class:`~creative_py.world.WorldFileError`).
+(:class:`~creative_py.world_files.WorldFileError`).
 """
 
 from __future__ import annotations
@@ -46,7 +46,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from creative_py.world import WORLDS_ROOT, Fields, WorldFileError, load_toml
+from creative_py.world_files import WORLDS_ROOT, Fields, WorldFileError, load_toml
 
 MANIFEST = "case.toml"
 """The manifest's file name in a world folder."""
@@ -86,8 +86,8 @@ class BackendEntry:
 
 
 BACKENDS: dict[str, BackendEntry] = {
-    "pybullet": BackendEntry("creative_py.sim"),
-    "maniskill": BackendEntry("creative_py.maniskill", extra="maniskill"),
+    "pybullet": BackendEntry("creative_py.backends.pybullet"),
+    "maniskill": BackendEntry("creative_py.backends.maniskill", extra="maniskill"),
 }
 """The simulator backends a manifest's ``backend`` may name: the registry that
 :func:`creative_py.simulator.backend` reads (here, below the simulator boundary, so

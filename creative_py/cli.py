@@ -50,7 +50,7 @@ def _one_line_errors() -> Iterator[None]:
     file system) into one line ``error: ...`` and exit code 2; ``--debug`` re-raises."""
     from creative_py.bridge import BridgeError
     from creative_py.mesh.slicer import SliceError
-    from creative_py.world import WorldFileError
+    from creative_py.world_files import WorldFileError
 
     try:
         yield
@@ -171,7 +171,7 @@ def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as
 def _manifest(case: str, world: Optional[Path]):
     """Return the manifest of ``case`` (from ``world`` if given), or fail in one line."""
     from creative_py.case import get_case, read_manifest
-    from creative_py.world import WorldFileError
+    from creative_py.world_files import WorldFileError
 
     try:
         m = get_case(case) if world is None else read_manifest(world)
@@ -225,7 +225,7 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     from creative_py.learning.poses import pose_resolver
     from creative_py.records.trial import verdict_words
     from creative_py.simulator import backend_for
-    from creative_py.world import WorldFileError
+    from creative_py.world_files import WorldFileError
 
     m = _manifest(case, world)
     _check_counts(("--seed", seed, 0, SEED_MAX))
@@ -389,7 +389,7 @@ def run(
 
     from creative_py.learning.run import RunOptions, read_run_json, resume_run, run_case
     from creative_py.report.progress import RunProgress
-    from creative_py.world import WorldFileError
+    from creative_py.world_files import WorldFileError
 
     console = Console(stderr=True)
     out, world, resume = _path("--out", out), _path("--world", world), _path("--resume", resume)
@@ -572,12 +572,12 @@ def make_tool_cmd(
     """Size a tool from a qualitative spec with CLP(R) and write URDF, SDF, SCAD, STL,
     the printed pieces (split to fit the build volume) and their G-code (PrusaSlicer)."""
     from creative_py.bridge import Engine, PrologError
-    from creative_py.learning.manufacture import (
+    from creative_py.fabrication.manufacture import (
         InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
     )
     from creative_py.mesh.printability import PrintSettings
     from creative_py.mesh.slicer import require_slicer
-    from creative_py.world import WorldFileError
+    from creative_py.world_files import WorldFileError
 
     out, variant, name = _path("--out", out), _name("--variant", variant), _name("--name", name)
     settings = PrintSettings()

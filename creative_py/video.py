@@ -1,6 +1,6 @@
 """Video clips of trials: captions drawn onto frames, MP4 written with imageio's ffmpeg.
 
-The frames come from :class:`creative_py.sim.recorder.Recorder` (RGB, uint8, HxWx3);
+The frames come from :class:`creative_py.backends.pybullet.recorder.Recorder` (RGB, uint8, HxWx3);
 this module knows nothing of the physics. Captions are drawn with Pillow (installed
 with matplotlib) in matplotlib's DejaVu Sans, in a dark band added above the picture
 (the frame is taller than the camera's picture: the caption hides nothing of it, and a

@@ -11,7 +11,7 @@ literal) -> the spec class (a frozen dataclass deriving from
 :class:`~creative_py.kinds.parts.KindSpec`, with a ``from_fields(kind, data)``
 constructor).
 
-This package is below :mod:`creative_py.sim` and :mod:`creative_py.mesh`: it imports
+This package is below :mod:`creative_py.backends.pybullet` and :mod:`creative_py.mesh`: it imports
 nothing else of the project and no third-party engine (numbers, parts, text).
 """
 

@@ -2,7 +2,7 @@
 
 A kind module (:mod:`creative_py.kinds`) describes its tools with the parts below (boxes,
 convex hulls, upright cylinders in the tool frame, metres) and a spec class derived from
-:class:`KindSpec`; :mod:`creative_py.mesh` and :mod:`creative_py.sim` interpret them
+:class:`KindSpec`; :mod:`creative_py.mesh` and :mod:`creative_py.backends.pybullet` interpret them
 generically. This module is pure Python (numbers only): it imports nothing of the
 project and no third-party engine.
 """
@@ -18,7 +18,7 @@ PLA_DENSITY = 1240.0  # kg/m^3, printed PLA at 100 % infill
 runs and in ``make-tool``) and of the slicer's filament; the one density of the project."""
 
 PLA_STRENGTH = 50.0e6  # Pa
-"""Strength of printed PLA that the strength check (:mod:`creative_py.learning.strength`)
+"""Strength of printed PLA that the strength check (:mod:`creative_py.fabrication.strength`)
 holds a tool's stress against, pascals: the tensile (and flexural) strength of PLA
 printed at 100 % infill with its layers along the load, 50-60 MPa in the filament makers'
 datasheets and in tests of FDM coupons; we take the low end. A handled tool prints lying
@@ -30,7 +30,7 @@ MIN_SAFETY_FACTOR = 2.0
 strength check accepts."""
 
 Fact = tuple
-"""A catalogue fact: ``(name, object, value, ...)`` (as :data:`creative_py.sim.types.Fact`)."""
+"""A catalogue fact: ``(name, object, value, ...)`` (as :data:`creative_py.simulator.types.Fact`)."""
 
 
 @dataclass(frozen=True)
@@ -87,7 +87,7 @@ class KindSpec:
     Class attributes a kind sets:
 
     ``HANDLING``
-        How the simulator holds it (:data:`creative_py.sim.tools.HANDLINGS`):
+        How the simulator holds it (:data:`creative_py.backends.pybullet.tools.HANDLINGS`):
         ``"handle"`` (lies on a pedestal, gripped at the butt end of a handle along +x,
         turned about the handle's axis) or ``"top"`` (stands on its base, gripped from
         above).
@@ -166,7 +166,7 @@ class KindSpec:
         ``point`` and ``grasp`` are the contact and grasp points in the tool frame
         (metres; None when not recorded); the material's strength and the safety
         factor asked for size a handle that would pass. The result holds the
-        :class:`~creative_py.learning.strength.StrengthCheck` fields ``model``,
+        :class:`~creative_py.fabrication.strength.StrengthCheck` fields ``model``,
         ``lever_arm_m``, ``section_m``, ``area_m2``, ``second_moment_m4``,
         ``section_modulus_m3``, ``moment_nm``, ``stress_pa``, ``grasp_point_m``,
         ``required_handle_width_m`` and ``note``.

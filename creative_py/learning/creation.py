@@ -69,7 +69,7 @@ class CreatedTool:
     its STL, G-code, bounding box (mm), volume, print time and filament; the joint; the
     union's volume check; totals."""
     strength: dict[str, Any] = field(default_factory=dict)
-    """The strength check of its successful trial (:mod:`creative_py.learning.strength`)."""
+    """The strength check of its successful trial (:mod:`creative_py.fabrication.strength`)."""
 
 
 @dataclass
@@ -321,7 +321,7 @@ class ToolCreator:
                     ) -> tuple[Any, CreatedTool, int]:
         """Check a created tool's strength from its successful trial; thicken it if needed.
 
-        The check (:mod:`creative_py.learning.strength`) uses the largest contact force
+        The check (:mod:`creative_py.fabrication.strength`) uses the largest contact force
         the physics recorded on the tool in ``rec``. A tool that fails it is sized again
         with a wider handle (a ``min_handle_width_m`` fact for the CLP size model),
         written, added to ``created`` and tried in the physics; a tool the size model
@@ -329,7 +329,7 @@ class ToolCreator:
         its JSON manifest. Returns the tool to evaluate (its ``trial_outcome`` and
         ``strength["verdict"]`` say whether it may be) and the trial count.
         """
-        from creative_py.learning.strength import (MAX_THICKENINGS, check_strength,
+        from creative_py.fabrication.strength import (MAX_THICKENINGS, check_strength,
                                                    rejected, thicker_dims)
 
         sf = self.safety_factor
@@ -385,7 +385,7 @@ class ToolCreator:
 
     def _record_strength(self, ct: CreatedTool, check: Any) -> None:
         """Put a strength check into the created tool and its JSON manifest."""
-        from creative_py.learning.strength import write_strength
+        from creative_py.fabrication.strength import write_strength
 
         ct.strength = check.to_dict()
         urdf = ct.files.get("urdf")

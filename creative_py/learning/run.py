@@ -65,7 +65,7 @@ class RunOptions:
         :class:`~creative_py.learning.strategies.UnknownStrategy`.
     world_seed : int or None
         None: the world as its files say; N: a world drawn from the case's manifest
-        (:func:`creative_py.sim.world.draw_world`: the catalogue's numbers inside their
+        (:func:`creative_py.backends.pybullet.world.draw_world`: the catalogue's numbers inside their
         own qualitative ranges, its order shuffled, the locations jittered), the same
         for the same N.
     catalogue_first : bool or None
@@ -592,7 +592,7 @@ def check_catalogue(engine: Engine, world: World) -> None:
     """Check that every catalogued object's facts (its kind's, as the robot perceives
     them) are in the ontology's vocabulary (the catalogue predicates of the case's tool
     class); raise ValueError naming the object and the fact otherwise."""
-    from creative_py.learning.manufacture import tool_vocabulary
+    from creative_py.fabrication.manufacture import tool_vocabulary
 
     m = world.manifest
     known = {(str(i.args[0]), int(i.args[1])) for i in engine.catalogue_predicates(m.id)}

@@ -19,7 +19,7 @@ case. The physics alone decides the outcome.
 
 What each way of ending a trial means is decided by the simulator alone (its
 backend's ``run_trial``, :class:`creative_py.simulator.Backend`; pybullet's is
-:func:`creative_py.sim.episode.trial_outcome`). Outcomes ``blocked`` (the arm could
+:func:`creative_py.backends.pybullet.episode.trial_outcome`). Outcomes ``blocked`` (the arm could
 not carry out a motion before the tool action, e.g. a short handle whose gripper hits
 the tube mouth before the prong is behind the cube) count as failures of the *planned*
 example, so they are evidence about the tested literal only; outcomes
@@ -40,6 +40,7 @@ from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
 from creative_py.records.trial import TrialRecord, verdict_lines
+from creative_py.simulator.trial import task_facts
 
 if TYPE_CHECKING:
     from creative_py.simulator import PoseTarget, World
@@ -74,31 +75,6 @@ def pose_numbers(pose: Term) -> tuple[float, ...]:
     if not isinstance(pose, Compound):
         raise ValueError(f"not a pose term: {pose!r}")
     return tuple(float(a) for a in pose.args)
-
-
-_TASK_FACTS: dict[tuple, list[tuple]] = {}
-
-
-def task_facts(world: World, variant: str, location: int) -> list[tuple]:
-    """Return what the robot perceives of a task before acting: the catalogue of
-    available objects, the apparatus and the target's pose.
-
-    The scene is built and observed once per (world folder, available objects, variant,
-    location) by the manifest's backend; nothing moves.
-    """
-    from creative_py.simulator import backend_for
-
-    m: CaseManifest = world.manifest
-    key = (m.id, str(m.folder), world.variation,
-           tuple(sorted(world.catalogue)), variant, int(location))
-    if key not in _TASK_FACTS:
-        # The robot is not built: it is invisible to the cameras and holds nothing yet,
-        # so the facts are the same (checked for every case, variant and location) and
-        # the scene builds seven times faster.
-        with backend_for(m).open_episode(world, variant, int(location),
-                                         m.demonstration.tool, seed=0, robot=False) as ep:
-            _TASK_FACTS[key] = list(ep.observe().facts)
-    return _TASK_FACTS[key]
 
 
 class TrialRunner:

@@ -46,7 +46,7 @@ from creative_py.mesh.scad import scad_text
 from creative_py.mesh.sdf import sdf_text
 from creative_py.mesh.slicer import PROFILE, slice_piece
 from creative_py.mesh.solid import MassProperties, mass_properties, mesh_from_solid, tool_solid
-from creative_py.mesh.spec import ToolSpec, spec_from_dict, spec_volume
+from creative_py.mesh.spec import KindSpec, spec_from_dict, spec_volume
 from creative_py.mesh.split import JOINT_KIND, Assembly, SplitError, split_tool
 from creative_py.mesh.tolerances import MM_PER_M
 from creative_py.mesh.urdf import urdf_text
@@ -64,7 +64,7 @@ class ToolFiles:
 
     Attributes
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool.
     directory : pathlib.Path
         The tool's folder, ``out_dir/<name>``.
@@ -89,7 +89,7 @@ class ToolFiles:
         Each piece's G-code; empty when the tool was not sliced.
     """
 
-    spec: ToolSpec
+    spec: KindSpec
     directory: Path
     urdf: Path
     sdf: Path
@@ -117,7 +117,7 @@ class ToolFiles:
                 + self.meshes + self.sim_models + self.pieces + self.gcode)
 
 
-def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
+def _manifest(spec: KindSpec, mass: MassProperties, verdict: Printability,
               names: dict[str, object]) -> dict:
     return {
         "manifest_version": MANIFEST_VERSION,
@@ -135,7 +135,7 @@ def _manifest(spec: ToolSpec, mass: MassProperties, verdict: Printability,
     }
 
 
-def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: bool,
+def _write_all(spec: KindSpec, folder: Path, settings: PrintSettings, picture: bool,
                gcode: bool = False) -> tuple[MassProperties, Printability, dict]:
     solid = tool_solid(spec)
     mesh = mesh_from_solid(solid)
@@ -163,13 +163,13 @@ def _write_all(spec: ToolSpec, folder: Path, settings: PrintSettings, picture: b
     return mass, verdict, manifest["print"]
 
 
-def write_print_files(spec: ToolSpec, solid, folder: Path, settings: PrintSettings, *,
+def write_print_files(spec: KindSpec, solid, folder: Path, settings: PrintSettings, *,
                       gcode: bool = False) -> dict:
     """Split the tool into printable pieces, write each as an STL and (``gcode``) slice it.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool.
     solid : manifold3d.Manifold
         Its designed solid (:func:`creative_py.mesh.solid.tool_solid`), metres.
@@ -263,7 +263,7 @@ def print_entry(assembly: Assembly, settings: PrintSettings) -> dict:
     }
 
 
-def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
+def tool_files_in(directory: Path, spec: KindSpec, mass: MassProperties,
                   verdict: Printability, *, picture: bool = True,
                   assembly: dict | None = None) -> ToolFiles:
     """Return the :class:`ToolFiles` naming a tool's files inside ``directory``
@@ -284,14 +284,14 @@ def tool_files_in(directory: Path, spec: ToolSpec, mass: MassProperties,
         gcode=tuple(directory / r["gcode"] for r in rows if r.get("gcode")))
 
 
-def write_tool_files(spec: ToolSpec, out_dir: Path | str, *,
+def write_tool_files(spec: KindSpec, out_dir: Path | str, *,
                      settings: PrintSettings = PrintSettings(), overwrite: bool = False,
                      picture: bool = True, gcode: bool = False) -> ToolFiles:
     """Write a tool's URDF, SDF, OpenSCAD, STL, picture and manifest into ``out_dir/<name>/``.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The sized tool (metres).
     out_dir : path
         Parent folder (created if missing); the tool gets its own folder inside it.

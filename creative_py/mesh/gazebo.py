@@ -37,7 +37,7 @@ import trimesh
 from creative_py.mesh.link import Shape, hull_meshes, tool_link
 from creative_py.mesh.sdf import SDF_VERSION, sdf_text
 from creative_py.mesh.solid import MassProperties
-from creative_py.mesh.spec import ToolSpec
+from creative_py.mesh.spec import KindSpec
 from creative_py.mesh.urdf import urdf_text
 
 GAZEBO_DIR = "gazebo"
@@ -70,7 +70,7 @@ def ros_package_dir(tool_dir: Path | str, name: str) -> Path:
     return Path(tool_dir) / ROS_DIR / ros_package_name(name)
 
 
-def sim_model_paths(tool_dir: Path | str, spec: ToolSpec) -> tuple[Path, ...]:
+def sim_model_paths(tool_dir: Path | str, spec: KindSpec) -> tuple[Path, ...]:
     """Return every file :func:`write_sim_models` writes for ``spec`` in ``tool_dir``."""
     name = spec.name
     meshes = [f"{name}.stl", *sorted(hull_meshes(spec))]
@@ -137,13 +137,13 @@ def _write_meshes(folder: Path, visual_name: str, visual: trimesh.Trimesh,
                                         encoding="utf-8")
 
 
-def write_sim_models(spec: ToolSpec, mass: MassProperties, mesh: trimesh.Trimesh,
+def write_sim_models(spec: KindSpec, mass: MassProperties, mesh: trimesh.Trimesh,
                      tool_dir: Path) -> dict[str, str]:
     """Write the tool's Gazebo model folder and ROS package inside ``tool_dir``.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool.
     mass : MassProperties
         Its mass properties (those of its URDF and SDF).

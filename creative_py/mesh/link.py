@@ -16,7 +16,7 @@ import numpy as np
 import trimesh
 
 from creative_py.mesh.solid import MassProperties
-from creative_py.mesh.spec import Box, Cylinder, Hull, ToolSpec
+from creative_py.mesh.spec import Box, Cylinder, Hull, KindSpec
 from creative_py.mesh.tolerances import NUMERICAL_NOISE_RTOL
 
 Vec3 = tuple[float, float, float]
@@ -61,18 +61,18 @@ class ToolLink:
     rgba: tuple[float, float, float, float]
 
 
-def hull_file_name(spec: ToolSpec, index: int) -> str:
+def hull_file_name(spec: KindSpec, index: int) -> str:
     """Return the OBJ file name of the spec's ``index``-th part (a convex hull)."""
     return f"{spec.name}_hull{index}.obj"
 
 
-def hull_meshes(spec: ToolSpec) -> dict[str, trimesh.Trimesh]:
+def hull_meshes(spec: KindSpec) -> dict[str, trimesh.Trimesh]:
     """Return the convex-hull parts of a spec as meshes in metres, by OBJ file name."""
     return {hull_file_name(spec, i): trimesh.convex.convex_hull(np.asarray(p.vertices))
             for i, p in enumerate(spec.parts()) if isinstance(p, Hull)}
 
 
-def tool_link(spec: ToolSpec, mass: MassProperties) -> ToolLink:
+def tool_link(spec: KindSpec, mass: MassProperties) -> ToolLink:
     """Return the link description of a spec with the given mass properties."""
     shapes = []
     for i, part in enumerate(spec.parts()):

@@ -20,7 +20,7 @@ import numpy as np
 if TYPE_CHECKING:  # only a type here; importing trimesh costs the command line seconds
     import trimesh
 
-from creative_py.mesh.spec import ToolSpec
+from creative_py.mesh.spec import KindSpec
 from creative_py.mesh.tolerances import (BUILD_VOLUME, FIT_MARGIN, FIT_YAW_STEP_DEG,
                                          JOINT_CLEARANCE, MIN_FEATURE, MIN_TIP, MM_PER_M,
                                          NOZZLE_DIAMETER)
@@ -101,14 +101,14 @@ class Printability:
         return f"printed in pieces (too large for the build volume in one): {self.reason}"
 
 
-def feature_dimensions(spec: ToolSpec) -> dict[str, float]:
+def feature_dimensions(spec: KindSpec) -> dict[str, float]:
     """Return the spec's printable dimensions by field name, metres (a blunted wedge's
     ``tip_height`` too: it is held to ``PrintSettings.min_tip``, the rest to
     ``min_feature``)."""
     return spec.feature_dimensions()
 
 
-def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings()) -> None:
+def check_min_feature(spec: KindSpec, settings: PrintSettings = PrintSettings()) -> None:
     """Raise ``ValueError`` naming the first dimension a hobby printer cannot print.
 
     Every dimension of :func:`feature_dimensions` must reach ``settings.min_feature``;
@@ -116,7 +116,7 @@ def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings())
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool.
     settings : PrintSettings
         The printer (``min_feature`` and ``min_tip`` in metres).
@@ -139,7 +139,7 @@ def check_min_feature(spec: ToolSpec, settings: PrintSettings = PrintSettings())
             f"{settings.min_tip * MM_PER_M:.2f} mm)")
 
 
-def thin_tip_length(spec: ToolSpec, min_tip: float = MIN_TIP) -> float:
+def thin_tip_length(spec: KindSpec, min_tip: float = MIN_TIP) -> float:
     """Return how far (metres) from its tip a wedge is thinner than ``min_tip``.
 
     0.0 for a blunted wedge whose tip reaches ``min_tip`` and for every other shape; for
@@ -149,13 +149,13 @@ def thin_tip_length(spec: ToolSpec, min_tip: float = MIN_TIP) -> float:
     return spec.thin_tip_length(min_tip)
 
 
-def printability(spec: ToolSpec, mesh: trimesh.Trimesh,
+def printability(spec: KindSpec, mesh: trimesh.Trimesh,
                  settings: PrintSettings = PrintSettings()) -> Printability:
     """Return whether the tool's mesh fits the build volume, and how to place it.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool (its minimum features are checked first; see :func:`check_min_feature`).
     mesh : trimesh.Trimesh
         The tool's solid in the tool frame, metres.

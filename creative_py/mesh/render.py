@@ -16,7 +16,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
 from creative_py.mesh.printability import Printability, feature_dimensions
 from creative_py.mesh.solid import MassProperties
-from creative_py.mesh.spec import ToolSpec
+from creative_py.mesh.spec import KindSpec
 from creative_py.mesh.tolerances import MM_PER_M
 
 LIGHT_DIRECTION = np.array([0.4, -0.5, 0.75]) / np.linalg.norm([0.4, -0.5, 0.75])
@@ -72,20 +72,20 @@ def _drawing(ax, mesh_mm: trimesh.Trimesh, axes: tuple[int, int], names: tuple[s
     ax.tick_params(labelsize=7)
 
 
-def _caption(spec: ToolSpec, mass: MassProperties, verdict: Printability) -> str:
+def _caption(spec: KindSpec, mass: MassProperties, verdict: Printability) -> str:
     dims = ", ".join(f"{k} {v * MM_PER_M:.1f}" for k, v in feature_dimensions(spec).items())
     extra = spec.caption_extra()
     return (f"{dims} mm{extra}\nmass {mass.mass * 1000:.1f} g, volume "
             f"{mass.volume * 1e6:.2f} cm^3; {verdict.summary()}")
 
 
-def render_png(spec: ToolSpec, mesh: trimesh.Trimesh, mass: MassProperties,
+def render_png(spec: KindSpec, mesh: trimesh.Trimesh, mass: MassProperties,
                verdict: Printability, path: Path, *, dpi: int = 100) -> Path:
     """Draw the tool and write it as a PNG.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool (its dimensions are listed in the caption; its kind's colour, drawing
         plane and title).
     mesh : trimesh.Trimesh

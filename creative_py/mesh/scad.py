@@ -8,7 +8,7 @@ re-render (``openscad -o tool.stl tool.scad``). The frame is the spec's tool fra
 from __future__ import annotations
 
 from creative_py.mesh.printability import Printability
-from creative_py.mesh.spec import ToolSpec
+from creative_py.mesh.spec import KindSpec
 from creative_py.mesh.tolerances import CYLINDER_SEGMENTS, MM_PER_M
 
 
@@ -16,7 +16,7 @@ def _mm(metres: float) -> str:
     return f"{round(metres * MM_PER_M, 6):.10g}"
 
 
-def _header(spec: ToolSpec, what: str, frame: str, verdict: Printability) -> list[str]:
+def _header(spec: KindSpec, what: str, frame: str, verdict: Printability) -> list[str]:
     lines = [
         f"// CREATIVE-py tool {spec.name}: {what}.",
         "// Written by creative_py.mesh. Units: millimetres, degrees.",
@@ -29,12 +29,12 @@ def _header(spec: ToolSpec, what: str, frame: str, verdict: Printability) -> lis
     return lines + [""]
 
 
-def scad_text(spec: ToolSpec, verdict: Printability) -> str:
+def scad_text(spec: KindSpec, verdict: Printability) -> str:
     """Return the OpenSCAD source of a spec (millimetres) with its printability verdict.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool (its kind writes the model: :meth:`KindSpec.scad`).
     verdict : Printability
         The build-volume verdict, repeated in a comment at the top.

@@ -14,7 +14,7 @@ import manifold3d
 import numpy as np
 import trimesh
 
-from creative_py.mesh.spec import Box, Cylinder, Hull, Part, ToolSpec, spec_mass
+from creative_py.mesh.spec import Box, Cylinder, Hull, Part, KindSpec, spec_mass
 from creative_py.mesh.tolerances import CYLINDER_SEGMENTS, NUMERICAL_NOISE_RTOL
 
 Vec3 = tuple[float, float, float]
@@ -66,7 +66,7 @@ def part_solid(part: Part) -> manifold3d.Manifold:
     raise TypeError(f"unknown part type {type(part).__name__}: expected Box, Cylinder or Hull")
 
 
-def tool_solid(spec: ToolSpec) -> manifold3d.Manifold:
+def tool_solid(spec: KindSpec) -> manifold3d.Manifold:
     """Return the union of the spec's parts as one manifold3d solid, metres, tool frame.
 
     Raises
@@ -95,17 +95,17 @@ def mesh_from_solid(solid: manifold3d.Manifold, scale: float = 1.0) -> trimesh.T
     return trimesh.Trimesh(vertices=vertices, faces=faces, process=False)
 
 
-def tool_mesh(spec: ToolSpec) -> trimesh.Trimesh:
+def tool_mesh(spec: KindSpec) -> trimesh.Trimesh:
     """Return the tool's watertight triangle mesh in the tool frame, metres."""
     return mesh_from_solid(tool_solid(spec))
 
 
-def mass_properties(spec: ToolSpec, mesh: trimesh.Trimesh | None = None) -> MassProperties:
+def mass_properties(spec: KindSpec, mesh: trimesh.Trimesh | None = None) -> MassProperties:
     """Return the mass properties of a spec's solid.
 
     Parameters
     ----------
-    spec : ToolSpec
+    spec : KindSpec
         The tool; its mass is ``spec_mass(spec)``.
     mesh : trimesh.Trimesh, optional
         The tool's mesh in metres (``tool_mesh(spec)``); built when not given.

@@ -1,7 +1,7 @@
 """Perception: camera frames (RGB, depth buffer, segmentation) to primitive facts.
 
 Pure numpy and scipy; nothing here imports pybullet (the renderer lives in
-:mod:`creative_py.sim.camera`).
+:mod:`creative_py.backends.pybullet.camera`).
 """
 
 from creative_py.perception.estimate import EstimatorConfig, ObjectEstimate, estimate_objects

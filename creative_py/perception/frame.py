@@ -1,7 +1,7 @@
 """One camera image as the perception stage sees it: colour, depth buffer, segmentation.
 
 The dataclass lives here, in pure numpy, so that perception never imports pybullet;
-:func:`creative_py.sim.camera.capture` is the only code that fills it from a renderer.
+:func:`creative_py.backends.pybullet.camera.capture` is the only code that fills it from a renderer.
 """
 
 from __future__ import annotations

@@ -79,7 +79,7 @@ class TrialRecord:
         Where and how that force acted (``ToolLoad.to_dict``; the strength check reads it).
     verdict : dict or None
         What the physics measured against its thresholds
-        (:func:`creative_py.sim.episode.verdict_data`): ``quantity``, ``value``,
+        (:func:`creative_py.backends.pybullet.episode.verdict_data`): ``quantity``, ``value``,
         ``threshold``, ``unit``, ``relation`` (passing needs ``value relation
         threshold``), ``holds``, ``threshold_name``, ``measures`` (the other measures by
         name), ``text`` (all of it in words) and ``asked`` (whether the outcome rests on

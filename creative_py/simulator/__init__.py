@@ -27,8 +27,8 @@ Modules:
                 ``backend`` name to its module, imported on first use (the names:
                 :data:`creative_py.case.BACKENDS`)
 
-Backends: ``pybullet`` (:mod:`creative_py.sim`, the default and the reference) and
-``maniskill`` (:mod:`creative_py.maniskill`, ManiSkill3 on SAPIEN, installed with
+Backends: ``pybullet`` (:mod:`creative_py.backends.pybullet`, the default and the reference) and
+``maniskill`` (:mod:`creative_py.backends.maniskill`, ManiSkill3 on SAPIEN, installed with
 ``pip install -e '.[maniskill]'``).
 
 How to write a backend
@@ -55,7 +55,7 @@ How to write a backend
    :data:`creative_py.case.BACKENDS` (``extra``: the ``pyproject.toml`` optional
    dependencies it needs, named in the error when they are missing). A case chooses
    it with ``backend = "<name>"`` in its ``case.toml``.
-5. Test it as ``tests/python/sim/`` tests the pybullet one: a case's demonstration
+5. Test it as ``tests/python/backends/pybullet/`` tests the pybullet one: a case's demonstration
    reaches the goal, a trial's outcome follows the physics, errors name the file and
    the field. ``tests/python/architecture/test_layers.py`` checks that no code of
    ``learning/`` imports it.

@@ -9,7 +9,7 @@ physics, and every backend's episode must report exactly those.
 
 A backend is a module (or any object) with the :class:`Backend` functions; its worlds
 and episodes have the attributes and methods of :class:`World` and :class:`Episode`.
-The pybullet backend (:mod:`creative_py.sim`) is the reference: its behaviour is what
+The pybullet backend (:mod:`creative_py.backends.pybullet`) is the reference: its behaviour is what
 each docstring says.
 
 Units, as everywhere in the project: metres, radians (degrees only where a name says
@@ -35,7 +35,7 @@ result's ``verdict`` data)."""
 
 
 class ClipCamera(Protocol):
-    """The camera of a world's video clips (pybullet: :class:`creative_py.sim.recorder.
+    """The camera of a world's video clips (pybullet: :class:`creative_py.backends.pybullet.recorder.
     VideoSpec`); the learning loop reads only its frame rate."""
 
     @property
@@ -45,7 +45,7 @@ class ClipCamera(Protocol):
 
 class ClipRecorder(Protocol):
     """Keeps one trial's poses for a clip while the trial runs; renders them after the
-    verdict (pybullet: :class:`creative_py.sim.recorder.Recorder`).
+    verdict (pybullet: :class:`creative_py.backends.pybullet.recorder.Recorder`).
 
     Recording only reads the physics: a trial with a recorder has the outcome it has
     without one. The episode it is given to (``record=``) feeds it.
@@ -164,12 +164,12 @@ class Episode(Protocol):
 
 class Backend(Protocol):
     """A simulator backend: what the learning loop calls to build and run a case's
-    world (module-level functions; :mod:`creative_py.sim` is the pybullet one)."""
+    world (module-level functions; :mod:`creative_py.backends.pybullet` is the pybullet one)."""
 
     def load_world(self, manifest: CaseManifest) -> World:
         """Read the manifest's world folder and return its :class:`World`, every value
         of every variant and location checked; raise
-        :class:`creative_py.world.WorldFileError` naming the file and the field."""
+        :class:`creative_py.world_files.WorldFileError` naming the file and the field."""
 
     def open_episode(self, world: World, variant: str, location: int, tool: str,
                      seed: int = 0, gui: bool = False, images_dir: Optional[Path] = None,

@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Optional, cast
 
 from creative_py.case import BACKENDS, DEFAULT_BACKEND
-from creative_py.world import WorldFileError
+from creative_py.world_files import WorldFileError
 
 if TYPE_CHECKING:
     from creative_py.case import CaseManifest
@@ -77,7 +77,7 @@ def backend_for(manifest: "CaseManifest") -> "Backend":
 
 
 def backend_packages() -> set[str]:
-    """Return the packages of ``creative_py`` that are backends (``sim``,
-    ``maniskill``): what the learning loop must never import."""
-    return {entry.module.split(".")[1] for entry in BACKENDS.values()
+    """Return the packages of ``creative_py`` that are backends (``backends.pybullet``,
+    ``backends.maniskill``): what the learning loop must never import."""
+    return {".".join(entry.module.split(".")[1:3]) for entry in BACKENDS.values()
             if entry.module.startswith("creative_py.")}

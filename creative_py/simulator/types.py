@@ -7,7 +7,7 @@ of the boundary (it imports only the outcome vocabulary of
 and robot and the learning loop can all share them without an import cycle.
 
 Outcomes of a trial (:data:`TRIAL_OUTCOMES`, decided in one place per backend; the
-pybullet one's is :func:`creative_py.sim.episode.trial_outcome`): ``success`` /
+pybullet one's is :func:`creative_py.backends.pybullet.episode.trial_outcome`): ``success`` /
 ``failure`` (every skill
 ran, or the tool was stopped while acting; the goal was or was not reached),
 ``blocked`` (a move before the tool action was stopped by a collision: the
@@ -46,7 +46,7 @@ _RELATIONS = {"<": lambda a, b: a < b, "<=": lambda a, b: a <= b,
 class Verdict:
     """A measured verdict: what the physics measured and the threshold it was judged by.
 
-    Every oracle (the pybullet backend's: :mod:`creative_py.sim.oracles`) and every
+    Every oracle (the pybullet backend's: :mod:`creative_py.backends.pybullet.oracles`) and every
     guard that stops a motion gives one, so a failure says how far it was from success,
     in the world's units.
 
@@ -244,7 +244,7 @@ class TrialResult:
         The seed of the trial.
     max_tool_force_n : float
         The largest sum of the normal forces of the tool's contacts over one physics
-        step of the tool action, newtons (pybullet: :mod:`creative_py.sim.loads`).
+        step of the tool action, newtons (pybullet: :mod:`creative_py.backends.pybullet.loads`).
     tool_load : dict or None
         Where and how that force acted (``ToolLoad.to_dict``: point and force in the
         tool frame, the grasp point, the bodies touched); None when the tool action did
@@ -254,7 +254,7 @@ class TrialResult:
         stopped (empty when a skill before the action ended unreachable or invalid).
     verdict : dict or None
         What the physics measured against its thresholds (pybullet:
-        :func:`creative_py.sim.episode.verdict_data`): the oracle's quantity, value,
+        :func:`creative_py.backends.pybullet.episode.verdict_data`): the oracle's quantity, value,
         threshold, unit, relation and judgement (measured in every trial, ``asked``
         when the outcome rests on it) and, for a motion a guard stopped, ``stop``.
     """

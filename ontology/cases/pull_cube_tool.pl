@@ -5,7 +5,7 @@
 
     Plain Prolog data loaded into this case's own module (case/1 names it), which sees
     the hook_like kind's module and the shared files.  The primitive facts come from
-    the simulator's state (creative_py/maniskill/episode.py).
+    the simulator's state (creative_py/backends/maniskill/episode.py).
 */
 
 case(pull_cube_tool).

@@ -167,7 +167,7 @@ size_constraint(stick, max_tool_length(M), [handle_length =< M]).
 size_constraint(hook, min_wall_m(M), [handle_width >= M, hook_length >= M, hook_width >= M]).
 size_constraint(stick, min_wall_m(M), [handle_width >= M]).
 
-%   The strength check of a created tool (creative_py/learning/strength.py): a handle
+%   The strength check of a created tool (creative_py/fabrication/strength.py): a handle
 %   at least W wide (its square section bends less), from the largest force the
 %   physics put on the tool and a cantilever model of the handle.
 size_constraint(hook, min_handle_width_m(W), [handle_width >= W]).

@@ -120,6 +120,6 @@ size_field(paddle, blade_length, blade_length).
 size_constraint(paddle, max_tool_length(M), [shaft_length =< M]).
 size_constraint(paddle, min_wall_m(M), [shaft_width >= M, blade_length >= M]).
 
-%   The strength check (creative_py/learning/strength.py): the shaft is the handle
+%   The strength check (creative_py/fabrication/strength.py): the shaft is the handle
 %   that bends, a cantilever from the grasp.
 size_constraint(paddle, min_handle_width_m(W), [shaft_width >= W]).

@@ -11,7 +11,7 @@ import sys
 import pytest
 
 from creative_py.case import get_case, load_cases, read_manifest
-from creative_py.world import WORLDS_ROOT, WorldFileError
+from creative_py.world_files import WORLDS_ROOT, WorldFileError
 
 
 def _copy(tmp_path, folder="hook_tube"):
@@ -104,7 +104,7 @@ def test_the_manifest_must_agree_with_the_ontology(tmp_path):
 def test_every_catalogue_is_described_in_the_ontology_s_vocabulary():
     from creative_py.bridge import Engine
     from creative_py.learning.run import check_catalogue
-    from creative_py.sim import load_world
+    from creative_py.backends.pybullet import load_world
     from creative_py.simulator import BackendUnavailable, backend_for
 
     engine = Engine.instance()

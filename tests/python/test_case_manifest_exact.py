@@ -17,7 +17,7 @@ import pytest
 from creative_py.case import (CaseManifest, DemonstrationSpec, LocationJitter, PoseParam,
                               SkillBinding, Variant, broken_cases, case_index, get_case,
                               load_cases, manifest_of_folder, read_manifest)
-from creative_py.world import WorldFileError
+from creative_py.world_files import WorldFileError
 
 MINIMAL = """\
 id = "mini"

@@ -3,7 +3,7 @@ its world, and every way that can go wrong is one line naming the file.
 
 A tiny backend defined here, registered under a test name, proves the dispatch (the
 learning loop's task facts come from whichever backend the manifest names); it is a
-test of the registry only. The pybullet backend itself is tested by ``tests/python/sim``
+test of the registry only. The pybullet backend itself is tested by ``tests/python/backends/pybullet``
 and by every learning test. Every installed backend is checked against the protocol's
 signatures (:func:`signature_mismatches`); one whose packages are missing is skipped
 with the error that names them.
@@ -25,7 +25,7 @@ from creative_py.cli import app
 from creative_py.simulator import (Backend, BackendError, BackendUnavailable, Episode,
                                    Observation, UnknownBackend, World, backend, backend_for,
                                    backend_packages)
-from creative_py.world import WorldFileError
+from creative_py.world_files import WorldFileError
 
 MANIFEST = """\
 id = "regcase"
@@ -118,21 +118,21 @@ def fake(monkeypatch):
 
 
 def test_a_manifest_without_a_backend_runs_in_pybullet(tmp_path):
-    import creative_py.sim
+    import creative_py.backends.pybullet
 
     m = read_manifest(_folder(tmp_path, ""))
     assert m.backend == DEFAULT_BACKEND == "pybullet"
-    assert backend_for(m) is creative_py.sim
-    assert backend() is creative_py.sim
+    assert backend_for(m) is creative_py.backends.pybullet
+    assert backend() is creative_py.backends.pybullet
     # The pybullet package has every function of the protocol.
     members = {n for n in vars(Backend) if not n.startswith("_")}
     assert members == {"load_world", "open_episode", "run_trial", "tool_rests", "draw_world",
                        "apply_drawn", "display_reachable", "recorder"}
-    assert all(callable(getattr(creative_py.sim, n)) for n in members)
+    assert all(callable(getattr(creative_py.backends.pybullet, n)) for n in members)
 
 
 def test_the_manifest_s_backend_runs_the_learning_loop_s_episodes(tmp_path, fake):
-    from creative_py.learning.trials import task_facts
+    from creative_py.simulator.trial import task_facts
 
     m = read_manifest(_folder(tmp_path, 'backend = "fake_test"'))
     assert m.backend == "fake_test"
@@ -201,7 +201,7 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
 
 
 def test_the_backend_packages_are_the_registry_s():
-    assert backend_packages() == {"sim", "maniskill"}
+    assert backend_packages() == {"backends.pybullet", "backends.maniskill"}
 
 
 def _members(protocol) -> list[str]:
@@ -270,7 +270,7 @@ def test_every_installed_backend_has_the_protocol_s_functions(name):
 
 def test_the_pybullet_world_and_episode_have_the_protocol_s_members():
     from creative_py.case import get_case
-    from creative_py.sim import Episode as PybulletEpisode
+    from creative_py.backends.pybullet import Episode as PybulletEpisode
 
     world = backend("pybullet").load_world(get_case("hook"))
     assert signature_mismatches(World, world) == []

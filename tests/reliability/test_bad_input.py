@@ -138,7 +138,7 @@ def test_without_the_slicer_printing_commands_stop_in_one_line_before_work(tmp_p
 def test_a_run_whose_demonstration_fails_is_one_line_and_leaves_no_folder(tmp_path):
     import shutil
 
-    from creative_py.world import WORLDS_ROOT
+    from creative_py.world_files import WORLDS_ROOT
 
     world = tmp_path / "hook_tube"
     shutil.copytree(WORLDS_ROOT / "hook_tube", world)
@@ -158,7 +158,7 @@ def test_a_run_whose_demonstration_fails_is_one_line_and_leaves_no_folder(tmp_pa
 def _world_copy(tmp_path, old: str, new: str, file: str = "objects.toml") -> Path:
     import shutil
 
-    from creative_py.world import WORLDS_ROOT
+    from creative_py.world_files import WORLDS_ROOT
 
     world = tmp_path / "hook_tube"
     shutil.copytree(WORLDS_ROOT / "hook_tube", world)
@@ -193,7 +193,7 @@ def test_a_dimension_outside_the_ranges_is_accepted_when_the_world_says_so(tmp_p
     from creative_py.bridge import Engine
     from creative_py.case import read_manifest
     from creative_py.learning.run import check_catalogue
-    from creative_py.sim import load_world
+    from creative_py.backends.pybullet import load_world
 
     world = _world_copy(tmp_path, 'handle_length = 0.20',
                         'handle_length = 0.90\noutside_ranges = true')

@@ -19,8 +19,8 @@ from pathlib import Path
 import pytest
 
 from creative_py.case import load_cases, manifest_of_folder
-from creative_py.sim import load_world
-from creative_py.world import WORLDS_ROOT, WorldFileError
+from creative_py.backends.pybullet import load_world
+from creative_py.world_files import WORLDS_ROOT, WorldFileError
 
 BANNER = "pybullet build time"
 
@@ -124,9 +124,9 @@ def test_the_shipped_worlds_lie_inside_every_bound():
 def test_every_option_of_every_primitive_and_oracle_has_bounds():
     """A new numeric option without bounds would let a number run the physics without
     end: each option is a flag, a word, or bounded; each default lies inside."""
-    from creative_py.sim.oracles import ORACLES
-    from creative_py.sim.oracles import OPTION_BOUNDS as ORACLE_BOUNDS
-    from creative_py.sim.primitives import OPTION_BOUNDS, PRIMITIVES, option_flags
+    from creative_py.backends.pybullet.oracles import ORACLES
+    from creative_py.backends.pybullet.oracles import OPTION_BOUNDS as ORACLE_BOUNDS
+    from creative_py.backends.pybullet.primitives import OPTION_BOUNDS, PRIMITIVES, option_flags
 
     flags = option_flags()
     for p in PRIMITIVES.values():

@@ -14,7 +14,7 @@ from pathlib import Path
 import pytest
 
 from creative_py.case import broken_cases, case_index, get_case, load_cases
-from creative_py.world import WORLDS_ROOT, WorldFileError
+from creative_py.world_files import WORLDS_ROOT, WorldFileError
 
 from test_bad_input import BANNER, _tree_copy
 

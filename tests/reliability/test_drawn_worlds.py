@@ -14,8 +14,8 @@ from __future__ import annotations
 import pytest
 
 from creative_py.case import get_case
-from creative_py.sim import load_world
-from creative_py.sim.world import apply_drawn, draw_world
+from creative_py.backends.pybullet import load_world
+from creative_py.backends.pybullet.world import apply_drawn, draw_world
 
 
 @pytest.fixture(scope="module")

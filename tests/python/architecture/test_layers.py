@@ -42,8 +42,8 @@ def table(text: str, header: str) -> list[tuple[list[str], list[str]]]:
             break
         cells = line.strip().strip("|").split("|")
         first, second = cells[0], "|".join(cells[1:])
-        rows.append((re.findall(r"`([A-Za-z0-9_]+)`", first),
-                     re.findall(r"`([A-Za-z0-9_]+)`", second.split("(")[0])))
+        rows.append((re.findall(r"`([A-Za-z0-9_.]+)`", first),
+                     re.findall(r"`([A-Za-z0-9_.]+)`", second.split("(")[0])))
     return rows
 
 
@@ -72,6 +72,8 @@ def package_of(module: str) -> str:
     """Return the package (or top-level module) of ``creative_py`` a module belongs to;
     ``""`` for the package root ``creative_py`` itself."""
     parts = module.split(".")
+    if len(parts) > 2 and parts[1] == "backends":
+        return f"backends.{parts[2]}"  # each backend is a package of its own
     return parts[1] if len(parts) > 1 else ""
 
 
@@ -196,7 +198,7 @@ def test_the_checker_finds_a_forbidden_import_a_missing_row_and_a_misplaced_libr
 def test_every_package_of_creative_py_has_a_row_in_the_layer_table() -> None:
     rules = layer_rules(DOC.read_text())
     on_disk = packages(modules())
-    assert {"cli", "learning", "sim", "simulator", "bridge", "records", "report"} <= on_disk
+    assert {"cli", "learning", "backends.pybullet", "simulator", "bridge", "records", "report"} <= on_disk
     # A registered backend's package has its row even in a checkout without it.
     errors = unnamed_packages(rules, on_disk | backend_packages())
     assert errors == [], "\n".join(errors)
@@ -231,7 +233,7 @@ def test_the_physics_asks_no_one() -> None:
 
 def test_each_third_party_engine_has_one_home() -> None:
     owners = library_owners(DOC.read_text())
-    assert {"pyswip": "bridge", "pybullet": "sim", "trimesh": "mesh"}.items() <= owners.items()
+    assert {"pyswip": "bridge", "pybullet": "backends.pybullet", "trimesh": "mesh"}.items() <= owners.items()
     errors = misplaced_libraries(import_statements(), owners)
     assert errors == [], "\n".join(errors)
 
@@ -240,7 +242,7 @@ def test_the_learning_loop_imports_no_simulator_backend() -> None:
     # Whatever the table says: learning (and the sweep and reports above or beside it)
     # reaches a physics through the boundary, creative_py.simulator, alone.
     backends = backend_packages()
-    assert {"sim", "maniskill"} <= backends
+    assert {"backends.pybullet", "backends.maniskill"} <= backends
     rules = layer_rules(DOC.read_text())
     loop = ("learning", "sweep", "report")
     assert [p for p in loop if rules[p] & backends] == []

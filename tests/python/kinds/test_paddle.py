@@ -16,7 +16,7 @@ import pytest
 from creative_py.bridge import Compound, Engine
 from creative_py.kinds import kind_of, spec_classes, spec_from_dict
 from creative_py.kinds.paddle import PaddleSpec
-from creative_py.learning.strength import check_strength, thicker_dims
+from creative_py.fabrication.strength import check_strength, thicker_dims
 from creative_py.mesh.check import check_print_files, check_tool_files
 from creative_py.mesh.export import read_tool_files, write_tool_files
 from creative_py.mesh.solid import mass_properties, tool_mesh, tool_solid
@@ -147,7 +147,7 @@ def test_a_weak_paddle_is_thickened_by_its_size_model_or_rejected(engine):
 
 
 def test_the_simulator_holds_it_by_the_shaft_like_a_handle():
-    from creative_py.sim.tools import (HandleHeld, catalogue_facts, prong_centre,
+    from creative_py.backends.pybullet.tools import (HandleHeld, catalogue_facts, prong_centre,
                                        prong_reach, roll_of, tool_kind, tool_orientation)
 
     assert isinstance(tool_kind(PADDLE), HandleHeld)
@@ -162,9 +162,9 @@ def test_the_simulator_holds_it_by_the_shaft_like_a_handle():
 def test_its_urdf_and_its_spec_make_the_same_pybullet_body_lying_flat(tmp_path):
     import pybullet as pb
 
-    from creative_py.sim.bodies import frame_pose, load_tool_urdf, spawn_spec
-    from creative_py.sim.core import Sim
-    from creative_py.world import PhysicsSettings
+    from creative_py.backends.pybullet.bodies import frame_pose, load_tool_urdf, spawn_spec
+    from creative_py.backends.pybullet.core import Sim
+    from creative_py.world_files import PhysicsSettings
 
     files = write_tool_files(PADDLE, tmp_path, picture=False, gcode=False)
     flat = ((0.0, 0.0, PADDLE.shaft_width / 2 + 0.001), (0.0, 0.0, 0.0, 1.0))
@@ -195,7 +195,7 @@ def test_in_the_tube_world_a_paddle_is_picked_up_inserted_and_pulls_the_cube_out
     blade-flat above the cube, lowered and turned upright behind it, and the pull brings
     the cube out of the tube (the physics decides)."""
     from creative_py.case import get_case
-    from creative_py.sim import load_world, open_episode, run_trial
+    from creative_py.backends.pybullet import load_world, open_episode, run_trial
 
     paddle = PaddleSpec("paddle_t1", 0.35, 0.010, 0.050, 0.012)
     world = load_world(get_case("hook")).with_tool(paddle)

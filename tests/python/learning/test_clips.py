@@ -15,8 +15,8 @@ from creative_py.cli import app
 from creative_py.learning.clips import CLIP_NICE, ClipKeeper, failure_reason
 from creative_py.learning.run import RunOptions
 from creative_py.records.trial import TrialRecord
-from creative_py.sim import recorder
-from creative_py.sim.recorder import Recorder, VideoSpec
+from creative_py.backends.pybullet import recorder
+from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
 from creative_py.video import Captioner
 
 BLOCKED = "position_tool: gripper lagged its target by {} cm at (0.978, -0.250, -0.052) m"

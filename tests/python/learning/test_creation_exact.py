@@ -33,7 +33,7 @@ from creative_py.learning.creation import CreateResult, ToolCreator, print_summa
 from creative_py.learning.run import _creation_summary
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import read_resume
-from creative_py.sim import load_world
+from creative_py.backends.pybullet import load_world
 
 pytestmark = pytest.mark.sim
 

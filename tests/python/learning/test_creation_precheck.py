@@ -13,7 +13,7 @@ from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
 from creative_py.learning.creation import ToolCreator
 from creative_py.learning.trials import TrialRunner
-from creative_py.sim import load_world
+from creative_py.backends.pybullet import load_world
 
 pytestmark = pytest.mark.sim
 

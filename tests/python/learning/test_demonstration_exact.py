@@ -21,8 +21,8 @@ from creative_py.learning.tool_use import (DemonstrationFailed, LearningOptions,
                                            ToolUseLearner, run_demonstration)
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import RunFolder
-from creative_py.sim import load_world
-from creative_py.sim.recorder import Recorder
+from creative_py.backends.pybullet import load_world
+from creative_py.backends.pybullet.recorder import Recorder
 
 pytestmark = pytest.mark.sim
 

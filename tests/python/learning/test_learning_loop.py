@@ -72,7 +72,7 @@ def test_a_blocked_trial_is_labelled_with_the_planned_example():
     from creative_py.case import get_case
     from creative_py.learning.tool_use import LearningOptions, ToolUseLearner
     from creative_py.learning.trials import TrialRunner
-    from creative_py.sim import load_world
+    from creative_py.backends.pybullet import load_world
 
     engine = Engine.instance()
     runner = TrialRunner(engine, load_world(get_case("rake")), None, seed=0)
@@ -118,7 +118,7 @@ def test_the_run_solves_its_own_pddl_with_the_prolog_plan(short_run):
     files again gives the same plan, and every catalogued tool is typed as a tool."""
     from creative_py.case import get_case
     from creative_py.learning.pddl_check import parse, solve, step_text
-    from creative_py.sim import load_world
+    from creative_py.backends.pybullet import load_world
 
     path, _, summary = short_run
     record = summary["pddl"]["use"]

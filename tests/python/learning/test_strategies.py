@@ -21,7 +21,7 @@ from creative_py.learning.run import RunOptions
 from creative_py.learning.strategies import STRATEGIES, Strategy, UnknownStrategy
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner
 from creative_py.learning.trials import TrialRunner
-from creative_py.sim import load_world
+from creative_py.backends.pybullet import load_world
 
 pytestmark = pytest.mark.sim
 

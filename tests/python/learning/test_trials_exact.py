@@ -31,10 +31,12 @@ from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.strategies import strategy_named
 from creative_py.learning.tool_use import ToolUseLearner
 from creative_py.learning.trials import (PHASE_TAGS, TaskState, TrialRunner, pose_numbers,
-                                         task_facts, term_text)
+                                         term_text)
 from creative_py.records.folder import RunFolder, read_resume
-from creative_py.sim import load_world, recorder
+from creative_py.backends.pybullet import load_world, recorder
 from creative_py.simulator import TrialResult
+from creative_py.simulator import trial as simulator_trial
+from creative_py.simulator.trial import task_facts
 from creative_py.video import Captioner
 
 pytestmark = pytest.mark.sim
@@ -277,11 +279,11 @@ def test_end_replay_without_a_folder_or_clips(hook):
 
 
 def test_task_facts_are_observed_once_per_task(hook, monkeypatch):
-    monkeypatch.setattr(trials, "_TASK_FACTS", {})
+    monkeypatch.setattr(simulator_trial, "_TASK_FACTS", {})
     one = task_facts(hook.world, "standard", 1)
     assert task_facts(hook.world, "standard", 1) is one
     two = task_facts(hook.world, "standard", 2)
-    assert list(trials._TASK_FACTS) == [
+    assert list(simulator_trial._TASK_FACTS) == [
         ("hook", str(hook.world.manifest.folder), "", tuple(sorted(hook.world.catalogue)),
          "standard", n) for n in (1, 2)]
     # What the robot sees before acting: the cube where the cameras see it, the tube and

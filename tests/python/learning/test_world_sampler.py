@@ -18,9 +18,9 @@ import pytest
 from creative_py.bridge import Engine, fact_term
 from creative_py.case import load_cases
 from creative_py.learning.run import check_catalogue, draw_catalogue_world
-from creative_py.sim import load_world, tool_rests
-from creative_py.sim.tools import catalogue_facts
-from creative_py.sim.world import apply_drawn
+from creative_py.backends.pybullet import load_world, tool_rests
+from creative_py.backends.pybullet.tools import catalogue_facts
+from creative_py.backends.pybullet.world import apply_drawn
 
 # The pybullet cases: drawn worlds are that backend's (the ManiSkill backend draws none).
 CASES = sorted(c for c, m in load_cases().items() if m.backend == "pybullet")
@@ -126,7 +126,7 @@ def test_a_value_table_naming_no_catalogued_value_is_refused(engine, tmp_path):
     import shutil
 
     from creative_py.case import read_manifest
-    from creative_py.world import WORLDS_ROOT
+    from creative_py.world_files import WORLDS_ROOT
 
     folder = tmp_path / "hook_tube"
     shutil.copytree(WORLDS_ROOT / "hook_tube", folder)

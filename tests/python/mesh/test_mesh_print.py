@@ -3,7 +3,7 @@
 The split is checked on the solid (manifold3d) and again from the written files
 (:func:`creative_py.mesh.check.check_print_files`: pieces moved back by their recorded
 placement and united); the slicer is the real ``prusa-slicer``, on a few small pieces
-only (the whole-tool slicing runs in ``tests/python/learning/test_manufacture.py``).
+only (the whole-tool slicing runs in ``tests/python/fabrication/test_manufacture.py``).
 """
 
 from __future__ import annotations

@@ -11,7 +11,7 @@ from creative_py.kinds.block import BlockSpec
 from creative_py.perception import EstimatorConfig, NoiseModel, estimate_objects
 from creative_py.perception.segment import body_mask
 from creative_py.perception.unproject import unproject_mask
-from creative_py.sim.camera import capture
+from creative_py.backends.pybullet.camera import capture
 
 pytestmark = pytest.mark.sim
 

@@ -11,7 +11,7 @@ pytestmark = pytest.mark.sim
 
 def _world(case):
     from creative_py.case import get_case
-    from creative_py.sim import load_world
+    from creative_py.backends.pybullet import load_world
 
     return load_world(get_case(case))
 
@@ -23,7 +23,7 @@ def hook_world():
 
 @pytest.mark.parametrize("location", [1, 2, 3, 4])
 def test_hook_world_observation_places_the_cube_within_2_mm(hook_world, angle_error, location):
-    from creative_py.sim import open_episode
+    from creative_py.backends.pybullet import open_episode
 
     m = hook_world.manifest
     with open_episode(hook_world, "standard", location, m.demonstration.tool, seed=3) as ep:
@@ -53,7 +53,7 @@ WEDGE_PLACES = [(0.55, 0.02, 0.0), (0.45, 0.10, math.pi)]
 def test_wedge_world_observation_finds_the_tip_direction(wedge_world, angle_error, name):
     from creative_py.bridge import Engine
     from creative_py.learning.poses import pose_resolver
-    from creative_py.sim import open_episode
+    from creative_py.backends.pybullet import open_episode
 
     place = wedge_world.manifest.demonstration.steps[1]
     poses = pose_resolver(Engine.instance(), wedge_world.manifest)

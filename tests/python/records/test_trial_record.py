@@ -168,7 +168,7 @@ def test_a_new_optional_field_round_trips_and_shows_in_the_reports(tmp_path):
 
 def test_the_reason_cell_and_the_short_lines_carry_the_measured_verdict():
     from creative_py.records.trial import reason_text, verdict_lines
-    from creative_py.sim.types import Verdict
+    from creative_py.simulator.types import Verdict
 
     stop = Verdict("gripper lag", 0.032, 0.03, "m", "<=", False,
                    threshold_name="max_tracking_error",

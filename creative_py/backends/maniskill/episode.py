@@ -1,0 +1,374 @@
+"""One trial of a ManiSkill case: ManiSkill's environment driven by the manifest's skills.
+
+An episode resets ManiSkill's environment (:mod:`creative_py.backends.maniskill.env`) with the
+location's seed, so the robot, the tool and the cube start in ManiSkill's own seeded
+initial state; the tool is the catalogued (or created) object, built from its spec's
+boxes. The skills run the primitives their manifest entries bind, each a few straight
+moves of the end-effector pose controller (:mod:`creative_py.backends.maniskill.skills`).
+
+Perception: the primitive facts come from the simulator's state, not from cameras
+(``pose/5`` and ``size/4`` of the cube from its actor's pose and ManiSkill's cube
+size; the held tool's ``tip_position/4``, ``tool_roll/2`` and ``tool_axis_y/2`` from
+the tool actor's pose and its spec; ``reach_zone/4`` of the goal region from the robot
+base's pose and ``tasks.toml``'s radius; every object's catalogue facts from its kind).
+
+While the tool acts, the contact load on it is read from SAPIEN's contacts
+(:mod:`creative_py.backends.maniskill.loads`), for the strength check of a created tool.
+
+The goal verdict is ManiSkill's ``env.evaluate()["success"]`` and nothing else; the
+Verdict records the cube's distance to the base in xy and ManiSkill's own
+``cube_distance`` and ``cube_progress``. Steps are ManiSkill control steps
+(``env.step`` calls, 20 Hz), counted against the world's ``max_steps``.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from contextlib import contextmanager
+from typing import Any, Iterator, Optional, Sequence
+
+import numpy as np
+
+from creative_py.backends.maniskill.skills import OPEN, Driver, grasp_handle
+from creative_py.backends.maniskill.scene import World
+from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
+                                         TrialResult, Verdict, pose_numbers)
+
+CUBE_HALF_M = 0.02
+"""ManiSkill's cube half size in PullCubeTool-v1 (``cube_half_size``), m."""
+
+
+def tool_mass(item) -> float:
+    """Return the tool's mass, kg: the catalogue's, else printed PLA's (created tools)."""
+    from creative_py.kinds.parts import PLA_DENSITY
+
+    return float(item.mass) if item.mass is not None else PLA_DENSITY * item.spec.volume()
+
+
+def _yaw(q_wxyz: Sequence[float]) -> float:
+    w, x, y, z = (float(v) for v in q_wxyz)
+    return math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z))
+
+
+def _rotate(q_wxyz, v):
+    from scipy.spatial.transform import Rotation
+
+    w, x, y, z = (float(a) for a in q_wxyz)
+    return Rotation.from_quat([x, y, z, w]).apply(v)
+
+
+class Episode:
+    """One ManiSkill episode of a case: a variant, a location (seed), a tool.
+
+    Attributes
+    ----------
+    env : gymnasium.Env
+        ManiSkill's environment (``pd_ee_pose``, CPU backend).
+    driver : Driver
+        The end-effector moves, with the control steps counted.
+    held : bool
+        Whether the robot holds the tool.
+    """
+
+    def __init__(self, world: World, variant: str, location: int, tool: str, seed: int = 0,
+                 pose_target: Optional[PoseTarget] = None, robot: bool = True,
+                 record=None) -> None:
+        from creative_py.backends.maniskill.env import make_env
+
+        m = world.manifest
+        self.world, self.manifest = world, m
+        self.variant, self.location = variant, location
+        self.item = world.item(tool)
+        self.spec = self.item.spec
+        self.target_name, self.context_name = m.target, m.context
+        self.pose_target = pose_target
+        self.seed = seed
+        self.reset_seed = world.seed(location)
+        m.variant(variant)
+        self.env = make_env(self.spec.parts(), tool_mass(self.item), self.item.friction,
+                            world.cube_dx(variant), world.max_steps,
+                            render=record is not None,
+                            camera=None if record is None else record.camera.camera_config())
+        self.env.reset(seed=self.reset_seed)
+        u = self.env.unwrapped
+        self.u = u
+        self.driver = Driver(self.env, max_steps=world.max_steps)
+        self.record = record
+        if record is not None:  # keeps the states from the reset on; reads only
+            record.attach(self.env, self.sim_time)
+            self.driver.on_record = record.tick
+        self.held = False
+        self.grasp_offset = np.zeros(3)
+        self.grasp_z = 0.0
+        self.state: dict[str, Any] = {}
+        self.tool_load: Optional[dict[str, Any]] = None
+        self.with_robot = robot
+
+    # ----------------------------------------------------------------- state
+    def _p(self, actor) -> np.ndarray:
+        return actor.pose.p[0].numpy().astype(float)
+
+    def _q(self, actor) -> np.ndarray:
+        return actor.pose.q[0].numpy().astype(float)
+
+    def tool_point(self, local: Sequence[float]) -> np.ndarray:
+        """Return a point of the tool frame (its spec's frame) in the world, m."""
+        tool = self.u.l_shape_tool
+        return self._p(tool) + _rotate(self._q(tool), local)
+
+    def prong_centre(self) -> np.ndarray:
+        """Return the world position of the prong's centre (the handle's tip for a stick)."""
+        parts = self.spec.parts()
+        local = parts[1].center if len(parts) > 1 else (self.spec.handle_length, 0.0, 0.0)
+        return self.tool_point(local)
+
+    @property
+    def steps(self) -> int:
+        """Return the ManiSkill control steps taken so far."""
+        return self.driver.steps
+
+    def sim_time(self) -> float:
+        """Return the simulated time, s (control steps at ManiSkill's control rate)."""
+        return self.steps / float(self.u.control_freq)
+
+    # ---------------------------------------------------------------- skills
+    def run_skill(self, name: str, pose: Optional[Sequence[float]] = None,
+                  **options: Any) -> SkillOutcome:
+        """Run the manifest's skill ``name`` (the primitive it binds, with its options)."""
+        binding = self.manifest.skill(name)
+        primitive, opts = self.world.skills[name]
+        opts = {**opts, **options}
+        if binding.pose:
+            pose = pose_numbers(name, pose, self.manifest.pose_names)
+        monitor = None
+        if binding.tool_action:
+            from creative_py.backends.maniskill.loads import LoadMonitor
+
+            monitor = LoadMonitor(self)  # the contact load on the tool while it acts
+            self.driver.on_step = monitor.sample
+        try:
+            res = getattr(self, "_" + primitive)(opts, pose)
+        finally:
+            if monitor is not None:
+                self.driver.on_step = None
+                self.tool_load = monitor.result()
+        if not res.ok:
+            return SkillOutcome(res.status, f"{name}: {res.reason}", res.stop)
+        return res
+
+    def _out_of_steps(self) -> SkillOutcome:
+        return SkillOutcome("blocked", f"the episode's {self.world.max_steps} control steps "
+                                       "ran out")
+
+    def _grasp(self, opts, pose) -> SkillOutcome:
+        grip = self.tool_point(self.spec.grip_point)
+        if not grasp_handle(self.driver, grip, opts["approach"]):
+            return self._out_of_steps()
+        self.held = True
+        self.grasp_offset = self.driver.tcp() - self._p(self.u.l_shape_tool)
+        self.grasp_z = self.driver.tcp()[2]
+        d = self.driver
+        if not d.move(d.tcp() * [1, 1, 0] + [0, 0, float(opts["lift_to"])]):
+            return self._out_of_steps()
+        return SkillOutcome("ok")
+
+    def _place_at_pose(self, opts, pose) -> SkillOutcome:
+        if not self.held:
+            return SkillOutcome("blocked", "no tool is held (pick it up first)")
+        if self.pose_target is None:
+            raise ValueError("place_at_pose needs the world target of a pose, but the "
+                             "episode has no pose resolver: pass pose_target")
+        facts = list(self.observe().facts)
+        self.state["facts"] = facts
+        target = tuple(self.pose_target(facts, self.spec.name, tuple(pose)))
+        if not target:
+            return SkillOutcome("unreachable", "the pose has no world target in this state")
+        if target[0] != "place":
+            raise ValueError(f"place_at_pose needs a place(...) target, got {target[0]}(...)")
+        _, x, y, _heading = target
+        d = self.driver
+        prong_x = self.spec.parts()[1].center[0] if len(self.spec.parts()) > 1 \
+            else self.spec.handle_length
+        tcp = np.array([x - prong_x, y, 0.0]) + self.grasp_offset
+        tcp[2] = self.grasp_z
+        carry = float(opts["carry_z"])
+        # Lowered beside the target, away from the prong's side, then slid sideways
+        # into place: the drooping tool is levelled by the table, not on the cube.
+        side = -1.0 if getattr(self.spec, "hook_side", "left") == "right" else 1.0
+        beside = tcp - [0.0, side * float(opts["side_clear"]), 0.0]
+        ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry])
+              and d.move(beside * [1, 1, 0] + [0, 0, carry])
+              and d.move(beside, settle=int(opts["settle_steps"]))
+              and d.move(tcp, settle=int(opts["settle_steps"]),
+                         step_m=float(opts["slide_step_m"])))
+        self.state["place_tcp"] = tcp
+        return SkillOutcome("ok") if ok else self._out_of_steps()
+
+    def _pull_to_radius(self, opts, pose) -> SkillOutcome:
+        """Draw the held tool straight towards the robot base (in xy, at the grasp's
+        height) until its prong's centre is ``radius`` metres from the base, then lift
+        it ``lift_by`` metres off the table (the tool is no longer in use)."""
+        if not self.held:
+            return SkillOutcome("blocked", "no tool is held (pick it up first)")
+        d = self.driver
+        base = self._p(self.u.agent.robot)
+        tip = self.prong_centre()
+        out = (tip - base) * [1, 1, 0]
+        dist = float(np.linalg.norm(out))
+        travel = max(0.0, dist - float(opts["radius"]))
+        end = d.tcp() - out / max(dist, 1e-9) * travel
+        end[2] = self.grasp_z
+        ok = (d.move(end, settle=int(opts["settle_steps"]), step_m=float(opts["step_m"]))
+              and d.move(d.tcp() + [0.0, 0.0, float(opts["lift_by"])], settle=0))
+        return SkillOutcome("ok") if ok else self._out_of_steps()
+
+    # ------------------------------------------------------------ perception
+    def observe(self, cameras: bool = True) -> Observation:
+        """Return the primitive facts from the simulator's state (see the module
+        docstring; ``cameras`` changes nothing: no camera is used)."""
+        cube = self._p(self.u.cube)
+        cube_yaw = _yaw(self._q(self.u.cube))
+        side = 2 * CUBE_HALF_M
+        facts: list[Fact] = [("pose", self.target_name, *map(float, cube), cube_yaw),
+                             ("size", self.target_name, side, side, side)]
+        base = self._p(self.u.agent.robot)
+        facts.append(("reach_zone", self.context_name, float(base[0]), float(base[1]),
+                      float(self.world.zone_radius)))
+        if self.held:
+            tip = self.prong_centre()
+            axis = self.tool_point((0.0, 0.0, 0.0))
+            facts += [("held", self.spec.name),
+                      ("tip_position", self.spec.name, *map(float, tip)),
+                      ("tool_roll", self.spec.name, 0.0),
+                      ("tool_axis_y", self.spec.name, float(axis[1]))]
+        for item in self.world.items.values():
+            facts += item.spec.catalogue_facts()
+        return Observation(facts=tuple(facts), truth=self.truth())
+
+    def truth(self) -> dict[str, tuple[float, float, float, float]]:
+        """Return ``name -> (x, y, z, yaw)`` of the cube and the tool (its frame)."""
+        out = {}
+        for name, actor in ((self.target_name, self.u.cube),
+                            (self.spec.name, self.u.l_shape_tool)):
+            p = self._p(actor)
+            out[name] = (float(p[0]), float(p[1]), float(p[2]), _yaw(self._q(actor)))
+        return out
+
+    # ---------------------------------------------------------------- oracle
+    def verdict(self) -> Verdict:
+        """Return ManiSkill's verdict: ``evaluate()["success"]``, with the cube's xy
+        distance to the robot base (what it thresholds at 0.6 m) and ManiSkill's own
+        ``cube_distance`` and ``cube_progress``."""
+        info = self.u.evaluate()
+        success = bool(info["success"][0])
+        cube = self._p(self.u.cube)
+        base = self._p(self.u.agent.robot.get_links()[0])
+        dist = float(np.linalg.norm(cube[:2] - base[:2]))
+        measures = {"evaluate_success": success,
+                    "cube_distance": float(info["cube_distance"]),
+                    "cube_progress": float(info["cube_progress"]),
+                    "control_steps": self.steps}
+        return Verdict(f"{self.target_name} distance to the robot base in xy", dist, 0.6, "m",
+                       "<", success, "ManiSkill PullCubeTool-v1 evaluate()",
+                       detail=f"ManiSkill evaluate() success={success}", measures=measures)
+
+    def goal_reached(self) -> bool:
+        """Return ManiSkill's ``evaluate()["success"]``."""
+        return bool(self.u.evaluate()["success"][0])
+
+    def close(self) -> None:
+        """Close ManiSkill's environment."""
+        env = getattr(self, "env", None)
+        if env is not None:
+            env.close()
+            self.env = None
+
+
+@contextmanager
+def open_episode(world: World, variant: str, location: int, tool: str, seed: int = 0,
+                 gui: bool = False, images_dir=None, pose_target: Optional[PoseTarget] = None,
+                 *, robot: bool = True, record=None) -> Iterator[Episode]:
+    """Build ManiSkill's scene for the location's seed and yield an :class:`Episode`;
+    with ``record`` (:class:`creative_py.backends.maniskill.recorder.Recorder`) the environment
+    has the clip's camera and the recorder keeps its states from the reset on."""
+    if gui:
+        raise ValueError("the ManiSkill backend has no window here (no display)")
+    ep = Episode(world, variant, location, tool, seed, pose_target, robot, record)
+    try:
+        yield ep
+    finally:
+        ep.close()
+
+
+def run_trial(world: World, tool: str, variant: str, location: int,
+              pose: Optional[Sequence[float]] = None, seed: int = 0, images_dir=None,
+              gui: bool = False, pose_target: Optional[PoseTarget] = None, record=None,
+              verdict=None) -> TrialResult:
+    """Run the manifest's skills in order, then ManiSkill's ``evaluate()``.
+
+    Outcomes: every skill ran: ``success``/``failure`` by ``evaluate()["success"]``;
+    the step budget ran out before the tool action: ``blocked``; while pulling: the
+    verdict decides. ``steps`` of the result counts ManiSkill control steps.
+
+    The result is taken once the physics has given the outcome; then ``verdict(outcome,
+    reason, measured)`` is called inside the episode (where a kept trial's clip is
+    rendered from ``record``); without it, ``record`` is rendered at the end.
+    """
+    m = world.manifest
+    pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
+    t0 = time.perf_counter()
+    with open_episode(world, variant, location, tool, seed, pose_target=pose_target,
+                      record=record) as ep:
+        facts: tuple = ()
+        acted, status = False, SkillOutcome("ok")
+        for skill in m.skills:
+            if skill.tool_action:
+                facts = ep.observe().facts
+                acted = True
+            status = ep.run_skill(skill.name, pose if skill.pose else None)
+            if not status.ok:
+                break
+        oracle = ep.verdict()
+        asked = status.ok or (acted and status.status == "blocked")
+        outcome, reason = _outcome(status, acted, asked and oracle.holds)
+        if outcome == "blocked":
+            facts = ep.observe().facts
+        data = oracle.to_dict()
+        data["asked"] = bool(asked)
+        wall = time.perf_counter() - t0
+        result = TrialResult(
+            case=m.id, object=tool, variant=variant, location=int(location), pose=tuple(pose),
+            outcome=outcome, reason=reason, perceived_final=None, true_final=ep.truth(),
+            sim_time_s=ep.sim_time(), wall_time_s=wall, render_time_s=0.0, steps=ep.steps,
+            seed=seed, max_tool_force_n=(ep.tool_load or {}).get("max_force_n", 0.0)
+            if acted else 0.0, tool_load=ep.tool_load if acted else None,
+            facts_before=tuple(facts), verdict=data)
+        # Everything judged is taken: a clip's rendering sets states back from here on.
+        if verdict is not None:
+            verdict(outcome, reason, data)
+        elif record is not None:
+            record.render()
+    return result
+
+
+def _outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
+    """Return ``(outcome, reason)`` as the pybullet backend's ``trial_outcome`` says:
+    all skills ran: success or failure by the goal; blocked while the tool acted: by
+    the goal; otherwise the skill's status."""
+    if status.ok:
+        return ("success", "goal reached") if reached else ("failure", "goal not reached")
+    if status.status == "blocked" and acted:
+        return ("success" if reached else "failure"), status.reason
+    return status.status, status.reason
+
+
+def tool_rests(world: World, tool: str) -> bool:
+    """Return whether ``tool`` lies still on the table: the demonstration's scene,
+    then ten control steps holding the robot still; rests unless it dropped 1 cm."""
+    demo = world.manifest.demonstration
+    with open_episode(world, demo.variant, demo.location, tool) as ep:
+        z0 = ep._p(ep.u.l_shape_tool)[2]
+        ep.driver.set_gripper(OPEN, 10)
+        return z0 - ep._p(ep.u.l_shape_tool)[2] <= 0.01
+

@@ -1,0 +1,223 @@
+"""A case's world for the ManiSkill backend, read from its folder.
+
+The world folder of a ManiSkill case holds ``case.toml`` (``backend = "maniskill"``),
+``objects.toml`` (the catalogue: one table per tool, the fields of its kind's spec,
+``set``, ``friction``, ``mass`` in kg) and ``tasks.toml``:
+
+.. code-block:: toml
+
+    [episode]
+    max_steps = 100          # control steps of one trial (ManiSkill's task: 100)
+
+    [[location]]
+    seed = 3                 # a location is ManiSkill's seeded initial state reset(seed=3)
+
+    [zone]                   # what the robot knows of the goal region (a fixed fact):
+    radius = 0.6             # ManiSkill's evaluate() threshold, cube to base in xy, m
+
+    [video]                  # optional: the trial clips' camera (maniskill/recorder.py)
+    eye = [0.25, -1.15, 0.95]
+    target = [-0.3, 0.0, 0.05]
+    fov_deg = 55.0
+    width = 320
+    height = 240
+    fps = 5.0                # frames per second of simulated time
+
+A variant's ``set`` may give ``cube_dx``: how much farther along +x than ManiSkill
+draws it the cube starts (metres). Errors name the file and the field.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field, replace
+from pathlib import Path
+from typing import Any, Optional
+
+from creative_py.case import CaseManifest
+from creative_py.backends.maniskill.recorder import VideoCamera, read_video
+from creative_py.simulator.catalogue import CatalogueWorld
+from creative_py.world_files import Fields, WorldFileError, load_toml, world_file
+
+VARIANT_VALUES = {"cube_dx": (0.0, 0.5)}
+"""The values a variant may set, with their bounds (metres)."""
+
+PRIMITIVES = {
+    "grasp": {"approach": 0.08, "lift_to": 0.25},
+    "place_at_pose": {"carry_z": 0.25, "settle_steps": 4, "side_clear": 0.08,
+                      "slide_step_m": 0.02},
+    "pull_to_radius": {"radius": 0.55, "step_m": 0.02, "settle_steps": 3, "lift_by": 0.06},
+}
+"""The skill primitives of this backend and their options with defaults
+(:mod:`creative_py.backends.maniskill.episode`)."""
+
+
+@dataclass(frozen=True)
+class CatalogueItem:
+    """An available object: its spec, set name, friction, mass (kg) and, for a created
+    tool, the URDF written beside it (the body is built from the spec's boxes)."""
+
+    spec: Any
+    set: str
+    friction: float = 0.5
+    mass: Optional[float] = None
+    urdf: Optional[Path] = None
+    outside_ranges: bool = False
+
+
+@dataclass(frozen=True)
+class World(CatalogueWorld):
+    """A ManiSkill case's world (see the module docstring for its files).
+
+    Attributes
+    ----------
+    manifest : CaseManifest
+    directory : Path
+    items : dict
+        ``name -> CatalogueItem``.
+    seeds : tuple of int
+        ManiSkill's reset seed of each location, in order.
+    max_steps : int
+        The control steps one trial may take.
+    zone_radius : float
+        The goal region's radius about the robot base, m (a fact the robot is given).
+    skills : dict
+        ``skill name -> (primitive, options)``.
+    """
+
+    manifest: CaseManifest
+    directory: Path
+    items: dict[str, CatalogueItem]
+    seeds: tuple[int, ...]
+    max_steps: int
+    zone_radius: float
+    skills: dict[str, tuple[str, dict[str, Any]]]
+    variation: str = ""
+    video: Optional[VideoCamera] = None
+    """The clips' camera and frame rate (the ``[video]`` table of ``tasks.toml``), or
+    None: no clip is recorded."""
+    env_cache: dict = field(default_factory=dict, compare=False, repr=False)
+
+    @property
+    def locations(self) -> tuple[int, ...]:
+        """Return the 1-based indices of the locations (ManiSkill seeds)."""
+        return tuple(range(1, len(self.seeds) + 1))
+
+    def seed(self, location: int) -> int:
+        """Return ManiSkill's reset seed of ``location`` (1-based)."""
+        if not (isinstance(location, int) and 1 <= location <= len(self.seeds)):
+            raise KeyError(f"unknown location {location!r}; locations: 1..{len(self.seeds)}")
+        return self.seeds[location - 1]
+
+    def cube_dx(self, variant: str) -> float:
+        """Return how much farther the cube starts in ``variant``, m."""
+        return float(self.manifest.variant(variant).set.get("cube_dx", 0.0))
+
+    def with_tool(self, spec: Any, urdf: Optional[Path] = None) -> "World":
+        """Return this world with one more available object, a created tool: its body
+        built from ``spec``'s boxes (the URDF, checked to exist, is kept for the record),
+        the friction of the catalogue's first object, mass from the spec."""
+        if urdf is not None and not Path(urdf).is_file():
+            raise FileNotFoundError(f"{urdf}: tool URDF not found")
+        friction = next(iter(self.items.values())).friction
+        item = CatalogueItem(spec, "created", friction, None, None if urdf is None else Path(urdf))
+        return replace(self, items={**self.items, spec.name: item})
+
+    def listing(self) -> dict[str, Any]:
+        """Return JSON-ready data: objects, locations (seeds), variants, pose, demonstration."""
+        m = self.manifest
+        objects = {}
+        for n, item in self.items.items():
+            d = asdict(item.spec)
+            d.update(set=item.set, friction=item.friction)
+            objects[n] = d
+        pose = dict(zip(m.pose_names, m.demonstration.pose))
+        return {"case": m.id, "objects": objects,
+                "locations": [{"index": i, "seed": s} for i, s in enumerate(self.seeds, 1)],
+                "variants": {v.name: {"description": v.description, "harder": v.harder,
+                                      "set": dict(v.set)} for v in m.variants},
+                "default_pose": pose,
+                "demonstration": {"tool": m.demonstration.tool,
+                                  "variant": m.demonstration.variant,
+                                  "location": m.demonstration.location,
+                                  "steps": list(m.demonstration.steps), "pose": pose}}
+
+
+def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
+    from creative_py.mesh.spec import spec_from_dict
+
+    f = Fields(load_toml(path), path)
+    items: dict[str, CatalogueItem] = {}
+    for tf in f.tables(table):
+        data = dict(tf.data)
+        obj_set = tf.str("set")
+        friction = tf.float("friction", 0.5, minimum=0.0, maximum=10.0)
+        outside = tf.bool("outside_ranges", False)
+        for k in ("set", "friction", "outside_ranges"):
+            data.pop(k, None)
+        try:
+            spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
+        except ValueError as exc:
+            raise WorldFileError(str(exc)) from None
+        if spec.HANDLING != "handle":
+            raise tf.error("kind", f"the ManiSkill backend holds handled tools only, not a "
+                                   f"{spec.kind}")
+        if spec.name in items:
+            raise tf.error("name", f"object name {spec.name!r} is used twice")
+        items[spec.name] = CatalogueItem(spec, obj_set, friction, spec.mass,
+                                         outside_ranges=outside)
+    f.done()
+    if not items:
+        raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")
+    return items
+
+
+def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> World:
+    """Return the world of ``manifest`` (errors name the file and the field)."""
+    d = Path(world_dir) if world_dir is not None else Path(manifest.folder)
+    items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
+    p = world_file(d, "tasks.toml")
+    f = Fields(load_toml(p), p)
+    ef = f.table("episode")
+    max_steps = ef.int("max_steps", 100, minimum=10, maximum=1000)
+    ef.done()
+    seeds = []
+    for lf in f.tables("location"):
+        seeds.append(lf.int("seed", minimum=0, maximum=2**31 - 1))
+        lf.str("description", "")
+        lf.done()
+    if not seeds:
+        raise f.error("location", "at least one [[location]] is needed")
+    zf = f.table("zone")
+    radius = zf.float("radius", minimum=0.05, maximum=2.0)
+    zf.done()
+    video = read_video(f)
+    f.done()
+    case_file = manifest.folder / "case.toml"
+    skills = {}
+    for i, s in enumerate(manifest.skills):
+        if s.primitive not in PRIMITIVES:
+            raise WorldFileError(f"{case_file}: field 'skill[{i}].primitive': unknown primitive "
+                                 f"{s.primitive!r}; primitives: {', '.join(PRIMITIVES)}")
+        known = PRIMITIVES[s.primitive]
+        for name in s.options:
+            if name not in known:
+                raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{name}': unknown "
+                                     f"option of {s.primitive}; options: {', '.join(known)}")
+        skills[s.name] = (s.primitive, {**known, **s.options})
+    for v in manifest.variants:
+        for k, val in v.set.items():
+            if k not in VARIANT_VALUES:
+                raise WorldFileError(f"{case_file}: variant {v.name!r}: set: unknown value "
+                                     f"{k!r}; values: {', '.join(VARIANT_VALUES)}")
+            lo, hi = VARIANT_VALUES[k]
+            if not (isinstance(val, (int, float)) and lo <= val <= hi):
+                raise WorldFileError(f"{case_file}: variant {v.name!r}: set: {k} must be a "
+                                     f"number in {lo}..{hi}, got {val!r}")
+    demo = manifest.demonstration
+    if demo.tool not in items:
+        raise WorldFileError(f"{case_file}: field 'demonstration.tool': must be one of "
+                             f"{', '.join(items)}, got {demo.tool!r}")
+    if demo.location > len(seeds):
+        raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
+                             f"{len(seeds)}, got {demo.location}")
+    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills, video=video)

@@ -1,0 +1,72 @@
+"""The pybullet backend: a case's world built in pybullet, driven by the manifest's skills.
+
+This package is the ``pybullet`` backend of the simulator boundary
+(:mod:`creative_py.simulator`): its module-level functions are the
+:class:`~creative_py.simulator.Backend` protocol (``load_world``, ``open_episode``,
+``run_trial``, ``tool_rests``, ``draw_world``, ``apply_drawn``, ``display_reachable``,
+``recorder``), and the learning loop reaches them through
+``backend_for(manifest)``, never by importing this package. Public API::
+
+    from creative_py.backends.pybullet import load_world, open_episode, run_trial
+    world = load_world(manifest)                # World (creative_py.case.CaseManifest)
+    with open_episode(world, variant, location, tool) as ep:
+        ep.run_skill("pick_up")                 # SkillOutcome
+    run_trial(world, tool, variant, location, pose_target=poses)   # TrialResult
+
+A pose skill needs ``pose_target`` (:data:`PoseTarget`), given by the caller: the
+learning layer's :func:`creative_py.learning.poses.pose_resolver` asks the engine.
+
+Modules, from the data to the physics:
+
+``types``       the boundary's value types, re-exported (:mod:`creative_py.simulator.types`)
+``world``       a world folder read for a manifest (World, load_world)
+``scene``       ``[[body]]`` tables and scene expressions; body kinds (box, tube, shelf, door)
+``tools``       tool kinds (hook-like, block): start, grasp, motion, proprioception,
+                catalogue facts
+``primitives``  the skill primitives a manifest binds by name
+``oracles``     the success oracles a world's ``tasks.toml`` configures
+``episode``     one scene driven skill by skill (open_episode, run_trial, trial_outcome)
+``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
+"""
+
+
+def _import_pybullet_quietly() -> None:
+    """Import pybullet once, without the build-time banner its C module writes to the
+    standard error at import (every command printed it); errors still show."""
+    import os
+    import sys
+
+    if "pybullet" in sys.modules:
+        return
+    sys.stderr.flush()
+    saved, devnull = os.dup(2), os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, 2)
+        import pybullet  # noqa: F401
+    finally:
+        os.dup2(saved, 2)
+        os.close(saved)
+        os.close(devnull)
+
+
+_import_pybullet_quietly()
+
+from creative_py.backends.pybullet.core import display_reachable
+from creative_py.backends.pybullet.episode import (Episode, open_episode, run_trial, tool_rests,
+                                     trial_outcome)
+from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
+from creative_py.backends.pybullet.world import World, apply_drawn, draw_world, load_world
+from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
+                                         PoseTarget, SkillOutcome, TrialResult)
+
+
+def recorder(camera: VideoSpec) -> Recorder:
+    """Return a new recorder of one trial's clip for ``camera`` (a world's ``video``):
+    :meth:`creative_py.simulator.Backend.recorder`."""
+    return Recorder(camera)
+
+
+__all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
+           "TRIAL_OUTCOMES", "TrialResult", "World", "apply_drawn", "display_reachable",
+           "draw_world", "load_world", "open_episode", "recorder", "run_trial",
+           "tool_rests", "trial_outcome"]

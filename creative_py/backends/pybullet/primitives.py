@@ -1,0 +1,540 @@
+"""Skill primitives: the motions a manifest's ``[[skill]]`` binds by name.
+
+A skill of ``case.toml`` names a primitive of :data:`PRIMITIVES` and may set its
+options (``options = {...}``, numbers or scene expressions such as
+``"tube1.mouth_x - 0.05"``, see :mod:`creative_py.backends.pybullet.scene`). A primitive that takes
+the pose gets its world target from the engine's pose solution
+(:attr:`creative_py.backends.pybullet.episode.Episode.pose_target`), never from case arithmetic:
+
+==================== ========================= =============================================
+primitive            world target              what it does
+==================== ========================= =============================================
+``grasp``            -                         the tool's kind grasps it where it lies
+                                               (options of the kind: hook-like ``approach``
+                                               ``free_speed`` ``speed`` ``lift_to``; block
+                                               ``carry_z`` ``clearance`` ``gripper_yaw``)
+``insert_at_pose``   ``tip(X, Y, Roll)``       carry a hook-like tool into the context's
+                                               passage (a tube, the space under a shelf)
+                                               and put its prong centre at (X, Y), turned to
+                                               Roll; the arm's posture search is an option
+``place_on_floor``   ``place(X, Y, Heading)``  put the held tool down on the context's top
+                                               face, the target's holder swinging it clear
+``pull_along_axis``  -                         pull the held tool back along -x until its
+                                               working point passes ``until_x``
+``push_along_axis``  -                         push the held tool along +x by ``distance``
+``release_joint``    -                         release the target's held joint: its closer
+                                               acts for ``duration`` s (recorded for the
+                                               oracle)
+==================== ========================= =============================================
+
+The primitives that move a held tool under or into something (``insert_at_pose``,
+``pull_along_axis``) take a grasp-slip guard: with ``grasp_slip_max_rad`` or
+``grasp_slip_max_m`` above 0 (the default 0 turns it off), every guarded step compares
+the tool's pose with the pose the grasp holds it in (:func:`~creative_py.backends.pybullet.tools.grasp_slip`)
+and ends the motion ``blocked`` beyond either limit: a tool jammed against a static
+body twists in pybullet's soft grasp constraint while the gripper follows its
+commands, so the arm's tracking guard does not see it.
+
+A primitive is called as ``run(ep, options, target)`` with the running
+:class:`~creative_py.backends.pybullet.episode.Episode` (typed ``Any`` here: this module must not
+import the episode, which imports it). Each returns a
+:class:`~creative_py.simulator.types.SkillOutcome`; a motion stopped by the tracking guard is
+``blocked``, an arm that cannot follow ``unreachable``, a physics blow-up ``invalid``.
+"""
+
+from __future__ import annotations
+
+import logging
+import math
+from dataclasses import dataclass
+from typing import Any, Callable, Mapping, Sequence
+
+import numpy as np
+import pybullet as pb
+
+from creative_py.backends.pybullet.bodies import frame_pose, set_frame_pose
+from creative_py.backends.pybullet.core import Pose
+from creative_py.simulator.types import SkillOutcome, Verdict
+from creative_py.backends.pybullet.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
+                                   roll_of, tool_orientation)
+
+
+log = logging.getLogger(__name__)
+
+REQUIRED = None
+"""An option without a default."""
+
+
+@dataclass(frozen=True)
+class Primitive:
+    """A registered primitive: its function, its options (``name -> default``), and the
+    name of the world target it takes (``""`` for none)."""
+
+    name: str
+    run: Callable[[Any, Mapping[str, Any], tuple], SkillOutcome]
+    options: Mapping[str, Any]
+    target: str = ""
+
+    def needs_held_tool(self, opts: Mapping[str, Any]) -> bool:
+        """Return whether the primitive moves a held tool (checked before perceiving)."""
+        return bool(self.target) and not opts.get("by_hand", False)
+
+
+# -------------------------------------------------------------------------- grasp
+FELL_M = 0.02
+"""How far (m) below where it was spawned a tool may lie at a grasp: further, it is
+falling off its stand or the table (a tool at rest settles by under a millimetre), and
+the trial is ``invalid``."""
+
+
+def grasp(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Grasp the episode's tool the way its kind is grasped, and lift it.
+
+    A tool that fell from where it lay (off its stand, off the table), before the grasp
+    or while the arm reached for it, cannot be picked up as the skill assumes: the
+    trial is ``invalid``, with that reason.
+    """
+    ep.need_robot("grasp")
+    res = _fell(ep)
+    if res is None:
+        res = ep.kind.grasp(ep, opts)
+        if not res.ok:
+            res = _fell(ep) or res
+    return res
+
+
+def _fell(ep: Any) -> SkillOutcome | None:
+    drop = ep.tool_spawn_z - frame_pose(ep.sim, ep.tool_body)[0][2]
+    if drop > FELL_M:
+        return SkillOutcome("invalid", f"the tool fell {drop:.2f} m from where it lay "
+                                       "(off its stand or the table)")
+    return None
+
+
+# ------------------------------------------------------------------ grasp slip
+SLIP_OPTIONS = {"grasp_slip_max_rad": 0.0, "grasp_slip_max_m": 0.0}
+"""The grasp-slip guard's options (0 = no check of that limit)."""
+
+
+def slip_guard(ep: Any, opts: Mapping[str, Any]) -> Callable[[], SkillOutcome | None] | None:
+    """Return the grasp-slip check of ``opts`` for the held tool, or None if it is off."""
+    max_rad = float(opts.get("grasp_slip_max_rad", 0.0) or 0.0)
+    max_m = float(opts.get("grasp_slip_max_m", 0.0) or 0.0)
+    if max_rad <= 0.0 and max_m <= 0.0:
+        return None
+
+    def check() -> SkillOutcome | None:
+        if not ep.held:
+            return None
+        angle, offset = grasp_slip(ep)
+        if (max_rad > 0.0 and angle > max_rad) or (max_m > 0.0 and offset > max_m):
+            by_angle = max_rad > 0.0 and angle > max_rad
+            stop = Verdict("grasp slip", angle if by_angle else offset,
+                           max_rad if by_angle else max_m, "rad" if by_angle else "m",
+                           "<=", False,
+                           threshold_name="grasp_slip_max_rad" if by_angle
+                           else "grasp_slip_max_m",
+                           measures={"slip_rad": round(angle, 6), "slip_m": round(offset, 6),
+                                     "touching_ids": ep.robot.touching()})
+            return SkillOutcome("blocked", f"the tool slipped in the grasp by "
+                                f"{angle:.3f} rad, {offset * 1000:.1f} mm: it is jammed", stop)
+        return None
+
+    return check
+
+
+# ------------------------------------------------------------------ insert at pose
+def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Insert the held hook-like tool into the context's passage, prong centre at (X, Y).
+
+    The context is a body with a passage along +x (a ``tube``, or the space under a
+    ``shelf``: its ``mouth_x``, ``axis_y``, ``floor_z``, ``inner_width`` and
+    ``inner_height``). The gripper carries the tool above it to in front of its mouth and turns it
+    so the prong is flat: at the requested roll if that is flat, otherwise towards the
+    side of the handle with more room. With ``posture_search`` it first tries the rest
+    of the motion (insertion, turning, the pull back to ``pull_to_x``) in the
+    kinematics client and, if the arm would meet a joint limit, re-shapes it in free
+    space. It then lowers the tool to ``clearance`` above the target (its perceived
+    top), inserts it along +x until the prong is at X, raises the handle if needed so
+    that the lowered prong clears the tube's floor, and turns the tool to Roll.
+    """
+    if not isinstance(ep.kind, HandleHeld):
+        raise TypeError(f"insert_at_pose moves handled tools, not {ep.spec.kind}")
+    _, x_goal, y_goal, roll = target
+    top = ep.perceived_top(ep.target_name)
+    if top is None:
+        return SkillOutcome("unreachable", f"the camera does not see {ep.target_name}")
+    tb = ep.context_body
+    spec, kind = ep.spec, ep.kind
+    travel = opts["travel_z"]
+    if abs(roll) >= math.pi / 4 or not spec.has_head:
+        flat = roll
+    else:
+        room_left = tb.axis_y + tb.inner_width / 2 - y_goal
+        room_right = y_goal - (tb.axis_y - tb.inner_width / 2)
+        flat = math.pi / 2 if room_left > room_right else -math.pi / 2
+    half_t = spec.handle_width / 2
+    z_insert = top + half_t + opts["clearance"]
+    tip_local = prong_centre(spec)
+    q_flat = tool_orientation(spec, flat)
+    tip_off = pb.multiplyTransforms((0, 0, 0), q_flat, tip_local, (0, 0, 0, 1))[0]
+    goal_origin_x = x_goal - tip_off[0]
+    far_x = max(spec.handle_length, tip_local[0] + spec.head_width)
+    pre_origin_x = tb.mouth_x - 0.03 - far_x
+    carried = kind.attitude(ep)
+    steps = [((pre_origin_x, y_goal, travel), carried, opts["free_speed"]),
+             ((pre_origin_x, y_goal, travel), flat, opts["free_speed"]),
+             ((pre_origin_x, y_goal, z_insert), flat, opts["free_speed"]),
+             ((goal_origin_x, y_goal, z_insert), flat, opts["speed"])]
+    z_down = min(max(z_insert, tb.floor_z + prong_reach(spec) + 0.004),
+                 tb.floor_z + tb.inner_height - half_t - 0.002)
+    steps.append(((goal_origin_x, y_goal, z_down), flat, opts["speed"]))
+    steps.append(((goal_origin_x, y_goal, z_down), roll, opts["speed"]))
+    pull_dx = min(0.0, opts["pull_to_x"] - x_goal)
+    guard = slip_guard(ep, opts)
+    for i, (origin, r, speed) in enumerate(steps):
+        res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed, guard)
+        if not res.ok:
+            return res
+        if i == 0 and opts["posture_search"]:
+            res = _choose_posture(ep, steps[1:], pull_dx, opts["free_speed"])
+            if not res.ok:
+                return res
+    ep.state["attitude"] = roll
+    log.info("insert_at_pose %s at %s: ok", spec.name, target)
+    return SkillOutcome("ok")
+
+
+def _gripper_path(ep: Any, steps, pull_dx: float) -> list[Pose]:
+    """Return the gripper poses of ``steps`` then the pull, rolls split as in the move."""
+    from creative_py.backends.pybullet.baxter import gripper_forward
+
+    kind = ep.kind
+    pos, quat = ep.robot.gripper_pose()
+    roll = roll_of(ep.spec, pb.multiplyTransforms(pos, quat, *ep.grasp)[1])
+    path: list[Pose] = []
+    for origin, new_roll, _ in steps:
+        goal = kind.gripper_for_tool(ep, origin, new_roll)
+        n = max(1, math.ceil(abs(new_roll - roll) / math.radians(70)))
+        for i in range(1, n + 1):
+            t = i / n
+            p = tuple(a + t * (b - a) for a, b in zip(pos, goal))
+            path.append((p, gripper_forward(roll + t * (new_roll - roll))))
+        pos, roll = goal, new_roll
+    path.append(((pos[0] + pull_dx, pos[1], pos[2]), gripper_forward(roll)))
+    return path
+
+
+def _start_candidates(ep: Any, here: Pose, path: list[Pose]):
+    """Yield start postures at ``here`` for following ``path``.
+
+    Direct IK solutions at ``here`` first; then, for key poses of the path (where the
+    tool turns flat, the deepest point, the last turn), IK solutions there walked back
+    along the path to ``here`` in the kinematics client.
+    """
+    rb = ep.robot
+    yield from rb.ik_candidates(here, keep=4)
+    turned = path[:-1]
+    deep = max(range(len(turned)), key=lambda i: turned[i][0][0])
+    for key in sorted({0, deep, len(turned) - 1}):
+        for cand in rb.ik_candidates(turned[key], keep=4):
+            q = rb.dry_run(cand, [*reversed(turned[:key]), here])
+            if q is not None:
+                yield q
+
+
+def _choose_posture(ep: Any, steps, pull_dx: float, speed: float) -> SkillOutcome:
+    """Make sure the arm can follow the insertion and the pull; re-shape it if not.
+
+    The path is tried in the kinematics client from the current posture. If IK would
+    lose it, other postures at the current gripper pose are tried; the first that
+    carries the whole path is reached by lifting the tool clear, moving in joint
+    space, and coming back down.
+    """
+    rb = ep.robot
+    path = _gripper_path(ep, steps, pull_dx)
+    if rb.dry_run(rb.arm_q(), path) is not None:
+        return SkillOutcome("ok")
+    here = rb.gripper_pose()
+    for cand in _start_candidates(ep, here, path):
+        if rb.dry_run(cand, path) is None:
+            continue
+        for lift in (0.30, 0.22, 0.15, 0.10, 0.05):
+            high = ((here[0][0], here[0][1], here[0][2] + lift), here[1])
+            q_high = rb.dry_run(cand, [high])
+            if q_high is not None:
+                break
+        else:
+            continue
+        for res in (rb.move_to(high, speed=speed, watch=ep.watch),
+                    rb.move_joints(q_high, watch=ep.watch),
+                    rb.move_to(here, speed=speed, watch=ep.watch)):
+            if not res.ok:
+                return res
+        return SkillOutcome("ok")
+    return SkillOutcome("unreachable", "no arm posture can carry the tool along the "
+                        "insertion and the pull (joint limits)")
+
+
+# ----------------------------------------------------------------- place on floor
+def place_on_floor(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Put the held tool on the context's top face at (X, Y) heading ``Heading``.
+
+    The target body's holder (a door) swings it to ``hold_angle`` while the arm
+    works: the arm lowers the tool until its base is ``release_height`` above the
+    floor, lets go, waits ``settle_time`` and retreats to ``retreat``; then the holder
+    swings the target back. With ``by_hand`` the trainer puts the tool there instead
+    (no arm: the demonstration's placing, or a quick test of the physics alone).
+    """
+    _, x, y, heading = target
+    top = ep.context_body.top
+    holder = ep.bodies.get(ep.target_name)
+    if opts["by_hand"]:
+        if ep.held:
+            ep.robot.release()
+            ep.held = False
+        _swing(ep, holder, None)
+        set_frame_pose(ep.sim, ep.tool_body,
+                       ((x, y, top + opts["release_height"]),
+                        tuple(pb.getQuaternionFromEuler((0, 0, heading)))))
+        ep.use_physics("rest")
+        ep.run(opts["settle_time"])
+        why = ep.sim.blow_up(ep.tool_body)
+        return SkillOutcome("invalid", why) if why else SkillOutcome("ok")
+    ep.need_robot("place_on_floor")
+    _swing(ep, holder, opts["hold_angle"])
+    above = ep.gripper_for_tool_at(x, y, top + opts["carry_height"], heading)
+    down = ep.gripper_for_tool_at(x, y, top + opts["release_height"], heading)
+    for goal, speed in ((above, None), (down, opts["lower_speed"])):
+        res = ep.robot.move_to(goal, speed=speed, watch=ep.watch)
+        if not res.ok:
+            return res
+    ep.use_physics("rest")
+    ep.robot.release()
+    ep.held = False
+    ep.run(opts["settle_time"])
+    why = ep.sim.blow_up(ep.tool_body)
+    if why:
+        return SkillOutcome("invalid", why)
+    ep.use_physics("arm")
+    g = ep.robot.gripper_pose()[0]
+    for goal in ((g[0], g[1], g[2] + 0.08), tuple(opts["retreat"])):
+        res = ep.kind.move(ep, goal, opts["gripper_yaw"], None)
+        if not res.ok:
+            return SkillOutcome(res.status, f"retreat: {res.reason}", res.stop)
+    _swing(ep, holder, None)
+    why = ep.sim.blow_up(ep.tool_body)
+    return SkillOutcome("invalid", why) if why else SkillOutcome("ok")
+
+
+def _swing(ep: Any, holder, angle: float | None) -> None:
+    """Swing a holder-carrying body to ``angle`` (None: back to its open angle)."""
+    if holder is not None and hasattr(holder, "swing"):
+        holder.swing(ep.sim, holder.open_angle if angle is None else angle, ep.run)
+
+
+# ------------------------------------------------------------ pull / push on an axis
+def pull_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Pull the held tool straight back along -x until its working point is at ``until_x``.
+
+    The tool keeps the attitude the pose skill gave it; afterwards the physics runs
+    ``settle_steps`` more steps so that what was pulled comes to rest.
+    """
+    if not ep.held:
+        return SkillOutcome("blocked", "no tool is held")
+    g_pos, _ = ep.robot.gripper_pose()
+    dx = opts["until_x"] - ep.kind.working_point(ep)[0]
+    attitude = ep.state.get("attitude", None)
+    if attitude is None:
+        attitude = ep.kind.attitude(ep)
+    res = ep.kind.move(ep, (g_pos[0] + min(dx, 0.0), g_pos[1], g_pos[2]), attitude,
+                       opts["speed"], slip_guard(ep, opts))
+    if not res.ok:
+        return res
+    ep.sim.step(int(opts["settle_steps"]))
+    for body in ep.watch:
+        why = ep.sim.blow_up(body)
+        if why:
+            return SkillOutcome("invalid", why)
+    return SkillOutcome("ok")
+
+
+def push_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Push the held tool straight along +x by ``distance`` metres, keeping its attitude."""
+    if not ep.held:
+        return SkillOutcome("blocked", "no tool is held")
+    g_pos, _ = ep.robot.gripper_pose()
+    attitude = ep.state.get("attitude", None)
+    if attitude is None:
+        attitude = ep.kind.attitude(ep)
+    res = ep.kind.move(ep, (g_pos[0] + opts["distance"], g_pos[1], g_pos[2]), attitude,
+                       opts["speed"])
+    if not res.ok:
+        return res
+    ep.sim.step(int(opts["settle_steps"]))
+    return SkillOutcome("ok")
+
+
+# ------------------------------------------------------------------ release a joint
+@dataclass(frozen=True)
+class JointRelease:
+    """What a released joint did (radians; None where it never touched the tool)."""
+
+    body: str
+    contact_angle: float | None
+    final_angle: float
+
+    @property
+    def touched(self) -> bool:
+        """Return whether the body touched the tool after its release."""
+        return self.contact_angle is not None
+
+    @property
+    def closed_after_contact_deg(self) -> float | None:
+        """Return how far (deg) it moved on after the first contact."""
+        if self.contact_angle is None:
+            return None
+        return math.degrees(self.contact_angle - self.final_angle)
+
+
+def release_joint(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Release the target's held joint: its closer pushes it for ``duration`` seconds.
+
+    The holder first brings it back to its open angle; a robot link in the sweep from
+    there to closed makes the skill ``blocked``. The idle robot is then taken out of
+    the physics (``park_robot``: it stands outside the sweep, so nothing changes but
+    the cost of a step). The first contact with the tool (a contact point closer than
+    ``contact_distance`` m) and the final angle are recorded for the oracle.
+    """
+    door = ep.bodies[ep.target_name]
+    if door.released:
+        return SkillOutcome("blocked", "the joint was already released")
+    c = ep.sim.client
+    if ep.robot is not None and not ep.robot_parked:
+        in_sweep = _robot_in_sweep(ep, door)
+        if in_sweep:
+            return SkillOutcome("blocked", f"the robot's {in_sweep} is in the door's sweep")
+    _swing(ep, door, None)
+    if opts["park_robot"]:
+        ep.park_robot()
+    ep.use_physics("rest")
+    door.released = True
+    pb.setJointMotorControl2(door.id, 0, pb.VELOCITY_CONTROL, force=0.0, physicsClientId=c)
+    n = int(round(opts["duration"] / ep.sim.physics.time_step))
+    contact = None
+    for i in range(n):
+        pb.setJointMotorControl2(door.id, 0, pb.TORQUE_CONTROL, force=-door.closing_torque,
+                                 physicsClientId=c)
+        ep.sim.step()
+        if contact is None and any(
+                cp[8] <= opts["contact_distance"]
+                for cp in pb.getContactPoints(door.id, ep.tool_body, physicsClientId=c)):
+            contact = door.angle(ep.sim)
+        if i % 32 == 31:
+            why = ep.sim.blow_up(ep.tool_body)
+            if why:
+                return SkillOutcome("invalid", why)
+    final = door.angle(ep.sim)
+    if not math.isfinite(final):
+        return SkillOutcome("invalid", "the joint's angle is not finite")
+    ep.records[door.name] = JointRelease(door.name, contact, final)
+    return SkillOutcome("ok")
+
+
+def _robot_in_sweep(ep: Any, door) -> str:
+    """Return the name of a robot link that the closing door would touch, or "".
+
+    The door is put at angles from its current one down to 0 (closed) and the robot's
+    links are tested against it (1 cm margin); the state is restored.
+    """
+    c, robot = ep.sim.client, ep.robot.body
+    a0 = door.angle(ep.sim)
+    with ep.sim.saved():
+        for a in np.linspace(a0, 0.0, 9):
+            pb.resetJointState(door.id, 0, float(a), 0.0, physicsClientId=c)
+            pb.performCollisionDetection(physicsClientId=c)
+            near = pb.getClosestPoints(door.id, robot, 0.01, physicsClientId=c)
+            if near:
+                link = near[0][4]
+                return (pb.getJointInfo(robot, link, physicsClientId=c)[12].decode()
+                        if link >= 0 else "base")
+    return ""
+
+
+# ------------------------------------------------------------------------ registry
+def _kind_grasp_options() -> dict[str, Any]:
+    from creative_py.backends.pybullet.tools import HANDLINGS
+
+    out: dict[str, Any] = {}
+    for kind in HANDLINGS.values():
+        out.update(kind.GRASP_OPTIONS)
+    return out
+
+
+PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
+    Primitive("grasp", grasp, _kind_grasp_options()),
+    Primitive("insert_at_pose", insert_at_pose,
+              {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
+               "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
+               **SLIP_OPTIONS},
+              target="tip"),
+    Primitive("place_on_floor", place_on_floor,
+              {"hold_angle": REQUIRED, "carry_height": 0.10, "release_height": 0.003,
+               "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
+               "settle_time": 0.25, "by_hand": False, "perceive": False}, target="place"),
+    Primitive("pull_along_axis", pull_along_axis,
+              {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60, **SLIP_OPTIONS}),
+    Primitive("push_along_axis", push_along_axis,
+              {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
+    Primitive("release_joint", release_joint,
+              {"duration": 4.0, "contact_distance": 0.0005, "park_robot": True}),
+)}
+"""The skill primitives a manifest may bind, by name."""
+
+
+_POSITION = (-10.0, 10.0, "m")
+_SPEED = (1e-3, 2.0, "m/s")
+_ANGLE = (-2 * math.pi, 2 * math.pi, "rad")
+
+OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
+    # where things are: coordinates in the world frame (a list: each of its numbers)
+    "travel_z": _POSITION, "pull_to_x": _POSITION, "until_x": _POSITION,
+    "lift_to": _POSITION, "carry_z": _POSITION, "retreat": _POSITION,
+    # how far
+    "approach": (0.0, 1.0, "m"), "clearance": (0.0, 1.0, "m"),
+    "carry_height": (0.0, 1.0, "m"), "release_height": (0.0, 1.0, "m"),
+    "distance": (-2.0, 2.0, "m"), "contact_distance": (-0.1, 0.1, "m"),
+    # how fast
+    "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED,
+    # angles
+    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE,
+    # how long: what a hang would come from
+    "settle_time": (0.0, 10.0, "s"), "duration": (0.0, 60.0, "s"),
+    "settle_steps": (0, 10000, "steps"),
+    # the grasp-slip guard
+    "grasp_slip_max_rad": (0.0, math.pi, "rad"), "grasp_slip_max_m": (0.0, 1.0, "m"),
+}
+"""The bounds ``(low, high, unit)`` of every numeric option of the primitives and of
+the tool kinds' grasps, by option name; a ``steps`` option must be a whole number, an
+option whose default is true or false (``posture_search``, ``perceive``, ``by_hand``,
+``park_robot``) must be true or false. The loader checks every skill's options in
+every variant and location (:func:`creative_py.backends.pybullet.world.check_values`), so that no
+number of ``case.toml`` makes a motion or a wait run without end."""
+
+
+def option_flags() -> frozenset[str]:
+    """Return the options that are true or false (their default is a bool)."""
+    return frozenset(n for p in PRIMITIVES.values() for n, d in p.options.items()
+                     if isinstance(d, bool))
+
+
+def primitive(name: str) -> Primitive:
+    """Return the primitive ``name``; raise listing the registered ones."""
+    if name not in PRIMITIVES:
+        raise KeyError(f"unknown primitive {name!r}; primitives: {', '.join(PRIMITIVES)}")
+    return PRIMITIVES[name]
+
+
+def option_names(p: Primitive) -> Sequence[str]:
+    """Return the option names of primitive ``p``."""
+    return tuple(p.options)

@@ -1,0 +1,752 @@
+"""A case's simulated world: the manifest, the catalogue of tools and the scene files.
+
+:func:`load_world` reads a world folder (``worlds/<folder>/`` or a copy) for a
+:class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool;
+:func:`draw_world` and :func:`apply_drawn` make a randomised world from it
+(``--world-seed N``).
+The folder holds, besides ``case.toml``:
+
+``physics.toml``
+    ``time_step`` (s), ``solver_iterations``, ``gravity`` (m/s^2): the physics while
+    objects rest on surfaces; an optional ``[arm]`` table (``time_step``,
+    ``solver_iterations``) for the arm's motions.
+``scene.toml``
+    ``settle_time`` (s of physics after building); ``[robot]`` (``visuals``, ``speed``
+    m/s, ``turn_speed`` rad/s, ``steps_per_waypoint``) and ``[robot.start]`` (the
+    gripper's start ``position``, ``gripper`` attitude ``forward`` or ``down`` at
+    ``angle`` rad, ``keep`` IK candidates, optional ``via`` pose whose posture seeds
+    the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.backends.pybullet.scene`);
+    ``[tool_start]`` (where the tool lies: the fields of its kind,
+    :mod:`creative_py.backends.pybullet.tools`); ``[perception]`` (noise and the
+    ``[[perception.object]]`` the cameras track); ``[[camera]]``; an optional
+    ``[video]`` (the fixed camera of the trial clips and their ``fps``,
+    :mod:`creative_py.backends.pybullet.recorder`).
+``objects.toml``
+    The catalogue: one table per object in the array named by the manifest's
+    ``roles.tools`` (``[[tool]]``, ``[[object]]``), with the spec fields of
+    :mod:`creative_py.mesh.spec`, its ``set`` and ``friction``.
+``tasks.toml``
+    ``[[location]]`` (``set = {...}``: scene values of the target's predefined
+    locations) and ``[oracle]`` (:mod:`creative_py.backends.pybullet.oracles`).
+
+Every number of the scene, the start, the skills' options and the oracle may be a
+scene expression; the loader resolves them all for every variant and location, so a
+bad value is reported by file and field before any physics runs.
+
+Every number has finite bounds, so that no value makes the physics run without end
+(docs/new-case.md lists them): the physics' (:func:`creative_py.world_files.read_physics`);
+``settle_time`` 0-10 s (:data:`SETTLE_TIME_S`); ``[robot]`` ``speed`` 0.001-2 m/s,
+``turn_speed`` 0.001-10 rad/s, ``steps_per_waypoint`` 1-1000, ``keep`` 1-100; the
+start poses' and ``[tool_start]``'s numbers within +-10 m (rad); ``depth_sigma_m``
+0-0.1 m; an object's ``friction`` 0-10; the bodies' (:mod:`creative_py.backends.pybullet.scene`);
+the skills' options (:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the
+oracle's (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field, replace
+from pathlib import Path
+from typing import Any, Callable, Mapping, Optional
+
+import numpy as np
+
+from creative_py.case import CaseManifest
+from creative_py.simulator.catalogue import CatalogueWorld
+from creative_py.world_files import (Fields, PhysicsSettings, WorldFileError, load_toml,
+                               read_physics, world_file)
+
+_ROLES = ("tool", "target", "context")
+
+
+@dataclass(frozen=True)
+class CatalogueItem:
+    """An available object: its spec, set name, pybullet friction and (for a created
+    tool) the URDF file its body is loaded from."""
+
+    spec: Any
+    set: str
+    friction: float = 0.5
+    urdf: Path | None = None
+    outside_ranges: bool = False
+    """Set by ``outside_ranges = true`` in objects.toml: the user knows a dimension lies
+    outside the ontology's qualitative ranges (a run refuses such an object otherwise)."""
+
+
+@dataclass(frozen=True)
+class RobotSpec:
+    """Baxter's settings and start pose (raw numbers or expressions; see module doc)."""
+
+    visuals: bool
+    speed: float
+    turn_speed: float
+    steps_per_waypoint: int
+    start: dict[str, Any]
+    via: dict[str, Any] | None
+    keep: int
+
+
+@dataclass(frozen=True)
+class PerceivedObject:
+    """An object the cameras track: a role or a name, and the support it rests on."""
+
+    name: str
+    support_z: Any = None
+
+
+@dataclass(frozen=True)
+class SceneSpec:
+    """Everything ``scene.toml`` says (bodies raw: resolved per episode)."""
+
+    settle_time: float
+    robot: RobotSpec
+    values: dict[str, Any]
+    bodies: tuple
+    tool_start: dict[str, Any]
+    noise: Any
+    perceived: tuple[PerceivedObject, ...]
+    cameras: tuple
+    video: Any = None
+    """The clips' camera and frame rate (:class:`~creative_py.backends.pybullet.recorder.VideoSpec`):
+    the ``[video]`` table, else the first camera at 5 frames per second, else None."""
+
+
+@dataclass(frozen=True)
+class SkillSpec:
+    """A manifest skill bound to its primitive, options raw (resolved per episode)."""
+
+    name: str
+    primitive: str
+    options: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class World(CatalogueWorld):
+    """Everything the simulator needs to build a case's scenes.
+
+    Attributes
+    ----------
+    manifest : CaseManifest
+        The case (roles, skills, pose parameters, variants, demonstration).
+    directory : Path
+        The world folder.
+    physics : dict
+        ``"rest"`` and ``"arm"`` :class:`~creative_py.world_files.PhysicsSettings`.
+    scene : SceneSpec
+        The scene description.
+    items : dict
+        ``name -> CatalogueItem`` of every available object, created ones included.
+    location_sets : tuple of dict
+        The scene values of each predefined location, in order.
+    oracle : OracleSpec
+        The success oracle.
+    skills : dict
+        ``skill name -> SkillSpec``.
+    """
+
+    manifest: CaseManifest
+    directory: Path
+    physics: dict[str, PhysicsSettings]
+    scene: SceneSpec
+    items: dict[str, CatalogueItem]
+    location_sets: tuple[dict[str, Any], ...]
+    oracle: Any
+    skills: dict[str, SkillSpec]
+    postures: dict = field(default_factory=dict, compare=False, repr=False)
+    variation: str = ""
+    """Empty for the world as its files say; ``world seed N`` for a drawn one (part of
+    every cache key that depends on the world's numbers)."""
+
+    @property
+    def locations(self) -> tuple[int, ...]:
+        """Return the 1-based indices of the target's predefined locations."""
+        return tuple(range(1, len(self.location_sets) + 1))
+
+    @property
+    def video(self) -> Any:
+        """Return the camera of the trial clips (``scene.video``,
+        :class:`~creative_py.backends.pybullet.recorder.VideoSpec`), or None."""
+        return self.scene.video
+
+    def with_tool(self, spec: Any, urdf: Path | None = None) -> "World":
+        """Return this world with one more available tool (a created one).
+
+        Its catalogue facts, grasp and skills come from ``spec`` (its kind); its body
+        from ``urdf`` (written by :mod:`creative_py.mesh`, link frame = tool frame)
+        when given, otherwise from the spec's parts. It takes the friction of the
+        catalogue's first object (the same printed material).
+        """
+        from creative_py.backends.pybullet.tools import tool_kind
+
+        tool_kind(spec)
+        if urdf is not None and not Path(urdf).is_file():
+            raise FileNotFoundError(f"{urdf}: tool URDF not found")
+        friction = next(iter(self.items.values())).friction
+        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
+        return replace(self, items={**self.items, spec.name: item})
+
+    def listing(self) -> dict[str, Any]:
+        """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created
+        tool), locations, variants, the default pose and the demonstration."""
+        m = self.manifest
+        objects = {}
+        for n, item in self.items.items():
+            d = asdict(item.spec)
+            d.update(set=item.set, friction=item.friction)
+            if item.urdf is not None:
+                d["urdf"] = str(item.urdf)
+            objects[n] = d
+        pose = dict(zip(m.pose_names, m.demonstration.pose))
+        return {
+            "case": m.id,
+            "objects": objects,
+            "locations": [{"index": i, **s} for i, s in enumerate(self.location_sets, 1)],
+            "variants": {v.name: {"description": v.description, "harder": v.harder,
+                                  "set": dict(v.set)} for v in m.variants},
+            "default_pose": pose,
+            "demonstration": {"tool": m.demonstration.tool,
+                              "variant": m.demonstration.variant,
+                              "location": m.demonstration.location,
+                              "steps": list(m.demonstration.steps), "pose": pose},
+        }
+
+    def namespace(self, variant: str, location: int, tool: str):
+        """Return the scene values of one episode (variant and location applied)."""
+        from creative_py.backends.pybullet.scene import Namespace
+        from creative_py.backends.pybullet.tools import tool_kind
+
+        v = self.manifest.variant(variant)
+        if not (isinstance(location, int) and 1 <= location <= len(self.location_sets)):
+            raise KeyError(f"unknown location {location!r}; locations: "
+                           f"1..{len(self.location_sets)}")
+        spec = self.item(tool).spec
+        ns = Namespace(self.scene.values, {b.name: b.fields for b in self.scene.bodies},
+                       tool_kind(spec).quantities(spec), str(self.directory / "scene.toml"))
+        ns.override(v.set, f"{self.manifest.folder / 'case.toml'}: variant {v.name!r}: set")
+        ns.override(self.location_sets[location - 1],
+                    f"{self.directory / 'tasks.toml'}: location[{location - 1}]: set")
+        return ns
+
+
+SETTLE_TIME_S = (0.0, 10.0)
+"""The bounds of ``settle_time`` (scene.toml), seconds of physics after building."""
+
+SPEED_M_S = (1e-3, 2.0)
+"""The bounds of the arm's Cartesian speeds (``[robot] speed``, the skills' speeds), m/s."""
+
+TURN_SPEED_RAD_S = (1e-3, 10.0)
+"""The bounds of ``[robot] turn_speed``, rad/s."""
+
+STEPS_PER_WAYPOINT = (1, 1000)
+"""The bounds of ``[robot] steps_per_waypoint``, physics steps."""
+
+KEEP = (1, 100)
+"""The bounds of ``[robot.start] keep``, IK candidates."""
+
+EXTENT_M = 10.0
+"""The largest size of a coordinate of the scene (a start position, a tool's start
+field), metres from the robot's base; angles are bounded by it too, in radians."""
+
+SIGMA_M = (0.0, 0.1)
+"""The bounds of ``[perception] depth_sigma_m``, metres."""
+
+FRICTION = (0.0, 10.0)
+"""The bounds of a friction coefficient (``friction`` of objects.toml)."""
+
+
+def _read_robot(rf: Fields) -> RobotSpec:
+    """Read ``[robot]``: ``speed`` (m/s) within :data:`SPEED_M_S`, ``turn_speed`` (rad/s)
+    within :data:`TURN_SPEED_RAD_S`, ``steps_per_waypoint`` within
+    :data:`STEPS_PER_WAYPOINT`, ``[robot.start] keep`` within :data:`KEEP`; the start's
+    and the via pose's numbers are resolved by :func:`check_values` (each within
+    +-:data:`EXTENT_M`)."""
+    visuals = rf.bool("visuals", False)
+    speed = rf.float("speed", 0.10, minimum=SPEED_M_S[0], maximum=SPEED_M_S[1])
+    turn = rf.float("turn_speed", 1.0, minimum=TURN_SPEED_RAD_S[0],
+                    maximum=TURN_SPEED_RAD_S[1])
+    spw = rf.int("steps_per_waypoint", 4, minimum=STEPS_PER_WAYPOINT[0],
+                 maximum=STEPS_PER_WAYPOINT[1])
+    sf = rf.table("start")
+    start = {"position": sf.raw("position"),
+             "gripper": sf.str("gripper", choices=("forward", "down")),
+             "angle": sf.raw("angle", 0.0)}
+    keep = sf.int("keep", 6, minimum=KEEP[0], maximum=KEEP[1])
+    via = None
+    if sf.has("via"):
+        vf = sf.table("via")
+        via = {"position": vf.raw("position"),
+               "gripper": vf.str("gripper", choices=("forward", "down")),
+               "angle": vf.raw("angle", 0.0)}
+        vf.done()
+    sf.done()
+    rf.done()
+    return RobotSpec(visuals, speed, turn, spw, start, via, keep)
+
+
+def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
+    from creative_py.perception.noise import NoiseModel
+    from creative_py.backends.pybullet.camera import cameras_from_tables
+    from creative_py.backends.pybullet.recorder import VideoSpec
+    from creative_py.backends.pybullet.scene import read_bodies
+    from creative_py.backends.pybullet.tools import HANDLINGS
+
+    f = Fields(load_toml(path), path)
+    settle = f.float("settle_time", minimum=SETTLE_TIME_S[0], maximum=SETTLE_TIME_S[1])
+    robot = _read_robot(f.table("robot"))
+    vf = f.table("values", {})
+    values = dict(vf.data)
+    for k in values:
+        vf.raw(k)
+    vf.done()
+    bodies = read_bodies(f.tables("body"))
+    tf = f.table("tool_start")
+    tool_start: dict[str, Any] = {}
+    for kind in sorted(kinds):
+        for name, default in HANDLINGS[kind].START_FIELDS.items():
+            if name not in tool_start:
+                tool_start[name] = tf.raw(name) if default is None else tf.raw(name, default)
+    tf.done()
+    pf = f.table("perception")
+    try:
+        noise = NoiseModel(depth_sigma_m=pf.float("depth_sigma_m", minimum=SIGMA_M[0],
+                                                  maximum=SIGMA_M[1]),
+                           dropout=pf.float("dropout", minimum=0.0, maximum=0.99))
+    except ValueError as exc:
+        raise WorldFileError(f"{path}: [perception]: {exc}") from None
+    perceived = []
+    for of in pf.tables("object", []):
+        perceived.append(PerceivedObject(of.str("object"), of.raw("support_z", None)))
+        of.done()
+    pf.done()
+    try:
+        cameras = cameras_from_tables(f.raw("camera", []), str(path))
+        table = f.raw("video", None)
+        video = (VideoSpec.from_table(table, str(path)) if table is not None
+                 else VideoSpec(cameras[0]) if cameras else None)
+    except (ValueError, TypeError) as exc:
+        raise WorldFileError(str(exc)) from None
+    f.done()
+    return SceneSpec(settle, robot, values, bodies, tool_start, noise, tuple(perceived),
+                     cameras, video)
+
+
+def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
+    from creative_py.mesh.spec import spec_from_dict
+    from creative_py.backends.pybullet.tools import HANDLINGS
+
+    f = Fields(load_toml(path), path)
+    items: dict[str, CatalogueItem] = {}
+    for tf in f.tables(table):
+        data = dict(tf.data)
+        obj_set = tf.str("set")
+        friction = tf.float("friction", 0.5, minimum=0.0, maximum=FRICTION[1])
+        outside = tf.bool("outside_ranges", False)
+        data.pop("set")
+        data.pop("friction", None)
+        data.pop("outside_ranges", None)
+        try:
+            spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
+        except ValueError as exc:
+            raise WorldFileError(str(exc)) from None
+        if spec.HANDLING not in HANDLINGS:
+            raise tf.error("kind", f"the simulator has no handling {spec.HANDLING!r} "
+                                   f"for a {spec.kind}")
+        if spec.name in items:
+            raise tf.error("name", f"object name {spec.name!r} is used twice")
+        items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside)
+    f.done()
+    if not items:
+        raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")
+    return items
+
+
+def _read_tasks(path: Path):
+    from creative_py.backends.pybullet.oracles import ORACLES, OracleSpec
+
+    f = Fields(load_toml(path), path)
+    locations = []
+    for lf in f.tables("location"):
+        values = lf.raw("set", {})
+        if not isinstance(values, dict):
+            raise lf.error("set", "must be a table of scene values")
+        lf.str("description", "")
+        lf.done()
+        locations.append(dict(values))
+    if not locations:
+        raise f.error("location", "at least one [[location]] is needed")
+    of = f.table("oracle")
+    kind = of.str("kind", choices=tuple(ORACLES))
+    options = {}
+    for name, default in ORACLES[kind].options.items():
+        options[name] = of.raw(name) if default is None else of.raw(name, default)
+    of.done()
+    f.done()
+    return tuple(locations), OracleSpec(kind, options)
+
+
+def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
+    from creative_py.backends.pybullet.primitives import PRIMITIVES, REQUIRED
+
+    path = manifest.folder / "case.toml"
+    out = {}
+    for i, s in enumerate(manifest.skills):
+        where = f"{path}: field 'skill[{i}]"
+        if s.primitive not in PRIMITIVES:
+            raise WorldFileError(f"{where}.primitive': unknown primitive {s.primitive!r}; "
+                                 f"primitives: {', '.join(PRIMITIVES)}")
+        known = PRIMITIVES[s.primitive].options
+        for name in s.options:
+            if name not in known:
+                raise WorldFileError(f"{where}.options.{name}': unknown option of "
+                                     f"{s.primitive}; options: {', '.join(known)}")
+        options = {}
+        for name, default in known.items():
+            if name in s.options:
+                options[name] = s.options[name]
+            elif default is not REQUIRED:
+                options[name] = default
+        out[s.name] = SkillSpec(s.name, s.primitive, options)
+    return out
+
+
+def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
+    """Return the world of ``manifest`` read from ``world_dir`` (default: its folder).
+
+    Errors name the world file and the field (:class:`creative_py.world_files.WorldFileError`):
+    a missing file or field, a wrong type, an unknown field (with a suggestion), an
+    expression that does not resolve in some variant or location.
+    """
+    d = Path(world_dir) if world_dir is not None else Path(manifest.folder)
+    p = world_file(d, "physics.toml")
+    pf = Fields(load_toml(p), p)
+    rest = read_physics(pf)
+    arm = rest
+    if pf.has("arm"):
+        af = pf.table("arm")
+        arm = read_physics(af, gravity=rest.gravity)
+        af.done()
+    pf.done()
+    items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
+    scene = _read_scene(world_file(d, "scene.toml"), {i.spec.HANDLING for i in items.values()})
+    locations, oracle = _read_tasks(world_file(d, "tasks.toml"))
+    world = World(manifest, d, {"rest": rest, "arm": arm}, scene, items, locations, oracle,
+                  _read_skills(manifest))
+    demo = manifest.demonstration
+    case_file = manifest.folder / "case.toml"
+    if demo.tool not in items:
+        raise WorldFileError(f"{case_file}: field 'demonstration.tool': must be one of "
+                             f"{', '.join(items)}, got {demo.tool!r}")
+    if demo.location > len(locations):
+        raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
+                             f"{len(locations)} (tasks.toml has {len(locations)} locations), "
+                             f"got {demo.location}")
+    bodies = {b.name for b in scene.bodies}
+    for name in items:
+        if name in bodies:
+            raise WorldFileError(f"{d / 'objects.toml'}: object {name!r}: the name is "
+                                 f"already a [[body]] of scene.toml; names must be unique")
+    for v in manifest.variants:
+        for loc in world.locations:
+            check_values(world, v.name, loc, demo.tool)
+    return world
+
+
+def check_values(world: World, variant: str, location: int, tool: str) -> None:
+    """Resolve every scene value of one episode; raise :class:`WorldFileError` if one
+    fails or lies outside its bounds.
+
+    Bounded, each error naming the file and the field: the bodies' numbers
+    (:mod:`creative_py.backends.pybullet.scene`), every number of ``[tool_start]`` and of the robot's
+    start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
+    (:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
+    (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`).
+    """
+    from creative_py.backends.pybullet import oracles, primitives
+    from creative_py.backends.pybullet.scene import make_bodies
+
+    ns = world.namespace(variant, location, tool)
+    episode = f" (variant {variant}, location {location})"
+    bodies = make_bodies(world.scene.bodies, ns)
+    scene_file = world.directory / "scene.toml"
+    start = resolve_start(world, ns)
+    for k, v in start.items():
+        if not isinstance(v, (dict, str)):
+            check_bound(v, (-EXTENT_M, EXTENT_M, "(m, rad)"),
+                        f"{scene_file}: field 'tool_start.{k}'", episode)
+    robot = world.scene.robot
+    for name, pose in (("start", robot.start), ("start.via", robot.via)):
+        for k in ("position", "angle") if pose is not None else ():
+            where = f"{scene_file}: field 'robot.{name}.{k}'"
+            value = ns.evaluate(pose[k], f"robot.{name}.{k}")
+            if k == "position" and (not isinstance(value, tuple) or len(value) != 3):
+                raise WorldFileError(f"{where}: must be a list of 3 numbers (m), got "
+                                     f"{pose[k]!r}")
+            check_bound(value, (-EXTENT_M, EXTENT_M, "m" if k == "position" else "rad"),
+                        where, episode)
+    case_file = world.manifest.folder / "case.toml"
+    flags = primitives.option_flags()
+    for i, s in enumerate(world.skills.values()):
+        opts = resolve_options(s.options, ns, f"skill {s.name} options")
+        for k, v in opts.items():
+            where = f"{case_file}: field 'skill[{i}].options.{k}'"
+            if k in flags:
+                if not isinstance(v, bool):
+                    raise WorldFileError(f"{where}: must be true or false, got {v!r}")
+            elif k in primitives.OPTION_BOUNDS:
+                check_bound(v, primitives.OPTION_BOUNDS[k], where,
+                            episode if isinstance(s.options[k], str) else "")
+    words = oracle_words(world)
+    opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
+    for k, v in opts.items():
+        if k not in words and k in oracles.OPTION_BOUNDS:
+            check_bound(v, oracles.OPTION_BOUNDS[k],
+                        f"{world.directory / 'tasks.toml'}: field 'oracle.{k}'",
+                        episode if isinstance(world.oracle.options[k], str) else "")
+    for p in world.scene.perceived:
+        if p.support_z is not None:
+            ns.evaluate(p.support_z, f"perception.object {p.name} support_z")
+        object_name(world.manifest, p.name, tool)
+    for role in _ROLES[1:]:
+        name = getattr(world.manifest, role)
+        if name not in bodies:
+            raise WorldFileError(f"{world.directory / 'scene.toml'}: the {role} "
+                                 f"{name!r} of case.toml is not a [[body]] of the scene")
+
+
+def check_bound(value: Any, bound: tuple[float, float, str], where: str,
+                context: str = "") -> None:
+    """Raise :class:`WorldFileError` unless ``value`` (a number, or each number of a
+    tuple) lies within ``bound`` = ``(low, high, unit)``; a ``steps`` value must be whole.
+
+    ``where`` names the file and the field, ``context`` (appended) the episode whose
+    scene values gave the number.
+    """
+    lo, hi, unit = bound
+    for v in value if isinstance(value, tuple) else (value,):
+        if isinstance(v, bool) or not isinstance(v, (int, float)):
+            raise WorldFileError(f"{where}: must be a number ({unit}), got {v!r}{context}")
+        if not lo <= v <= hi:
+            raise WorldFileError(f"{where}: must lie within [{lo:g}, {hi:g}] {unit}, got "
+                                 f"{v:g}{context}")
+        if unit == "steps" and not float(v).is_integer():
+            raise WorldFileError(f"{where}: must be a whole number of steps, got "
+                                 f"{v:g}{context}")
+
+
+def oracle_words(world: World) -> set[str]:
+    """Return the oracle options that are words (object names, an axis), not numbers."""
+    from creative_py.backends.pybullet.oracles import ORACLES
+
+    o = ORACLES[world.oracle.kind]
+    return {o.subject, "axis", "fact"}
+
+
+def resolve_start(world: World, ns) -> dict[str, Any]:
+    """Return the tool's start fields resolved (numbers, tuples, tables as written)."""
+    return {k: ns.evaluate(v, f"tool_start.{k}") for k, v in world.scene.tool_start.items()}
+
+
+def resolve_options(options: Mapping[str, Any], ns, where: str,
+                    words: set[str] = frozenset()) -> dict[str, Any]:
+    """Return ``options`` with numbers and expressions resolved (``words`` left as text)."""
+    return {k: (v if k in words else ns.evaluate(v, f"{where}: {k}"))
+            for k, v in options.items()}
+
+
+def object_name(manifest: CaseManifest, name: str, tool: str) -> str:
+    """Return the object a role (``tool``, ``target``, ``context``) or a name denotes."""
+    return manifest.role_object(name, tool) if name in _ROLES else name
+
+
+Range = tuple[float, float, str]
+"""A qualitative range: low, high and which ends it holds (``closed_open``,
+``closed_closed``, ``open_closed``; ``ontology/ranges.pl``)."""
+
+ValueRange = tuple[float, float, str, str]
+"""A :data:`Range` and the qualitative value it stands for (``short``)."""
+
+
+def _inside(x: float, rng_: Range) -> bool:
+    lo, hi, bounds = rng_
+    if bounds == "closed_open":
+        return lo <= x < hi
+    if bounds == "open_closed":
+        return lo < x <= hi
+    return lo <= x <= hi
+
+
+def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, ValueRange]]) -> None:
+    """Raise ValueError naming case.toml's table when a value table of
+    ``[randomise.catalogue.<field>]`` names a value no catalogued object has."""
+    seen: dict[str, set[str]] = {}
+    for name, facts in ranges.items():
+        if name not in world.items:
+            continue
+        fields = world.items[name].spec.FACT_FIELDS
+        for fact, (_lo, _hi, _bounds, value) in facts.items():
+            if fact in fields:
+                seen.setdefault(fields[fact], set()).add(value)
+    for fld, value, _lo, _hi in world.manifest.catalogue_value_bounds:
+        if value not in seen.get(fld, set()):
+            known = ", ".join(sorted(seen.get(fld, set()))) or "none"
+            raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
+                             f"[randomise.catalogue.{fld}] {value!r}: no catalogued object "
+                             f"has this value (values of {fld}: {known})")
+
+
+def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueRange]],
+               keeps: Optional[Callable[[str, Any], bool]] = None,
+               attempts: int = 200,
+               demonstrates: Optional[Callable[[dict[str, Any]], bool]] = None,
+               redraws: int = 20) -> dict[str, Any]:
+    """Draw a randomised world from ``world`` and return it as JSON-ready data.
+
+    Deterministic: one :func:`numpy.random.default_rng` of ``seed`` makes, in order,
+    the catalogue's new order (a permutation), each object's numbers (objects in file
+    order, facts in name order), each location's jittered values and, while
+    ``demonstrates`` says the demonstration fails in the drawn world, the
+    demonstration's location again (the generator goes on: the same seed gives the
+    same redraws).
+
+    Parameters
+    ----------
+    world : World
+        The world as its files say.
+    seed : int
+        The world seed.
+    ranges : mapping
+        ``object -> {catalogue fact -> (low, high, bounds, value)}``: the qualitative
+        range of each number the object has and the value it stands for (the engine's
+        ``catalogue_ranges``). Each number is drawn uniformly inside its own range
+        (narrowed by the manifest's ``[randomise.catalogue]``, for the field and for
+        the object's value, where given), rounded to 0.1 mm (0.0001 degree), so the
+        object keeps its qualitative values; a number without a range is kept, and so
+        are the numbers of the demonstration's tool (the trainer's demonstration is
+        part of the case and must work: drawn, a hook with a long, wide prong on a thin
+        handle tipped off its stand at the trainer's grasp).
+    keeps : callable or None
+        ``keeps(name, spec)`` says whether a drawn object still has every structural
+        literal of the original (a ratio of two numbers can change its value); the
+        object is drawn again until it does, at most ``attempts`` times.
+    demonstrates : callable or None
+        ``demonstrates(drawn)`` says whether the trainer's demonstration reaches the
+        goal in the drawn world (the physics: a location can be drawn where it does
+        not, e.g. a cube jittered onto the tube's axis, where perception error decides
+        the side the prong is turned to); the demonstration's location is drawn again
+        until it does, at most ``redraws`` times, else ValueError naming the world
+        seed.
+    redraws : int
+        The most redraws of the demonstration's location.
+
+    Returns
+    -------
+    dict
+        ``seed``, ``order`` (the catalogue's names in their new order), ``objects``
+        (``name -> {spec field: value}``, the drawn numbers), ``locations`` (each
+        location's ``set`` table with the jittered keys of the manifest's
+        ``[randomise]``, each kept within its ``min`` and ``max``) and ``redraws``
+        (how many times the demonstration's location was drawn again).
+    """
+    from creative_py.backends.pybullet.tools import tool_kind
+
+    _check_value_bounds(world, ranges)
+    narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
+    by_value = {(f, v): (lo, hi) for f, v, lo, hi in world.manifest.catalogue_value_bounds}
+    rng = np.random.default_rng(seed)
+    names = list(world.items)
+    order = [names[int(i)] for i in rng.permutation(len(names))]
+    objects: dict[str, dict[str, float]] = {}
+    for name in names:
+        if name == world.manifest.demonstration.tool:
+            continue
+        spec = world.items[name].spec
+        kind = tool_kind(spec)
+        fields = spec.FACT_FIELDS
+        todo = []
+        for fact, (lo, hi, bounds, value) in sorted(ranges.get(name, {}).items()):
+            if fact not in fields:
+                continue
+            a, b = narrow.get(fields[fact], (lo, hi))
+            c, d = by_value.get((fields[fact], value), (a, b))
+            todo.append((fact, (max(lo, a, c), min(hi, b, d), bounds, (lo, hi, bounds))))
+        if not todo:
+            continue
+        for attempt in range(attempts):
+            values = {}
+            for fact, (lo, hi, bounds, own) in todo:
+                if lo > hi:
+                    raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
+                                     f"[randomise.catalogue.{fields[fact]}] leaves {name} "
+                                     f"no number in its own range {list(own[:2])}")
+                x = round(float(rng.uniform(lo, hi)), 4)
+                while not (_inside(x, own) and lo <= x <= hi):
+                    x = round(float(rng.uniform(lo, hi)), 4)
+                values[fields[fact]] = x
+            drawn = kind.redrawn(spec, values)
+            if keeps is None or keeps(name, drawn):
+                objects[name] = {f: getattr(drawn, f) for f in sorted(set(fields.values()))
+                                 if getattr(drawn, f) != getattr(spec, f)}
+                break
+        else:
+            raise ValueError(f"world seed {seed}: {name}: no draw in {attempts} attempts "
+                             f"keeps its qualitative values")
+    demo = world.manifest.demonstration
+    locations = [_jittered(world, i, rng) for i in world.locations]
+    drawn = {"seed": int(seed), "order": order, "objects": objects, "locations": locations,
+             "redraws": 0}
+    if demonstrates is None:
+        return drawn
+    if not world.manifest.location_jitter:
+        redraws = 0  # nothing to draw again
+    for n in range(redraws + 1):
+        if demonstrates(drawn):
+            return drawn
+        if n < redraws:
+            locations[demo.location - 1] = _jittered(world, demo.location, rng)
+            drawn["redraws"] = n + 1
+    raise ValueError(f"world seed {seed}: the demonstration ({demo.tool} at location "
+                     f"{demo.location}) failed in the physics in {redraws + 1} draws of "
+                     f"location {demo.location} (its [randomise.location] jitter of "
+                     f"{world.manifest.folder / 'case.toml'} may need narrowing)")
+
+
+def _jittered(world: World, location: int, rng: np.random.Generator) -> dict[str, Any]:
+    """Return location ``location``'s ``set`` table with the manifest's ``[randomise]``
+    keys jittered by ``rng`` (each kept within its ``min`` and ``max``)."""
+    demo = world.manifest.demonstration
+    loc = world.location_sets[location - 1]
+    ns = world.namespace(demo.variant, location, demo.tool)
+    new = dict(loc)
+    for j in world.manifest.location_jitter:
+        base = float(loc[j.key]) if j.key in loc else float(ns.get(j.key))
+        new[j.key] = round(min(j.max, max(j.min, base + float(rng.uniform(-j.jitter,
+                                                                           j.jitter)))), 5)
+    return new
+
+
+def apply_drawn(world: World, drawn: Mapping[str, Any]) -> World:
+    """Return ``world`` with a drawn world's catalogue order, numbers and locations
+    (:func:`draw_world`; also what a resumed run reads back from ``run.json``).
+
+    The result passes the loader's checks again (every scene value of every variant
+    and location resolves); errors name the world seed.
+    """
+    order = list(drawn["order"])
+    if sorted(order) != sorted(world.items):
+        raise ValueError(f"world seed {drawn.get('seed')}: the drawn catalogue "
+                         f"{sorted(order)} is not the world's {sorted(world.items)}")
+    items = {}
+    for name in order:
+        item = world.items[name]
+        values = dict(drawn["objects"].get(name, {}))
+        items[name] = replace(item, spec=replace(item.spec, **values)) if values else item
+    locations = tuple(dict(s) for s in drawn["locations"])
+    if len(locations) != len(world.location_sets):
+        raise ValueError(f"world seed {drawn.get('seed')}: {len(locations)} locations "
+                         f"drawn, the world has {len(world.location_sets)}")
+    new = replace(world, items=items, location_sets=locations, postures={},
+                  variation=f"world seed {drawn.get('seed')}")
+    for v in new.manifest.variants:
+        for loc in new.locations:
+            check_values(new, v.name, loc, new.manifest.demonstration.tool)
+    return new
