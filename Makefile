@@ -107,7 +107,7 @@ repl: $(STAMP)  ## Prolog REPL with the engine loaded (RUN=<run folder> loads it
 bench: $(STAMP)  ## Run the benchmarks (about 40 min) and record their figures in bench/results/.
 	$(PY) bench/run_all.py
 
-readme-figures: $(STAMP)  ## Write the README's figures about runs from bench/results/ (the marked blocks).
+readme-figures: $(STAMP)  ## Write the README's figures and docs/results.md (from docs/results.md.in) from bench/results/.
 	$(PY) bench/readme_figures.py
 
 # MUTATE_ARGS narrows the run, e.g. MUTATE_ARGS="--only creative_py/report/table.py".

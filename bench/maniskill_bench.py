@@ -46,7 +46,7 @@ def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
 
 
 def run_figures(run: Path, recs: list[dict]) -> dict:
-    """What the README says of the learning run ``run`` (its ``summary.json`` and
+    """What docs/results.md says of the learning run ``run`` (its ``summary.json`` and
     ``trials.jsonl``): tool-use trials and their control steps, the stop, h_g, the tool
     the model chose with its evaluation, and the creation phase (catalogued objects
     tried, the tools made with their sizes, outcomes and strength)."""

@@ -1,4 +1,5 @@
-"""Whole runs of every shipped case as a user makes them, and what the README says of them.
+"""Whole runs of every shipped case as a user makes them, and what the README and
+docs/results.md say of them.
 
 Two runs per case (every case of ``worlds/`` unless ``--cases`` says), seed 0, ``--strategy informative`` (the default), each a whole
 ``creative run`` in its own process, one after the other:
@@ -12,14 +13,14 @@ Two runs per case (every case of ``worlds/`` unless ``--cases`` says), seed 0, `
     rake`` run it: a tool is made even after a catalogued object succeeded.
 ``paper``, ``random``
     tool-use learning alone (``--phase use``, no clips) with the other strategies, for
-    the README's table of strategies on the shipped worlds.
+    the table of strategies on the shipped worlds (docs/results.md).
 
 Records per run: the tool-use trials and their stop, the creation trials, what solved
 the harder task (``solved_by``) and each catalogued object's trial, the created tools
 (dimensions, mass, printed pieces with print time and filament, strength), the clips
 kept (count, frames, seconds, bytes), the evaluations, the wall time, and ``model.pl``
 (the learned models). Writes ``bench/results/release_runs.json``; ``bench/readme_figures.py``
-puts these figures into the README.
+puts these figures into the README's table and docs/results.md.
 
     .venv/bin/python bench/release_runs.py [--cases CASE ...] [--kinds default make
                                            paper random] [--keep DIR [--record-only]]

@@ -5,7 +5,7 @@ process); a failing one is reported and the others still run. The learning bench
 (several whole runs per case) and the whole runs of every case as a user makes them
 (``release_runs.py``, ``video_cost_bench.py``) are the long ones: ``--quick`` leaves them
 out. ``bench/readme_figures.py`` (``make readme-figures``) then writes the README's
-figures from what they recorded.
+figures and docs/results.md from what they recorded.
 """
 
 from __future__ import annotations

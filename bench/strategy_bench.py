@@ -5,7 +5,7 @@ seeds 0-19, tool-use learning and the learned model's evaluation) on a local Ray
 instance, or an existing sweep folder's ``sweep.csv`` (``--from``). Records, per case
 and strategy: tool-use trials (median, range), how learning stopped, the learned
 model's evaluation successes in those worlds, the information bound ceil(log2 N0) and
-the paper's count, to ``bench/results/strategies.json``, and prints the README's table.
+the paper's count, to ``bench/results/strategies.json``, and prints the table of docs/results.md.
 
 ``creation``: the harder task for every world seed with the default strategy (``--from``
 a ``--phase all`` sweep folder, or run one): creation trials per world and whether the
@@ -88,7 +88,7 @@ def summarise(rows: list[dict]) -> list[dict]:
 
 
 def table_md(records: list[dict]) -> str:
-    """Return the README's markdown table of :func:`summarise`'s records."""
+    """Return the markdown table (docs/results.md) of :func:`summarise`'s records."""
     cases = list(dict.fromkeys(r["case"] for r in records))
     strategies = list(dict.fromkeys(r["strategy"] for r in records))
     by = {(r["case"], r["strategy"]): r for r in records}
