@@ -1,4 +1,4 @@
-"""What the learning loop needs of a simulator: the :class:`Backend`, its :class:`World`
+"""What the layers above need of a simulator: the :class:`Backend`, its :class:`World`
 and its :class:`Episode`, as :class:`typing.Protocol` classes.
 
 The protocols hold exactly what the layers above the boundary use of a simulator (the
@@ -115,8 +115,8 @@ class World(Protocol):
     @property
     def variation(self) -> str:
         """Empty for the world as its files say; ``world seed N`` for a drawn one
-        (:func:`creative_py.simulator.randomise.apply_drawn`). Part of every cache key that depends on the
-        world's numbers."""
+        (:func:`creative_py.simulator.randomise.apply_drawn`). Part of every cache key
+        that depends on the world's numbers."""
 
     @property
     def video(self) -> Optional[ClipCamera]:
