@@ -84,6 +84,7 @@ def main() -> None:
     from creative_py.case import get_case
     from creative_py.learning.poses import pose_resolver
     from creative_py.simulator import backend_for
+    from creative_py.simulator.trial import run_trial
 
     manifest = get_case(a.case)
     sim = backend_for(manifest)
@@ -108,8 +109,8 @@ def main() -> None:
     rows = []
     t0 = time.perf_counter()
     for i, seed in enumerate(seeds, 1):
-        r = sim.run_trial(fresh, tool, manifest.demonstration.variant, i, pose,
-                          pose_target=poses)
+        r = run_trial(fresh, tool, manifest.demonstration.variant, i, pose,
+                      pose_target=poses)
         finger = bare_finger(sim, fresh, manifest.demonstration.variant, i, tool)
         rows.append({"seed": seed, "outcome": r.outcome, "steps": r.steps,
                      "cube_distance_to_base_m": r.verdict["value"],

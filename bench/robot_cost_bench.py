@@ -6,8 +6,8 @@ the same trials once per robot mode of :data:`creative_py.backends.pybullet.baxt
 full model and a second URDF load per episode, the start posture's via solution
 searched per tool), ``exact`` (the full physics model, the rest light: results bit for
 bit the heavy ones) and ``light`` (the default: idle joints fixed and merged). A trial
-is :func:`creative_py.backends.pybullet.run_trial`, as a learning run calls it: the scene built, every
-skill of the manifest, the engine's pose target, the oracle. The trials are the first
+is :func:`creative_py.simulator.trial.run_trial`, as a learning run calls it: the scene
+built, every skill of the manifest, the engine's pose target, the oracle. The trials are the first
 ``--trials`` catalogued tools at the demonstration's variant, location and pose, each
 mode in a world of its own (so every mode searches its start postures), the modes
 interleaved trial by trial so that the load of other processes falls on all of them.
@@ -34,7 +34,8 @@ import time
 from pathlib import Path
 
 from creative_py.case import load_cases
-from creative_py.backends.pybullet import baxter, load_world, open_episode, run_trial
+from creative_py.backends.pybullet import baxter, load_world, open_episode
+from creative_py.simulator.trial import run_trial
 
 RESULTS = Path(__file__).resolve().parent / "results"
 MODES = baxter.ROBOT_MODES

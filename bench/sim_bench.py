@@ -34,7 +34,7 @@ from creative_py.bridge import Engine
 from creative_py.case import load_cases
 from creative_py.learning.poses import pose_resolver
 from creative_py.backends.pybullet import load_world, open_episode
-from creative_py.backends.pybullet.episode import play_trial
+from creative_py.simulator.trial import play_trial
 
 RESULTS = Path(__file__).resolve().parent / "results"
 SHORT = {"success": "S", "failure": "F", "blocked": "B", "unreachable": "U", "invalid": "I"}
@@ -62,9 +62,9 @@ def one_trial(world, tool: str, variant: str, location: int, pose, by_hand: bool
     with open_episode(world, variant, location, tool, robot=not by_hand,
                       pose_target=pose_resolver(Engine.instance(), m)) as ep:
         phases["build_s"] = time.perf_counter() - t0
-        # The simulator's own trial (run_trial's body): the same outcome for the same
-        # ending; no camera observation, so the figures are the physics' alone.
-        played = play_trial(ep, pose, observe=False, by_hand=by_hand, timings=phases)
+        # The trial loop's own body (simulator/trial.py, run_trial's): the same outcome
+        # for the same ending; no camera observation, so the figures are the physics'.
+        played = play_trial(ep, m, pose, observe=False, by_hand=by_hand, timings=phases)
         outcome, reason = played.outcome, played.reason
         records = {k: {"contact_angle": r.contact_angle, "final_angle": r.final_angle,
                        "closed_after_contact_deg": r.closed_after_contact_deg}

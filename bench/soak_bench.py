@@ -23,7 +23,8 @@ from pathlib import Path
 from creative_py.bridge import Engine
 from creative_py.case import load_cases
 from creative_py.learning.poses import pose_resolver
-from creative_py.backends.pybullet import load_world, run_trial
+from creative_py.backends.pybullet import load_world
+from creative_py.simulator.trial import run_trial
 
 CHECKPOINTS = (10, 100, 250, 500)
 

@@ -225,6 +225,7 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     from creative_py.learning.poses import pose_resolver
     from creative_py.records.trial import verdict_words
     from creative_py.simulator import backend_for
+    from creative_py.simulator.trial import run_trial
     from creative_py.world_files import WorldFileError
 
     m = _manifest(case, world)
@@ -256,9 +257,9 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
             parsed = m.parse_pose(pose)
         except ValueError as exc:
             _fail(str(exc))
-    result = physics.run_trial(w, tool, variant, location, pose=parsed, seed=seed,
-                               images_dir=save_images, gui=gui,
-                               pose_target=pose_resolver(Engine.instance(), m))
+    result = run_trial(w, tool, variant, location, pose=parsed, seed=seed,
+                       images_dir=save_images, gui=gui,
+                       pose_target=pose_resolver(Engine.instance(), m))
     if as_json:
         return [result.to_json()]
     p = ", ".join(f"{v:g}" for v in result.pose)

@@ -7,8 +7,7 @@ moment (``tip(X, Y, Roll)``, ``place(X, Y, Heading)``). The case's ontology know
 the resolver and gives it to every episode it opens; the simulator asks no one::
 
     poses = pose_resolver(Engine.instance(), world.manifest)
-    backend_for(world.manifest).run_trial(world, tool, variant, location,
-                                          pose_target=poses)
+    run_trial(world, tool, variant, location, pose_target=poses)   # simulator.trial
 """
 
 from __future__ import annotations

@@ -25,6 +25,7 @@ from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.report import plot_trials, summarise_trials
 from creative_py.report.page import write_html_report
 from creative_py.simulator import World, backend_for
+from creative_py.simulator.randomise import apply_drawn, draw_world
 
 log = logging.getLogger(__name__)
 
@@ -365,10 +366,10 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
     if options.world_seed is not None:
         if drawn is None:
             drawn = draw_catalogue_world(engine, world, options.world_seed)
-            world = physics.apply_drawn(world, drawn)
+            world = apply_drawn(world, drawn)
         else:  # read back from run.json
             try:
-                world = physics.apply_drawn(world, drawn)
+                world = apply_drawn(world, drawn)
             except (KeyError, TypeError, AttributeError, ValueError) as exc:
                 raise ValueError(f"{run_json or 'run.json'}: field 'drawn_world' is not a "
                                  f"drawn world of this case ({type(exc).__name__}: {exc})"
@@ -542,7 +543,7 @@ def draw_catalogue_world(engine: Engine, world: World, seed: int,
         return physics.tool_rests(world.with_spec(name, spec), name)
 
     def demonstrates(drawn: dict[str, Any]) -> bool:
-        new = physics.apply_drawn(world, drawn)
+        new = apply_drawn(world, drawn)
         try:
             run_demonstration(new, seed=DEMO_CHECK_SEED,
                               pose_target=pose_resolver(engine, new.manifest))
@@ -550,8 +551,8 @@ def draw_catalogue_world(engine: Engine, world: World, seed: int,
             return False
         return True
 
-    return physics.draw_world(world, seed, ranges, keeps=keeps,
-                              demonstrates=demonstrates if check_demonstration else None)
+    return draw_world(world, seed, ranges, keeps=keeps,
+                      demonstrates=demonstrates if check_demonstration else None)
 
 
 def check_manifest(engine: Engine, manifest: Any) -> None:

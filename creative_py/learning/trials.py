@@ -6,10 +6,11 @@ by composition. A trial::
     runner.task_facts(task)                 # what the robot sees of the task: catalogue,
                                             # apparatus, target (one observation per scene)
     runner.run(experiment, "use", 3, vs, task, decision_s)
-        -> backend.run_trial(tool, task, pose)
+        -> run_trial(world, tool, task, pose)
                                             # the manifest's skills, in order, in the
                                             # manifest's backend (pybullet by default);
                                             # the facts before the tool action are observed
+                                            # (creative_py.simulator.trial)
         -> engine.label_trial(...)          # success: pos; failure or blocked: neg
         -> TrialRecord                      # one line of trials.jsonl (records.trial)
 
@@ -17,9 +18,9 @@ Which skills run, with which arguments and which of them takes the pose, comes f
 case manifest (``[[skill]]`` of ``worlds/<folder>/case.toml``); nothing here names a
 case. The physics alone decides the outcome.
 
-What each way of ending a trial means is decided by the simulator alone (its
-backend's ``run_trial``, :class:`creative_py.simulator.Backend`; pybullet's is
-:func:`creative_py.backends.pybullet.episode.trial_outcome`). Outcomes ``blocked`` (the arm could
+What each way of ending a trial means is decided by the physics alone, in one place
+for every backend (:func:`creative_py.simulator.trial.trial_outcome`, from how the
+skills ended and what the oracle measured). Outcomes ``blocked`` (the arm could
 not carry out a motion before the tool action, e.g. a short handle whose gripper hits
 the tube mouth before the prong is behind the cube) count as failures of the *planned*
 example, so they are evidence about the tested literal only; outcomes
@@ -257,10 +258,10 @@ class TrialRunner:
 
     def _physical(self, n: int, phase: str, phase_trial: int, tool: str,
                   tested: list[str], task: TaskState, pose: Term) -> Any:
-        """Run trial ``n`` in the physics (the backend's ``run_trial``), its snapshots in
-        the run folder and, when the clip keeper wants it, its clip; return the
-        TrialResult."""
-        from creative_py.simulator import backend_for
+        """Run trial ``n`` in the physics (:func:`creative_py.simulator.trial.run_trial`
+        in the manifest's backend), its snapshots in the run folder and, when the clip
+        keeper wants it, its clip; return the TrialResult."""
+        from creative_py.simulator.trial import run_trial
 
         images = self.run_folder.snapshot_dir(phase, n) if self.run_folder else None
         recorder = self.clips.recorder() if self.clips is not None else None
@@ -272,7 +273,7 @@ class TrialRunner:
                                  outcome, reason, task.location,
                                  measured=verdict_lines(measured))
 
-        return backend_for(self.manifest).run_trial(
+        return run_trial(
             self.world, tool, task.variant, task.location, pose_numbers(pose),
             self.seed * 1000 + n, images, gui=self.gui, record=recorder,
             verdict=verdict if recorder is not None else None, pose_target=self.pose_target)

@@ -2,13 +2,13 @@
 
 A backend's ``World`` (a frozen dataclass with ``items``: ``name -> entry``, each entry
 a dataclass with a ``spec``) subclasses :class:`CatalogueWorld` and gets the
-protocol's ``catalogue``, ``item`` and ``with_spec`` from it.
+protocol's ``catalogue``, ``item``, ``with_spec`` and ``with_catalogue`` from it.
 """
 
 from __future__ import annotations
 
 from dataclasses import replace
-from typing import Any
+from typing import Any, Mapping, Sequence
 
 
 class CatalogueWorld:
@@ -31,3 +31,15 @@ class CatalogueWorld:
         """Return this world with the available object ``name`` given ``spec`` (a drawn
         one), its place in the catalogue and its other fields kept."""
         return replace(self, items={**self.items, name: replace(self.item(name), spec=spec)})
+
+    def with_catalogue(self, order: Sequence[str], numbers: Mapping[str, Mapping[str, float]]):
+        """Return this world with its available objects in ``order`` (their names) and
+        the spec fields ``numbers[name]`` (``field -> value``) set on their specs, their
+        other fields kept (a drawn world's catalogue); KeyError for a name it does not
+        have."""
+        items = {}
+        for name in order:
+            item = self.items[name]
+            values = dict(numbers.get(name, {}))
+            items[name] = replace(item, spec=replace(item.spec, **values)) if values else item
+        return replace(self, items=items)

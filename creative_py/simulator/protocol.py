@@ -1,8 +1,12 @@
-"""What the learning loop needs of a simulator: the :class:`Backend`, its :class:`World`
+"""What the layers above need of a simulator: the :class:`Backend`, its :class:`World`
 and its :class:`Episode`, as :class:`typing.Protocol` classes.
 
-The protocols hold exactly what ``creative_py/learning/`` (and the command line's
-``creative trial``) use of a simulator, no more. What is not a simulator's is not
+The protocols hold exactly what the layers above the boundary use of a simulator (the
+trial loop of :mod:`creative_py.simulator.trial`, the world sampler of
+:mod:`creative_py.simulator.randomise`, ``creative_py/learning/`` and the command line's
+``creative trial``), no more: a backend builds scenes, runs skills, observes and
+measures; running a trial, labelling its outcome and drawing randomised worlds happen
+above it, once for every backend. What is not a simulator's is not
 here: an object's catalogue facts are its tool kind's
 (:meth:`creative_py.kinds.parts.KindSpec.catalogue_facts`), the same whatever the
 physics, and every backend's episode must report exactly those.
@@ -23,15 +27,15 @@ from pathlib import Path
 from typing import (TYPE_CHECKING, Any, Callable, ContextManager, Mapping, Optional,
                     Protocol, Sequence, Sized)
 
-from creative_py.simulator.types import Observation, PoseTarget, SkillOutcome, TrialResult
+from creative_py.simulator.types import Observation, PoseTarget, SkillOutcome, Verdict
 
 if TYPE_CHECKING:
     from creative_py.case import CaseManifest
 
 VerdictCallback = Callable[[str, str, Optional[dict]], None]
-"""``verdict(outcome, reason, measured)``: what :meth:`Backend.run_trial` calls once
-the physics has given the outcome, still inside the episode (``measured`` is the
-result's ``verdict`` data)."""
+"""``verdict(outcome, reason, measured)``: what :func:`creative_py.simulator.trial.run_trial`
+calls once the physics has given the outcome, still inside the episode (``measured`` is
+the result's ``verdict`` data)."""
 
 
 class ClipCamera(Protocol):
@@ -65,6 +69,12 @@ class ClipRecorder(Protocol):
         returned, 1 if anything raised); otherwise do it here and return None. Called
         inside the trial's episode, after the verdict.
         """
+
+    def render(self) -> list:
+        """Render the frames here and now and return them (RGB ``uint8`` arrays, H x W x
+        3, one per snapshot): what the trial loop does with a recorder no verdict
+        callback took. Called inside the trial's episode, after the verdict; the
+        physics must not run afterwards."""
 
 
 class CatalogueEntry(Protocol):
@@ -105,8 +115,8 @@ class World(Protocol):
     @property
     def variation(self) -> str:
         """Empty for the world as its files say; ``world seed N`` for a drawn one
-        (:meth:`Backend.apply_drawn`). Part of every cache key that depends on the
-        world's numbers."""
+        (:func:`creative_py.simulator.randomise.apply_drawn`). Part of every cache key
+        that depends on the world's numbers."""
 
     @property
     def video(self) -> Optional[ClipCamera]:
@@ -131,22 +141,63 @@ class World(Protocol):
         (spec fields, ``set``, ``friction``), ``locations``, ``variants``,
         ``default_pose``, ``demonstration``."""
 
+    def with_catalogue(self, order: Sequence[str],
+                       numbers: Mapping[str, Mapping[str, float]]) -> "World":
+        """Return this world with its available objects in ``order`` (a permutation of
+        their names) and the spec fields ``numbers[name]`` (``field -> value``, metres,
+        radians) set on their specs, everything else kept (a drawn world's catalogue,
+        :func:`creative_py.simulator.randomise.apply_drawn`;
+        :class:`~creative_py.simulator.catalogue.CatalogueWorld` has it)."""
+
+    def location_values(self, location: int) -> Mapping[str, Any]:
+        """Return the scene values that location ``location`` sets (``key -> value``,
+        the ``set`` table of its ``[[location]]``, or of a drawn world's), what the
+        world sampler jitters. Raise ValueError naming the case's ``case.toml`` when
+        this backend's locations are no scene values (it draws no randomised worlds:
+        ManiSkill's locations are seeded initial states)."""
+
+    def scene_value(self, key: str, variant: str, location: int, tool: str) -> float:
+        """Return the scene value ``key`` (a name of :meth:`location_values`' tables)
+        as the episode of ``variant``, ``location`` and ``tool`` resolves it (the
+        scene's value, overridden by the variant's and the location's ``set``), in the
+        world's units."""
+
+    def with_locations(self, tables: Sequence[Mapping[str, Any]],
+                       variation: str) -> "World":
+        """Return this world with location ``i``'s scene values ``tables[i - 1]`` (one
+        per location, the keys of :meth:`location_values`) and :attr:`variation`
+        ``variation``; every scene value of every variant and location is checked
+        again (:class:`~creative_py.world_files.WorldFileError` or ValueError naming
+        the field). ValueError as :meth:`location_values` for a backend without
+        drawn worlds."""
+
 
 class Episode(Protocol):
     """One scene of a case (a variant, a target location, a tool), driven skill by
-    skill by the names of the manifest's ``[[skill]]`` tables."""
+    skill by the names of the manifest's ``[[skill]]`` tables.
 
-    def run_skill(self, name: str, pose: Optional[Sequence[float]] = None) -> SkillOutcome:
+    What the trial loop (:mod:`creative_py.simulator.trial`) and the learning loop use
+    of a scene: run a skill, observe, measure, the true poses, the simulated time and
+    steps, the load on the tool. An episode decides no trial's outcome: a skill reports
+    how its motion ended, the oracle what it measured; the loop labels the trial.
+    """
+
+    def run_skill(self, name: str, pose: Optional[Sequence[float]] = None,
+                  **options: Any) -> SkillOutcome:
         """Run the manifest's skill ``name`` (the primitive it binds, with its options)
-        and return how it ended: ``ok``, ``blocked`` (a guard stopped a motion),
-        ``unreachable`` (no arm posture) or ``invalid`` (a physics blow-up, or a skill
-        that cannot run in this state).
+        and return how its motion ended: ``ok``, ``blocked`` (a guard stopped a
+        motion; ``stop`` says what it measured), ``unreachable`` (no arm posture) or
+        ``invalid`` (a physics blow-up, or a skill that cannot run in this state); the
+        reason names the skill.
 
         The pose skill (``pose = true``) needs ``pose``, the numbers of the manifest's
         ``[[pose.param]]`` in their order and units; its world target comes from the
         episode's ``pose_target`` (:data:`creative_py.simulator.types.PoseTarget`)
-        applied to what the robot perceives at that moment. Raise KeyError for a skill
-        the manifest does not have, ValueError for a pose skill without ``pose`` or
+        applied to what the robot perceives at that moment. ``options`` override the
+        skill's primitive options for this call (the trainer's placing: ``by_hand=True``
+        on the pose skill puts the tool at the pose without the arm; a backend whose
+        primitive has no such option ignores it). Raise KeyError for a skill the
+        manifest does not have, ValueError for a pose skill without ``pose`` or
         without a ``pose_target``.
         """
 
@@ -154,17 +205,53 @@ class Episode(Protocol):
         """Return what the robot perceives now: primitive facts (``pose``, sizes,
         proprioception of a held tool, the scene's fixed facts and the catalogue of
         every available object; world frame, metres, radians), the camera frames behind
-        them and the ground truth (for error reports only). Without ``cameras`` the
-        tracked objects' facts come from the ground truth."""
+        them (empty without cameras) and the ground truth (for error reports only).
+        Without ``cameras`` the tracked objects' facts come from the ground truth."""
+
+    def verdict(self) -> Verdict:
+        """Return what the case's oracle measures in the simulated state now: the
+        quantity, its value and threshold in the world's units, and whether the goal
+        holds (``holds``). Raise ValueError or ArithmeticError when the state has
+        nothing finite to measure (a blow-up)."""
 
     def goal_reached(self) -> bool:
         """Return whether the world's success oracle judges the goal reached in the
-        simulated state now (the physics is the oracle)."""
+        simulated state now (the physics is the oracle; :meth:`verdict`'s ``holds``)."""
+
+    def truth(self) -> dict[str, tuple[float, float, float, float]]:
+        """Return the ground truth ``name -> (x, y, z, yaw)`` (m, rad, world frame) of
+        the tracked objects and the tool (its frame): the trial's final poses, for
+        reports; a non-finite number makes the trial ``invalid``."""
+
+    def sim_time(self) -> float:
+        """Return the simulated time since the scene was built, seconds."""
+
+    @property
+    def steps(self) -> int:
+        """The simulator's steps taken so far (pybullet: physics steps; ManiSkill:
+        control steps)."""
+
+    @property
+    def render_time_s(self) -> float:
+        """The wall time spent rendering the cameras' frames so far, seconds (0.0 for a
+        backend that perceives without cameras)."""
+
+    def measured_load(self) -> tuple[float, Optional[dict[str, Any]]]:
+        """Return the contact load on the tool during the last tool action (the skill
+        with ``tool_action = true``): the largest sum of the normal forces of its
+        contacts over one step, newtons, and where and how it acted as JSON-ready data
+        (:meth:`creative_py.backends.pybullet.loads.ToolLoad.to_dict`'s fields:
+        ``max_force_n``, ``point`` and ``force`` in the tool frame, ``grasp_point``,
+        ``bodies``, ``robust_force_n``, ...; None when none was measured). Asked only
+        once the tool action started."""
 
 
 class Backend(Protocol):
-    """A simulator backend: what the learning loop calls to build and run a case's
-    world (module-level functions; :mod:`creative_py.backends.pybullet` is the pybullet one)."""
+    """A simulator backend: what the layers above the boundary call to build a case's
+    world and its scenes (module-level functions; :mod:`creative_py.backends.pybullet` is
+    the pybullet one). A trial is run by :func:`creative_py.simulator.trial.run_trial`
+    and a randomised world drawn by :mod:`creative_py.simulator.randomise`, both through
+    these functions and the :class:`World` and :class:`Episode` members."""
 
     def load_world(self, manifest: CaseManifest) -> World:
         """Read the manifest's world folder and return its :class:`World`, every value
@@ -206,61 +293,12 @@ class Backend(Protocol):
             Keep the scene's poses for a clip, from the built scene on.
         """
 
-    def run_trial(self, world: World, tool: str, variant: str, location: int,
-                  pose: Optional[Sequence[float]] = None, seed: int = 0,
-                  images_dir: Optional[Path] = None, gui: bool = False,
-                  pose_target: Optional[PoseTarget] = None,
-                  record: Optional[ClipRecorder] = None,
-                  verdict: Optional[VerdictCallback] = None) -> TrialResult:
-        """Run one trial: an episode (arguments as :meth:`open_episode`), every skill
-        of the manifest in order with ``pose`` (None: the demonstration's) given to the
-        pose skill, the facts observed just before the tool action, then the oracle.
-
-        Return a :class:`~creative_py.simulator.types.TrialResult` whose ``outcome``
-        (``success``, ``failure``, ``blocked``, ``unreachable``, ``invalid``) the
-        simulated state alone decides, never the tool's properties: blocked before the
-        tool action is ``blocked`` (with the facts observed where the motion stopped),
-        blocked while the tool acts is ``success`` or ``failure`` by the goal.
-        ``facts_before`` is what the learner labels; ``max_tool_force_n`` (N) and
-        ``tool_load`` the largest summed normal force of the tool's contacts over one
-        step of the tool action and where it acted (None before it starts);
-        ``verdict`` what the oracle measured against its threshold (and a guard's
-        measure of a stopped motion); ``seed`` the trial's; ``wall_time_s`` the wall
-        time until the verdict. ``verdict(outcome, reason, measured)`` is called once
-        the physics has given the outcome, inside the episode (where a kept trial's
-        clip is rendered from ``record``); without it, ``record`` is rendered at the
-        end.
-        """
-
     def tool_rests(self, world: World, tool: str) -> bool:
         """Return whether the available object ``tool`` lies still where the world
         puts it: the demonstration's scene built without the robot, settled, then
         two seconds more of physics; it rests unless it dropped off its stand (a trial
-        with it would be ``invalid``)."""
-
-    def draw_world(self, world: World, seed: int,
-                   ranges: Mapping[str, Mapping[str, tuple[float, float, str, str]]],
-                   keeps: Optional[Callable[[str, Any], bool]] = None,
-                   demonstrates: Optional[Callable[[dict], bool]] = None) -> dict[str, Any]:
-        """Draw a randomised world of ``world`` for world seed ``seed`` and return it as
-        JSON-ready data (``seed``, ``order``, ``objects``, ``locations``, ``redraws``:
-        what ``run.json`` keeps and :meth:`apply_drawn` applies).
-
-        Deterministic in ``seed``: the catalogue's order, each catalogued number inside
-        its own qualitative range of ``ranges`` (``object -> {catalogue fact -> (low,
-        high, bounds, value)}``, the engine's ``catalogue_ranges``, narrowed by the
-        manifest's ``[randomise.catalogue]``; the demonstration's tool keeps its
-        numbers), redrawn while ``keeps(name, spec)`` is false; each location's values
-        within the manifest's ``[randomise]``; the demonstration's location redrawn
-        while ``demonstrates(drawn)`` is false (ValueError naming the world seed when
-        the attempts run out).
-        """
-
-    def apply_drawn(self, world: World, drawn: Mapping[str, Any]) -> World:
-        """Return ``world`` with a drawn world's catalogue order, numbers and locations
-        (:meth:`draw_world`'s data, or ``run.json``'s read back), its ``variation``
-        ``world seed N``; the loader's checks run again, errors (ValueError) name the
-        world seed."""
+        with it would be ``invalid``). The world sampler's ``keeps`` asks it of every
+        drawn object (:func:`creative_py.learning.run.draw_catalogue_world`)."""
 
     def display_reachable(self) -> Optional[str]:
         """Return None when the simulator's window (``gui=True``) can open on this

@@ -1,17 +1,231 @@
-"""The trial loop above the simulator boundary: what every backend's trials share.
+"""The trial loop above the simulator boundary: one trial of any case, whatever its backend.
 
-``task_facts``  what the robot perceives of a task before acting, observed once per
-                task through the case's backend (the planner's and the size model's
-                facts)
+A backend builds a scene and runs the skills; what a trial *is* (which skills run in
+which order, when the robot observes, when the oracle is asked, what each way of
+ending means, what the result holds) is decided here, once, for every backend::
+
+    from creative_py.simulator.trial import run_trial
+    result = run_trial(world, tool, variant, location, pose, seed,
+                       pose_target=poses)                    # TrialResult
+
+``run_trial``     open the manifest's backend's episode, play the trial, return the
+                  :class:`~creative_py.simulator.types.TrialResult` (the learner's, the
+                  command line's ``creative trial``, the benchmarks')
+``play_trial``    its body, for a caller that opens the episode itself (the simulator
+                  benchmark: ``by_hand``, ``timings``, no observation)
+``trial_outcome`` what each way of ending a trial means: the one place
+``verdict_data``  a trial's measured verdict as JSON-ready data
+``task_facts``    what the robot perceives of a task before acting, observed once per
+                  task through the case's backend (the planner's and the size model's
+                  facts)
+
+The physics is the oracle: the outcome comes from how the skills ended
+(:class:`~creative_py.simulator.types.SkillOutcome`) and what the episode's oracle
+measured (:meth:`creative_py.simulator.Episode.verdict`), never from a tool's
+properties.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import logging
+import math
+import time
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, NamedTuple, Optional, Sequence
+
+from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
+                                         TrialResult, Verdict)
 
 if TYPE_CHECKING:
     from creative_py.case import CaseManifest
-    from creative_py.simulator.protocol import World
+    from creative_py.simulator.protocol import (ClipRecorder, Episode, VerdictCallback,
+                                                World)
+
+log = logging.getLogger(__name__)
+
+
+def run_trial(world: World, tool: str, variant: str, location: int,
+              pose: Optional[Sequence[float]] = None, seed: int = 0,
+              images_dir: Optional[Path] = None, gui: bool = False,
+              pose_target: Optional[PoseTarget] = None,
+              record: Optional[ClipRecorder] = None,
+              verdict: Optional[VerdictCallback] = None) -> TrialResult:
+    """Run one trial in the case's backend: an episode, every skill of the manifest in
+    order, then the oracle.
+
+    Parameters
+    ----------
+    world : World
+        The case's world (its manifest names the backend: ``backend_for``).
+    tool, variant, location, seed, images_dir, gui, pose_target, record
+        As :meth:`creative_py.simulator.Backend.open_episode` takes them.
+    pose : sequence of float or None
+        The pose skill's numbers, in the order and units of the manifest's
+        ``[[pose.param]]``; None: the demonstration's.
+    verdict : callable or None
+        ``verdict(outcome, reason, measured)`` (``measured`` the result's ``verdict``),
+        called once the result is taken, still inside the episode (where a kept
+        trial's clip is rendered from ``record``); without it, ``record`` is rendered
+        (``record.render()``) at the end.
+
+    Returns
+    -------
+    TrialResult
+        ``outcome`` as :func:`trial_outcome` says (``invalid`` when a true pose is not
+        finite); ``facts_before`` what the robot observed just before the tool action
+        (or where a blocked motion stopped), the state the learner labels;
+        ``verdict`` what the oracle measured (:func:`verdict_data`), asked or not, with
+        a guard's measure of a stopped motion; ``max_tool_force_n`` (N) and
+        ``tool_load`` the episode's :meth:`~creative_py.simulator.Episode.measured_load`
+        once the tool action started (0.0 and None before); ``wall_time_s`` the wall
+        time from opening the episode until the trial was judged.
+    """
+    from creative_py.simulator.registry import backend_for
+
+    m = world.manifest
+    pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
+    t0 = time.perf_counter()
+    with backend_for(m).open_episode(world, variant, location, tool, seed, gui, images_dir,
+                                     pose_target, record=record) as ep:
+        played = play_trial(ep, m, pose)
+        wall_s = time.perf_counter() - t0
+        force, load = ep.measured_load() if played.acted else (0.0, None)
+        final = played.final
+        result = TrialResult(
+            case=m.id, object=tool, variant=variant, location=int(location),
+            pose=tuple(pose), outcome=played.outcome, reason=played.reason,
+            perceived_final=(final.perceived_poses() if final is not None and final.frames
+                             else None),
+            true_final=played.truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
+            render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
+            max_tool_force_n=force, tool_load=load, facts_before=played.facts_before,
+            verdict=played.verdict)
+        # Everything judged is taken: a clip's rendering may set the state back.
+        if verdict is not None:
+            verdict(played.outcome, played.reason, played.verdict)
+        elif record is not None:
+            record.render()
+    return result
+
+
+class Played(NamedTuple):
+    """What :func:`play_trial` did: the outcome and reason, the facts observed before
+    the tool action (or where a blocked motion stopped), the last observation (None
+    when none was taken), the true poses after the trial, whether the tool action
+    started, and the measured verdict (:func:`verdict_data`)."""
+
+    outcome: str
+    reason: str
+    facts_before: tuple[Fact, ...]
+    final: Optional[Observation]
+    truth: dict[str, tuple[float, ...]]
+    acted: bool
+    verdict: Optional[dict[str, Any]] = None
+
+
+def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
+               observe: bool = True, by_hand: bool = False,
+               timings: Optional[dict[str, float]] = None) -> Played:
+    """Run the manifest's skills in order in an open episode and judge the trial.
+
+    The body of :func:`run_trial`, for a caller that opens the episode itself (the
+    simulator benchmark). Before the tool action the robot observes (the state the
+    action model's precondition speaks of); a blocked motion is observed where it
+    stopped, a trial whose skills all ran at its end. ``observe=False`` takes no
+    observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
+    the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
+    skipped). ``timings`` receives each skill's wall time (s) as ``<skill>_s``. The
+    outcome is :func:`trial_outcome`'s, or ``invalid`` when a true pose is not finite.
+    """
+    facts: tuple[Fact, ...] = ()
+    final: Optional[Observation] = None
+    acted, status = False, SkillOutcome("ok")
+    for skill in manifest.skills:
+        if by_hand and not (skill.pose or skill.tool_action):
+            continue  # the trainer places the tool: no grasp, no carrying
+        if skill.tool_action:
+            if observe:
+                facts = ep.observe().facts  # what the action model's precondition speaks of
+            acted = True
+        t0 = time.perf_counter()
+        options = {"by_hand": True} if by_hand and skill.pose else {}
+        status = ep.run_skill(skill.name, pose if skill.pose else None, **options)
+        if timings is not None:
+            timings[f"{skill.name}_s"] = time.perf_counter() - t0
+        if not status.ok:
+            break
+    # The oracle is asked when the goal can have been reached: every skill ran, or
+    # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
+    asked = status.ok or (acted and status.status == "blocked")
+    # The oracle measures every trial (the measure is reported); it decides only when
+    # asked. A blow-up may leave nothing finite to measure.
+    try:
+        oracle: Optional[Verdict] = ep.verdict()
+    except (ValueError, ArithmeticError) as exc:
+        if asked:
+            raise
+        log.debug("no oracle measure after %s: %s", status.status, exc)
+        oracle = None
+    reached = asked and oracle is not None and oracle.holds
+    outcome, reason = trial_outcome(status, acted, reached)
+    if observe and outcome == "blocked":
+        # What the robot sees where the motion stopped: the catalogue and the task's
+        # facts still describe the trial (a planned example needs them).
+        final = ep.observe()
+        facts = final.facts
+    elif observe and status.ok:
+        final = ep.observe()
+    truth = ep.truth()
+    bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
+    if bad and outcome != "invalid":
+        outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
+    return Played(outcome, reason, tuple(facts), final, truth, acted,
+                  verdict_data(oracle, asked, status.stop))
+
+
+def verdict_data(oracle: Optional[Verdict], asked: bool,
+                 stop: Optional[Verdict]) -> Optional[dict[str, Any]]:
+    """Return a trial's measured verdict as JSON-ready data: the oracle's
+    (:meth:`Verdict.to_dict`) with ``asked`` (whether the outcome rests on it: every
+    skill ran, or the tool acted until stopped) and, for a motion a guard stopped,
+    ``stop`` (the guard's verdict: what it measured and what was touching)."""
+    if oracle is None and stop is None:
+        return None
+    data = oracle.to_dict() if oracle is not None else {}
+    data["asked"] = bool(asked)
+    if stop is not None:
+        data["stop"] = stop.to_dict()
+    return data
+
+
+def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
+    """Return a trial's ``(outcome, reason)``: the one place that says what each way of
+    ending a trial means, for every backend.
+
+    Parameters
+    ----------
+    status : SkillOutcome
+        How the last skill run ended (``ok`` when every skill ran).
+    acted : bool
+        Whether the tool action started (the motion that stopped, if any, was the tool
+        action or a skill after it).
+    reached : bool
+        Whether the goal holds (the oracle), asked when the skills ran or the tool acted.
+
+    Returns
+    -------
+    (str, str)
+        Every skill ran: ``success`` / ``failure`` as the goal was or was not reached.
+        Blocked before the tool action: ``blocked`` (the arm could not carry out the
+        planned motion). Blocked while the tool acted: the tool could not carry out the
+        action to its end, and the physics says ``success`` or ``failure`` by the goal.
+        Otherwise the skill's status (``unreachable``, ``invalid``) with its reason.
+    """
+    if status.ok:
+        return ("success", "goal reached") if reached else ("failure", "goal not reached")
+    if status.status == "blocked" and acted:
+        return ("success" if reached else "failure"), status.reason
+    return status.status, status.reason
 
 
 _TASK_FACTS: dict[tuple, list[tuple]] = {}

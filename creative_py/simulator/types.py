@@ -6,8 +6,8 @@ of the boundary (it imports only the outcome vocabulary of
 :mod:`creative_py.records.trial`, the bottom layer), so a backend's episode, primitives
 and robot and the learning loop can all share them without an import cycle.
 
-Outcomes of a trial (:data:`TRIAL_OUTCOMES`, decided in one place per backend; the
-pybullet one's is :func:`creative_py.backends.pybullet.episode.trial_outcome`): ``success`` /
+Outcomes of a trial (:data:`TRIAL_OUTCOMES`, decided in one place for every backend,
+above the boundary: :func:`creative_py.simulator.trial.trial_outcome`): ``success`` /
 ``failure`` (every skill
 ran, or the tool was stopped while acting; the goal was or was not reached),
 ``blocked`` (a move before the tool action was stopped by a collision: the
@@ -213,8 +213,8 @@ class Observation:
 
 @dataclass(frozen=True)
 class TrialResult:
-    """What the physics did in one trial (a backend's ``run_trial``,
-    :meth:`creative_py.simulator.Backend.run_trial`).
+    """What the physics did in one trial (:func:`creative_py.simulator.trial.run_trial`,
+    in the case's backend).
 
     The learning loop turns it into a :class:`creative_py.records.trial.TrialRecord`,
     the line of ``trials.jsonl``.
@@ -253,8 +253,8 @@ class TrialResult:
         What the robot observed just before the tool action, or where a blocked motion
         stopped (empty when a skill before the action ended unreachable or invalid).
     verdict : dict or None
-        What the physics measured against its thresholds (pybullet:
-        :func:`creative_py.backends.pybullet.episode.verdict_data`): the oracle's quantity, value,
+        What the physics measured against its thresholds
+        (:func:`creative_py.simulator.trial.verdict_data`): the oracle's quantity, value,
         threshold, unit, relation and judgement (measured in every trial, ``asked``
         when the outcome rests on it) and, for a motion a guard stopped, ``stop``.
     """

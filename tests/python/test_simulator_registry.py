@@ -126,8 +126,8 @@ def test_a_manifest_without_a_backend_runs_in_pybullet(tmp_path):
     assert backend() is creative_py.backends.pybullet
     # The pybullet package has every function of the protocol.
     members = {n for n in vars(Backend) if not n.startswith("_")}
-    assert members == {"load_world", "open_episode", "run_trial", "tool_rests", "draw_world",
-                       "apply_drawn", "display_reachable", "recorder"}
+    assert members == {"load_world", "open_episode", "tool_rests", "display_reachable",
+                       "recorder"}
     assert all(callable(getattr(creative_py.backends.pybullet, n)) for n in members)
 
 
@@ -251,9 +251,9 @@ def test_the_checker_finds_a_missing_method_and_a_mismatched_parameter():
     bad = module_of_protocol("bad_backend")
     del bad.recorder
     bad.tool_rests = lambda world, name: True
-    bad.apply_drawn = lambda world, drawn, strict: world
+    bad.load_world = lambda manifest, strict: None
     assert signature_mismatches(Backend, bad) == [
-        "apply_drawn: parameter strict the protocol does not pass",
+        "load_world: parameter strict the protocol does not pass",
         "recorder: missing",
         "tool_rests: parameter tool (positional or keyword) missing",
         "tool_rests: parameter name the protocol does not pass"]
@@ -275,3 +275,16 @@ def test_the_pybullet_world_and_episode_have_the_protocol_s_members():
     world = backend("pybullet").load_world(get_case("hook"))
     assert signature_mismatches(World, world) == []
     assert signature_mismatches(Episode, PybulletEpisode) == []
+
+
+@pytest.mark.parametrize("name", sorted(BACKENDS))
+def test_every_installed_backend_s_world_and_episode_have_the_protocol_s_members(name):
+    from creative_py.case import load_cases
+
+    try:
+        module = backend(name)
+    except BackendError as exc:
+        pytest.skip(str(exc))
+    assert signature_mismatches(Episode, module.Episode) == []
+    manifest = next(m for _, m in sorted(load_cases().items()) if m.backend == name)
+    assert signature_mismatches(World, module.load_world(manifest)) == []

@@ -15,7 +15,7 @@ import pytest
 
 from creative_py.case import get_case
 from creative_py.backends.pybullet import load_world
-from creative_py.backends.pybullet.world import apply_drawn, draw_world
+from creative_py.simulator.randomise import apply_drawn, draw_world
 
 
 @pytest.fixture(scope="module")

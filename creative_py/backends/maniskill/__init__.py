@@ -10,13 +10,15 @@ implements :class:`creative_py.simulator.Backend`:
 ``skills``    straight end-effector moves through ManiSkill's ``pd_ee_pose`` controller
 ``world``     the world folder (catalogue, ManiSkill seeds as locations, step budget)
 ``episode``   one episode: skills, perception from the simulator's state, the verdict
+              (a trial is run above the boundary: :mod:`creative_py.simulator.trial`;
+              randomised worlds are refused: the locations are ManiSkill's seeds)
 ``recorder``  a trial's clip: its states kept while it runs, rendered after the verdict
 """
 
 from __future__ import annotations
 
 import importlib.util
-from typing import Any, Optional
+from typing import Optional
 
 for _package in ("mani_skill", "sapien", "torch", "gymnasium"):
     # Imported when an episode is built (they take seconds to load); missing, the
@@ -24,22 +26,9 @@ for _package in ("mani_skill", "sapien", "torch", "gymnasium"):
     if importlib.util.find_spec(_package) is None:
         raise ModuleNotFoundError(f"No module named {_package!r}", name=_package)
 
-from creative_py.backends.maniskill.episode import Episode, open_episode, run_trial, tool_rests
+from creative_py.backends.maniskill.episode import Episode, open_episode, tool_rests
 from creative_py.backends.maniskill.recorder import Recorder, VideoCamera
 from creative_py.backends.maniskill.scene import World, load_world
-
-
-def draw_world(world, seed, ranges, keeps=None, demonstrates=None) -> dict[str, Any]:
-    """Randomised worlds are not offered by this backend: ManiSkill's seeds already
-    randomise the initial state (ValueError naming the backend)."""
-    raise ValueError(f"{world.manifest.folder / 'case.toml'}: the maniskill backend draws "
-                     "no randomised worlds (--world-seed); its locations are ManiSkill's "
-                     "seeded initial states")
-
-
-def apply_drawn(world, drawn) -> World:
-    """See :func:`draw_world`: no drawn worlds on this backend (ValueError)."""
-    return draw_world(world, drawn.get("seed", 0), {})
 
 
 def display_reachable() -> Optional[str]:
@@ -53,5 +42,5 @@ def recorder(camera: VideoCamera) -> Recorder:
     return Recorder(camera)
 
 
-__all__ = ["Episode", "Recorder", "VideoCamera", "World", "apply_drawn", "display_reachable",
-           "draw_world", "load_world", "open_episode", "recorder", "run_trial", "tool_rests"]
+__all__ = ["Episode", "Recorder", "VideoCamera", "World", "display_reachable", "load_world",
+           "open_episode", "recorder", "tool_rests"]

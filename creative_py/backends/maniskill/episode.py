@@ -18,13 +18,14 @@ While the tool acts, the contact load on it is read from SAPIEN's contacts
 The goal verdict is ManiSkill's ``env.evaluate()["success"]`` and nothing else; the
 Verdict records the cube's distance to the base in xy and ManiSkill's own
 ``cube_distance`` and ``cube_progress``. Steps are ManiSkill control steps
-(``env.step`` calls, 20 Hz), counted against the world's ``max_steps``.
+(``env.step`` calls, 20 Hz), counted against the world's ``max_steps``; a skill that
+runs out of them reports its motion ``blocked``. A trial is run above the boundary
+(:func:`creative_py.simulator.trial.run_trial`), as every backend's.
 """
 
 from __future__ import annotations
 
 import math
-import time
 from contextlib import contextmanager
 from typing import Any, Iterator, Optional, Sequence
 
@@ -32,8 +33,8 @@ import numpy as np
 
 from creative_py.backends.maniskill.skills import OPEN, Driver, grasp_handle
 from creative_py.backends.maniskill.scene import World
-from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
-                                         TrialResult, Verdict, pose_numbers)
+from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome, Verdict,
+                                         pose_numbers)
 
 CUBE_HALF_M = 0.02
 """ManiSkill's cube half size in PullCubeTool-v1 (``cube_half_size``), m."""
@@ -69,7 +70,11 @@ class Episode:
         The end-effector moves, with the control steps counted.
     held : bool
         Whether the robot holds the tool.
+    render_time_s : float
+        Always 0.0: the facts come from the simulator's state, no camera renders.
     """
+
+    render_time_s: float = 0.0
 
     def __init__(self, world: World, variant: str, location: int, tool: str, seed: int = 0,
                  pose_target: Optional[PoseTarget] = None, robot: bool = True,
@@ -131,6 +136,12 @@ class Episode:
     def sim_time(self) -> float:
         """Return the simulated time, s (control steps at ManiSkill's control rate)."""
         return self.steps / float(self.u.control_freq)
+
+    def measured_load(self) -> tuple[float, Optional[dict[str, Any]]]:
+        """Return the contact load on the tool during the last tool action: its
+        largest summed normal force over one control step (N) and the load's data
+        (:mod:`creative_py.backends.maniskill.loads`; None when none was measured)."""
+        return (self.tool_load or {}).get("max_force_n", 0.0), self.tool_load
 
     # ---------------------------------------------------------------- skills
     def run_skill(self, name: str, pose: Optional[Sequence[float]] = None,
@@ -299,68 +310,6 @@ def open_episode(world: World, variant: str, location: int, tool: str, seed: int
         yield ep
     finally:
         ep.close()
-
-
-def run_trial(world: World, tool: str, variant: str, location: int,
-              pose: Optional[Sequence[float]] = None, seed: int = 0, images_dir=None,
-              gui: bool = False, pose_target: Optional[PoseTarget] = None, record=None,
-              verdict=None) -> TrialResult:
-    """Run the manifest's skills in order, then ManiSkill's ``evaluate()``.
-
-    Outcomes: every skill ran: ``success``/``failure`` by ``evaluate()["success"]``;
-    the step budget ran out before the tool action: ``blocked``; while pulling: the
-    verdict decides. ``steps`` of the result counts ManiSkill control steps.
-
-    The result is taken once the physics has given the outcome; then ``verdict(outcome,
-    reason, measured)`` is called inside the episode (where a kept trial's clip is
-    rendered from ``record``); without it, ``record`` is rendered at the end.
-    """
-    m = world.manifest
-    pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
-    t0 = time.perf_counter()
-    with open_episode(world, variant, location, tool, seed, pose_target=pose_target,
-                      record=record) as ep:
-        facts: tuple = ()
-        acted, status = False, SkillOutcome("ok")
-        for skill in m.skills:
-            if skill.tool_action:
-                facts = ep.observe().facts
-                acted = True
-            status = ep.run_skill(skill.name, pose if skill.pose else None)
-            if not status.ok:
-                break
-        oracle = ep.verdict()
-        asked = status.ok or (acted and status.status == "blocked")
-        outcome, reason = _outcome(status, acted, asked and oracle.holds)
-        if outcome == "blocked":
-            facts = ep.observe().facts
-        data = oracle.to_dict()
-        data["asked"] = bool(asked)
-        wall = time.perf_counter() - t0
-        result = TrialResult(
-            case=m.id, object=tool, variant=variant, location=int(location), pose=tuple(pose),
-            outcome=outcome, reason=reason, perceived_final=None, true_final=ep.truth(),
-            sim_time_s=ep.sim_time(), wall_time_s=wall, render_time_s=0.0, steps=ep.steps,
-            seed=seed, max_tool_force_n=(ep.tool_load or {}).get("max_force_n", 0.0)
-            if acted else 0.0, tool_load=ep.tool_load if acted else None,
-            facts_before=tuple(facts), verdict=data)
-        # Everything judged is taken: a clip's rendering sets states back from here on.
-        if verdict is not None:
-            verdict(outcome, reason, data)
-        elif record is not None:
-            record.render()
-    return result
-
-
-def _outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
-    """Return ``(outcome, reason)`` as the pybullet backend's ``trial_outcome`` says:
-    all skills ran: success or failure by the goal; blocked while the tool acted: by
-    the goal; otherwise the skill's status."""
-    if status.ok:
-        return ("success", "goal reached") if reached else ("failure", "goal not reached")
-    if status.status == "blocked" and acted:
-        return ("success" if reached else "failure"), status.reason
-    return status.status, status.reason
 
 
 def tool_rests(world: World, tool: str) -> bool:

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.backends.maniskill.recorder import VideoCamera, read_video
@@ -111,6 +111,24 @@ class World(CatalogueWorld):
     def cube_dx(self, variant: str) -> float:
         """Return how much farther the cube starts in ``variant``, m."""
         return float(self.manifest.variant(variant).set.get("cube_dx", 0.0))
+
+    def _no_drawn_worlds(self) -> ValueError:
+        return ValueError(f"{self.manifest.folder / 'case.toml'}: the maniskill backend "
+                          "draws no randomised worlds (--world-seed); its locations are "
+                          "ManiSkill's seeded initial states")
+
+    def location_values(self, location: int) -> dict[str, Any]:
+        """Refuse: the locations are ManiSkill's seeds, not scene values, so this
+        backend draws no randomised worlds (ValueError naming ``case.toml``)."""
+        raise self._no_drawn_worlds()
+
+    def scene_value(self, key: str, variant: str, location: int, tool: str) -> float:
+        """Refuse as :meth:`location_values` (ValueError)."""
+        raise self._no_drawn_worlds()
+
+    def with_locations(self, tables: Sequence[Mapping[str, Any]], variation: str) -> "World":
+        """Refuse as :meth:`location_values` (ValueError)."""
+        raise self._no_drawn_worlds()
 
     def with_tool(self, spec: Any, urdf: Optional[Path] = None) -> "World":
         """Return this world with one more available object, a created tool: its body

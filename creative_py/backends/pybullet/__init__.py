@@ -3,15 +3,17 @@
 This package is the ``pybullet`` backend of the simulator boundary
 (:mod:`creative_py.simulator`): its module-level functions are the
 :class:`~creative_py.simulator.Backend` protocol (``load_world``, ``open_episode``,
-``run_trial``, ``tool_rests``, ``draw_world``, ``apply_drawn``, ``display_reachable``,
-``recorder``), and the learning loop reaches them through
-``backend_for(manifest)``, never by importing this package. Public API::
+``tool_rests``, ``display_reachable``, ``recorder``), and the layers above reach them
+through ``backend_for(manifest)``, never by importing this package. A trial (the
+skills in order, the oracle, the outcome) and a randomised world are made above the
+boundary, as every backend's (:mod:`creative_py.simulator.trial`,
+:mod:`creative_py.simulator.randomise`). Public API::
 
-    from creative_py.backends.pybullet import load_world, open_episode, run_trial
+    from creative_py.backends.pybullet import load_world, open_episode
     world = load_world(manifest)                # World (creative_py.case.CaseManifest)
     with open_episode(world, variant, location, tool) as ep:
         ep.run_skill("pick_up")                 # SkillOutcome
-    run_trial(world, tool, variant, location, pose_target=poses)   # TrialResult
+        ep.verdict()                            # what the oracle measures (Verdict)
 
 A pose skill needs ``pose_target`` (:data:`PoseTarget`), given by the caller: the
 learning layer's :func:`creative_py.learning.poses.pose_resolver` asks the engine.
@@ -25,7 +27,7 @@ Modules, from the data to the physics:
                 catalogue facts
 ``primitives``  the skill primitives a manifest binds by name
 ``oracles``     the success oracles a world's ``tasks.toml`` configures
-``episode``     one scene driven skill by skill (open_episode, run_trial, trial_outcome)
+``episode``     one scene driven skill by skill (open_episode, Episode, tool_rests)
 ``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
 """
 
@@ -52,12 +54,11 @@ def _import_pybullet_quietly() -> None:
 _import_pybullet_quietly()
 
 from creative_py.backends.pybullet.core import display_reachable
-from creative_py.backends.pybullet.episode import (Episode, open_episode, run_trial, tool_rests,
-                                     trial_outcome)
+from creative_py.backends.pybullet.episode import Episode, open_episode, tool_rests
 from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
-from creative_py.backends.pybullet.world import World, apply_drawn, draw_world, load_world
-from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
-                                         PoseTarget, SkillOutcome, TrialResult)
+from creative_py.backends.pybullet.world import World, load_world
+from creative_py.simulator.types import (SKILL_STATUSES, Fact, Observation, PoseTarget,
+                                         SkillOutcome)
 
 
 def recorder(camera: VideoSpec) -> Recorder:
@@ -67,6 +68,5 @@ def recorder(camera: VideoSpec) -> Recorder:
 
 
 __all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
-           "TRIAL_OUTCOMES", "TrialResult", "World", "apply_drawn", "display_reachable",
-           "draw_world", "load_world", "open_episode", "recorder", "run_trial",
-           "tool_rests", "trial_outcome"]
+           "World", "display_reachable", "load_world", "open_episode", "recorder",
+           "tool_rests"]

@@ -1,4 +1,4 @@
-"""The simulator's public API: open an episode of a case's world, run a trial.
+"""The pybullet backend's episode: one scene of a case's world, driven skill by skill.
 
 Every case is driven the same way, by the skill names of its manifest
 (``worlds/<folder>/case.toml``)::
@@ -6,7 +6,7 @@ Every case is driven the same way, by the skill names of its manifest
     from creative_py.bridge import Engine
     from creative_py.case import get_case
     from creative_py.learning.poses import pose_resolver   # the engine's pose solution
-    from creative_py.backends.pybullet import load_world, open_episode, run_trial
+    from creative_py.backends.pybullet import load_world, open_episode
 
     world = load_world(get_case("hook"))
     poses = pose_resolver(Engine.instance(), world.manifest)
@@ -22,9 +22,11 @@ An episode builds the scene in a fresh :class:`~creative_py.backends.pybullet.co
 starts, Baxter at its start posture. A skill runs the primitive its manifest entry
 binds (:mod:`creative_py.backends.pybullet.primitives`); the pose skill's world target comes from
 ``pose_target``, a :data:`PoseTarget` the caller gives (the engine's pose solution),
-applied to what the robot perceives at that moment. :func:`run_trial` runs the
-manifest's skills in order and asks the oracle (:mod:`creative_py.backends.pybullet.oracles`). The
-physics decides the outcome; nothing here looks at tool properties.
+applied to what the robot perceives at that moment. :meth:`Episode.verdict` is what
+the oracle (:mod:`creative_py.backends.pybullet.oracles`) measures. A trial (the
+manifest's skills in order, the oracle asked, the outcome labelled) is run above the
+boundary, as every backend's: :func:`creative_py.simulator.trial.run_trial`. Nothing
+here looks at tool properties.
 
 Perception: the objects of ``[[perception.object]]`` come from the cameras through
 :mod:`creative_py.perception`; a held tool is known by proprioception (forward
@@ -33,12 +35,9 @@ kinematics and the grasp); bodies report their fixed geometry and sensors.
 
 from __future__ import annotations
 
-import logging
-import math
-import time
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, Callable, Iterator, NamedTuple, Sequence
+from typing import Any, Iterator, Sequence
 
 import numpy as np
 import pybullet as pb
@@ -47,12 +46,9 @@ from creative_py.backends.pybullet.loads import ToolLoad, ToolLoadMonitor
 from creative_py.backends.pybullet.recorder import Recorder
 from creative_py.backends.pybullet.world import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
-from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
-                                         TrialResult, Verdict, pose_numbers)
+from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome, Verdict,
+                                         pose_numbers)
 from creative_py.world_files import PhysicsSettings, WorldFileError
-
-log = logging.getLogger(__name__)
-
 
 @contextmanager
 def open_episode(world: World, variant: str, location: int, tool: str, seed: int = 0,
@@ -106,7 +102,11 @@ class Episode:
     tool frame in the gripper frame), ``held``, ``bodies`` (name -> scene body),
     ``watch`` (bodies whose blow-up ends a motion), ``state`` (what a skill leaves for
     the next, e.g. the tool's attitude) and ``records`` (what an oracle reads).
+    ``render_time_s`` is the wall time the cameras' frames took (s), ``tool_load`` the
+    :class:`~creative_py.backends.pybullet.loads.ToolLoad` of the last tool action.
     """
+
+    render_time_s: float = 0.0
 
     def __init__(self, world: World, variant: str, location: int, tool: str, seed: int = 0,
                  gui: bool = False, images_dir: Path | None = None,
@@ -368,7 +368,7 @@ class Episode:
             if self.pose_target is None:
                 raise ValueError(f"primitive {primitive} needs the world target of a pose, "
                                  "but the episode has no pose resolver: pass pose_target "
-                                 "to open_episode or run_trial")
+                                 "to open_episode")
             facts = list(self.observe(cameras=opts.get("perceive", True)).facts)
             self.state["facts"] = facts
             target = tuple(self.pose_target(facts, self.spec.name, tuple(pose)))
@@ -493,6 +493,12 @@ class Episode:
         """Return the physics steps taken so far."""
         return self.sim.steps
 
+    def measured_load(self) -> tuple[float, dict[str, Any] | None]:
+        """Return the contact load on the tool during the last tool action: the largest
+        summed normal force over one physics step (N) and the load as data
+        (:meth:`~creative_py.backends.pybullet.loads.ToolLoad.to_dict`)."""
+        return self.tool_load.max_force_n, self.tool_load.to_dict()
+
     def close(self) -> None:
         """Release the simulator (idempotent)."""
         robot = getattr(self, "robot", None)
@@ -518,170 +524,3 @@ def tool_rests(world: World, tool: str, seconds: float = 2.0) -> bool:
         ep.run(seconds)
         drop = ep.tool_spawn_z - frame_pose(ep.sim, ep.tool_body)[0][2]
     return drop <= FELL_M
-
-
-def run_trial(world: World, tool: str, variant: str, location: int,
-              pose: Sequence[float] | None = None, seed: int = 0,
-              images_dir: Path | None = None, gui: bool = False,
-              pose_target: PoseTarget | None = None,
-              record: Recorder | None = None,
-              verdict: Callable[[str, str, dict | None], None] | None = None
-              ) -> TrialResult:
-    """Run one physical trial: every skill of the manifest in order, then the oracle.
-
-    ``pose=None`` uses the demonstration's pose. The outcome comes from the simulated
-    state only (:func:`trial_outcome` says what each way of ending means). The
-    robot's observation before the tool action (or where a blocked motion stopped) is
-    the result's ``facts_before``, the state the learner labels. The result's
-    ``verdict`` is what the oracle measured (:meth:`Episode.verdict`), asked or not,
-    with the guard's measure of a stopped motion. ``verdict(outcome, reason,
-    measured)`` (``measured`` the result's ``verdict``) is called once the physics has
-    given the outcome, still inside the
-    episode (where a kept trial's frames are rendered). With ``record``, the trial's
-    poses are kept for a clip: the verdict renders them if it keeps the clip; without a
-    verdict they are rendered (``record.render()``) at the end. ``wall_time_s`` is the
-    wall time until the verdict.
-    """
-    m = world.manifest
-    pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
-    t0 = time.perf_counter()
-    with open_episode(world, variant, location, tool, seed, gui, images_dir,
-                      pose_target, record=record) as ep:
-        played = play_trial(ep, pose)
-        wall_s = time.perf_counter() - t0
-        if verdict is not None:
-            verdict(played.outcome, played.reason, played.verdict)  # the physics is done with
-        load = ep.tool_load if played.acted else None
-        final = played.final
-        result = TrialResult(
-            case=m.id, object=tool, variant=variant, location=int(location),
-            pose=tuple(pose), outcome=played.outcome, reason=played.reason,
-            perceived_final=(final.perceived_poses() if final is not None and final.frames
-                             else None),
-            true_final=played.truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
-            render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
-            max_tool_force_n=load.max_force_n if load else 0.0,
-            tool_load=load.to_dict() if load else None, facts_before=played.facts_before,
-            verdict=played.verdict)
-        if record is not None and verdict is None:
-            record.render()
-    return result
-
-
-class Played(NamedTuple):
-    """What :func:`play_trial` did: the outcome and reason, the facts observed before
-    the tool action (or where a blocked motion stopped), the last observation (None
-    when none was taken), the true poses after the trial, and whether the tool action
-    started, and the measured verdict (:func:`verdict_data`)."""
-
-    outcome: str
-    reason: str
-    facts_before: tuple[Fact, ...]
-    final: Observation | None
-    truth: dict[str, tuple[float, ...]]
-    acted: bool
-    verdict: dict[str, Any] | None = None
-
-
-def verdict_data(oracle: Verdict | None, asked: bool,
-                 stop: Verdict | None) -> dict[str, Any] | None:
-    """Return a trial's measured verdict as JSON-ready data: the oracle's
-    (:meth:`Verdict.to_dict`) with ``asked`` (whether the outcome rests on it: every
-    skill ran, or the tool acted until stopped) and, for a motion a guard stopped,
-    ``stop`` (the guard's verdict: what it measured and what was touching)."""
-    if oracle is None and stop is None:
-        return None
-    data = oracle.to_dict() if oracle is not None else {}
-    data["asked"] = bool(asked)
-    if stop is not None:
-        data["stop"] = stop.to_dict()
-    return data
-
-
-def play_trial(ep: Episode, pose: Sequence[float], observe: bool = True,
-               by_hand: bool = False, timings: dict[str, float] | None = None) -> Played:
-    """Run the manifest's skills in order in an open episode and judge the trial.
-
-    The body of :func:`run_trial`, for a caller that opens the episode itself (the
-    simulator benchmark). Before the tool action the robot observes (the state the
-    action model's precondition speaks of); a blocked motion is observed where it
-    stopped, a trial whose skills all ran at its end. ``observe=False`` takes no
-    observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
-    the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
-    skipped). ``timings`` receives each skill's wall time as ``<skill>_s``. The outcome
-    is :func:`trial_outcome`'s, or ``invalid`` when a true pose is not finite.
-    """
-    facts: tuple[Fact, ...] = ()
-    final: Observation | None = None
-    acted, status = False, SkillOutcome("ok")
-    for skill in ep.manifest.skills:
-        if by_hand and not (skill.pose or skill.tool_action):
-            continue  # the trainer places the tool: no grasp, no carrying
-        if skill.tool_action:
-            if observe:
-                facts = ep.observe().facts  # what the action model's precondition speaks of
-            acted = True
-        t0 = time.perf_counter()
-        options = {"by_hand": True} if by_hand and skill.pose else {}
-        status = ep.run_skill(skill.name, pose if skill.pose else None, **options)
-        if timings is not None:
-            timings[f"{skill.name}_s"] = time.perf_counter() - t0
-        if not status.ok:
-            break
-    # The oracle is asked when the goal can have been reached: every skill ran, or
-    # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
-    asked = status.ok or (acted and status.status == "blocked")
-    # The oracle measures every trial (the measure is reported); it decides only when
-    # asked. A blow-up may leave nothing finite to measure.
-    try:
-        oracle = ep.verdict()
-    except (ValueError, ArithmeticError) as exc:
-        if asked:
-            raise
-        log.debug("no oracle measure after %s: %s", status.status, exc)
-        oracle = None
-    reached = asked and oracle is not None and oracle.holds
-    outcome, reason = trial_outcome(status, acted, reached)
-    if observe and outcome == "blocked":
-        # What the robot sees where the motion stopped: the catalogue and the task's
-        # facts still describe the trial (a planned example needs them).
-        final = ep.observe()
-        facts = final.facts
-    elif observe and status.ok:
-        final = ep.observe()
-    truth = ep.truth()
-    bad = [n for n, p in truth.items() if not all(math.isfinite(v) for v in p)]
-    if bad and outcome != "invalid":
-        outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
-    return Played(outcome, reason, tuple(facts), final, truth, acted,
-                  verdict_data(oracle, asked, status.stop))
-
-
-def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
-    """Return a trial's ``(outcome, reason)``: the one place that says what each way of
-    ending a trial means.
-
-    Parameters
-    ----------
-    status : SkillOutcome
-        How the last skill run ended (``ok`` when every skill ran).
-    acted : bool
-        Whether the tool action started (the motion that stopped, if any, was the tool
-        action or a skill after it).
-    reached : bool
-        Whether the goal holds (the oracle), asked when the skills ran or the tool acted.
-
-    Returns
-    -------
-    (str, str)
-        Every skill ran: ``success`` / ``failure`` as the goal was or was not reached.
-        Blocked before the tool action: ``blocked`` (the arm could not carry out the
-        planned motion). Blocked while the tool acted: the tool could not carry out the
-        action to its end, and the physics says ``success`` or ``failure`` by the goal.
-        Otherwise the skill's status (``unreachable``, ``invalid``) with its reason.
-    """
-    if status.ok:
-        return ("success", "goal reached") if reached else ("failure", "goal not reached")
-    if status.status == "blocked" and acted:
-        return ("success" if reached else "failure"), status.reason
-    return status.status, status.reason

@@ -100,10 +100,6 @@ class ToolKind:
     START_FIELDS: dict[str, Any] = {}
     GRASP_OPTIONS: dict[str, Any] = {}
 
-    def redrawn(self, spec: Any, values: Mapping[str, float]) -> Any:
-        """Return ``spec`` with drawn ``values`` of its ``FACT_FIELDS``."""
-        return spec.redrawn(values)
-
     def catalogue_facts(self, spec: Any) -> list[Fact]:
         """Return the catalogue facts of ``spec`` (metres, degrees)."""
         return spec.catalogue_facts()

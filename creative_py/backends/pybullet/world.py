@@ -2,8 +2,9 @@
 
 :func:`load_world` reads a world folder (``worlds/<folder>/`` or a copy) for a
 :class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool;
-:func:`draw_world` and :func:`apply_drawn` make a randomised world from it
-(``--world-seed N``).
+:meth:`World.location_values`, :meth:`World.scene_value` and
+:meth:`World.with_locations` are what the world sampler above the boundary
+(:mod:`creative_py.simulator.randomise`, ``--world-seed N``) reads and sets of it.
 The folder holds, besides ``case.toml``:
 
 ``physics.toml``
@@ -47,9 +48,7 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any, Callable, Mapping, Optional
-
-import numpy as np
+from typing import Any, Mapping, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueWorld
@@ -209,6 +208,30 @@ class World(CatalogueWorld):
                               "location": m.demonstration.location,
                               "steps": list(m.demonstration.steps), "pose": pose},
         }
+
+    def location_values(self, location: int) -> dict[str, Any]:
+        """Return the scene values location ``location`` sets (its ``set`` table of
+        ``tasks.toml``, or a drawn world's); KeyError for an unknown location."""
+        if not (isinstance(location, int) and 1 <= location <= len(self.location_sets)):
+            raise KeyError(f"unknown location {location!r}; locations: "
+                           f"1..{len(self.location_sets)}")
+        return self.location_sets[location - 1]
+
+    def scene_value(self, key: str, variant: str, location: int, tool: str) -> float:
+        """Return the scene value ``key`` as the episode of ``variant``, ``location``
+        and ``tool`` resolves it (:meth:`namespace`)."""
+        return float(self.namespace(variant, location, tool).get(key))
+
+    def with_locations(self, tables: Sequence[Mapping[str, Any]], variation: str) -> "World":
+        """Return this world with the locations' scene values ``tables`` (one per
+        location) and ``variation``; the start postures are searched again and every
+        scene value of every variant and location is checked (:func:`check_values`)."""
+        new = replace(self, location_sets=tuple(dict(t) for t in tables), postures={},
+                      variation=variation)
+        for v in new.manifest.variants:
+            for loc in new.locations:
+                check_values(new, v.name, loc, new.manifest.demonstration.tool)
+        return new
 
     def namespace(self, variant: str, location: int, tool: str):
         """Return the scene values of one episode (variant and location applied)."""
@@ -556,197 +579,3 @@ def resolve_options(options: Mapping[str, Any], ns, where: str,
 def object_name(manifest: CaseManifest, name: str, tool: str) -> str:
     """Return the object a role (``tool``, ``target``, ``context``) or a name denotes."""
     return manifest.role_object(name, tool) if name in _ROLES else name
-
-
-Range = tuple[float, float, str]
-"""A qualitative range: low, high and which ends it holds (``closed_open``,
-``closed_closed``, ``open_closed``; ``ontology/ranges.pl``)."""
-
-ValueRange = tuple[float, float, str, str]
-"""A :data:`Range` and the qualitative value it stands for (``short``)."""
-
-
-def _inside(x: float, rng_: Range) -> bool:
-    lo, hi, bounds = rng_
-    if bounds == "closed_open":
-        return lo <= x < hi
-    if bounds == "open_closed":
-        return lo < x <= hi
-    return lo <= x <= hi
-
-
-def _check_value_bounds(world: World, ranges: Mapping[str, Mapping[str, ValueRange]]) -> None:
-    """Raise ValueError naming case.toml's table when a value table of
-    ``[randomise.catalogue.<field>]`` names a value no catalogued object has."""
-    seen: dict[str, set[str]] = {}
-    for name, facts in ranges.items():
-        if name not in world.items:
-            continue
-        fields = world.items[name].spec.FACT_FIELDS
-        for fact, (_lo, _hi, _bounds, value) in facts.items():
-            if fact in fields:
-                seen.setdefault(fields[fact], set()).add(value)
-    for fld, value, _lo, _hi in world.manifest.catalogue_value_bounds:
-        if value not in seen.get(fld, set()):
-            known = ", ".join(sorted(seen.get(fld, set()))) or "none"
-            raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
-                             f"[randomise.catalogue.{fld}] {value!r}: no catalogued object "
-                             f"has this value (values of {fld}: {known})")
-
-
-def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueRange]],
-               keeps: Optional[Callable[[str, Any], bool]] = None,
-               attempts: int = 200,
-               demonstrates: Optional[Callable[[dict[str, Any]], bool]] = None,
-               redraws: int = 20) -> dict[str, Any]:
-    """Draw a randomised world from ``world`` and return it as JSON-ready data.
-
-    Deterministic: one :func:`numpy.random.default_rng` of ``seed`` makes, in order,
-    the catalogue's new order (a permutation), each object's numbers (objects in file
-    order, facts in name order), each location's jittered values and, while
-    ``demonstrates`` says the demonstration fails in the drawn world, the
-    demonstration's location again (the generator goes on: the same seed gives the
-    same redraws).
-
-    Parameters
-    ----------
-    world : World
-        The world as its files say.
-    seed : int
-        The world seed.
-    ranges : mapping
-        ``object -> {catalogue fact -> (low, high, bounds, value)}``: the qualitative
-        range of each number the object has and the value it stands for (the engine's
-        ``catalogue_ranges``). Each number is drawn uniformly inside its own range
-        (narrowed by the manifest's ``[randomise.catalogue]``, for the field and for
-        the object's value, where given), rounded to 0.1 mm (0.0001 degree), so the
-        object keeps its qualitative values; a number without a range is kept, and so
-        are the numbers of the demonstration's tool (the trainer's demonstration is
-        part of the case and must work: drawn, a hook with a long, wide prong on a thin
-        handle tipped off its stand at the trainer's grasp).
-    keeps : callable or None
-        ``keeps(name, spec)`` says whether a drawn object still has every structural
-        literal of the original (a ratio of two numbers can change its value); the
-        object is drawn again until it does, at most ``attempts`` times.
-    demonstrates : callable or None
-        ``demonstrates(drawn)`` says whether the trainer's demonstration reaches the
-        goal in the drawn world (the physics: a location can be drawn where it does
-        not, e.g. a cube jittered onto the tube's axis, where perception error decides
-        the side the prong is turned to); the demonstration's location is drawn again
-        until it does, at most ``redraws`` times, else ValueError naming the world
-        seed.
-    redraws : int
-        The most redraws of the demonstration's location.
-
-    Returns
-    -------
-    dict
-        ``seed``, ``order`` (the catalogue's names in their new order), ``objects``
-        (``name -> {spec field: value}``, the drawn numbers), ``locations`` (each
-        location's ``set`` table with the jittered keys of the manifest's
-        ``[randomise]``, each kept within its ``min`` and ``max``) and ``redraws``
-        (how many times the demonstration's location was drawn again).
-    """
-    from creative_py.backends.pybullet.tools import tool_kind
-
-    _check_value_bounds(world, ranges)
-    narrow = {f: (lo, hi) for f, lo, hi in world.manifest.catalogue_bounds}
-    by_value = {(f, v): (lo, hi) for f, v, lo, hi in world.manifest.catalogue_value_bounds}
-    rng = np.random.default_rng(seed)
-    names = list(world.items)
-    order = [names[int(i)] for i in rng.permutation(len(names))]
-    objects: dict[str, dict[str, float]] = {}
-    for name in names:
-        if name == world.manifest.demonstration.tool:
-            continue
-        spec = world.items[name].spec
-        kind = tool_kind(spec)
-        fields = spec.FACT_FIELDS
-        todo = []
-        for fact, (lo, hi, bounds, value) in sorted(ranges.get(name, {}).items()):
-            if fact not in fields:
-                continue
-            a, b = narrow.get(fields[fact], (lo, hi))
-            c, d = by_value.get((fields[fact], value), (a, b))
-            todo.append((fact, (max(lo, a, c), min(hi, b, d), bounds, (lo, hi, bounds))))
-        if not todo:
-            continue
-        for attempt in range(attempts):
-            values = {}
-            for fact, (lo, hi, bounds, own) in todo:
-                if lo > hi:
-                    raise ValueError(f"{world.manifest.folder / 'case.toml'}: "
-                                     f"[randomise.catalogue.{fields[fact]}] leaves {name} "
-                                     f"no number in its own range {list(own[:2])}")
-                x = round(float(rng.uniform(lo, hi)), 4)
-                while not (_inside(x, own) and lo <= x <= hi):
-                    x = round(float(rng.uniform(lo, hi)), 4)
-                values[fields[fact]] = x
-            drawn = kind.redrawn(spec, values)
-            if keeps is None or keeps(name, drawn):
-                objects[name] = {f: getattr(drawn, f) for f in sorted(set(fields.values()))
-                                 if getattr(drawn, f) != getattr(spec, f)}
-                break
-        else:
-            raise ValueError(f"world seed {seed}: {name}: no draw in {attempts} attempts "
-                             f"keeps its qualitative values")
-    demo = world.manifest.demonstration
-    locations = [_jittered(world, i, rng) for i in world.locations]
-    drawn = {"seed": int(seed), "order": order, "objects": objects, "locations": locations,
-             "redraws": 0}
-    if demonstrates is None:
-        return drawn
-    if not world.manifest.location_jitter:
-        redraws = 0  # nothing to draw again
-    for n in range(redraws + 1):
-        if demonstrates(drawn):
-            return drawn
-        if n < redraws:
-            locations[demo.location - 1] = _jittered(world, demo.location, rng)
-            drawn["redraws"] = n + 1
-    raise ValueError(f"world seed {seed}: the demonstration ({demo.tool} at location "
-                     f"{demo.location}) failed in the physics in {redraws + 1} draws of "
-                     f"location {demo.location} (its [randomise.location] jitter of "
-                     f"{world.manifest.folder / 'case.toml'} may need narrowing)")
-
-
-def _jittered(world: World, location: int, rng: np.random.Generator) -> dict[str, Any]:
-    """Return location ``location``'s ``set`` table with the manifest's ``[randomise]``
-    keys jittered by ``rng`` (each kept within its ``min`` and ``max``)."""
-    demo = world.manifest.demonstration
-    loc = world.location_sets[location - 1]
-    ns = world.namespace(demo.variant, location, demo.tool)
-    new = dict(loc)
-    for j in world.manifest.location_jitter:
-        base = float(loc[j.key]) if j.key in loc else float(ns.get(j.key))
-        new[j.key] = round(min(j.max, max(j.min, base + float(rng.uniform(-j.jitter,
-                                                                           j.jitter)))), 5)
-    return new
-
-
-def apply_drawn(world: World, drawn: Mapping[str, Any]) -> World:
-    """Return ``world`` with a drawn world's catalogue order, numbers and locations
-    (:func:`draw_world`; also what a resumed run reads back from ``run.json``).
-
-    The result passes the loader's checks again (every scene value of every variant
-    and location resolves); errors name the world seed.
-    """
-    order = list(drawn["order"])
-    if sorted(order) != sorted(world.items):
-        raise ValueError(f"world seed {drawn.get('seed')}: the drawn catalogue "
-                         f"{sorted(order)} is not the world's {sorted(world.items)}")
-    items = {}
-    for name in order:
-        item = world.items[name]
-        values = dict(drawn["objects"].get(name, {}))
-        items[name] = replace(item, spec=replace(item.spec, **values)) if values else item
-    locations = tuple(dict(s) for s in drawn["locations"])
-    if len(locations) != len(world.location_sets):
-        raise ValueError(f"world seed {drawn.get('seed')}: {len(locations)} locations "
-                         f"drawn, the world has {len(world.location_sets)}")
-    new = replace(world, items=items, location_sets=locations, postures={},
-                  variation=f"world seed {drawn.get('seed')}")
-    for v in new.manifest.variants:
-        for loc in new.locations:
-            check_values(new, v.name, loc, new.manifest.demonstration.tool)
-    return new

@@ -195,7 +195,8 @@ def test_in_the_tube_world_a_paddle_is_picked_up_inserted_and_pulls_the_cube_out
     blade-flat above the cube, lowered and turned upright behind it, and the pull brings
     the cube out of the tube (the physics decides)."""
     from creative_py.case import get_case
-    from creative_py.backends.pybullet import load_world, open_episode, run_trial
+    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.simulator.trial import run_trial
 
     paddle = PaddleSpec("paddle_t1", 0.35, 0.010, 0.050, 0.012)
     world = load_world(get_case("hook")).with_tool(paddle)

@@ -20,7 +20,7 @@ from creative_py.case import load_cases
 from creative_py.learning.run import check_catalogue, draw_catalogue_world
 from creative_py.backends.pybullet import load_world, tool_rests
 from creative_py.backends.pybullet.tools import catalogue_facts
-from creative_py.backends.pybullet.world import apply_drawn
+from creative_py.simulator.randomise import apply_drawn
 
 # The pybullet cases: drawn worlds are that backend's (the ManiSkill backend draws none).
 CASES = sorted(c for c, m in load_cases().items() if m.backend == "pybullet")

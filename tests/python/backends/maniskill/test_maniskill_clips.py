@@ -16,8 +16,9 @@ pytest.importorskip("mani_skill", reason="the maniskill extra is not installed "
                                          "(make setup-maniskill or pip install -e '.[maniskill]')")
 
 from creative_py.case import get_case  # noqa: E402
-from creative_py.backends.maniskill import (Recorder, load_world, open_episode, recorder,  # noqa: E402
-                                   run_trial)
+from creative_py.backends.maniskill import (Recorder, load_world, open_episode,  # noqa: E402
+                                            recorder)
+from creative_py.simulator.trial import run_trial  # noqa: E402
 from creative_py.world_files import WorldFileError  # noqa: E402
 
 CASE = "pull_cube_tool"

@@ -5,7 +5,9 @@ from __future__ import annotations
 from functools import lru_cache
 
 from creative_py.case import get_case
-from creative_py.backends.pybullet import TrialResult, load_world, run_trial
+from creative_py.backends.pybullet import load_world
+from creative_py.simulator import TrialResult
+from creative_py.simulator.trial import run_trial
 
 from _poses import poses
 

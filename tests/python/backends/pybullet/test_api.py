@@ -3,7 +3,8 @@
 import pytest
 
 from creative_py.case import load_cases
-from creative_py.backends.pybullet import SkillOutcome, load_world, open_episode, run_trial
+from creative_py.backends.pybullet import SkillOutcome, load_world, open_episode
+from creative_py.simulator.trial import run_trial
 from creative_py.world_files import WorldFileError
 
 from _poses import poses

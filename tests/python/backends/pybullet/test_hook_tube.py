@@ -9,7 +9,9 @@ import math
 import pytest
 
 from creative_py.kinds.hook_like import HookSpec
-from creative_py.backends.pybullet import TRIAL_OUTCOMES, open_episode, run_trial
+from creative_py.backends.pybullet import open_episode
+from creative_py.simulator import TRIAL_OUTCOMES
+from creative_py.simulator.trial import run_trial
 from creative_py.backends.pybullet.tools import catalogue_facts, prong_centre, roll_of, tool_orientation
 
 from _hook_runs import hook_trial, hook_world, tube
@@ -207,7 +209,8 @@ def test_a_tool_that_falls_off_the_table_makes_the_trial_invalid():
     # any physics) tips off its stand and the table: the skill cannot pick it up.
     from creative_py.case import get_case
     from creative_py.kinds.hook_like import HookSpec
-    from creative_py.backends.pybullet import load_world, run_trial
+    from creative_py.backends.pybullet import load_world
+    from creative_py.simulator.trial import run_trial
 
     world = load_world(get_case("hook")).with_tool(HookSpec("pole", handle_length=5.0))
     result = run_trial(world, "pole", "standard", 1, pose_target=poses(world))

@@ -5,7 +5,8 @@ from __future__ import annotations
 import pytest
 
 from creative_py.case import get_case
-from creative_py.backends.pybullet import load_world, run_trial
+from creative_py.backends.pybullet import load_world
+from creative_py.simulator.trial import run_trial
 
 from _poses import poses
 from creative_py.backends.pybullet.loads import ToolLoad

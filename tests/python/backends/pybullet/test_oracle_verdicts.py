@@ -11,7 +11,8 @@ from _hook_runs import hook_trial, hook_world, tube
 from _poses import poses
 
 from creative_py.case import get_case
-from creative_py.backends.pybullet import load_world, open_episode, run_trial
+from creative_py.backends.pybullet import load_world, open_episode
+from creative_py.simulator.trial import run_trial
 from creative_py.backends.pybullet.oracles import ORACLES
 from creative_py.simulator.types import Verdict
 

@@ -6,7 +6,8 @@ from functools import lru_cache
 import pytest
 
 from creative_py.case import get_case
-from creative_py.backends.pybullet import load_world, run_trial
+from creative_py.backends.pybullet import load_world
+from creative_py.simulator.trial import run_trial
 
 from _poses import poses
 

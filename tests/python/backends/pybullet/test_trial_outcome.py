@@ -1,5 +1,5 @@
-"""One meaning of each way a trial ends (sim.episode.trial_outcome), and the one
-run_trial the learner, the CLI and the benchmarks share."""
+"""One meaning of each way a trial ends (simulator/trial.py's trial_outcome), and the
+one run_trial the learner, the CLI and the benchmarks share, in the pybullet physics."""
 
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ import pytest
 from _hook_runs import hook_world
 from _poses import poses
 
-from creative_py.backends.pybullet import SkillOutcome, TRIAL_OUTCOMES, run_trial, trial_outcome
+from creative_py.simulator import TRIAL_OUTCOMES, SkillOutcome
+from creative_py.simulator.trial import run_trial, trial_outcome
 
 
 @pytest.mark.parametrize("status, acted, reached, want", [

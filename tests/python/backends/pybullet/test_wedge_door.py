@@ -13,7 +13,8 @@ from pathlib import Path
 import pytest
 
 from creative_py.case import get_case, manifest_of_folder
-from creative_py.backends.pybullet import load_world, open_episode, run_trial
+from creative_py.backends.pybullet import load_world, open_episode
+from creative_py.simulator.trial import run_trial
 from creative_py.world_files import WORLDS_ROOT, WorldFileError
 
 from _poses import poses
