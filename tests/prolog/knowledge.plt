@@ -24,7 +24,7 @@ test(each_case_and_kind_has_its_module, [setup(load_default_ontology)]) :-
     assertion(kb_case_module(wedge, case_wedge)),
     assertion(kb_kind_module(hook_like, kind_hook_like)),
     kb_module_scope(case_hook, HookScope),
-    assertion(HookScope == [case_hook, kind_hook_like, kb]),
+    assertion(HookScope == [case_hook, kind_hook_like, apparatus_tube, kb]),
     kb_module_scope(case_wedge, WedgeScope),
     assertion(WedgeScope == [case_wedge, kind_block, kb]),
     assertion(\+ kb_module_defines(kb, spatial_definition/4)),
@@ -124,6 +124,41 @@ test(case_cannot_call_another_case_s_helper,
        error(existence_error(procedure, tip_in_tube/1), file(F, 2, _, _)) ]) :-
     load_default_ontology,
     load_ontology(F).
+
+%   An apparatus file (apparatus/1) is its own module, seen by the cases that name it
+%   (case_apparatus/2), after their kind's: the tube is written once, the hook and the
+%   paddle case both use it, the rake does not see it.
+test(apparatus_is_its_own_module_seen_by_its_cases, [setup(load_default_ontology)]) :-
+    assertion(kb_apparatus_module(tube, apparatus_tube)),
+    assertion(kb_module_scope(apparatus_tube, [apparatus_tube, kb])),
+    kb_module_scope(case_paddle_tube, PaddleScope),
+    assertion(PaddleScope == [case_paddle_tube, kind_paddle, apparatus_tube, kb]),
+    kb_module_scope(case_rake, RakeScope),
+    assertion(RakeScope == [case_rake, kind_hook_like, kb]),
+    assertion(kb_module_defines(apparatus_tube, in_tube/2)),
+    forall(member(M, [case_hook, case_paddle_tube, kb]),
+           assertion(\+ kb_module_defines(M, in_tube/2))),
+    State = [tube_mouth(tube1, 0.6, 0.0, 0.0), tube_length_m(tube1, 0.3),
+             tube_inner_m(tube1, 0.08, 0.07), pose(cube1, 0.8, 0.0, 0.0, 0.0)],
+    assertion(kb_module_prove(case_hook, in_tube(cube1, tube1), State)),
+    assertion(kb_module_prove(case_paddle_tube, in_tube(cube1, tube1), State)),
+    catch(kb_module_prove(case_rake, in_tube(cube1, tube1), State), E, true),
+    assertion(E = error(existence_error(procedure, case_rake:in_tube/2), _)).
+
+%   A case that does not name the apparatus cannot call its helpers; one that does can.
+test(case_calls_apparatus_only_when_it_names_it,
+     [ setup(( write_temp_ontology_("case(peek_ap).\nlooks(X) :- tube_relative_pose(X, c, _, _, _).\n", F),
+               write_temp_ontology_("case(uses_ap).\ncase_apparatus(uses_ap, tube).\nlooks(X) :- tube_relative_pose(X, c, _, _, _).\n", G) )),
+       cleanup(( delete_file(F), delete_file(G), kb_reset_all, load_default_ontology )) ]) :-
+    load_default_ontology,
+    catch(load_ontology(F), E, true),
+    assertion(E = error(existence_error(procedure, tube_relative_pose/5), file(F, 2, _, _))),
+    load_ontology(G),
+    kb_module_scope(case_uses_ap, Scope),
+    assertion(Scope == [case_uses_ap, apparatus_tube, kb]),
+    assertion(kb_module_prove(case_uses_ap, looks(t),
+                              [tip_position(t, 1.0, 0.0, 0.0), tool_roll(t, 0.0),
+                               pose(c, 0.9, 0.0, 0.0, 0.0)])).
 
 test(two_roles_in_one_file_rejected,
      [ setup(write_temp_ontology_("case(a_kn).\ncase(b_kn).\n", F)),
