@@ -43,8 +43,9 @@ file's *role*, each kept apart from this module's own predicates:
   - every other file is **shared** knowledge and goes into the module `kb` (ranges,
     replacement operators, the robot's own skills, the world frame).
 
-A case module's default import modules are its kind's module (the kind named by its
-case_tool_class/2 fact), then the modules of the apparatus it names by
+A case module's default import modules are its kind's module (the kind whose hierarchy
+holds the class its case_tool_class/2 fact names: the one with a subclass_of(Class, _)
+fact, whatever the kind's name), then the modules of the apparatus it names by
 case_apparatus/2 facts (in their order), then `kb`; a kind module's and an apparatus
 module's is `kb`; `kb`'s is `system`.  So a case's rules see its own predicates, its
 kind's, its apparatus' and the shared ones, and two cases may define the same helper
@@ -135,6 +136,7 @@ load_ontology_files(Files) :-
     must_be(list, Files),
     maplist(resolve_file_, Files, Paths),
     maplist(read_ontology_file_, Paths, Loads),
+    check_tool_classes_(Loads),
     check_calls_(Loads),
     maplist(unload_file_, Paths),
     maplist(assert_file_, Loads),
@@ -281,6 +283,59 @@ check_head_(Head, Path, Line) :-
     ;   true
     ).
 
+%   check_tool_classes_(+Loads): the class a case's case_tool_class/2 fact names is a
+%   class of some kind (its file has a subclass_of(Class, _) fact), when any kind is
+%   loaded at all; else
+%   error(existence_error(tool_class, Class, root_classes(Roots)), file(Path, Line, -1, 0)),
+%   Roots the Root-KindFile pairs of the kinds (printed as one line saying what to
+%   rename).
+check_tool_classes_(Loads) :-
+    findall(Root-File, kind_root_(Loads, Root, File), Roots),
+    (   Roots == []
+    ->  true
+    ;   forall(( member(load(Path, _, case(C), Items), Loads),
+                 member(item(case_tool_class(C, K), Path, Line), Items),
+                 atom(K),
+                 \+ class_kind_module_(K, Loads, _) ),
+               throw(error(existence_error(tool_class, K, root_classes(Roots)),
+                           file(Path, Line, -1, 0))))
+    ).
+
+%   kind_root_(+Loads, -Root, -File): Root is the root class of the kind loaded from
+%   File (a class of its hierarchy whose parent is no class of it: under tool or
+%   object), among the files being loaded, then those loaded before.
+kind_root_(Loads, Root, File) :-
+    member(load(File, _, kind(_), Items), Loads),
+    member(item(subclass_of(Root, Parent), _, _), Items),
+    \+ memberchk(item(subclass_of(Parent, _), _, _), Items).
+kind_root_(Loads, Root, File) :-
+    module_role_(M, kind(_)),
+    \+ member(load(_, M, _, _), Loads),
+    file_module_(File, M),
+    kb_module_defines(M, subclass_of/2),
+    M:subclass_of(Root, Parent),
+    \+ M:subclass_of(Parent, _).
+
+:- multifile prolog:error_message//1.
+
+prolog:error_message(existence_error(tool_class, Class, root_classes(Roots))) -->
+    [ 'case_tool_class/2 names the tool class ~q, which no kind of ontology/kinds/ has: '-
+      [Class],
+      'rename it to a kind\'s root class ('
+    ],
+    root_classes_message_(Roots),
+    [ '), or add subclass_of(~q, tool) to its kind\'s file'-[Class] ].
+
+root_classes_message_([]) --> [].
+root_classes_message_([Root-File|Rest]) -->
+    { file_base_name(File, Base) },
+    [ '~q of kinds/~w'-[Root, Base] ],
+    (   { Rest == [] }
+    ->  []
+    ;   [ ', ' ],
+        root_classes_message_(Rest)
+    ).
+
 %   check_calls_(+Loads): every called predicate is known where it is called: defined
 %   by a module the file's module sees (new clauses of this load, or clauses loaded
 %   before), a primitive, or built in.
@@ -313,8 +368,9 @@ visible_modules_(case(C), M, Loads, Visible) :-
         ;   kb_module_defines(M, case_tool_class/2),
             M:case_tool_class(C, K)
         ),
-        atom(K)
-    ->  role_module_(kind(K), KM)
+        atom(K),
+        class_kind_module_(K, Loads, KM0)
+    ->  KM = KM0
     ;   KM = kb
     ),
     !,
@@ -331,11 +387,27 @@ visible_modules_(case(C), M, Loads, Visible) :-
     list_to_set(Visible0, Visible).
 visible_modules_(kind(_), M, _, [M, kb]).
 visible_modules_(apparatus(_), M, _, [M, kb]).
+
 visible_modules_(shared, _, Loads, Visible) :-
     findall(M, module_role_(M, _), Old),
     findall(M, member(load(_, M, _, _), Loads), New),
     append([[kb], Old, New], Visible0),
     list_to_set(Visible0, Visible).
+
+%   class_kind_module_(+Class, +Loads, -Module): the module of the kind whose hierarchy
+%   holds the tool class Class (its file has a subclass_of(Class, _) fact; the kind's
+%   own name, its kind/1 fact and its file's name, need not be the class's), among the
+%   files being loaded, then those loaded before.
+class_kind_module_(K, Loads, KM) :-
+    (   member(load(_, KM, kind(_), Items), Loads),
+        memberchk(item(subclass_of(K, _), _, _), Items)
+    ->  true
+    ;   module_role_(KM, kind(_)),
+        \+ member(load(_, KM, _, _), Loads),
+        kb_module_defines(KM, subclass_of/2),
+        KM:subclass_of(K, _)
+    ->  true
+    ).
 
 clause_head_((H :- _), H) :- !.
 clause_head_(H, H).
@@ -431,8 +503,8 @@ module_scope_of_(apparatus(_), M, [M, kb]).
 module_scope_of_(case(C), M, Scope) :-
     (   kb_module_defines(M, case_tool_class/2),
         once(M:case_tool_class(C, K)),
-        role_module_(kind(K), KM),
-        module_role_(KM, kind(K))
+        atom(K),
+        class_kind_module_(K, [], KM)
     ->  KMs = [KM]
     ;   KMs = []
     ),

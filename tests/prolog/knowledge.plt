@@ -160,6 +160,37 @@ test(case_calls_apparatus_only_when_it_names_it,
                               [tip_position(t, 1.0, 0.0, 0.0), tool_roll(t, 0.0),
                                pose(c, 0.9, 0.0, 0.0, 0.0)])).
 
+%   A kind's root class need not be named like its kind (file): a case naming the class
+%   sees the kind whose hierarchy holds it.
+test(case_sees_the_kind_of_its_class_whatever_the_kind_s_name,
+     [ setup(( write_temp_ontology_("kind(spoons_kn).\nsubclass_of(spoon_kn, tool).\nbowl_kn(T) :- spoon_kn(T).\nspoon_kn(t1).\n", K),
+               write_temp_ontology_("case(c_kn).\ncase_tool_class(c_kn, spoon_kn).\nuses_kn(T) :- bowl_kn(T).\n", C) )),
+       cleanup(( delete_file(K), delete_file(C), kb_reset_all, load_default_ontology )) ]) :-
+    load_default_ontology,
+    load_ontology_files([K, C]),
+    kb_module_scope(case_c_kn, Scope),
+    assertion(Scope == [case_c_kn, kind_spoons_kn, kb]),
+    assertion(kb_module_holds(case_c_kn, uses_kn(t1))).
+
+%   A case naming a class no kind has is refused at load, in one line that names the
+%   file and what to rename it to.
+test(case_tool_class_of_no_kind_names_the_root_classes,
+     [ setup(write_temp_ontology_("case(c_kn2).\n\ncase_tool_class(c_kn2, hook_likes).\n", F)),
+       cleanup(( delete_file(F), kb_reset_all, load_default_ontology )) ]) :-
+    load_default_ontology,
+    catch(load_ontology(F), E, true),
+    assertion(E = error(existence_error(tool_class, hook_likes, root_classes(_)),
+                        file(F, 3, -1, 0))),
+    E = error(Formal, _),
+    message_to_codes_(error(Formal, _), Text),
+    assertion(Text == "case_tool_class/2 names the tool class hook_likes, which no kind of ontology/kinds/ has: rename it to a kind's root class (block of kinds/block.pl, hook_like of kinds/hook_like.pl, paddle of kinds/paddle.pl), or add subclass_of(hook_likes, tool) to its kind's file"),
+    assertion(\+ kb_case_module(c_kn2, _)).
+
+message_to_codes_(error(Formal, _), Text) :-
+    phrase(prolog:error_message(Formal), Lines),
+    with_output_to(string(Text0), print_message_lines(current_output, '', Lines)),
+    split_string(Text0, "", "\n", [Text]).
+
 test(two_roles_in_one_file_rejected,
      [ setup(write_temp_ontology_("case(a_kn).\ncase(b_kn).\n", F)),
        cleanup(delete_file(F)),
