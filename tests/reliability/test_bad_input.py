@@ -10,6 +10,7 @@ command may show.) How long each refusal takes (aim: under 10 s) is measured by
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -320,9 +321,12 @@ def test_a_case_naming_no_kind_s_class_says_what_to_rename_in_one_line(tmp_path)
                                str(tmp_path / "runs"))
     assert proc.returncode == 2, proc.stderr
     assert len(lines) == 1 and lines[0].startswith("error: ")
+    roots = ", ".join(
+        f"{m.group(1)} of kinds/{p.name}" for p in sorted(kinds.glob("*.pl"))
+        for m in [re.search(r"^subclass_of\((\w+), (?:tool|object)\)\.", p.read_text(), re.M)])
+    assert "paddle of kinds/paddles.pl" in roots and "hook_like of kinds/hook_like.pl" in roots
     assert lines[0].endswith(
         f"{case}:{line}: case_tool_class/2 names the tool class paddles, which no kind of "
-        f"ontology/kinds/ has: rename it to a kind's root class (block of kinds/block.pl, "
-        f"hook_like of kinds/hook_like.pl, paddle of kinds/paddles.pl), or add "
+        f"ontology/kinds/ has: rename it to a kind's root class ({roots}), or add "
         f"subclass_of(paddles, tool) to its kind's file")
     assert not (tmp_path / "runs").exists()
