@@ -24,16 +24,18 @@ A tool-use case (the hook and tube, the wedge and door, ...) is data: one file
 ontology/cases/<case>.pl that answers the engine's *hook predicates*, plain predicates
 whose first argument is the case, as SWI-Prolog's libraries call the `multifile` hooks
 their clients define.  Each case file loads into its own module (`case_<case>`,
-knowledge.pl), which sees its tool kind's module (`kind_<kind>`, ontology/kinds/) and
-the shared knowledge (`kb`); so two cases may define the same helper predicate, and a
-case's rules constrain only its own tools.  The engine modules never name a case, a
+knowledge.pl), which sees its tool kind's module (`kind_<kind>`, ontology/kinds/), the
+modules of the apparatus it shares with other cases (`apparatus_<name>`,
+ontology/apparatus/, named by case_apparatus/2) and the shared knowledge (`kb`); so two
+cases may define the same helper predicate, and a case's rules constrain only its own
+tools.  The engine modules never name a case, a
 tool class or a scene object: each asks the ontology through this module, naming the
 case (or the class), and each documents the hooks it calls (ontology/README.md has the
 table).  Tool classes answer the hooks whose first argument is a class
 (ontology/kinds/<kind>.pl).
 
-A case's *namespace* is its module, its kind's module and `kb`, in this order
-(knowledge:kb_module_scope/2).  A hook's answers are those of every module of the
+A case's *namespace* is its module, its kind's module, its apparatus' modules and
+`kb`, in this order (knowledge:kb_module_scope/2).  A hook's answers are those of every module of the
 namespace that defines the hook predicate, in this order (a clause with an unbound
 case, the robot's own pick_up/1 skill in the shared skills.pl, answers for every case).
 A hook that a case (class) does not answer at all, no clause of the predicate in its

@@ -8,6 +8,7 @@
             ontology_clause/2,        % ?Head, ?Body
             kb_case_module/2,         % ?Case, ?Module
             kb_kind_module/2,         % ?Kind, ?Module
+            kb_apparatus_module/2,    % ?Apparatus, ?Module
             kb_modules/1,             % -Modules
             kb_module_scope/2,        % +Module, -Scope
             kb_module_defines/2,      % +Module, +Name/Arity
@@ -35,13 +36,21 @@ file's *role*, each kept apart from this module's own predicates:
     `case_<Case>` (ontology/cases/hook.pl: `case_hook`);
   - a **kind file**, one holding a fact kind(Kind), goes into `kind_<Kind>`
     (ontology/kinds/hook_like.pl: `kind_hook_like`);
+  - an **apparatus file**, one holding a fact apparatus(Apparatus), goes into
+    `apparatus_<Apparatus>` (ontology/apparatus/tube.pl: `apparatus_tube`): the
+    knowledge of a piece of the world that several cases share (the tube, its
+    perception, its task literals, its geometry), written once;
   - every other file is **shared** knowledge and goes into the module `kb` (ranges,
     replacement operators, the robot's own skills, the world frame).
 
-A case module's default import modules are its kind's module (the kind named by its
-case_tool_class/2 fact) and then `kb`; a kind module's is `kb`; `kb`'s is `system`.
-So a case's rules see its own predicates, its kind's and the shared ones, and two
-cases may define the same helper predicate, each seeing its own.  World facts
+A case module's default import modules are its kind's module (the kind whose hierarchy
+holds the class its case_tool_class/2 fact names: the one with a subclass_of(Class, _)
+fact, whatever the kind's name), then the modules of the apparatus it names by
+case_apparatus/2 facts (in their order), then `kb`; a kind module's and an apparatus
+module's is `kb`; `kb`'s is `system`.  So a case's rules see its own predicates, its
+kind's, its apparatus' and the shared ones, and two cases may define the same helper
+predicate, each seeing its own.  An apparatus clause whose first argument is a
+variable answers a hook for every case that uses the apparatus.  World facts
 (kb_assert_facts/1: perception's primitive facts, a catalogue) live in `kb`, seen by
 every case.  The engine reads a case's knowledge through prolog/case.pl, which names
 the case (kb_case_module/2) and raises when the case does not answer; the shared
@@ -127,6 +136,7 @@ load_ontology_files(Files) :-
     must_be(list, Files),
     maplist(resolve_file_, Files, Paths),
     maplist(read_ontology_file_, Paths, Loads),
+    check_tool_classes_(Loads),
     check_calls_(Loads),
     maplist(unload_file_, Paths),
     maplist(assert_file_, Loads),
@@ -198,11 +208,15 @@ read_ontology_file_(Path, load(Path, Module, Role, Items)) :-
     role_module_(Role, Module).
 
 %   file_role_(+Path, +Items, -Role): case(Case) for a file with one case/1 fact,
-%   kind(Kind) for one with one kind/1 fact, shared otherwise.
+%   kind(Kind) for one with one kind/1 fact, apparatus(A) for one with one
+%   apparatus/1 fact, shared otherwise.
 file_role_(Path, Items, Role) :-
     findall(R,
             ( member(item(T, _, _), Items),
-              ( T = case(C), R = case(C) ; T = kind(K), R = kind(K) ) ),
+              ( T = case(C), R = case(C)
+              ; T = kind(K), R = kind(K)
+              ; T = apparatus(A), R = apparatus(A)
+              ) ),
             Roles),
     (   Roles == []
     ->  Role = shared
@@ -218,6 +232,8 @@ role_module_(case(C), M) :-
     atom_concat(case_, C, M).
 role_module_(kind(K), M) :-
     atom_concat(kind_, K, M).
+role_module_(apparatus(A), M) :-
+    atom_concat(apparatus_, A, M).
 
 %   read_file_clauses_(+Path, -Items, ?Tail): Items are item(Clause, Path, Line).
 read_file_clauses_(Path, Items, Tail) :-
@@ -267,6 +283,59 @@ check_head_(Head, Path, Line) :-
     ;   true
     ).
 
+%   check_tool_classes_(+Loads): the class a case's case_tool_class/2 fact names is a
+%   class of some kind (its file has a subclass_of(Class, _) fact), when any kind is
+%   loaded at all; else
+%   error(existence_error(tool_class, Class, root_classes(Roots)), file(Path, Line, -1, 0)),
+%   Roots the Root-KindFile pairs of the kinds (printed as one line saying what to
+%   rename).
+check_tool_classes_(Loads) :-
+    findall(Root-File, kind_root_(Loads, Root, File), Roots),
+    (   Roots == []
+    ->  true
+    ;   forall(( member(load(Path, _, case(C), Items), Loads),
+                 member(item(case_tool_class(C, K), Path, Line), Items),
+                 atom(K),
+                 \+ class_kind_module_(K, Loads, _) ),
+               throw(error(existence_error(tool_class, K, root_classes(Roots)),
+                           file(Path, Line, -1, 0))))
+    ).
+
+%   kind_root_(+Loads, -Root, -File): Root is the root class of the kind loaded from
+%   File (a class of its hierarchy whose parent is no class of it: under tool or
+%   object), among the files being loaded, then those loaded before.
+kind_root_(Loads, Root, File) :-
+    member(load(File, _, kind(_), Items), Loads),
+    member(item(subclass_of(Root, Parent), _, _), Items),
+    \+ memberchk(item(subclass_of(Parent, _), _, _), Items).
+kind_root_(Loads, Root, File) :-
+    module_role_(M, kind(_)),
+    \+ member(load(_, M, _, _), Loads),
+    file_module_(File, M),
+    kb_module_defines(M, subclass_of/2),
+    M:subclass_of(Root, Parent),
+    \+ M:subclass_of(Parent, _).
+
+:- multifile prolog:error_message//1.
+
+prolog:error_message(existence_error(tool_class, Class, root_classes(Roots))) -->
+    [ 'case_tool_class/2 names the tool class ~q, which no kind of ontology/kinds/ has: '-
+      [Class],
+      'rename it to a kind\'s root class ('
+    ],
+    root_classes_message_(Roots),
+    [ '), or add subclass_of(~q, tool) to its kind\'s file'-[Class] ].
+
+root_classes_message_([]) --> [].
+root_classes_message_([Root-File|Rest]) -->
+    { file_base_name(File, Base) },
+    [ '~q of kinds/~w'-[Root, Base] ],
+    (   { Rest == [] }
+    ->  []
+    ;   [ ', ' ],
+        root_classes_message_(Rest)
+    ).
+
 %   check_calls_(+Loads): every called predicate is known where it is called: defined
 %   by a module the file's module sees (new clauses of this load, or clauses loaded
 %   before), a primitive, or built in.
@@ -291,25 +360,54 @@ check_calls_(Loads) :-
                       check_body_(Body, Visible, Defined, Path, Line) )) )).
 
 %   visible_modules_(+Role, +Module, +Loads, -Visible): the modules whose predicates a
-%   body in Module may call: a case's own, its kind's and kb; a kind's own and kb; for
-%   kb (the shared files), every module.
-visible_modules_(case(C), M, Loads, [M, KM, kb]) :-
+%   body in Module may call: a case's own, its kind's, its apparatus' and kb; a kind's
+%   or an apparatus' own and kb; for kb (the shared files), every module.
+visible_modules_(case(C), M, Loads, Visible) :-
     (   (   member(load(_, M, _, Items), Loads),
             member(item(case_tool_class(C, K), _, _), Items)
         ;   kb_module_defines(M, case_tool_class/2),
             M:case_tool_class(C, K)
         ),
-        atom(K)
-    ->  role_module_(kind(K), KM)
+        atom(K),
+        class_kind_module_(K, Loads, KM0)
+    ->  KM = KM0
     ;   KM = kb
     ),
-    !.
+    !,
+    findall(AM,
+            ( (   member(load(_, M, _, Items), Loads)
+              ->  member(item(case_apparatus(C, A), _, _), Items)
+              ;   kb_module_defines(M, case_apparatus/2),
+                  M:case_apparatus(C, A)
+              ),
+              atom(A),
+              role_module_(apparatus(A), AM) ),
+            AMs),
+    append([[M, KM], AMs, [kb]], Visible0),
+    list_to_set(Visible0, Visible).
 visible_modules_(kind(_), M, _, [M, kb]).
+visible_modules_(apparatus(_), M, _, [M, kb]).
+
 visible_modules_(shared, _, Loads, Visible) :-
     findall(M, module_role_(M, _), Old),
     findall(M, member(load(_, M, _, _), Loads), New),
     append([[kb], Old, New], Visible0),
     list_to_set(Visible0, Visible).
+
+%   class_kind_module_(+Class, +Loads, -Module): the module of the kind whose hierarchy
+%   holds the tool class Class (its file has a subclass_of(Class, _) fact; the kind's
+%   own name, its kind/1 fact and its file's name, need not be the class's), among the
+%   files being loaded, then those loaded before.
+class_kind_module_(K, Loads, KM) :-
+    (   member(load(_, KM, kind(_), Items), Loads),
+        memberchk(item(subclass_of(K, _), _, _), Items)
+    ->  true
+    ;   module_role_(KM, kind(_)),
+        \+ member(load(_, KM, _, _), Loads),
+        kb_module_defines(KM, subclass_of/2),
+        KM:subclass_of(K, _)
+    ->  true
+    ).
 
 clause_head_((H :- _), H) :- !.
 clause_head_(H, H).
@@ -388,7 +486,8 @@ update_modules_ :-
     forall(module_role_(M, Role),
            ( module_scope_of_(Role, M, Scope),
              assertz(module_scope_(M, Scope)),
-             forall(( member(I, Scope), I \== M, I \== kb ),
+             reverse(Scope, Reversed),
+             forall(( member(I, Reversed), I \== M, I \== kb ),
                     add_import_module(M, I, start)) )),
     retractall(primitive_(_)),
     forall(( module_role_(M, _),
@@ -400,14 +499,24 @@ update_modules_ :-
 
 module_scope_of_(shared, kb, [kb]).
 module_scope_of_(kind(_), M, [M, kb]).
+module_scope_of_(apparatus(_), M, [M, kb]).
 module_scope_of_(case(C), M, Scope) :-
     (   kb_module_defines(M, case_tool_class/2),
         once(M:case_tool_class(C, K)),
-        role_module_(kind(K), KM),
-        module_role_(KM, kind(K))
-    ->  Scope = [M, KM, kb]
-    ;   Scope = [M, kb]
-    ).
+        atom(K),
+        class_kind_module_(K, [], KM)
+    ->  KMs = [KM]
+    ;   KMs = []
+    ),
+    findall(AM,
+            ( kb_module_defines(M, case_apparatus/2),
+              M:case_apparatus(C, A),
+              atom(A),
+              role_module_(apparatus(A), AM),
+              module_role_(AM, apparatus(A)) ),
+            AMs),
+    append([[M], KMs, AMs, [kb]], Scope0),
+    list_to_set(Scope0, Scope).
 
 %!  kb_loaded_files(-Files:list) is det.
 %
@@ -443,6 +552,18 @@ kb_case_module(Case, Module) :-
 kb_kind_module(Kind, Module) :-
     module_role_(Module, kind(Kind)).
 
+%!  kb_apparatus_module(?Apparatus, ?Module) is nondet.
+%
+%   Module holds the knowledge of the loaded apparatus Apparatus (its file's
+%   apparatus/1 fact), which the cases naming it by case_apparatus/2 see.
+%
+%   ==
+%   ?- load_default_ontology, kb_apparatus_module(tube, M).
+%   M = apparatus_tube.
+%   ==
+kb_apparatus_module(Apparatus, Module) :-
+    module_role_(Module, apparatus(Apparatus)).
+
 %!  kb_modules(-Modules:list) is det.
 %
 %   Modules are the modules of the loaded ontology, in the order they were first
@@ -453,7 +574,8 @@ kb_modules(Modules) :-
 %!  kb_module_scope(+Module, -Scope:list) is det.
 %
 %   Scope lists the ontology modules a goal called in Module resolves in, Module first:
-%   [case_hook, kind_hook_like, kb] for a case, [kind_block, kb] for a kind, [kb].
+%   [case_hook, kind_hook_like, apparatus_tube, kb] for a case (its kind, its
+%   apparatus), [kind_block, kb] for a kind or an apparatus, [kb].
 kb_module_scope(Module, Scope) :-
     (   module_scope_(Module, Scope0)
     ->  Scope = Scope0

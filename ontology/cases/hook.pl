@@ -3,8 +3,9 @@
     through the hook predicates of ontology/README.md ("Hook predicates").
 
     Plain Prolog data loaded by knowledge:load_ontology/1 into this case's own module
-    (case/1 below names it), which sees its tool kind's module and the shared files:
-    a helper predicate here is this case's alone.  Rules marked "proved on the state"
+    (case/1 below names it), which sees its tool kind's module, the tube's
+    (ontology/apparatus/tube.pl, case_apparatus/2 below) and the shared files: a
+    helper predicate here is this case's alone.  Rules marked "proved on the state"
     are proved by case:case_prove/2: their
     primitive facts (pose/5, tube_mouth/4, ...) come from the state the engine hands
     over, never from the database.
@@ -29,84 +30,10 @@ task_roles(hook, cube1, tube1).
 
 case_goal(hook, [out_of_tube(cube1, tube1)]).
 
-%   Objects a plan needs that no literal of the state names.
-case_extra_objects(hook, []).
-
-%   The innate skills, in the order a plan uses them (pick_up: ontology/skills.pl).
-case_skills(hook, [pick_up, position_tool, pull]).
-
-%   position_tool(T, C, Tube): move the held tool to a pose relative to the cube inside
-%   the tube; which spatial literals become true is the pose's business (spatial_of/1).
-innate_skill(hook, position_tool,
-             action_model(position_tool, [T-tool, C-target, Tube-site],
-                          [holding(T), in_tube(C, Tube)],
-                          [spatial_of(T)],
-                          [spatial_of(T)])).
-%   pull(T, C, Tube): draw the held tool back out of the tube along its axis.
-innate_skill(hook, pull,
-             action_model(pull, [T-tool, _C-target, Tube-site],
-                          [holding(T)],
-                          [],
-                          [in_tube(T, Tube), spatial_of(T)])).
-
-%   The name of the action learned from the demonstration: the pull whose unexplained
-%   effect is out_of_tube/2 is pull_out.
-learned_action_names(hook, [name(pull, out_of_tube, pull_out)]).
-
-%   The tool acts while the robot holds it (its spatial literals count when held).
-tool_acts_when(hook, held).
-
-%   Spatial literals that are preconditions of the motion rather than pose choices:
-%   the hook is always used inside the tube, never tested by placing it outside.
-untestable_literals(hook, [in_tube(_, _)]).
-
-                 /*******************************
-                 *     STATE                    *
-                 *******************************/
-
-%   The tube: mouth centre (world x, y, z), inner length along +x, inner width and
-%   height (metres).
-primitive_predicate(tube_mouth/4).
-primitive_predicate(tube_length_m/2).
-primitive_predicate(tube_inner_m/3).
-
-task_predicate(hook, in_tube/2).
-task_predicate(hook, out_of_tube/2).
-
-%   in_tube(?Object, ?Tube): an uncatalogued object (the cube) whose centre lies inside
-%   the tube's inner box.
-in_tube(C, Tube) :-
-    tube_mouth(Tube, MX, MY, MZ),
-    tube_length_m(Tube, L),
-    tube_inner_m(Tube, W, H),
-    pose(C, X, Y, Z, _Yaw),
-    \+ object_kind(C, _),
-    X >= MX,
-    X =< MX + L,
-    abs(Y - MY) =< W / 2,
-    abs(Z - MZ) =< H / 2.
-
-out_of_tube(C, Tube) :-
-    tube_mouth(Tube, _, _, _),
-    pose(C, _, _, _, _),
-    \+ object_kind(C, _),
-    \+ in_tube(C, Tube).
-
-%   tool_in_use(?Case, ?Tool), proved on the state: a held tool whose tip lies inside
-%   the tube's inner box has spatial literals.
-tool_in_use(hook, Tool) :-
-    held(Tool),
-    tip_in_tube(Tool).
-
-tip_in_tube(Tool) :-
-    tube_mouth(Tube, MX, MY, MZ),
-    tube_length_m(Tube, L),
-    tube_inner_m(Tube, W, H),
-    tip_position(Tool, X, Y, Z),
-    X >= MX,
-    X =< MX + L,
-    abs(Y - MY) =< W / 2,
-    abs(Z - MZ) =< H / 2.
+%   The tube, its perception, its task literals (in_tube/2, out_of_tube/2), the
+%   skills that work in it (position_tool, pull) and its geometry are the tube's,
+%   written once in ontology/apparatus/tube.pl and shared with the paddle case.
+case_apparatus(hook, tube).
 
                  /*******************************
                  *     POSE                     *
@@ -165,11 +92,9 @@ geometry_default(hook, dx_reach, 1.0, 'deepest prong centre the held tool reache
 
 %   geometry_value(?Case, ?Name, ?Tool, ?Target, +Geometry, -Value), proved on the
 %   state: the parameter's value from the facts.  Tool and Target may be unbound (then
-%   only facts naming neither are used).
-geometry_value(hook, cube_half, _Tool, Target, _G, V) :-
-    nonvar(Target),
-    size(Target, Sx, _, _),
-    V is Sx / 2.
+%   only facts naming neither are used).  cube_half and tube_length are the tube's
+%   (ontology/apparatus/tube.pl); the prong stays inside the tube: from the mouth to the
+%   far end, relative to the cube.
 geometry_value(hook, prong_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     (   hook_width_m(Tool, W)
@@ -181,43 +106,20 @@ geometry_value(hook, handle_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     handle_width_m(Tool, W),
     V is W / 2.
-geometry_value(hook, tube_length, _Tool, _Target, _G, L) :-
-    tube_length_m(_, L).
-%   The prong stays inside the tube: from the mouth to the far end, relative to the cube.
-geometry_value(hook, dx_max, _Tool, Target, G, DxMax) :-
-    nonvar(Target),
-    tube_mouth(Tube, MX, _, _),
-    tube_length_m(Tube, L),
-    pose(Target, CX, _, _, _),
+geometry_value(hook, dx_max, _Tool, Target, G, V) :-
     memberchk(prong_half=PH, G),
-    DxMax is MX + L - CX - PH.
-geometry_value(hook, dx_min, _Tool, Target, G, DxMin) :-
-    nonvar(Target),
-    tube_mouth(Tube, MX, _, _),
-    tube_length_m(Tube, _),
-    pose(Target, CX, _, _, _),
+    tube_dx_max(Target, PH, V).
+geometry_value(hook, dx_min, _Tool, Target, G, V) :-
     memberchk(prong_half=PH, G),
-    DxMin is MX - CX + PH.
-geometry_value(hook, dy_max, _Tool, Target, G, DyMax) :-
-    nonvar(Target),
-    tube_mouth(Tube, _, MY, _),
-    tube_length_m(Tube, _),
-    tube_inner_m(Tube, W, _),
-    pose(Target, _, CY, _, _),
+    tube_dx_min(Target, PH, V).
+geometry_value(hook, dy_max, _Tool, Target, G, V) :-
     memberchk(handle_half=HH, G),
     memberchk(clearance=C, G),
-    Room is W / 2 - HH - C,
-    DyMax is MY - CY + Room.
-geometry_value(hook, dy_min, _Tool, Target, G, DyMin) :-
-    nonvar(Target),
-    tube_mouth(Tube, _, MY, _),
-    tube_length_m(Tube, _),
-    tube_inner_m(Tube, W, _),
-    pose(Target, _, CY, _, _),
+    tube_dy_max(Target, HH, C, V).
+geometry_value(hook, dy_min, _Tool, Target, G, V) :-
     memberchk(handle_half=HH, G),
     memberchk(clearance=C, G),
-    Room is W / 2 - HH - C,
-    DyMin is MY - CY - Room.
+    tube_dy_min(Target, HH, C, V).
 
 %   How deep the held tool reaches (reach_definition/3, read only before a tool is
 %   tried in a harder task): the prong's centre at most the handle's length, less
@@ -233,31 +135,22 @@ reach_definition(hook, hook_pose(Dx, _Dy, _Roll), [Dx =< dx_reach]).
 
 geometry_value(hook, dx_reach, Tool, Target, G, V) :-
     nonvar(Tool),
-    nonvar(Target),
     handle_length_m(Tool, L),
-    tube_mouth(_Tube, MX, _, _),
-    pose(Target, CX, _, _, _),
     memberchk(prong_half=PH, G),
     memberchk(reach_loss=Loss, G),
-    V is MX + L - Loss - PH - CX.
+    tube_dx_reach(Tool, Target, L, PH, Loss, V).
 
 %   relative_pose(?Case, ?Tool, ?Target, +Geometry, -Pose), proved on the state: the
-%   held tool's pose relative to the cube, from the tip's position and the roll
-%   (proprioception) and the cube's pose (camera).
+%   held tool's pose relative to the cube (the tube's tube_relative_pose/5: the tip's
+%   position and the roll against the cube's pose).
 relative_pose(hook, Tool, Target, _G, hook_pose(Dx, Dy, Roll)) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, CX, CY, _, _),
-    Dx is TX - CX,
-    Dy is TY - CY.
+    tube_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 %   pose_target(?Case, +Pose, ?Target, +Geometry, -World), proved on the state: where
 %   the pose puts the tool in the world, tip(X, Y, Roll): the prong centre's world X
 %   and Y (its height is the skill's choice) and the roll.
 pose_target(hook, hook_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
-    pose(Target, CX, CY, _, _),
-    X is CX + Dx,
-    Y is CY + Dy.
+    tube_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *
@@ -275,9 +168,5 @@ size_constraint(hook, tube_inner_m(_, W, H),
 size_constraint(stick, tube_inner_m(_, W, H),
                 [handle_width =< min(W, H) - tube_clearance_m]).
 
-%   size_parameter(?Name, ?Value, ?Meaning): margins used by the size constraints
-%   (metres); a context fact Name(Value) overrides the value.
-size_parameter(reach_margin_m, 0.05,
-               'handle length beyond the tube length: the grip and the gripper stay outside the mouth').
-size_parameter(tube_clearance_m, 0.005,
-               'free space left between the tool cross-section and the tube walls').
+%   The margins reach_margin_m and tube_clearance_m are the tube's
+%   (ontology/apparatus/tube.pl, size_parameter/3).

@@ -5,10 +5,9 @@
 
     Plain Prolog data loaded into this case's own module (case_paddle_tube) by
     knowledge:load_ontology/1.  Rules marked "proved on the state" take their primitive
-    facts from the state the engine hands over.  The tube is the hook case's and is
-    perceived the same way (the tube's primitive facts, ontology/cases/hook.pl); its task
-    literals and margins are written again below, since a case sees no other case's
-    rules.
+    facts from the state the engine hands over.  The tube is the hook case's, written
+    once in ontology/apparatus/tube.pl (case_apparatus/2 below): its perception, task
+    literals, skills, geometry rules and margins.
 */
 
 case(paddle_tube).
@@ -23,63 +22,9 @@ task_roles(paddle_tube, cube1, tube1).
 
 case_goal(paddle_tube, [out_of_tube(cube1, tube1)]).
 
-case_extra_objects(paddle_tube, []).
-
-case_skills(paddle_tube, [pick_up, position_tool, pull]).
-
-%   position_tool(T, C, Tube): move the held paddle to a pose relative to the cube.
-innate_skill(paddle_tube, position_tool,
-             action_model(position_tool, [T-tool, C-target, Tube-site],
-                          [holding(T), in_tube(C, Tube)],
-                          [spatial_of(T)],
-                          [spatial_of(T)])).
-%   pull(T, C, Tube): draw the held paddle back out of the tube along its axis.
-innate_skill(paddle_tube, pull,
-             action_model(pull, [T-tool, _C-target, Tube-site],
-                          [holding(T)],
-                          [],
-                          [in_tube(T, Tube), spatial_of(T)])).
-
-learned_action_names(paddle_tube, [name(pull, out_of_tube, pull_out)]).
-
-tool_acts_when(paddle_tube, held).
-
-untestable_literals(paddle_tube, [in_tube(_, _)]).
-
-task_predicate(paddle_tube, in_tube/2).
-task_predicate(paddle_tube, out_of_tube/2).
-
-%   in_tube(?Object, ?Tube): an uncatalogued object (the cube) whose centre lies inside
-%   the tube's inner box; out_of_tube/2 its complement.
-in_tube(C, Tube) :-
-    tube_mouth(Tube, MX, MY, MZ),
-    tube_length_m(Tube, L),
-    tube_inner_m(Tube, W, H),
-    pose(C, X, Y, Z, _Yaw),
-    \+ object_kind(C, _),
-    inside_tube_box_(X, Y, Z, MX, MY, MZ, L, W, H).
-
-out_of_tube(C, Tube) :-
-    tube_mouth(Tube, _, _, _),
-    pose(C, _, _, _, _),
-    \+ object_kind(C, _),
-    \+ in_tube(C, Tube).
-
-%   tool_in_use(?Case, ?Tool), proved on the state: a held paddle whose blade's centre
-%   (its tip position) lies inside the tube's inner box.
-tool_in_use(paddle_tube, Tool) :-
-    held(Tool),
-    tube_mouth(Tube, MX, MY, MZ),
-    tube_length_m(Tube, L),
-    tube_inner_m(Tube, W, H),
-    tip_position(Tool, X, Y, Z),
-    inside_tube_box_(X, Y, Z, MX, MY, MZ, L, W, H).
-
-inside_tube_box_(X, Y, Z, MX, MY, MZ, L, W, H) :-
-    X >= MX,
-    X =< MX + L,
-    abs(Y - MY) =< W / 2,
-    abs(Z - MZ) =< H / 2.
+%   The tube, its perception, its task literals (in_tube/2, out_of_tube/2), the
+%   skills that work in it (position_tool, pull) and its geometry are the tube's.
+case_apparatus(paddle_tube, tube).
 
                  /*******************************
                  *     POSE                     *
@@ -122,10 +67,8 @@ geometry_default(paddle_tube, dy_min, -0.01, 'smallest Dy keeping the shaft in t
 geometry_default(paddle_tube, reach_loss, -0.04, 'shaft length the held paddle cannot put beyond the mouth (as the hook case measured for a handle)').
 geometry_default(paddle_tube, dx_reach, 1.0, 'deepest blade centre the held paddle reaches, minus the cube centre (1 m, no bound, when its shaft is not known)').
 
-geometry_value(paddle_tube, cube_half, _Tool, Target, _G, V) :-
-    nonvar(Target),
-    size(Target, Sx, _, _),
-    V is Sx / 2.
+%   geometry_value/6, proved on the state: cube_half and tube_length are the tube's;
+%   the blade stays inside the tube, the shaft between its walls.
 geometry_value(paddle_tube, blade_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     blade_length_m(Tool, B),
@@ -134,42 +77,20 @@ geometry_value(paddle_tube, shaft_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     shaft_width_m(Tool, W),
     V is W / 2.
-geometry_value(paddle_tube, tube_length, _Tool, _Target, _G, L) :-
-    tube_length_m(_, L).
-geometry_value(paddle_tube, dx_max, _Tool, Target, G, DxMax) :-
-    nonvar(Target),
-    tube_mouth(Tube, MX, _, _),
-    tube_length_m(Tube, L),
-    pose(Target, CX, _, _, _),
+geometry_value(paddle_tube, dx_max, _Tool, Target, G, V) :-
     memberchk(blade_half=BH, G),
-    DxMax is MX + L - CX - BH.
-geometry_value(paddle_tube, dx_min, _Tool, Target, G, DxMin) :-
-    nonvar(Target),
-    tube_mouth(Tube, MX, _, _),
-    tube_length_m(Tube, _),
-    pose(Target, CX, _, _, _),
+    tube_dx_max(Target, BH, V).
+geometry_value(paddle_tube, dx_min, _Tool, Target, G, V) :-
     memberchk(blade_half=BH, G),
-    DxMin is MX - CX + BH.
-geometry_value(paddle_tube, dy_max, _Tool, Target, G, DyMax) :-
-    nonvar(Target),
-    tube_mouth(Tube, _, MY, _),
-    tube_length_m(Tube, _),
-    tube_inner_m(Tube, W, _),
-    pose(Target, _, CY, _, _),
+    tube_dx_min(Target, BH, V).
+geometry_value(paddle_tube, dy_max, _Tool, Target, G, V) :-
     memberchk(shaft_half=SH, G),
     memberchk(clearance=C, G),
-    Room is W / 2 - SH - C,
-    DyMax is MY - CY + Room.
-geometry_value(paddle_tube, dy_min, _Tool, Target, G, DyMin) :-
-    nonvar(Target),
-    tube_mouth(Tube, _, MY, _),
-    tube_length_m(Tube, _),
-    tube_inner_m(Tube, W, _),
-    pose(Target, _, CY, _, _),
+    tube_dy_max(Target, SH, C, V).
+geometry_value(paddle_tube, dy_min, _Tool, Target, G, V) :-
     memberchk(shaft_half=SH, G),
     memberchk(clearance=C, G),
-    Room is W / 2 - SH - C,
-    DyMin is MY - CY - Room.
+    tube_dy_min(Target, SH, C, V).
 
 %   How deep the held paddle reaches: the blade's centre at most the shaft's length,
 %   less reach_loss and half the blade, beyond the mouth.
@@ -177,28 +98,18 @@ reach_definition(paddle_tube, paddle_pose(Dx, _Dy, _Roll), [Dx =< dx_reach]).
 
 geometry_value(paddle_tube, dx_reach, Tool, Target, G, V) :-
     nonvar(Tool),
-    nonvar(Target),
     shaft_length_m(Tool, L),
-    tube_mouth(_Tube, MX, _, _),
-    pose(Target, CX, _, _, _),
     memberchk(blade_half=BH, G),
     memberchk(reach_loss=Loss, G),
-    V is MX + L - Loss - BH - CX.
+    tube_dx_reach(Tool, Target, L, BH, Loss, V).
 
-%   relative_pose/5, proved on the state: the blade's centre and the roll
-%   (proprioception) against the cube's pose (camera).
+%   relative_pose/5, pose_target/5, proved on the state: the blade's centre and the
+%   roll against the cube's pose (the tube's rules).
 relative_pose(paddle_tube, Tool, Target, _G, paddle_pose(Dx, Dy, Roll)) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, CX, CY, _, _),
-    Dx is TX - CX,
-    Dy is TY - CY.
+    tube_relative_pose(Tool, Target, Dx, Dy, Roll).
 
-%   pose_target/5, proved on the state: the blade centre's world X and Y and the roll.
 pose_target(paddle_tube, paddle_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
-    pose(Target, CX, CY, _, _),
-    X is CX + Dx,
-    Y is CY + Dy.
+    tube_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *
@@ -210,9 +121,5 @@ size_constraint(paddle, tube_length_m(_, L), [shaft_length >= L + reach_margin_m
 size_constraint(paddle, tube_inner_m(_, W, H),
                 [blade_width =< min(W, H) - tube_clearance_m]).
 
-%   size_parameter(?Name, ?Value, ?Meaning): margins used by the size constraints
-%   (metres); a context fact Name(Value) overrides the value.
-size_parameter(reach_margin_m, 0.05,
-               'shaft length beyond the tube length: the grip and the gripper stay outside the mouth').
-size_parameter(tube_clearance_m, 0.005,
-               'free space left between the blade and the tube walls').
+%   The margins reach_margin_m and tube_clearance_m are the tube's
+%   (ontology/apparatus/tube.pl, size_parameter/3).

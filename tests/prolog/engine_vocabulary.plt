@@ -5,7 +5,8 @@
 
 /*  The engine names no case: no clause of a file of prolog/ mentions a case id, a role or
     extra object of a case, a pose term, a tool kind or a non-root tool class of the
-    loaded ontology (comments are not clauses, so PlDoc examples may).  Root classes
+    loaded ontology, or an apparatus several cases share (comments are not clauses, so
+    PlDoc examples may).  Root classes
     (tool, object) are left out: `tool` is also the engine's parameter type.
 */
 
@@ -28,6 +29,8 @@ case_atom_(Class) :-
     ontology_holds(subclass_of(Class, _)).
 case_atom_(Kind) :-
     ontology_holds(size_field(Kind, _, _)).
+case_atom_(Apparatus) :-
+    ontology_holds(apparatus(Apparatus)).
 
 engine_file_(Path) :-
     module_property(knowledge, file(Here)),
@@ -63,7 +66,7 @@ read_atoms_(In, M, Acc, Terms) :-
 test(vocabulary_is_known) :-
     case_vocabulary_(V),
     assertion(subset([hook, wedge, cube1, tube1, door1, floor1, hook_pose, wedge_pose,
-                      stick, block, hook_like], V)).
+                      stick, block, hook_like, tube], V)).
 
 test(engine_names_no_case, Found == []) :-
     case_vocabulary_(V),

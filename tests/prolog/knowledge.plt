@@ -24,7 +24,7 @@ test(each_case_and_kind_has_its_module, [setup(load_default_ontology)]) :-
     assertion(kb_case_module(wedge, case_wedge)),
     assertion(kb_kind_module(hook_like, kind_hook_like)),
     kb_module_scope(case_hook, HookScope),
-    assertion(HookScope == [case_hook, kind_hook_like, kb]),
+    assertion(HookScope == [case_hook, kind_hook_like, apparatus_tube, kb]),
     kb_module_scope(case_wedge, WedgeScope),
     assertion(WedgeScope == [case_wedge, kind_block, kb]),
     assertion(\+ kb_module_defines(kb, spatial_definition/4)),
@@ -124,6 +124,85 @@ test(case_cannot_call_another_case_s_helper,
        error(existence_error(procedure, tip_in_tube/1), file(F, 2, _, _)) ]) :-
     load_default_ontology,
     load_ontology(F).
+
+%   An apparatus file (apparatus/1) is its own module, seen by the cases that name it
+%   (case_apparatus/2), after their kind's: the tube is written once, the hook and the
+%   paddle case both use it, the rake does not see it.
+test(apparatus_is_its_own_module_seen_by_its_cases, [setup(load_default_ontology)]) :-
+    assertion(kb_apparatus_module(tube, apparatus_tube)),
+    assertion(kb_module_scope(apparatus_tube, [apparatus_tube, kb])),
+    kb_module_scope(case_paddle_tube, PaddleScope),
+    assertion(PaddleScope == [case_paddle_tube, kind_paddle, apparatus_tube, kb]),
+    kb_module_scope(case_rake, RakeScope),
+    assertion(RakeScope == [case_rake, kind_hook_like, kb]),
+    assertion(kb_module_defines(apparatus_tube, in_tube/2)),
+    forall(member(M, [case_hook, case_paddle_tube, kb]),
+           assertion(\+ kb_module_defines(M, in_tube/2))),
+    State = [tube_mouth(tube1, 0.6, 0.0, 0.0), tube_length_m(tube1, 0.3),
+             tube_inner_m(tube1, 0.08, 0.07), pose(cube1, 0.8, 0.0, 0.0, 0.0)],
+    assertion(kb_module_prove(case_hook, in_tube(cube1, tube1), State)),
+    assertion(kb_module_prove(case_paddle_tube, in_tube(cube1, tube1), State)),
+    catch(kb_module_prove(case_rake, in_tube(cube1, tube1), State), E, true),
+    assertion(E = error(existence_error(procedure, case_rake:in_tube/2), _)).
+
+%   A case that does not name the apparatus cannot call its helpers; one that does can.
+test(case_calls_apparatus_only_when_it_names_it,
+     [ setup(( write_temp_ontology_("case(peek_ap).\nlooks(X) :- tube_relative_pose(X, c, _, _, _).\n", F),
+               write_temp_ontology_("case(uses_ap).\ncase_apparatus(uses_ap, tube).\nlooks(X) :- tube_relative_pose(X, c, _, _, _).\n", G) )),
+       cleanup(( delete_file(F), delete_file(G), kb_reset_all, load_default_ontology )) ]) :-
+    load_default_ontology,
+    catch(load_ontology(F), E, true),
+    assertion(E = error(existence_error(procedure, tube_relative_pose/5), file(F, 2, _, _))),
+    load_ontology(G),
+    kb_module_scope(case_uses_ap, Scope),
+    assertion(Scope == [case_uses_ap, apparatus_tube, kb]),
+    assertion(kb_module_prove(case_uses_ap, looks(t),
+                              [tip_position(t, 1.0, 0.0, 0.0), tool_roll(t, 0.0),
+                               pose(c, 0.9, 0.0, 0.0, 0.0)])).
+
+%   A kind's root class need not be named like its kind (file): a case naming the class
+%   sees the kind whose hierarchy holds it.
+test(case_sees_the_kind_of_its_class_whatever_the_kind_s_name,
+     [ setup(( write_temp_ontology_("kind(spoons_kn).\nsubclass_of(spoon_kn, tool).\nbowl_kn(T) :- spoon_kn(T).\nspoon_kn(t1).\n", K),
+               write_temp_ontology_("case(c_kn).\ncase_tool_class(c_kn, spoon_kn).\nuses_kn(T) :- bowl_kn(T).\n", C) )),
+       cleanup(( delete_file(K), delete_file(C), kb_reset_all, load_default_ontology )) ]) :-
+    load_default_ontology,
+    load_ontology_files([K, C]),
+    kb_module_scope(case_c_kn, Scope),
+    assertion(Scope == [case_c_kn, kind_spoons_kn, kb]),
+    assertion(kb_module_holds(case_c_kn, uses_kn(t1))).
+
+%   A case naming a class no kind has is refused at load, in one line that names the
+%   file and what to rename it to.
+test(case_tool_class_of_no_kind_names_the_root_classes,
+     [ setup(write_temp_ontology_("case(c_kn2).\n\ncase_tool_class(c_kn2, hook_likes).\n", F)),
+       cleanup(( delete_file(F), kb_reset_all, load_default_ontology )) ]) :-
+    load_default_ontology,
+    catch(load_ontology(F), E, true),
+    assertion(E = error(existence_error(tool_class, hook_likes, root_classes(_)),
+                        file(F, 3, -1, 0))),
+    E = error(Formal, _),
+    message_to_codes_(error(Formal, _), Text),
+    %   the root classes are those of the kinds loaded, whichever they are
+    findall(Part,
+            ( kb_kind_module(_, M),
+              knowledge:file_module_(File, M),
+              kb_module_holds(M, subclass_of(Root, Parent)),
+              \+ kb_module_holds(M, subclass_of(Parent, _)),
+              file_base_name(File, Base),
+              format(string(Part), "~w of kinds/~w", [Root, Base]) ),
+            Parts),
+    assertion(memberchk("hook_like of kinds/hook_like.pl", Parts)),
+    assertion(memberchk("block of kinds/block.pl", Parts)),
+    atomic_list_concat(Parts, ', ', Roots),
+    format(string(Expected), "case_tool_class/2 names the tool class hook_likes, which no kind of ontology/kinds/ has: rename it to a kind's root class (~w), or add subclass_of(hook_likes, tool) to its kind's file", [Roots]),
+    assertion(Text == Expected),
+    assertion(\+ kb_case_module(c_kn2, _)).
+
+message_to_codes_(error(Formal, _), Text) :-
+    phrase(prolog:error_message(Formal), Lines),
+    with_output_to(string(Text0), print_message_lines(current_output, '', Lines)),
+    split_string(Text0, "", "\n", [Text]).
 
 test(two_roles_in_one_file_rejected,
      [ setup(write_temp_ontology_("case(a_kn).\ncase(b_kn).\n", F)),

@@ -10,6 +10,7 @@ command may show.) How long each refusal takes (aim: under 10 s) is measured by
 
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -291,4 +292,41 @@ def test_a_case_file_lacking_a_hook_predicate_is_named_before_the_run(tmp_path):
     assert proc.returncode == 2, proc.stderr
     assert lines == ["error: ontology/cases/rake.pl: case rake does not answer the engine's "
                      "hook predicate(s) relative_pose/5 (ontology/README.md lists them)"]
+    assert not (tmp_path / "runs").exists()
+
+
+def test_a_case_naming_no_kind_s_class_says_what_to_rename_in_one_line(tmp_path):
+    """A kind's root class need not be named like its file (the paddle kind's file
+    renamed paddles.pl still runs the paddle case's ontology); a case's tool class that
+    no kind has is named at once, with the root classes to rename it to."""
+    copy = _tree_copy(tmp_path)
+    kinds = copy / "ontology" / "kinds"
+    (kinds / "paddle.pl").rename(kinds / "paddles.pl")
+    text = (kinds / "paddles.pl").read_text()
+    (kinds / "paddles.pl").write_text(text.replace("kind(paddle).", "kind(paddles)."))
+    (copy / "creative_py" / "kinds" / "paddle.py").rename(copy / "creative_py" / "kinds" /
+                                                          "paddles.py")
+    proc, lines = _run_in_tree(copy, tmp_path, "make-tool", "paddle_tube",
+                               "shaft_length=long", "--name", "p1", "--no-slice",
+                               "--out", str(tmp_path / "tools"))
+    assert proc.returncode == 0, proc.stderr
+    assert not [line for line in lines if line.startswith("error")], proc.stderr
+    assert (tmp_path / "tools" / "p1").is_dir()
+    case = copy / "ontology" / "cases" / "paddle_tube.pl"
+    case.write_text(case.read_text().replace("case_tool_class(paddle_tube, paddle).",
+                                             "case_tool_class(paddle_tube, paddles)."))
+    line = next(n for n, t in enumerate(case.read_text().splitlines(), 1)
+                if t.startswith("case_tool_class("))
+    proc, lines = _run_in_tree(copy, tmp_path, "run", "paddle_tube", "--out",
+                               str(tmp_path / "runs"))
+    assert proc.returncode == 2, proc.stderr
+    assert len(lines) == 1 and lines[0].startswith("error: ")
+    roots = ", ".join(
+        f"{m.group(1)} of kinds/{p.name}" for p in sorted(kinds.glob("*.pl"))
+        for m in [re.search(r"^subclass_of\((\w+), (?:tool|object)\)\.", p.read_text(), re.M)])
+    assert "paddle of kinds/paddles.pl" in roots and "hook_like of kinds/hook_like.pl" in roots
+    assert lines[0].endswith(
+        f"{case}:{line}: case_tool_class/2 names the tool class paddles, which no kind of "
+        f"ontology/kinds/ has: rename it to a kind's root class ({roots}), or add "
+        f"subclass_of(paddles, tool) to its kind's file")
     assert not (tmp_path / "runs").exists()

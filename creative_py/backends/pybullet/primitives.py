@@ -46,7 +46,7 @@ from __future__ import annotations
 
 import logging
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any, Callable, Mapping, Sequence
 
 import numpy as np
@@ -67,13 +67,16 @@ REQUIRED = None
 
 @dataclass(frozen=True)
 class Primitive:
-    """A registered primitive: its function, its options (``name -> default``), and the
-    name of the world target it takes (``""`` for none)."""
+    """A registered primitive: its function, its options (``name -> default``), the
+    name of the world target it takes (``""`` for none), and the bounds of those of its
+    options whose meaning is its own (``name -> (low, high, unit)``, before
+    :data:`OPTION_BOUNDS`, :func:`option_bound`)."""
 
     name: str
     run: Callable[[Any, Mapping[str, Any], tuple], SkillOutcome]
     options: Mapping[str, Any]
     target: str = ""
+    bounds: Mapping[str, tuple[float, float, str]] = field(default_factory=dict)
 
     def needs_held_tool(self, opts: Mapping[str, Any]) -> bool:
         """Return whether the primitive moves a held tool (checked before perceiving)."""
@@ -157,6 +160,12 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     space. It then lowers the tool to ``clearance`` above the target (its perceived
     top), inserts it along +x until the prong is at X, raises the handle if needed so
     that the lowered prong clears the tube's floor, and turns the tool to Roll.
+
+    ``clearance`` is the height of the handle's underside above the target's perceived
+    top during the insertion (m). A negative value puts the underside that far below
+    the top, so that a tool without a prong (a plain stick) meets the target's side and
+    pushes or pulls it; it may not go below :data:`MIN_INSERT_CLEARANCE_M` (its bound in
+    :data:`PRIMITIVES`). The handle never goes below the passage's floor.
     """
     if not isinstance(ep.kind, HandleHeld):
         raise TypeError(f"insert_at_pose moves handled tools, not {ep.spec.kind}")
@@ -471,13 +480,21 @@ def _kind_grasp_options() -> dict[str, Any]:
     return out
 
 
+MIN_INSERT_CLEARANCE_M = -0.05
+"""The lowest ``clearance`` of ``insert_at_pose`` (m): the handle's underside at most
+5 cm below the target's top. A target a tool is inserted over lies in a passage (the
+tube's 7 cm, the shelf's 4 cm of room) and is lower than that, so a lower value would
+put the handle under the target, which is nonsense."""
+
+
 PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("grasp", grasp, _kind_grasp_options()),
     Primitive("insert_at_pose", insert_at_pose,
               {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
                "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
                **SLIP_OPTIONS},
-              target="tip"),
+              target="tip",
+              bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
     Primitive("place_on_floor", place_on_floor,
               {"hold_angle": REQUIRED, "carry_height": 0.10, "release_height": 0.003,
                "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
@@ -515,11 +532,23 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     "grasp_slip_max_rad": (0.0, math.pi, "rad"), "grasp_slip_max_m": (0.0, 1.0, "m"),
 }
 """The bounds ``(low, high, unit)`` of every numeric option of the primitives and of
-the tool kinds' grasps, by option name; a ``steps`` option must be a whole number, an
+the tool kinds' grasps, by option name, unless the primitive bounds it itself
+(:attr:`Primitive.bounds`, :func:`option_bound`: ``insert_at_pose``'s ``clearance``
+may be negative, a grasp's may not); a ``steps`` option must be a whole number, an
 option whose default is true or false (``posture_search``, ``perceive``, ``by_hand``,
 ``park_robot``) must be true or false. The loader checks every skill's options in
 every variant and location (:func:`creative_py.backends.pybullet.world.check_values`), so that no
 number of ``case.toml`` makes a motion or a wait run without end."""
+
+
+def option_bound(primitive_name: str, option: str) -> tuple[float, float, str] | None:
+    """Return the bound ``(low, high, unit)`` of ``option`` of the primitive named
+    ``primitive_name``: its own (:attr:`Primitive.bounds`), else :data:`OPTION_BOUNDS`'s,
+    else None (an option without a numeric bound)."""
+    p = PRIMITIVES.get(primitive_name)
+    if p is not None and option in p.bounds:
+        return p.bounds[option]
+    return OPTION_BOUNDS.get(option)
 
 
 def option_flags() -> frozenset[str]:

@@ -481,7 +481,8 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     Bounded, each error naming the file and the field: the bodies' numbers
     (:mod:`creative_py.backends.pybullet.scene`), every number of ``[tool_start]`` and of the robot's
     start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
-    (:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
+    (:func:`creative_py.backends.pybullet.primitives.option_bound`: the primitive's own
+    bound, else :data:`~creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
     (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`).
     """
     from creative_py.backends.pybullet import oracles, primitives
@@ -515,8 +516,8 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
             if k in flags:
                 if not isinstance(v, bool):
                     raise WorldFileError(f"{where}: must be true or false, got {v!r}")
-            elif k in primitives.OPTION_BOUNDS:
-                check_bound(v, primitives.OPTION_BOUNDS[k], where,
+            elif (bound := primitives.option_bound(s.primitive, k)) is not None:
+                check_bound(v, bound, where,
                             episode if isinstance(s.options[k], str) else "")
     words = oracle_words(world)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=words)

@@ -1,10 +1,14 @@
 """Exact tests of the manufacturing path (creative_py/fabrication/manufacture.py).
 
-Whole values: the vocabularies the ontology gives the hook, rake, pull_cube_tool, wedge
-and paddle_tube cases, every line a bad spec or context gets, the dimensions the real
-CLP(R) size model (Prolog) solves for each kind, the catalogue facts of the sized tool,
-the log lines, and one written tool (no G-code: the slicing is tested in
-test_manufacture.py). The helpers that need no Prolog are called directly.
+Whole values: the vocabularies the ontology gives every case (each its kind's), every
+line a bad spec or context gets, the dimensions the real CLP(R) size model (Prolog)
+solves for each kind, the catalogue facts of the sized tool, the log lines, and one
+written tool (no G-code: the slicing is tested in test_manufacture.py). The helpers
+that need no Prolog are called directly.
+
+What every case or kind has is derived from the cases that exist (``creative cases``:
+:func:`creative_py.case.load_cases`) and the ontology, never from a list of them: a new
+world folder with its ontology file, or a new kind, changes nothing here.
 """
 
 from __future__ import annotations
@@ -13,10 +17,12 @@ import json
 import logging
 import re
 import time
+from pathlib import Path
 
 import pytest
 
 from creative_py.bridge import Compound, Engine, PrologError, Var
+from creative_py.case import load_cases
 from creative_py.kinds import spec_from_dict
 from creative_py.kinds.block import BlockSpec
 from creative_py.kinds.hook_like import HookSpec
@@ -56,13 +62,23 @@ WEDGE_KINDS = {"block": (("object", "block"), {
 PADDLE_KINDS = {"paddle": (("tool", "paddle"), {
     "shaft_length": ("short", "medium", "long"), "shaft_width": ("thin", "thick"),
     "blade_width": ("narrow", "wide"), "blade_length": ("short", "long")})}
+# The vocabulary of each kind's root class (ontology/kinds/<kind>.pl), for every case of
+# that kind.
+KIND_VOCABULARIES = {"hook_like": HOOK_KINDS, "block": WEDGE_KINDS, "paddle": PADDLE_KINDS}
 HOOK_ALLOWED = ("kind=hook|stick; handle_length=short|medium|long; handle_width=thin|thick; "
                 "hook_length=short|long; hook_width=narrow|wide; hook_side=right|left; "
                 "hook_angle=acute|right|obtuse")
-KNOWN_FACTS = ("tube_length_m/2, tube_inner_m/3, reach_zone/4, shelf_depth_m/2, "
-               "shelf_clearance_m/3, door_gap_m/2, max_tool_length/1, min_wall_m/1, "
-               "min_handle_width_m/1, reach_margin_m/1, tube_clearance_m/1, min_prong_m/1, "
-               "shelf_prong_margin_m/1, shelf_flat_margin_m/1, min_tip_height_m/1")
+# The task facts the shipped kinds' and cases' size models read, in the ontology's order;
+# another case or kind may add its own anywhere among them.
+SHIPPED_FACTS = {
+    "tube_length_m": 2, "tube_inner_m": 3, "reach_zone": 4, "shelf_depth_m": 2,
+    "shelf_clearance_m": 3, "door_gap_m": 2, "max_tool_length": 1, "min_wall_m": 1,
+    "min_handle_width_m": 1, "reach_margin_m": 1, "tube_clearance_m": 1,
+    "min_prong_m": 1, "shelf_prong_margin_m": 1, "shelf_flat_margin_m": 1,
+    "min_tip_height_m": 1}
+# The cases that exist, as `creative cases` lists them and an unknown case's error names
+# them.
+KNOWN_CASES = ", ".join(sorted(load_cases()))
 ATOM_RULE = "must be a Prolog atom: a lower-case ASCII letter followed by letters, digits or underscores"
 LONG_TUBE = [C("tube_length_m", "tube1", 0.45), C("tube_inner_m", "tube1", 0.1, 0.07)]
 SHELF = [C("shelf_depth_m", "shelf1", 0.3), C("shelf_clearance_m", "shelf1", 0.24, 0.04)]
@@ -154,27 +170,41 @@ def fresh_vocabularies(monkeypatch):
     monkeypatch.setattr(manufacture, "_VOCABULARIES", {})
 
 
-def test_tool_vocabulary_of_every_case_is_the_ontologys(engine, fresh_vocabularies):
-    assert tool_vocabulary(engine, "hook") == ToolVocabulary("hook", HOOK_KINDS)
-    assert tool_vocabulary(engine, "wedge") == ToolVocabulary("wedge", WEDGE_KINDS)
-    assert tool_vocabulary(engine, "rake") == ToolVocabulary("rake", HOOK_KINDS)
-    assert tool_vocabulary(engine, "pull_cube_tool") == ToolVocabulary("pull_cube_tool",
-                                                                       HOOK_KINDS)
-    assert tool_vocabulary(engine, "paddle_tube") == ToolVocabulary("paddle_tube", PADDLE_KINDS)
+def test_tool_vocabulary_of_every_case_is_its_kinds(engine, fresh_vocabularies):
+    roots = {}
+    for case in sorted(load_cases()):
+        root = str(engine.tool_vocabulary(case)[0].args[0])     # case_tool_class/2
+        roots[case] = root
+        if root in KIND_VOCABULARIES:
+            assert tool_vocabulary(engine, case) == ToolVocabulary(case,
+                                                                   KIND_VOCABULARIES[root])
+    # the paper's two cases and the paddle case are among them, with their kinds
+    assert {c: roots.get(c) for c in ("hook", "wedge", "paddle_tube")} == {
+        "hook": "hook_like", "wedge": "block", "paddle_tube": "paddle"}
     assert tool_vocabulary(engine, "hook") is tool_vocabulary(engine, "hook")   # asked once
     with pytest.raises(ValueError) as info:
         tool_vocabulary(engine, "door")
-    assert str(info.value) == ("unknown case 'door'; known cases: hook, paddle_tube, "
-                               "pull_cube_tool, rake, wedge")
+    assert str(info.value) == f"unknown case 'door'; known cases: {KNOWN_CASES}"
+    assert "door" not in KNOWN_CASES.split(", ")
+
+
+def _ontology_text() -> str:
+    root = Path(__file__).resolve().parents[3] / "ontology"
+    return "\n".join(p.read_text() for p in sorted(root.rglob("*.pl")))
 
 
 def test_context_facts_are_the_size_models(engine):
-    assert context_facts(engine) == {
-        "tube_length_m": 2, "tube_inner_m": 3, "reach_zone": 4, "shelf_depth_m": 2,
-        "shelf_clearance_m": 3, "door_gap_m": 2, "max_tool_length": 1, "min_wall_m": 1,
-        "min_handle_width_m": 1, "reach_margin_m": 1, "tube_clearance_m": 1,
-        "min_prong_m": 1, "shelf_prong_margin_m": 1, "shelf_flat_margin_m": 1,
-        "min_tip_height_m": 1}
+    facts = context_facts(engine)
+    # the shipped size models' facts, whole and in the ontology's order
+    assert {n: a for n, a in facts.items() if n in SHIPPED_FACTS} == SHIPPED_FACTS
+    assert [n for n in facts if n in SHIPPED_FACTS] == list(SHIPPED_FACTS)
+    # any other is a context fact some size_constraint/3 or a margin size_parameter/3 names
+    text = _ontology_text()
+    for name, arity in facts.items():
+        assert isinstance(arity, int) and arity >= 1
+        if name not in SHIPPED_FACTS:
+            assert (re.search(rf"size_constraint\(\w+,\s*{name}\(", text)
+                    or re.search(rf"size_parameter\({name},", text)), name
 
 
 # ---------------------------------------------------------------- parse_spec
@@ -239,8 +269,7 @@ def test_parse_spec_gives_the_whole_literal_lists(engine, fresh_vocabularies):
                   "shape=triangular_prism|box|cylinder; block_length=short|medium|long; "
                   "block_width=narrow|wide; block_height=low|high; "
                   "mechanical_advantage=below_one|above_one"),
-    ("door", "shape=box",
-     "unknown case 'door'; known cases: hook, paddle_tube, pull_cube_tool, rake, wedge"),
+    ("door", "shape=box", f"unknown case 'door'; known cases: {KNOWN_CASES}"),
 ])
 def test_parse_spec_refuses_a_bad_spec_in_one_whole_line(case, text, message):
     with pytest.raises(ValueError) as info:
@@ -258,6 +287,8 @@ def test_parse_spec_refuses_a_bad_tool_name(tool):
 # ---------------------------------------------------------------- parse_context
 
 def test_parse_context_gives_the_facts_or_one_whole_line(engine):
+    known = ", ".join(f"{n}/{a}" for n, a in context_facts(engine).items())
+    assert set(SHIPPED_FACTS) <= set(context_facts(engine))
     assert parse_context(engine, "reach_zone(zone1, -0.6, 0, 0.6), min_wall_m(0.004)") == [
         C("reach_zone", "zone1", -0.6, 0, 0.6), C("min_wall_m", 0.004)]
     assert parse_context(engine, "") == []
@@ -268,7 +299,7 @@ def test_parse_context_gives_the_facts_or_one_whole_line(engine):
         with pytest.raises(ValueError) as info:
             parse_context(engine, text)
         assert str(info.value) == (f"context {text!r}: {why}; the size model understands "
-                                   f"{KNOWN_FACTS}")
+                                   f"{known}")
     with pytest.raises(ValueError) as info:
         parse_context(engine, "min_wall_m(0.01), tube_length_m(tube1, X)")
     assert str(info.value) == ("context 'min_wall_m(0.01), tube_length_m(tube1, X)': "
@@ -421,8 +452,7 @@ def test_size_tool_refuses_a_bad_name_or_case_and_passes_other_prolog_errors(eng
     assert str(info.value) == f"tool name 'X1' {ATOM_RULE}"
     with pytest.raises(ValueError) as info:
         size_tool(engine, "lever", [C("hook", "a")], [], "x")
-    assert str(info.value) == ("unknown case 'lever'; known cases: hook, paddle_tube, "
-                               "pull_cube_tool, rake, wedge")
+    assert str(info.value) == f"unknown case 'lever'; known cases: {KNOWN_CASES}"
     with pytest.raises(PrologError) as info:
         size_tool(engine, "hook", [C("hook", "a")], [C("tube_length_m", "tube1", "far")], "x")
     assert str(info.value) == "solve_size: error(existence_error(size_parameter,far),_G0)"
