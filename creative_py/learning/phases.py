@@ -167,7 +167,8 @@ def _created_tool(c: Any, run_dir: Path) -> CreatedToolSummary:
     return CreatedToolSummary(
         name=c.name, replaced=c.replaced, general=c.general, instance=c.instance,
         structural=list(c.structural), dims=dict(c.dims),
-        files={k: _relative(run_dir, v) for k, v in c.files.items()},
+        files=({k: _relative(run_dir, v) for k, v in c.files.items()}
+               if isinstance(c.files, dict) else c.files),
         trial_outcome=c.trial_outcome, eval_outcomes=list(c.eval_outcomes),
         mass_kg=c.mass_kg, print=PrintSummary.from_dict(c.print, f"{where}.print"),
         strength=StrengthSummary.from_dict(c.strength, f"{where}.strength"))

@@ -382,8 +382,8 @@ class CreatedToolSummary(Part):
     instance: Optional[str] = None
     structural: list[str] = field(default_factory=list)
     dims: Optional[dict[str, Any]] = None
-    files: dict[str, str] = field(default_factory=dict)
-    """Its files by kind, relative to the run folder."""
+    files: Optional[dict[str, Any]] = None
+    """Its files by kind (``urdf``, ``stl``, ...), relative to the run folder."""
     trial_outcome: Optional[str] = None
     eval_outcomes: list[str] = field(default_factory=list)
     mass_kg: Optional[float] = None
@@ -533,9 +533,12 @@ class RunSummary(Part):
             raise ValueError(f"{path}: {exc}") from None
 
 
-def as_summary(summary: "RunSummary | dict[str, Any]") -> RunSummary:
-    """Return ``summary`` as a :class:`RunSummary` (a dict is read as ``summary.json``)."""
-    return summary if isinstance(summary, RunSummary) else RunSummary.from_dict(summary)
+def as_summary(summary: "RunSummary | dict[str, Any]", warn: Warn = None) -> RunSummary:
+    """Return ``summary`` as a :class:`RunSummary` (a dict is read as ``summary.json``,
+    with ``warn`` as :meth:`Part.from_dict` takes it)."""
+    if isinstance(summary, RunSummary):
+        return summary
+    return RunSummary.from_dict(summary, warn=warn)
 
 
 # --------------------------------------------------------------------- checking
@@ -551,8 +554,8 @@ def _hints(cls: type) -> dict[str, Any]:
 def _typed(value: Any, tp: Any, name: str, warn: Warn) -> Any:
     """Return ``value`` checked against the type ``tp`` (a part read as its class, a
     float written as ``"nan"`` or ``"inf"`` read back as a float); raise ValueError
-    naming field ``name``. With ``warn``, a list item of the wrong type is dropped and
-    said."""
+    naming field ``name``. With ``warn``, a list item or mapping value of the wrong type
+    is dropped and said."""
     origin = typing.get_origin(tp)
     if tp is Any:
         return value
@@ -562,11 +565,10 @@ def _typed(value: Any, tp: Any, name: str, warn: Warn) -> Any:
         options = typing.get_args(tp)
         if value is None and type(None) in options:
             return None
+        options = tuple(o for o in options if o is not type(None))
+        if len(options) == 1:  # Optional[X]: X's own error, naming the inner field
+            return _typed(value, options[0], name, warn)
         for option in options:
-            if option is type(None):
-                continue
-            if isinstance(option, type) and issubclass(option, Part):
-                return _typed(value, option, name, warn)
             try:
                 return _typed(value, option, name, warn)
             except ValueError:
@@ -605,7 +607,15 @@ def _typed(value: Any, tp: Any, name: str, warn: Warn) -> Any:
         if not isinstance(value, dict):
             raise _wrong(name, value, tp)
         _key, item = typing.get_args(tp) or (Any, Any)
-        return {k: _typed(v, item, f"{name}.{k}", None) for k, v in value.items()}
+        out_map = {}
+        for k, v in value.items():
+            try:
+                out_map[k] = _typed(v, item, f"{name}.{k}", warn)
+            except ValueError as exc:
+                if warn is None:
+                    raise
+                warn(f"{exc}; not shown")
+        return out_map
     raise TypeError(f"field {name!r}: type {tp} is not one a summary can check")
 
 
@@ -622,6 +632,8 @@ def _type_name(tp: Any) -> str:
                            if t is not type(None))
     if isinstance(tp, type) and issubclass(tp, Part):
         return "object"
+    if typing.get_origin(tp) is not None:
+        return str(tp).replace("typing.", "")
     return getattr(tp, "__name__", None) or str(tp).replace("typing.", "")
 
 

@@ -125,7 +125,9 @@ class RunContents:
     paper_trials: int | None = None
 
     def __post_init__(self) -> None:
-        self.summary = as_summary(self.summary)
+        # A summary given as a dict (built by hand) is read as the reports read a file:
+        # a value of the wrong type is left out.
+        self.summary = as_summary(self.summary, warn=lambda _why: None)
 
     @property
     def columns(self) -> list[tuple[str, Callable[[TrialRecord], str]]]:

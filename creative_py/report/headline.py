@@ -85,7 +85,8 @@ def headline(run: RunContents) -> Headline:
         out.lines.append(f"One demonstration, with {s.demonstration.tool}.")
     if use is not None and use.trials is not None:
         n = use.trials
-        ok = sum(1 for t in run.trials if t.phase == "use" and t.outcome == "success")
+        ok = sum(1 for t in run.trials if t.get("phase") == "use"
+                 and t.get("outcome") == "success")
         budget = f" of a budget of {run.budget}" if run.budget else ""
         text = f"Tool-use learning: {n} trials{budget} ({ok} succeeded)"
         if use.stop:
