@@ -145,7 +145,7 @@ def test_a_tool_card_without_the_summary_s_fields(tmp_path):
     dropped = []
     created = CreatedToolSummary.from_dict({"name": "t", "replaced": "a", "dims": "big"},
                                            warn=dropped.append)
-    assert dropped == ["field 'dims': 'big' is not of type dict; not shown"]
+    assert dropped == ["field 'dims': 'big' is not of type dict[str, Any]; not shown"]
     bare = ToolEntry("t", "tools/t", created, None, None, [])
     assert _tool_card(tmp_path, bare) == (
         '<article class="tool" id="tool-t"><h3>t</h3>'

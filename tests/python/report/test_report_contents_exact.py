@@ -221,7 +221,8 @@ def test_odd_entries_are_skipped_with_a_warning_and_the_rest_kept(tmp_path):
         f"{run / 'trials.jsonl'}: line 3 is not a JSON object (Unterminated string "
         f"starting at); skipped",
         f"{s}: field 'pddl.create': 'not a table' is not a JSON object; not shown",
-        f"{s}: field 'create.created_tools[0].dims': 1 is not of type dict; not shown",
+        f"{s}: field 'create.created_tools[0].dims': 1 is not of type dict[str, "
+        f"Any]; not shown",
         f"{s}: field 'create.created_tools[1]': 'hook_x' is not a JSON object; not shown",
         f"{s}: field 'videos[0]': 'videos/use-1.mp4' is not a JSON object; not shown",
         f"{s}: field 'videos[1].file': 7 is not of type str; not shown",
