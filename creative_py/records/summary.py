@@ -419,6 +419,12 @@ class CreateSummary(Part):
     """The harder task's action models, when a tool solved it."""
 
     @property
+    def catalogue_recorded(self) -> bool:
+        """Whether the summary records the catalogued objects tried (an older one, from
+        before they were tried first, does not)."""
+        return self.keys is None or "catalogue" in self.keys
+
+    @property
     def solver(self) -> Optional[str]:
         """The tool that solved the harder task as ``solved_by`` says (the catalogued
         object or the created tool), or None."""

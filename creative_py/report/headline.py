@@ -146,7 +146,7 @@ def _creation_line(create: CreateSummary) -> str:
     if create.catalogue:
         bits.append("catalogued objects tried first: " + ", ".join(
             f"{c.tool} ({c.outcome})" for c in create.catalogue))
-    elif create.keys is None or "catalogue" in create.keys:
+    elif create.catalogue_recorded:
         bits.append("no catalogued object tried")
     solved = create.solved_by
     if solved == "created":
