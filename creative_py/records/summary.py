@@ -121,7 +121,8 @@ class Part:
 
 
 class _Dropped(Exception):
-    """A required field was missing and ``warn`` said so: the part is not shown."""
+    """A required field was missing or of the wrong type and ``warn`` said so: the part
+    it belongs to is not shown."""
 
 
 def _default(f: Any) -> Any:
