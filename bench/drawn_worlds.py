@@ -1,7 +1,7 @@
 """Draw randomised worlds and count how many needed their demonstration's location redrawn.
 
 For each world seed, draws the case's world as ``creative run CASE --world-seed N``
-does (:func:`creative_py.learning.run.draw_catalogue_world`): the catalogue numbers,
+does (:func:`creative_py.learning.drawn_world.draw_catalogue_world`): the catalogue numbers,
 the order, the locations and then the trainer's demonstration in the physics (the
 only physics run here besides the sampler's own check that every drawn tool lies
 still), drawing the demonstration's location again while the demonstration fails.
@@ -28,7 +28,7 @@ ROOT = Path(__file__).resolve().parent.parent
 def main() -> int:
     from creative_py.bridge import Engine
     from creative_py.case import get_case
-    from creative_py.learning.run import draw_catalogue_world
+    from creative_py.learning.drawn_world import draw_catalogue_world
     from creative_py.backends.pybullet import load_world
     from creative_py.sweep import parse_ints
 

@@ -28,7 +28,8 @@ PAPER = {"hook": {"use_trials": 12, "create_failed": 1, "create_success": 1},
 ONE_RUN = """
 import json, sys
 from pathlib import Path
-from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import run_case
 folder = run_case(sys.argv[1], Path(sys.argv[2]),
                   RunOptions(seed=int(sys.argv[3]), eval_trials=int(sys.argv[4])))
 print(json.dumps(json.loads((folder.path / "summary.json").read_text())))

@@ -134,7 +134,7 @@ def _need_display(manifest=None) -> None:
     """Fail in one line unless the simulator's window can open (the display is set and
     can be opened: pybullet aborts the process on one it cannot open): the window of
     ``manifest``'s backend, or the default backend's before a manifest is read."""
-    from creative_py.learning.run import require_display
+    from creative_py.learning.checks import require_display
 
     try:
         require_display(manifest)
@@ -306,7 +306,7 @@ def sweep(
 ) -> None:
     """Run every combination of cases, strategies, seeds and world seeds on Ray and
     write sweep.csv and sweep.png."""
-    from creative_py.learning.run import PHASES
+    from creative_py.learning.options import PHASES
     from creative_py.sweep import (SweepOptions, parse_ints, parse_strategies, plan_runs,
                                    run_sweep)
 
@@ -388,7 +388,8 @@ def run(
     video clips)."""
     from rich.console import Console
 
-    from creative_py.learning.run import RunOptions, read_run_json, resume_run, run_case
+    from creative_py.learning.options import RunOptions, read_run_json
+    from creative_py.learning.run import resume_run, run_case
     from creative_py.report.progress import RunProgress
     from creative_py.world_files import WorldFileError
 

@@ -44,6 +44,8 @@ from datetime import datetime, timezone
 from pathlib import Path
 from typing import Any, Callable, Optional, Sequence
 
+from creative_py.records.summary import Outcomes, RunSummary, UsePhase, as_summary
+
 COLUMNS = ("case", "strategy", "seed", "world_seed", "status", "error", "trials_to_learn",
            "use_converged", "creation_trials", "creation_skipped_trial", "eval_successes",
            "eval_trials", "created_eval_successes", "created_eval_trials", "hg",
@@ -70,7 +72,7 @@ class RunSpec:
 @dataclass(frozen=True)
 class SweepOptions:
     """The run options every run of a sweep shares (see
-    :class:`creative_py.learning.run.RunOptions`); a sweep saves no video clip unless
+    :class:`creative_py.learning.options.RunOptions`); a sweep saves no video clip unless
     ``video`` says so."""
 
     phase: str = "all"
@@ -145,7 +147,8 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
     Never raises: a run that fails is a row with status ``crashed`` and the error's
     last line.
     """
-    from creative_py.learning.run import RunOptions, run_case
+    from creative_py.learning.options import RunOptions
+    from creative_py.learning.run import run_case
 
     t0 = time.perf_counter()
     row: dict[str, Any] = {k: "" for k in COLUMNS}
@@ -155,7 +158,7 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
         opts = RunOptions(seed=spec.seed, strategy=spec.strategy, world_seed=spec.world_seed,
                           **asdict(options))
         folder = run_case(spec.case, Path(runs_dir), opts, run_name=spec.name)
-        summary = json.loads((folder.path / "summary.json").read_text())
+        summary = RunSummary.read(folder.path)
         row.update(status="ok", run_dir=str(folder.path), **summary_row(summary))
     except BaseException as exc:  # noqa: BLE001 - a crashed run is a row, not the end
         if isinstance(exc, KeyboardInterrupt):
@@ -167,26 +170,34 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
     return row
 
 
-def summary_row(summary: dict[str, Any]) -> dict[str, Any]:
-    """Return the ``sweep.csv`` figures of one run's ``summary.json``."""
-    use = summary.get("use", {})
-    ev = summary.get("eval", {})
-    create = summary.get("create") or {}
-    created_eval = create.get("eval") or []
+def summary_row(summary: "RunSummary | dict[str, Any]") -> dict[str, Any]:
+    """Return the ``sweep.csv`` figures of one run's summary (a dict is read as
+    ``summary.json``); a figure the summary lacks is empty."""
+    s = as_summary(summary)
+    use = s.use or UsePhase()
+    ev = s.eval or Outcomes()
+    create = s.create if s.create is not None and s.create.to_dict() else None
+    created_eval = create.eval if create is not None else []
     return {
-        "trials_to_learn": use.get("trials", ""),
-        "use_converged": use.get("converged", ""),
-        "creation_trials": create.get("trials", ""),
-        "creation_skipped_trial": create.get("predicted_failure_skipped", ""),
-        "eval_successes": ev.get("successes", ""),
-        "eval_trials": ev.get("trials", ""),
+        "trials_to_learn": _cell(use.trials),
+        "use_converged": _cell(use.converged),
+        "creation_trials": _cell(create.trials if create else None),
+        "creation_skipped_trial": _cell(create.predicted_failure_skipped if create
+                                        else None),
+        "eval_successes": _cell(ev.successes),
+        "eval_trials": _cell(ev.trials),
         "created_eval_successes": (sum(o == "success" for o in created_eval)
                                    if create else ""),
         "created_eval_trials": len(created_eval) if create else "",
-        "hg": (summary.get("hypotheses") or {}).get("hg", ""),
-        "vs_count_initial": summary.get("vs_count_initial", ""),
-        "info_bound_trials": summary.get("info_bound_trials", ""),
+        "hg": _cell(s.hypotheses.hg if s.hypotheses else None),
+        "vs_count_initial": _cell(s.vs_count_initial),
+        "info_bound_trials": _cell(s.info_bound_trials),
     }
+
+
+def _cell(value: Any) -> Any:
+    """A figure of ``sweep.csv``: empty for one the summary lacks."""
+    return "" if value is None else value
 
 
 @dataclass

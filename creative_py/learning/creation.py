@@ -40,6 +40,7 @@ from typing import Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term
 from creative_py.learning.trials import TaskState, TrialRecord, TrialRunner, term_text
+from creative_py.records.summary import print_summary
 from creative_py.report.contents import readable_term
 from creative_py.report.table import dims_text
 
@@ -467,19 +468,3 @@ class ToolCreator:
             rec, _ = self.runner.run(use, "eval", i, vs, task, 0.0, label=False)
             out.append(rec.outcome)
         return out
-
-
-def print_summary(entry: dict[str, Any]) -> dict[str, Any]:
-    """Return the figures of a tool manifest's ``"print"`` entry that a run's summary
-    shows: the joint, the union's volume check, per piece its files, bounding box (mm),
-    volume (mm^3), print time (s) and filament (mm, g), and the totals."""
-    keys = ("name", "role", "stl", "gcode", "bounding_box_mm", "volume_mm3",
-            "print_time_s", "print_time", "filament_mm", "filament_g", "slice_wall_time_s")
-    return {
-        "pieces": [{k: p[k] for k in keys if k in p} for p in entry.get("pieces", [])],
-        **{k: entry[k] for k in ("joint", "clearance_mm", "build_volume_mm",
-                                 "union_volume_error_pct", "union_mismatch_pct",
-                                 "print_time_s", "filament_mm", "filament_g", "sliced",
-                                 "wall_time_s")
-           if k in entry},
-    }

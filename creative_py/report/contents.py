@@ -20,6 +20,8 @@ from pathlib import Path
 from typing import Any, Callable
 
 from creative_py.records.folder import read_records
+from creative_py.records.summary import (CreatedToolSummary, RunSummary, VideoEntry,
+                                         as_summary)
 from creative_py.records.trial import TrialRecord, trial_columns
 
 
@@ -33,14 +35,14 @@ class Clip:
         Path of the MP4 relative to the run folder (POSIX form).
     exists : bool
         Whether the file is there.
-    info : dict
+    info : VideoEntry or None
         What ``summary.json`` says of it (``phase``, ``trial``, ``tool``, ``tested``,
-        ``outcome``, ``why``); empty for a clip found only in ``videos/``.
+        ``outcome``, ``why``); None for a clip found only in ``videos/``.
     """
 
     file: str
     exists: bool
-    info: dict[str, Any] = field(default_factory=dict)
+    info: VideoEntry | None = None
 
 
 @dataclass
@@ -53,8 +55,8 @@ class ToolEntry:
         The tool's name.
     folder : str
         Its folder relative to the run folder (``tools/<name>``).
-    created : dict
-        Its entry of ``summary.json``'s ``create.created_tools`` (empty when only the
+    created : CreatedToolSummary or None
+        Its entry of ``summary.json``'s ``create.created_tools`` (None when only the
         folder is there, e.g. a run interrupted after manufacturing it).
     manifest : dict or None
         The tool's JSON (``tools/<name>/<name>.json``), None when missing or unreadable.
@@ -66,7 +68,7 @@ class ToolEntry:
 
     name: str
     folder: str
-    created: dict[str, Any]
+    created: CreatedToolSummary | None
     manifest: dict[str, Any] | None
     picture: str | None
     files: list[tuple[str, str]]
@@ -82,8 +84,10 @@ class RunContents:
         The run folder.
     trials : list of TrialRecord
         The readable records of ``trials.jsonl``, in order.
-    summary : dict
-        ``summary.json`` (empty when missing, as in a run still going, or unreadable).
+    summary : RunSummary
+        ``summary.json`` (empty, ``RunSummary()``, when missing, as in a run still
+        going, or unreadable; a field of the wrong type is left empty with a warning).
+        A dict is read as ``summary.json``.
     model_text : str or None
         The text of ``model.pl``.
     plot : str or None
@@ -109,7 +113,7 @@ class RunContents:
 
     path: Path
     trials: list[TrialRecord]
-    summary: dict[str, Any]
+    summary: RunSummary
     model_text: str | None
     plot: str | None
     clips: list[Clip]
@@ -119,6 +123,11 @@ class RunContents:
     pose_units: dict[str, str] = field(default_factory=dict)
     budget: int | None = None
     paper_trials: int | None = None
+
+    def __post_init__(self) -> None:
+        # A summary given as a dict (built by hand) is read as the reports read a file:
+        # a value of the wrong type is left out.
+        self.summary = as_summary(self.summary, warn=lambda _why: None)
 
     @property
     def columns(self) -> list[tuple[str, Callable[[TrialRecord], str]]]:
@@ -153,10 +162,7 @@ def read_run(run_dir: Path | str) -> RunContents:
     root = Path(run_dir)
     warnings: list[str] = []
     trials = read_records(root, warn=warnings.append)
-    summary = _read_json(root / "summary.json", warnings)
-    if not isinstance(summary, dict):
-        warnings.append(f"{root / 'summary.json'}: not a JSON object; no summary shown")
-        summary = {}
+    summary = _read_summary(root / "summary.json", warnings)
     model = root / "model.pl"
     model_text = model.read_text(encoding="utf-8", errors="replace") if model.is_file() else None
     units, budget, paper = _case_facts(summary)
@@ -168,7 +174,7 @@ def read_run(run_dir: Path | str) -> RunContents:
         warnings=warnings, pose_units=units, budget=budget, paper_trials=paper)
 
 
-def _case_facts(summary: dict[str, Any]) -> tuple[dict[str, str], int | None, int | None]:
+def _case_facts(summary: RunSummary) -> tuple[dict[str, str], int | None, int | None]:
     """The pose units, trial budget and paper's trial count of the run's case, as the run
     wrote them into ``summary.json`` (``pose_units``, ``trial_budget``, ``paper_trials``).
 
@@ -177,13 +183,9 @@ def _case_facts(summary: dict[str, Any]) -> tuple[dict[str, str], int | None, in
     was given, else unknown; the paper's count is not shown. The case's manifest is not
     read: the folder says everything the reports show.
     """
-    raw = summary.get("pose_units")
-    units = ({k: v for k, v in raw.items() if isinstance(k, str) and isinstance(v, str)}
-             if isinstance(raw, dict) else {})
-    options = summary.get("options") if isinstance(summary.get("options"), dict) else {}
-    budget = summary.get("trial_budget", options.get("max_trials"))
-    paper = summary.get("paper_trials")
-    return (units, budget if _count(budget) else None, paper if _count(paper) else None)
+    budget, paper = summary.budget, summary.paper_trials
+    return (dict(summary.pose_units), budget if _count(budget) else None,
+            paper if _count(paper) else None)
 
 
 def _count(value: Any) -> bool:
@@ -267,31 +269,36 @@ def _read_json(path: Path, warnings: list[str]) -> Any:
         return {}
 
 
-def _clips(root: Path, summary: dict[str, Any], warnings: list[str]) -> list[Clip]:
-    listed = summary.get("videos")
-    if not isinstance(listed, list):
+def _read_summary(path: Path, warnings: list[str]) -> RunSummary:
+    """The run's summary (empty when there is none or it is not a JSON object); a field
+    of the wrong type is left empty, with a warning."""
+    if not path.is_file():
+        return RunSummary()
+    try:
+        return RunSummary.read(path, warn=warnings.append)
+    except ValueError as exc:
+        warnings.append(f"{exc}; no summary shown")
+        return RunSummary()
+
+
+def _clips(root: Path, summary: RunSummary, warnings: list[str]) -> list[Clip]:
+    if summary.videos is None:
         return [Clip(p.relative_to(root).as_posix(), True)
                 for p in sorted((root / "videos").glob("*.mp4"))]
     clips = []
-    for entry in listed:
-        name = entry.get("file") if isinstance(entry, dict) else None
-        if not isinstance(name, str):
-            warnings.append(f"{root / 'summary.json'}: a videos entry has no file: {entry!r}")
-            continue
-        rel = relative_inside(root, name)
+    for entry in summary.videos:
+        rel = relative_inside(root, entry.file)
         if rel is None:
-            warnings.append(f"{root / 'summary.json'}: video {name} is outside the run "
-                            f"folder; not shown")
+            warnings.append(f"{root / 'summary.json'}: video {entry.file} is outside the "
+                            f"run folder; not shown")
             continue
-        info = {k: v for k, v in entry.items() if k != "file"}
-        clips.append(Clip(rel, (root / rel).is_file(), info))
+        clips.append(Clip(rel, (root / rel).is_file(), entry))
     return clips
 
 
-def _tools(root: Path, summary: dict[str, Any], warnings: list[str]) -> list[ToolEntry]:
-    create = summary.get("create")
-    created = create.get("created_tools", []) if isinstance(create, dict) else []
-    by_name = {c["name"]: c for c in created if isinstance(c, dict) and "name" in c}
+def _tools(root: Path, summary: RunSummary, warnings: list[str]) -> list[ToolEntry]:
+    created = summary.create.created_tools if summary.create else []
+    by_name = {c.name: c for c in created if c.name is not None}
     names = list(by_name)
     tools_dir = root / "tools"
     if tools_dir.is_dir():  # a tool written by an interrupted run is shown too
@@ -312,7 +319,7 @@ def _tools(root: Path, summary: dict[str, Any], warnings: list[str]) -> list[Too
         if manifest is not None:
             files.append(("json", f"{folder}/{name}.json"))
         picture = f"{folder}/{name}.png"
-        out.append(ToolEntry(name, folder, by_name.get(name, {}), manifest,
+        out.append(ToolEntry(name, folder, by_name.get(name), manifest,
                              picture if (root / picture).is_file() else None, files))
     return out
 

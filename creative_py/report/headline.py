@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
+from creative_py.records.summary import CreateSummary, CreatedToolSummary
 from creative_py.report.contents import RunContents, number_text
 
 STOP_TEXT = {"confirmed": "the learned model succeeded the required times in a row",
@@ -31,7 +32,8 @@ class Figure:
     Attributes
     ----------
     key : str
-        Where it is in ``summary.json`` (dotted: ``use.trials``).
+        Where it is in ``summary.json`` (dotted: ``use.trials``; the field of
+        :class:`~creative_py.records.summary.RunSummary` it comes from).
     raw : Any
         Its value there.
     value : str
@@ -64,12 +66,7 @@ def duration_text(seconds: float) -> str:
     return f"{seconds:.3g} s"
 
 
-def _dict(value: Any) -> dict[str, Any]:
-    return value if isinstance(value, dict) else {}
-
-
-def _successes(outcomes: Any) -> tuple[int, int]:
-    outcomes = outcomes if isinstance(outcomes, list) else []
+def _successes(outcomes: list[str]) -> tuple[int, int]:
     return sum(o == "success" for o in outcomes), len(outcomes)
 
 
@@ -77,27 +74,25 @@ def headline(run: RunContents) -> Headline:
     """Return the headline of a run folder's contents (empty parts are left out)."""
     s = run.summary
     out = Headline()
-    options = _dict(s.get("options"))
-    use, create, ev = _dict(s.get("use")), _dict(s.get("create")), _dict(s.get("eval"))
-    strategy = options.get("strategy") or use.get("strategy")
-    first = [f"case {s['case']}" if "case" in s else "",
+    use, create, ev = s.use, s.create, s.eval
+    strategy = s.strategy
+    first = [f"case {s.case}" if s.case is not None else "",
              f"strategy {strategy}" if strategy else "",
-             f"seed {s['seed']}" if "seed" in s else ""]
+             f"seed {s.seed}" if s.seed is not None else ""]
     if any(first):
         out.lines.append(", ".join(x for x in first if x).capitalize() + ".")
-    demo = _dict(s.get("demonstration"))
-    if demo.get("tool"):
-        out.lines.append(f"One demonstration, with {demo['tool']}.")
-    if "trials" in use:
-        n = use["trials"]
+    if s.demonstration is not None and s.demonstration.tool:
+        out.lines.append(f"One demonstration, with {s.demonstration.tool}.")
+    if use is not None and use.trials is not None:
+        n = use.trials
         ok = sum(1 for t in run.trials if t.get("phase") == "use"
                  and t.get("outcome") == "success")
         budget = f" of a budget of {run.budget}" if run.budget else ""
         text = f"Tool-use learning: {n} trials{budget} ({ok} succeeded)"
-        if use.get("stop"):
-            text += f"; stopped because {STOP_TEXT.get(use['stop'], use['stop'])}"
-        if use.get("converged") and use.get("trials_to_converge"):
-            text += f"; converged after {use['trials_to_converge']} trials"
+        if use.stop:
+            text += f"; stopped because {STOP_TEXT.get(use.stop, use.stop)}"
+        if use.converged and use.trials_to_converge:
+            text += f"; converged after {use.trials_to_converge} trials"
         if run.paper_trials:
             text += f"; the paper's robot used {run.paper_trials}"
         out.lines.append(text + ".")
@@ -106,91 +101,86 @@ def headline(run: RunContents) -> Headline:
                                   "tool-use trials (of the budget)"
                                   + (f"; paper: {run.paper_trials}" if run.paper_trials
                                      else "")))
-    if "trials" in ev:
-        done, total = ev.get("successes", 0), ev["trials"]
+    if ev is not None and ev.trials is not None:
+        done, total = ev.successes or 0, ev.trials
         out.lines.append(f"Evaluation of the learned model on the task it learned: "
                          f"{done} of {total} trials succeeded.")
         out.figures.append(Figure("eval.successes", done, f"{done} / {total}",
                                   "learned model's evaluation: successes / trials"))
-    if create:
+    if create is not None and create.to_dict():
         out.lines.append(_creation_line(create))
-        solved = create.get("solved_by")
-        tool = {"catalogue": create.get("catalogue_success"),
-                "created": create.get("success")}.get(solved) if solved else None
+        solved = create.solved_by
+        tool = create.solver if solved else None
         if solved:
             out.figures.append(Figure("create.solved_by", solved,
                                       f"{solved}" + (f" {tool}" if tool else ""),
-                                      f"harder task ({create.get('variant', '?')}) "
+                                      f"harder task ({create.variant or '?'}) "
                                       "solved by"))
-        done, total = _successes(create.get("eval"))
+        done, total = _successes(create.eval)
         if total:
             out.figures.append(Figure("create.eval", done, f"{done} / {total}",
-                                      f"created {create.get('success')}'s evaluation: "
+                                      f"created {create.success}'s evaluation: "
                                       "successes / trials"))
-        for tool_entry in create.get("created_tools") or []:
+        for tool_entry in create.created_tools:
             line, figures = _print_line(tool_entry)
             if line:
                 out.lines.append(line)
                 out.figures += figures
-    wall = _dict(s.get("wall_time_s"))
-    if "total" in wall:
-        parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.items() if k != "total")
-        out.lines.append(f"Wall time {number_text(wall['total'])} s"
+    wall = s.wall_time_s
+    if wall is not None and wall.total is not None:
+        parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.phases())
+        out.lines.append(f"Wall time {number_text(wall.total)} s"
                          + (f" ({parts})." if parts else "."))
-        out.figures.append(Figure("wall_time_s.total", wall["total"],
-                                  f"{number_text(wall['total'])} s", "wall time"))
+        out.figures.append(Figure("wall_time_s.total", wall.total,
+                                  f"{number_text(wall.total)} s", "wall time"))
     return out
 
 
-def _creation_line(create: dict[str, Any]) -> str:
-    text = f"Tool creation on the harder task {create.get('variant', '?')}"
-    predicted = _dict(create.get("predicted"))
+def _creation_line(create: CreateSummary) -> str:
+    text = f"Tool creation on the harder task {create.variant or '?'}"
+    predicted = create.predicted
     bits = []
-    if predicted and predicted.get("feasible") is False:
-        bits.append(f"{predicted.get('tool')} was predicted to fail, so its trial was "
+    if predicted is not None and predicted.feasible is False:
+        bits.append(f"{predicted.tool} was predicted to fail, so its trial was "
                     "not run")
-    tried = [c for c in create.get("catalogue") or [] if isinstance(c, dict)]
-    if tried:
+    if create.catalogue:
         bits.append("catalogued objects tried first: " + ", ".join(
-            f"{c.get('tool')} ({c.get('outcome')})" for c in tried))
-    elif "catalogue" in create:
+            f"{c.tool} ({c.outcome})" for c in create.catalogue))
+    elif create.catalogue_recorded:
         bits.append("no catalogued object tried")
-    solved = create.get("solved_by")
+    solved = create.solved_by
     if solved == "created":
-        trials = create.get("trials")
-        bits.append(f"solved by the created {create.get('success')}"
+        trials = create.trials
+        bits.append(f"solved by the created {create.success}"
                     + (f" after {trials} creation trial{'s' if trials != 1 else ''}"
                        if isinstance(trials, int) else ""))
     elif solved == "catalogue":
-        bits.append(f"solved by the catalogued {create.get('catalogue_success')}")
+        bits.append(f"solved by the catalogued {create.catalogue_success}")
     elif solved:
         bits.append(f"solved by {solved}")
-    elif create.get("needed") is not False:
-        bits.append("not solved" + (f" ({create['exhausted']})" if create.get("exhausted")
-                                    else ""))
-    done, total = _successes(create.get("eval"))
+    elif create.needed is not False:
+        bits.append("not solved" + (f" ({create.exhausted})" if create.exhausted else ""))
+    done, total = _successes(create.eval)
     if total:
         bits.append(f"the created tool's evaluation: {done} of {total} trials succeeded")
     return text + (": " + "; ".join(bits) if bits else "") + "."
 
 
-def _print_line(tool: Any) -> tuple[str, list[Figure]]:
+def _print_line(tool: CreatedToolSummary) -> tuple[str, list[Figure]]:
     """The print figures of a created tool (its ``summary.json`` entry's ``print``)."""
-    if not isinstance(tool, dict):
+    printed = tool.print
+    if printed is None:
         return "", []
-    printed = _dict(tool.get("print"))
-    seconds, grams = printed.get("print_time_s"), printed.get("filament_g")
-    if not isinstance(seconds, (int, float)) or not isinstance(grams, (int, float)):
+    seconds, grams = printed.print_time_s, printed.filament_g
+    if seconds is None or grams is None:
         return "", []
-    name = tool.get("name", "?")
-    pieces = printed.get("pieces") if isinstance(printed.get("pieces"), list) else []
-    metres = printed.get("filament_mm")
-    count = len(pieces) or 1  # a print record without its pieces is of one piece
+    name = tool.name or "?"
+    metres = printed.filament_mm
+    count = len(printed.pieces) or 1  # a print record without its pieces is of one piece
     line = (f"Printing {name}: {count} piece{'s' if count != 1 else ''}, "
             f"{duration_text(seconds)} of printing, {grams:.1f} g of filament"
-            + (f" ({metres / 1000:.1f} m)" if isinstance(metres, (int, float)) else "")
-            + (f"; mass {tool['mass_kg'] * 1000:.1f} g" if isinstance(tool.get("mass_kg"),
-                                                                     (int, float)) else "")
+            + (f" ({metres / 1000:.1f} m)" if metres is not None else "")
+            + (f"; mass {tool.mass_kg * 1000:.1f} g" if tool.mass_kg is not None else "")
             + ".")
     key = f"create.created_tools[{name}].print"
     return line, [Figure(f"{key}.print_time_s", seconds, duration_text(seconds),

@@ -18,6 +18,7 @@ from typing import Any, Callable
 from urllib.parse import quote
 
 from creative_py.records.folder import write_atomic
+from creative_py.records.summary import PddlCheck
 from creative_py.report.contents import (
     Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
     plan_steps, read_run, readable_term, relative_inside, why_text,
@@ -136,8 +137,8 @@ def render_html(run: RunContents) -> str:
     body = "".join(f'<section id="{key}"><h2>{escape(label)}</h2>{html}</section>'
                    for key, label, html in sections)
     subtitle = " · ".join(escape(x) for x in (
-        f"case {s['case']}" if s.get("case") else "", f"seed {s['seed']}" if "seed" in s else "",
-        f"phase {s['phase']}" if "phase" in s else "") if x)
+        f"case {s.case}" if s.case else "", f"seed {s.seed}" if s.seed is not None else "",
+        f"phase {s.phase}" if s.phase is not None else "") if x)
     warnings = ""
     if not (run.path / "summary.json").is_file():
         warnings = ('<div class="warn">No <code>summary.json</code>: the run has not finished '
@@ -216,15 +217,15 @@ def _trials_section(run: RunContents) -> str:
 def _predicted_row(run: RunContents) -> str:
     """The creation trial that was predicted to fail and not run, as a row of the trial
     table (``summary.json``'s ``create.predicted``), or ``""``."""
-    create = run.summary.get("create")
-    predicted = create.get("predicted") if isinstance(create, dict) else None
-    if not isinstance(predicted, dict) or predicted.get("feasible") is not False:
+    create = run.summary.create
+    predicted = create.predicted if create is not None else None
+    if predicted is None or predicted.feasible is not False:
         return ""
-    values = {"#": "-", "phase": "create", "n": "-", "tool": predicted.get("tool", "?"),
-              "variant": predicted.get("variant", ""), "loc": predicted.get("location", ""),
+    values = {"#": "-", "phase": "create", "n": "-", "tool": _or(predicted.tool, "?"),
+              "variant": _or(predicted.variant, ""), "loc": _or(predicted.location, ""),
               "pose": "-", "tested": "-",
-              "violated": literals_text(predicted.get("conflict")),
-              "outcome": "predicted failure, not run", "reason": predicted.get("why", "")}
+              "violated": literals_text(predicted.conflict),
+              "outcome": "predicted failure, not run", "reason": _or(predicted.why, "")}
     cells = "".join(f'<td class="col-{escape(h)}">{escape(readable_term(str(values.get(h, ""))))}'
                     "</td>" for h, _ in run.columns)
     return f'<tr class="predicted">{cells}</tr>'
@@ -247,45 +248,44 @@ def _clips_section(run: RunContents) -> str:
 
 def _clip_caption(clip: Clip) -> str:
     info = clip.info
-    if not info:
+    if info is None or not {k: v for k, v in info.to_dict().items() if k != "file"}:
         return f"<code>{escape(clip.file)}</code>"
-    head = " ".join(escape(str(info[k])) for k in ("phase", "trial") if k in info)
+    head = " ".join(escape(str(x)) for x in (info.phase, info.trial) if x is not None)
     parts = [f"<b>{head}</b>" if head else ""]
-    if info.get("tool"):
-        parts.append(escape(str(info["tool"])))
-    if info.get("tested"):
-        parts.append(f"tested <code>{escape(literals_text(info['tested']))}</code>")
-    if info.get("outcome"):
-        parts.append(_outcome(str(info["outcome"])))
+    if info.tool:
+        parts.append(escape(info.tool))
+    if info.tested:
+        parts.append(f"tested <code>{escape(literals_text(info.tested))}</code>")
+    if info.outcome:
+        parts.append(_outcome(info.outcome))
     text = " · ".join(p for p in parts if p)
-    if info.get("reason"):
-        text += f"<br>{escape(str(info['reason']))}"
-    if info.get("why"):
-        text += f"<br><i>kept as {escape(why_text(info['why']))}</i>"
+    if info.reason:
+        text += f"<br>{escape(info.reason)}"
+    if info.why:
+        text += f"<br><i>kept as {escape(why_text(info.why))}</i>"
     return text + f' <a href="{_url(clip.file)}">{escape(Path(clip.file).name)}</a>'
 
 
 def _tools_section(run: RunContents) -> str:
-    create = run.summary.get("create")
+    create = run.summary.create
     intro = ""
-    if isinstance(create, dict):
-        bits = [f"harder task: <b>{escape(str(create.get('variant', '?')))}</b>"]
-        if "needed" in create:
-            bits.append("creation needed" if create["needed"] else
+    if create is not None:
+        bits = [f"harder task: <b>{escape(_or(create.variant, '?'))}</b>"]
+        if create.needed is not None:
+            bits.append("creation needed" if create.needed else
                         "creation not needed (a catalogued tool succeeded)")
-        if create.get("solved_by"):
+        if create.solved_by:
             by = {"learned": "the learned model's own tool",
-                  "catalogue": f"the catalogued {create.get('catalogue_success')}",
-                  "created": f"the created {create.get('success')}"}
-            solver = by.get(create["solved_by"], str(create["solved_by"]))
+                  "catalogue": f"the catalogued {create.catalogue_success}",
+                  "created": f"the created {create.success}"}
+            solver = by.get(create.solved_by, create.solved_by)
             bits.append(f"solved by {escape(solver)}")
-        tried = [c for c in create.get("catalogue") or [] if isinstance(c, dict)]
-        if tried:
+        if create.catalogue:
             bits.append("catalogued objects considered first: " + ", ".join(
-                f"{escape(str(c.get('tool')))} ({escape(str(c.get('outcome')))})"
-                for c in tried))
-        if create.get("exhausted"):
-            bits.append(f"search exhausted: {escape(str(create['exhausted']))}")
+                f"{escape(str(c.tool))} ({escape(str(c.outcome))})"
+                for c in create.catalogue))
+        if create.exhausted:
+            bits.append(f"search exhausted: {escape(create.exhausted)}")
         intro = f"<p>{'; '.join(bits)}.</p>"
     if not run.tools:
         return intro + '<p class="none">This run created no tool.</p>'
@@ -300,14 +300,13 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
         return rel if rel is not None and (root / rel).is_file() else None
 
     head = [f"<h3>{escape(tool.name)}</h3>"]
-    if c:
+    if c is not None:
         head.append("<p>" + " &rarr; ".join(
-            f"<code>{escape(readable_term(str(c.get(k, ''))))}</code>"
-            for k in ("replaced", "general", "instance")) + "</p>")
-        outcomes = [f"creation trial {_outcome(str(c.get('trial_outcome', '?')))}"]
-        if c.get("eval_outcomes"):
-            outcomes.append("evaluation " + " ".join(_outcome(str(o))
-                                                      for o in c["eval_outcomes"]))
+            f"<code>{escape(readable_term(_or(x, '')))}</code>"
+            for x in (c.replaced, c.general, c.instance)) + "</p>")
+        outcomes = [f"creation trial {_outcome(_or(c.trial_outcome, '?'))}"]
+        if c.eval_outcomes:
+            outcomes.append("evaluation " + " ".join(_outcome(o) for o in c.eval_outcomes))
         head.append(f"<p>{'; '.join(outcomes)}</p>")
     if tool.picture:
         picture = (f'<figure><img src="{_url(tool.picture)}" alt="Render of {escape(tool.name)}">'
@@ -315,7 +314,7 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
     else:
         picture = f'<p class="none">No render ({escape(tool.folder)}/{escape(tool.name)}.png).</p>'
     facts = []
-    dims = c.get("dims") if isinstance(c.get("dims"), dict) else None
+    dims = c.dims if c is not None else None
     if dims:
         facts.append("<h4>Dimensions</h4>" + _key_value_table(
             {k: (_with_unit(k, v, "m") if isinstance(v, (int, float)) else v)
@@ -469,16 +468,16 @@ def _with_unit(key: str, value: Any, default: str = "") -> Any:
 
 def _hypotheses_section(run: RunContents) -> str:
     out = []
-    hyp = run.summary.get("hypotheses")
+    hyp = run.summary.hypotheses
     names = {"hs": "h<sub>s</sub>, the most specific hypothesis",
              "hg": "h<sub>g</sub>, the most general hypothesis"}
-    if isinstance(hyp, dict):
-        for key in ("hs", "hg"):
-            if key in hyp:
-                out.append(f"<h3>{names[key]}</h3>{_clause_html(str(hyp[key]))}")
-    create = run.summary.get("create")
-    models = create.get("model") if isinstance(create, dict) else None
-    if isinstance(models, list) and models:
+    if hyp is not None:
+        for key, clause in (("hs", hyp.hs), ("hg", hyp.hg)):
+            if clause is not None:
+                out.append(f"<h3>{names[key]}</h3>{_clause_html(clause)}")
+    create = run.summary.create
+    models = create.model if create is not None else None
+    if models:
         out.append("<h3>Model of the created tool</h3><pre>"
                    + escape("\n".join(readable_term(str(x)) for x in models)) + "</pre>")
     if run.model_text is not None:
@@ -499,57 +498,61 @@ def _clause_html(clause: str) -> str:
 
 def _plan_section(run: RunContents) -> str:
     out = []
-    plan = run.summary.get("plan")
-    if isinstance(plan, str):
+    plan = run.summary.plan
+    if plan is not None:
         steps = plan_steps(plan)
         if steps is None:
             out.append(f"<p>Prolog's planner: <code>{escape(plan)}</code></p>")
         else:
             out.append("<p>Prolog's planner, with the learned model:</p><ol class=\"plan\">"
                        + "".join(f"<li><code>{escape(x)}</code></li>" for x in steps) + "</ol>")
-    pddl = run.summary.get("pddl")
-    if isinstance(pddl, dict) and pddl:
+    tasks = run.summary.pddl.tasks() if run.summary.pddl is not None else []
+    if tasks:
         out.append("<h3>PDDL planner on the run's files</h3>")
-        for task, answer in pddl.items():
-            out.append(_pddl_html(run.path, str(task), answer) if isinstance(answer, dict)
-                       else f"<p>{escape(str(task))}: {escape(str(answer))}</p>")
+        for task, answer in tasks:
+            out.append(_pddl_html(run.path, task, answer))
     if run.pddl_files:
         out.append("<p>PDDL: " + " · ".join(f'<a href="{_url(n)}">{escape(n)}</a>'
                                            for n in run.pddl_files) + "</p>")
     return "".join(out) or '<p class="none">No plan recorded.</p>'
 
 
-def _pddl_html(root: Path, task: str, answer: dict[str, Any]) -> str:
+def _pddl_html(root: Path, task: str, answer: PddlCheck) -> str:
     """One PDDL planner answer: status, planner, files (linked when they are in the run
     folder), whether it agrees with Prolog's plan, and the plan once."""
-    names = [answer[k] for k in ("domain", "problem") if isinstance(answer.get(k), str)]
+    names = [n for n in (answer.domain, answer.problem) if n is not None]
     targets = [(n, relative_inside(root, n)) for n in names]
     files = " · ".join(f'<a href="{_url(rel)}">{escape(rel)}</a>' if rel and
                        (root / rel).is_file() else escape(n) for n, rel in targets)
     bits = [f"<b>{escape(task)}</b>"
-            + (f" ({escape(str(answer['variant']))} task)" if answer.get("variant") else ""),
-            f"{escape(str(answer.get('status', '?')))}"
-            + (f" by {escape(str(answer['planner']))}" if answer.get("planner") else "")]
-    if "equals_prolog" in answer:
-        bits.append("the same plan as Prolog's" if answer["equals_prolog"] else
+            + (f" ({escape(answer.variant)} task)" if answer.variant else ""),
+            f"{escape(_or(answer.status, '?'))}"
+            + (f" by {escape(answer.planner)}" if answer.planner else "")]
+    if answer.equals_prolog is not None:
+        bits.append("the same plan as Prolog's" if answer.equals_prolog else
                     "a plan other than Prolog's")
-    if "prolog_plan_valid" in answer:
-        bits.append("Prolog's plan is valid in PDDL" if answer["prolog_plan_valid"] else
+    if answer.prolog_plan_valid is not None:
+        bits.append("Prolog's plan is valid in PDDL" if answer.prolog_plan_valid else
                     "Prolog's plan is NOT valid in PDDL")
     if files:
         bits.append(files)
-    plan = answer.get("plan")
-    steps = ("<ol class=\"plan\">" + "".join(f"<li><code>{escape(str(x))}</code></li>"
+    plan = answer.plan
+    steps = ("<ol class=\"plan\">" + "".join(f"<li><code>{escape(x)}</code></li>"
                                              for x in plan) + "</ol>"
-             if isinstance(plan, list) and plan else "")
-    if not answer.get("equals_prolog") and isinstance(answer.get("prolog_plan"), list):
+             if plan else "")
+    if not answer.equals_prolog and answer.prolog_plan is not None:
         steps += ("<p>Prolog's plan:</p><ol class=\"plan\">" + "".join(
-            f"<li><code>{escape(str(x))}</code></li>" for x in answer["prolog_plan"])
+            f"<li><code>{escape(x)}</code></li>" for x in answer.prolog_plan)
             + "</ol>")
     return f"<p>{'; '.join(bits)}</p>{steps}"
 
 
 # --- small pieces ---------------------------------------------------------------------
+
+def _or(value: Any, default: str) -> str:
+    """A value of the summary as text, ``default`` for None."""
+    return default if value is None else str(value)
+
 
 def _url(rel: str) -> str:
     """A relative path as a URL attribute value: percent-encoded, which leaves no

@@ -12,6 +12,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Sequence, Union
 
+from creative_py.records.summary import RunSummary
 from creative_py.records.trial import TrialRecord, as_record
 
 Trials = Sequence[Union[TrialRecord, dict[str, Any]]]
@@ -96,15 +97,6 @@ def trial_labels(trials: Trials) -> list[str]:
     return out
 
 
-def summarise_trials(trials: Trials) -> dict[str, Any]:
-    """Return counts of trials and successes per phase."""
-    records = [as_record(t) for t in trials]
-    out: dict[str, Any] = {}
-    for phase in ("use", "create", "eval"):
-        ts = [t for t in records if t.phase == phase]
-        out[phase] = {
-            "trials": len(ts),
-            "successes": sum(t.outcome == "success" for t in ts),
-            "outcomes": [t.outcome for t in ts],
-        }
-    return out
+def plot_title(summary: RunSummary) -> str:
+    """Return the title of a run's plot: ``CREATIVE-py, hook case, seed 0``."""
+    return f"CREATIVE-py, {summary.case} case, seed {summary.seed}"

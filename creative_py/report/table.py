@@ -17,6 +17,7 @@ from rich.console import Console, Group
 from rich.table import Table
 from rich.text import Text
 
+from creative_py.records.summary import Hypotheses, StrengthSummary, VideoEntry
 from creative_py.report.contents import RunContents, literals_text, readable_term, why_text
 
 
@@ -65,31 +66,29 @@ def summary_lines(run: RunContents) -> list[str]:
     created tools (with print figures when sliced), video clips."""
     s = run.summary
     lines = []
-    hyp = s.get("hypotheses") if isinstance(s.get("hypotheses"), dict) else {}
-    for key in ("hs", "hg"):
-        lines.append(f"{key}: {readable_term(str(hyp.get(key, '?')))}")
-    if "plan" in s:
-        lines.append(f"plan: {s['plan']}")
-    pddl = s.get("pddl")
-    if isinstance(pddl, dict):
-        for task, answer in pddl.items():
-            if isinstance(answer, dict):
-                lines.append(f"pddl {task}: {answer.get('status', '?')} "
-                             f"{_plain(answer.get('plan', ''))}".rstrip())
+    hyp = s.hypotheses or Hypotheses()
+    for key, clause in (("hs", hyp.hs), ("hg", hyp.hg)):
+        lines.append(f"{key}: {readable_term('?' if clause is None else clause)}")
+    if s.plan is not None:
+        lines.append(f"plan: {s.plan}")
+    for task, answer in (s.pddl.tasks() if s.pddl is not None else []):
+        lines.append(f"pddl {task}: {answer.status or '?'} "
+                     f"{_plain(answer.plan or '')}".rstrip())
     for tool in run.tools:
         c = tool.created
-        if c:
-            lines.append(f"created {tool.name}: {readable_term(str(c.get('replaced')))} -> "
-                         f"{readable_term(str(c.get('instance')))}; {dims_text(c.get('dims'))} "
-                         f"({c.get('trial_outcome')}{strength_note(c.get('strength'))})")
+        if c is not None:
+            lines.append(f"created {tool.name}: {readable_term(str(c.replaced))} -> "
+                         f"{readable_term(str(c.instance))}; {dims_text(c.dims)} "
+                         f"({c.trial_outcome}{strength_note(c.strength)})")
         printed = (tool.manifest or {}).get("print")
         if isinstance(printed, dict):
             lines.append(f"print {tool.name}: {print_text(printed)}")
     for clip in run.clips:
-        what = " ".join(_plain(clip.info[k]) for k in ("phase", "trial", "tool", "outcome")
-                        if clip.info.get(k) is not None)
-        if clip.info.get("why"):
-            what += f" (kept as {why_text(clip.info['why'])})"
+        info = clip.info or VideoEntry()
+        what = " ".join(_plain(x) for x in (info.phase, info.trial, info.tool, info.outcome)
+                        if x is not None)
+        if info.why:
+            what += f" (kept as {why_text(info.why)})"
         lines.append(f"video {clip.file}{'' if clip.exists else ' (missing)'}"
                      f"{': ' + what if what else ''}")
     return lines
@@ -173,18 +172,22 @@ def _plain(value: Any) -> str:
     return str(value)
 
 
-def strength_note(strength: dict | None) -> str:
+def strength_note(strength: StrengthSummary | dict | None) -> str:
     """Return ``"; strength pass, 13.8 MPa, safety factor 3.61"`` for a created tool's
-    strength check (empty when it has none)."""
-    if not strength:
+    strength check (empty when it has none; a dict is read as the summary's
+    ``strength``)."""
+    if isinstance(strength, dict):
+        strength = StrengthSummary.from_dict(strength, "strength")
+    if strength is None or not strength.to_dict():
         return ""
-    sf = strength.get("safety_factor")
-    text = (f"; strength {strength.get('verdict')}, {strength.get('stress_mpa', 0):.1f} MPa, "
+    sf = strength.safety_factor
+    stress = strength.stress_mpa if strength.stress_mpa is not None else 0
+    text = (f"; strength {strength.verdict}, {stress:.1f} MPa, "
             f"safety factor {'-' if sf is None else f'{sf:.2f}'}")
-    if strength.get("thickened_into"):
-        text += f", thickened into {strength['thickened_into']}"
-    if strength.get("reason"):
-        text += f": {strength['reason']}"
-    if strength.get("caveat"):
-        text += f" ({strength['caveat']})"
+    if strength.thickened_into:
+        text += f", thickened into {strength.thickened_into}"
+    if strength.reason:
+        text += f": {strength.reason}"
+    if strength.caveat:
+        text += f" ({strength.caveat})"
     return text

@@ -9,7 +9,8 @@ G-code, and the pieces unite into the tool.
 import pybullet as pb
 import pytest
 
-from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import run_case
 from creative_py.mesh.check import check_print_files, check_tool_files
 from creative_py.mesh.export import read_tool_files
 

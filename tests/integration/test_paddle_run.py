@@ -7,7 +7,8 @@ import json
 
 import pytest
 
-from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import run_case
 from creative_py.records.folder import read_trials
 
 pytestmark = [pytest.mark.slow, pytest.mark.sim]

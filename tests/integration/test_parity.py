@@ -12,7 +12,8 @@ from pathlib import Path
 
 import pytest
 
-from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import run_case
 
 from parity import FIXTURES, differences, sequence
 

@@ -86,7 +86,7 @@ def test_two_folders_with_one_id_are_refused(tmp_path):
 
 def test_the_manifest_must_agree_with_the_ontology(tmp_path):
     from creative_py.bridge import Engine
-    from creative_py.learning.run import check_manifest
+    from creative_py.learning.checks import check_manifest
 
     engine = Engine.instance()
     check_manifest(engine, get_case("hook"))
@@ -103,7 +103,7 @@ def test_the_manifest_must_agree_with_the_ontology(tmp_path):
 @pytest.mark.sim
 def test_every_catalogue_is_described_in_the_ontology_s_vocabulary():
     from creative_py.bridge import Engine
-    from creative_py.learning.run import check_catalogue
+    from creative_py.learning.checks import check_catalogue
     from creative_py.backends.pybullet import load_world
     from creative_py.simulator import BackendUnavailable, backend_for
 

@@ -193,7 +193,7 @@ def test_a_dimension_outside_the_ontology_s_ranges_is_refused_before_any_trial(t
 def test_a_dimension_outside_the_ranges_is_accepted_when_the_world_says_so(tmp_path):
     from creative_py.bridge import Engine
     from creative_py.case import read_manifest
-    from creative_py.learning.run import check_catalogue
+    from creative_py.learning.checks import check_catalogue
     from creative_py.backends.pybullet import load_world
 
     world = _world_copy(tmp_path, 'handle_length = 0.20',

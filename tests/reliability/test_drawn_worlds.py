@@ -27,7 +27,7 @@ def hook():
 def ranges(hook):
     """The catalogue's qualitative ranges (the engine's; no physics)."""
     from creative_py.bridge import Engine
-    from creative_py.learning.run import catalogue_ranges
+    from creative_py.learning.checks import catalogue_ranges
 
     return catalogue_ranges(Engine.instance(), hook)
 
@@ -84,7 +84,7 @@ def test_world_seed_20_now_draws_a_world_whose_demonstration_succeeds(hook, monk
     demonstration succeeds in the world it returns."""
     from creative_py.bridge import Engine
     from creative_py.learning import tool_use
-    from creative_py.learning.run import DEMO_CHECK_SEED, draw_catalogue_world
+    from creative_py.learning.drawn_world import DEMO_CHECK_SEED, draw_catalogue_world
 
     real, runs = tool_use.run_demonstration, []
 

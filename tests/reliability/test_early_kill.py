@@ -12,7 +12,8 @@ from pathlib import Path
 import pytest
 
 from _runs import SHORT, creative, one_error_line, run_cli, shared_short_run, trials, wait_for
-from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import run_case
 from creative_py.records.folder import read_resume
 
 

@@ -16,7 +16,8 @@ from pathlib import Path
 
 import pytest
 
-from creative_py.learning.run import RunOptions, resume_run, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import resume_run, run_case
 
 pytestmark = pytest.mark.sim
 

@@ -115,7 +115,7 @@ def test_short_objects_are_predicted_out_of_reach(setting):
 
 
 def test_catalogue_first_is_off_under_the_paper_strategy_unless_asked():
-    from creative_py.learning.run import RunOptions
+    from creative_py.learning.options import RunOptions
 
     assert RunOptions().tries_catalogue is True
     assert RunOptions(strategy="paper").tries_catalogue is False

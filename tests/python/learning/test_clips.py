@@ -13,7 +13,7 @@ from typer.testing import CliRunner
 
 from creative_py.cli import app
 from creative_py.learning.clips import CLIP_NICE, ClipKeeper, failure_reason
-from creative_py.learning.run import RunOptions
+from creative_py.learning.options import RunOptions
 from creative_py.records.trial import TrialRecord
 from creative_py.backends.pybullet import recorder
 from creative_py.backends.pybullet.recorder import Recorder, VideoSpec

@@ -29,8 +29,9 @@ import pytest
 
 from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
-from creative_py.learning.creation import CreateResult, ToolCreator, print_summary
-from creative_py.learning.run import _creation_summary
+from creative_py.learning.creation import CreateResult, ToolCreator
+from creative_py.learning.phases import creation_summary
+from creative_py.records.summary import print_summary
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import read_resume
 from creative_py.backends.pybullet import load_world
@@ -115,7 +116,7 @@ def _recorded(name):
 
 
 def _check(res, runner, vs, records, name, tmp_path, learned=LEARNED):
-    assert _creation_summary(res, tmp_path) == _recorded(name)
+    assert creation_summary(res, tmp_path).to_dict() == _recorded(name)
     assert res.vs is vs
     assert res.trials == records[learned:]
     assert runner.trials == records
@@ -423,7 +424,7 @@ def test_a_tool_is_manufactured_into_the_run_folder(engine, world, vs, tmp_path)
     folder = run.path / "tools" / "hook_new1"
     recorded = json.loads((RUNS / "hook_s0" / "summary.json").read_text(encoding="utf-8"))
     tool = recorded["create"]["created_tools"][0]
-    made = _creation_summary(res, run.path)["created_tools"][0]
+    made = creation_summary(res, run.path).to_dict()["created_tools"][0]
     assert made["files"] == tool["files"]
     assert {k: str(folder / Path(v).name) for k, v in tool["files"].items()} \
         == res.success.files

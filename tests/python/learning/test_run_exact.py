@@ -23,11 +23,14 @@ from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.creation import CreatedTool, CreateResult
-from creative_py.learning.run import (
-    RunOptions, _case_facts, _check_pddl, _checked_world, _created_pddl, _creation_summary,
-    _earlier_summary, _finish, _open_folder, _plan_steps, _relative, _trial_runner,
-    catalogue_ranges, check_catalogue, check_manifest, read_run_json, require_display,
-    resume_run, run_case)
+from creative_py.learning.checks import (catalogue_ranges, check_catalogue, check_manifest,
+                                         require_display)
+from creative_py.learning.options import RunOptions, read_run_json
+from creative_py.learning.pddl_files import check_pddl, created_pddl, plan_steps
+from creative_py.learning.phases import _relative, case_facts, creation_summary
+from creative_py.learning.run import (_checked_world, _earlier_summary, _finish, _open_folder,
+                                      _trial_runner, resume_run, run_case)
+from creative_py.records.summary import RunSummary, WallTimes
 from creative_py.learning.trials import TrialRunner
 from creative_py.mesh.slicer import SliceError
 from creative_py.records.folder import RunFolder, read_resume
@@ -316,26 +319,30 @@ def test_resume_run_refuses_a_folder_without_run_json(tmp_path):
 # ---------------------------------------------------------------- small helpers
 
 def test_earlier_summary_is_a_finished_runs_summary_or_nothing(tmp_path):
-    assert _earlier_summary(tmp_path) == {}
+    assert _earlier_summary(tmp_path) is None
     (tmp_path / "summary.json").write_text("{oops", encoding="utf-8")
-    assert _earlier_summary(tmp_path) == {}
+    assert _earlier_summary(tmp_path) is None
     (tmp_path / "summary.json").write_bytes(b'{"a": "\xff"}')
-    assert _earlier_summary(tmp_path) == {}
+    assert _earlier_summary(tmp_path) is None
     (tmp_path / "summary.json").write_text("[1]", encoding="utf-8")
-    assert _earlier_summary(tmp_path) == {}
+    assert _earlier_summary(tmp_path) is None
+    (tmp_path / "summary.json").write_text('{"wall_time_s": {"total": "x"}}', encoding="utf-8")
+    assert _earlier_summary(tmp_path) is None  # not a summary's
     (tmp_path / "summary.json").write_text('{"wall_time_s": {"total": 1.5}, "é": 1}',
                                            encoding="utf-8")
-    assert _earlier_summary(tmp_path) == {"wall_time_s": {"total": 1.5}, "é": 1}
+    earlier = _earlier_summary(tmp_path)
+    assert earlier.wall_time_s == WallTimes(total=1.5)
+    assert earlier.to_dict() == {"wall_time_s": {"total": 1.5}, "é": 1}
 
 
 def test_plan_steps_of_a_plan_and_of_no_plan():
     plan = Compound("plan", ([Compound("pick_up", ("hook_a2",)),
                               Compound("pull_out", ("hook_a2", "cube1", 3)), "wait"],))
-    assert _plan_steps(plan) == [("pick_up", ["hook_a2"]),
+    assert plan_steps(plan) == [("pick_up", ["hook_a2"]),
                                  ("pull_out", ["hook_a2", "cube1", "3"]), ("wait", [])]
-    assert _plan_steps(Compound("plan", ([],))) == []
-    assert _plan_steps(Compound("no_plan", ("no_tool",))) is None
-    assert _plan_steps("plan") is None
+    assert plan_steps(Compound("plan", ([],))) == []
+    assert plan_steps(Compound("no_plan", ("no_tool",))) is None
+    assert plan_steps("plan") is None
 
 
 def test_relative_names_inside_the_run_folder(tmp_path):
@@ -381,7 +388,7 @@ def test_creation_summary_of_a_catalogue_object_that_solved_the_task(tmp_path):
     assert [(t.phase, t.outcome) for t in res.trials] == [
         ("eval", "success"), ("create", "success"), ("eval", "success"),
         ("eval", "success")]
-    got = _creation_summary(res, tmp_path)
+    got = creation_summary(res, tmp_path).to_dict()
     assert got == {
         "variant": "long_tube", "needed": True, "predicted": {"feasible": None},
         "predicted_failure_skipped": False, "trials": 1, "failed_trials": 0,
@@ -403,7 +410,7 @@ def test_creation_summary_counts_failed_creation_trials(tmp_path):
                        vs=None, trials=failed + trials[4:5], wall_time_s=0.0,
                        predicted={"feasible": False}, catalogue=[
                            {"tool": "hook_a4", "trial": None, "outcome": "no_pose"}])
-    got = _creation_summary(res, tmp_path)
+    got = creation_summary(res, tmp_path).to_dict()
     assert {k: got[k] for k in ("predicted_failure_skipped", "trials", "failed_trials",
                                 "slice_wall_time_s", "print_wall_time_s", "success",
                                 "eval", "catalogue_trials", "catalogue_success")} == {
@@ -411,7 +418,7 @@ def test_creation_summary_counts_failed_creation_trials(tmp_path):
         "slice_wall_time_s": 0, "print_wall_time_s": 0, "success": "hook_new1",
         "eval": ["success"], "catalogue_trials": 0, "catalogue_success": None}
     res.predicted = None
-    assert _creation_summary(res, tmp_path)["predicted_failure_skipped"] is False
+    assert creation_summary(res, tmp_path).predicted_failure_skipped is False
 
 
 # ---------------------------------------------------------------- the case's checks
@@ -425,10 +432,10 @@ def hook_world():
 
 def test_case_facts_of_the_hook_case(hook_world):
     manifest = hook_world[1].manifest
-    assert _case_facts(manifest, RunOptions()) == {
+    assert case_facts(manifest, RunOptions()) == {
         "pose_units": {"dx": "m", "dy": "m", "roll": "rad"}, "trial_budget": 12,
         "paper_trials": 12}
-    assert _case_facts(manifest, RunOptions(max_trials=3))["trial_budget"] == 3
+    assert case_facts(manifest, RunOptions(max_trials=3))["trial_budget"] == 3
 
 
 def test_catalogue_ranges_of_the_hook_world(hook_world):
@@ -597,7 +604,7 @@ def test_a_created_model_the_planner_refuses_is_an_error_record(hook_world, tmp_
     created = CreateResult(variant="long_tube", needed=True, created=[], success=None,
                            vs=None, trials=[], wall_time_s=0.0)
     lines = []
-    record = _created_pddl(runner, tmp_path, created, "oops", lines.append)
+    record = created_pddl(runner, tmp_path, created, "oops", lines.append).to_dict()
     error = "plan_models: error(type_error(action_model,o),_G0)"
     assert record == {"domain": "domain_long_tube.pddl",
                       "problem": "problem_long_tube.pddl", "status": "error", "plan": [],
@@ -605,7 +612,7 @@ def test_a_created_model_the_planner_refuses_is_an_error_record(hook_world, tmp_
                       "variant": "long_tube", "error": error}
     assert lines == []
     assert [(r.name, r.levelname, r.getMessage()) for r in caplog.records] == [
-        ("creative_py.learning.run", "WARNING",
+        ("creative_py.learning.pddl_files", "WARNING",
          f"{tmp_path}: the harder task's PDDL was not written: {error}")]
     assert list(tmp_path.iterdir()) == []
 
@@ -618,7 +625,7 @@ def test_a_created_model_with_no_plan_is_checked_against_pyperplan(hook_world, t
     created = CreateResult(variant="long_tube", needed=True, created=[], success=None,
                            vs=None, trials=[], wall_time_s=0.0)
     lines = []
-    record = _created_pddl(runner, tmp_path, created, [], lines.append)
+    record = created_pddl(runner, tmp_path, created, [], lines.append).to_dict()
     no_plan = "no_plan(no_model_achieves([out_of_tube(cube1,tube1)]))"
     assert record == {"domain": "domain_long_tube.pddl",
                       "problem": "problem_long_tube.pddl", "status": "unsolvable",
@@ -632,9 +639,9 @@ def test_a_created_model_with_no_plan_is_checked_against_pyperplan(hook_world, t
         ["(define (domain creative_long_tube)", "  (:requirements :strips :typing)"],
         ["(define (problem task_long_tube)", "  (:domain creative_long_tube)"]]
     plan = Compound("plan", ([Compound("pick_up", ("hook_a2",))],))
-    record = _check_pddl(tmp_path, "domain_long_tube.pddl", "problem_long_tube.pddl",
-                         plan, "standard", lines.append)
-    assert (record["variant"], record["prolog"], record["equals_prolog"]) == (
+    record = check_pddl(tmp_path, "domain_long_tube.pddl", "problem_long_tube.pddl",
+                        plan, "standard", lines.append)
+    assert (record.variant, record.prolog, record.equals_prolog) == (
         "standard", "plan([pick_up(hook_a2)])", False)
     assert lines[2:] == ["pddl problem_long_tube.pddl: unsolvable by pyperplan  "
                          "(DIFFERS from Prolog's)"]
@@ -693,14 +700,13 @@ def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):
         said = []
         got = _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
                            (run, trials, lines), said.append)
-        assert got == (run, trials, lines,
-                       json.loads((RECORDED / "summary.json").read_text()))
+        assert got == (run, trials, lines, RunSummary.read(RECORDED / "summary.json"))
         assert (run.sealed, run.trials) == (True, trials)
         assert said == [f"resuming {folder}: replaying 19 recorded trials",
                         f"run folder {folder}"]
         (folder / "summary.json").unlink()
         assert _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
-                            (run, [], []), said.append) == (run, [], [], {})
+                            (run, [], []), said.append) == (run, [], [], None)
         assert (run.sealed, run.trials) == (False, [])
         assert said[2:] == [f"resuming {folder}: replaying 0 recorded trials",
                             f"run folder {folder}"]
@@ -717,7 +723,7 @@ def test_open_folder_of_a_new_run_writes_run_json(tmp_path, hook_world):
                                               "new", None, said.append)
     try:
         assert (run.path, replay, lines, before, run.sealed) == (
-            tmp_path / "new", [], [], {}, False)
+            tmp_path / "new", [], [], None, False)
         assert said == [f"run folder {tmp_path / 'new'}"]
         assert json.loads((run.path / "run.json").read_text()) == {
             "case": "hook", "options": asdict(options),
@@ -761,28 +767,30 @@ def test_finish_writes_the_summary_plot_and_report(tmp_path, hook_world):
     try:
         runner = TrialRunner(engine, world, run)
         clips = ClipKeeper("none", run.path, world.video)
-        summary = {"case": "hook", "wall_time_s": {"use": 1.25}}
+        parts = {"case": "hook", "seed": 7}
         said = []
-        _finish(runner, clips, RunOptions(seed=7), summary, time.perf_counter() - 2.5,
-                said.append, {})
-        total = summary["wall_time_s"]["total"]
+        summary = _finish(runner, clips, parts, {"use": 1.25}, time.perf_counter() - 2.5,
+                          said.append, None)
+        total = summary.wall_time_s.total
         assert 2.5 <= total < 3.5 and total == round(total, 2)
         empty = {"trials": 0, "successes": 0, "outcomes": []}
-        assert summary == {"case": "hook",
+        written = json.loads((run.path / "summary.json").read_text())
+        assert written == {**RunSummary().to_dict(), "case": "hook", "seed": 7,
                            "wall_time_s": {"use": 1.25, "video": 0.0, "total": total},
                            "trials": {"use": empty, "create": empty, "eval": empty},
                            "videos": []}
-        assert json.loads((run.path / "summary.json").read_text()) == summary
+        assert list(written) == list(RunSummary().to_dict())  # every key, in order
+        assert summary == RunSummary.read(run.path)
         assert said == [f"done in {total} s: {run.path}"]
         assert (run.path / "report.html").read_text().startswith("<!DOCTYPE html>")
         plot_trials([], tmp_path / "expected.png",
                     title="CREATIVE-py, hook case, seed 7")
         assert (run.path / "trials.png").read_bytes() == (
             tmp_path / "expected.png").read_bytes()
-        again = {"wall_time_s": {}}
-        _finish(runner, clips, RunOptions(), again, 0.0, said.append,
-                {"wall_time_s": {"use": 1.0, "total": 9.99}, "case": "x"})
-        assert again["wall_time_s"] == {"use": 1.0, "total": 9.99}
+        before = RunSummary.from_dict({"wall_time_s": {"use": 1.0, "total": 9.99},
+                                       "case": "x"})
+        again = _finish(runner, clips, {}, {}, 0.0, said.append, before)
+        assert again.wall_time_s.to_dict() == {"use": 1.0, "total": 9.99}
         assert said[1:] == [f"done in 9.99 s: {run.path}"]
     finally:
         run.release()

@@ -17,7 +17,7 @@ import pytest
 
 from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
-from creative_py.learning.run import RunOptions
+from creative_py.learning.options import RunOptions
 from creative_py.learning.strategies import STRATEGIES, Strategy, UnknownStrategy
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner
 from creative_py.learning.trials import TrialRunner

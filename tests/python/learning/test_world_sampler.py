@@ -17,7 +17,8 @@ import pytest
 
 from creative_py.bridge import Engine, fact_term
 from creative_py.case import load_cases
-from creative_py.learning.run import check_catalogue, draw_catalogue_world
+from creative_py.learning.checks import check_catalogue
+from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.backends.pybullet import load_world, tool_rests
 from creative_py.backends.pybullet.tools import catalogue_facts
 from creative_py.simulator.randomise import apply_drawn

@@ -5,7 +5,8 @@ import json
 import pytest
 
 from creative_py.records.folder import RunFolder, read_trials, write_atomic
-from creative_py.report import plot_trials, summarise_trials
+from creative_py.records.summary import TrialCounts
+from creative_py.report import plot_trials
 
 
 def _trial(i, phase="use", outcome="success", tool="hook_a2"):
@@ -61,7 +62,7 @@ def test_plot_and_summary(tmp_path):
               _trial(5, phase="eval", tool="hook_new1")]
     png = plot_trials(trials, tmp_path / "t.png", title="x")
     assert png.stat().st_size > 1000
-    s = summarise_trials(trials)
+    s = TrialCounts.of(trials).to_dict()
     assert s["use"] == {"trials": 2, "successes": 1, "outcomes": ["failure", "success"]}
     assert s["create"]["trials"] == 2 and s["eval"]["successes"] == 1
 

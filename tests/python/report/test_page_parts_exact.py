@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Union
 
 from creative_py.records import TrialRecord
+from creative_py.records.summary import CreatedToolSummary, PddlCheck, VideoEntry
 from creative_py.report.contents import Clip, RunContents, ToolEntry
 from creative_py.report.page import (
     _clip_caption, _hypotheses_section, _key_value_table, _pddl_html, _pieces_table,
@@ -53,11 +54,14 @@ class _WithNote(TrialRecord):
 
 
 def test_a_clip_caption_without_info_is_its_file():
-    assert _clip_caption(Clip("videos/a b.mp4", False, {})) == "<code>videos/a b.mp4</code>"
+    assert _clip_caption(Clip("videos/a b.mp4", False)) == "<code>videos/a b.mp4</code>"
+    bare = VideoEntry.from_dict({"file": "videos/a b.mp4"})
+    assert _clip_caption(Clip("videos/a b.mp4", False, bare)) == "<code>videos/a b.mp4</code>"
 
 
 def test_a_clip_caption_without_phase_or_trial_has_no_bold_head():
-    info = {"tool": "stick", "tested": ["a(b)", "c<d"], "reason": "it & slid"}
+    info = VideoEntry.from_dict({"file": "videos/x y.mp4", "tool": "stick",
+                                 "tested": ["a(b)", "c<d"], "reason": "it & slid"})
     assert _clip_caption(Clip("videos/x y.mp4", True, info)) == (
         "stick · tested <code>a(b), c&lt;d</code><br>it &amp; slid"
         ' <a href="videos/x%20y.mp4">x y.mp4</a>')
@@ -79,10 +83,10 @@ def test_a_plan_that_is_not_a_plan_and_no_pddl_answer(tmp_path):
 
 
 def test_a_pddl_answer_without_status_or_plan_that_equals_prolog_s(tmp_path):
-    answer = {"equals_prolog": True, "prolog_plan": ["b"], "plan": []}
+    answer = PddlCheck.from_dict({"equals_prolog": True, "prolog_plan": ["b"], "plan": []})
     assert _pddl_html(tmp_path, "use", answer) == (
         "<p><b>use</b>; ?; the same plan as Prolog's</p>")
-    assert _pddl_html(tmp_path, "eval", {"status": "unsolvable"}) == (
+    assert _pddl_html(tmp_path, "eval", PddlCheck(status="unsolvable")) == (
         "<p><b>eval</b>; unsolvable</p>")
 
 
@@ -138,8 +142,11 @@ def test_seconds_at_a_minute_and_an_hour():
 
 
 def test_a_tool_card_without_the_summary_s_fields(tmp_path):
-    bare = ToolEntry("t", "tools/t", {"name": "t", "replaced": "a", "dims": "big"},
-                     None, None, [])
+    dropped = []
+    created = CreatedToolSummary.from_dict({"name": "t", "replaced": "a", "dims": "big"},
+                                           warn=dropped.append)
+    assert dropped == ["field 'dims': 'big' is not of type dict[str, Any]; not shown"]
+    bare = ToolEntry("t", "tools/t", created, None, None, [])
     assert _tool_card(tmp_path, bare) == (
         '<article class="tool" id="tool-t"><h3>t</h3>'
         "<p><code>a</code> &rarr; <code></code> &rarr; <code></code></p>"
@@ -147,7 +154,8 @@ def test_a_tool_card_without_the_summary_s_fields(tmp_path):
         '<p class="none">No render (tools/t/t.png).</p><div class="facts"></div>'
         "<h4>Print time and filament</h4>"
         "<p class=\"none\">Not sliced (the tool's JSON has no print figures).</p></article>")
-    sized = ToolEntry("u", "tools/u", {"dims": {"edge_mm": [1, 2.5], "n": 2}}, {}, None, [])
+    sized = ToolEntry("u", "tools/u",
+                      CreatedToolSummary(dims={"edge_mm": [1, 2.5], "n": 2}), {}, None, [])
     card = _tool_card(tmp_path, sized)
     assert card[card.index('<div class="facts">'):card.index("<h4>Print")] == (
         '<div class="facts"><div><h4>Dimensions</h4><table>'

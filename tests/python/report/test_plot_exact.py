@@ -12,7 +12,8 @@ import pytest
 from matplotlib.colors import to_rgba
 from matplotlib.markers import MarkerStyle
 
-from creative_py.report.plot import plot_trials, summarise_trials, trial_labels
+from creative_py.records.summary import TrialCounts
+from creative_py.report.plot import plot_trials, trial_labels
 
 
 def _trial(i, phase, n, tool, outcome, tested=()):
@@ -109,7 +110,7 @@ def test_a_long_run_without_creation_or_title(tmp_path, saved):
 def test_labels_and_counts_exact():
     assert trial_labels([_trial(1, "eval", 0, "t", "success", ["x"]),
                          _trial(2, "use", 0, "t", "failure")]) == ["EV 1  x", "TUL 2"]
-    assert summarise_trials(TRIALS) == {
+    assert TrialCounts.of(TRIALS).to_dict() == {
         "use": {"trials": 2, "successes": 1, "outcomes": ["failure", "success"]},
         "create": {"trials": 3, "successes": 1,
                    "outcomes": ["blocked", "unreachable", "success"]},

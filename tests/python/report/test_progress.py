@@ -54,6 +54,7 @@ def test_run_case_without_a_callback_logs_its_lines(monkeypatch, caplog, tmp_pat
     """``run_case`` from Python, no callback: its first line (the run folder) is logged
     before any physics (the world is stopped there by a failing load)."""
     import creative_py.learning.run as run_module
+    from creative_py.learning.options import RunOptions
 
     def stop(*_a, **_k):
         raise RuntimeError("stop here")
@@ -61,7 +62,7 @@ def test_run_case_without_a_callback_logs_its_lines(monkeypatch, caplog, tmp_pat
     monkeypatch.setattr(run_module.ClipKeeper, "__init__", stop)
     caplog.set_level(logging.INFO, logger="creative_py.learning.run")
     try:
-        run_module.run_case("hook", tmp_path, run_module.RunOptions(phase="use"))
+        run_module.run_case("hook", tmp_path, RunOptions(phase="use"))
     except RuntimeError:
         pass
     assert any(r.getMessage().startswith("run folder ") for r in caplog.records)

@@ -27,7 +27,8 @@ import imageio.v2 as imageio
 import numpy as np
 import pytest
 
-from creative_py.learning.run import RunOptions, run_case
+from creative_py.learning.options import RunOptions
+from creative_py.learning.run import run_case
 from creative_py.records.trial import TrialRecord, reason_text
 from creative_py.report.contents import read_run, readable_term
 from creative_py.report.page import render_html

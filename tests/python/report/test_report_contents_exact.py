@@ -17,6 +17,7 @@ from pathlib import Path
 from creative_py.report.contents import (Clip, ToolEntry, clause_parts, literals_text,
                                          number_text, plan_steps, read_run,
                                          relative_inside, split_top_level)
+from creative_py.records.summary import CreatedToolSummary, RunSummary, VideoEntry
 from creative_py.report.table import strength_note, summary_lines
 
 TRIALS = [
@@ -72,21 +73,22 @@ def test_read_run_exact(tmp_path):
     assert c.model_text == "model.\n"
     assert c.plot == "trials.png"
     assert c.pddl_files == ["domain.pddl"]
-    assert c.clips == [Clip("videos/use-1.mp4", True,
-                            {"phase": "use", "trial": 1, "tool": "hook_a1",
-                             "outcome": "blocked", "why": "first failure"})]
+    assert c.clips == [Clip("videos/use-1.mp4", True, VideoEntry.from_dict(
+        {"file": "videos/use-1.mp4", "phase": "use", "trial": 1, "tool": "hook_a1",
+         "outcome": "blocked", "why": "first failure"}))]
     summary = run / "summary.json"
     assert c.warnings == [
+        f"{summary}: field 'pddl.create': 'not a table' is not a JSON object; not shown",
+        f"{summary}: field 'videos[2].file' is missing; not shown",
         f"{summary}: video ../elsewhere.mp4 is outside the run folder; not shown",
-        f"{summary}: a videos entry has no file: {{'phase': 'use'}}",
     ]
     manifest = json.loads((run / "tools" / "hook_new" / "hook_new.json").read_text())
     assert c.tools == [
-        ToolEntry("hook_new", "tools/hook_new", CREATED, manifest,
+        ToolEntry("hook_new", "tools/hook_new", CreatedToolSummary.from_dict(CREATED), manifest,
                   "tools/hook_new/hook_new.png",
                   [("urdf", "tools/hook_new/hook_new.urdf"), ("stl", "tools/hook_new/a.stl"),
                    ("json", "tools/hook_new/hook_new.json")]),
-        ToolEntry("orphan", "tools/orphan", {}, None, None, []),
+        ToolEntry("orphan", "tools/orphan", None, None, None, []),
     ]
 
 
@@ -108,23 +110,24 @@ def test_clips_without_a_summary_are_the_videos_folder_s(tmp_path):
     (run / "summary.json").unlink()
     (run / "videos" / "eval-2.mp4").write_bytes(b"mp4")
     c = read_run(run)
-    assert c.summary == {} and c.warnings == []
+    assert c.summary == RunSummary() and c.warnings == []
     assert c.clips == [Clip("videos/eval-2.mp4", True), Clip("videos/use-1.mp4", True)]
     assert [t.name for t in c.tools] == ["hook_new", "orphan"]
-    assert c.tools[0].created == {}
+    assert c.tools[0].created is None
 
 
 def test_a_summary_that_is_not_an_object_or_not_json(tmp_path):
     run = _folder(tmp_path)
     (run / "summary.json").write_text("[1, 2]")
     c = read_run(run)
-    assert c.summary == {}
-    assert c.warnings == [f"{run / 'summary.json'}: not a JSON object; no summary shown"]
+    assert c.summary == RunSummary()
+    assert c.warnings == [f"{run / 'summary.json'}: not a JSON object, but list; no summary "
+                          f"shown"]
     (run / "summary.json").write_text("{\n oops")
     c = read_run(run)
-    assert c.summary == {}
+    assert c.summary == RunSummary()
     assert c.warnings == [f"{run / 'summary.json'}: not JSON (Expecting property name "
-                          f"enclosed in double quotes, line 2); not shown"]
+                          f"enclosed in double quotes, line 2); no summary shown"]
 
 
 def test_a_missing_clip_is_listed_as_missing(tmp_path):
@@ -217,8 +220,12 @@ def test_odd_entries_are_skipped_with_a_warning_and_the_rest_kept(tmp_path):
     assert c.warnings == [
         f"{run / 'trials.jsonl'}: line 3 is not a JSON object (Unterminated string "
         f"starting at); skipped",
-        f"{s}: a videos entry has no file: 'videos/use-1.mp4'",
-        f"{s}: a videos entry has no file: {{'file': 7}}",
+        f"{s}: field 'pddl.create': 'not a table' is not a JSON object; not shown",
+        f"{s}: field 'create.created_tools[0].dims': 1 is not of type dict[str, "
+        f"Any]; not shown",
+        f"{s}: field 'create.created_tools[1]': 'hook_x' is not a JSON object; not shown",
+        f"{s}: field 'videos[0]': 'videos/use-1.mp4' is not a JSON object; not shown",
+        f"{s}: field 'videos[1].file': 7 is not of type str; not shown",
         f"{broken / 'broken.json'}: not JSON (Expecting property name enclosed in double "
         f"quotes, line 1); not shown",
     ]
@@ -233,8 +240,8 @@ def test_odd_entries_are_skipped_with_a_warning_and_the_rest_kept(tmp_path):
 def test_a_creation_summary_without_created_tools(tmp_path):
     run = _folder(tmp_path)
     (run / "summary.json").write_text(json.dumps({"create": {"trials": 1}}))
-    assert [(t.name, t.created) for t in read_run(run).tools] == [("hook_new", {}),
-                                                                  ("orphan", {})]
+    assert [(t.name, t.created) for t in read_run(run).tools] == [("hook_new", None),
+                                                                  ("orphan", None)]
 
 
 def test_plan_steps_needs_the_whole_plan_term():

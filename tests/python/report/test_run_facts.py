@@ -13,7 +13,8 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
-from creative_py.learning.run import RunOptions, _case_facts
+from creative_py.learning.options import RunOptions
+from creative_py.learning.phases import case_facts
 from creative_py.report.contents import read_run
 from creative_py.report.headline import headline
 
@@ -74,9 +75,9 @@ def test_the_run_writes_the_manifest_s_facts():
     from creative_py.case import get_case
 
     hook = get_case("hook")
-    facts = _case_facts(hook, RunOptions())
+    facts = case_facts(hook, RunOptions())
     assert facts == {"pose_units": {p.name: p.unit for p in hook.pose_params},
                      "trial_budget": hook.trial_budget, "paper_trials": hook.paper_trials}
     assert facts["trial_budget"] == 12 and facts["paper_trials"] == 12
     assert set(facts["pose_units"].values()) <= {"m", "rad"}
-    assert _case_facts(hook, RunOptions(max_trials=3))["trial_budget"] == 3
+    assert case_facts(hook, RunOptions(max_trials=3))["trial_budget"] == 3

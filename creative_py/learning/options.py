@@ -1,0 +1,175 @@
+"""The options of a run (:class:`RunOptions`) and the ``run.json`` a resumed run reads
+them from (:func:`read_run_json`)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, fields
+from pathlib import Path
+from typing import Any, Optional
+
+from creative_py.learning.clips import VIDEO_MODES
+from creative_py.learning.strategies import strategy_named
+
+
+PHASES = ("use", "create", "all")
+
+
+@dataclass(frozen=True)
+
+
+class RunOptions:
+    """Options of one run.
+
+    Parameters
+    ----------
+    seed : int
+        Seed of the physics and sensor noise.
+    phase : {"use", "create", "all"}
+        ``use``: demonstration and tool-use learning only; ``create`` and ``all``: then
+        tool creation on the harder variant.
+    max_trials : int or None
+        N of Algorithm 1, at least 1 (default: the case manifest's ``trial_budget``).
+    consecutive : int
+        K of Algorithm 1: consecutive successes needed once nothing is left to test.
+    eval_trials : int
+        Evaluation trials of the learned model after tool-use learning (planner's own
+        tool and pose choice), over the predefined locations.
+    create_eval_trials : int
+        Evaluation trials of a successful created tool (paper: 5).
+    video : {"key", "all", "none"}
+        Which trials are saved as MP4 clips in ``videos/``
+        (:mod:`creative_py.learning.clips`): ``key`` the demonstration, the first
+        success, every creation trial and the first trial of each failure reason;
+        ``all`` every trial; ``none`` no clip.
+    gui : bool
+        Show the trials in pybullet's GUI (needs a display).
+    strategy : str
+        How tool-use learning chooses its experiments: a name of
+        :data:`creative_py.learning.strategies.STRATEGIES` (``paper``, ``informative``,
+        ``random``); another raises
+        :class:`~creative_py.learning.strategies.UnknownStrategy`.
+    world_seed : int or None
+        None: the world as its files say; N: a world drawn from the case's manifest
+        (:func:`creative_py.backends.pybullet.world.draw_world`: the catalogue's numbers inside their
+        own qualitative ranges, its order shuffled, the locations jittered), the same
+        for the same N.
+    catalogue_first : bool or None
+        Before manufacturing a tool for the harder task, try in the physics the
+        catalogued objects the generalised model admits
+        (:meth:`creative_py.learning.creation.ToolCreator._try_catalogue`); a tool is
+        made only when none succeeds. None: on, except under the paper's strategy
+        (whose Algorithm 2 makes a tool at once, as the parity fixtures record).
+    demonstrate_creation : bool
+        When a catalogued object solved the harder task, still create a tool afterwards
+        as a demonstration of Algorithm 2 (``make hook`` does).
+    """
+
+    seed: int = 0
+    phase: str = "all"
+    max_trials: Optional[int] = None
+    consecutive: int = 2
+    eval_trials: int = 4
+    create_eval_trials: int = 5
+    video: str = "key"
+    gui: bool = False
+    strategy: str = "informative"
+    world_seed: Optional[int] = None
+    catalogue_first: Optional[bool] = None
+    demonstrate_creation: bool = False
+
+    @property
+    def tries_catalogue(self) -> bool:
+        """Whether tool creation tries the catalogued objects first (``catalogue_first``,
+        None meaning what the strategy says: on, except under the paper's)."""
+        if self.catalogue_first is None:
+            return strategy_named(self.strategy).catalogue_first
+        return self.catalogue_first
+
+    def __post_init__(self) -> None:
+        checks = [("seed", self.seed, 0), ("max_trials", self.max_trials, 1),
+                  ("consecutive", self.consecutive, 1), ("eval_trials", self.eval_trials, 0),
+                  ("create_eval_trials", self.create_eval_trials, 0),
+                  ("world_seed", self.world_seed, 0)]
+        for name, value, least in checks:
+            if value is None and name in ("max_trials", "world_seed"):
+                continue
+            if isinstance(value, bool) or not isinstance(value, int) or value < least:
+                raise ValueError(f"option {name} must be a whole number >= {least}, "
+                                 f"got {value!r}")
+        if self.phase not in PHASES:
+            raise ValueError(f"option phase must be one of {', '.join(PHASES)}, "
+                             f"got {self.phase!r}")
+        if self.video not in VIDEO_MODES:
+            raise ValueError(f"option video must be one of {', '.join(VIDEO_MODES)}, "
+                             f"got {self.video!r}")
+        if not isinstance(self.gui, bool):
+            raise ValueError(f"option gui must be true or false, got {self.gui!r}")
+        if self.catalogue_first is not None and not isinstance(self.catalogue_first, bool):
+            raise ValueError(f"option catalogue_first must be true, false or unset, got "
+                             f"{self.catalogue_first!r}")
+        if not isinstance(self.demonstrate_creation, bool):
+            raise ValueError(f"option demonstrate_creation must be true or false, got "
+                             f"{self.demonstrate_creation!r}")
+        strategy_named(self.strategy)
+
+
+RUN_JSON_KEYS = ("case", "options", "world", "drawn_world")
+"""The keys of a run folder's ``run.json`` (:func:`read_run_json`)."""
+
+
+def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
+                                          Optional[dict[str, Any]]]:
+    """Return the case, options, world folder and drawn world of a run folder's
+    ``run.json``, checked.
+
+    A run recorded before there were strategies ran the paper's Algorithm 1, and one
+    recorded before catalogued objects were tried first made a tool at once; other
+    missing options take their defaults. A resumed run shows no GUI (the display it
+    was started on may be gone).
+
+    Raises
+    ------
+    ValueError
+        One line naming ``run.json`` and the field: no ``run.json``, not JSON, not an
+        object, a missing key, an unknown option or a bad option value, a
+        ``drawn_world`` that is not an object.
+    """
+    meta_path = Path(run_dir) / "run.json"
+    if not meta_path.is_file():
+        raise ValueError(f"{run_dir}: not a resumable run folder (no run.json)")
+    try:
+        meta = json.loads(meta_path.read_text(encoding="utf-8"))
+    except (json.JSONDecodeError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{meta_path}: not JSON ({getattr(exc, 'msg', exc)})") from None
+    if not isinstance(meta, dict):
+        raise ValueError(f"{meta_path}: a JSON object with keys {', '.join(RUN_JSON_KEYS)} "
+                         f"was expected, not a {type(meta).__name__}")
+    for key in ("case", "options"):
+        if key not in meta:
+            raise ValueError(f"{meta_path}: field {key!r} is missing")
+    if not isinstance(meta["case"], str):
+        raise ValueError(f"{meta_path}: field 'case' must be text, got {meta['case']!r}")
+    opts = meta["options"]
+    if not isinstance(opts, dict):
+        raise ValueError(f"{meta_path}: field 'options' must be an object, got "
+                         f"{type(opts).__name__}")
+    names = {f.name for f in fields(RunOptions)}
+    unknown = sorted(set(opts) - names)
+    if unknown:
+        raise ValueError(f"{meta_path}: field 'options.{unknown[0]}' is not an option "
+                         f"({', '.join(sorted(names))})")
+    try:
+        options = RunOptions(**{"strategy": "paper", "catalogue_first": False,
+                                **opts, "gui": False})
+    except ValueError as exc:
+        raise ValueError(f"{meta_path}: field 'options': {exc}") from None
+    world = meta.get("world")
+    if world is not None and not isinstance(world, str):
+        raise ValueError(f"{meta_path}: field 'world' must be a folder or null, got "
+                         f"{world!r}")
+    drawn = meta.get("drawn_world")
+    if drawn is not None and not isinstance(drawn, dict):
+        raise ValueError(f"{meta_path}: field 'drawn_world' must be an object or null, "
+                         f"got {type(drawn).__name__}")
+    return meta["case"], options, Path(world) if world else None, drawn
