@@ -108,6 +108,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                                           resume[0].path / "run.json" if resume else None)
     run, replay, lines, before = _open_folder(out, case, options, world_dir, drawn,
                                               run_name, resume, say)
+    clips: Optional[ClipKeeper] = None
     try:
         runner = _trial_runner(engine, world, run, options, say, replay, lines)
         clips = runner.clips
@@ -126,13 +127,21 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         runner.end_replay()  # a resume with nothing left to run: the replay was checked
         _finish(runner, clips, parts, wall, t_start, say,
                 before if resume is not None and runner.physical == 0 else None)
-    except BaseException:
+    except BaseException as exc:
+        interrupted = isinstance(exc, KeyboardInterrupt)
+        if interrupted and clips is not None:
+            _finish_clips(clips, say)
         # Nothing learned yet (the demonstration failed, the run was interrupted before
         # its first trial): leave no empty folder behind. (A run killed outright leaves
         # run.json: --resume starts it again from there.)
         if not run.trials and resume is None:
             run.release()
             shutil.rmtree(run.path, ignore_errors=True)
+            if interrupted:
+                say("interrupted before the first trial: nothing was kept")
+        elif interrupted:
+            say(f"interrupted after {len(run.trials)} trial(s); to go on: "
+                f"creative run {case} --resume {run.path}")
         raise
     finally:
         if resume is None:
@@ -242,6 +251,19 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, parts: dict[str, Any],
     write_reports(run.path, trials, summary)
     say(f"done in {summary.wall_time_s.total} s: {run.path}")
     return summary
+
+
+def _finish_clips(clips: ClipKeeper, say: Callable[[str], None]) -> None:
+    """After Ctrl-C: wait for the clips being written (their processes ignore it), so
+    that no clip of an ended trial is lost; a second Ctrl-C leaves them to finish on
+    their own."""
+    if not clips.children:
+        return
+    say(f"interrupted: finishing {len(clips.children)} video clip(s) first")
+    try:
+        clips.finish()
+    except KeyboardInterrupt:
+        pass
 
 
 def _earlier_summary(run_dir: Path) -> Optional[RunSummary]:
