@@ -271,7 +271,8 @@ def test_a_clip_that_fails_in_the_background_is_dropped_with_a_warning(tmp_path,
     assert keeper.finish() == [] == keeper.entries
     assert [(r.name, r.levelname, r.getMessage()) for r in caplog.records] == [
         ("creative_py.learning.clips", "WARNING",
-         "videos/001-use-hook_a1.mp4: the clip was not written")]
+         "videos/001-use-hook_a1.mp4: the clip was not written: its process failed "
+         "(the line above says why)")]
 
 
 def _earlier(run_dir, *files):

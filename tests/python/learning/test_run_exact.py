@@ -572,7 +572,8 @@ def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
     assert seen == [f"run folder {tmp_path / 'stopped'}",
                     "demonstration: the trainer shows the task with hook_a2 (loc 1)",
                     {"case": "hook", "options": asdict(options), "world": None,
-                     "drawn_world": None}]
+                     "drawn_world": None},
+                    "interrupted before the first trial: nothing was kept"]
     assert list(tmp_path.iterdir()) == []
 
 

@@ -308,6 +308,12 @@ def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
     (run.path / "trials.jsonl").write_text((RECORDED / "trials.jsonl").read_text())
     use = hook.records[:9]
     run.seal(use)
+    # The interrupted run wrote its clips (a missing one would be rendered again by
+    # running its trial in the physics: test_replay.py).
+    for rec in use:
+        clip = run.path / ClipKeeper.file_name(rec.trial, rec.phase, rec.tool)
+        clip.parent.mkdir(exist_ok=True)
+        clip.write_bytes(b"mp4")
     clips = ClipKeeper("key", run.path, hook.world.video, background=False,
                        new_recorder=recorder)
     clips.held = True
@@ -328,9 +334,11 @@ def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
     assert runner.physical == 0
     # Nothing was written while replaying; the clip keeper saw every trial.
     assert run.sealed and clips.held
-    assert sorted(p.name for p in run.path.rglob("*")) == [".lock", "snapshots",
-                                                          "trials.jsonl"]
-    assert clips.entries == [] and clips.succeeded
+    assert sorted(p.name for p in run.path.rglob("*") if p.suffix != ".mp4") == [
+        ".lock", "snapshots", "trials.jsonl", "videos"]
+    assert [e["file"] for e in clips.entries] == [
+        ClipKeeper.file_name(r.trial, r.phase, r.tool) for r in use
+        if r.trial in (1, 2, 5)] and clips.succeeded
     assert clips.seen == {
         "blocked: position_tool: gripper lagged its target by N cm at (N, N, N) m: "
         "something is in the way", "failure: goal not reached"}
@@ -366,6 +374,8 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     run = RunFolder.create(tmp_path, "hook", 0, "run")
     one, two = hook.records[:2]
     (run.path / "trials.jsonl").write_text(one.to_json() + "\n")
+    (run.path / "videos").mkdir()
+    (run.path / "videos" / "001-use-hook_a1.mp4").write_bytes(b"mp4")  # written before
     run.seal([one])
     camera = dataclasses.replace(hook.world.video.camera, width=320, height=60)
     clips = ClipKeeper("key", run.path, dataclasses.replace(hook.world.video, camera=camera),
@@ -394,7 +404,8 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
         "00_after_pick_up_top.png", "01_after_position_tool_top.png",
         "02_after_pull_top.png"]
     assert not run.sealed and not clips.held
-    entries = clips.finish()
+    replayed, *entries = clips.finish()
+    assert replayed["file"] == "videos/001-use-hook_a1.mp4"  # the earlier run's file
     size = (run.path / "videos" / "002-use-hook_a2.mp4").stat().st_size
     assert entries == [{
         "file": "videos/002-use-hook_a2.mp4", "phase": "use", "trial": 2, "tool": "hook_a2",
