@@ -274,6 +274,10 @@ def _tools_section(run: RunContents) -> str:
         if create.needed is not None:
             bits.append("creation needed" if create.needed else
                         "creation not needed (a catalogued tool succeeded)")
+            if not create.needed and create.created_tools:
+                names = ", ".join(escape(str(c.name)) for c in create.created_tools)
+                bits.append(f"{names} made all the same, as a demonstration "
+                            "(<code>--demonstrate-creation</code>)")
         if create.solved_by:
             by = {"learned": "the learned model's own tool",
                   "catalogue": f"the catalogued {create.catalogue_success}",
