@@ -210,11 +210,13 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     from geometry_msgs.msg import PoseStamped
     from sensor_msgs.msg import JointState
 
+    from rclpy.signals import SignalHandlerOptions
+
     p = arm.profile
     stop = threading.Event()
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda *_: stop.set())
-    rclpy.init()
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ours stop the loop
     node = Node("creative_standin")
     group = ReentrantCallbackGroup()
     lock = threading.Lock()
@@ -385,7 +387,10 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     stop.set()
     if active is not None:
         finish(active, INVALID_GOAL, "the stand-in stopped", False)
-    executor.shutdown(timeout_sec=1.0)
+    for job in jobs:
+        job.done.set()
+    executor.shutdown(timeout_sec=2.0)
+    spinner.join(timeout=2.0)
     node.destroy_node()
     rclpy.try_shutdown()
     return 0

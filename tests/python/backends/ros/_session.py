@@ -1,0 +1,157 @@
+"""One session with the stand-in robot, run INSIDE a private network namespace by
+test_standin.py (never in the host's): starts the stand-in as its own process, drives it
+through the learner's client (creative_py.backends.ros.client) and prints what it saw as
+JSON on its last line. The scenarios run in order on one stand-in (its scene build and
+the DDS discovery cost about 6 s, paid once).
+
+    python _session.py CASE
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import socket
+import subprocess
+import sys
+import time
+
+CASE = sys.argv[1] if len(sys.argv) > 1 else "hook"
+t_start = time.monotonic()
+standin = subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin", "--case",
+                            CASE, "--seconds", "240"], stdout=subprocess.PIPE, text=True)
+out: dict = {"namespace_links": sorted(name for _, name in socket.if_nameindex()),
+             "domain_id": os.environ.get("ROS_DOMAIN_ID"),
+             "discovery_range": os.environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE")}
+client = None
+try:
+    line = standin.stdout.readline()
+    if not line.startswith("standin ready "):
+        raise SystemExit(f"the stand-in did not start: {line!r}")
+    out["standin_ready_s"] = time.monotonic() - t_start
+    info = json.loads(line[len("standin ready "):])
+    out["interface"] = info
+
+    from creative_py.backends.ros.client import ArmClient
+    from creative_py.backends.ros.limits import OutOfBounds, goal_checker, urdf_forward
+    from creative_py.backends.ros.profile import load_profile
+
+    profile = load_profile()
+    objects = list(info["objects"])
+    client = ArmClient(profile, objects)
+    client.wait_for_arm(30.0)
+    out["arm_up_s"] = time.monotonic() - t_start
+
+    # -- joint states: names and rate over one second
+    n0 = client.joint_state.count
+    time.sleep(1.0)
+    js = client.joint_state.msg
+    out["joint_states"] = {"names": list(js.name), "per_s": client.joint_state.count - n0,
+                           "position": list(js.position)}
+
+    # -- object poses
+    deadline = time.monotonic() + 5.0
+    while any(client.pose(n) is None for n in objects) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    out["poses"] = {n: client.pose(n) for n in objects}
+
+    # -- round trips: there and back, 1 s each, through the learner's bounds
+    forward = urdf_forward(profile)
+    check = goal_checker(profile, client.arm_q, forward)
+    q0 = client.arm_q()
+    q1 = list(q0)
+    q1[0] += 0.2
+    q1[3] -= 0.15
+    trips = []
+    for k in range(6):
+        target = q1 if k % 2 == 0 else q0
+        first: list = []
+        r = client.send_trajectory(client.make_goal([(1.0, target)]), check=check,
+                                   on_feedback=lambda fb: first.append(fb) if not first else None)
+        time.sleep(0.1)
+        q = client.arm_q()
+        trips.append({"status": r.status, "code": r.error_code, "times": vars(r.times),
+                      "error_after": max(abs(a - b) for a, b in zip(q, target)),
+                      "feedback_names": list(first[0].joint_names) if first else [],
+                      "feedback_index": first[0].index if first else None,
+                      "last_feedback_actual": list(r.last_feedback.actual.positions)
+                      if r.last_feedback is not None else []})
+    out["round_trips"] = trips
+    out["q1"] = q1
+
+    # -- goals the arm rejects (as ros2_control's controller does)
+    bad_joint = client.make_goal([(1.0, q0)], joint_names=[*profile.joints[:-1], "no_such_joint"])
+    beyond = list(q0)
+    beyond[3] = 5.0  # outside right_e1's limits
+    out["rejected"] = {
+        "unknown_joint": client.send_trajectory(bad_joint).status,
+        "beyond_limits": client.send_trajectory(client.make_goal([(1.0, beyond)])).status,
+        "time_not_increasing": client.send_trajectory(
+            client.make_goal([(1.0, q1), (0.5, q0)])).status,
+    }
+
+    # -- the learner's bounds: a goal outside them is never sent
+    sent = [0]
+    original = client.trajectory.send_goal_async
+
+    def counting(*a, **k):
+        sent[0] += 1
+        return original(*a, **k)
+
+    client.trajectory.send_goal_async = counting
+    too_fast = client.make_goal([(0.1, q1)])
+    # the collision target below: the gripper 5 cm under the table top, pointing forward
+    from creative_py.backends.pybullet.baxter import Baxter, gripper_forward
+    from creative_py.backends.pybullet.core import Sim
+    from creative_py.world_files import PhysicsSettings
+
+    kin = Baxter(Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81))))
+    kin.reset_posture(q0)  # profile order is the Baxter's right-arm order here
+    below = kin.solve_ik(((0.75, -0.45, -0.25), gripper_forward(0.0)), seed=q0)
+    out["below_table_target"] = below
+    refused = {}
+    for name, goal in (("too_fast", too_fast),
+                       ("outside_workspace", client.make_goal([(4.0, below)]))):
+        try:
+            client.send_trajectory(goal, check=check)
+            refused[name] = "sent"
+        except OutOfBounds as exc:
+            refused[name] = str(exc)
+    client.trajectory.send_goal_async = original
+    out["refused"] = refused
+    out["goals_sent_while_refusing"] = sent[0]
+    out["q_after_refusals"] = client.arm_q()
+
+    # -- into the table: no path tolerance -> GOAL_TOLERANCE_VIOLATED; default -> PATH_...
+    r = client.send_trajectory(client.make_goal([(4.0, below)],
+                                                path_tolerance={j: -1.0 for j in profile.joints},
+                                                goal_time_tolerance=0.3))
+    out["blocked_no_path_tolerance"] = {"status": r.status, "code": r.error_code,
+                                        "message": r.error_string}
+    back = client.send_trajectory(client.make_goal([(4.0, q0)]))
+    out["back_to_start"] = {"status": back.status, "code": back.error_code}
+    r = client.send_trajectory(client.make_goal([(4.0, below)]))
+    out["collision"] = {"status": r.status, "code": r.error_code, "message": r.error_string,
+                        "result_s": r.times.result}
+    client.send_trajectory(client.make_goal([(4.0, q0)]))
+
+    # -- the gripper: closing far from the tool holds nothing, opening again
+    closed = client.grip(True)
+    opened = client.grip(False)
+    time.sleep(0.1)
+    out["gripper"] = {"closed": [closed.position, closed.stalled, closed.reached_goal],
+                      "opened": [opened.position, opened.stalled, opened.reached_goal],
+                      "gap_in_joint_states": client.joints()[profile.gripper_joint]}
+except BaseException as exc:  # report what went wrong as the session's result
+    out["error"] = f"{type(exc).__name__}: {exc}"
+finally:
+    if client is not None:
+        client.close()
+    standin.terminate()
+    try:
+        out["standin_rc"] = standin.wait(10)
+    except subprocess.TimeoutExpired:
+        standin.kill()
+        out["standin_rc"] = "killed"
+    out["session_s"] = time.monotonic() - t_start
+    print(json.dumps(out), flush=True)

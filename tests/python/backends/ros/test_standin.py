@@ -1,0 +1,178 @@
+"""The stand-in robot in its own process, driven over ROS 2 by the learner's client.
+
+All ROS traffic runs inside a private network namespace that has only loopback
+(``unshare -n``, or ``unshare -rn`` where unprivileged, then ``ip link set lo up``), with
+``ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST`` and a domain id of its own: nothing leaves
+the machine. One session (``_session.py``, about 30 s) starts the stand-in of the hook
+case and runs every scenario in order; each test checks one part of what it saw.
+Skipped, with the reason, without the ``ros`` extra (``make setup-ros``) or where the
+namespace is refused.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import math
+import os
+import shutil
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+pytestmark = pytest.mark.sim
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[3]
+CASE = "hook"
+
+
+def ros_missing() -> str | None:
+    """Return why the ros extra cannot run here, or None."""
+    for module, what in (("rclpy", "the ros extra is not installed"),
+                         ("control_msgs", "control_msgs is not built")):
+        if importlib.util.find_spec(module) is None:
+            return f"{what} (make setup-ros; docs/real-robot.md)"
+    return None
+
+
+def namespace_prefix() -> list[str] | str:
+    """Return the command prefix that gives a private network namespace, or why not."""
+    for tool in ("unshare", "ip"):
+        if shutil.which(tool) is None:
+            return f"{tool} is not installed: no private network namespace for ROS traffic"
+    why = ""
+    for prefix in (["unshare", "-n"], ["unshare", "-rn"]):
+        r = subprocess.run([*prefix, "sh", "-c", "ip link set lo up"], capture_output=True,
+                           text=True, timeout=20)
+        if r.returncode == 0:
+            return prefix
+        why = r.stderr.strip().splitlines()[-1] if r.stderr.strip() else f"exit {r.returncode}"
+    return f"unshare refused a private network namespace ({why}): ROS tests need one"
+
+
+def run_in_namespace(script: Path, *args: str, domain: int, timeout: float = 300.0) -> dict:
+    """Run ``script`` with this Python inside a loopback-only namespace; return its
+    last stdout line as JSON (skip if the namespace or the extra is missing)."""
+    missing = ros_missing()
+    if missing:
+        pytest.skip(missing)
+    prefix = namespace_prefix()
+    if isinstance(prefix, str):
+        pytest.skip(prefix)
+    env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST", ROS_DOMAIN_ID=str(domain),
+               PYTHONPATH=os.pathsep.join(filter(None, [str(ROOT), os.environ.get("PYTHONPATH")])))
+    command = " ".join(["ip link set lo up && exec", sys.executable, str(script), *args])
+    proc = subprocess.Popen([*prefix, "sh", "-c", command], env=env, cwd=ROOT,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        pytest.fail(f"{script.name} did not end within {timeout:g} s: {err[-2000:]}")
+    lines = out.strip().splitlines()
+    assert lines, f"{script.name} printed nothing (exit {proc.returncode}): {err[-2000:]}"
+    result = json.loads(lines[-1])
+    assert "error" not in result, f"{result['error']}\n{err[-3000:]}"
+    return result
+
+
+@pytest.fixture(scope="module")
+def session() -> dict:
+    return run_in_namespace(HERE / "_session.py", CASE, domain=100 + os.getpid() % 100)
+
+
+@pytest.fixture(scope="module")
+def profile():
+    from creative_py.backends.ros.profile import load_profile
+
+    return load_profile()
+
+
+def test_the_traffic_stays_in_a_loopback_only_namespace(session):
+    assert session["namespace_links"] == ["lo"]
+    assert session["discovery_range"] == "LOCALHOST"
+    assert 100 <= int(session["domain_id"]) < 200
+    assert session["standin_rc"] == 0  # it stopped cleanly on SIGTERM
+
+
+def test_joint_states_arrive_at_the_profile_rate(session, profile):
+    js = session["joint_states"]
+    assert js["names"] == [*profile.joints, profile.gripper_joint]
+    assert 25 <= js["per_s"] <= 55  # 50 Hz nominal, on a shared machine
+    assert js["position"][-1] == pytest.approx(profile.gripper_open)
+
+
+def test_object_poses_arrive_where_the_scene_has_them(session, profile):
+    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.backends.pybullet.bodies import frame_pose
+    from creative_py.case import get_case
+
+    m = get_case(CASE)
+    d = m.demonstration
+    with open_episode(load_world(m), d.variant, d.location, d.tool) as ep:
+        truth = {n: frame_pose(ep.sim, ep.body_id(n)) for n in session["poses"]}
+    assert set(session["interface"]["objects"]) == {ep.target_name, ep.context_name, d.tool}
+    for name, (pos, quat, frame) in session["poses"].items():
+        assert frame == profile.world_frame
+        assert session["interface"]["objects"][name] == profile.object_topic_of(name)
+        assert math.dist(pos, truth[name][0]) < 0.005, name
+        assert abs(sum(a * b for a, b in zip(quat, truth[name][1]))) > 0.999, name
+
+
+def test_a_trajectory_goal_moves_the_arm_and_succeeds_with_feedback(session, profile):
+    trips = session["round_trips"]
+    assert len(trips) == 6
+    for k, trip in enumerate(trips):
+        assert (trip["status"], trip["code"]) == ("succeeded", 0), trip
+        assert trip["error_after"] < profile.goal_tolerance
+        t = trip["times"]
+        assert 0 < t["accepted"] < 0.5 and 0 < t["first_feedback"] < 0.5
+        assert 0.95 < t["result"] < 2.0  # a 1 s trajectory
+        assert t["feedbacks"] >= 10
+        assert trip["feedback_names"] == list(profile.joints)
+    # the feedback's actual positions end at the goal's
+    assert trips[0]["last_feedback_actual"] == pytest.approx(session["q1"], abs=0.02)
+
+
+def test_invalid_goals_are_rejected(session):
+    assert session["rejected"] == {"unknown_joint": "rejected", "beyond_limits": "rejected",
+                                   "time_not_increasing": "rejected"}
+
+
+def test_a_goal_outside_the_learners_bounds_is_never_sent(session):
+    refused = session["refused"]
+    assert "limits.max_joint_speed" in refused["too_fast"]
+    assert "outside the workspace box" in refused["outside_workspace"]
+    assert session["goals_sent_while_refusing"] == 0
+    # the arm stayed where the last round trip left it (its start)
+    q_end = session["round_trips"][-1]
+    assert q_end["status"] == "succeeded"
+    q1, q = session["q1"], session["q_after_refusals"]
+    assert max(abs(a - b) for a, b in zip(q, q1)) > 0.1  # not at q1: back at the start
+
+
+def test_a_blocked_goal_without_path_tolerance_aborts_with_goal_tolerance_violated(session):
+    r = session["blocked_no_path_tolerance"]
+    assert (r["status"], r["code"]) == ("aborted", -5), r
+    assert "goal tolerance" in r["message"]
+    assert session["back_to_start"] == {"status": "succeeded", "code": 0}
+
+
+def test_a_colliding_goal_aborts_with_path_tolerance_violated(session):
+    r = session["collision"]
+    assert (r["status"], r["code"]) == ("aborted", -4), r
+    assert "path tolerance" in r["message"]
+    assert r["result_s"] < 4.0  # stopped before the trajectory's end
+
+
+def test_the_gripper_answers_and_its_gap_is_published(session, profile):
+    g = session["gripper"]
+    assert g["closed"] == [profile.gripper_closed, False, True]  # nothing between the fingers
+    assert g["opened"] == [profile.gripper_open, False, True]
+    assert g["gap_in_joint_states"] == pytest.approx(profile.gripper_open)
