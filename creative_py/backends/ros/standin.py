@@ -430,19 +430,15 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     if not args.seconds > 0:
         print(f"{prog}: option --seconds: must be > 0, got {args.seconds}", file=sys.stderr)
         return 2
-    try:
-        import rclpy  # noqa: F401
-        from control_msgs.action import FollowJointTrajectory  # noqa: F401
-    except ImportError as exc:
-        print(f"{prog}: {exc.name or 'rclpy'} is not installed: run make setup-ros "
-              "(docs/real-robot.md)", file=sys.stderr)
-        return 2
     from creative_py.backends.pybullet import load_world, open_episode
     from creative_py.case import get_case
 
-    try:
+    try:  # every input is checked before ROS or the physics start
         profile = load_profile(args.profile)
         manifest = get_case(args.case)
+        if manifest.backend != "pybullet":
+            raise WorldFileError(f"option --case: {args.case} runs in the {manifest.backend!r} "
+                                 "backend; the stand-in builds pybullet scenes")
         demo = manifest.demonstration
         variant = args.variant or demo.variant
         location = demo.location if args.location is None else args.location
@@ -455,12 +451,24 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         if location not in world.locations:
             raise WorldFileError(f"option --location: {location} is not a location of "
                                  f"{args.case} ({', '.join(map(str, world.locations))})")
-        with open_episode(world, variant, location, tool) as ep:
-            arm = SimArm(ep, profile, args.grasp_reach)
-            return serve(arm, args.realtime, args.seconds)
+        world.item(tool)
     except (WorldFileError, KeyError) as exc:
         msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
         print(f"{prog}: {msg}", file=sys.stderr)
+        return 2
+    try:
+        import rclpy  # noqa: F401
+        from control_msgs.action import FollowJointTrajectory  # noqa: F401
+    except ImportError as exc:
+        print(f"{prog}: {exc.name or 'rclpy'} is not installed: run make setup-ros "
+              "(docs/real-robot.md)", file=sys.stderr)
+        return 2
+    try:
+        with open_episode(world, variant, location, tool) as ep:
+            arm = SimArm(ep, profile, args.grasp_reach)
+            return serve(arm, args.realtime, args.seconds)
+    except WorldFileError as exc:
+        print(f"{prog}: {exc}", file=sys.stderr)
         return 2
 
 

@@ -176,3 +176,11 @@ def test_the_gripper_answers_and_its_gap_is_published(session, profile):
     assert g["closed"] == [profile.gripper_closed, False, True]  # nothing between the fingers
     assert g["opened"] == [profile.gripper_open, False, True]
     assert g["gap_in_joint_states"] == pytest.approx(profile.gripper_open)
+
+
+def test_without_a_namespace_the_ros_tests_skip_saying_why(monkeypatch):
+    monkeypatch.setattr(shutil, "which", lambda name: None)
+    assert namespace_prefix() == ("unshare is not installed: no private network namespace "
+                                  "for ROS traffic")
+    monkeypatch.setattr(importlib.util, "find_spec", lambda name: None)
+    assert ros_missing() == "the ros extra is not installed (make setup-ros; docs/real-robot.md)"
