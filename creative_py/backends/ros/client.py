@@ -56,11 +56,13 @@ class TrajectoryResult:
 
 @dataclass
 class Latest:
-    """The newest message of a topic and its arrival (``time.monotonic()``)."""
+    """The newest message of a topic, its arrival (``at``: ``time.monotonic()``;
+    ``wall``: ``time.time()``, to compare with the header's stamp) and how many came."""
 
     msg: Any = None
     at: float = field(default=-1.0)
     count: int = 0
+    wall: float = 0.0
 
 
 _STATUS = {4: "succeeded", 5: "canceled", 6: "aborted"}
@@ -120,11 +122,13 @@ class ArmClient:
 
     def _on_joints(self, msg: Any) -> None:
         with self._lock:
-            self.joint_state = Latest(msg, time.monotonic(), self.joint_state.count + 1)
+            self.joint_state = Latest(msg, time.monotonic(), self.joint_state.count + 1,
+                                      time.time())
 
     def _on_pose(self, name: str, msg: Any) -> None:
         with self._lock:
-            self.poses[name] = Latest(msg, time.monotonic(), self.poses[name].count + 1)
+            self.poses[name] = Latest(msg, time.monotonic(), self.poses[name].count + 1,
+                                     time.time())
 
     # ---------------------------------------------------------------- observation
     def wait_for_arm(self, timeout: float) -> None:

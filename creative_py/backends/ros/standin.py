@@ -29,8 +29,9 @@ and serves:
   the result says so (``stalled`` true, ``reached_goal`` false: the fingers stopped on
   the tool); its reported gap while holding is the middle of the open and closed gaps.
 
-Physics time runs at ``--realtime`` times the wall clock (1: as fast as a real arm);
-the messages' stamps are the node's (wall) clock. The first line on the standard
+Physics time runs at ``--realtime`` times the wall clock (1: as fast as a real arm), or
+slower where the machine cannot keep up (it never runs faster to catch up); the
+messages' stamps are the node's (wall) clock, a trajectory's times are physics time. The first line on the standard
 output is ``standin ready`` followed by the interface's names as JSON. It stops on
 SIGINT/SIGTERM or after ``--seconds``. Bad input: one line naming the option or the
 file and field, exit 2.
@@ -283,7 +284,8 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     js_period, pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
     active: Optional[Job] = None
     hold = arm.q()
-    last_js = last_pose = last_fb = -math.inf
+    next_js = next_pose = arm.time()
+    last_fb = -math.inf
     prev_q, prev_t = arm.q(), arm.time()
     wall0, sim0 = time.monotonic(), arm.time()
     deadline = time.monotonic() + seconds
@@ -360,7 +362,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                 active = None
         with lock:
             state["q"] = q
-        if now - last_js >= js_period:
+        if now >= next_js:
             msg = JointState()
             msg.header.stamp = node.get_clock().now().to_msg()
             msg.name = [*p.joints, p.gripper_joint]
@@ -368,8 +370,9 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
             dt = now - prev_t
             msg.velocity = [*((a - b) / dt for a, b in zip(q, prev_q)), 0.0] if dt > 0 else []
             js_pub.publish(msg)
-            last_js, prev_q, prev_t = now, q, now
-        if now - last_pose >= pose_period:
+            prev_q, prev_t = q, now
+            next_js = max(next_js + js_period, now)
+        if now >= next_pose:
             stamp = node.get_clock().now().to_msg()
             for name, (pos, quat) in arm.poses().items():
                 msg = PoseStamped()
@@ -378,11 +381,11 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                 (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
                  msg.pose.orientation.w) = quat
                 pose_pubs[name].publish(msg)
-            last_pose = now
+            next_pose = max(next_pose + pose_period, now)
         ahead = wall0 + (now - sim0) / realtime - time.monotonic()
         if ahead > 0:
             time.sleep(ahead)
-        elif ahead < -0.5:  # far behind (a loaded machine): do not run to catch up
+        elif ahead < -0.05:  # behind (a loaded machine): never run faster to catch up
             wall0, sim0 = time.monotonic(), now
     stop.set()
     if active is not None:

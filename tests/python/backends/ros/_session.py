@@ -42,6 +42,21 @@ try:
     client.wait_for_arm(30.0)
     out["arm_up_s"] = time.monotonic() - t_start
 
+    # -- the read-only interface check, and an arm that is not there (a renamed topic)
+    import tempfile
+    from pathlib import Path
+
+    from creative_py.backends.ros.check import check as check_interface
+
+    out["check"] = check_interface(profile, objects, 1.0, 10.0)
+    with tempfile.TemporaryDirectory() as tmp:
+        absent = Path(tmp) / "absent.toml"
+        absent.write_text(Path(profile.source).read_text().replace(
+            'topic = "joint_states"', 'topic = "absent/joint_states"'))
+        t = time.monotonic()
+        out["check_absent"] = check_interface(load_profile(absent), [], 1.0, 2.0)
+        out["check_absent_s"] = time.monotonic() - t
+
     # -- joint states: names and rate over one second
     n0 = client.joint_state.count
     time.sleep(1.0)

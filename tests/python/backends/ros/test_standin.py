@@ -104,7 +104,8 @@ def test_the_traffic_stays_in_a_loopback_only_namespace(session):
 def test_joint_states_arrive_at_the_profile_rate(session, profile):
     js = session["joint_states"]
     assert js["names"] == [*profile.joints, profile.gripper_joint]
-    assert 25 <= js["per_s"] <= 55  # 50 Hz nominal, on a shared machine
+    # 50 Hz of physics time; the wall-clock rate drops where the machine is loaded
+    assert 15 <= js["per_s"] <= 60
     assert js["position"][-1] == pytest.approx(profile.gripper_open)
 
 
@@ -133,7 +134,7 @@ def test_a_trajectory_goal_moves_the_arm_and_succeeds_with_feedback(session, pro
         assert trip["error_after"] < profile.goal_tolerance
         t = trip["times"]
         assert 0 < t["accepted"] < 0.5 and 0 < t["first_feedback"] < 0.5
-        assert 0.95 < t["result"] < 2.0  # a 1 s trajectory
+        assert 0.95 < t["result"] < 4.0  # a 1 s trajectory (longer on a loaded machine)
         assert t["feedbacks"] >= 10
         assert trip["feedback_names"] == list(profile.joints)
     # the feedback's actual positions end at the goal's
@@ -184,3 +185,16 @@ def test_without_a_namespace_the_ros_tests_skip_saying_why(monkeypatch):
                                   "for ROS traffic")
     monkeypatch.setattr(importlib.util, "find_spec", lambda name: None)
     assert ros_missing() == "the ros extra is not installed (make setup-ros; docs/real-robot.md)"
+
+
+def test_the_read_only_check_sees_the_interface_and_names_what_is_absent(session, profile):
+    report = session["check"]
+    js = report["joint_states"]
+    assert js["profile_joints_missing"] == [] and 15 <= js["rate_hz"] <= 60
+    assert 0 <= js["latency_ms"]["median"] < 50
+    assert {n: o["frame"] for n, o in report["objects"].items()} == {
+        n: profile.world_frame for n in session["interface"]["objects"]}
+    assert all(8 <= o["rate_hz"] <= 36 for o in report["objects"].values())  # 30 Hz nominal
+    assert session["check_absent"]["missing"] == ("no sensor_msgs/JointState on "
+                                                  "'absent/joint_states' within 2 s")
+    assert session["check_absent_s"] < 5.0
