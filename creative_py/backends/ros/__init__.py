@@ -15,7 +15,13 @@ profile (``robots/<name>.toml``, :mod:`profile`), so a lab remaps them without c
                 before a goal is sent (no ROS needed)
 ``standin``     the stand-in robot: the pybullet Baxter with a case's scene in its own
                 process behind that interface (``python -m creative_py.backends.ros.standin``)
-``client``      the learner's side: subscriptions, trajectory and gripper goals
+``client``      the learner's node: subscriptions, trajectory and gripper goals, timed
+``motion``      the learner's side of a motion: straight gripper moves through the
+                learner's IK (from the robot's URDF, no scene) sent as bounded trajectory
+                goals (LearnerArm); the episode side of the backend (RosEpisode, a
+                skeleton: truth from the pose topics; skills, facts, verdict to come)
+``check``       a read-only check of an arm's interface against a profile
+                (``python -m creative_py.backends.ros.check``): it sends nothing
 
 Nothing here imports ``rclpy`` at import time: a machine without the ``ros`` extra
 imports this package, reads profiles and runs the pure checks.

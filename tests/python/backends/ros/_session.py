@@ -157,6 +157,34 @@ try:
     out["gripper"] = {"closed": [closed.position, closed.stalled, closed.reached_goal],
                       "opened": [opened.position, opened.stalled, opened.reached_goal],
                       "gap_in_joint_states": client.joints()[profile.gripper_joint]}
+
+    # -- the learner's side: straight gripper moves through its own IK, and the episode
+    from creative_py.backends.ros.motion import Kinematics, LearnerArm, RosEpisode
+
+    kin = Kinematics(profile)
+    arm = LearnerArm(client, kin)
+    here = arm.gripper_pose()
+    up = ((here[0][0], here[0][1], here[0][2] + 0.05), here[1])
+    r = arm.move_to(up, speed=0.1)
+    time.sleep(0.1)
+    after = arm.gripper_pose()
+    out["move_up"] = {"status": r.status, "reason": r.reason, "from": here[0], "to": after[0],
+                      "target": up[0], "goals_sent": arm.goals_sent}
+    down = ((here[0][0], here[0][1], -0.22), here[1])
+    r = arm.move_to(down, speed=0.1)
+    out["move_below_the_box"] = {"status": r.status, "reason": r.reason,
+                                 "goals_sent": arm.goals_sent}
+    r = arm.move_to(here, speed=0.1)
+    out["move_back"] = {"status": r.status, "reason": r.reason}
+    kin.close()
+    with RosEpisode(profile, objects) as ep:
+        time.sleep(0.2)  # its subscriptions' first messages
+        out["episode"] = {"truth": ep.truth(), "steps": ep.steps, "tool_load": ep.tool_load,
+                          "poses_now": {n: client.pose(n) for n in objects}}
+        try:
+            ep.run_skill("any")
+        except NotImplementedError as exc:
+            out["episode"]["run_skill"] = str(exc)
 except BaseException as exc:  # report what went wrong as the session's result
     out["error"] = f"{type(exc).__name__}: {exc}"
 finally:

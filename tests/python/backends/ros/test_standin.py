@@ -198,3 +198,27 @@ def test_the_read_only_check_sees_the_interface_and_names_what_is_absent(session
     assert session["check_absent"]["missing"] == ("no sensor_msgs/JointState on "
                                                   "'absent/joint_states' within 2 s")
     assert session["check_absent_s"] < 5.0
+
+
+def test_the_learner_moves_the_gripper_through_its_own_ik(session):
+    up = session["move_up"]
+    assert up["status"] == "ok", up["reason"]
+    assert math.dist(up["to"], up["target"]) < 0.01
+    assert up["goals_sent"] == 1
+    assert session["move_back"]["status"] == "ok"
+
+
+def test_a_move_below_the_workspace_box_is_unreachable_and_not_sent(session):
+    r = session["move_below_the_box"]
+    assert r["status"] == "unreachable"
+    assert r["reason"].startswith("refused by the learner's bounds: ")
+    assert r["goals_sent"] == 1  # still the one of the move up
+
+
+def test_the_episode_skeleton_reads_truth_from_the_pose_topics(session):
+    ep = session["episode"]
+    assert set(ep["truth"]) == set(session["interface"]["objects"])
+    for name, (x, y, z, yaw) in ep["truth"].items():
+        assert ep["poses_now"][name][0] == pytest.approx([x, y, z], abs=0.002)
+    assert ep["steps"] == 0 and ep["tool_load"] is None
+    assert "does not run a case's skills yet" in ep["run_skill"]
