@@ -25,7 +25,9 @@ and serves:
 * ``control_msgs/action/GripperCommand``: a gap at or below the middle of the open and
   closed gaps closes the gripper, above it opens it. The stand-in does not simulate
   fingers: closing holds the tool if the gripper is within ``--grasp-reach`` of where
-  the tool's kind is held (a fixed joint, as the pybullet backend holds a tool), and
+  the tool's kind is held, with the kind's grasp (a fixed joint that pulls the tool
+  into place, exactly as the pybullet backend's grasp holds it: the approach may
+  push the tool a few centimetres), and
   the result says so (``stalled`` true, ``reached_goal`` false: the fingers stopped on
   the tool); its reported gap while holding is the middle of the open and closed gaps.
 
@@ -89,7 +91,7 @@ class SimArm:
         closing gripper to hold the tool.
     """
 
-    def __init__(self, episode: Any, profile: RobotProfile, grasp_reach: float = 0.03) -> None:
+    def __init__(self, episode: Any, profile: RobotProfile, grasp_reach: float = 0.06) -> None:
         from creative_py.backends.pybullet.baxter import RIGHT_ARM
 
         self.ep, self.profile, self.reach = episode, profile, grasp_reach
@@ -162,7 +164,7 @@ class SimArm:
         where = compose(tool, invert(ep.grasp))  # the gripper as the tool's kind holds it
         if math.dist(gripper[0], where[0]) > self.reach:
             return False
-        robot.grasp(ep.tool_body, compose(invert(gripper), tool))
+        robot.grasp(ep.tool_body, ep.grasp)  # as the pybullet backend's grasp holds it
         ep.held = True
         return True
 
@@ -415,7 +417,7 @@ def _parser() -> argparse.ArgumentParser:
                     help="stop after this many seconds (default: run until stopped)")
     ap.add_argument("--realtime", type=float, default=1.0,
                     help="physics time per wall-clock time (default 1)")
-    ap.add_argument("--grasp-reach", type=float, default=0.03,
+    ap.add_argument("--grasp-reach", type=float, default=0.06,
                     help="m: how close the gripper must be to the tool's grasp to hold it")
     return ap
 

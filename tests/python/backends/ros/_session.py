@@ -176,6 +176,28 @@ try:
                                  "goals_sent": arm.goals_sent}
     r = arm.move_to(here, speed=0.1)
     out["move_back"] = {"status": r.status, "reason": r.reason}
+
+    # -- a pick-up over ROS, as the hook-like grasp does it: behind and above the grip,
+    # behind it, in, close, lift (the grasp frame is the tool kind's, on the learner's side)
+    from creative_py.backends.pybullet import load_world
+    from creative_py.backends.pybullet.tools import tool_kind
+    from creative_py.backends.ros.standin import compose, invert
+    from creative_py.case import get_case
+
+    manifest = get_case(CASE)
+    spec = load_world(manifest).item(manifest.demonstration.tool).spec
+    position, quat, _ = client.pose(spec.name)
+    grip = compose((position, quat), invert(tool_kind(spec).initial_grasp(spec)))
+    (x, y, z), attitude = grip
+    moves = []
+    for target in ((x - 0.10, y, z + 0.05), (x - 0.10, y, z), (x, y, z)):
+        moves.append(arm.move_to((target, attitude), speed=0.15).status)
+    held = client.grip(True)
+    moves.append(arm.move_to(((x, y, z + 0.08), attitude), speed=0.1).status)
+    time.sleep(0.3)
+    out["pick_up"] = {"moves": moves, "stalled": held.stalled, "reached_goal": held.reached_goal,
+                      "tool_before": position, "tool_after": client.pose(spec.name)[0],
+                      "gap": client.joints()[profile.gripper_joint]}
     kin.close()
     with RosEpisode(profile, objects) as ep:
         time.sleep(0.2)  # its subscriptions' first messages

@@ -222,3 +222,13 @@ def test_the_episode_skeleton_reads_truth_from_the_pose_topics(session):
         assert ep["poses_now"][name][0] == pytest.approx([x, y, z], abs=0.002)
     assert ep["steps"] == 0 and ep["tool_load"] is None
     assert "does not run a case's skills yet" in ep["run_skill"]
+
+
+def test_the_learner_picks_the_tool_up_over_ros(session, profile):
+    pick = session["pick_up"]
+    assert pick["moves"] == ["ok"] * 4
+    assert (pick["stalled"], pick["reached_goal"]) == (True, False)  # closed on the tool
+    assert pick["gap"] == pytest.approx((profile.gripper_open + profile.gripper_closed) / 2)
+    before, after = pick["tool_before"], pick["tool_after"]
+    assert after[2] - before[2] == pytest.approx(0.08, abs=0.01)  # lifted with the gripper
+    assert math.dist(after[:2], before[:2]) < 0.01
