@@ -31,6 +31,12 @@ try:
     out["standin_ready_s"] = time.monotonic() - t_start
     info = json.loads(line[len("standin ready "):])
     out["interface"] = info
+    # the world is read before any subscription (it holds the GIL for a while)
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import get_case
+
+    manifest = get_case(CASE)
+    spec = load_world(manifest).item(manifest.demonstration.tool).spec
 
     from creative_py.backends.ros.client import ArmClient
     from creative_py.backends.ros.limits import OutOfBounds, goal_checker, urdf_forward
@@ -179,13 +185,9 @@ try:
 
     # -- a pick-up over ROS, as the hook-like grasp does it: behind and above the grip,
     # behind it, in, close, lift (the grasp frame is the tool kind's, on the learner's side)
-    from creative_py.backends.pybullet import load_world
     from creative_py.backends.pybullet.tools import tool_kind
     from creative_py.backends.ros.standin import compose, invert
-    from creative_py.case import get_case
 
-    manifest = get_case(CASE)
-    spec = load_world(manifest).item(manifest.demonstration.tool).spec
     position, quat, _ = client.pose(spec.name)
     grip = compose((position, quat), invert(tool_kind(spec).initial_grasp(spec)))
     (x, y, z), attitude = grip
@@ -207,6 +209,42 @@ try:
             ep.run_skill("any")
         except NotImplementedError as exc:
             out["episode"]["run_skill"] = str(exc)
+
+    # -- a frozen arm (SIGSTOP): stale joint states, and a goal that gets no result
+    import signal
+    import threading
+
+    from creative_py.backends.ros.client import ArmUnavailable
+
+    arm = LearnerArm(client, Kinematics(profile))
+    q = client.arm_q()
+    os.kill(standin.pid, signal.SIGSTOP)
+    try:
+        time.sleep(profile.stale_after_s + 0.3)
+        try:
+            client.arm_q()
+            stale = "no error"
+        except ArmUnavailable as exc:
+            stale = str(exc)
+        out["stale"] = {"arm_q": stale, "move": vars(arm.move_joints(q))}
+    finally:
+        os.kill(standin.pid, signal.SIGCONT)
+    time.sleep(0.5)
+    target = list(q)
+    target[0] += 0.1
+    box: dict = {}
+    worker = threading.Thread(target=lambda: box.update(
+        r=client.send_trajectory(client.make_goal([(1.0, target)]), timeout=2.5)))
+    t = time.monotonic()
+    worker.start()
+    time.sleep(0.3)
+    os.kill(standin.pid, signal.SIGSTOP)
+    worker.join()
+    out["frozen_mid_goal"] = {"status": box["r"].status, "after_s": time.monotonic() - t,
+                              "feedbacks": box["r"].times.feedbacks}
+    os.kill(standin.pid, signal.SIGCONT)
+    time.sleep(0.5)
+    out["after_thaw"] = {"arm_q_ok": len(client.arm_q()) == len(profile.joints)}
 except BaseException as exc:  # report what went wrong as the session's result
     out["error"] = f"{type(exc).__name__}: {exc}"
 finally:

@@ -133,8 +133,9 @@ def test_a_trajectory_goal_moves_the_arm_and_succeeds_with_feedback(session, pro
         assert (trip["status"], trip["code"]) == ("succeeded", 0), trip
         assert trip["error_after"] < profile.goal_tolerance
         t = trip["times"]
-        assert 0 < t["accepted"] < 0.5 and 0 < t["first_feedback"] < 0.5
-        assert 0.95 < t["result"] < 4.0  # a 1 s trajectory (longer on a loaded machine)
+        # milliseconds on a quiet machine (docs/real-robot.md); bounds for a loaded one
+        assert 0 < t["accepted"] < 3.0 and 0 < t["first_feedback"] < 3.0
+        assert 0.95 < t["result"] < 10.0  # a 1 s trajectory of physics time
         assert t["feedbacks"] >= 10
         assert trip["feedback_names"] == list(profile.joints)
     # the feedback's actual positions end at the goal's
@@ -197,7 +198,7 @@ def test_the_read_only_check_sees_the_interface_and_names_what_is_absent(session
     assert all(8 <= o["rate_hz"] <= 36 for o in report["objects"].values())  # 30 Hz nominal
     assert session["check_absent"]["missing"] == ("no sensor_msgs/JointState on "
                                                   "'absent/joint_states' within 2 s")
-    assert session["check_absent_s"] < 5.0
+    assert session["check_absent_s"] < 8.0
 
 
 def test_the_learner_moves_the_gripper_through_its_own_ik(session):
@@ -232,3 +233,14 @@ def test_the_learner_picks_the_tool_up_over_ros(session, profile):
     before, after = pick["tool_before"], pick["tool_after"]
     assert after[2] - before[2] == pytest.approx(0.08, abs=0.01)  # lifted with the gripper
     assert math.dist(after[:2], before[:2]) < 0.01
+
+
+def test_a_frozen_arm_gives_stale_joint_states_and_a_goal_without_result(session, profile):
+    stale = session["stale"]
+    assert stale["arm_q"].startswith(f"joint states on '{profile.joint_states_topic}' are ")
+    assert f"(stale after {profile.stale_after_s:g} s)" in stale["arm_q"]
+    assert stale["move"]["status"] == "invalid" and "stale" in stale["move"]["reason"]
+    frozen = session["frozen_mid_goal"]
+    assert frozen["status"] == "timeout" and 2.4 < frozen["after_s"] < 6.0
+    assert frozen["feedbacks"] >= 1  # it was moving when it froze
+    assert session["after_thaw"] == {"arm_q_ok": True}
