@@ -99,7 +99,7 @@ $(ROS_STAMP): pyproject.toml $(STAMP) $(ROS_IFACES)
 	$(PY) -c 'from control_msgs.action import FollowJointTrajectory, GripperCommand'
 	touch $(ROS_STAMP)
 
-setup-ros: $(ROS_STAMP)  ## Install the ROS 2 backend (rclpy wheels, control_msgs built once; about 4 min).
+setup-ros: $(ROS_STAMP)  ## Install the ROS 2 backend (rclpy wheels, control_msgs built once; 1-4 min).
 
 # Each test runs its ROS traffic in a private network namespace with only loopback (it
 # calls unshare itself and skips, saying why, where the namespace is refused).
