@@ -58,7 +58,7 @@ from scipy.spatial.transform import Rotation
 
 from creative_py.backends.ros.profile import RobotProfile, load_profile
 from creative_py.backends.ros.trajectory import (INVALID_GOAL, SUCCESSFUL, InvalidTrajectory,
-                                                 Outcome, TrajectoryRun)
+                                                 GoalResult, TrajectoryRun)
 from creative_py.world_files import WorldFileError
 
 Pose = tuple[tuple[float, float, float], tuple[float, float, float, float]]
@@ -333,7 +333,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
         q = arm.q()
         if active is not None:
             t = now - active.t0
-            outcome: Optional[Outcome] = None
+            result: Optional[GoalResult] = None
             if active.handle.is_cancel_requested:
                 active.handle.canceled()
                 active.result = _result("trajectory", SUCCESSFUL, "canceled")
@@ -341,8 +341,8 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                 hold, active = q, None
                 arm.command(hold)
             else:
-                outcome = active.run.judge(t, q)
-                if now - last_fb >= js_period or outcome is not None:
+                result = active.run.judge(t, q)
+                if now - last_fb >= js_period or result is not None:
                     last_fb = now
                     desired, index = active.run.desired(t)
                     fb = FollowJointTrajectory.Feedback()
@@ -353,14 +353,14 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                     fb.error.positions = [d - a for d, a in zip(desired, q)]
                     fb.index = index
                     active.handle.publish_feedback(fb)
-            if outcome is not None:
-                ok = outcome.code == SUCCESSFUL
+            if result is not None:
+                ok = result.code == SUCCESSFUL
                 if not ok:  # stop where it is, as a controller does on an abort
                     hold = q
                     arm.command(hold)
                 else:
                     hold = active.run.targets[-1]
-                finish(active, outcome.code, outcome.message, ok)
+                finish(active, result.code, result.message, ok)
                 active = None
         with lock:
             state["q"] = q

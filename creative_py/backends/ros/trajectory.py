@@ -38,7 +38,7 @@ class InvalidTrajectory(ValueError):
 
 
 @dataclass(frozen=True)
-class Outcome:
+class GoalResult:
     """How an executed trajectory ended: ``code`` (SUCCESSFUL or an error) and why."""
 
     code: int
@@ -138,7 +138,7 @@ class TrajectoryRun:
             prev_t, prev_q = tk, qk
         return list(self.targets[-1]), len(self.times) - 1
 
-    def judge(self, t: float, actual: Sequence[float]) -> Outcome | None:
+    def judge(self, t: float, actual: Sequence[float]) -> GoalResult | None:
         """Return the outcome at ``t`` s with the arm at ``actual``, or None while it runs.
 
         Before the end: PATH_TOLERANCE_VIOLATED if a joint is farther than its path
@@ -151,15 +151,15 @@ class TrajectoryRun:
         if t < self.end:
             for j, (e, tol) in enumerate(zip(errors, self.path_tol)):
                 if e > tol:
-                    return Outcome(PATH_TOLERANCE_VIOLATED,
+                    return GoalResult(PATH_TOLERANCE_VIOLATED,
                                    f"{self.joints[j]} is {e:.4f} rad from its desired "
                                    f"position at t = {t:.3f} s (path tolerance {tol:.4f} rad)")
             return None
         worst = max(range(len(errors)), key=lambda j: errors[j] - self.goal_tol[j])
         if errors[worst] <= self.goal_tol[worst]:
-            return Outcome(SUCCESSFUL, "")
+            return GoalResult(SUCCESSFUL, "")
         if t > self.end + self.goal_time:
-            return Outcome(GOAL_TOLERANCE_VIOLATED,
+            return GoalResult(GOAL_TOLERANCE_VIOLATED,
                            f"{self.joints[worst]} is {errors[worst]:.4f} rad from its goal "
                            f"{self.goal_time:.3f} s after the trajectory's end (goal tolerance "
                            f"{self.goal_tol[worst]:.4f} rad)")
