@@ -164,7 +164,7 @@ def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as
                              for v in c["variants"])
         typer.echo(f"{c['id']:<8} {c['title']}\n         world {c['world']}; variants "
                    f"{variants}; trial budget {c['trial_budget']}")
-    for error in broken.values():
+    for error in dict.fromkeys(broken.values()):  # a duplicate id: one line, both folders
         typer.echo(f"broken   {error}")
 
 
@@ -304,10 +304,13 @@ def sweep(
                               "or all (as creative run --video)."),
 ) -> None:
     """Run every combination of cases, strategies, seeds and world seeds on Ray and
-    write sweep.csv and sweep.png."""
+    write sweep.csv and sweep.png.
+
+    SIGTERM or Ctrl-C stops the sweep in one line (the finished runs stay in
+    sweep.csv) with exit code 143 or 130."""
     from creative_py.learning.run import PHASES
-    from creative_py.sweep import (SweepOptions, parse_ints, parse_strategies, plan_runs,
-                                   run_sweep)
+    from creative_py.sweep import (SweepOptions, SweepStopped, parse_ints,
+                                   parse_strategies, plan_runs, run_sweep)
 
     out = _path("--out", out)
     try:
@@ -337,9 +340,13 @@ def sweep(
         _fail(f"--video must be one of {', '.join(VIDEO_MODES)}, got {video!r}")
     opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials,
                         video=video)
-    with _one_line_errors():
-        result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
-                           serial=serial, fresh_workers=fresh_workers)
+    try:
+        with _one_line_errors():
+            result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
+                               serial=serial, fresh_workers=fresh_workers)
+    except SweepStopped as exc:
+        typer.echo(str(exc), err=True)
+        raise typer.Exit(code=exc.exit_code) from None
     ok = sum(r["status"] == "ok" for r in result.rows)
     typer.echo(f"{result.folder}: {ok} of {len(result.rows)} runs ok in "
                f"{result.wall_time_s} s", err=True)
