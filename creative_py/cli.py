@@ -159,13 +159,14 @@ def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as
                     for path, error in broken.items()]
         typer.echo(json.dumps(listing, indent=2))
         return
+    width = max([len("broken")] + [len(c["id"]) for c in listing])  # the longest id's
     for c in listing:
         variants = ", ".join(v["name"] + (" (harder)" if v["harder"] else "")
                              for v in c["variants"])
-        typer.echo(f"{c['id']:<8} {c['title']}\n         world {c['world']}; variants "
-                   f"{variants}; trial budget {c['trial_budget']}")
+        typer.echo(f"{c['id']:<{width}} {c['title']}\n{'':<{width}} world {c['world']}; "
+                   f"variants {variants}; trial budget {c['trial_budget']}")
     for error in dict.fromkeys(broken.values()):  # a duplicate id: one line, both folders
-        typer.echo(f"broken   {error}")
+        typer.echo(f"{'broken':<{width}} {error}")
 
 
 def _manifest(case: str, world: Optional[Path]):
