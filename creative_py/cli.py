@@ -356,6 +356,7 @@ def sweep(
 
 @app.command()
 def run(
+    ctx: typer.Context,
     case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
     seed: int = typer.Option(0, "--seed", help="Seed of the physics and sensor noise."),
     out: str = typer.Option("runs", "--out", help="Parent folder of the run folder."),
@@ -372,7 +373,9 @@ def run(
                                          "shipped one of the case)."),
     resume: Optional[str] = typer.Option(None, "--resume", help="Resume this interrupted "
                                           "run folder: replay its recorded trials without "
-                                          "physics, then go on (its own options apply)."),
+                                          "physics, then go on with the options recorded "
+                                          "in its run.json (no other option may be "
+                                          "given)."),
     video: str = typer.Option("key", "--video", help="MP4 clips in videos/: key (the "
                               "demonstration, the first success, each creation trial, the "
                               "first trial of each failure reason), all or none."),
@@ -406,6 +409,10 @@ def run(
     if gui:
         _need_display()
     if resume is not None:
+        given = _given_options(ctx, exclude=("case", "resume"))
+        if given:
+            _fail(f"{', '.join(given)}: not allowed with --resume (a resumed run uses the "
+                  f"options recorded in {resume / 'run.json'})")
         if not (resume / "run.json").is_file():
             _fail(f"--resume {resume}: not a resumable run folder (no run.json)")
         try:
@@ -448,6 +455,19 @@ def run(
     except OSError as exc:
         _fail(f"{exc.filename or out}: {exc.strerror or exc}")
     typer.echo(str(folder.path))
+
+
+def _given_options(ctx: typer.Context, exclude: tuple[str, ...] = ()) -> list[str]:
+    """Return the options of the command that the command line (or the environment)
+    gave, as their first spelling (``--seed``), in the command's order."""
+    given = []
+    for param in ctx.command.params:
+        if param.name in exclude or param.param_type_name != "option":
+            continue
+        source = ctx.get_parameter_source(param.name)  # typer's own click's enum: by name
+        if getattr(source, "name", None) in ("COMMANDLINE", "ENVIRONMENT"):
+            given.append(max(param.opts, key=len))
+    return given
 
 
 def _budget(case: str, world: Optional[Path], max_trials: Optional[int]) -> Optional[int]:
