@@ -98,35 +98,40 @@ class RunFolder:
                 n += 1
                 path = parent / f"{name}-{n}"
         run = cls(path)
-        run.lock()
+        run.lock(record_pid=True)
         (path / "snapshots").mkdir()
         return run
 
     @classmethod
     def open(cls, path: Path) -> "RunFolder":
         """Return an existing run folder, locked (raise :class:`FolderInUse` when
-        another process holds it), for a resume."""
+        another process holds it), for a resume. Its ``.lock`` is not written (a
+        refused resume leaves the folder as it was): the holder's pid is found from
+        the kernel's lock table."""
         run = cls(Path(path))
         run.lock()
         return run
 
-    def lock(self) -> None:
+    def lock(self, record_pid: bool = False) -> None:
         """Take the folder's advisory lock (``<run>/.lock``, ``fcntl.flock``) for the
         life of this process or until :meth:`release`; raise :class:`FolderInUse`
-        naming the holder's pid when another process holds it."""
+        naming the holder's pid when another process holds it (from ``/proc/locks``,
+        else the pid the file records). ``record_pid`` (a new folder) writes this
+        process's pid into the file; otherwise an existing file is left unchanged."""
         if self._lock_fd is not None:
             return
         fd = os.open(self.path / LOCK_NAME, os.O_RDWR | os.O_CREAT, 0o666)
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError as exc:
-            pid = os.read(fd, 32).decode("ascii", "replace").strip()
+            pid = _lock_holder(fd) or os.read(fd, 32).decode("ascii", "replace").strip()
             os.close(fd)
             if exc.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
                 raise FolderInUse(self.path, pid) from None
             raise
-        os.ftruncate(fd, 0)
-        os.write(fd, f"{os.getpid()}\n".encode())
+        if record_pid:
+            os.ftruncate(fd, 0)
+            os.write(fd, f"{os.getpid()}\n".encode())
         self._lock_fd = fd
         _HELD.add(fd)
 
@@ -197,6 +202,22 @@ class RunFolder:
     def write_json(self, name: str, data: Any) -> Path:
         """Write a JSON file of the run atomically."""
         return write_atomic(self.path / name, json.dumps(jsonable(data), indent=2) + "\n")
+
+
+def _lock_holder(fd: int) -> str:
+    """Return the pid of the process holding a ``flock`` on the file of ``fd``, from
+    Linux's ``/proc/locks`` (``""`` when it cannot be read or names none)."""
+    st = os.fstat(fd)
+    key = f"{os.major(st.st_dev):02x}:{os.minor(st.st_dev):02x}:{st.st_ino}"
+    try:
+        with open("/proc/locks", encoding="ascii", errors="replace") as fh:
+            for line in fh:
+                parts = line.split()
+                if "FLOCK" in parts and key in parts:
+                    return parts[parts.index(key) - 1]
+    except OSError:
+        pass
+    return ""
 
 
 TRIAL_KEYS = REQUIRED_KEYS
