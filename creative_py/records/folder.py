@@ -268,7 +268,7 @@ def read_resume(run_dir: Path, warn: Callable[[str], None] | None = None
     """
     if not (Path(run_dir) / "trials.jsonl").exists():
         return [], []
-    lines = _lines(run_dir)
+    lines = _lines(run_dir, strict=True)
     records, numbers = [], []
     for i, (n, line, path) in enumerate(lines):
         try:
@@ -315,7 +315,7 @@ def _check_facts(facts: Any) -> None:
 def _needs_rewrite(path: Path, records: list[TrialRecord]) -> bool:
     """Return whether ``trials.jsonl`` differs from the lines of ``records``."""
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8", errors="replace")
     except FileNotFoundError:
         return bool(records)
     lines = [line for line in text.splitlines() if line.strip()]
@@ -324,13 +324,36 @@ def _needs_rewrite(path: Path, records: list[TrialRecord]) -> bool:
     return any(json.loads(a) != json.loads(b.to_json()) for a, b in zip(lines, records))
 
 
-def _lines(run_dir: Path) -> list[tuple[int, str, Path]]:
-    """Return ``(number, text, file)`` of each non-blank line of ``trials.jsonl``."""
+def _lines(run_dir: Path, strict: bool = False) -> list[tuple[int, str, Path]]:
+    """Return ``(number, text, file)`` of each non-blank line of ``trials.jsonl``.
+
+    A byte that is not UTF-8 becomes U+FFFD, or, with ``strict`` (a resume, which
+    rewrites the file), raises :class:`NotUtf8` naming the file, the line and the
+    byte (the torn last line of a killed run aside, a last line cut short before its
+    closing brace: it is returned with U+FFFD, and is not JSON)."""
     path = Path(run_dir) / "trials.jsonl"
     if not path.exists():
         raise FileNotFoundError(f"{path}: no trials.jsonl in this run folder")
-    lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
-    return [(n, line, path) for n, line in enumerate(lines, 1) if line.strip()]
+    raw = path.read_bytes().splitlines()
+    out = []
+    for n, line in enumerate(raw, 1):
+        try:
+            text = line.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            torn = (not any(rest.strip() for rest in raw[n:])
+                    and not line.rstrip().endswith(b"}"))  # cut short: not JSON anyway
+            if strict and not torn:
+                raise NotUtf8(f"{path}: line {n}: byte 0x{line[exc.start]:02x} at column "
+                              f"{exc.start + 1} is not UTF-8 text; the run cannot be "
+                              f"resumed") from None
+            text = line.decode("utf-8", errors="replace")
+        if text.strip():
+            out.append((n, text, path))
+    return out
+
+
+class NotUtf8(ValueError):
+    """A line of ``trials.jsonl`` holds a byte that is not UTF-8."""
 
 
 def _line(record: Union[TrialRecord, dict[str, Any]]) -> str:
