@@ -506,7 +506,7 @@ def report(run_dir: Path = typer.Argument(..., help="A run folder."),
         _fail(f"--width {width}: over 1000 columns")
     try:
         contents = read_run(run_dir)
-    except FileNotFoundError as exc:
+    except (FileNotFoundError, ValueError) as exc:  # not a run folder, trials.jsonl a folder
         _fail(str(exc))
     for w in contents.warnings:
         typer.echo(f"warning: {w}", err=True)

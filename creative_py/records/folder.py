@@ -236,7 +236,7 @@ def read_records(run_dir: Path, warn: Callable[[str], None] | None = None
     out = []
     for n, line, path in _lines(run_dir):
         try:
-            data = json.loads(line)
+            data = _json(line)
         except json.JSONDecodeError as exc:
             if warn:
                 warn(f"{path}: line {n} is not a JSON object ({exc.msg}); skipped")
@@ -272,7 +272,7 @@ def read_resume(run_dir: Path, warn: Callable[[str], None] | None = None
     records, numbers = [], []
     for i, (n, line, path) in enumerate(lines):
         try:
-            data = json.loads(line)
+            data = _json(line)
         except json.JSONDecodeError as exc:
             if i == len(lines) - 1:
                 if warn:
@@ -324,6 +324,15 @@ def _needs_rewrite(path: Path, records: list[TrialRecord]) -> bool:
     return any(json.loads(a) != json.loads(b.to_json()) for a, b in zip(lines, records))
 
 
+def _json(line: str) -> Any:
+    """Return the JSON value of one line; raise json.JSONDecodeError for one that is
+    not JSON, nested too deeply for the parser among them (``[[[[...``)."""
+    try:
+        return json.loads(line)
+    except RecursionError:
+        raise json.JSONDecodeError("nested too deeply", line, 0) from None
+
+
 def _lines(run_dir: Path, strict: bool = False) -> list[tuple[int, str, Path]]:
     """Return ``(number, text, file)`` of each non-blank line of ``trials.jsonl``.
 
@@ -332,8 +341,14 @@ def _lines(run_dir: Path, strict: bool = False) -> list[tuple[int, str, Path]]:
     byte (the torn last line of a killed run aside, a last line cut short before its
     closing brace: it is returned with U+FFFD, and is not JSON)."""
     path = Path(run_dir) / "trials.jsonl"
+    if not Path(run_dir).is_dir():
+        why = "not a folder" if Path(run_dir).exists() else "no such folder"
+        raise FileNotFoundError(f"{run_dir}: {why} (a run folder was expected)")
     if not path.exists():
         raise FileNotFoundError(f"{path}: no trials.jsonl in this run folder")
+    if not path.is_file():
+        raise NotARunFile(f"{path}: not a file (a run's trials.jsonl holds one JSON "
+                          f"object per line)")
     raw = path.read_bytes().splitlines()
     out = []
     for n, line in enumerate(raw, 1):
@@ -350,6 +365,10 @@ def _lines(run_dir: Path, strict: bool = False) -> list[tuple[int, str, Path]]:
         if text.strip():
             out.append((n, text, path))
     return out
+
+
+class NotARunFile(ValueError):
+    """A file of the run folder is a folder or another kind of non-file."""
 
 
 class NotUtf8(ValueError):
