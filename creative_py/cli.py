@@ -13,6 +13,7 @@ command is generic: a case is a world folder with a ``case.toml`` manifest
 
 from __future__ import annotations
 
+import errno
 import json
 import logging
 import os
@@ -119,7 +120,28 @@ def _path(option: str, text: Optional[str]) -> Optional[Path]:
         return None
     if not text.strip():
         _fail(f"{option} must name a folder, got an empty string")
-    return Path(text)
+    return _usable(option, Path(text))
+
+
+def _usable(option: str, path: Path) -> Path:
+    """Return ``path`` if the file system can look it up; fail in one line naming the
+    option otherwise (a component longer than the file system allows, ENAMETOOLONG,
+    which ``Path.exists`` raises)."""
+    text = str(path)
+    shown = text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
+    longest = max((len(os.fsencode(p)) for p in path.parts), default=0)
+    if longest > NAME_MAX:  # even below a folder not made yet
+        _fail(f"{option} {shown}: {os.strerror(errno.ENAMETOOLONG)} (a name of {longest} "
+              f"bytes, at most {NAME_MAX})")
+    try:
+        path.exists()
+    except OSError as exc:
+        _fail(f"{option} {shown}: {exc.strerror or exc}")
+    return path
+
+
+NAME_MAX = 255
+"""The longest file name (one path component), bytes: Linux's NAME_MAX."""
 
 
 def _name(option: str, text: Optional[str]) -> Optional[str]:
@@ -500,6 +522,7 @@ def report(run_dir: Path = typer.Argument(..., help="A run folder."),
     from creative_py.report.page import write_html_report
     from creative_py.report.table import print_report
 
+    _usable("RUN_DIR", run_dir)
     if width is not None and width < 40:
         _fail(f"--width {width}: under 40 columns")
     if width is not None and width > 1000:
