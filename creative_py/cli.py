@@ -31,6 +31,26 @@ app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="CREATIVE: learn to use tools from one demonstration, and create new ones.")
 
 
+def _flags_take_no_value() -> None:
+    """Show no value type beside a plain flag (``--gui``, ``--help``) in ``--help``:
+    typer's rich help panel labels every flag ``<bool>`` although a flag takes no value
+    (its plain help, ``get_help_record``, already leaves flags out)."""
+    from typer.core import TyperOption
+
+    shown = TyperOption.display_type_rich
+    if getattr(shown, "creative_flags", False):
+        return
+
+    def display_type_rich(self, ctx):  # type: ignore[no-untyped-def]
+        return None if self.is_flag or self.count else shown(self, ctx)
+
+    display_type_rich.creative_flags = True  # type: ignore[attr-defined]
+    TyperOption.display_type_rich = display_type_rich  # type: ignore[method-assign]
+
+
+_flags_take_no_value()
+
+
 _DEBUG = {"on": False}
 """Whether ``--debug`` was given: then an error shows its traceback."""
 
@@ -694,6 +714,34 @@ def tool_summary(manifest: Path) -> str:
 
 
 
+def main(args: Optional[list[str]] = None) -> None:
+    """The ``creative`` command (``pyproject.toml``'s script): :data:`app`, with a
+    wrong command line (an unknown option, ``--seed 1.5``, a missing argument) told in
+    one line ``error: ...`` naming the option and the command's ``--help``, exit code
+    2, instead of click's usage box."""
+    # typer's click (its own copy or click itself): the bases of its BadParameter
+    bases = {c.__name__: c for c in typer.BadParameter.__mro__}
+    UsageError, ClickException, Abort = (bases["UsageError"], bases["ClickException"],
+                                         typer.Abort)
+
+    try:
+        code = app(args=args, standalone_mode=False)
+    except UsageError as exc:
+        if type(exc).__name__ == "NoArgsIsHelpError":  # bare ``creative``: help shown
+            sys.exit(exc.exit_code)
+        where = f" (see {exc.ctx.command_path} --help)" if exc.ctx else ""
+        text = " ".join(exc.format_message().split()).rstrip(".")
+        typer.echo(f"error: {text}{where}", err=True)
+        sys.exit(2)
+    except ClickException as exc:
+        typer.echo(f"error: {' '.join(exc.format_message().split())}", err=True)
+        sys.exit(exc.exit_code)
+    except Abort:
+        typer.echo("aborted", err=True)
+        sys.exit(1)
+    sys.exit(code if isinstance(code, int) else 0)
+
+
 if __name__ == "__main__":  # pragma: no cover
-    app()
+    main()
 
