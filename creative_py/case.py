@@ -272,7 +272,6 @@ def read_manifest(folder: Path) -> CaseManifest:
         raise f.error("id", f"must be a lower-case Prolog atom, got {cid!r}")
     title = f.str("title")
     ontology = f.str("ontology")
-    _check_ontology(f, cid, ontology)
     backend = f.str("backend", DEFAULT_BACKEND, choices=tuple(sorted(BACKENDS)))
     budget = f.int("trial_budget", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
     paper_trials = (f.int("paper_trials", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
@@ -289,6 +288,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     demo = _read_demonstration(f, skills, params, variants)
     jitters, bounds, value_bounds = _read_randomise(f)
     f.done()
+    _check_ontology(f, cid, ontology)  # after the fields' own checks: a typo first
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), skills, pose_term, params,
                             variants, demo, jitters, paper_trials, bounds, value_bounds,
