@@ -82,15 +82,22 @@ class BackendEntry:
     extra : str
         The optional dependencies of ``pyproject.toml`` that it needs
         (``pip install -e '.[<extra>]'``); empty for one the core dependencies install.
+    setup : str
+        The command that installs it in this project (``make setup-maniskill``: pip
+        alone lacks the pinned CPU torch wheel and SAPIEN's Vulkan driver); what an
+        error for a missing backend should tell (``simulator/registry.py`` still
+        words ``pip install``: see issue 25).
     """
 
     module: str
     extra: str = ""
+    setup: str = "make setup"
 
 
 BACKENDS: dict[str, BackendEntry] = {
     "pybullet": BackendEntry("creative_py.backends.pybullet"),
-    "maniskill": BackendEntry("creative_py.backends.maniskill", extra="maniskill"),
+    "maniskill": BackendEntry("creative_py.backends.maniskill", extra="maniskill",
+                              setup="make setup-maniskill"),
 }
 """The simulator backends a manifest's ``backend`` may name: the registry that
 :func:`creative_py.simulator.backend` reads (here, below the simulator boundary, so
