@@ -261,13 +261,26 @@ def _stop_on_sigterm() -> Iterator[None]:
         return
 
     def handler(signum: int, _frame: Any) -> None:
+        _STOP["signum"] = signum   # kept: the exception may land where it is swallowed
         raise _Signalled(signum)
 
+    _STOP.clear()
     previous = signal.signal(signal.SIGTERM, handler)
     try:
         yield
     finally:
         signal.signal(signal.SIGTERM, previous)
+
+
+_STOP: dict[str, int] = {}
+"""The signal that stopped the sweep, if one did (:func:`_stop_on_sigterm`)."""
+
+
+def _check_stop() -> None:
+    """Raise :class:`_Signalled` if a SIGTERM came (an import or a library that caught
+    the handler's exception must not let the sweep go on)."""
+    if "signum" in _STOP:
+        raise _Signalled(_STOP["signum"])
 
 
 @dataclass
@@ -352,6 +365,7 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
             if serial:
                 for spec in runs:
                     finished(run_one(spec, str(runs_dir), options))
+                    _check_stop()
             else:
                 _run_on_ray(runs, runs_dir, options, address, num_cpus, fresh_workers,
                             finished)
@@ -425,7 +439,8 @@ def _run_on_ray(runs: Sequence[RunSpec], runs_dir: Path, options: SweepOptions,
         remote = ray.remote(num_cpus=1, max_calls=1 if fresh_workers else 0)(run_one)
         pending = {remote.remote(spec, str(runs_dir), options): spec for spec in runs}
         while pending:
-            ready, _ = ray.wait(list(pending), num_returns=1)
+            _check_stop()
+            ready, _ = ray.wait(list(pending), num_returns=1, timeout=1.0)
             for ref in ready:
                 spec = pending.pop(ref)
                 try:
