@@ -252,17 +252,23 @@ class _Signalled(BaseException):
 
 
 @contextmanager
-def _stop_on_sigterm() -> Iterator[None]:
-    """Turn SIGTERM into :class:`_Signalled` while the sweep runs (on the main thread),
-    replacing the handler ``ray.init`` installs (``sys.exit`` from a signal handler,
-    and Ray's C++ handler printing a stack dump), and restore the previous handler."""
+def _stop_on_sigterm(raise_at_once: bool = True) -> Iterator[None]:
+    """Stop the sweep on SIGTERM (on the main thread), replacing the handler
+    ``ray.init`` installs (``sys.exit`` from a signal handler, and Ray's C++ handler
+    printing a stack dump); restore the previous handler after.
+
+    The signal is kept (:func:`_check_stop` raises :class:`_Signalled` after each run
+    and, on Ray, every second); with ``raise_at_once`` (a serial sweep, whose run may
+    take minutes) the handler also raises it at once. Not under Ray: an exception raised
+    inside ``ray.wait``'s C code becomes a SystemError."""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
 
     def handler(signum: int, _frame: Any) -> None:
         _STOP["signum"] = signum   # kept: the exception may land where it is swallowed
-        raise _Signalled(signum)
+        if raise_at_once:
+            raise _Signalled(signum)
 
     _STOP.clear()
     previous = signal.signal(signal.SIGTERM, handler)
@@ -361,7 +367,7 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         _write_csv(folder / "sweep.csv", result.rows)
 
     try:
-        with _stop_on_sigterm():
+        with _stop_on_sigterm(raise_at_once=serial):
             if serial:
                 for spec in runs:
                     finished(run_one(spec, str(runs_dir), options))
@@ -433,6 +439,10 @@ def _run_on_ray(runs: Sequence[RunSpec], runs_dir: Path, options: SweepOptions,
     ours = signal.getsignal(signal.SIGTERM)
     try:
         start_ray(init, local=not address)
+    except SystemExit as exc:  # SIGTERM while ray.init's own handler was in place
+        if exc.code == signal.SIGTERM:
+            raise _Signalled(signal.SIGTERM) from None
+        raise
     finally:
         signal.signal(signal.SIGTERM, ours)
     try:

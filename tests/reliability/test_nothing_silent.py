@@ -112,6 +112,28 @@ def test_sigterm_ends_a_sweep_in_one_line_with_exit_code_143(tmp_path):
     assert "Traceback" not in err and "SIGTERM received" not in err
 
 
+@pytest.mark.sim
+@pytest.mark.slow  # Ray's start: 10-30 s
+def test_sigterm_ends_a_ray_sweep_in_one_line_without_a_stack_dump(tmp_path):
+    """Ray's C++ handler printed ``*** SIGTERM received ...`` and a stack dump."""
+    proc = subprocess.Popen([sys.executable, "-m", "creative_py.cli", "sweep", "rake",
+                             "--seeds", "0-1", "--num-cpus", "1", "--phase", "use",
+                             "--max-trials", "1", "--eval-trials", "0", "--out",
+                             str(tmp_path)], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            text=True)
+    deadline = time.monotonic() + 300
+    while time.monotonic() < deadline and not list(tmp_path.glob("sweep-*/runs/*")):
+        time.sleep(0.2)                     # a run folder: Ray is up and running a task
+    proc.send_signal(signal.SIGTERM)
+    _out, err = proc.communicate(timeout=300)
+    [folder] = tmp_path.glob("sweep-*")
+    done = len((folder / "sweep.csv").read_text().splitlines()) - 1
+    assert proc.returncode == 143, err[-2000:]
+    assert err.splitlines()[-1] == (f"sweep stopped by SIGTERM after {done} of 2 runs; the "
+                                    f"finished ones are in {folder / 'sweep.csv'}")
+    assert "SIGTERM received" not in err and "Traceback" not in err
+
+
 def test_a_local_ray_instance_that_times_out_at_startup_is_started_again(monkeypatch):
     """``make test`` under load: "The current node timed out during startup" (Ray's
     fixed 30 s) failed the sweep; a second start is tried, with no timed assertion."""
