@@ -72,6 +72,19 @@ dx = 0.05
 """
 
 
+@pytest.fixture(autouse=True)
+def _ontology_file(tmp_path_factory, monkeypatch):
+    """The ontology file the manifest names: a manifest's ``ontology`` must be a file of
+    ontology/cases/ that declares the case (issue 25)."""
+    import creative_py.case
+
+    folder = tmp_path_factory.mktemp("ontology_cases")
+    for shipped in creative_py.case.ONTOLOGY_CASES.glob("*.pl"):  # the shipped cases too
+        (folder / shipped.name).symlink_to(shipped)
+    (folder / "regcase.pl").write_text("case(regcase).\n")
+    monkeypatch.setattr(creative_py.case, "ONTOLOGY_CASES", folder)
+
+
 def _folder(tmp_path, backend_line: str):
     folder = tmp_path / "regcase"
     folder.mkdir()
