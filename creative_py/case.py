@@ -46,6 +46,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from creative_py.backends import BACKENDS, DEFAULT_BACKEND
 from creative_py.world_files import WORLDS_ROOT, Fields, WorldFileError, load_toml
 
 MANIFEST = "case.toml"
@@ -68,43 +69,6 @@ POSE_LIMIT = 10.0
 RANDOMISE_LIMIT = 1000.0
 """The largest size of a ``[randomise]`` ``min``, ``max`` (a scene value's or a spec
 field's own unit: m, rad, degrees) and ``jitter``."""
-
-
-@dataclass(frozen=True)
-class BackendEntry:
-    """Where a simulator backend lives and what installs it.
-
-    Attributes
-    ----------
-    module : str
-        The module that implements :class:`creative_py.simulator.Backend` (imported
-        only when a case names the backend).
-    extra : str
-        The optional dependencies of ``pyproject.toml`` that it needs
-        (``pip install -e '.[<extra>]'``); empty for one the core dependencies install.
-    setup : str
-        The command that installs it in this project (``make setup-maniskill``: pip
-        alone lacks the pinned CPU torch wheel and SAPIEN's Vulkan driver); what an
-        error for a missing backend should tell (``simulator/registry.py`` still
-        words ``pip install``: see issue 25).
-    """
-
-    module: str
-    extra: str = ""
-    setup: str = "make setup"
-
-
-BACKENDS: dict[str, BackendEntry] = {
-    "pybullet": BackendEntry("creative_py.backends.pybullet"),
-    "maniskill": BackendEntry("creative_py.backends.maniskill", extra="maniskill",
-                              setup="make setup-maniskill"),
-}
-"""The simulator backends a manifest's ``backend`` may name: the registry that
-:func:`creative_py.simulator.backend` reads (here, below the simulator boundary, so
-that the manifest reader can refuse an unknown name with the file and the field)."""
-
-DEFAULT_BACKEND = "pybullet"
-"""The backend of a manifest that names none."""
 
 
 @dataclass(frozen=True)
