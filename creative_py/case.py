@@ -46,10 +46,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from creative_py.backends import BACKENDS, DEFAULT_BACKEND
 from creative_py.world_files import WORLDS_ROOT, Fields, WorldFileError, load_toml
 
 MANIFEST = "case.toml"
 """The manifest's file name in a world folder."""
+
+ONTOLOGY_CASES = WORLDS_ROOT.parent / "ontology" / "cases"
+"""The folder of the case ontology files the engine loads (``<ontology>.pl``)."""
 
 ROLES = ("tool", "target", "context")
 """The roles a skill argument can take."""
@@ -65,36 +69,6 @@ POSE_LIMIT = 10.0
 RANDOMISE_LIMIT = 1000.0
 """The largest size of a ``[randomise]`` ``min``, ``max`` (a scene value's or a spec
 field's own unit: m, rad, degrees) and ``jitter``."""
-
-
-@dataclass(frozen=True)
-class BackendEntry:
-    """Where a simulator backend lives and what installs it.
-
-    Attributes
-    ----------
-    module : str
-        The module that implements :class:`creative_py.simulator.Backend` (imported
-        only when a case names the backend).
-    extra : str
-        The optional dependencies of ``pyproject.toml`` that it needs
-        (``pip install -e '.[<extra>]'``); empty for one the core dependencies install.
-    """
-
-    module: str
-    extra: str = ""
-
-
-BACKENDS: dict[str, BackendEntry] = {
-    "pybullet": BackendEntry("creative_py.backends.pybullet"),
-    "maniskill": BackendEntry("creative_py.backends.maniskill", extra="maniskill"),
-}
-"""The simulator backends a manifest's ``backend`` may name: the registry that
-:func:`creative_py.simulator.backend` reads (here, below the simulator boundary, so
-that the manifest reader can refuse an unknown name with the file and the field)."""
-
-DEFAULT_BACKEND = "pybullet"
-"""The backend of a manifest that names none."""
 
 
 @dataclass(frozen=True)
@@ -285,6 +259,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     demo = _read_demonstration(f, skills, params, variants)
     jitters, bounds, value_bounds = _read_randomise(f)
     f.done()
+    _check_ontology(f, cid, ontology)  # after the fields' own checks: a typo first
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), skills, pose_term, params,
                             variants, demo, jitters, paper_trials, bounds, value_bounds,
@@ -294,6 +269,24 @@ def read_manifest(folder: Path) -> CaseManifest:
     except ValueError as exc:
         raise WorldFileError(f"{path}: field 'demonstration.pose': {exc}") from None
     return manifest
+
+
+def _check_ontology(f: Fields, cid: str, ontology: str) -> None:
+    """Raise WorldFileError naming ``case.toml`` and its field ``ontology`` unless
+    ``ontology/cases/<ontology>.pl`` exists and declares ``case(<id>).`` (the file
+    that holds this case's knowledge, which the engine loads)."""
+    if not _ID.match(ontology):
+        raise f.error("ontology", f"must name a file of ontology/cases/ without its .pl "
+                      f"(a lower-case Prolog atom), got {ontology!r}")
+    path = ONTOLOGY_CASES / f"{ontology}.pl"
+    try:
+        text = path.read_text(encoding="utf-8", errors="replace")
+    except OSError as exc:
+        why = "no such file" if isinstance(exc, FileNotFoundError) else (exc.strerror or exc)
+        raise f.error("ontology", f"{path}: {why}") from None
+    if not re.search(rf"^case\(\s*{re.escape(cid)}\s*\)\s*\.", text, re.MULTILINE):
+        raise f.error("ontology", f"{path} does not declare case({cid}). (the case's "
+                      f"ontology file starts with it)")
 
 
 def _read_skills(f: Fields) -> tuple[SkillBinding, ...]:
@@ -448,6 +441,9 @@ class CaseIndex:
 
     folders: dict[str, Path]
     broken: dict[Path, str]
+    duplicates: dict[str, str] = field(default_factory=dict)
+    """``id -> error line`` of every id that two or more folders declare: no folder
+    of it is a case (which one a run would use is not for the sort order to say)."""
 
 
 _INDEX: dict[Path, CaseIndex] = {}
@@ -459,11 +455,12 @@ def case_index(root: Path | None = None) -> CaseIndex:
 
     Each ``<root>/*/case.toml`` is parsed only for its ``id``; a folder whose manifest
     cannot give one, or gives an id another folder declares too, is listed in
-    ``broken`` with the error naming both files.
+    ``broken`` with the error naming both files (every folder of a duplicate id is:
+    :func:`get_case` refuses that id with the same line).
     """
     root = Path(root) if root is not None else WORLDS_ROOT
     if root not in _INDEX:
-        folders: dict[str, Path] = {}
+        declared: dict[str, list[Path]] = {}
         broken: dict[Path, str] = {}
         for path in sorted(root.glob(f"*/{MANIFEST}")):
             try:
@@ -471,12 +468,20 @@ def case_index(root: Path | None = None) -> CaseIndex:
             except WorldFileError as exc:
                 broken[path] = str(exc)
                 continue
-            if cid in folders:
-                broken[path] = (f"{path}: field 'id': case {cid!r} is already declared by "
-                                f"{folders[cid] / MANIFEST}")
+            declared.setdefault(cid, []).append(path)
+        folders: dict[str, Path] = {}
+        duplicates: dict[str, str] = {}
+        for cid, paths in declared.items():
+            if len(paths) == 1:
+                folders[cid] = paths[0].parent
                 continue
-            folders[cid] = path.parent
-        _INDEX[root] = CaseIndex(folders, broken)
+            line = (f"case {cid!r} is declared by {len(paths)} folders: "
+                    f"{' and '.join(str(p) for p in paths)} (field 'id'; give each "
+                    f"folder its own id)")
+            duplicates[cid] = line
+            for p in paths:
+                broken[p] = line
+        _INDEX[root] = CaseIndex(folders, dict(sorted(broken.items())), duplicates)
     return _INDEX[root]
 
 
@@ -519,6 +524,8 @@ def get_case(case: str, root: Path | None = None) -> CaseManifest:
     folder declares ``case``, and WorldFileError when its own manifest is broken.
     """
     index = case_index(root)
+    if case in index.duplicates:
+        raise WorldFileError(index.duplicates[case])
     folder = index.folders.get(case)
     if folder is None:
         known = ", ".join(sorted(index.folders))

@@ -13,6 +13,7 @@ command is generic: a case is a world folder with a ``case.toml`` manifest
 
 from __future__ import annotations
 
+import errno
 import json
 import logging
 import os
@@ -28,6 +29,26 @@ from creative_py.learning.strategies import STRATEGIES, UnknownStrategy, strateg
 
 app = typer.Typer(add_completion=False, no_args_is_help=True,
                   help="CREATIVE: learn to use tools from one demonstration, and create new ones.")
+
+
+def _flags_take_no_value() -> None:
+    """Show no value type beside a plain flag (``--gui``, ``--help``) in ``--help``:
+    typer's rich help panel labels every flag ``<bool>`` although a flag takes no value
+    (its plain help, ``get_help_record``, already leaves flags out)."""
+    from typer.core import TyperOption
+
+    shown = TyperOption.display_type_rich
+    if getattr(shown, "creative_flags", False):
+        return
+
+    def display_type_rich(self, ctx):  # type: ignore[no-untyped-def]
+        return None if self.is_flag or self.count else shown(self, ctx)
+
+    display_type_rich.creative_flags = True  # type: ignore[attr-defined]
+    TyperOption.display_type_rich = display_type_rich  # type: ignore[method-assign]
+
+
+_flags_take_no_value()
 
 
 _DEBUG = {"on": False}
@@ -119,7 +140,28 @@ def _path(option: str, text: Optional[str]) -> Optional[Path]:
         return None
     if not text.strip():
         _fail(f"{option} must name a folder, got an empty string")
-    return Path(text)
+    return _usable(option, Path(text))
+
+
+def _usable(option: str, path: Path) -> Path:
+    """Return ``path`` if the file system can look it up; fail in one line naming the
+    option otherwise (a component longer than the file system allows, ENAMETOOLONG,
+    which ``Path.exists`` raises)."""
+    text = str(path)
+    shown = text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
+    longest = max((len(os.fsencode(p)) for p in path.parts), default=0)
+    if longest > NAME_MAX:  # even below a folder not made yet
+        _fail(f"{option} {shown}: {os.strerror(errno.ENAMETOOLONG)} (a name of {longest} "
+              f"bytes, at most {NAME_MAX})")
+    try:
+        path.exists()
+    except OSError as exc:
+        _fail(f"{option} {shown}: {exc.strerror or exc}")
+    return path
+
+
+NAME_MAX = 255
+"""The longest file name (one path component), bytes: Linux's NAME_MAX."""
 
 
 def _name(option: str, text: Optional[str]) -> Optional[str]:
@@ -159,13 +201,14 @@ def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as
                     for path, error in broken.items()]
         typer.echo(json.dumps(listing, indent=2))
         return
+    width = max([len("broken")] + [len(c["id"]) for c in listing])  # the longest id's
     for c in listing:
         variants = ", ".join(v["name"] + (" (harder)" if v["harder"] else "")
                              for v in c["variants"])
-        typer.echo(f"{c['id']:<8} {c['title']}\n         world {c['world']}; variants "
-                   f"{variants}; trial budget {c['trial_budget']}")
-    for error in broken.values():
-        typer.echo(f"broken   {error}")
+        typer.echo(f"{c['id']:<{width}} {c['title']}\n{'':<{width}} world {c['world']}; "
+                   f"variants {variants}; trial budget {c['trial_budget']}")
+    for error in dict.fromkeys(broken.values()):  # a duplicate id: one line, both folders
+        typer.echo(f"{'broken':<{width}} {error}")
 
 
 def _manifest(case: str, world: Optional[Path]):
@@ -305,10 +348,13 @@ def sweep(
                               "or all (as creative run --video)."),
 ) -> None:
     """Run every combination of cases, strategies, seeds and world seeds on Ray and
-    write sweep.csv and sweep.png."""
+    write sweep.csv and sweep.png.
+
+    SIGTERM or Ctrl-C stops the sweep in one line (the finished runs stay in
+    sweep.csv) with exit code 143 or 130."""
     from creative_py.learning.options import PHASES
-    from creative_py.sweep import (SweepOptions, parse_ints, parse_strategies, plan_runs,
-                                   run_sweep)
+    from creative_py.sweep import (SweepOptions, SweepStopped, parse_ints,
+                                   parse_strategies, plan_runs, run_sweep)
 
     out = _path("--out", out)
     try:
@@ -338,9 +384,13 @@ def sweep(
         _fail(f"--video must be one of {', '.join(VIDEO_MODES)}, got {video!r}")
     opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials,
                         video=video)
-    with _one_line_errors():
-        result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
-                           serial=serial, fresh_workers=fresh_workers)
+    try:
+        with _one_line_errors():
+            result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
+                               serial=serial, fresh_workers=fresh_workers)
+    except SweepStopped as exc:
+        typer.echo(str(exc), err=True)
+        raise typer.Exit(code=exc.exit_code) from None
     ok = sum(r["status"] == "ok" for r in result.rows)
     typer.echo(f"{result.folder}: {ok} of {len(result.rows)} runs ok in "
                f"{result.wall_time_s} s", err=True)
@@ -349,6 +399,7 @@ def sweep(
 
 @app.command()
 def run(
+    ctx: typer.Context,
     case: str = typer.Argument(..., help="A case id (creative cases lists them)."),
     seed: int = typer.Option(0, "--seed", help="Seed of the physics and sensor noise."),
     out: str = typer.Option("runs", "--out", help="Parent folder of the run folder."),
@@ -365,7 +416,9 @@ def run(
                                          "shipped one of the case)."),
     resume: Optional[str] = typer.Option(None, "--resume", help="Resume this interrupted "
                                           "run folder: replay its recorded trials without "
-                                          "physics, then go on (its own options apply)."),
+                                          "physics, then go on with the options recorded "
+                                          "in its run.json (no other option may be "
+                                          "given)."),
     video: str = typer.Option("key", "--video", help="MP4 clips in videos/: key (the "
                               "demonstration, the first success, each creation trial, the "
                               "first trial of each failure reason), all or none."),
@@ -400,6 +453,10 @@ def run(
     if gui:
         _need_display()
     if resume is not None:
+        given = _given_options(ctx, exclude=("case", "resume"))
+        if given:
+            _fail(f"{', '.join(given)}: not allowed with --resume (a resumed run uses the "
+                  f"options recorded in {resume / 'run.json'})")
         if not (resume / "run.json").is_file():
             _fail(f"--resume {resume}: not a resumable run folder (no run.json)")
         try:
@@ -461,6 +518,19 @@ def _interrupt_exits() -> Iterator[None]:
         raise typer.Exit(130)
 
 
+def _given_options(ctx: typer.Context, exclude: tuple[str, ...] = ()) -> list[str]:
+    """Return the options of the command that the command line (or the environment)
+    gave, as their first spelling (``--seed``), in the command's order."""
+    given = []
+    for param in ctx.command.params:
+        if param.name in exclude or param.param_type_name != "option":
+            continue
+        source = ctx.get_parameter_source(param.name)  # typer's own click's enum: by name
+        if getattr(source, "name", None) in ("COMMANDLINE", "ENVIRONMENT"):
+            given.append(max(param.opts, key=len))
+    return given
+
+
 def _budget(case: str, world: Optional[Path], max_trials: Optional[int]) -> Optional[int]:
     """The tool-use trial budget a run will have (for its progress line)."""
     if max_trials is not None:
@@ -491,13 +561,14 @@ def report(run_dir: Path = typer.Argument(..., help="A run folder."),
     from creative_py.report.page import write_html_report
     from creative_py.report.table import print_report
 
+    _usable("RUN_DIR", run_dir)
     if width is not None and width < 40:
         _fail(f"--width {width}: under 40 columns")
     if width is not None and width > 1000:
         _fail(f"--width {width}: over 1000 columns")
     try:
         contents = read_run(run_dir)
-    except FileNotFoundError as exc:
+    except (FileNotFoundError, ValueError) as exc:  # not a run folder, trials.jsonl a folder
         _fail(str(exc))
     for w in contents.warnings:
         typer.echo(f"warning: {w}", err=True)
@@ -662,6 +733,34 @@ def tool_summary(manifest: Path) -> str:
 
 
 
+def main(args: Optional[list[str]] = None) -> None:
+    """The ``creative`` command (``pyproject.toml``'s script): :data:`app`, with a
+    wrong command line (an unknown option, ``--seed 1.5``, a missing argument) told in
+    one line ``error: ...`` naming the option and the command's ``--help``, exit code
+    2, instead of click's usage box."""
+    # typer's click (its own copy or click itself): the bases of its BadParameter
+    bases = {c.__name__: c for c in typer.BadParameter.__mro__}
+    UsageError, ClickException, Abort = (bases["UsageError"], bases["ClickException"],
+                                         typer.Abort)
+
+    try:
+        code = app(args=args, standalone_mode=False)
+    except UsageError as exc:
+        if type(exc).__name__ == "NoArgsIsHelpError":  # bare ``creative``: help shown
+            sys.exit(exc.exit_code)
+        where = f" (see {exc.ctx.command_path} --help)" if exc.ctx else ""
+        text = " ".join(exc.format_message().split()).rstrip(".")
+        typer.echo(f"error: {text}{where}", err=True)
+        sys.exit(2)
+    except ClickException as exc:
+        typer.echo(f"error: {' '.join(exc.format_message().split())}", err=True)
+        sys.exit(exc.exit_code)
+    except Abort:
+        typer.echo("aborted", err=True)
+        sys.exit(1)
+    sys.exit(code if isinstance(code, int) else 0)
+
+
 if __name__ == "__main__":  # pragma: no cover
-    app()
+    main()
 

@@ -35,14 +35,17 @@ import csv
 import json
 import math
 import re
+import signal
 import statistics
 import sys
+import threading
 import time
 import traceback
+from contextlib import contextmanager
 from dataclasses import asdict, dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Iterator, Optional, Sequence
 
 from creative_py.records.summary import Outcomes, RunSummary, UsePhase, as_summary
 
@@ -83,26 +86,50 @@ class SweepOptions:
     video: str = "none"
 
 
-def parse_ints(text: str, option: str) -> list[int]:
+NUMBERS_MAX = 10000
+"""The most numbers ``--seeds`` or ``--world-seeds`` may give (each is a run or more)."""
+
+RUNS_MAX = 10000
+"""The most runs one sweep may plan (cases x strategies x seeds x world seeds)."""
+
+NUMBER_MAX = 2 ** 63 - 1
+"""The largest seed or world seed: a 64-bit signed integer (as ``creative run --seed``)."""
+
+
+def parse_ints(text: str, option: str, most: int = NUMBERS_MAX) -> list[int]:
     """Parse ``"0-19"``, ``"3"`` or ``"0,2,5-7"`` into whole numbers >= 0.
+
+    The count of numbers is bounded by ``most`` before any list is built (a range
+    ``0-1000000000`` is refused at once, not allocated), and each number by
+    :data:`NUMBER_MAX`.
 
     Raises
     ------
     ValueError
         Naming ``option`` and the cause (``--seeds 5-2: the range 5-2 is empty``).
     """
-    out: list[int] = []
+    bounds: list[tuple[int, int]] = []
+    count = 0
     for part in str(text).split(","):
         part = part.strip()
-        m = re.fullmatch(r"(\d+)(?:-(\d+))?", part)
+        m = re.fullmatch(r"(\d{1,19})(?:-(\d{1,19}))?", part)
         if not m:
+            if re.fullmatch(r"\d+(?:-\d+)?", part):
+                raise ValueError(f"{option}: {part[:40]}: a number is larger than "
+                                 f"{NUMBER_MAX}")
             raise ValueError(f"{option} {text}: {part!r} is not a whole number >= 0 or "
                              f"a range A-B")
         a = int(m.group(1))
         b = int(m.group(2)) if m.group(2) is not None else a
+        if max(a, b) > NUMBER_MAX:
+            raise ValueError(f"{option} {text}: {max(a, b)} is larger than {NUMBER_MAX}")
         if b < a:
             raise ValueError(f"{option} {text}: the range {part} is empty (end before start)")
-        out.extend(range(a, b + 1))
+        count += b - a + 1
+        bounds.append((a, b))
+    if count > most:
+        raise ValueError(f"{option} {text}: {count} numbers, at most {most} in one sweep")
+    out = [n for a, b in bounds for n in range(a, b + 1)]
     if len(set(out)) != len(out):
         raise ValueError(f"{option} {text}: a number is given twice")
     return out
@@ -132,6 +159,12 @@ def plan_runs(cases: Sequence[str], strategies: Sequence[str], seeds: Sequence[i
 
     if not cases:
         raise ValueError("sweep: no case given")
+    total = len(cases) * len(strategies) * len(seeds) * len(world_seeds)
+    if total > RUNS_MAX:
+        raise ValueError(f"sweep: {len(cases)} case(s) x {len(strategies)} strateg"
+                         f"{'y' if len(strategies) == 1 else 'ies'} x {len(seeds)} seed(s) x "
+                         f"{len(world_seeds)} world seed(s) are {total} runs, at most "
+                         f"{RUNS_MAX} in one sweep")
     for c in cases:
         try:
             get_case(c)
@@ -161,7 +194,7 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
         summary = RunSummary.read(folder.path)
         row.update(status="ok", run_dir=str(folder.path), **summary_row(summary))
     except BaseException as exc:  # noqa: BLE001 - a crashed run is a row, not the end
-        if isinstance(exc, KeyboardInterrupt):
+        if isinstance(exc, (KeyboardInterrupt, _Signalled)):
             raise
         lines = [ln for ln in traceback.format_exception_only(type(exc), exc)
                  if ln.strip()]
@@ -198,6 +231,73 @@ def summary_row(summary: "RunSummary | dict[str, Any]") -> dict[str, Any]:
 def _cell(value: Any) -> Any:
     """A figure of ``sweep.csv``: empty for one the summary lacks."""
     return "" if value is None else value
+
+
+STOP_EXIT_CODES = {signal.SIGINT: 130, signal.SIGTERM: 143}
+"""The exit code of ``creative sweep`` stopped by a signal (128 + its number)."""
+
+
+class SweepStopped(Exception):
+    """A sweep stopped by SIGTERM or SIGINT (Ctrl-C): the runs finished so far are
+    in the folder's ``sweep.csv``; Ray (when used) has been shut down."""
+
+    def __init__(self, signum: int, folder: Path, done: int, total: int) -> None:
+        name = signal.Signals(signum).name
+        super().__init__(f"sweep stopped by {name} after {done} of {total} runs; the "
+                         f"finished ones are in {folder / 'sweep.csv'}")
+        self.signum, self.folder, self.done, self.total = signum, folder, done, total
+
+    @property
+    def exit_code(self) -> int:
+        """Return the command's exit code (:data:`STOP_EXIT_CODES`)."""
+        return STOP_EXIT_CODES.get(self.signum, 128 + self.signum)
+
+
+class _Signalled(BaseException):
+    """Raised by the sweep's SIGTERM handler (a BaseException, as KeyboardInterrupt:
+    no run's ``except Exception`` takes it for a crash)."""
+
+    def __init__(self, signum: int) -> None:
+        super().__init__(signum)
+        self.signum = signum
+
+
+@contextmanager
+def _stop_on_sigterm(raise_at_once: bool = True) -> Iterator[None]:
+    """Stop the sweep on SIGTERM (on the main thread), replacing the handler
+    ``ray.init`` installs (``sys.exit`` from a signal handler, and Ray's C++ handler
+    printing a stack dump); restore the previous handler after.
+
+    The signal is kept (:func:`_check_stop` raises :class:`_Signalled` after each run
+    and, on Ray, every second); with ``raise_at_once`` (a serial sweep, whose run may
+    take minutes) the handler also raises it at once. Not under Ray: an exception raised
+    inside ``ray.wait``'s C code becomes a SystemError."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def handler(signum: int, _frame: Any) -> None:
+        _STOP["signum"] = signum   # kept: the exception may land where it is swallowed
+        if raise_at_once:
+            raise _Signalled(signum)
+
+    _STOP.clear()
+    previous = signal.signal(signal.SIGTERM, handler)
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+
+
+_STOP: dict[str, int] = {}
+"""The signal that stopped the sweep, if one did (:func:`_stop_on_sigterm`)."""
+
+
+def _check_stop() -> None:
+    """Raise :class:`_Signalled` if a SIGTERM came (an import or a library that caught
+    the handler's exception must not let the sweep go on)."""
+    if "signum" in _STOP:
+        raise _Signalled(_STOP["signum"])
 
 
 @dataclass
@@ -259,9 +359,7 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         Receives one line per finished run.
     """
     say = progress or (lambda m: print(m, file=sys.stderr, flush=True))
-    stamp = datetime.now(timezone.utc).strftime("%Y%m%d-%H%M%S")
-    folder = Path(out) / (name or f"sweep-{stamp}")
-    folder.mkdir(parents=True, exist_ok=False)
+    folder = new_sweep_folder(Path(out), name)
     runs_dir = folder / "runs"
     runs_dir.mkdir()
     result = SweepResult(folder)
@@ -279,36 +377,19 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
             f"{row['wall_time_s']} s")
         _write_csv(folder / "sweep.csv", result.rows)
 
-    if serial:
-        for spec in runs:
-            finished(run_one(spec, str(runs_dir), options))
-    else:
-        import ray
-
-        init: dict[str, Any] = {"log_to_driver": False, "include_dashboard": False}
-        if address:
-            init["address"] = address
-        elif num_cpus is not None:
-            init["num_cpus"] = num_cpus
-        ray.init(**init)
-        try:
-            remote = ray.remote(num_cpus=1, max_calls=1 if fresh_workers else 0)(run_one)
-            pending = {remote.remote(spec, str(runs_dir), options): spec for spec in runs}
-            while pending:
-                ready, _ = ray.wait(list(pending), num_returns=1)
-                for ref in ready:
-                    spec = pending.pop(ref)
-                    try:
-                        row = ray.get(ref)
-                    except Exception as exc:  # noqa: BLE001 - the worker itself died
-                        row = {k: "" for k in COLUMNS}
-                        row.update(case=spec.case, strategy=spec.strategy, seed=spec.seed,
-                                   world_seed="" if spec.world_seed is None
-                                   else spec.world_seed, status="crashed",
-                                   error=" ".join(str(exc).split())[:300])
-                    finished(row)
-        finally:
-            ray.shutdown()
+    try:
+        with _stop_on_sigterm(raise_at_once=serial):
+            if serial:
+                for spec in runs:
+                    finished(run_one(spec, str(runs_dir), options))
+                    _check_stop()
+            else:
+                _run_on_ray(runs, runs_dir, options, address, num_cpus, fresh_workers,
+                            finished)
+    except (_Signalled, KeyboardInterrupt) as exc:
+        signum = exc.signum if isinstance(exc, _Signalled) else signal.SIGINT
+        _write_csv(folder / "sweep.csv", result.rows)
+        raise SweepStopped(signum, folder, len(result.rows), total) from None
     result.wall_time_s = round(time.perf_counter() - t0, 2)
     order = {spec: i for i, spec in enumerate(runs)}
     result.rows.sort(key=lambda r: order.get(RunSpec(
@@ -324,6 +405,98 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         "ok": sum(r["status"] == "ok" for r in result.rows),
         "crashed": sum(r["status"] != "ok" for r in result.rows)}, indent=1) + "\n")
     return result
+
+
+RAY_START_ATTEMPTS = 3
+"""How often a local Ray instance is started before the sweep gives up: on a loaded
+machine its raylet may miss the 30 s Ray allows it to register (``The current node
+timed out during startup``), and a second start usually succeeds."""
+
+
+def start_ray(init: dict[str, Any], local: bool = True,
+              attempts: int = RAY_START_ATTEMPTS,
+              say: Callable[[str], None] = lambda m: print(m, file=sys.stderr, flush=True)
+              ) -> None:
+    """``ray.init(**init)``; a local instance (``local``) that times out during its
+    startup is shut down and started again, up to ``attempts`` times in all, saying so
+    in one line each time. Any other error, and the last timeout, are raised."""
+    import ray
+
+    for attempt in range(1, attempts + 1):
+        try:
+            ray.init(**init)
+            return
+        except Exception as exc:  # noqa: BLE001 - Ray raises a bare Exception here
+            if not local or attempt == attempts or "timed out during startup" not in str(exc):
+                raise
+            ray.shutdown()
+            say(f"warning: the local Ray instance timed out during startup (attempt "
+                f"{attempt} of {attempts}); starting it again")
+
+
+def _run_on_ray(runs: Sequence[RunSpec], runs_dir: Path, options: SweepOptions,
+                address: Optional[str], num_cpus: Optional[int], fresh_workers: bool,
+                finished: Callable[[dict[str, Any]], None]) -> None:
+    """Run ``runs`` as Ray tasks, calling ``finished`` with each row as it comes; Ray
+    is shut down however this ends. SIGTERM keeps the sweep's handler
+    (:func:`_stop_on_sigterm`), which ``ray.init`` would replace."""
+    import ray
+
+    init: dict[str, Any] = {"log_to_driver": False, "include_dashboard": False}
+    if address:
+        init["address"] = address
+    elif num_cpus is not None:
+        init["num_cpus"] = num_cpus
+    ours = signal.getsignal(signal.SIGTERM)
+    try:
+        start_ray(init, local=not address)
+    except SystemExit as exc:  # SIGTERM while ray.init's own handler was in place
+        if exc.code == signal.SIGTERM:
+            raise _Signalled(signal.SIGTERM) from None
+        raise
+    finally:
+        signal.signal(signal.SIGTERM, ours)
+    try:
+        remote = ray.remote(num_cpus=1, max_calls=1 if fresh_workers else 0)(run_one)
+        pending = {remote.remote(spec, str(runs_dir), options): spec for spec in runs}
+        while pending:
+            _check_stop()
+            ready, _ = ray.wait(list(pending), num_returns=1, timeout=1.0)
+            for ref in ready:
+                spec = pending.pop(ref)
+                try:
+                    row = ray.get(ref)
+                except Exception as exc:  # noqa: BLE001 - the worker itself died
+                    row = {k: "" for k in COLUMNS}
+                    row.update(case=spec.case, strategy=spec.strategy, seed=spec.seed,
+                               world_seed="" if spec.world_seed is None
+                               else spec.world_seed, status="crashed",
+                               error=" ".join(str(exc).split())[:300])
+                finished(row)
+    finally:
+        ray.shutdown()
+
+
+def new_sweep_folder(out: Path, name: Optional[str] = None) -> Path:
+    """Create and return the sweep's folder ``<out>/<name>`` (default
+    ``sweep-<UTC time>``). Without ``name``, a sweep started in the same second as
+    another gets ``sweep-<UTC time>-2`` (``-3``, ...): ``mkdir`` is the atomic test, so
+    two sweeps never share a folder. A given ``name`` that exists is an error
+    (FileExistsError)."""
+    out.mkdir(parents=True, exist_ok=True)
+    if name is not None:
+        folder = out / name
+        folder.mkdir()
+        return folder
+    base = f"sweep-{datetime.now(timezone.utc).strftime('%Y%m%d-%H%M%S')}"
+    folder, n = out / base, 1
+    while True:
+        try:
+            folder.mkdir()
+            return folder
+        except FileExistsError:
+            n += 1
+            folder = out / f"{base}-{n}"
 
 
 def _write_csv(path: Path, rows: Sequence[dict[str, Any]]) -> None:

@@ -465,8 +465,11 @@ in_range_(open_closed, X, Lo, Hi) :- X > Lo, X =< Hi.
 %
 %   Missing are the Name/Arity of the hook predicates the engine asks of every case
 %   (required_hook_/1) that Case does not answer: no clause of the predicate has Case,
-%   or a variable, as its first argument.  Checked once before a run, so that a case
-%   file lacking a hook is named at once instead of when the engine first needs it.
+%   or a variable, as its first argument, or its first answer is not of the shape the
+%   engine reads (well_formed_answer_/1: case_goal/2 a non-empty list of ground
+%   literals, `case_goal(hook, _)` is not; case_skills/2 a non-empty list of atoms).
+%   Checked once before a run, so that a case file lacking a hook is named at once
+%   instead of when the engine first needs it.
 %
 %   ==
 %   ?- case_missing_hooks(hook, M).
@@ -478,10 +481,36 @@ case_missing_hooks(Case, Missing) :-
             ( required_hook_(Name/Arity),
               functor(Template, Name, Arity),
               arg(1, Template, Case),
-              \+ ( case_scope_(Case, Scope),
-                   member(M, Scope),
-                   kb_module_clause(M, Template, _) ) ),
+              (   \+ ( case_scope_(Case, Scope),
+                       member(M, Scope),
+                       kb_module_clause(M, Template, _) )
+              ->  true
+              ;   \+ well_formed_answer_(Template)
+              ) ),
             Missing).
+
+%   well_formed_answer_(+Hook): the first answer of Hook (its case bound) has the
+%   shape the engine reads; a hook without a shape rule here is well formed if it
+%   answers at all (the engine asks it later, naming it if it does not).
+well_formed_answer_(Hook) :-
+    catch(case_answer(Hook), _, fail),
+    !,
+    well_formed_(Hook).
+well_formed_answer_(Hook) :-
+    \+ shaped_hook_(Hook).
+
+shaped_hook_(case_goal(_, _)).
+shaped_hook_(case_skills(_, _)).
+
+well_formed_(case_goal(_, Goal)) :-
+    !,
+    is_list(Goal), Goal \== [],
+    forall(member(G, Goal), ( ground(G), callable(G) )).
+well_formed_(case_skills(_, Skills)) :-
+    !,
+    is_list(Skills), Skills \== [],
+    forall(member(S, Skills), atom(S)).
+well_formed_(_).
 
 required_hook_(task_roles/3).
 required_hook_(case_goal/2).

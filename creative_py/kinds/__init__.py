@@ -96,6 +96,13 @@ def spec_from_dict(data: dict, *, source: str = "<dict>") -> KindSpec:
     if unknown:
         raise ValueError(f"{source}: object {data.get('name', '?')!r}: unknown field(s) "
                          f"{', '.join(unknown)}; expected some of {', '.join(sorted(known))}")
+    for f in cls.__dataclass_fields__.values():  # numbers first: True is no length
+        if f.name in data and str(f.type) in ("float", "float | None"):
+            v = data[f.name]
+            if isinstance(v, bool) or not (isinstance(v, (int, float))
+                                           or (v is None and "None" in str(f.type))):
+                raise ValueError(f"{source}: object {data.get('name', '?')!r}: field "
+                                 f"{f.name!r} must be a number, got {v!r}")
     try:
         return cls.from_fields(kind, data)
     except TypeError as exc:

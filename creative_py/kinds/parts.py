@@ -238,7 +238,8 @@ def check_positive(spec: Any, *fields: str) -> None:
     """Raise ``ValueError`` naming the first of ``fields`` that is not a positive number."""
     for f in fields:
         v = getattr(spec, f)
-        if not (isinstance(v, (int, float)) and math.isfinite(v) and v > 0):
+        if isinstance(v, bool) or not (isinstance(v, (int, float)) and math.isfinite(v)
+                                       and v > 0):
             raise ValueError(f"{spec.name}: {f} must be a positive number of metres, got {v!r}")
 
 
@@ -246,7 +247,8 @@ def check_mass(spec: Any) -> None:
     """Raise ``ValueError`` unless the spec's mass is None or a positive number (kg)."""
     # A zero mass would make pybullet treat the tool as static.
     m = spec.mass
-    if m is not None and not (isinstance(m, (int, float)) and math.isfinite(m) and m > 0):
+    if m is not None and (isinstance(m, bool) or not (isinstance(m, (int, float))
+                                                      and math.isfinite(m) and m > 0)):
         raise ValueError(f"{spec.name}: mass must be a positive number of kg or None, got {m!r}")
 
 

@@ -284,6 +284,26 @@ def tool_files_in(directory: Path, spec: KindSpec, mass: MassProperties,
         gcode=tuple(directory / r["gcode"] for r in rows if r.get("gcode")))
 
 
+def _missing_folders(folder: Path) -> list[Path]:
+    """Return ``folder`` and its ancestors that do not exist yet, deepest first."""
+    missing = []
+    for p in (folder, *folder.parents):
+        if p.exists():
+            break
+        missing.append(p)
+    return missing
+
+
+def _remove_empty(folders: list[Path]) -> None:
+    """Remove each of ``folders`` (deepest first) that is still empty: a refused tool
+    leaves no empty output folder behind."""
+    for p in folders:
+        try:
+            p.rmdir()
+        except OSError:
+            break
+
+
 def write_tool_files(spec: KindSpec, out_dir: Path | str, *,
                      settings: PrintSettings = PrintSettings(), overwrite: bool = False,
                      picture: bool = True, gcode: bool = False) -> ToolFiles:
@@ -324,6 +344,7 @@ def write_tool_files(spec: KindSpec, out_dir: Path | str, *,
     """
     check_min_feature(spec, settings)
     out_dir = Path(out_dir)
+    made = _missing_folders(out_dir)  # removed again (if still empty) when this fails
     out_dir.mkdir(parents=True, exist_ok=True)
     target = out_dir / spec.name
     if target.exists() and not target.is_dir():
@@ -345,6 +366,7 @@ def write_tool_files(spec: KindSpec, out_dir: Path | str, *,
             if not target.exists():
                 os.rename(old / spec.name, target)
             shutil.rmtree(old, ignore_errors=True)
+        _remove_empty(made)
         raise
     if old is not None:
         shutil.rmtree(old, ignore_errors=True)

@@ -98,35 +98,40 @@ class RunFolder:
                 n += 1
                 path = parent / f"{name}-{n}"
         run = cls(path)
-        run.lock()
+        run.lock(record_pid=True)
         (path / "snapshots").mkdir()
         return run
 
     @classmethod
     def open(cls, path: Path) -> "RunFolder":
         """Return an existing run folder, locked (raise :class:`FolderInUse` when
-        another process holds it), for a resume."""
+        another process holds it), for a resume. Its ``.lock`` is not written (a
+        refused resume leaves the folder as it was): the holder's pid is found from
+        the kernel's lock table."""
         run = cls(Path(path))
         run.lock()
         return run
 
-    def lock(self) -> None:
+    def lock(self, record_pid: bool = False) -> None:
         """Take the folder's advisory lock (``<run>/.lock``, ``fcntl.flock``) for the
         life of this process or until :meth:`release`; raise :class:`FolderInUse`
-        naming the holder's pid when another process holds it."""
+        naming the holder's pid when another process holds it (from ``/proc/locks``,
+        else the pid the file records). ``record_pid`` (a new folder) writes this
+        process's pid into the file; otherwise an existing file is left unchanged."""
         if self._lock_fd is not None:
             return
         fd = os.open(self.path / LOCK_NAME, os.O_RDWR | os.O_CREAT, 0o666)
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except OSError as exc:
-            pid = os.read(fd, 32).decode("ascii", "replace").strip()
+            pid = _lock_holder(fd) or os.read(fd, 32).decode("ascii", "replace").strip()
             os.close(fd)
             if exc.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
                 raise FolderInUse(self.path, pid) from None
             raise
-        os.ftruncate(fd, 0)
-        os.write(fd, f"{os.getpid()}\n".encode())
+        if record_pid:
+            os.ftruncate(fd, 0)
+            os.write(fd, f"{os.getpid()}\n".encode())
         self._lock_fd = fd
         _HELD.add(fd)
 
@@ -199,6 +204,22 @@ class RunFolder:
         return write_atomic(self.path / name, json.dumps(jsonable(data), indent=2) + "\n")
 
 
+def _lock_holder(fd: int) -> str:
+    """Return the pid of the process holding a ``flock`` on the file of ``fd``, from
+    Linux's ``/proc/locks`` (``""`` when it cannot be read or names none)."""
+    st = os.fstat(fd)
+    key = f"{os.major(st.st_dev):02x}:{os.minor(st.st_dev):02x}:{st.st_ino}"
+    try:
+        with open("/proc/locks", encoding="ascii", errors="replace") as fh:
+            for line in fh:
+                parts = line.split()
+                if "FLOCK" in parts and key in parts:
+                    return parts[parts.index(key) - 1]
+    except OSError:
+        pass
+    return ""
+
+
 TRIAL_KEYS = REQUIRED_KEYS
 """The keys every line of ``trials.jsonl`` has (the report and the plot need them)."""
 
@@ -215,7 +236,7 @@ def read_records(run_dir: Path, warn: Callable[[str], None] | None = None
     out = []
     for n, line, path in _lines(run_dir):
         try:
-            data = json.loads(line)
+            data = _json(line)
         except json.JSONDecodeError as exc:
             if warn:
                 warn(f"{path}: line {n} is not a JSON object ({exc.msg}); skipped")
@@ -247,11 +268,11 @@ def read_resume(run_dir: Path, warn: Callable[[str], None] | None = None
     """
     if not (Path(run_dir) / "trials.jsonl").exists():
         return [], []
-    lines = _lines(run_dir)
+    lines = _lines(run_dir, strict=True)
     records, numbers = [], []
     for i, (n, line, path) in enumerate(lines):
         try:
-            data = json.loads(line)
+            data = _json(line)
         except json.JSONDecodeError as exc:
             if i == len(lines) - 1:
                 if warn:
@@ -294,7 +315,7 @@ def _check_facts(facts: Any) -> None:
 def _needs_rewrite(path: Path, records: list[TrialRecord]) -> bool:
     """Return whether ``trials.jsonl`` differs from the lines of ``records``."""
     try:
-        text = path.read_text(encoding="utf-8")
+        text = path.read_text(encoding="utf-8", errors="replace")
     except FileNotFoundError:
         return bool(records)
     lines = [line for line in text.splitlines() if line.strip()]
@@ -303,13 +324,55 @@ def _needs_rewrite(path: Path, records: list[TrialRecord]) -> bool:
     return any(json.loads(a) != json.loads(b.to_json()) for a, b in zip(lines, records))
 
 
-def _lines(run_dir: Path) -> list[tuple[int, str, Path]]:
-    """Return ``(number, text, file)`` of each non-blank line of ``trials.jsonl``."""
+def _json(line: str) -> Any:
+    """Return the JSON value of one line; raise json.JSONDecodeError for one that is
+    not JSON, nested too deeply for the parser among them (``[[[[...``)."""
+    try:
+        return json.loads(line)
+    except RecursionError:
+        raise json.JSONDecodeError("nested too deeply", line, 0) from None
+
+
+def _lines(run_dir: Path, strict: bool = False) -> list[tuple[int, str, Path]]:
+    """Return ``(number, text, file)`` of each non-blank line of ``trials.jsonl``.
+
+    A byte that is not UTF-8 becomes U+FFFD, or, with ``strict`` (a resume, which
+    rewrites the file), raises :class:`NotUtf8` naming the file, the line and the
+    byte (the torn last line of a killed run aside, a last line cut short before its
+    closing brace: it is returned with U+FFFD, and is not JSON)."""
     path = Path(run_dir) / "trials.jsonl"
+    if not Path(run_dir).is_dir():
+        why = "not a folder" if Path(run_dir).exists() else "no such folder"
+        raise FileNotFoundError(f"{run_dir}: {why} (a run folder was expected)")
     if not path.exists():
         raise FileNotFoundError(f"{path}: no trials.jsonl in this run folder")
-    lines = path.read_text(encoding="utf-8", errors="replace").splitlines()
-    return [(n, line, path) for n, line in enumerate(lines, 1) if line.strip()]
+    if not path.is_file():
+        raise NotARunFile(f"{path}: not a file (a run's trials.jsonl holds one JSON "
+                          f"object per line)")
+    raw = path.read_bytes().splitlines()
+    out = []
+    for n, line in enumerate(raw, 1):
+        try:
+            text = line.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            torn = (not any(rest.strip() for rest in raw[n:])
+                    and not line.rstrip().endswith(b"}"))  # cut short: not JSON anyway
+            if strict and not torn:
+                raise NotUtf8(f"{path}: line {n}: byte 0x{line[exc.start]:02x} at column "
+                              f"{exc.start + 1} is not UTF-8 text; the run cannot be "
+                              f"resumed") from None
+            text = line.decode("utf-8", errors="replace")
+        if text.strip():
+            out.append((n, text, path))
+    return out
+
+
+class NotARunFile(ValueError):
+    """A file of the run folder is a folder or another kind of non-file."""
+
+
+class NotUtf8(ValueError):
+    """A line of ``trials.jsonl`` holds a byte that is not UTF-8."""
 
 
 def _line(record: Union[TrialRecord, dict[str, Any]]) -> str:

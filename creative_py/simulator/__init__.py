@@ -33,9 +33,9 @@ Modules:
 ``randomise``   randomised worlds (``--world-seed``), once for every backend:
                 ``draw_world`` (the seeded draws of catalogue numbers and location
                 values, the redraws) and ``apply_drawn``
-``registry``    ``backend(name)``, ``backend_for(manifest)``: the manifest's
+``loader``      ``backend(name)``, ``backend_for(manifest)``: the manifest's
                 ``backend`` name to its module, imported on first use (the names:
-                :data:`creative_py.case.BACKENDS`)
+                :data:`creative_py.backends.BACKENDS`)
 
 Backends: ``pybullet`` (:mod:`creative_py.backends.pybullet`, the default and the reference) and
 ``maniskill`` (:mod:`creative_py.backends.maniskill`, ManiSkill3 on SAPIEN, installed with
@@ -79,9 +79,9 @@ tool. It does not run trials, label outcomes or draw worlds: :mod:`.trial` and
    ``held``, each object's catalogue facts exactly as its kind's ``catalogue_facts()``
    gives them), so the engine reads them as it reads the pybullet backend's.
 6. Register it: one line ``"<name>": BackendEntry("creative_py.backends.<name>",
-   extra=...)`` in :data:`creative_py.case.BACKENDS` (``extra``: the
-   ``pyproject.toml`` optional dependencies it needs, named in the error when they
-   are missing). A case chooses it with ``backend = "<name>"`` in its ``case.toml``.
+   extra=..., setup=...)`` in :data:`creative_py.backends.BACKENDS` (``extra``: the
+   ``pyproject.toml`` optional dependencies it needs; ``setup``: the make target that
+   installs them, named in the error when they are missing). A case chooses it with ``backend = "<name>"`` in its ``case.toml``.
 7. Test it as ``tests/python/backends/pybullet/`` tests the pybullet one: a case's
    demonstration reaches the goal, a trial's outcome
    (:func:`creative_py.simulator.trial.run_trial`) follows the physics, errors name
@@ -93,7 +93,7 @@ tool. It does not run trials, label outcomes or draw worlds: :mod:`.trial` and
 
 from creative_py.simulator.protocol import (Backend, CatalogueEntry, ClipCamera, ClipRecorder,
                                             Episode, World)
-from creative_py.simulator.registry import (BackendError, BackendUnavailable, UnknownBackend,
+from creative_py.simulator.loader import (BackendError, BackendUnavailable, UnknownBackend,
                                             backend, backend_for, backend_packages)
 from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
                                          PoseTarget, SkillOutcome, TrialResult, Verdict)

@@ -80,7 +80,7 @@ def run_trial(world: World, tool: str, variant: str, location: int,
         once the tool action started (0.0 and None before); ``wall_time_s`` the wall
         time from opening the episode until the trial was judged.
     """
-    from creative_py.simulator.registry import backend_for
+    from creative_py.simulator.loader import backend_for
 
     m = world.manifest
     pose = m.demonstration.pose if pose is None else tuple(float(v) for v in pose)
@@ -238,7 +238,7 @@ def task_facts(world: World, variant: str, location: int) -> list[tuple]:
     The scene is built and observed once per (world folder, available objects, variant,
     location) by the manifest's backend; nothing moves.
     """
-    from creative_py.simulator.registry import backend_for
+    from creative_py.simulator.loader import backend_for
 
     m: CaseManifest = world.manifest
     key = (m.id, str(m.folder), world.variation,

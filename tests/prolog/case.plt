@@ -112,6 +112,26 @@ test(missing_skill_model,
        error(existence_error(innate_skill(bare_toy), fly)) ]) :-
     innate_action_models(bare_toy, _).
 
+%   Issue 25: `case_goal(hook, _)` answered the hook, and the run iterated the unbound
+%   goal (a Python traceback); a goal or skill list of the wrong shape is not an answer.
+test(unbound_goal_is_a_missing_hook,
+     [ setup(( write_case_file_("case(bare_toy).\ncase_goal(bare_toy, _).\n\c
+                                 case_skills(bare_toy, [pick_up, 3]).\n", F),
+               load_extra_(F) )),
+       cleanup(( restore_default_, delete_file(F) )) ]) :-
+    case_missing_hooks(bare_toy, M),
+    assertion(memberchk(case_goal/2, M)),
+    assertion(memberchk(case_skills/2, M)).
+
+test(ground_goal_and_atom_skills_are_answers,
+     [ setup(( write_case_file_("case(bare_toy).\ncase_goal(bare_toy, [at(a, b)]).\n\c
+                                 case_skills(bare_toy, [pick_up]).\n", F),
+               load_extra_(F) )),
+       cleanup(( restore_default_, delete_file(F) )) ]) :-
+    case_missing_hooks(bare_toy, M),
+    assertion(\+ memberchk(case_goal/2, M)),
+    assertion(\+ memberchk(case_skills/2, M)).
+
 test(shared_skill_answers_every_case,
      [ setup(( write_case_file_("case(bare_toy).\ncase_skills(bare_toy, [pick_up]).\n", F),
                load_extra_(F) )),

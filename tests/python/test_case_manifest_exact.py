@@ -89,6 +89,19 @@ max = 0.03
 """
 
 
+@pytest.fixture(autouse=True)
+def _ontology_file(tmp_path_factory, monkeypatch):
+    """The ontology file these manifests name: a manifest's ``ontology`` must be a file
+    of ontology/cases/ that declares the case (issue 25)."""
+    import creative_py.case
+
+    folder = tmp_path_factory.mktemp("ontology_cases")
+    for shipped in creative_py.case.ONTOLOGY_CASES.glob("*.pl"):  # the shipped cases too
+        (folder / shipped.name).symlink_to(shipped)
+    (folder / "mini_onto.pl").write_text("case(mini).\ncase(other).\n")
+    monkeypatch.setattr(creative_py.case, "ONTOLOGY_CASES", folder)
+
+
 def _write(root, text, folder="mini_world"):
     path = root / folder
     path.mkdir(parents=True, exist_ok=True)
@@ -344,19 +357,23 @@ def test_a_case_index_with_a_duplicate_and_a_broken_manifest(tmp_path):
     _write(tmp_path, MINIMAL.replace('id = "mini"', 'id = "other"')
            .replace("trial_budget = 3", "trial_budget = 0"), "d_world")
     index = case_index(tmp_path)
-    assert index.folders == {"mini": tmp_path / "a_world", "other": tmp_path / "d_world"}
-    assert sorted(index.broken) == [tmp_path / "b_world" / "case.toml",
-                                    tmp_path / "c_world" / "case.toml"]
-    assert index.broken[tmp_path / "b_world" / "case.toml"] == (
-        f"{tmp_path / 'b_world' / 'case.toml'}: field 'id': case 'mini' is already "
-        f"declared by {tmp_path / 'a_world' / 'case.toml'}")
-    assert get_case("mini", tmp_path).id == "mini"
-    assert get_case("mini", tmp_path) is get_case("mini", tmp_path)
-    assert set(load_cases(tmp_path, strict=False)) == {"mini"}
+    # issue 25: a duplicate id is no case at all (the sort order picked the one used)
+    duplicate = (f"case 'mini' is declared by 2 folders: {tmp_path / 'a_world' / 'case.toml'}"
+                 f" and {tmp_path / 'b_world' / 'case.toml'} (field 'id'; give each folder "
+                 f"its own id)")
+    assert index.folders == {"other": tmp_path / "d_world"}
+    assert index.duplicates == {"mini": duplicate}
+    assert sorted(index.broken) == [tmp_path / f"{x}_world" / "case.toml" for x in "abc"]
+    assert index.broken[tmp_path / "a_world" / "case.toml"] == duplicate
+    assert index.broken[tmp_path / "b_world" / "case.toml"] == duplicate
+    with pytest.raises(WorldFileError) as refused:
+        get_case("mini", tmp_path)
+    assert str(refused.value) == duplicate
+    assert set(load_cases(tmp_path, strict=False)) == set()
     with pytest.raises(WorldFileError):
         load_cases(tmp_path)
     assert sorted(broken_cases(tmp_path)) == [tmp_path / f"{x}_world" / "case.toml"
-                                              for x in "bcd"]
+                                              for x in "abcd"]
     assert index.broken[tmp_path / "c_world" / "case.toml"] == (
         f"{tmp_path / 'c_world' / 'case.toml'}: field 'id': missing")
     assert broken_cases(tmp_path)[tmp_path / "d_world" / "case.toml"].startswith(
@@ -364,8 +381,9 @@ def test_a_case_index_with_a_duplicate_and_a_broken_manifest(tmp_path):
     with pytest.raises(KeyError) as caught:
         get_case("nope", tmp_path)
     assert caught.value.args[0] == (
-        f"unknown case 'nope'; known cases: mini, other; {tmp_path / 'b_world' / 'case.toml'}"
-        f" does not load; {tmp_path / 'c_world' / 'case.toml'} does not load")
+        f"unknown case 'nope'; known cases: other; {tmp_path / 'a_world' / 'case.toml'} does "
+        f"not load; {tmp_path / 'b_world' / 'case.toml'} does not load; "
+        f"{tmp_path / 'c_world' / 'case.toml'} does not load")
 
 
 def test_load_cases_strict_raises_for_a_case_that_does_not_read(tmp_path):

@@ -20,7 +20,8 @@ from dataclasses import dataclass, field
 import pytest
 from typer.testing import CliRunner
 
-from creative_py.case import BACKENDS, DEFAULT_BACKEND, BackendEntry, read_manifest
+from creative_py.backends import BACKENDS, DEFAULT_BACKEND, BackendEntry
+from creative_py.case import read_manifest
 from creative_py.cli import app
 from creative_py.simulator import (Backend, BackendError, BackendUnavailable, Episode,
                                    Observation, UnknownBackend, World, backend, backend_for,
@@ -70,6 +71,19 @@ steps = ["push"]
 [demonstration.pose]
 dx = 0.05
 """
+
+
+@pytest.fixture(autouse=True)
+def _ontology_file(tmp_path_factory, monkeypatch):
+    """The ontology file the manifest names: a manifest's ``ontology`` must be a file of
+    ontology/cases/ that declares the case (issue 25)."""
+    import creative_py.case
+
+    folder = tmp_path_factory.mktemp("ontology_cases")
+    for shipped in creative_py.case.ONTOLOGY_CASES.glob("*.pl"):  # the shipped cases too
+        (folder / shipped.name).symlink_to(shipped)
+    (folder / "regcase.pl").write_text("case(regcase).\n")
+    monkeypatch.setattr(creative_py.case, "ONTOLOGY_CASES", folder)
 
 
 def _folder(tmp_path, backend_line: str):
@@ -159,18 +173,20 @@ def test_a_backend_that_is_not_installed_says_what_installs_it(tmp_path, monkeyp
     monkeypatch.syspath_prepend(str(tmp_path))
     (tmp_path / "creative_test_needs_lib.py").write_text("import creative_test_absent_lib\n")
     monkeypatch.setitem(BACKENDS, "needs_lib", BackendEntry("creative_test_needs_lib",
-                                                           extra="needs_lib"))
+                                                           extra="needs_lib",
+                                                           setup="make setup-needs-lib"))
     monkeypatch.setitem(BACKENDS, "core_gone", BackendEntry("creative_test_gone_backend"))
     with pytest.raises(BackendUnavailable) as caught:
         backend("needs_lib", "w/case.toml")
     assert str(caught.value) == (
         "w/case.toml: field 'backend': the simulator backend 'needs_lib' needs the module "
-        "creative_test_absent_lib, which is not installed: pip install -e '.[needs_lib]'")
+        "creative_test_absent_lib, which is not installed: make setup-needs-lib (the extra "
+        "'.[needs_lib]')")
     with pytest.raises(BackendUnavailable) as caught:
         backend("core_gone")
     assert str(caught.value) == (
         "the simulator backend 'core_gone' needs the module creative_test_gone_backend, "
-        "which is not installed: pip install -e . (make setup)")
+        "which is not installed: make setup")
 
 
 def test_a_broken_import_inside_the_project_is_not_taken_for_a_missing_install(
@@ -196,12 +212,32 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
     assert result.exit_code == 2
     assert result.output.strip() == (
         f"error: {folder / 'case.toml'}: field 'backend': the simulator backend 'core_gone' "
-        "needs the module creative_test_gone_backend, which is not installed: "
-        "pip install -e . (make setup)")
+        "needs the module creative_test_gone_backend, which is not installed: make setup")
 
 
 def test_the_backend_packages_are_the_registry_s():
     assert backend_packages() == {"backends.pybullet", "backends.maniskill"}
+
+
+def test_a_missing_maniskill_says_the_make_target_that_installs_it(monkeypatch):
+    import builtins
+
+    real = builtins.__import__
+
+    def without_mani_skill(name, *args, **kwargs):
+        if name.split(".")[0] == "mani_skill" or name == "creative_py.backends.maniskill":
+            raise ModuleNotFoundError(f"No module named {name!r}", name="mani_skill")
+        return real(name, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "__import__", without_mani_skill)
+    monkeypatch.setattr("importlib.import_module",
+                        lambda name: without_mani_skill(name))
+    with pytest.raises(BackendUnavailable) as caught:
+        backend("maniskill", "w/case.toml")
+    assert str(caught.value) == (
+        "w/case.toml: field 'backend': the simulator backend 'maniskill' needs the module "
+        "mani_skill, which is not installed: make setup-maniskill (the extra "
+        "'.[maniskill]')")
 
 
 def _members(protocol) -> list[str]:

@@ -21,7 +21,8 @@ from contextlib import contextmanager
 import pytest
 from test_simulator_registry import signature_mismatches
 
-from creative_py.case import BACKENDS, BackendEntry, read_manifest
+from creative_py.backends import BACKENDS, BackendEntry
+from creative_py.case import read_manifest
 from creative_py.simulator import TRIAL_OUTCOMES, Episode, Observation, SkillOutcome, Verdict
 from creative_py.simulator.trial import play_trial, run_trial, trial_outcome
 
@@ -82,6 +83,19 @@ dx = 0.05
 
 GUARD = Verdict("gripper lag", 0.04, 0.03, "m", "<", False, "max_lag",
                 measures={"touching": ["robot against shelf1"]})
+
+
+@pytest.fixture(autouse=True)
+def _ontology_file(tmp_path_factory, monkeypatch):
+    """The ontology file the manifest names (a manifest's ``ontology`` must be a file
+    of ontology/cases/ that declares the case)."""
+    import creative_py.case
+
+    folder = tmp_path_factory.mktemp("ontology_cases")
+    for shipped in creative_py.case.ONTOLOGY_CASES.glob("*.pl"):
+        (folder / shipped.name).symlink_to(shipped)
+    (folder / "loopcase.pl").write_text("case(loopcase).\n")
+    monkeypatch.setattr(creative_py.case, "ONTOLOGY_CASES", folder)
 
 
 class ScriptedEpisode:

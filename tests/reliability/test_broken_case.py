@@ -76,6 +76,7 @@ def test_creative_cases_lists_a_broken_case_and_the_others(tmp_path):
     assert "not valid TOML" in broken["broken"]
     text = subprocess.run([sys.executable, "-m", "creative_py.cli", "cases"],
                           capture_output=True, text=True, timeout=60, env=env, cwd=tmp_path)
+    width = max(len(c["id"]) for c in listing if c["id"])    # the longest id's (issue 25)
     assert [line for line in text.stdout.splitlines() if line.startswith("broken")] == [
-        f"broken   {broken['broken']}"]
+        f"{'broken':<{width}} {broken['broken']}"]
     assert BANNER not in text.stdout

@@ -1,0 +1,28 @@
+"""The ROS 2 backend: the learner drives an arm over ROS 2 (optional: ``make setup-ros``).
+
+An arm offers ros2_control's usual interface: ``sensor_msgs/JointState`` on a topic, a
+``control_msgs/FollowJointTrajectory`` action server, a ``control_msgs/GripperCommand``
+action server, and the tracked objects' poses as ``geometry_msgs/PoseStamped`` (one topic
+per object, as a motion-capture system publishes them). The names come from a robot
+profile (``robots/<name>.toml``, :mod:`profile`), so a lab remaps them without code.
+``docs/real-robot.md`` is the page for a lab.
+
+``profile``     the robot profile (no ROS needed to read it)
+``trajectory``  a trajectory's execution and judgement as a joint trajectory
+                controller does it: interpolation, path/goal/time tolerances, the
+                standard error codes (no ROS needed)
+``limits``      the learner's bounds (joint speed, the gripper's workspace box), checked
+                before a goal is sent (no ROS needed)
+``standin``     the stand-in robot: the pybullet Baxter with a case's scene in its own
+                process behind that interface (``python -m creative_py.backends.ros.standin``)
+``client``      the learner's node: subscriptions, trajectory and gripper goals, timed
+``motion``      the learner's side of a motion: straight gripper moves through the
+                learner's IK (from the robot's URDF, no scene) sent as bounded trajectory
+                goals (LearnerArm); the episode side of the backend (RosEpisode, a
+                skeleton: truth from the pose topics; skills, facts, verdict to come)
+``check``       a read-only check of an arm's interface against a profile
+                (``python -m creative_py.backends.ros.check``): it sends nothing
+
+Nothing here imports ``rclpy`` at import time: a machine without the ``ros`` extra
+imports this package, reads profiles and runs the pure checks.
+"""

@@ -1,0 +1,297 @@
+"""The learner's side of the ROS 2 interface: an arm observed by subscribing and moved by
+trajectory and gripper goals, with the names of a robot profile.
+
+:class:`ArmClient` owns one rclpy node spun in a background thread. It keeps the latest
+``JointState`` and each tracked object's ``PoseStamped``, and sends
+``FollowJointTrajectory`` and ``GripperCommand`` goals, waiting for their results with a
+bound; every goal's messages are timed (:class:`GoalTimes`). A trajectory goes through
+:func:`creative_py.backends.ros.limits.check_trajectory` first: one outside the
+profile's speed or workspace bounds raises :class:`~.limits.OutOfBounds` and is never
+sent.
+
+Needs the ``ros`` extra (``make setup-ros``); rclpy is imported when a client is made.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable, Optional, Sequence
+
+from creative_py.backends.ros.profile import RobotProfile
+from creative_py.backends.ros.trajectory import ERROR_NAMES
+
+
+class ArmUnavailable(RuntimeError):
+    """The arm did not answer in time (no joint states, no action server)."""
+
+
+@dataclass
+class GoalTimes:
+    """Wall-clock seconds from sending a goal to each of its messages."""
+
+    accepted: Optional[float] = None
+    first_feedback: Optional[float] = None
+    result: Optional[float] = None
+    feedbacks: int = 0
+
+
+@dataclass
+class TrajectoryResult:
+    """How a trajectory goal ended: ``status`` is ``rejected``, ``succeeded``,
+    ``aborted``, ``canceled`` or ``timeout``; ``error_code`` is control_msgs' code."""
+
+    status: str
+    error_code: Optional[int]
+    error_string: str
+    times: GoalTimes
+    last_feedback: Any = None
+
+    @property
+    def error_name(self) -> str:
+        """Return the error code's name (``SUCCESSFUL``, ``PATH_TOLERANCE_VIOLATED``, ...)."""
+        return ERROR_NAMES.get(self.error_code, str(self.error_code))
+
+
+@dataclass
+class Latest:
+    """The newest message of a topic, its arrival (``at``: ``time.monotonic()``;
+    ``wall``: ``time.time()``, to compare with the header's stamp) and how many came."""
+
+    msg: Any = None
+    at: float = field(default=-1.0)
+    count: int = 0
+    wall: float = 0.0
+
+
+_STATUS = {4: "succeeded", 5: "canceled", 6: "aborted"}
+
+
+class ArmClient:
+    """A node that observes and moves the arm a :class:`RobotProfile` describes.
+
+    Parameters
+    ----------
+    profile : RobotProfile
+    objects : sequence of str
+        The case's objects whose poses to follow (topics from the profile).
+    name : str
+        The node's name.
+    """
+
+    def __init__(self, profile: RobotProfile, objects: Sequence[str] = (),
+                 name: str = "creative_learner") -> None:
+        import rclpy
+        from rclpy.action import ActionClient
+        from rclpy.executors import MultiThreadedExecutor
+        from rclpy.node import Node
+
+        from control_msgs.action import FollowJointTrajectory, GripperCommand
+        from geometry_msgs.msg import PoseStamped
+        from sensor_msgs.msg import JointState
+
+        self.profile = profile
+        self._own_context = not rclpy.ok()
+        if self._own_context:
+            rclpy.init()
+        self.node = Node(name)
+        self.joint_state = Latest()
+        self.poses: dict[str, Latest] = {n: Latest() for n in objects}
+        self._lock = threading.Lock()
+        self.node.create_subscription(JointState, profile.joint_states_topic,
+                                      self._on_joints, 10)
+        for n in objects:
+            self.node.create_subscription(PoseStamped, profile.object_topic_of(n),
+                                          lambda m, n=n: self._on_pose(n, m), 10)
+        self.trajectory = ActionClient(self.node, FollowJointTrajectory, profile.arm_action)
+        self.gripper = ActionClient(self.node, GripperCommand, profile.gripper_action)
+        self._fjt, self._grip = FollowJointTrajectory, GripperCommand
+        self.executor = MultiThreadedExecutor(num_threads=2)
+        self.executor.add_node(self.node)
+        self._spinner = threading.Thread(target=self._spin, daemon=True)
+        self._spinner.start()
+
+    def _spin(self) -> None:
+        from rclpy.executors import ExternalShutdownException
+
+        try:
+            self.executor.spin()
+        except ExternalShutdownException:
+            pass
+
+    def _on_joints(self, msg: Any) -> None:
+        with self._lock:
+            self.joint_state = Latest(msg, time.monotonic(), self.joint_state.count + 1,
+                                      time.time())
+
+    def _on_pose(self, name: str, msg: Any) -> None:
+        with self._lock:
+            self.poses[name] = Latest(msg, time.monotonic(), self.poses[name].count + 1,
+                                     time.time())
+
+    # ---------------------------------------------------------------- observation
+    def wait_for_arm(self, timeout: float) -> None:
+        """Wait until joint states arrive and both action servers answer.
+
+        Raises
+        ------
+        ArmUnavailable
+            Naming the topic or action that stayed silent for ``timeout`` s.
+        """
+        end = time.monotonic() + timeout
+        while self.joint_state.msg is None:
+            if time.monotonic() > end:
+                raise ArmUnavailable(f"no sensor_msgs/JointState on "
+                                     f"{self.profile.joint_states_topic!r} within {timeout:g} s")
+            time.sleep(0.02)
+        for client, name in ((self.trajectory, self.profile.arm_action),
+                             (self.gripper, self.profile.gripper_action)):
+            if not client.wait_for_server(timeout_sec=max(0.0, end - time.monotonic())):
+                raise ArmUnavailable(f"no action server {name!r} within {timeout:g} s")
+
+    def joints(self, max_age: Optional[float] = None) -> dict[str, float]:
+        """Return the latest joint positions by name.
+
+        Raises
+        ------
+        ArmUnavailable
+            None yet, or older than ``max_age`` s (default: the profile's ``stale_after_s``).
+        """
+        age_limit = self.profile.stale_after_s if max_age is None else max_age
+        with self._lock:
+            latest = self.joint_state
+        if latest.msg is None:
+            raise ArmUnavailable(f"no joint states on {self.profile.joint_states_topic!r}")
+        age = time.monotonic() - latest.at
+        if age > age_limit:
+            raise ArmUnavailable(f"joint states on {self.profile.joint_states_topic!r} are "
+                                 f"{age:.2f} s old (stale after {age_limit:g} s)")
+        return dict(zip(latest.msg.name, latest.msg.position))
+
+    def arm_q(self, max_age: Optional[float] = None) -> list[float]:
+        """Return the arm's joint positions in the profile's order."""
+        by_name = self.joints(max_age)
+        return [by_name[j] for j in self.profile.joints]
+
+    def pose(self, name: str) -> Optional[tuple[tuple[float, ...], tuple[float, ...], str]]:
+        """Return the latest ``(position, quaternion xyzw, frame)`` of object ``name``."""
+        with self._lock:
+            latest = self.poses[name]
+        if latest.msg is None:
+            return None
+        p, o = latest.msg.pose.position, latest.msg.pose.orientation
+        return (p.x, p.y, p.z), (o.x, o.y, o.z, o.w), latest.msg.header.frame_id
+
+    # --------------------------------------------------------------------- motion
+    def make_goal(self, points: Sequence[tuple[float, Sequence[float]]],
+                  path_tolerance: Optional[dict[str, float]] = None,
+                  goal_tolerance: Optional[dict[str, float]] = None,
+                  goal_time_tolerance: float = 0.0,
+                  joint_names: Optional[Sequence[str]] = None) -> Any:
+        """Return a FollowJointTrajectory goal of ``(time_from_start s, positions)``."""
+        from builtin_interfaces.msg import Duration
+        from control_msgs.msg import JointTolerance
+        from trajectory_msgs.msg import JointTrajectoryPoint
+
+        def duration(s: float) -> Any:
+            sec = int(s)
+            return Duration(sec=sec, nanosec=int(round((s - sec) * 1e9)))
+
+        goal = self._fjt.Goal()
+        goal.trajectory.joint_names = list(joint_names or self.profile.joints)
+        for t, q in points:
+            pt = JointTrajectoryPoint()
+            pt.positions = [float(v) for v in q]
+            pt.time_from_start = duration(t)
+            goal.trajectory.points.append(pt)
+        goal.path_tolerance = [JointTolerance(name=n, position=float(v))
+                               for n, v in (path_tolerance or {}).items()]
+        goal.goal_tolerance = [JointTolerance(name=n, position=float(v))
+                               for n, v in (goal_tolerance or {}).items()]
+        goal.goal_time_tolerance = duration(goal_time_tolerance)
+        return goal
+
+    def send_trajectory(self, goal: Any, timeout: float = 30.0,
+                        check: Optional[Callable[[Any], None]] = None,
+                        on_feedback: Optional[Callable[[Any], None]] = None) -> TrajectoryResult:
+        """Send a FollowJointTrajectory goal and wait for its end (at most ``timeout`` s).
+
+        ``check(goal)`` runs first and raises to stop the goal from being sent (the
+        learner's bounds, :mod:`.limits`).
+        """
+        if check is not None:
+            check(goal)
+        times = GoalTimes()
+        last: list[Any] = [None]
+        t0 = time.monotonic()
+
+        def feedback(msg: Any) -> None:
+            if times.first_feedback is None:
+                times.first_feedback = time.monotonic() - t0
+            times.feedbacks += 1
+            last[0] = msg.feedback
+            if on_feedback is not None:
+                on_feedback(msg.feedback)
+
+        sent = self.trajectory.send_goal_async(goal, feedback_callback=feedback)
+        handle, at = _wait(sent, t0 + timeout)
+        if handle is None:
+            return TrajectoryResult("timeout", None, "no answer to the goal", times)
+        times.accepted = at - t0
+        if not handle.accepted:
+            return TrajectoryResult("rejected", None, "the arm rejected the goal", times)
+        res, at = _wait(handle.get_result_async(), t0 + timeout)
+        if res is None:
+            handle.cancel_goal_async()
+            return TrajectoryResult("timeout", None, f"no result within {timeout:g} s", times,
+                                    last[0])
+        times.result = at - t0
+        return TrajectoryResult(_STATUS.get(res.status, f"status {res.status}"),
+                                res.result.error_code, res.result.error_string, times, last[0])
+
+    def grip(self, close: bool, timeout: float = 10.0) -> Any:
+        """Close or open the gripper; return its GripperCommand result (None on timeout)."""
+        goal = self._grip.Goal()
+        p = self.profile
+        goal.command.position = p.gripper_closed if close else p.gripper_open
+        goal.command.max_effort = p.gripper_max_effort
+        end = time.monotonic() + timeout
+        handle, _ = _wait(self.gripper.send_goal_async(goal), end)
+        if handle is None or not handle.accepted:
+            return None
+        res, _ = _wait(handle.get_result_async(), end)
+        return None if res is None else res.result
+
+    def close(self) -> None:
+        """Destroy the node (and the rclpy context if this client made it)."""
+        import rclpy
+
+        self.executor.shutdown(timeout_sec=1.0)
+        self.trajectory.destroy()
+        self.gripper.destroy()
+        self.node.destroy_node()
+        if self._own_context:
+            rclpy.try_shutdown()
+
+    def __enter__(self) -> "ArmClient":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()
+
+
+def _wait(future: Any, deadline: float) -> tuple[Any, Optional[float]]:
+    """Return a future's result once done and when it was done (``time.monotonic()``),
+    or ``(None, None)`` after ``deadline`` (monotonic s)."""
+    done = threading.Event()
+    at: list[float] = []
+
+    def finished(_: Any) -> None:
+        at.append(time.monotonic())
+        done.set()
+
+    future.add_done_callback(finished)
+    if not done.wait(max(0.0, deadline - time.monotonic())):
+        return None, None
+    return future.result(), at[0] if at else time.monotonic()

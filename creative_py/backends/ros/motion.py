@@ -1,0 +1,283 @@
+"""The learner's side of an arm's motion over ROS 2, and the episode skeleton of the
+ROS 2 backend.
+
+:class:`LearnerArm` moves the gripper the way the learner's skills do, with the
+kinematics on the learner's side:
+
+1. a target pose of the gripper is cut into waypoints along a straight line;
+2. each waypoint goes through IK from the robot's URDF, computed in the learner's own
+   process (for ``urdf = "baxter"``, the pybullet backend's Baxter in a DIRECT client
+   without the scene);
+3. the waypoints are sent as one ``FollowJointTrajectory`` goal, timed so that no joint
+   exceeds the profile's speed, after the learner's bounds (:mod:`.limits`) passed.
+
+Its outcome is a :class:`~creative_py.simulator.types.SkillOutcome`, as the pybullet
+backend's motions give:
+
+* ``ok``: the goal succeeded;
+* ``blocked``: the arm aborted the goal on a path or goal tolerance, with the lag as
+  the stop's :class:`~creative_py.simulator.types.Verdict`;
+* ``unreachable``: no IK solution, or the learner's bounds refused the motion, which
+  is then never sent;
+* ``invalid``: the arm rejected the goal, did not answer in time, or its joint states
+  are stale.
+
+:class:`RosEpisode` is the episode side of the backend, shaped as the backends' episodes
+are after the trial loop moved above the boundary: open an episode, run a skill,
+observe, measure the verdict, truth, time, steps and tool load. Only the parts that need
+no case's skills are written: truth from the motion-capture topics, the time and the
+count of goals. ``run_skill``, ``observe`` and ``verdict`` raise NotImplementedError
+until the skills are expressed over ROS (issue 26).
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from typing import Any, Optional, Sequence
+
+from creative_py.backends.ros.client import ArmClient, ArmUnavailable
+from creative_py.backends.ros.limits import OutOfBounds, goal_checker, urdf_forward
+from creative_py.backends.ros.profile import RobotProfile
+from creative_py.backends.ros.trajectory import GOAL_TOLERANCE_VIOLATED
+from creative_py.simulator.types import SkillOutcome, Verdict
+
+Pose = tuple[tuple[float, float, float], tuple[float, float, float, float]]
+
+SPEED_MARGIN = 0.9
+"""The learner times its trajectories at this fraction of the profile's joint speed."""
+
+
+class Kinematics:
+    """The robot's kinematics on the learner's side, from the profile's URDF (no scene).
+
+    Only ``urdf = "baxter"`` yet: a Baxter in a pybullet DIRECT client of its own.
+    Joint positions are in the profile's order.
+    """
+
+    def __init__(self, profile: RobotProfile) -> None:
+        if profile.urdf != "baxter":
+            raise NotImplementedError(f"{profile.source}: field 'urdf': only \"baxter\" has "
+                                      f"learner-side kinematics yet, got {profile.urdf!r}")
+        from creative_py.backends.pybullet.baxter import RIGHT_ARM, Baxter
+        from creative_py.backends.pybullet.core import Sim
+        from creative_py.world_files import PhysicsSettings
+
+        self.profile = profile
+        self._sim = Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81)))
+        self._robot = Baxter(self._sim)
+        self._to_baxter = [profile.joints.index(n) for n in RIGHT_ARM]
+        self._to_profile = [RIGHT_ARM.index(n) for n in profile.joints]
+        self.forward_position = urdf_forward(profile)
+
+    def ik(self, target: Pose, seed: Sequence[float]) -> Optional[list[float]]:
+        """Return joint positions putting the gripper at ``target``, from ``seed``."""
+        q = self._robot.solve_ik(target, seed=[seed[i] for i in self._to_baxter])
+        return None if q is None else [q[i] for i in self._to_profile]
+
+    def forward(self, q: Sequence[float]) -> Pose:
+        """Return the gripper's world pose at joint positions ``q``."""
+        self._robot.reset_posture([q[i] for i in self._to_baxter])
+        return self._robot.gripper_pose()
+
+    def close(self) -> None:
+        """Release the kinematics' physics client."""
+        self._robot.close()
+        self._sim.close()
+
+
+class LearnerArm:
+    """An arm driven over ROS 2 by gripper poses, with IK and bounds on the learner's side.
+
+    Parameters
+    ----------
+    client : ArmClient
+        Connected to the arm (:meth:`ArmClient.wait_for_arm` done).
+    kinematics : Kinematics
+        From the profile's URDF.
+    step : float
+        Metres between the waypoints of a straight move.
+    timeout : float
+        Seconds a goal may take beyond its trajectory's duration.
+    """
+
+    def __init__(self, client: ArmClient, kinematics: Kinematics, step: float = 0.01,
+                 timeout: float = 10.0) -> None:
+        self.client, self.kin, self.profile = client, kinematics, client.profile
+        self.step, self.timeout = step, timeout
+        self.check = goal_checker(self.profile, client.arm_q, kinematics.forward_position)
+        self.goals_sent = 0
+
+    def gripper_pose(self) -> Pose:
+        """Return the gripper's pose by forward kinematics of the joint states."""
+        return self.kin.forward(self.client.arm_q())
+
+    def _timed(self, start: Sequence[float], path: Sequence[Sequence[float]],
+               min_duration: float) -> list[tuple[float, list[float]]]:
+        """Time the joint path: each segment at most the margin of the joint speed."""
+        speed = SPEED_MARGIN * self.profile.max_joint_speed
+        t, prev, points = 0.0, list(start), []
+        per = min_duration / max(1, len(path))
+        for q in path:
+            move = max(abs(a - b) for a, b in zip(q, prev))
+            t += max(per, move / speed, 1e-3)
+            points.append((t, list(q)))
+            prev = list(q)
+        return points
+
+    def send(self, points: Sequence[tuple[float, Sequence[float]]]) -> SkillOutcome:
+        """Send a trajectory (profile joint order) through the bounds; return its outcome."""
+        goal = self.client.make_goal(points)
+        try:
+            self.check(goal)
+        except OutOfBounds as exc:
+            return SkillOutcome("unreachable", f"refused by the learner's bounds: {exc}")
+        except ArmUnavailable as exc:
+            return SkillOutcome("invalid", str(exc))
+        self.goals_sent += 1
+        r = self.client.send_trajectory(goal, timeout=points[-1][0] + self.timeout)
+        if r.status == "succeeded":
+            return SkillOutcome("ok")
+        if r.status == "aborted":
+            fb = r.last_feedback
+            lag = (max(abs(e) for e in fb.error.positions)
+                   if fb is not None and len(fb.error.positions) else None)
+            tol = (self.profile.goal_tolerance if r.error_code == GOAL_TOLERANCE_VIOLATED
+                   else self.profile.path_tolerance)
+            stop = Verdict("joint lag", lag, tol, "rad", "<=", False,
+                           threshold_name=r.error_name.lower(),
+                           measures={"error_code": r.error_code})
+            return SkillOutcome("blocked", f"the arm aborted the goal ({r.error_name}): "
+                                f"{r.error_string}", stop)
+        return SkillOutcome("invalid", f"the goal was {r.status}: {r.error_string}")
+
+    def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:
+        """Move to joint positions ``q`` (profile order) in one segment."""
+        try:
+            start = self.client.arm_q()
+        except ArmUnavailable as exc:
+            return SkillOutcome("invalid", str(exc))
+        return self.send(self._timed(start, [list(q)], min_duration))
+
+    def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
+        """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s
+        (the orientation interpolated linearly in its quaternion, normalised)."""
+        try:
+            start = self.client.arm_q()
+        except ArmUnavailable as exc:
+            return SkillOutcome("invalid", str(exc))
+        here = self.kin.forward(start)
+        dist = math.dist(here[0], target[0])
+        n = max(1, math.ceil(dist / self.step))
+        q, path = list(start), []
+        dot = sum(a * b for a, b in zip(here[1], target[1]))
+        sign = -1.0 if dot < 0 else 1.0
+        for i in range(1, n + 1):
+            a = i / n
+            pos = tuple(p + a * (t - p) for p, t in zip(here[0], target[0]))
+            quat = [p + a * (sign * t - p) for p, t in zip(here[1], target[1])]
+            norm = math.sqrt(sum(v * v for v in quat))
+            sol = self.kin.ik((pos, tuple(v / norm for v in quat)), q)
+            if sol is None:
+                p = target[0]
+                return SkillOutcome("unreachable", f"IK found no arm posture for the gripper "
+                                    f"at ({pos[0]:.3f}, {pos[1]:.3f}, {pos[2]:.3f}) m on the way "
+                                    f"to ({p[0]:.3f}, {p[1]:.3f}, {p[2]:.3f}) m")
+            path.append(sol)
+            q = sol
+        return self.send(self._timed(start, path, dist / speed))
+
+    def grip(self, close: bool) -> SkillOutcome:
+        """Close or open the gripper; ``ok`` when it answered (``holding`` says more)."""
+        r = self.client.grip(close)
+        if r is None:
+            return SkillOutcome("invalid", f"the gripper {self.profile.gripper_action!r} did "
+                                "not answer")
+        self.holding = bool(close and r.stalled and not r.reached_goal)
+        return SkillOutcome("ok")
+
+
+class RosEpisode:
+    """One episode on an arm over ROS 2: the backend's episode side (a skeleton).
+
+    Parameters
+    ----------
+    profile : RobotProfile
+    objects : sequence of str
+        The case's tracked objects (their poses come from the profile's topics).
+    wait : float
+        Seconds to wait for the arm; :class:`ArmUnavailable` names what stayed silent.
+    name : str
+        The node's name.
+    """
+
+    def __init__(self, profile: RobotProfile, objects: Sequence[str], wait: float = 10.0,
+                 name: str = "creative_episode") -> None:
+        self.profile, self.objects = profile, list(objects)
+        self.client = ArmClient(profile, self.objects, name=name)
+        self.kin: Optional[Kinematics] = None
+        try:
+            self.client.wait_for_arm(wait)
+            self.kin = Kinematics(profile)
+        except BaseException:
+            self.close()
+            raise
+        self.arm = LearnerArm(self.client, self.kin)
+        self._t0 = time.monotonic()
+
+    def truth(self) -> dict[str, tuple[float, float, float, float]]:
+        """Return ``name -> (x, y, z, yaw)`` of the tracked objects, as the motion-capture
+        topics last gave them (the measured quantity comes from the topics)."""
+        out = {}
+        for name in self.objects:
+            pose = self.client.pose(name)
+            if pose is None:
+                continue
+            (x, y, z), (qx, qy, qz, qw), _ = pose
+            yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
+            out[name] = (x, y, z, yaw)
+        return out
+
+    def sim_time(self) -> float:
+        """Return the seconds since the episode opened (the arm's time is the wall's)."""
+        return time.monotonic() - self._t0
+
+    @property
+    def steps(self) -> int:
+        """Return the number of trajectory goals sent (a real arm has no physics steps)."""
+        return self.arm.goals_sent
+
+    @property
+    def tool_load(self) -> None:
+        """No force on the tool is measured over ROS yet (it needs a wrench topic)."""
+        return None
+
+    def run_skill(self, name: str, pose: Optional[Sequence[float]] = None) -> SkillOutcome:
+        """Not written yet: a case's skills as Cartesian paths over ROS (issue 26)."""
+        raise NotImplementedError(f"skill {name!r}: the ROS 2 backend does not run a case's "
+                                  "skills yet (docs/real-robot.md, 'Not done yet')")
+
+    def observe(self, cameras: bool = True) -> Any:
+        """Not written yet: the primitive facts of a case from the topics (issue 26)."""
+        raise NotImplementedError("the ROS 2 backend does not make a case's facts yet "
+                                  "(docs/real-robot.md, 'Not done yet')")
+
+    def verdict(self) -> Any:
+        """Not written yet: the case's oracle measured from the pose topics (issue 26)."""
+        raise NotImplementedError("the ROS 2 backend does not measure a verdict yet "
+                                  "(docs/real-robot.md, 'Not done yet')")
+
+    def close(self) -> None:
+        """Release the node and the kinematics (idempotent)."""
+        if self.kin is not None:
+            self.kin.close()
+            self.kin = None
+        if self.client is not None:
+            self.client.close()
+            self.client = None
+
+    def __enter__(self) -> "RosEpisode":
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        self.close()

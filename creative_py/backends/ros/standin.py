@@ -1,0 +1,481 @@
+"""The stand-in robot: the pybullet Baxter with a case's scene, in its own process, behind
+exactly the ROS 2 interface a lab's arm offers.
+
+    python -m creative_py.backends.ros.standin --case hook [--variant V] [--location N]
+        [--tool NAME] [--profile baxter|PATH.toml] [--seconds S] [--realtime F]
+
+It publishes, with the names of the robot profile (:mod:`.profile`):
+
+* ``sensor_msgs/JointState`` of the arm's joints (and the gripper's gap) at the
+  profile's rate;
+* ``geometry_msgs/PoseStamped`` of each tracked object of the scene (the case's
+  perceived objects, its context and the tool) on its own topic, in the world frame,
+  as a motion-capture system publishes rigid bodies;
+
+and serves:
+
+* ``control_msgs/action/FollowJointTrajectory``: the trajectory is executed in the
+  physics by the arm's position motors and judged as ros2_control's joint trajectory
+  controller judges it (:mod:`.trajectory`): a goal with unknown joints, no points,
+  times that do not increase or positions outside the joint limits is rejected; path
+  tolerance (a collision makes the arm lag), goal tolerance and goal time tolerance
+  abort it with PATH_TOLERANCE_VIOLATED or GOAL_TOLERANCE_VIOLATED; feedback (desired,
+  actual, error, index) comes at the joint states' rate; cancelling holds the arm
+  where it is;
+* ``control_msgs/action/GripperCommand``: a gap at or below the middle of the open and
+  closed gaps closes the gripper, above it opens it. The stand-in does not simulate
+  fingers: closing holds the tool if the gripper is within ``--grasp-reach`` of where
+  the tool's kind is held, with the kind's grasp (a fixed joint that pulls the tool
+  into place, exactly as the pybullet backend's grasp holds it: the approach may
+  push the tool a few centimetres), and
+  the result says so (``stalled`` true, ``reached_goal`` false: the fingers stopped on
+  the tool); its reported gap while holding is the middle of the open and closed gaps.
+
+Physics time runs at ``--realtime`` times the wall clock (1: as fast as a real arm), or
+slower where the machine cannot keep up (it never runs faster to catch up); the
+messages' stamps are the node's (wall) clock, a trajectory's times are physics time. The first line on the standard
+output is ``standin ready`` followed by the interface's names as JSON. It stops on
+SIGINT/SIGTERM or after ``--seconds``. Bad input: one line naming the option or the
+file and field, exit 2.
+
+This module is also a template for a real arm's driver: replace :class:`SimArm`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import signal
+import sys
+import threading
+import time
+from dataclasses import dataclass, field
+from typing import Any, Optional, Sequence
+
+import numpy as np
+from scipy.spatial.transform import Rotation
+
+from creative_py.backends.ros.profile import RobotProfile, load_profile
+from creative_py.backends.ros.trajectory import (INVALID_GOAL, SUCCESSFUL, InvalidTrajectory,
+                                                 GoalResult, TrajectoryRun)
+from creative_py.world_files import WorldFileError
+
+Pose = tuple[tuple[float, float, float], tuple[float, float, float, float]]
+
+
+def compose(a: Pose, b: Pose) -> Pose:
+    """Return the pose ``a * b`` (b given in a's frame); quaternions x, y, z, w."""
+    ra = Rotation.from_quat(a[1])
+    pos = np.asarray(a[0]) + ra.apply(b[0])
+    return tuple(float(v) for v in pos), tuple(float(v) for v in (ra * Rotation.from_quat(b[1])).as_quat())
+
+
+def invert(a: Pose) -> Pose:
+    """Return the inverse of the pose ``a``."""
+    r = Rotation.from_quat(a[1]).inv()
+    return (tuple(float(v) for v in -r.apply(a[0])), tuple(float(v) for v in r.as_quat()))
+
+
+class SimArm:
+    """The pybullet Baxter of an open episode, seen as a lab's arm (no ROS here).
+
+    Parameters
+    ----------
+    episode : creative_py.backends.pybullet.Episode
+        An episode opened with the robot.
+    profile : RobotProfile
+        Its ``arm.joints`` must be the Baxter's right-arm joints (any order).
+    grasp_reach : float
+        How far (m) the gripper may be from where the tool's kind is held for a
+        closing gripper to hold the tool.
+    """
+
+    def __init__(self, episode: Any, profile: RobotProfile, grasp_reach: float = 0.06) -> None:
+        from creative_py.backends.pybullet.baxter import RIGHT_ARM
+
+        self.ep, self.profile, self.reach = episode, profile, grasp_reach
+        if sorted(profile.joints) != sorted(RIGHT_ARM):
+            raise WorldFileError(f"{profile.source}: field 'arm.joints': the stand-in's arm has "
+                                 f"the joints {list(RIGHT_ARM)}, got {list(profile.joints)}")
+        self.robot = episode.robot
+        self.order = [RIGHT_ARM.index(n) for n in profile.joints]
+        m = self.robot.model
+        self.lower = [float(m.arm_lower[i]) for i in self.order]
+        self.upper = [float(m.arm_upper[i]) for i in self.order]
+        self.time_step = episode.sim.physics.time_step
+        names = [n for n, _ in episode.perceived] + [episode.context_name, episode.tool]
+        self.tracked = list(dict.fromkeys(names))
+        self.closed = False
+
+    def q(self) -> list[float]:
+        """Return the arm's joint positions (rad), in the profile's order."""
+        q = self.robot.arm_q()
+        return [float(q[i]) for i in self.order]
+
+    def command(self, q: Sequence[float]) -> None:
+        """Set the position motors' targets (rad, profile order)."""
+        full = [0.0] * len(q)
+        for k, i in enumerate(self.order):
+            full[i] = float(q[k])
+        self.robot._command(full)
+
+    def step(self) -> float:
+        """Advance the physics one time step; return the simulated time (s)."""
+        self.ep.sim.step(1)
+        return self.ep.sim_time()
+
+    def time(self) -> float:
+        """Return the simulated time (s)."""
+        return self.ep.sim_time()
+
+    def poses(self) -> dict[str, Pose]:
+        """Return the world pose of each tracked object's own frame."""
+        from creative_py.backends.pybullet.bodies import frame_pose
+
+        return {n: frame_pose(self.ep.sim, self.ep.body_id(n)) for n in self.tracked}
+
+    @property
+    def holding(self) -> bool:
+        """Return whether the gripper holds the tool."""
+        return self.robot.held is not None
+
+    def gap(self) -> float:
+        """Return the gripper's gap (m) as the profile measures it."""
+        p = self.profile
+        if not self.closed:
+            return p.gripper_open
+        return (p.gripper_open + p.gripper_closed) / 2 if self.holding else p.gripper_closed
+
+    def grip(self, close: bool) -> bool:
+        """Close or open the gripper; return whether it then holds the tool."""
+        ep, robot = self.ep, self.robot
+        self.closed = close
+        if not close:
+            robot.release()
+            ep.held = False
+            return False
+        if self.holding:
+            return True
+        from creative_py.backends.pybullet.bodies import frame_pose
+
+        gripper = robot.gripper_pose()
+        tool = frame_pose(ep.sim, ep.tool_body)
+        where = compose(tool, invert(ep.grasp))  # the gripper as the tool's kind holds it
+        if math.dist(gripper[0], where[0]) > self.reach:
+            return False
+        robot.grasp(ep.tool_body, ep.grasp)  # as the pybullet backend's grasp holds it
+        ep.held = True
+        return True
+
+
+@dataclass
+class Job:
+    """A goal handed from an action server's thread to the physics loop."""
+
+    handle: Any
+    kind: str                      # "trajectory" or "gripper"
+    request: Any
+    done: threading.Event = field(default_factory=threading.Event)
+    result: Any = None
+    run: Optional[TrajectoryRun] = None
+    t0: float = 0.0
+
+
+def _duration(d: Any) -> float:
+    return d.sec + d.nanosec * 1e-9
+
+
+def _trajectory_run(goal: Any, arm: SimArm, start: Sequence[float]) -> TrajectoryRun:
+    """Return the run of a FollowJointTrajectory goal from ``start`` (raises InvalidTrajectory)."""
+    p = arm.profile
+    traj = goal.trajectory
+    if goal.multi_dof_trajectory.points:
+        raise InvalidTrajectory(INVALID_GOAL, "multi-DOF trajectories are not supported")
+    points = [(_duration(pt.time_from_start), list(pt.positions)) for pt in traj.points]
+    return TrajectoryRun(p.joints, start, list(traj.joint_names), points, arm.lower, arm.upper,
+                         {t.name: t.position for t in goal.path_tolerance},
+                         {t.name: t.position for t in goal.goal_tolerance},
+                         _duration(goal.goal_time_tolerance), p.path_tolerance,
+                         p.goal_tolerance, p.goal_time_tolerance)
+
+
+def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
+          out=sys.stdout) -> int:
+    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0."""
+    import rclpy
+    from rclpy.action import ActionServer, CancelResponse, GoalResponse
+    from rclpy.callback_groups import ReentrantCallbackGroup
+    from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+    from rclpy.node import Node
+
+    from control_msgs.action import FollowJointTrajectory, GripperCommand
+    from geometry_msgs.msg import PoseStamped
+    from sensor_msgs.msg import JointState
+
+    from rclpy.signals import SignalHandlerOptions
+
+    p = arm.profile
+    stop = threading.Event()
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, lambda *_: stop.set())
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ours stop the loop
+    node = Node("creative_standin")
+    group = ReentrantCallbackGroup()
+    lock = threading.Lock()
+    jobs: list[Job] = []
+    state = {"q": arm.q()}
+
+    def on_trajectory(goal: Any) -> Any:
+        try:
+            with lock:
+                q = list(state["q"])
+            _trajectory_run(goal, arm, q)
+        except InvalidTrajectory as exc:
+            node.get_logger().warning(f"rejected a trajectory: {exc}")
+            return GoalResponse.REJECT
+        return GoalResponse.ACCEPT
+
+    def execute(kind: str) -> Any:
+        def run(handle: Any) -> Any:
+            job = Job(handle, kind, handle.request)
+            with lock:
+                jobs.append(job)
+            while not job.done.wait(0.05):
+                if stop.is_set():
+                    handle.abort()
+                    return _result(kind, SUCCESSFUL if kind == "gripper" else INVALID_GOAL,
+                                   "the stand-in stopped")
+            return job.result
+        return run
+
+    def _result(kind: str, code: int, message: str) -> Any:
+        if kind == "gripper":
+            r = GripperCommand.Result()
+            r.position, r.effort = arm.gap(), 0.0
+            return r
+        r = FollowJointTrajectory.Result()
+        r.error_code, r.error_string = code, message
+        return r
+
+    ActionServer(node, FollowJointTrajectory, p.arm_action, execute_callback=execute("trajectory"),
+                 goal_callback=on_trajectory, cancel_callback=lambda _: CancelResponse.ACCEPT,
+                 callback_group=group)
+    ActionServer(node, GripperCommand, p.gripper_action, execute_callback=execute("gripper"),
+                 cancel_callback=lambda _: CancelResponse.REJECT, callback_group=group)
+    js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
+    pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
+                 for n in arm.tracked}
+    executor = MultiThreadedExecutor(num_threads=4)
+    executor.add_node(node)
+
+    def spin() -> None:
+        try:
+            executor.spin()
+        except ExternalShutdownException:
+            pass
+
+    spinner = threading.Thread(target=spin, daemon=True)
+    spinner.start()
+    interface = {"joint_states": p.joint_states_topic, "trajectory_action": p.arm_action,
+                 "gripper_action": p.gripper_action, "joints": list(p.joints),
+                 "objects": {n: p.object_topic_of(n) for n in arm.tracked},
+                 "frame": p.world_frame}
+    print("standin ready " + json.dumps(interface), file=out, flush=True)
+
+    js_period, pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
+    active: Optional[Job] = None
+    hold = arm.q()
+    next_js = next_pose = arm.time()
+    last_fb = -math.inf
+    prev_q, prev_t = arm.q(), arm.time()
+    wall0, sim0 = time.monotonic(), arm.time()
+    deadline = time.monotonic() + seconds
+
+    def finish(job: Job, code: int, message: str, succeeded: bool) -> None:
+        result = _result("trajectory", code, message)
+        (job.handle.succeed if succeeded else job.handle.abort)()
+        job.result = result
+        job.done.set()
+
+    while not stop.is_set() and time.monotonic() < deadline:
+        with lock:
+            pending, jobs[:] = list(jobs), []
+        for job in pending:
+            if job.kind == "gripper":
+                close = job.request.command.position <= (p.gripper_open + p.gripper_closed) / 2
+                holds = arm.grip(close)
+                r = GripperCommand.Result()
+                r.position = arm.gap()
+                r.effort = job.request.command.max_effort if holds else 0.0
+                r.stalled, r.reached_goal = holds, not holds
+                fb = GripperCommand.Feedback()
+                fb.position, fb.effort, fb.stalled, fb.reached_goal = (
+                    r.position, r.effort, r.stalled, r.reached_goal)
+                job.handle.publish_feedback(fb)
+                job.handle.succeed()
+                job.result = r
+                job.done.set()
+                continue
+            if active is not None:
+                finish(active, INVALID_GOAL, "preempted by a newer goal", False)
+            try:
+                job.run = _trajectory_run(job.request, arm, arm.q())
+            except InvalidTrajectory as exc:  # the arm moved since the goal was accepted
+                finish(job, exc.code, str(exc), False)
+                continue
+            job.t0, active = arm.time(), job
+        if active is not None:
+            t = arm.time() - active.t0
+            desired, index = active.run.desired(t)
+            arm.command(desired)
+        now = arm.step()
+        q = arm.q()
+        if active is not None:
+            t = now - active.t0
+            result: Optional[GoalResult] = None
+            if active.handle.is_cancel_requested:
+                active.handle.canceled()
+                active.result = _result("trajectory", SUCCESSFUL, "canceled")
+                active.done.set()
+                hold, active = q, None
+                arm.command(hold)
+            else:
+                result = active.run.judge(t, q)
+                if now - last_fb >= js_period or result is not None:
+                    last_fb = now
+                    desired, index = active.run.desired(t)
+                    fb = FollowJointTrajectory.Feedback()
+                    fb.header.stamp = node.get_clock().now().to_msg()
+                    fb.joint_names = list(p.joints)
+                    fb.desired.positions = desired
+                    fb.actual.positions = q
+                    fb.error.positions = [d - a for d, a in zip(desired, q)]
+                    fb.index = index
+                    active.handle.publish_feedback(fb)
+            if result is not None:
+                ok = result.code == SUCCESSFUL
+                if not ok:  # stop where it is, as a controller does on an abort
+                    hold = q
+                    arm.command(hold)
+                else:
+                    hold = active.run.targets[-1]
+                finish(active, result.code, result.message, ok)
+                active = None
+        with lock:
+            state["q"] = q
+        if now >= next_js:
+            msg = JointState()
+            msg.header.stamp = node.get_clock().now().to_msg()
+            msg.name = [*p.joints, p.gripper_joint]
+            msg.position = [*q, arm.gap()]
+            dt = now - prev_t
+            msg.velocity = [*((a - b) / dt for a, b in zip(q, prev_q)), 0.0] if dt > 0 else []
+            js_pub.publish(msg)
+            prev_q, prev_t = q, now
+            next_js = max(next_js + js_period, now)
+        if now >= next_pose:
+            stamp = node.get_clock().now().to_msg()
+            for name, (pos, quat) in arm.poses().items():
+                msg = PoseStamped()
+                msg.header.stamp, msg.header.frame_id = stamp, p.world_frame
+                msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = pos
+                (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
+                 msg.pose.orientation.w) = quat
+                pose_pubs[name].publish(msg)
+            next_pose = max(next_pose + pose_period, now)
+        ahead = wall0 + (now - sim0) / realtime - time.monotonic()
+        if ahead > 0:
+            time.sleep(ahead)
+        elif ahead < -0.05:  # behind (a loaded machine): never run faster to catch up
+            wall0, sim0 = time.monotonic(), now
+    stop.set()
+    if active is not None:
+        finish(active, INVALID_GOAL, "the stand-in stopped", False)
+    for job in jobs:
+        job.done.set()
+    executor.shutdown(timeout_sec=2.0)
+    spinner.join(timeout=2.0)
+    node.destroy_node()
+    rclpy.try_shutdown()
+    return 0
+
+
+def _parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="python -m creative_py.backends.ros.standin",
+                                 description="The pybullet Baxter with a case's scene behind "
+                                             "a lab arm's ROS 2 interface.")
+    ap.add_argument("--case", required=True, help="the case id (creative cases)")
+    ap.add_argument("--variant", help="a variant of the case (default: the demonstration's)")
+    ap.add_argument("--location", type=int, help="1-based target location (default: the "
+                                                 "demonstration's)")
+    ap.add_argument("--tool", help="the catalogued tool in the scene (default: the "
+                                   "demonstration's)")
+    ap.add_argument("--profile", default="baxter", help="robot profile: a name under robots/ "
+                                                        "or a .toml path (default baxter)")
+    ap.add_argument("--seconds", type=float, default=math.inf,
+                    help="stop after this many seconds (default: run until stopped)")
+    ap.add_argument("--realtime", type=float, default=1.0,
+                    help="physics time per wall-clock time (default 1)")
+    ap.add_argument("--grasp-reach", type=float, default=0.06,
+                    help="m: how close the gripper must be to the tool's grasp to hold it")
+    return ap
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    """Run the stand-in; return the exit code (2 on bad input, one line on stderr)."""
+    args = _parser().parse_args(argv)
+    prog = "creative_py.backends.ros.standin"
+    for name, value, low, high in (("--realtime", args.realtime, 0.01, 100.0),
+                                   ("--grasp-reach", args.grasp_reach, 0.0, 1.0)):
+        if not low <= value <= high:
+            print(f"{prog}: option {name}: must be in [{low}, {high}], got {value}",
+                  file=sys.stderr)
+            return 2
+    if not args.seconds > 0:
+        print(f"{prog}: option --seconds: must be > 0, got {args.seconds}", file=sys.stderr)
+        return 2
+    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.case import get_case
+
+    try:  # every input is checked before ROS or the physics start
+        profile = load_profile(args.profile)
+        manifest = get_case(args.case)
+        if manifest.backend != "pybullet":
+            raise WorldFileError(f"option --case: {args.case} runs in the {manifest.backend!r} "
+                                 "backend; the stand-in builds pybullet scenes")
+        demo = manifest.demonstration
+        variant = args.variant or demo.variant
+        location = demo.location if args.location is None else args.location
+        tool = args.tool or demo.tool
+        variants = [v.name for v in manifest.variants]
+        if variant not in variants:
+            raise WorldFileError(f"option --variant: {variant!r} is not a variant of "
+                                 f"{args.case} ({', '.join(variants)})")
+        world = load_world(manifest)
+        if location not in world.locations:
+            raise WorldFileError(f"option --location: {location} is not a location of "
+                                 f"{args.case} ({', '.join(map(str, world.locations))})")
+        world.item(tool)
+    except (WorldFileError, KeyError) as exc:
+        msg = exc.args[0] if isinstance(exc, KeyError) and exc.args else exc
+        print(f"{prog}: {msg}", file=sys.stderr)
+        return 2
+    try:
+        import rclpy  # noqa: F401
+        from control_msgs.action import FollowJointTrajectory  # noqa: F401
+    except ImportError as exc:
+        print(f"{prog}: {exc.name or 'rclpy'} is not installed: run make setup-ros "
+              "(docs/real-robot.md)", file=sys.stderr)
+        return 2
+    try:
+        with open_episode(world, variant, location, tool) as ep:
+            arm = SimArm(ep, profile, args.grasp_reach)
+            return serve(arm, args.realtime, args.seconds)
+    except WorldFileError as exc:
+        print(f"{prog}: {exc}", file=sys.stderr)
+        return 2
+
+
+if __name__ == "__main__":
+    sys.exit(main())

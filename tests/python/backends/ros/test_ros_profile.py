@@ -1,0 +1,56 @@
+"""The robot profile (robots/<name>.toml): read without ROS, bad fields named in one line."""
+
+from __future__ import annotations
+
+import pytest
+
+from creative_py.backends.ros.profile import ROBOTS_ROOT, load_profile
+from creative_py.world_files import WorldFileError
+
+SHIPPED = (ROBOTS_ROOT / "baxter.toml").read_text()
+
+
+def test_the_shipped_profile_names_the_stand_ins_interface():
+    p = load_profile("baxter")
+    assert p.joints == ("right_s0", "right_s1", "right_e0", "right_e1", "right_w0", "right_w1",
+                        "right_w2")
+    assert p.arm_action.endswith("/follow_joint_trajectory")
+    assert p.object_topic_of("thing") == "mocap/thing/pose"
+    assert p.max_joint_speed == 0.8 and p.workspace_min[2] == -0.19
+
+
+def _write(tmp_path, text):
+    path = tmp_path / "arm.toml"
+    path.write_text(text)
+    return path
+
+
+def test_a_lab_remaps_names_by_a_file(tmp_path):
+    text = (SHIPPED.replace('topic = "joint_states"', 'topic = "/robot/joint_states"')
+            .replace("names = {}", 'names = { thing = "Thing_01" }'))
+    p = load_profile(_write(tmp_path, text))
+    assert p.joint_states_topic == "/robot/joint_states"
+    assert p.object_topic_of("thing") == "mocap/Thing_01/pose"
+
+
+@pytest.mark.parametrize("old,new,message", [
+    ("rate_hz = 50.0", "rate_hz = 0.0", "field 'joint_states.rate_hz': must be >= 1.0"),
+    ('topic = "mocap/{name}/pose"', 'topic = "mocap/pose"', "field 'objects.topic': must contain {name}"),
+    ("closed_position = 0.0", "closed_position = 0.05", "field 'gripper.closed_position': must be below"),
+    ("max_joint_speed = 0.8", "max_joint_speed = 0.8\nmax_speed = 1", "field 'limits.max_speed': unknown field"),
+    ('joints = ["right_s0",', 'joints = ["right_s0", "right_s0",', "field 'arm.joints': must be a list of distinct"),
+    ("workspace_max = [1.4, 0.3, 0.6]", "workspace_max = [1.4, 0.3, -0.3]", "field 'limits.workspace_max': must exceed"),
+    ('action = "right_arm_controller/follow_joint_trajectory"', 'action = "a b"', "field 'arm.action': must be a ROS name"),
+])
+def test_a_bad_field_is_named_in_one_line(tmp_path, old, new, message):
+    assert old in SHIPPED
+    path = _write(tmp_path, SHIPPED.replace(old, new, 1))
+    with pytest.raises(WorldFileError) as info:
+        load_profile(path)
+    text = str(info.value)
+    assert text.startswith(f"{path}: ") and message in text and "\n" not in text
+
+
+def test_an_unknown_profile_lists_the_shipped_ones():
+    with pytest.raises(WorldFileError, match="shipped profiles: baxter"):
+        load_profile("nosuch")
