@@ -131,7 +131,7 @@ def headline(run: RunContents) -> Headline:
         text = "Resumed after an interruption"
         if resumed.replayed is not None:
             text += (f": {resumed.replayed} trial{'s' if resumed.replayed != 1 else ''} "
-                     "of the interrupted run replayed, not run again")
+                     "of the interrupted run replayed from its records")
         if resumed.earlier_wall_time_s is not None:
             text += (f"; the interrupted run took {number_text(resumed.earlier_wall_time_s)}"
                      " s to its last recorded trial")

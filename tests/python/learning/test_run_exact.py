@@ -30,7 +30,7 @@ from creative_py.learning.pddl_files import check_pddl, created_pddl, plan_steps
 from creative_py.learning.phases import _relative, case_facts, creation_summary
 from creative_py.learning.run import (_checked_world, _earlier_summary, _finish, _open_folder,
                                       _trial_runner, resume_run, run_case)
-from creative_py.records.summary import RunSummary, WallTimes
+from creative_py.records.summary import Resumed, RunSummary, WallTimes
 from creative_py.learning.trials import TrialRunner
 from creative_py.mesh.slicer import SliceError
 from creative_py.records.folder import RunFolder, read_resume
@@ -83,7 +83,18 @@ plan (long_tube, created model): \
 plan([pick_up(hook_a4),position_tool(hook_a4,cube1,tube1),pull_out(hook_a4,cube1,tube1)])
 pddl problem_long_tube.pddl: solved by pyperplan (pick_up hook_a4) \
 (position_tool hook_a4 cube1 tube1) (pull_out hook_a4 cube1 tube1) (equals Prolog's)
-done in 20.54 s: {run}"""
+done in 20.54 s: {run}
+One demonstration, with hook_a2.
+Tool-use learning: 9 trials of a budget of 12 (4 succeeded); stopped because the learned \
+model succeeded the required times in a row; converged after 7 trials; the paper's robot \
+used 12.
+Evaluation of the learned model on the task it learned: 4 of 4 trials succeeded.
+Tool creation on the harder task long_tube: hook_a2 was predicted to fail, so its trial \
+was not run; no catalogued object tried; solved by the created hook_new1 after 1 creation \
+trial; the created tool's evaluation: 5 of 5 trials succeeded.
+Printing hook_new1: 3 pieces, 4 h 04 min of printing, 65.1 g of filament (21.8 m); mass \
+64.3 g.
+report: {run}/report.html"""
 
 MODEL = """\
 %   Learned by CREATIVE-py, case hook.
@@ -692,6 +703,26 @@ def test_checked_world_asks_for_a_display_under_gui(monkeypatch):
 
 # ---------------------------------------------------------------- the run's steps
 
+def test_a_new_run_names_the_interrupted_run_of_its_case_and_seed(tmp_path, hook_world):
+    # Issue 25: running again without --resume started a new folder and said nothing
+    # of the interrupted one.
+    for name, finished in (("hook-20260101-000000-s3", False),
+                           ("hook-20260102-000000-s3", True),
+                           ("hook-20260103-000000-s4", False)):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "run.json").write_text("{}")
+        if finished:
+            (tmp_path / name / "summary.json").write_text("{}")
+    said = []
+    run = _open_folder(tmp_path, "hook", RunOptions(seed=3), None, None, "new", None,
+                       said.append)[0]
+    run.release()
+    old = tmp_path / "hook-20260101-000000-s3"
+    assert said == [f"run folder {tmp_path / 'new'}",
+                    f"a new run; the interrupted run {old} of this case and seed can go "
+                    f"on with: creative run hook --resume {old}"]
+
+
 def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):
     folder = tmp_path / "hook_s0"
     shutil.copytree(RECORDED, folder)
@@ -701,13 +732,16 @@ def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):
         said = []
         got = _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
                            (run, trials, lines), said.append)
-        assert got == (run, trials, lines, RunSummary.read(RECORDED / "summary.json"))
+        earlier = round((folder / "trials.jsonl").stat().st_mtime
+                        - (folder / "run.json").stat().st_mtime, 2)
+        assert got == (run, trials, lines, RunSummary.read(RECORDED / "summary.json"),
+                       Resumed(replayed=19, earlier_wall_time_s=max(0.0, earlier)))
         assert (run.sealed, run.trials) == (True, trials)
         assert said == [f"resuming {folder}: replaying 19 recorded trials",
                         f"run folder {folder}"]
         (folder / "summary.json").unlink()
         assert _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
-                            (run, [], []), said.append) == (run, [], [], None)
+                            (run, [], []), said.append)[:4] == (run, [], [], None)
         assert (run.sealed, run.trials) == (False, [])
         assert said[2:] == [f"resuming {folder}: replaying 0 recorded trials",
                             f"run folder {folder}"]
@@ -719,9 +753,10 @@ def test_open_folder_of_a_new_run_writes_run_json(tmp_path, hook_world):
     options = RunOptions(seed=3, world_seed=2)
     drawn = {"seed": 2}
     said = []
-    run, replay, lines, before = _open_folder(tmp_path, "hook", options,
-                                              hook_world[1].manifest.folder, drawn,
-                                              "new", None, said.append)
+    run, replay, lines, before, resumed = _open_folder(tmp_path, "hook", options,
+                                                       hook_world[1].manifest.folder,
+                                                       drawn, "new", None, said.append)
+    assert resumed is None
     try:
         assert (run.path, replay, lines, before, run.sealed) == (
             tmp_path / "new", [], [], None, False)
@@ -782,7 +817,9 @@ def test_finish_writes_the_summary_plot_and_report(tmp_path, hook_world):
                            "videos": []}
         assert list(written) == list(RunSummary().to_dict())  # every key, in order
         assert summary == RunSummary.read(run.path)
-        assert said == [f"done in {total} s: {run.path}"]
+        # Issue 25: the run ends with its headline and the report's path (before: the
+        # "done in" line alone).
+        assert said == [f"done in {total} s: {run.path}", f"report: {run.path}/report.html"]
         assert (run.path / "report.html").read_text().startswith("<!DOCTYPE html>")
         plot_trials([], tmp_path / "expected.png",
                     title="CREATIVE-py, hook case, seed 7")
@@ -792,6 +829,6 @@ def test_finish_writes_the_summary_plot_and_report(tmp_path, hook_world):
                                        "case": "x"})
         again = _finish(runner, clips, {}, {}, 0.0, said.append, before)
         assert again.wall_time_s.to_dict() == {"use": 1.0, "total": 9.99}
-        assert said[1:] == [f"done in 9.99 s: {run.path}"]
+        assert said[2:] == [f"done in 9.99 s: {run.path}", f"report: {run.path}/report.html"]
     finally:
         run.release()
