@@ -93,7 +93,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     progress : callable or None
         Receives one line of text per step (the CLI shows it); without it, each line is
         logged at INFO level to the ``creative_py.learning.run`` logger (Python's
-        ``logging``), so a caller that configures logging sees the run go on.
+        ``logging``), so a caller that configures logging sees the run go on. Prolog
+        variables are written A, B, ... as the reports write them.
     world_dir : Path or None
         A world folder other than the shipped one (with its own ``case.toml``).
     resume : (RunFolder, list of TrialRecord, list of int) or None
@@ -103,7 +104,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Used by :func:`resume_run`: the randomised world recorded in ``run.json``
         (otherwise drawn from ``options.world_seed``).
     """
-    say = progress or log.info
+    say = _readable(progress or log.info)
     t_start = time.perf_counter()
     engine, world, drawn = _checked_world(case, options, world_dir, drawn,
                                           resume[0].path / "run.json" if resume else None)
@@ -302,6 +303,14 @@ def _headline(run_dir: Path) -> list[str]:
 
     lines = headline(read_run(run_dir)).lines
     return [x for x in lines[1:] if not x.startswith("Wall time ")]
+
+
+def _readable(say: Callable[[str], None]) -> Callable[[str], None]:
+    """Return ``say`` with each line's Prolog variables (``_G3``) written ``A``, ``B``,
+    ... as the reports write them (:func:`creative_py.report.contents.readable_term`)."""
+    from creative_py.report.contents import readable_term
+
+    return lambda line: say(readable_term(line))
 
 
 def _finish_clips(clips: ClipKeeper, say: Callable[[str], None]) -> None:

@@ -53,11 +53,11 @@ TUL   6  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (rep
 TUL   7  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)
 TUL   8  hook_a2        loc 3  success     tested -  (replayed)
 TUL   9  hook_a2        loc 4  success     tested -  (replayed)
-h_s: tool_pose(_G3,_G4,_G5) :- hook(_G3), hook_like(_G3), tool(_G3), \
-handle_length(_G3,medium), handle_width(_G3,thin), hook_angle(_G3,right), hook_down(_G3), \
-behind(_G3,_G4), centred_on(_G3,_G4), in_tube(_G3,_G5), in_tube(_G4,_G5)
-h_g: tool_pose(_G3,_G4,_G5) :- handle_length(_G3,medium), hook_down(_G3), \
-behind(_G3,_G4), centred_on(_G3,_G4), hook(_G3)
+h_s: tool_pose(A,B,C) :- hook(A), hook_like(A), tool(A), \
+handle_length(A,medium), handle_width(A,thin), hook_angle(A,right), hook_down(A), \
+behind(A,B), centred_on(A,B), in_tube(A,C), in_tube(B,C)
+h_g: tool_pose(A,B,C) :- handle_length(A,medium), hook_down(A), \
+behind(A,B), centred_on(A,B), hook(A)
 plan: plan([pick_up(hook_a2),position_tool(hook_a2,cube1,tube1),pull_out(hook_a2,cube1,tube1)])
 pddl problem.pddl: solved by pyperplan (pick_up hook_a2) (position_tool hook_a2 cube1 tube1) \
 (pull_out hook_a2 cube1 tube1) (equals Prolog's)

@@ -67,7 +67,7 @@ USE_LINES = [
 ]
 
 TRIAL2_LINE = ("TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  "
-               "[cube1 centre x 1.1313 m, needs < 0.8500; moved 3.7 cm]")
+               "[cube1 centre x 1.1313 m, needs < 0.8500 m; moved 3.7 cm]")
 
 NOT_RESUMED = "the run cannot be resumed with this code or these files"
 
@@ -364,9 +364,9 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
     assert lines == [
         "EVAL  1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
-        "[stopped: gripper lag 0.0301 m, needs <= 0.0300; touching hook_a1 against cube1, "
+        "[stopped: gripper lag 0.0301 m, needs <= 0.0300 m; touching hook_a1 against cube1, "
         "hook_a1 against tube1, robot against riser1, robot against tube1; cube1 centre x "
-        "1.0985 m, needs < 0.8500; moved 1.1 cm]"]
+        "1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
@@ -410,7 +410,7 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     assert entries == [{
         "file": "videos/002-use-hook_a2.mp4", "phase": "use", "trial": 2, "tool": "hook_a2",
         "tested": ["hook_down(hook_a2)"], "outcome": "failure", "reason": "goal not reached",
-        "verdict": "cube1 centre x 1.1313 m, needs < 0.8500; moved 3.7 cm",
+        "verdict": "cube1 centre x 1.1313 m, needs < 0.8500 m; moved 3.7 cm",
         "why": "failure:failure: goal not reached", "frames": 42,
         "duration_s": 8.4, "bytes": size}]
     assert json.loads((run.path / "videos" / "clips.jsonl").read_text()) == {
@@ -420,7 +420,7 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
         first = np.asarray(reader.get_data(0)).astype(int).mean(axis=2)
     draw = Captioner(320, 60, ["#2 TUL 2  hook_a2  loc 1", "tested hook_down(hook_a2)",
                                 "failure: goal not reached", "cube1 centre x 1.1313 m, "
-                                "needs < 0.8500", "moved 3.7 cm"])
+                                "needs < 0.8500 m", "moved 3.7 cm"])
     band = draw(np.zeros((60, 320, 3), np.uint8), "t = 0.0 s")[:draw.band]
     assert first.shape == (60 + draw.band, 320)
     assert int((np.abs(band.astype(int).mean(axis=2) - first[:draw.band]) > 100).sum()) == 0
