@@ -182,7 +182,7 @@ class ClipKeeper:
             if entry is not None:
                 self.entries.append(entry)
             return entry
-        head = (f"#{trial} {PHASE_TAGS.get(phase, phase)} {phase_trial}  {tool}"
+        head = (f"#{trial} {PHASE_TAGS.get(phase, phase)}  {tool}"
                 + (f"  loc {location}" if location is not None else ""))
         lines = [head, f"tested {', '.join(tested) or '-'}",
                  f"{outcome}" + (f": {reason}" if reason else "")]

@@ -184,7 +184,10 @@ class TrialRunner:
                 raise ValueError(f"{self._where(n)}: field 'facts' does not label "
                                  f"({exc}); the run cannot be resumed") from None
         hs, hg = self.bounds(vs)
-        line = (f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
+        # One trial number everywhere (terminal, tables, plot, clips, report): the run's
+        # own, n of trials.jsonl (the demonstration is 0); a phase's count repeats
+        # (the created tool's evaluation starts at 1 again).
+        line = (f"#{n:<3} {PHASE_TAGS[phase]:<4} {str(tool):<14} "
                 f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}")
         if replayed:
             rec = self._checked_replay(n, hs, hg)

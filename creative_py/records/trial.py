@@ -93,7 +93,9 @@ class TrialRecord:
 
     trial: int = field(metadata=_column("#"))
     phase: str = field(metadata=_column("phase"))
-    phase_trial: int = field(default=0, metadata=_column("n"))
+    phase_trial: int = 0
+    """The trial's count within its phase (not shown: the reports number trials by
+    ``trial`` alone, one number everywhere)."""
     variant: str = field(metadata=_column("variant"))
     location: int = field(metadata=_column("loc"))
     tool: str = field(metadata=_column("tool"))
@@ -118,10 +120,10 @@ class TrialRecord:
     verdict: Union[dict[str, Any], None] = None
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
 
-    # The column order of the reports: # phase n tool variant loc pose tested violated
+    # The column order of the reports: # phase tool variant loc pose tested violated
     # outcome reason (a field's own order otherwise).
     COLUMN_ORDER: typing.ClassVar[tuple[str, ...]] = (
-        "trial", "phase", "phase_trial", "tool", "variant", "location", "pose", "tested",
+        "trial", "phase", "tool", "variant", "location", "pose", "tested",
         "violated", "outcome", "reason")
 
     def __post_init__(self) -> None:

@@ -198,7 +198,7 @@ def _trials_section(run: RunContents) -> str:
             text = readable_term(cell(t))
             if header == "outcome":
                 cells.append(f'<td class="col-outcome">{_outcome(text)}</td>')
-            elif header in ("#", "n", "loc"):
+            elif header in ("#", "loc"):
                 cells.append(f'<td class="num">{escape(text)}</td>')
             elif header == "pose":   # breaks between its numbers, never inside one
                 cells.append('<td class="col-pose"><code>' + ", ".join(
@@ -221,7 +221,7 @@ def _predicted_row(run: RunContents) -> str:
     predicted = create.predicted if create is not None else None
     if predicted is None or predicted.feasible is not False:
         return ""
-    values = {"#": "-", "phase": "create", "n": "-", "tool": _or(predicted.tool, "?"),
+    values = {"#": "-", "phase": "create", "tool": _or(predicted.tool, "?"),
               "variant": _or(predicted.variant, ""), "loc": _or(predicted.location, ""),
               "pose": "-", "tested": "-",
               "violated": literals_text(predicted.conflict),

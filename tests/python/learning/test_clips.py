@@ -200,7 +200,7 @@ def test_a_clip_written_here_is_the_trial_s_frames_under_its_caption(tmp_path, f
     assert entry == want and keeper.entries == [entry] and keeper.children == {}
     assert rec.times == pytest.approx([0.0, 35 / 240, 0.2]) and len(rec.frames) == 3
     assert _captioned_as(clip, rec.frames, [
-        "#3 TUL 2  hook_a1  loc 1", "tested handle_length(hook_a1,medium)",
+        "#3 TUL  hook_a1  loc 1", "tested handle_length(hook_a1,medium)",
         "blocked: lag 3.1 cm", "stopped: gripper lag 0.031 m", "moved 1.1 cm"],
         rec.times) == 0
     assert (tmp_path / "videos" / "clips.jsonl").read_text() == json.dumps(
@@ -220,7 +220,7 @@ def test_a_clip_without_location_reason_or_test_is_captioned_so(tmp_path, film):
     assert (entry["file"], entry["tested"], entry["verdict"], entry["why"]) == (
         "videos/000-demo-hook_a2.mp4", [], "", "demonstration")
     assert _captioned_as(tmp_path / entry["file"], rec.frames,
-                         ["#0 DEMO 0  hook_a2", "tested -", "success"], rec.times) == 0
+                         ["#0 DEMO  hook_a2", "tested -", "success"], rec.times) == 0
     rec = film(keeper.recorder())
     entry = keeper.write(rec, "trial", 12, "walk", 1, "hook_a2", ["a", "b"], "success",
                          "", location=2)

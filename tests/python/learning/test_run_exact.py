@@ -44,15 +44,15 @@ resuming {run}: replaying 19 recorded trials
 run folder {run}
 demonstration: the trainer shows the task with hook_a2 (loc 1)
 demonstration with hook_a2: new model pull_out; 16384 hypotheses
-TUL   1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)
-TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)
-TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)
-TUL   4  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)
-TUL   5  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)
-TUL   6  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)
-TUL   7  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)
-TUL   8  hook_a2        loc 3  success     tested -  (replayed)
-TUL   9  hook_a2        loc 4  success     tested -  (replayed)
+#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)
+#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)
+#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)
+#4   TUL  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)
+#5   TUL  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)
+#6   TUL  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)
+#7   TUL  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)
+#8   TUL  hook_a2        loc 3  success     tested -  (replayed)
+#9   TUL  hook_a2        loc 4  success     tested -  (replayed)
 h_s: tool_pose(A,B,C) :- hook(A), hook_like(A), tool(A), \
 handle_length(A,medium), handle_width(A,thin), hook_angle(A,right), hook_down(A), \
 behind(A,B), centred_on(A,B), in_tube(A,C), in_tube(B,C)
@@ -61,10 +61,10 @@ behind(A,B), centred_on(A,B), hook(A)
 plan: plan([pick_up(hook_a2),position_tool(hook_a2,cube1,tube1),pull_out(hook_a2,cube1,tube1)])
 pddl problem.pddl: solved by pyperplan (pick_up hook_a2) (position_tool hook_a2 cube1 tube1) \
 (pull_out hook_a2 cube1 tube1) (equals Prolog's)
-EVAL  1  hook_a2        loc 1  success     tested -  (replayed)
-EVAL  2  hook_a2        loc 2  success     tested -  (replayed)
-EVAL  3  hook_a2        loc 3  success     tested -  (replayed)
-EVAL  4  hook_a2        loc 4  success     tested -  (replayed)
+#10  EVAL hook_a2        loc 1  success     tested -  (replayed)
+#11  EVAL hook_a2        loc 2  success     tested -  (replayed)
+#12  EVAL hook_a2        loc 3  success     tested -  (replayed)
+#13  EVAL hook_a2        loc 4  success     tested -  (replayed)
 TC predicted: hook_a2: behind(hook_a2,cube1) cannot hold within the reach of hook_a2 in \
 the long_tube task: dx_reach = -0.011 m (deepest prong centre the held tool reaches, minus \
 the cube centre); the trial would fail, so none is run
@@ -72,13 +72,13 @@ manufacturing tool 1: meshing, splitting to the build volume and slicing its pie
 created hook_new1: handle_length(A,medium) -> any_length(A) -> handle_length(A,long); \
 handle_length 600.0 mm, handle_width 9.0 mm, hook_length 30.0 mm, hook_width 12.0 mm, \
 hook_angle_deg 90, hook_side right
-TC    1  hook_new1      loc 1  success     tested -  (replayed)
+#14  TC   hook_new1      loc 1  success     tested -  (replayed)
 hook_new1: strength pass (cantilever, 0.91 N, 4.10 MPa, safety factor 12.21)
-EVAL  1  hook_new1      loc 2  success     tested -  (replayed)
-EVAL  2  hook_new1      loc 3  success     tested -  (replayed)
-EVAL  3  hook_new1      loc 4  success     tested -  (replayed)
-EVAL  4  hook_new1      loc 1  success     tested -  (replayed)
-EVAL  5  hook_new1      loc 2  success     tested -  (replayed)
+#15  EVAL hook_new1      loc 2  success     tested -  (replayed)
+#16  EVAL hook_new1      loc 3  success     tested -  (replayed)
+#17  EVAL hook_new1      loc 4  success     tested -  (replayed)
+#18  EVAL hook_new1      loc 1  success     tested -  (replayed)
+#19  EVAL hook_new1      loc 2  success     tested -  (replayed)
 plan (long_tube, created model): \
 plan([pick_up(hook_a4),position_tool(hook_a4,cube1,tube1),pull_out(hook_a4,cube1,tube1)])
 pddl problem_long_tube.pddl: solved by pyperplan (pick_up hook_a4) \

@@ -55,18 +55,18 @@ EXP1 = ("experiment(hook_a1,handle_length(hook_a1,medium),[handle_length(hook_a1
         "centred_on(hook_a1,cube1),in_tube(hook_a1,tube1)],[])")
 
 USE_LINES = [
-    "TUL   1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)",
-    "TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)",
-    "TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)",
-    "TUL   4  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)",
-    "TUL   5  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)",
-    "TUL   6  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)",
-    "TUL   7  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)",
-    "TUL   8  hook_a2        loc 3  success     tested -  (replayed)",
-    "TUL   9  hook_a2        loc 4  success     tested -  (replayed)",
+    "#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)",
+    "#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)",
+    "#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)",
+    "#4   TUL  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)",
+    "#5   TUL  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)",
+    "#6   TUL  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)",
+    "#7   TUL  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)",
+    "#8   TUL  hook_a2        loc 3  success     tested -  (replayed)",
+    "#9   TUL  hook_a2        loc 4  success     tested -  (replayed)",
 ]
 
-TRIAL2_LINE = ("TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  "
+TRIAL2_LINE = ("#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  "
                "[cube1 centre x 1.1313 m, needs < 0.8500 m; moved 3.7 cm]")
 
 NOT_RESUMED = "the run cannot be resumed with this code or these files"
@@ -363,7 +363,7 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
         dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
     assert lines == [
-        "EVAL  1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
+        "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
         "[stopped: gripper lag 0.0301 m, needs <= 0.0300 m; touching hook_a1 against cube1, "
         "hook_a1 against tube1, robot against riser1, robot against tube1; cube1 centre x "
         "1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
@@ -418,7 +418,7 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     # The caption above the picture, the first frame's simulated time at its right.
     with imageio.get_reader(str(run.path / entries[0]["file"])) as reader:
         first = np.asarray(reader.get_data(0)).astype(int).mean(axis=2)
-    draw = Captioner(320, 60, ["#2 TUL 2  hook_a2  loc 1", "tested hook_down(hook_a2)",
+    draw = Captioner(320, 60, ["#2 TUL  hook_a2  loc 1", "tested hook_down(hook_a2)",
                                 "failure: goal not reached", "cube1 centre x 1.1313 m, "
                                 "needs < 0.8500 m", "moved 3.7 cm"])
     band = draw(np.zeros((60, 320, 3), np.uint8), "t = 0.0 s")[:draw.band]
