@@ -225,7 +225,7 @@ def test_a_clip_without_location_reason_or_test_is_captioned_so(tmp_path, film):
     entry = keeper.write(rec, "trial", 12, "walk", 1, "hook_a2", ["a", "b"], "success",
                          "", location=2)
     assert _captioned_as(tmp_path / entry["file"], rec.frames,
-                         ["#12 walk 1  hook_a2  loc 2", "tested a, b", "success"],
+                         ["#12 walk  hook_a2  loc 2", "tested a, b", "success"],
                          rec.times) == 0
     assert [json.loads(line)["file"] for line in
             (tmp_path / "videos" / "clips.jsonl").read_text().splitlines()] == [
