@@ -204,7 +204,7 @@ def test_a_predicted_row_has_an_empty_cell_for_a_column_of_its_own(tmp_path):
     run = _run(tmp_path, {"create": {"predicted": {"feasible": False}}}, [record])
     assert _predicted_row(run) == (
         '<tr class="predicted"><td class="col-#">-</td><td class="col-phase">create</td>'
-        '<td class="col-n">-</td><td class="col-tool">?</td><td class="col-variant"></td>'
+        '<td class="col-tool">?</td><td class="col-variant"></td>'
         '<td class="col-loc"></td><td class="col-pose">-</td><td class="col-tested">-</td>'
         '<td class="col-violated">-</td>'
         '<td class="col-outcome">predicted failure, not run</td>'
