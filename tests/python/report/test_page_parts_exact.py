@@ -159,7 +159,7 @@ def test_a_tool_card_without_the_summary_s_fields(tmp_path):
     card = _tool_card(tmp_path, sized)
     assert card[card.index('<div class="facts">'):card.index("<h4>Print")] == (
         '<div class="facts"><div><h4>Dimensions</h4><table>'
-        "<tr><th>edge_mm</th><td>1, 2.5</td></tr><tr><th>n</th><td>2 m</td></tr>"
+        "<tr><th>edge mm</th><td>1, 2.5</td></tr><tr><th>n</th><td>2</td></tr>"
         "</table></div></div>")
 
 
