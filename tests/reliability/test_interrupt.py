@@ -39,8 +39,8 @@ def _interrupted(out: Path, after: str, delay: float) -> tuple[int, str, Path]:
     return proc.returncode, text, folder
 
 
-@pytest.mark.parametrize("after, delay", [("TUL   1", 0.0), ("TUL   1", 0.4),
-                                          ("TUL   2", 0.1)])
+@pytest.mark.parametrize("after, delay", [("#1 ", 0.0), ("#1 ", 0.4),
+                                          ("#2 ", 0.1)])
 def test_sigint_after_a_trial_ends_the_run_with_130_and_the_resume_hint(tmp_path, after,
                                                                         delay):
     rc, err, folder = _interrupted(tmp_path, after, delay)
