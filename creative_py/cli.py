@@ -466,7 +466,7 @@ def run(
         if recorded != case:
             _fail(f"--resume {resume}: the run is not of case {case!r}")
         try:
-            with _one_line_errors(), _stdout_to_stderr():
+            with _interrupt_exits(), _one_line_errors(), _stdout_to_stderr():
                 with RunProgress(console) as progress:
                     folder = resume_run(resume, progress=progress)
         except (WorldFileError, ValueError) as exc:
@@ -491,7 +491,7 @@ def run(
     except ValueError as exc:
         _fail(f"--phase: {exc}" if "phase" in str(exc) else str(exc))
     try:
-        with _one_line_errors(), _stdout_to_stderr():
+        with _interrupt_exits(), _one_line_errors(), _stdout_to_stderr():
             with RunProgress(console, _budget(case, world, max_trials)) as progress:
                 folder = run_case(case, out, opts, progress=progress, world_dir=world)
     except (WorldFileError, ValueError) as exc:
@@ -499,6 +499,23 @@ def run(
     except OSError as exc:
         _fail(f"{exc.filename or out}: {exc.strerror or exc}")
     typer.echo(str(folder.path))
+
+
+@contextmanager
+def _interrupt_exits() -> Iterator[None]:
+    """Ctrl-C (SIGINT) at any moment of a run ends it with exit code 130 (the run has
+    printed how to resume it), even when something on its way swallowed the
+    KeyboardInterrupt (:mod:`creative_py.learning.interrupts`)."""
+    from creative_py.learning import interrupts
+
+    try:
+        with interrupts.watching():
+            yield
+    except KeyboardInterrupt:
+        raise typer.Exit(130) from None
+    if interrupts.interrupted():
+        typer.echo("interrupted (Ctrl-C) as the run ended; its folder is complete", err=True)
+        raise typer.Exit(130)
 
 
 def _given_options(ctx: typer.Context, exclude: tuple[str, ...] = ()) -> list[str]:

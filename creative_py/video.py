@@ -95,14 +95,18 @@ class Captioner:
         from PIL import Image, ImageDraw
 
         self.width, self.height, self.line_px = width, height, line_px
-        self.band = band_height(len(lines), line_px)
         self.font = _font(line_px)
+        probe = ImageDraw.Draw(Image.new("L", (1, 1)))
+        # A line wider than the frame is wrapped, never cut: the caption is the clip's
+        # record of the trial (its reason, what the physics measured).
+        self.lines = [part for line in lines
+                      for part in _wrap(probe, line, self.font, width - 8)]
+        self.band = band_height(len(self.lines), line_px)
         mask = Image.new("L", (width, max(self.band, 1)), 0)
         draw = ImageDraw.Draw(mask)
         y = 3
-        for line in lines:
-            draw.text((4, y), _fit(draw, line, self.font, width - 8), fill=255,
-                      font=self.font)
+        for line in self.lines:
+            draw.text((4, y), line, fill=255, font=self.font)
             y += line_px + 2
         self.text = np.asarray(mask, dtype=np.float32)[:self.band, :, None] / 255.0
         self._corners: dict[str, np.ndarray] = {}
@@ -137,12 +141,40 @@ class Captioner:
         return img
 
 
-def _fit(draw, text: str, font, width: float) -> str:
+def _wrap(draw, text: str, font, width: float) -> list[str]:
+    """Return ``text`` as lines no wider than ``width`` pixels: broken between words,
+    a word wider than the line broken inside it."""
     if draw.textlength(text, font=font) <= width:
-        return text
-    while text and draw.textlength(text + "...", font=font) > width:
-        text = text[:-1]
-    return text + "..."
+        return [text]
+    lines, line = [], ""
+    for word in text.split(" "):
+        candidate = f"{line} {word}" if line else word
+        if draw.textlength(candidate, font=font) <= width:
+            line = candidate
+            continue
+        if line:
+            lines.append(line)
+        line = word
+        while draw.textlength(line, font=font) > width and len(line) > 1:
+            cut = len(line) - 1
+            while cut > 1 and draw.textlength(line[:cut], font=font) > width:
+                cut -= 1
+            lines.append(line[:cut])
+            line = line[cut:]
+    if line:
+        lines.append(line)
+    return lines
+
+
+POSTER_SUFFIX = ".poster.jpg"
+"""A clip's poster (``videos/012-create-hook_a4.poster.jpg`` beside
+``videos/012-create-hook_a4.mp4``): its last frame, the scene as the trial left it when
+the physics gave its verdict, captioned; what the report shows before the clip plays."""
+
+
+def poster_name(clip: str) -> str:
+    """Return the poster's path of a clip's path (relative or not)."""
+    return clip.removesuffix(".mp4") + POSTER_SUFFIX
 
 
 def write_clip(path: Path, frames: Sequence[np.ndarray], fps: float,
@@ -182,12 +214,24 @@ def write_clip(path: Path, frames: Sequence[np.ndarray], fps: float,
     writer = imageio.get_writer(str(tmp), fps=fps, codec="libx264", pixelformat="yuv420p",
                                 macro_block_size=2, ffmpeg_log_level="error",
                                 output_params=["-preset", "veryfast"])
+    last = None
     try:
         for i, f in enumerate(frames):
             corner = f"t = {times[i]:.1f} s" if times is not None else ""
-            writer.append_data(draw(f, corner))
+            last = draw(f, corner)
+            writer.append_data(last)
     finally:
         writer.close()
     tmp.replace(path)
+    _write_poster(Path(poster_name(str(path))), last)
     return {"frames": len(frames), "duration_s": round(len(frames) / fps, 2), "width": w,
             "height": h + draw.band, "bytes": path.stat().st_size}
+
+
+def _write_poster(path: Path, frame: np.ndarray) -> None:
+    """Write a clip's poster (:data:`POSTER_SUFFIX`): ``frame`` as a JPEG, atomically."""
+    from PIL import Image
+
+    tmp = path.with_name(f".{path.name}.tmp")
+    Image.fromarray(frame).save(tmp, format="JPEG", quality=88)
+    tmp.replace(path)

@@ -53,6 +53,11 @@ def failure_reason(outcome: str, reason: str) -> str:
     return f"{outcome}: {' '.join(text.split())}" if text else outcome
 
 
+class ClipError(RuntimeError):
+    """A clip could not be written; the message names its file and trial and the
+    cause."""
+
+
 class ClipKeeper:
     """Decides which trials become clips and writes them into ``<run>/videos/``.
 
@@ -119,6 +124,13 @@ class ClipKeeper:
         Call it once per trial, in order (replayed trials of a resumed run included),
         so that "first" means first in the run.
         """
+        return self._decide(phase, outcome, reason, note=True)
+
+    def peek(self, phase: str, outcome: str, reason: str) -> Optional[str]:
+        """Return what :meth:`why` would return for the next trial, noting nothing."""
+        return self._decide(phase, outcome, reason, note=False)
+
+    def _decide(self, phase: str, outcome: str, reason: str, note: bool) -> Optional[str]:
         why = None
         if phase == "demo":
             why = "demonstration"
@@ -129,12 +141,13 @@ class ClipKeeper:
         elif outcome == "success":
             if not self.succeeded:
                 why = why or "first_success"
-            self.succeeded = True
+            self.succeeded = self.succeeded or note
         else:
             cls = failure_reason(outcome, reason)
             if cls not in self.seen:
                 why = why or f"failure:{cls}"
-            self.seen.add(cls)
+            if note:
+                self.seen.add(cls)
         if self.mode == "all":
             return why or "trial"
         return why if self.mode == "key" else None
@@ -146,25 +159,30 @@ class ClipKeeper:
 
     def write(self, recorder: Any, why: str, trial: int, phase: str, phase_trial: int,
               tool: str, tested: Sequence[str], outcome: str, reason: str,
-              location: Any = None, measured: Sequence[str] = ()) -> dict[str, Any]:
+              location: Any = None, measured: Sequence[str] = (),
+              again: bool = False) -> dict[str, Any]:
         """Render a trial's recorder and encode its frames with their caption, in a
         child process when :attr:`background` (call it inside the trial's episode);
         add and return the clip's entry (its ``bytes`` once :meth:`finish` ran).
         ``measured`` is the trial's measured verdict in short lines
         (:func:`creative_py.records.trial.verdict_lines`: caption lines, and the
-        entry's ``verdict``)."""
+        entry's ``verdict``). ``again``: a resume's replayed trial whose clip is missing
+        (the interrupted run never finished it) was run again in the physics to render
+        it."""
         import time
 
         from creative_py.video import write_clip
 
+        from creative_py.learning import interrupts
+
         t0 = time.perf_counter()
         name = self.file_name(trial, phase, tool)
-        if self.held:  # a resume's replay: the clip, if any, was made before
+        if self.held and not again:  # a resume's replay: the clip was made before
             entry = self._kept(name, why)
             if entry is not None:
                 self.entries.append(entry)
             return entry
-        head = (f"#{trial} {PHASE_TAGS.get(phase, phase)} {phase_trial}  {tool}"
+        head = (f"#{trial} {PHASE_TAGS.get(phase, phase)}  {tool}"
                 + (f"  loc {location}" if location is not None else ""))
         lines = [head, f"tested {', '.join(tested) or '-'}",
                  f"{outcome}" + (f": {reason}" if reason else "")]
@@ -172,11 +190,18 @@ class ClipKeeper:
         path, fps = self.run_dir / name, self.spec.fps
 
         def use(frames, times) -> None:
-            write_clip(path, frames, fps, lines, times)
+            try:
+                write_clip(path, frames, fps, lines, times)
+            except BaseException as exc:  # name the clip: the child's warning says it
+                raise ClipError(f"{name} (trial {trial}): {type(exc).__name__}"
+                                + (f": {exc}" if str(exc) else "")) from exc
 
         if self.background:
             self._wait(self.max_children - 1)
-        pid = recorder.render_then(use, background=self.background, nice=CLIP_NICE)
+        # A Ctrl-C while the clip is started is held back until it is: the clip process
+        # forked here ignores it and writes the clip of this ended trial.
+        with interrupts.deferred():
+            pid = recorder.render_then(use, background=self.background, nice=CLIP_NICE)
         if pid is not None:
             self.children[pid] = name
         n = len(recorder.snapshots)
@@ -197,8 +222,12 @@ class ClipKeeper:
             pid = next(iter(self.children))  # the oldest; never another process's child
             name = self.children.pop(pid)
             _, status = os.waitpid(pid, 0)
-            if os.waitstatus_to_exitcode(status) != 0:
-                logging.getLogger(__name__).warning("%s: the clip was not written", name)
+            code = os.waitstatus_to_exitcode(status)
+            if code != 0:
+                cause = (f"its process was ended by signal {-code}" if code < 0
+                         else "its process failed (the line above says why)")
+                logging.getLogger(__name__).warning("%s: the clip was not written: %s",
+                                                    name, cause)
 
     def finish(self) -> list[dict[str, Any]]:
         """Wait for every clip being written; drop the entries of clips that failed,
@@ -222,6 +251,8 @@ class ClipKeeper:
         the entry of its clip, as the interrupted run recorded it, if it wrote one."""
         why = self.why(record.phase, record.outcome, record.reason)
         name = self.file_name(record.trial, record.phase, record.tool)
+        if any(e["file"] == name for e in self.entries):
+            return  # rendered again during the replay (:meth:`missing`)
         if why is not None:
             entry = self._kept(name, why)
             if entry is None and (self.run_dir / name).is_file():
@@ -231,6 +262,16 @@ class ClipKeeper:
                          "frames": None, "duration_s": None, "bytes": None}
             if entry is not None:
                 self.entries.append(entry)
+
+    def missing(self, record: TrialRecord) -> Optional[str]:
+        """Return why a replayed trial would be kept when its clip file is missing (a
+        run killed or interrupted before the clip was written), else None: the trial
+        is then run again in the physics to render it."""
+        if self.mode == "none":
+            return None
+        why = self.peek(record.phase, record.outcome, record.reason)
+        name = self.file_name(record.trial, record.phase, record.tool)
+        return why if why is not None and not (self.run_dir / name).is_file() else None
 
     def _kept(self, name: str, why: str) -> Optional[dict[str, Any]]:
         """Return the recorded entry of an existing clip ``name`` (its ``why`` as

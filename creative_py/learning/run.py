@@ -28,7 +28,8 @@ from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.learning.options import RunOptions, read_run_json
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import RunFolder, read_resume
-from creative_py.records.summary import RunSummary, TrialCounts, VideoEntry, WallTimes
+from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
+                                         WallTimes)
 from creative_py.report import write_reports
 from creative_py.simulator import World, backend_for
 from creative_py.simulator.randomise import apply_drawn
@@ -92,7 +93,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     progress : callable or None
         Receives one line of text per step (the CLI shows it); without it, each line is
         logged at INFO level to the ``creative_py.learning.run`` logger (Python's
-        ``logging``), so a caller that configures logging sees the run go on.
+        ``logging``), so a caller that configures logging sees the run go on. Prolog
+        variables are written A, B, ... as the reports write them.
     world_dir : Path or None
         A world folder other than the shipped one (with its own ``case.toml``).
     resume : (RunFolder, list of TrialRecord, list of int) or None
@@ -102,12 +104,13 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         Used by :func:`resume_run`: the randomised world recorded in ``run.json``
         (otherwise drawn from ``options.world_seed``).
     """
-    say = progress or log.info
+    say = _readable(progress or log.info)
     t_start = time.perf_counter()
     engine, world, drawn = _checked_world(case, options, world_dir, drawn,
                                           resume[0].path / "run.json" if resume else None)
-    run, replay, lines, before = _open_folder(out, case, options, world_dir, drawn,
-                                              run_name, resume, say)
+    run, replay, lines, before, resumed = _open_folder(out, case, options, world_dir,
+                                                       drawn, run_name, resume, say)
+    clips: Optional[ClipKeeper] = None
     try:
         runner = _trial_runner(engine, world, run, options, say, replay, lines)
         clips = runner.clips
@@ -125,14 +128,22 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                 parts["pddl"] = replace(parts["pddl"], create=check)
         runner.end_replay()  # a resume with nothing left to run: the replay was checked
         _finish(runner, clips, parts, wall, t_start, say,
-                before if resume is not None and runner.physical == 0 else None)
-    except BaseException:
+                before if resume is not None and runner.physical == 0 else None, resumed)
+    except BaseException as exc:
+        interrupted = isinstance(exc, KeyboardInterrupt)
+        if interrupted and clips is not None:
+            _finish_clips(clips, say)
         # Nothing learned yet (the demonstration failed, the run was interrupted before
         # its first trial): leave no empty folder behind. (A run killed outright leaves
         # run.json: --resume starts it again from there.)
         if not run.trials and resume is None:
             run.release()
             shutil.rmtree(run.path, ignore_errors=True)
+            if interrupted:
+                say("interrupted before the first trial: nothing was kept")
+        elif interrupted:
+            say(f"interrupted after {len(run.trials)} trial(s); to go on: "
+                f"creative run {case} --resume {run.path}")
         raise
     finally:
         if resume is None:
@@ -155,11 +166,14 @@ def _trial_runner(engine: Engine, world: World, run: RunFolder, options: RunOpti
 def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[Path],
                  drawn: Optional[dict[str, Any]], run_name: Optional[str],
                  resume: Optional[tuple], say: Callable[[str], None]
-                 ) -> tuple[RunFolder, list, list, Optional[RunSummary]]:
+                 ) -> tuple[RunFolder, list, list, Optional[RunSummary], Optional[Resumed]]:
     """Return the run folder (created and locked with its ``run.json``, or the resumed
-    one, sealed until its replay is checked), the trials to replay, their line numbers
-    and the summary of a resumed run that had finished (None otherwise)."""
+    one, sealed until its replay is checked), the trials to replay, their line numbers,
+    the summary of a resumed run that had finished (None otherwise) and, for a resume,
+    what it replays and the interrupted run's wall time (:class:`Resumed`, its total
+    still unknown)."""
     if resume is None:
+        waiting = _interrupted_folders(Path(out), case, options.seed)
         run = RunFolder.create(Path(out), case, options.seed, run_name)
         try:
             run.write_json("run.json", {"case": case, "options": asdict(options),
@@ -170,8 +184,12 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
             shutil.rmtree(run.path, ignore_errors=True)
             raise
         say(f"run folder {run.path}")
-        return run, [], [], None
+        if waiting:
+            say(f"a new run; the interrupted run {waiting[-1]} of this case and seed "
+                f"can go on with: creative run {case} --resume {waiting[-1]}")
+        return run, [], [], None, None
     run, replay, lines = resume
+    resumed = Resumed(replayed=len(replay), earlier_wall_time_s=_earlier_wall(run.path))
     # Nothing is written until the replay is checked (TrialRunner unseals it); with
     # nothing to replay (killed before its first trial) the run starts afresh.
     run.seal(replay)
@@ -179,7 +197,30 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
         run.unseal()
     say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
     say(f"run folder {run.path}")
-    return run, replay, lines, _earlier_summary(run.path)
+    return run, replay, lines, _earlier_summary(run.path), resumed
+
+
+def _interrupted_folders(out: Path, case: str, seed: int) -> list[Path]:
+    """Return the run folders under ``out`` of ``case`` and ``seed`` that an interruption
+    left unfinished (a ``run.json``, no ``summary.json``), oldest first."""
+    try:
+        found = [p for p in out.glob(f"{case}-*-s{seed}")
+                 if (p / "run.json").is_file() and not (p / "summary.json").exists()]
+    except OSError:
+        return []
+    return sorted(found, key=lambda p: p.name)
+
+
+def _earlier_wall(run_dir: Path) -> Optional[float]:
+    """Return the wall time of an interrupted run: from its ``run.json`` (written as it
+    started) to its last recorded trial (``trials.jsonl`` last written), or None when
+    one of them is missing."""
+    try:
+        start = (run_dir / "run.json").stat().st_mtime
+        last = (run_dir / "trials.jsonl").stat().st_mtime
+    except OSError:
+        return None
+    return round(max(0.0, last - start), 2)
 
 
 def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
@@ -222,11 +263,12 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
 
 def _finish(runner: TrialRunner, clips: ClipKeeper, parts: dict[str, Any],
             wall: dict[str, float], t_start: float, say: Callable[[str], None],
-            before: Optional[RunSummary]) -> RunSummary:
+            before: Optional[RunSummary], resumed: Optional[Resumed] = None) -> RunSummary:
     """Wait for the clips, then write ``summary.json`` of the run's ``parts`` (fields of
-    :class:`~creative_py.records.summary.RunSummary`) and the reports; ``before`` is the
-    summary of a finished run resumed again, which ran nothing (its wall times are
-    kept)."""
+    :class:`~creative_py.records.summary.RunSummary`) and the reports, and say how long
+    it took, the headline (:func:`creative_py.report.headline.headline`) and where the
+    report is; ``before`` is the summary of a finished run resumed again, which ran
+    nothing (its wall times are kept); ``resumed`` what a resume replayed."""
     run, trials = runner.run_folder, runner.trials
     if clips.children:
         say(f"encoding {len(clips.children)} video clip(s)")
@@ -236,12 +278,52 @@ def _finish(runner: TrialRunner, clips: ClipKeeper, parts: dict[str, Any],
     times = WallTimes(**wall)
     if before is not None and before.wall_time_s is not None:
         times = before.wall_time_s
+    if before is not None:
+        resumed = before.resumed  # nothing ran: the finished run's record stands
+    elif resumed is not None and resumed.earlier_wall_time_s is not None:
+        resumed = replace(resumed, total_wall_time_s=round(
+            resumed.earlier_wall_time_s + times.total, 2))
     summary = RunSummary(**parts, wall_time_s=times, trials=TrialCounts.of(trials),
-                         videos=videos)
+                         videos=videos, resumed=resumed)
     summary.write(run.path)
     write_reports(run.path, trials, summary)
     say(f"done in {summary.wall_time_s.total} s: {run.path}")
+    for line in _headline(run.path):
+        say(line)
+    say(f"report: {run.path / 'report.html'}")
     return summary
+
+
+def _headline(run_dir: Path) -> list[str]:
+    """The headline's sentences of the finished run (:mod:`creative_py.report.headline`),
+    but the first (case, strategy, seed: the run's first lines said them) and the wall
+    time (said just before)."""
+    from creative_py.report.contents import read_run
+    from creative_py.report.headline import headline
+
+    lines = headline(read_run(run_dir)).lines
+    return [x for x in lines[1:] if not x.startswith("Wall time ")]
+
+
+def _readable(say: Callable[[str], None]) -> Callable[[str], None]:
+    """Return ``say`` with each line's Prolog variables (``_G3``) written ``A``, ``B``,
+    ... as the reports write them (:func:`creative_py.report.contents.readable_term`)."""
+    from creative_py.report.contents import readable_term
+
+    return lambda line: say(readable_term(line))
+
+
+def _finish_clips(clips: ClipKeeper, say: Callable[[str], None]) -> None:
+    """After Ctrl-C: wait for the clips being written (their processes ignore it), so
+    that no clip of an ended trial is lost; a second Ctrl-C leaves them to finish on
+    their own."""
+    if not clips.children:
+        return
+    say(f"interrupted: finishing {len(clips.children)} video clip(s) first")
+    try:
+        clips.finish()
+    except KeyboardInterrupt:
+        pass
 
 
 def _earlier_summary(run_dir: Path) -> Optional[RunSummary]:

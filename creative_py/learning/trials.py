@@ -37,6 +37,7 @@ from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
 from creative_py.bridge import Compound, Engine, PrologError, PrologFailed, Term, fact_term
 from creative_py.case import CaseManifest
+from creative_py.learning import interrupts
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
@@ -162,11 +163,13 @@ class TrialRunner:
         ``label=False`` leaves the version space unchanged (evaluation trials, created
         tools). Returns the trial's record and the version space after it.
         """
+        interrupts.check()  # a Ctrl-C something swallowed still ends the run here
         n = len(self.trials) + 1
         kind, tool, tested_l, violated, pose = self._planned(exp)
         replayed = n <= len(self.replay)
         if replayed:
             ex = self._replayed(self.replay[n - 1], str(tool), task, pose, phase)
+            self._run_again(n, phase, phase_trial, str(tool), tested_l, task, pose, label)
         else:
             self.end_replay()  # every recorded trial was checked: the folder opens
             self.physical += 1
@@ -181,7 +184,10 @@ class TrialRunner:
                 raise ValueError(f"{self._where(n)}: field 'facts' does not label "
                                  f"({exc}); the run cannot be resumed") from None
         hs, hg = self.bounds(vs)
-        line = (f"{PHASE_TAGS[phase]:<4} {phase_trial:2d}  {str(tool):<14} "
+        # One trial number everywhere (terminal, tables, plot, clips, report): the run's
+        # own, n of trials.jsonl (the demonstration is 0); a phase's count repeats
+        # (the created tool's evaluation starts at 1 again).
+        line = (f"#{n:<3} {PHASE_TAGS[phase]:<4} {str(tool):<14} "
                 f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}")
         if replayed:
             rec = self._checked_replay(n, hs, hg)
@@ -242,6 +248,45 @@ class TrialRunner:
         if self.clips is not None:
             self.clips.replayed(rec)
         return rec
+
+    def _run_again(self, n: int, phase: str, phase_trial: int, tool: str,
+                   tested: list[str], task: TaskState, pose: Term, label: bool) -> None:
+        """Run replayed trial ``n`` again in the physics when its record cannot be
+        checked otherwise or its clip is missing, and refuse a record the physics
+        contradicts.
+
+        A labelled trial's outcome is checked by the h_s and h_g it leads to
+        (:meth:`_checked_replay`); an unlabelled one (evaluation, a created or
+        catalogued tool's trial) changes no hypothesis, so the physics, which decides
+        every outcome, decides it again (runs are deterministic: trial ``n`` has seed
+        ``seed * 1000 + n``). A clip the interrupted run did not finish is rendered from
+        this run of the trial (:meth:`ClipKeeper.missing`)."""
+        rec = self.replay[n - 1]
+        why = self.clips.missing(rec) if self.clips is not None else None
+        if label and why is None:
+            return
+        from creative_py.simulator.trial import run_trial
+
+        recorder = self.clips.recorder() if why is not None else None
+
+        def verdict(outcome: str, reason: str, measured: dict | None) -> None:
+            if outcome == rec.outcome:  # a contradicted record is refused below
+                self.clips.write(recorder, why, n, phase, phase_trial, tool, tested,
+                                 outcome, reason, task.location,
+                                 measured=verdict_lines(measured), again=True)
+
+        ex = run_trial(self.world, tool, task.variant, task.location, pose_numbers(pose),
+                       self.seed * 1000 + n, None, gui=self.gui, record=recorder,
+                       verdict=verdict if recorder is not None else None,
+                       pose_target=self.pose_target)
+        if ex.outcome != rec.outcome:
+            raise ValueError(
+                f"{self._where(n)}: field 'outcome' is {rec.outcome!r}, but the physics "
+                f"gives {ex.outcome!r} for this trial (run again: {ex.reason or '-'}); "
+                f"the record was changed, the run cannot be resumed")
+        if why is not None:
+            self.progress(f"#{n}: its clip was missing; the trial was run again and the "
+                          f"clip rendered ({ClipKeeper.file_name(n, phase, tool)})")
 
     def end_replay(self) -> None:
         """Open the run folder and the clips again after a resume's replay (checked):

@@ -14,6 +14,18 @@ passed on the command line. The piece's STL is already in its print placement
 closing comments (``; estimated printing time (normal mode) = 1h 2m 3s``,
 ``; filament used [g] = 3.21``).
 
+The slicer runs on one CPU and without address-space randomisation
+(:func:`_deterministic`): PrusaSlicer 2.5 orders some toolpaths (which island or
+perimeter comes next, where a travel retracts) by the order its worker threads finish
+and by the addresses of its objects in memory, so the same STL gave G-code that differed
+in a few moves and a print time that differed by 1-2 s from one run to the next
+(measured: 5 slicings of one piece, 4 different files, 7630-7632 s). Pinned to one CPU
+with the addresses fixed, and given the same arguments and environment whatever the
+run folder (the piece is sliced in the slicer's private folder under its own name, with
+only ``HOME``, ``LC_ALL`` and ``PATH`` set), the same STL gives the same G-code, byte for
+byte but the date line (the memory layout also follows the length of the arguments and
+environment: the same piece at another path gave 7631 s against 7633 s before).
+
 A piece the slicer rejects is an error, not a warning: a non-zero exit, no G-code, no
 estimate, or a print outside the bed (PrusaSlicer 2.5's command line slices an object
 lying off the bed without complaint, so the G-code's moves and layers are checked
@@ -139,26 +151,67 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings | No
     bx, by, bz = (v * MM_PER_M for v in settings.build_volume)
     nozzle = settings.nozzle_diameter * MM_PER_M
     with tempfile.TemporaryDirectory(prefix="creative-slicer-") as datadir:
-        # A private data folder: the slicer reads and writes no user configuration.
+        # A private data folder: the slicer reads and writes no user configuration. The
+        # piece is sliced there under its own name, with a fixed environment: the
+        # slicer's memory layout (and so its toolpath order, see the module) depends on
+        # its arguments and environment, which then depend on the piece alone, not on
+        # the run folder's path or the caller's variables.
+        work = Path(datadir) / "piece"
+        work.mkdir()
+        try:
+            shutil.copyfile(stl, work / stl.name)
+        except OSError as exc:
+            raise SliceError(f"{stl}: cannot be read ({exc.strerror or exc})") from None
+        out = work / gcode.name
         cmd = [exe, "--loglevel", "1", "--datadir", datadir, "--load", str(profile),
                "--bed-shape", f"0x0,{bx:g}x0,{bx:g}x{by:g},0x{by:g}",
                "--max-print-height", f"{bz:g}", "--nozzle-diameter", f"{nozzle:g}",
                "--filament-density", f"{PLA_DENSITY / 1000:g}",
-               "--dont-arrange", "--export-gcode", "--output", str(gcode), str(stl)]
+               "--dont-arrange", "--export-gcode", "--output", out.name, stl.name]
         start = time.perf_counter()
         try:
             done = subprocess.run(cmd, capture_output=True, text=True,
-                                  timeout=SLICE_TIMEOUT_S,
-                                  env={**os.environ, "HOME": datadir})
+                                  timeout=SLICE_TIMEOUT_S, cwd=work,
+                                  env={"HOME": datadir, "LC_ALL": "C",
+                                       "PATH": os.environ.get("PATH", os.defpath)},
+                                  preexec_fn=_deterministic)
         except subprocess.TimeoutExpired:
             raise SliceError(f"{stl.name}: the slicer took longer than "
                              f"{SLICE_TIMEOUT_S:g} s") from None
         wall = time.perf_counter() - start
+        if out.is_file():
+            gcode.parent.mkdir(parents=True, exist_ok=True)
+            shutil.move(str(out), str(gcode))
     if done.returncode != 0 or not gcode.is_file():
         message = " ".join((done.stderr or done.stdout).split()[-40:])
         raise SliceError(f"{stl.name}: the slicer rejected the piece (exit code "
                          f"{done.returncode}): {message or 'no G-code written'}")
     return _read_gcode(stl.name, gcode, settings, wall)
+
+
+_ADDR_NO_RANDOMIZE = 0x0040000
+"""Linux's personality flag that turns address-space randomisation off (setarch -R)."""
+
+
+def _deterministic() -> None:
+    """In the slicer's process, before it starts: one CPU (the lowest this process may
+    use) and no address-space randomisation, so that the same piece gives the same
+    G-code and print time (see the module's docstring). Where the system has neither
+    (not Linux), nothing changes."""
+    if hasattr(os, "sched_setaffinity"):
+        try:
+            os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
+        except OSError:
+            pass
+    try:
+        import ctypes
+
+        libc = ctypes.CDLL(None, use_errno=True)
+        current = libc.personality(ctypes.c_ulong(0xFFFFFFFF))
+        if current != -1:
+            libc.personality(ctypes.c_ulong(current | _ADDR_NO_RANDOMIZE))
+    except (OSError, AttributeError):
+        pass
 
 
 def read_gcode(gcode: Path | str, settings: PrintSettings | None = None, *,

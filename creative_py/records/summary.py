@@ -454,6 +454,21 @@ class VideoEntry(Part):
 
 
 @dataclass(frozen=True, kw_only=True)
+class Resumed(Part):
+    """``resumed``: the run was interrupted and went on with ``creative run --resume``
+    (absent from the summary of a run that never was)."""
+
+    replayed: Optional[int] = None
+    """Trials of the interrupted run replayed (not run again) by the resume."""
+    earlier_wall_time_s: Optional[float] = None
+    """Wall time of the interrupted run, from its folder's start (``run.json``) to its
+    last recorded trial (the time it went on after that trial is not known); None when
+    unknown."""
+    total_wall_time_s: Optional[float] = None
+    """``earlier_wall_time_s`` plus this session's ``wall_time_s.total``."""
+
+
+@dataclass(frozen=True, kw_only=True)
 class RunSummary(Part):
     """``summary.json``: what a run did, in figures.
 
@@ -491,6 +506,8 @@ class RunSummary(Part):
     trials: Optional[TrialCounts] = None
     videos: Optional[list[VideoEntry]] = None
     """The saved clips (None: a summary written before runs saved any)."""
+    resumed: Optional[Resumed] = _omit()
+    """How the run was resumed after an interruption (None: it was not)."""
 
     @property
     def strategy(self) -> Optional[str]:
@@ -646,6 +663,6 @@ def _type_name(tp: Any) -> str:
 
 __all__ = ["CatalogueEntry", "CreateSummary", "CreatedToolSummary", "Demonstration",
            "Hypotheses", "Outcomes", "PIECE_KEYS", "PRINT_KEYS", "Part", "PddlCheck", "PddlChecks",
-           "Prediction", "PrintPiece", "PrintSummary", "RunSummary", "SUMMARY_NAME",
+           "Prediction", "PrintPiece", "PrintSummary", "Resumed", "RunSummary", "SUMMARY_NAME",
            "StrengthSummary", "TrialCounts", "UsePhase", "VideoEntry", "WallTimes",
            "as_summary", "print_summary"]

@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 import types
 import typing
 from dataclasses import dataclass, field, fields
@@ -92,7 +93,9 @@ class TrialRecord:
 
     trial: int = field(metadata=_column("#"))
     phase: str = field(metadata=_column("phase"))
-    phase_trial: int = field(default=0, metadata=_column("n"))
+    phase_trial: int = 0
+    """The trial's count within its phase (not shown: the reports number trials by
+    ``trial`` alone, one number everywhere)."""
     variant: str = field(metadata=_column("variant"))
     location: int = field(metadata=_column("loc"))
     tool: str = field(metadata=_column("tool"))
@@ -117,10 +120,10 @@ class TrialRecord:
     verdict: Union[dict[str, Any], None] = None
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
 
-    # The column order of the reports: # phase n tool variant loc pose tested violated
+    # The column order of the reports: # phase tool variant loc pose tested violated
     # outcome reason (a field's own order otherwise).
     COLUMN_ORDER: typing.ClassVar[tuple[str, ...]] = (
-        "trial", "phase", "phase_trial", "tool", "variant", "location", "pose", "tested",
+        "trial", "phase", "tool", "variant", "location", "pose", "tested",
         "violated", "outcome", "reason")
 
     def __post_init__(self) -> None:
@@ -228,15 +231,32 @@ def verdict_lines(verdict: Any) -> list[str]:
     lines = []
     stop = verdict.get("stop")
     if isinstance(stop, dict):
-        lines.append(f"stopped: {stop.get('brief') or stop.get('text', '')}")
+        brief = _with_unit(stop.get("brief"), stop.get("unit"))
+        lines.append(f"stopped: {brief or stop.get('text', '')}")
         touching = (stop.get("measures") or {}).get("touching")
         if touching:
             lines.append(f"touching {', '.join(touching)}")
     if verdict.get("brief") or verdict.get("text"):
-        lines.append(str(verdict.get("brief") or verdict["text"]))
+        lines.append(_with_unit(verdict.get("brief"), verdict.get("unit"))
+                     or str(verdict["text"]))
     if verdict.get("note"):
-        lines.append(str(verdict["note"]))
+        lines.append(_with_unit(str(verdict["note"]), verdict.get("unit")))
     return lines
+
+
+_BARE_LIMIT = re.compile(r"(needs (?:<|<=|>|>=) -?\d+(?:\.\d+)?)$")
+"""A short line ending in a threshold without its unit (``..., needs < 0.8500``: the
+simulator's ``brief`` and the oracles' notes leave it out)."""
+
+
+def _with_unit(line: Any, unit: Any) -> str:
+    """Return a verdict's short line with the unit after its final threshold (``needs <
+    0.8500 m``), as the measure before it has it; other lines as they are."""
+    if not line:
+        return ""
+    if not isinstance(unit, str) or not unit:
+        return str(line)
+    return _BARE_LIMIT.sub(rf"\1 {unit}", str(line))
 
 
 def reason_text(record: TrialRecord) -> str:

@@ -126,10 +126,23 @@ def headline(run: RunContents) -> Headline:
             if line:
                 out.lines.append(line)
                 out.figures += figures
+    resumed = s.resumed
+    if resumed is not None:
+        text = "Resumed after an interruption"
+        if resumed.replayed is not None:
+            text += (f": {resumed.replayed} trial{'s' if resumed.replayed != 1 else ''} "
+                     "of the interrupted run replayed from its records")
+        if resumed.earlier_wall_time_s is not None:
+            text += (f"; the interrupted run took {number_text(resumed.earlier_wall_time_s)}"
+                     " s to its last recorded trial")
+        if resumed.total_wall_time_s is not None:
+            text += f"; {number_text(resumed.total_wall_time_s)} s in all"
+        out.lines.append(text + ".")
     wall = s.wall_time_s
     if wall is not None and wall.total is not None:
         parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.phases())
         out.lines.append(f"Wall time {number_text(wall.total)} s"
+                         + (" of the resumed session" if resumed is not None else "")
                          + (f" ({parts})." if parts else "."))
         out.figures.append(Figure("wall_time_s.total", wall.total,
                                   f"{number_text(wall.total)} s", "wall time"))
@@ -156,6 +169,10 @@ def _creation_line(create: CreateSummary) -> str:
                        if isinstance(trials, int) else ""))
     elif solved == "catalogue":
         bits.append(f"solved by the catalogued {create.catalogue_success}")
+        if create.needed is False and create.created_tools:
+            names = ", ".join(str(c.name) for c in create.created_tools)
+            bits.append(f"{names} made all the same, as a demonstration "
+                        "(--demonstrate-creation)")
     elif solved:
         bits.append(f"solved by {solved}")
     elif create.needed is not False:

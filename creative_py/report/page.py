@@ -198,7 +198,7 @@ def _trials_section(run: RunContents) -> str:
             text = readable_term(cell(t))
             if header == "outcome":
                 cells.append(f'<td class="col-outcome">{_outcome(text)}</td>')
-            elif header in ("#", "n", "loc"):
+            elif header in ("#", "loc"):
                 cells.append(f'<td class="num">{escape(text)}</td>')
             elif header == "pose":   # breaks between its numbers, never inside one
                 cells.append('<td class="col-pose"><code>' + ", ".join(
@@ -206,6 +206,12 @@ def _trials_section(run: RunContents) -> str:
                     + "</code></td>")
             elif header in ("tested", "violated"):
                 cells.append(f'<td class="col-{header}"><code>{_breakable(text)}</code></td>')
+            elif header == "reason" and " -- " in text:
+                # The reason in the row; what the physics measured, folded under it (a
+                # guard's stop and its contacts run to many lines).
+                reason, measured = text.split(" -- ", 1)
+                cells.append(f'<td class="col-reason">{escape(reason)}<details><summary>'
+                             f'measured</summary>{escape(measured)}</details></td>')
             else:
                 cells.append(f'<td class="col-{escape(header)}">{escape(text)}</td>')
         rows.append(f'<tr class="trial {escape(t.outcome)}">{"".join(cells)}</tr>')
@@ -221,7 +227,7 @@ def _predicted_row(run: RunContents) -> str:
     predicted = create.predicted if create is not None else None
     if predicted is None or predicted.feasible is not False:
         return ""
-    values = {"#": "-", "phase": "create", "n": "-", "tool": _or(predicted.tool, "?"),
+    values = {"#": "-", "phase": "create", "tool": _or(predicted.tool, "?"),
               "variant": _or(predicted.variant, ""), "loc": _or(predicted.location, ""),
               "pose": "-", "tested": "-",
               "violated": literals_text(predicted.conflict),
@@ -238,12 +244,23 @@ def _clips_section(run: RunContents) -> str:
     for clip in run.clips:
         caption = _clip_caption(clip)
         if clip.exists:
-            media = (f'<video controls preload="metadata" src="{_url(clip.file)}">'
+            poster = _poster(run.path, clip.file)
+            media = (f'<video controls preload="metadata" src="{_url(clip.file)}"'
+                     + (f' poster="{_url(poster)}"' if poster else "") + ">"
                      f'<a href="{_url(clip.file)}">{escape(clip.file)}</a></video>')
         else:
             media = f'<p class="none">missing: {escape(clip.file)}</p>'
         figures.append(f"<figure>{media}<figcaption>{caption}</figcaption></figure>")
     return f'<div class="clips">{"".join(figures)}</div>'
+
+
+def _poster(root: Path, clip: str) -> str | None:
+    """Return the poster of a clip (its last frame, written beside it:
+    :data:`creative_py.video.POSTER_SUFFIX`) when the folder has it, else None (a clip
+    written before posters were: the browser shows its first frame)."""
+    name = clip.removesuffix(".mp4") + ".poster.jpg"
+    rel = relative_inside(root, name)
+    return rel if rel is not None and (root / rel).is_file() else None
 
 
 def _clip_caption(clip: Clip) -> str:
@@ -274,6 +291,10 @@ def _tools_section(run: RunContents) -> str:
         if create.needed is not None:
             bits.append("creation needed" if create.needed else
                         "creation not needed (a catalogued tool succeeded)")
+            if not create.needed and create.created_tools:
+                names = ", ".join(escape(str(c.name)) for c in create.created_tools)
+                bits.append(f"{names} made all the same, as a demonstration "
+                            "(<code>--demonstrate-creation</code>)")
         if create.solved_by:
             by = {"learned": "the learned model's own tool",
                   "catalogue": f"the catalogued {create.catalogue_success}",
@@ -314,27 +335,12 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
     else:
         picture = f'<p class="none">No render ({escape(tool.folder)}/{escape(tool.name)}.png).</p>'
     facts = []
-    dims = c.dims if c is not None else None
-    if dims:
-        facts.append("<h4>Dimensions</h4>" + _key_value_table(
-            {k: (_with_unit(k, v, "m") if isinstance(v, (int, float)) else v)
-             for k, v in dims.items()}))
-    spec = m.get("spec")
-    if isinstance(spec, dict):
-        facts.append("<h4>Specification (the tool's JSON)</h4>" + _key_value_table(
-            {k: _with_unit(k, v, "m" if isinstance(v, float) else "")
-             for k, v in spec.items()}))
-    physical = {k: m[k] for k in ("mass_kg", "mesh_volume_m3", "spec_volume_m3") if k in m}
-    printability = m.get("printability")
-    if isinstance(printability, dict):
-        if isinstance(printability.get("extent"), list):
-            physical["extent_mm"] = " x ".join(
-                f"{float(x) * 1000:.1f}" for x in printability["extent"]
-                if isinstance(x, (int, float))) + " mm"
-        physical.update({k: v for k, v in printability.items() if k != "extent"})
+    sizes = _tool_sizes(c.dims if c is not None else None, m.get("spec"))
+    if sizes:
+        facts.append("<h4>Dimensions</h4>" + _key_value_table(sizes))
+    physical = _tool_physical(m)
     if physical:
-        facts.append("<h4>Mass and printability</h4>" + _key_value_table(
-            {k: _with_unit(k, v) for k, v in physical.items()}))
+        facts.append("<h4>Mass and printability</h4>" + _key_value_table(physical))
     tail = ["<h4>Print time and filament</h4>" + _print_html(m.get("print"), link)]
     if tool.files:
         tail.append("<h4>Files</h4><p>" + " · ".join(
@@ -448,6 +454,66 @@ def _mm(value: Any) -> str:
 
 _UNITS = (("_mm3", "mm³"), ("_m3", "m³"), ("_mm", "mm"), ("_kg", "kg"), ("_deg", "deg"),
           ("_pct", "%"), ("_mpa", "MPa"), ("_m", "m"), ("_g", "g"), ("_s", "s"))
+
+
+_SPEC_HIDDEN = ("name", "mass", "kind")
+"""Keys of a tool's JSON spec the Dimensions table leaves out: the card's title says the
+name, the headline the kind; ``mass`` is None for a printed tool (its mass is below)."""
+
+
+def _tool_sizes(dims: Any, spec: Any) -> dict[str, Any]:
+    """One table of a created tool's sizes: its dimensions (the created tool's ``dims``,
+    then what its JSON spec adds, such as the grip offset), lengths (the JSON's floats,
+    in metres) in millimetres and angles in degrees as the print tables write them,
+    counts as they are; nothing twice."""
+    out: dict[str, str] = {}
+    for source in (dims, spec):
+        if not isinstance(source, dict):
+            continue
+        for key, value in source.items():
+            name = str(key).removesuffix("_deg").replace("_", " ")
+            if key in _SPEC_HIDDEN or name in out or value is None:
+                continue
+            if isinstance(value, bool) or not isinstance(value, (int, float)):
+                out[name] = value
+            elif str(key).endswith("_deg"):
+                out[name] = f"{value:g} deg"
+            elif isinstance(value, float):  # a length of the run's JSON, in metres
+                out[name] = f"{value * 1000:.1f} mm"
+            else:  # a count
+                out[name] = str(value)
+    return out
+
+
+def _tool_physical(manifest: dict[str, Any]) -> dict[str, str]:
+    """A created tool's mass, volume and printability in words and print units (g,
+    cm³, mm), from its JSON manifest; the keys it leaves empty are not shown."""
+    out: dict[str, str] = {}
+    mass = manifest.get("mass_kg")
+    if isinstance(mass, (int, float)) and not isinstance(mass, bool):
+        out["mass"] = f"{mass * 1000:.1f} g (PLA)"
+    for key, label in (("mesh_volume_m3", "volume (mesh)"),
+                       ("spec_volume_m3", "volume (specification)")):
+        v = manifest.get(key)
+        if isinstance(v, (int, float)) and not isinstance(v, bool):
+            out[label] = f"{v * 1e6:.2f} cm³"
+    printability = manifest.get("printability")
+    if isinstance(printability, dict):
+        extent = printability.get("extent")
+        if isinstance(extent, list):
+            out["size"] = " x ".join(f"{float(x) * 1000:.1f}" for x in extent
+                                     if isinstance(x, (int, float))) + " mm"
+        for key, value in printability.items():
+            if key == "extent" or value in (None, "", [], {}):
+                continue
+            label = str(key).replace("_", " ")
+            if isinstance(value, bool):
+                out[label] = "yes" if value else "no"
+            elif str(key).endswith("_deg") and isinstance(value, (int, float)):
+                out[label.removesuffix(" deg")] = f"{value:g} deg"
+            else:
+                out[label] = str(value)
+    return out
 
 
 def _with_unit(key: str, value: Any, default: str = "") -> Any:

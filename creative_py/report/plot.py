@@ -87,13 +87,13 @@ def plot_trials(trials: Trials, path: Path, title: str = "") -> Path:
 
 
 def trial_labels(trials: Trials) -> list[str]:
-    """Return each trial's label in the plot: phase tag, trial number in its phase and
-    the literal it tested (``TUL 2  hook_down(hook_a2)``; the model's trials test none)."""
+    """Return each trial's label in the plot: its number in the run, phase tag and the
+    literal it tested (``#2 TUL  hook_down(hook_a2)``; the model's trials test none)."""
     out = []
     for i, t in enumerate((as_record(t) for t in trials), start=1):
         tag = {"use": "TUL", "create": "TC", "eval": "EV"}.get(t.phase, t.phase)
         tested = ", ".join(t.tested)
-        out.append(f"{tag} {t.phase_trial or i}" + (f"  {tested}" if tested else ""))
+        out.append(f"#{t.trial or i} {tag}" + (f"  {tested}" if tested else ""))
     return out
 
 

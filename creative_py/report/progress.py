@@ -26,8 +26,8 @@ PHASE_NAMES = {"DEMO": "demonstration", "TUL": "tool-use learning", "EVAL": "eva
 """The progress lines' phase tags (:data:`creative_py.learning.trials.PHASE_TAGS`), in
 words."""
 
-_TRIAL = re.compile(r"^(DEMO|TUL|TC|EVAL)\s+(\d+)\s+(\S+)\s+loc\s+(\S+)\s+(\w+)")
-"""A trial's progress line: tag, number in the phase, tool, location, outcome."""
+_TRIAL = re.compile(r"^#(\d+)\s+(DEMO|TUL|TC|EVAL)\s+(\S+)\s+loc\s+(\S+)\s+(\w+)")
+"""A trial's progress line: its number in the run, tag, tool, location, outcome."""
 
 _DOING = (("demonstration", "demonstration"), ("manufacturing", "tool creation"),
           ("TC catalogue", "tool creation"), ("TC predicted", "tool creation"),
@@ -87,7 +87,7 @@ class RunProgress:
         """Update the status line from one progress line and print the line whole."""
         match = _TRIAL.match(message)
         if match:
-            tag, k, tool, _, outcome = match.groups()
+            k, tag, tool, _, outcome = match.groups()
             self.phase, self.trial = PHASE_NAMES[tag], int(k)
             self.last, self.doing = f"{tool} {outcome}", ""
         else:

@@ -27,13 +27,13 @@ def trial_table(run: RunContents) -> Table:
     table = Table(title=str(run.path), title_justify="left")
     for header, _ in run.columns:
         table.add_column(header, overflow="fold",
-                         justify="right" if header in ("#", "n", "loc") else "left")
+                         justify="right" if header in ("#", "loc") else "left")
     for t in run.trials:
         table.add_row(*(cell(t) for _, cell in run.columns))
     return table
 
 
-_HEAD_FIELDS = ("#", "phase", "n", "tool", "variant", "loc", "outcome")
+_HEAD_FIELDS = ("#", "phase", "tool", "variant", "loc", "outcome")
 """The short columns: the head line of a trial in the narrow layout; every other column
 (pose, tested, violated, reason, ...) has a line of its own."""
 
@@ -48,7 +48,7 @@ def trial_blocks(run: RunContents) -> Group:
     blocks = []
     for t in run.trials:
         outcome = cells["outcome"](t)
-        head = Text(f"{cells['#'](t):>3}  {cells['phase'](t)} {cells['n'](t)}  "
+        head = Text(f"{cells['#'](t):>3}  {cells['phase'](t)}  "
                     f"{cells['tool'](t)}  {cells['variant'](t)}  loc {cells['loc'](t)}  ")
         head.append(outcome, style=_OUTCOME_STYLE.get(outcome, "bold"))
         grid = Table.grid(padding=(0, 1))

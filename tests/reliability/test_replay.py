@@ -159,3 +159,51 @@ def test_a_resumed_run_keeps_the_replayed_clips_entries(finished, tmp_path):
         assert v["duration_s"] == kept[v["file"]]["duration_s"], v
     # The replayed trials' records are the recorded ones, timings included.
     assert (run / "trials.jsonl").read_text().splitlines()[:3] == lines[:3]
+
+
+RESUME_WRITES = ("model.pl", "domain.pddl", "problem.pddl", ".lock")
+"""What a resume writes again, the same text, before its evaluation trials replay (the
+learned model and its PDDL; the lock)."""
+
+
+@pytest.mark.sim
+def test_an_edited_evaluation_outcome_is_refused_with_its_line_number(finished, tmp_path):
+    # Issue 25: evaluation trials are not labelled (no h_s/h_g to disagree with); the
+    # physics runs them again on resume and contradicts the edited record. Before the
+    # fix the resume accepted it (exit 0, the summary said 0 of 1).
+    run = _copy(finished, tmp_path / "edited-eval")
+    lines = (run / "trials.jsonl").read_text().splitlines()
+    n, record = next((i, json.loads(line)) for i, line in enumerate(lines, 1)
+                     if json.loads(line)["phase"] == "eval")
+    record["outcome"] = "failure" if record["outcome"] == "success" else "success"
+    lines[n - 1] = json.dumps(record)
+    (run / "trials.jsonl").write_text("\n".join(lines) + "\n")
+    before = tree_digest(run)
+    line = one_error_line(run_cli("run", "rake", "--resume", str(run), timeout=300))
+    assert line.startswith(f"error: {run}/trials.jsonl: line {n}: field 'outcome' is "
+                           f"{record['outcome']!r}, but the physics gives "), line
+    assert line.endswith("the record was changed, the run cannot be resumed"), line
+    after = tree_digest(run)
+    for name in RESUME_WRITES:
+        before.pop(name, None), after.pop(name, None)
+    assert after == before
+
+
+@pytest.mark.sim
+def test_a_clip_missing_after_a_kill_is_rendered_again_on_resume(finished, tmp_path):
+    # Issue 25: a clip whose process was killed with the run was listed in
+    # videos/clips.jsonl, dropped from summary.json, and nothing said so. Its trial is
+    # run again in the physics on resume and the clip rendered.
+    run = _copy(finished, tmp_path / "lost-clip")
+    before = json.loads((run / "summary.json").read_text())
+    lost = before["videos"][-1]["file"]
+    (run / lost).unlink()
+    (run / "summary.json").unlink()
+    proc = run_cli("run", "rake", "--resume", str(run))
+    assert proc.returncode == 0, proc.stderr[-2000:]
+    assert (run / lost).is_file()
+    after = json.loads((run / "summary.json").read_text())
+    assert [v["file"] for v in after["videos"]] == [v["file"] for v in before["videos"]]
+    trial = int(Path(lost).name[:3])
+    assert (f"#{trial}: its clip was missing; the trial was run again and the clip "
+            f"rendered ({lost})") in proc.stderr

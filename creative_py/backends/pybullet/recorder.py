@@ -283,7 +283,8 @@ class Recorder:
             code = 0
         except BaseException as exc:  # the child must never return into the run
             try:
-                os.write(2, f"warning: video clip not written: {exc}\n".encode())
+                os.write(2, f"warning: video clip not written: "
+                            f"{exc or type(exc).__name__}\n".encode())
             except OSError:
                 pass
         finally:

@@ -200,7 +200,7 @@ def test_a_clip_written_here_is_the_trial_s_frames_under_its_caption(tmp_path, f
     assert entry == want and keeper.entries == [entry] and keeper.children == {}
     assert rec.times == pytest.approx([0.0, 35 / 240, 0.2]) and len(rec.frames) == 3
     assert _captioned_as(clip, rec.frames, [
-        "#3 TUL 2  hook_a1  loc 1", "tested handle_length(hook_a1,medium)",
+        "#3 TUL  hook_a1  loc 1", "tested handle_length(hook_a1,medium)",
         "blocked: lag 3.1 cm", "stopped: gripper lag 0.031 m", "moved 1.1 cm"],
         rec.times) == 0
     assert (tmp_path / "videos" / "clips.jsonl").read_text() == json.dumps(
@@ -220,12 +220,12 @@ def test_a_clip_without_location_reason_or_test_is_captioned_so(tmp_path, film):
     assert (entry["file"], entry["tested"], entry["verdict"], entry["why"]) == (
         "videos/000-demo-hook_a2.mp4", [], "", "demonstration")
     assert _captioned_as(tmp_path / entry["file"], rec.frames,
-                         ["#0 DEMO 0  hook_a2", "tested -", "success"], rec.times) == 0
+                         ["#0 DEMO  hook_a2", "tested -", "success"], rec.times) == 0
     rec = film(keeper.recorder())
     entry = keeper.write(rec, "trial", 12, "walk", 1, "hook_a2", ["a", "b"], "success",
                          "", location=2)
     assert _captioned_as(tmp_path / entry["file"], rec.frames,
-                         ["#12 walk 1  hook_a2  loc 2", "tested a, b", "success"],
+                         ["#12 walk  hook_a2  loc 2", "tested a, b", "success"],
                          rec.times) == 0
     assert [json.loads(line)["file"] for line in
             (tmp_path / "videos" / "clips.jsonl").read_text().splitlines()] == [
@@ -271,7 +271,8 @@ def test_a_clip_that_fails_in_the_background_is_dropped_with_a_warning(tmp_path,
     assert keeper.finish() == [] == keeper.entries
     assert [(r.name, r.levelname, r.getMessage()) for r in caplog.records] == [
         ("creative_py.learning.clips", "WARNING",
-         "videos/001-use-hook_a1.mp4: the clip was not written")]
+         "videos/001-use-hook_a1.mp4: the clip was not written: its process failed "
+         "(the line above says why)")]
 
 
 def _earlier(run_dir, *files):
@@ -364,3 +365,37 @@ def test_an_entry_is_noted_in_a_run_folder_not_made_yet(tmp_path):
     keeper._note({"file": "videos/001-use-a.mp4", "trial": 1, "bytes": 10})
     assert (tmp_path / "runs" / "run1" / "videos" / "clips.jsonl").read_text() == (
         '{"file": "videos/001-use-a.mp4", "trial": 1}\n')
+
+
+def test_a_long_caption_line_is_wrapped_not_cut():
+    # Issue 25: clip captions were cut with "..." ("blocked: position_tool: gripper
+    # lagged its target b...").
+    from PIL import Image, ImageDraw
+
+    from creative_py.video import LINE_PX, Captioner, _font, band_height
+
+    long = ("blocked: position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, "
+            "-0.052) m: something is in the way")
+    draw = Captioner(320, 48, ["#1 TUL  hook_a1  loc 1", long])
+    assert draw.lines[0] == "#1 TUL  hook_a1  loc 1"
+    assert " ".join(draw.lines[1:]) == long and len(draw.lines) >= 3
+    assert not any(line.endswith("...") for line in draw.lines)
+    probe = ImageDraw.Draw(Image.new("L", (1, 1)))
+    assert all(probe.textlength(line, font=_font(LINE_PX)) <= 312 for line in draw.lines)
+    assert draw.band == band_height(len(draw.lines))
+
+
+def test_a_clip_has_a_poster_of_its_last_frame(tmp_path):
+    # Issue 25: the report's clips all showed frame 0 (t = 0.0 s, before anything
+    # happened); the poster is the last frame, the scene at the verdict, captioned.
+    from creative_py.video import Captioner, poster_name, write_clip
+
+    frames = [np.full((48, 320, 3), 40 * i, np.uint8) for i in range(4)]
+    path = tmp_path / "videos" / "003-use-hook_a1.mp4"
+    write_clip(path, frames, 5.0, ["#3 TUL  hook_a1  loc 1"], [0.0, 0.2, 0.4, 0.6])
+    poster = Path(poster_name(str(path)))
+    assert poster == tmp_path / "videos" / "003-use-hook_a1.poster.jpg"
+    image = np.asarray(imageio.imread(poster)).astype(int)
+    expected = Captioner(320, 48, ["#3 TUL  hook_a1  loc 1"])(frames[-1], "t = 0.6 s")
+    assert image.shape == expected.shape
+    assert np.abs(image - expected.astype(int)).mean() < 3   # JPEG's error only

@@ -55,14 +55,17 @@ TRY_A4 = ("TC catalogue: trying hook_a4, catalogued object admitted by any_lengt
           "(the generalised handle_length(_G0,medium)): handle_length(hook_a4,long)")
 
 
-def _tc(n, tool):
-    return f"TC   {n:2d}  {tool:<14} loc 1  success     tested -  (replayed)"
+def _tc(n, tool, before=LEARNED):
+    """The line of creation trial ``n``, numbered in the run (after ``before`` trials)."""
+    return f"#{before + n:<3} TC   {tool:<14} loc 1  success     tested -  (replayed)"
 
 
-def _evals(tool, start=2):
+def _evals(tool, start=2, after=1, before=LEARNED):
+    """The lines of the created tool's 5 evaluation trials, after ``after`` creation
+    trials."""
     locs = [(start - 1 + i) % 4 + 1 for i in range(5)]
-    return [f"EVAL {i:2d}  {tool:<14} loc {loc}  success     tested -  (replayed)"
-            for i, loc in enumerate(locs, 1)]
+    return [f"#{before + after + i:<3} EVAL {tool:<14} loc {loc}  success     tested -  "
+            "(replayed)" for i, loc in enumerate(locs, 1)]
 
 
 @pytest.fixture(scope="module")
@@ -198,7 +201,7 @@ def test_a_catalogued_object_first_then_a_tool_as_a_demonstration(engine, world,
                      "TC catalogue: hook_a4 solved the long_tube task; a tool is created "
                      "as a demonstration", MAKE_1, CREATED_1, _tc(2, "hook_new1"),
                      "hook_new1: strength pass (cantilever, 0.90 N, 4.08 MPa, "
-                     "safety factor 12.26)", *_evals("hook_new1")]
+                     "safety factor 12.26)", *_evals("hook_new1", after=2)]
 
 
 def test_a_tool_too_weak_is_thickened(engine, world, vs, tmp_path):
@@ -212,7 +215,7 @@ def test_a_tool_too_weak_is_thickened(engine, world, vs, tmp_path):
                      "'hook_length': 0.03, 'hook_width': 0.012, 'hook_angle_deg': 90, "
                      "'hook_side': 'right'}", _tc(2, "hook_new2"),
                      "hook_new2: strength pass (cantilever, 0.87 N, 2.22 MPa, "
-                     "safety factor 22.51)", *_evals("hook_new2")]
+                     "safety factor 22.51)", *_evals("hook_new2", after=2)]
 
 
 def test_a_tool_that_cannot_be_made_strong_enough_is_rejected(engine, world, vs, tmp_path):
@@ -341,7 +344,7 @@ def test_the_resumed_hook_run_creates_its_tool_again(request):
         PREDICTED, MAKE_1, CREATED_1, _tc(1, "hook_new1"),
         "hook_new1: strength pass (cantilever, 0.91 N, 4.10 MPa, safety factor 12.21)",
         *_evals("hook_new1")]
-    assert resumed_hook.lines[start - 1] == "EVAL  4  hook_a2        loc 4  success     " \
+    assert resumed_hook.lines[start - 1] == "#13  EVAL hook_a2        loc 4  success     " \
                                             "tested -  (replayed)"
     assert resumed_hook.lines[start + 10].startswith("plan (long_tube, created model): ")
 
@@ -359,13 +362,13 @@ def test_the_learned_tool_fails_first_where_the_geometry_cannot_tell(engine, tmp
     assert lines == [
         "TC predicted: wedge_a2: the case's geometry sets no reach: the pose model cannot "
         "tell whether wedge_a2 works in the big_door task; the physics decides",
-        "TC    1  wedge_a2       loc 1  failure     tested -  (replayed)", MAKE_1,
+        "#13  TC   wedge_a2       loc 1  failure     tested -  (replayed)", MAKE_1,
         "created wedge_new1: block_length(A,medium) -> any_block_length(A) -> "
         "block_length(A,long); length 160.0 mm, width 85.0 mm, height 27.5 mm, "
         "tip_height 2.4 mm, shape triangular_prism",
-        "TC    2  wedge_new1     loc 1  success     tested -  (replayed)",
+        "#14  TC   wedge_new1     loc 1  success     tested -  (replayed)",
         "wedge_new1: strength pass (compression, 802.12 N, 0.06 MPa, safety factor 847.75)",
-        *[f"EVAL {i:2d}  wedge_new1     loc 1  success     tested -  (replayed)"
+        *[f"#{14 + i:<3} EVAL wedge_new1     loc 1  success     tested -  (replayed)"
           for i in range(1, 6)]]
 
 
@@ -471,8 +474,8 @@ def test_a_catalogued_object_after_the_learned_tool_failed(engine, tmp_path):
     assert lines == [
         "TC predicted: wedge_a2: the case's geometry sets no reach: the pose model cannot "
         "tell whether wedge_a2 works in the big_door task; the physics decides",
-        "TC    1  wedge_a2       loc 1  failure     tested -  (replayed)",
+        "#13  TC   wedge_a2       loc 1  failure     tested -  (replayed)",
         "TC catalogue: trying wedge_a3, catalogued object admitted by any_block_length(_G0) "
         "(the generalised block_length(_G0,medium)): block_length(wedge_a3,long)",
-        "TC    2  wedge_a3       loc 1  success     tested -  (replayed)",
+        "#14  TC   wedge_a3       loc 1  success     tested -  (replayed)",
         "TC catalogue: wedge_a3 solved the big_door task; no tool is made"]

@@ -30,7 +30,7 @@ from creative_py.learning.pddl_files import check_pddl, created_pddl, plan_steps
 from creative_py.learning.phases import _relative, case_facts, creation_summary
 from creative_py.learning.run import (_checked_world, _earlier_summary, _finish, _open_folder,
                                       _trial_runner, resume_run, run_case)
-from creative_py.records.summary import RunSummary, WallTimes
+from creative_py.records.summary import Resumed, RunSummary, WallTimes
 from creative_py.learning.trials import TrialRunner
 from creative_py.mesh.slicer import SliceError
 from creative_py.records.folder import RunFolder, read_resume
@@ -44,27 +44,27 @@ resuming {run}: replaying 19 recorded trials
 run folder {run}
 demonstration: the trainer shows the task with hook_a2 (loc 1)
 demonstration with hook_a2: new model pull_out; 16384 hypotheses
-TUL   1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)
-TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)
-TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)
-TUL   4  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)
-TUL   5  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)
-TUL   6  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)
-TUL   7  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)
-TUL   8  hook_a2        loc 3  success     tested -  (replayed)
-TUL   9  hook_a2        loc 4  success     tested -  (replayed)
-h_s: tool_pose(_G3,_G4,_G5) :- hook(_G3), hook_like(_G3), tool(_G3), \
-handle_length(_G3,medium), handle_width(_G3,thin), hook_angle(_G3,right), hook_down(_G3), \
-behind(_G3,_G4), centred_on(_G3,_G4), in_tube(_G3,_G5), in_tube(_G4,_G5)
-h_g: tool_pose(_G3,_G4,_G5) :- handle_length(_G3,medium), hook_down(_G3), \
-behind(_G3,_G4), centred_on(_G3,_G4), hook(_G3)
+#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)
+#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)
+#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)
+#4   TUL  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)
+#5   TUL  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)
+#6   TUL  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)
+#7   TUL  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)
+#8   TUL  hook_a2        loc 3  success     tested -  (replayed)
+#9   TUL  hook_a2        loc 4  success     tested -  (replayed)
+h_s: tool_pose(A,B,C) :- hook(A), hook_like(A), tool(A), \
+handle_length(A,medium), handle_width(A,thin), hook_angle(A,right), hook_down(A), \
+behind(A,B), centred_on(A,B), in_tube(A,C), in_tube(B,C)
+h_g: tool_pose(A,B,C) :- handle_length(A,medium), hook_down(A), \
+behind(A,B), centred_on(A,B), hook(A)
 plan: plan([pick_up(hook_a2),position_tool(hook_a2,cube1,tube1),pull_out(hook_a2,cube1,tube1)])
 pddl problem.pddl: solved by pyperplan (pick_up hook_a2) (position_tool hook_a2 cube1 tube1) \
 (pull_out hook_a2 cube1 tube1) (equals Prolog's)
-EVAL  1  hook_a2        loc 1  success     tested -  (replayed)
-EVAL  2  hook_a2        loc 2  success     tested -  (replayed)
-EVAL  3  hook_a2        loc 3  success     tested -  (replayed)
-EVAL  4  hook_a2        loc 4  success     tested -  (replayed)
+#10  EVAL hook_a2        loc 1  success     tested -  (replayed)
+#11  EVAL hook_a2        loc 2  success     tested -  (replayed)
+#12  EVAL hook_a2        loc 3  success     tested -  (replayed)
+#13  EVAL hook_a2        loc 4  success     tested -  (replayed)
 TC predicted: hook_a2: behind(hook_a2,cube1) cannot hold within the reach of hook_a2 in \
 the long_tube task: dx_reach = -0.011 m (deepest prong centre the held tool reaches, minus \
 the cube centre); the trial would fail, so none is run
@@ -72,18 +72,29 @@ manufacturing tool 1: meshing, splitting to the build volume and slicing its pie
 created hook_new1: handle_length(A,medium) -> any_length(A) -> handle_length(A,long); \
 handle_length 600.0 mm, handle_width 9.0 mm, hook_length 30.0 mm, hook_width 12.0 mm, \
 hook_angle_deg 90, hook_side right
-TC    1  hook_new1      loc 1  success     tested -  (replayed)
+#14  TC   hook_new1      loc 1  success     tested -  (replayed)
 hook_new1: strength pass (cantilever, 0.91 N, 4.10 MPa, safety factor 12.21)
-EVAL  1  hook_new1      loc 2  success     tested -  (replayed)
-EVAL  2  hook_new1      loc 3  success     tested -  (replayed)
-EVAL  3  hook_new1      loc 4  success     tested -  (replayed)
-EVAL  4  hook_new1      loc 1  success     tested -  (replayed)
-EVAL  5  hook_new1      loc 2  success     tested -  (replayed)
+#15  EVAL hook_new1      loc 2  success     tested -  (replayed)
+#16  EVAL hook_new1      loc 3  success     tested -  (replayed)
+#17  EVAL hook_new1      loc 4  success     tested -  (replayed)
+#18  EVAL hook_new1      loc 1  success     tested -  (replayed)
+#19  EVAL hook_new1      loc 2  success     tested -  (replayed)
 plan (long_tube, created model): \
 plan([pick_up(hook_a4),position_tool(hook_a4,cube1,tube1),pull_out(hook_a4,cube1,tube1)])
 pddl problem_long_tube.pddl: solved by pyperplan (pick_up hook_a4) \
 (position_tool hook_a4 cube1 tube1) (pull_out hook_a4 cube1 tube1) (equals Prolog's)
-done in 20.54 s: {run}"""
+done in 20.54 s: {run}
+One demonstration, with hook_a2.
+Tool-use learning: 9 trials of a budget of 12 (4 succeeded); stopped because the learned \
+model succeeded the required times in a row; converged after 7 trials; the paper's robot \
+used 12.
+Evaluation of the learned model on the task it learned: 4 of 4 trials succeeded.
+Tool creation on the harder task long_tube: hook_a2 was predicted to fail, so its trial \
+was not run; no catalogued object tried; solved by the created hook_new1 after 1 creation \
+trial; the created tool's evaluation: 5 of 5 trials succeeded.
+Printing hook_new1: 3 pieces, 4 h 04 min of printing, 65.1 g of filament (21.8 m); mass \
+64.3 g.
+report: {run}/report.html"""
 
 MODEL = """\
 %   Learned by CREATIVE-py, case hook.
@@ -572,7 +583,8 @@ def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
     assert seen == [f"run folder {tmp_path / 'stopped'}",
                     "demonstration: the trainer shows the task with hook_a2 (loc 1)",
                     {"case": "hook", "options": asdict(options), "world": None,
-                     "drawn_world": None}]
+                     "drawn_world": None},
+                    "interrupted before the first trial: nothing was kept"]
     assert list(tmp_path.iterdir()) == []
 
 
@@ -691,6 +703,26 @@ def test_checked_world_asks_for_a_display_under_gui(monkeypatch):
 
 # ---------------------------------------------------------------- the run's steps
 
+def test_a_new_run_names_the_interrupted_run_of_its_case_and_seed(tmp_path, hook_world):
+    # Issue 25: running again without --resume started a new folder and said nothing
+    # of the interrupted one.
+    for name, finished in (("hook-20260101-000000-s3", False),
+                           ("hook-20260102-000000-s3", True),
+                           ("hook-20260103-000000-s4", False)):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "run.json").write_text("{}")
+        if finished:
+            (tmp_path / name / "summary.json").write_text("{}")
+    said = []
+    run = _open_folder(tmp_path, "hook", RunOptions(seed=3), None, None, "new", None,
+                       said.append)[0]
+    run.release()
+    old = tmp_path / "hook-20260101-000000-s3"
+    assert said == [f"run folder {tmp_path / 'new'}",
+                    f"a new run; the interrupted run {old} of this case and seed can go "
+                    f"on with: creative run hook --resume {old}"]
+
+
 def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):
     folder = tmp_path / "hook_s0"
     shutil.copytree(RECORDED, folder)
@@ -700,13 +732,16 @@ def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):
         said = []
         got = _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
                            (run, trials, lines), said.append)
-        assert got == (run, trials, lines, RunSummary.read(RECORDED / "summary.json"))
+        earlier = round((folder / "trials.jsonl").stat().st_mtime
+                        - (folder / "run.json").stat().st_mtime, 2)
+        assert got == (run, trials, lines, RunSummary.read(RECORDED / "summary.json"),
+                       Resumed(replayed=19, earlier_wall_time_s=max(0.0, earlier)))
         assert (run.sealed, run.trials) == (True, trials)
         assert said == [f"resuming {folder}: replaying 19 recorded trials",
                         f"run folder {folder}"]
         (folder / "summary.json").unlink()
         assert _open_folder(tmp_path, "hook", RunOptions(), None, None, None,
-                            (run, [], []), said.append) == (run, [], [], None)
+                            (run, [], []), said.append)[:4] == (run, [], [], None)
         assert (run.sealed, run.trials) == (False, [])
         assert said[2:] == [f"resuming {folder}: replaying 0 recorded trials",
                             f"run folder {folder}"]
@@ -718,9 +753,10 @@ def test_open_folder_of_a_new_run_writes_run_json(tmp_path, hook_world):
     options = RunOptions(seed=3, world_seed=2)
     drawn = {"seed": 2}
     said = []
-    run, replay, lines, before = _open_folder(tmp_path, "hook", options,
-                                              hook_world[1].manifest.folder, drawn,
-                                              "new", None, said.append)
+    run, replay, lines, before, resumed = _open_folder(tmp_path, "hook", options,
+                                                       hook_world[1].manifest.folder,
+                                                       drawn, "new", None, said.append)
+    assert resumed is None
     try:
         assert (run.path, replay, lines, before, run.sealed) == (
             tmp_path / "new", [], [], None, False)
@@ -781,7 +817,9 @@ def test_finish_writes_the_summary_plot_and_report(tmp_path, hook_world):
                            "videos": []}
         assert list(written) == list(RunSummary().to_dict())  # every key, in order
         assert summary == RunSummary.read(run.path)
-        assert said == [f"done in {total} s: {run.path}"]
+        # Issue 25: the run ends with its headline and the report's path (before: the
+        # "done in" line alone).
+        assert said == [f"done in {total} s: {run.path}", f"report: {run.path}/report.html"]
         assert (run.path / "report.html").read_text().startswith("<!DOCTYPE html>")
         plot_trials([], tmp_path / "expected.png",
                     title="CREATIVE-py, hook case, seed 7")
@@ -791,6 +829,6 @@ def test_finish_writes_the_summary_plot_and_report(tmp_path, hook_world):
                                        "case": "x"})
         again = _finish(runner, clips, {}, {}, 0.0, said.append, before)
         assert again.wall_time_s.to_dict() == {"use": 1.0, "total": 9.99}
-        assert said[1:] == [f"done in 9.99 s: {run.path}"]
+        assert said[2:] == [f"done in 9.99 s: {run.path}", f"report: {run.path}/report.html"]
     finally:
         run.release()

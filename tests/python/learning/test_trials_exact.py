@@ -55,19 +55,19 @@ EXP1 = ("experiment(hook_a1,handle_length(hook_a1,medium),[handle_length(hook_a1
         "centred_on(hook_a1,cube1),in_tube(hook_a1,tube1)],[])")
 
 USE_LINES = [
-    "TUL   1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)",
-    "TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)",
-    "TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)",
-    "TUL   4  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)",
-    "TUL   5  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)",
-    "TUL   6  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)",
-    "TUL   7  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)",
-    "TUL   8  hook_a2        loc 3  success     tested -  (replayed)",
-    "TUL   9  hook_a2        loc 4  success     tested -  (replayed)",
+    "#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)",
+    "#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)",
+    "#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)",
+    "#4   TUL  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)",
+    "#5   TUL  hook_a3        loc 1  success     tested hook_length(hook_a3,long)  (replayed)",
+    "#6   TUL  hook_b2        loc 2  success     tested hook_width(hook_b2,wide)  (replayed)",
+    "#7   TUL  stick_a5       loc 3  failure     tested hook(stick_a5)  (replayed)",
+    "#8   TUL  hook_a2        loc 3  success     tested -  (replayed)",
+    "#9   TUL  hook_a2        loc 4  success     tested -  (replayed)",
 ]
 
-TRIAL2_LINE = ("TUL   2  hook_a2        loc 1  failure     tested hook_down(hook_a2)  "
-               "[cube1 centre x 1.1313 m, needs < 0.8500; moved 3.7 cm]")
+TRIAL2_LINE = ("#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  "
+               "[cube1 centre x 1.1313 m, needs < 0.8500 m; moved 3.7 cm]")
 
 NOT_RESUMED = "the run cannot be resumed with this code or these files"
 
@@ -308,6 +308,12 @@ def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
     (run.path / "trials.jsonl").write_text((RECORDED / "trials.jsonl").read_text())
     use = hook.records[:9]
     run.seal(use)
+    # The interrupted run wrote its clips (a missing one would be rendered again by
+    # running its trial in the physics: test_replay.py).
+    for rec in use:
+        clip = run.path / ClipKeeper.file_name(rec.trial, rec.phase, rec.tool)
+        clip.parent.mkdir(exist_ok=True)
+        clip.write_bytes(b"mp4")
     clips = ClipKeeper("key", run.path, hook.world.video, background=False,
                        new_recorder=recorder)
     clips.held = True
@@ -328,9 +334,11 @@ def test_the_use_phase_replays_its_records_and_lines(hook, tmp_path):
     assert runner.physical == 0
     # Nothing was written while replaying; the clip keeper saw every trial.
     assert run.sealed and clips.held
-    assert sorted(p.name for p in run.path.rglob("*")) == [".lock", "snapshots",
-                                                          "trials.jsonl"]
-    assert clips.entries == [] and clips.succeeded
+    assert sorted(p.name for p in run.path.rglob("*") if p.suffix != ".mp4") == [
+        ".lock", "snapshots", "trials.jsonl", "videos"]
+    assert [e["file"] for e in clips.entries] == [
+        ClipKeeper.file_name(r.trial, r.phase, r.tool) for r in use
+        if r.trial in (1, 2, 5)] and clips.succeeded
     assert clips.seen == {
         "blocked: position_tool: gripper lagged its target by N cm at (N, N, N) m: "
         "something is in the way", "failure: goal not reached"}
@@ -355,10 +363,10 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
         dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
     assert lines == [
-        "EVAL  1  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
-        "[stopped: gripper lag 0.0301 m, needs <= 0.0300; touching hook_a1 against cube1, "
+        "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
+        "[stopped: gripper lag 0.0301 m, needs <= 0.0300 m; touching hook_a1 against cube1, "
         "hook_a1 against tube1, robot against riser1, robot against tube1; cube1 centre x "
-        "1.0985 m, needs < 0.8500; moved 1.1 cm]"]
+        "1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
@@ -366,6 +374,8 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     run = RunFolder.create(tmp_path, "hook", 0, "run")
     one, two = hook.records[:2]
     (run.path / "trials.jsonl").write_text(one.to_json() + "\n")
+    (run.path / "videos").mkdir()
+    (run.path / "videos" / "001-use-hook_a1.mp4").write_bytes(b"mp4")  # written before
     run.seal([one])
     camera = dataclasses.replace(hook.world.video.camera, width=320, height=60)
     clips = ClipKeeper("key", run.path, dataclasses.replace(hook.world.video, camera=camera),
@@ -394,12 +404,13 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
         "00_after_pick_up_top.png", "01_after_position_tool_top.png",
         "02_after_pull_top.png"]
     assert not run.sealed and not clips.held
-    entries = clips.finish()
+    replayed, *entries = clips.finish()
+    assert replayed["file"] == "videos/001-use-hook_a1.mp4"  # the earlier run's file
     size = (run.path / "videos" / "002-use-hook_a2.mp4").stat().st_size
     assert entries == [{
         "file": "videos/002-use-hook_a2.mp4", "phase": "use", "trial": 2, "tool": "hook_a2",
         "tested": ["hook_down(hook_a2)"], "outcome": "failure", "reason": "goal not reached",
-        "verdict": "cube1 centre x 1.1313 m, needs < 0.8500; moved 3.7 cm",
+        "verdict": "cube1 centre x 1.1313 m, needs < 0.8500 m; moved 3.7 cm",
         "why": "failure:failure: goal not reached", "frames": 42,
         "duration_s": 8.4, "bytes": size}]
     assert json.loads((run.path / "videos" / "clips.jsonl").read_text()) == {
@@ -407,9 +418,9 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     # The caption above the picture, the first frame's simulated time at its right.
     with imageio.get_reader(str(run.path / entries[0]["file"])) as reader:
         first = np.asarray(reader.get_data(0)).astype(int).mean(axis=2)
-    draw = Captioner(320, 60, ["#2 TUL 2  hook_a2  loc 1", "tested hook_down(hook_a2)",
+    draw = Captioner(320, 60, ["#2 TUL  hook_a2  loc 1", "tested hook_down(hook_a2)",
                                 "failure: goal not reached", "cube1 centre x 1.1313 m, "
-                                "needs < 0.8500", "moved 3.7 cm"])
+                                "needs < 0.8500 m", "moved 3.7 cm"])
     band = draw(np.zeros((60, 320, 3), np.uint8), "t = 0.0 s")[:draw.band]
     assert first.shape == (60 + draw.band, 320)
     assert int((np.abs(band.astype(int).mean(axis=2) - first[:draw.band]) > 100).sum()) == 0

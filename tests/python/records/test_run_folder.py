@@ -75,5 +75,5 @@ def test_plot_labels_name_the_tested_literal():
                                        "centred_on(hook_a2,cube1)"], start=2)]
     trials.append(_trial(5, phase="eval"))
     labels = trial_labels(trials)
-    assert labels == ["TUL 2  hook_down(hook_a2)", "TUL 3  behind(hook_a2,cube1)",
-                      "TUL 4  centred_on(hook_a2,cube1)", "EV 5"]
+    assert labels == ["#2 TUL  hook_down(hook_a2)", "#3 TUL  behind(hook_a2,cube1)",
+                      "#4 TUL  centred_on(hook_a2,cube1)", "#5 EV"]

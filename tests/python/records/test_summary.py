@@ -208,3 +208,21 @@ def test_pddl_checks_and_hypotheses():
     checks = PddlChecks(use=error)
     assert checks.tasks() == [("use", error)] and "create" not in checks.to_dict()
     assert Hypotheses(hs="a").to_dict() == {"hs": "a", "hg": None}
+
+
+def test_resumed_is_one_typed_field_absent_from_runs_never_resumed():
+    # Issue 25: a resumed run's summary says so; an older summary (and a run never
+    # resumed) has no such key and loads as before.
+    from creative_py.records.summary import Resumed
+
+    old = RunSummary.from_dict({"case": "hook"})
+    assert old.resumed is None and "resumed" not in old.to_dict()
+    assert "resumed" not in RunSummary(case="hook").to_dict()
+    data = {"case": "hook", "resumed": {"replayed": 12, "earlier_wall_time_s": 8.65,
+                                        "total_wall_time_s": 25.63}}
+    new = RunSummary.from_dict(data)
+    assert new.resumed == Resumed(replayed=12, earlier_wall_time_s=8.65,
+                                  total_wall_time_s=25.63)
+    assert new.to_dict() == data
+    with pytest.raises(ValueError, match="field 'resumed.replayed': 'x' is not of type int"):
+        RunSummary.from_dict({"resumed": {"replayed": "x"}})

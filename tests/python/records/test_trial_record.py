@@ -184,8 +184,8 @@ def test_the_reason_cell_and_the_short_lines_carry_the_measured_verdict():
     assert reason_text(rec) == ("position_tool: gripper lagged -- stopped: "
                                 f"{stop.text()} | {oracle.text()}")
     assert verdict_lines(rec.verdict) == [
-        "stopped: gripper lag 0.0320 m, needs <= 0.0300", "touching robot against base1",
-        "box1 centre x 1.0700 m, needs < 0.8500", "moved 0.0 cm"]
+        "stopped: gripper lag 0.0320 m, needs <= 0.0300 m", "touching robot against base1",
+        "box1 centre x 1.0700 m, needs < 0.8500 m", "moved 0.0 cm"]
     # A record written before verdicts: the reason alone.
     old = TrialRecord(trial=2, phase="use", variant="standard", location=1, tool="t",
                       outcome="failure", reason="goal not reached")

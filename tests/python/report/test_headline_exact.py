@@ -145,3 +145,34 @@ def test_durations_exact():
                                        14640, 86399)] == [
         "0.5 s", "42 s", "59.9 s", "1 min", "1 min", "2 min", "60 min", "1 h 00 min",
         "1 h 00 min", "1 h 00 min", "4 h 04 min", "24 h 00 min"]
+
+
+def test_a_resumed_run_says_so_with_its_trials_replayed_and_the_time_in_all():
+    # Issue 25: a resumed run's report showed the resume's wall time only and never said
+    # it was resumed.
+    summary = {"case": "hook", "wall_time_s": {"total": 8.11},
+               "resumed": {"replayed": 12, "earlier_wall_time_s": 17.5,
+                           "total_wall_time_s": 25.61}}
+    assert headline(_run(summary)).lines == [
+        "Case hook.",
+        "Resumed after an interruption: 12 trials of the interrupted run replayed from its "
+        "records; the interrupted run took 17.5 s to its last recorded trial; 25.61 s in "
+        "all.",
+        "Wall time 8.11 s of the resumed session."]
+    unknown = {"resumed": {"replayed": 1}}
+    assert headline(_run(unknown)).lines == [
+        "Resumed after an interruption: 1 trial of the interrupted run replayed from its "
+        "records."]
+
+
+def test_a_tool_made_after_a_catalogued_object_solved_the_task_is_a_demonstration():
+    # Issue 25: "creation not needed" was followed by a made tool without a word.
+    create = {"variant": "long_tube", "needed": False, "solved_by": "catalogue",
+              "catalogue": [{"tool": "hook_a4", "outcome": "success"}],
+              "catalogue_success": "hook_a4", "created_tools": [{"name": "hook_new1"}],
+              "eval": ["success"]}
+    assert headline(_run({"create": create})).lines == [
+        "Tool creation on the harder task long_tube: catalogued objects tried first: "
+        "hook_a4 (success); solved by the catalogued hook_a4; hook_new1 made all the "
+        "same, as a demonstration (--demonstrate-creation); the created tool's "
+        "evaluation: 1 of 1 trials succeeded."]

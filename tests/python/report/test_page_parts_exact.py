@@ -159,7 +159,7 @@ def test_a_tool_card_without_the_summary_s_fields(tmp_path):
     card = _tool_card(tmp_path, sized)
     assert card[card.index('<div class="facts">'):card.index("<h4>Print")] == (
         '<div class="facts"><div><h4>Dimensions</h4><table>'
-        "<tr><th>edge_mm</th><td>1, 2.5</td></tr><tr><th>n</th><td>2 m</td></tr>"
+        "<tr><th>edge mm</th><td>1, 2.5</td></tr><tr><th>n</th><td>2</td></tr>"
         "</table></div></div>")
 
 
@@ -204,7 +204,7 @@ def test_a_predicted_row_has_an_empty_cell_for_a_column_of_its_own(tmp_path):
     run = _run(tmp_path, {"create": {"predicted": {"feasible": False}}}, [record])
     assert _predicted_row(run) == (
         '<tr class="predicted"><td class="col-#">-</td><td class="col-phase">create</td>'
-        '<td class="col-n">-</td><td class="col-tool">?</td><td class="col-variant"></td>'
+        '<td class="col-tool">?</td><td class="col-variant"></td>'
         '<td class="col-loc"></td><td class="col-pose">-</td><td class="col-tested">-</td>'
         '<td class="col-violated">-</td>'
         '<td class="col-outcome">predicted failure, not run</td>'

@@ -77,7 +77,8 @@ def test_the_plot_of_six_trials_exact(tmp_path, saved):
     assert [(t.get_text(), t.get_rotation(), t.get_ha(), t.get_rotation_mode(),
              t.get_fontsize()) for t in ax.get_xticklabels()] == [
         (label, 50.0, "right", "anchor", 7.0) for label in
-        ["TUL 1  behind(hook_a1,cube1)", "TUL 2", "TC 1  a, b", "TC 2", "EV 1", "TC 3"]]
+        ["#1 TUL  behind(hook_a1,cube1)", "#2 TUL", "#3 TC  a, b", "#4 TC", "#5 EV",
+         "#6 TC"]]
     assert list(ax.get_xticks()) == [1, 2, 3, 4, 5, 6]
     assert list(ax.get_yticks()) == [0, 1, 2]
     assert [(t.get_text(), t.get_fontsize()) for t in ax.get_yticklabels()] == [
@@ -109,7 +110,7 @@ def test_a_long_run_without_creation_or_title(tmp_path, saved):
 
 def test_labels_and_counts_exact():
     assert trial_labels([_trial(1, "eval", 0, "t", "success", ["x"]),
-                         _trial(2, "use", 0, "t", "failure")]) == ["EV 1  x", "TUL 2"]
+                         _trial(2, "use", 0, "t", "failure")]) == ["#1 EV  x", "#2 TUL"]
     assert TrialCounts.of(TRIALS).to_dict() == {
         "use": {"trials": 2, "successes": 1, "outcomes": ["failure", "success"]},
         "create": {"trials": 3, "successes": 1,

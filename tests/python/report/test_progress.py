@@ -17,10 +17,10 @@ def test_lines_into_a_log_are_never_folded_and_have_no_status_line():
     out = io.StringIO()
     console = Console(file=out, width=80)            # not a terminal: a log file
     with RunProgress(console, budget=12) as progress:
-        progress("TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)")
+        progress("#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)")
         progress(LONG)
     assert out.getvalue().splitlines() == [
-        "TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)", LONG]
+        "#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)", LONG]
 
 
 def test_the_status_line_says_phase_trial_of_budget_elapsed_and_last_outcome():
@@ -29,11 +29,11 @@ def test_the_status_line_says_phase_trial_of_budget_elapsed_and_last_outcome():
     progress.start -= 65
     progress("demonstration: the trainer shows the task with hook_a2 (loc 1)")
     assert progress.status().startswith("demonstration · 1:05 elapsed · demonstration:")
-    progress("TUL   3  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)")
+    progress("#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)")
     assert progress.status() == "tool-use learning · trial 3 of 12 · 1:05 elapsed · " \
                                 "last: hook_a2 failure"
-    progress("EVAL  2  hook_a2        loc 2  success     tested -")
-    assert progress.status() == "evaluation · trial 2 · 1:05 elapsed · last: hook_a2 success"
+    progress("#11  EVAL hook_a2        loc 2  success     tested -")
+    assert progress.status() == "evaluation · trial 11 · 1:05 elapsed · last: hook_a2 success"
     progress("manufacturing tool 1: meshing, splitting to the build volume and slicing "
              "its pieces")
     assert progress.status().startswith("tool creation · 1:05 elapsed · manufacturing")
@@ -44,10 +44,10 @@ def test_a_terminal_shows_the_status_line_under_the_lines():
     out = io.StringIO()
     console = Console(file=out, width=100, force_terminal=True)
     with RunProgress(console, budget=12) as progress:
-        progress("TUL   1  hook_a1        loc 1  blocked     tested x")
+        progress("#1   TUL  hook_a1        loc 1  blocked     tested x")
         console.file.flush()
         text = out.getvalue()
-    assert "TUL   1  hook_a1" in text and "trial 1 of 12" in text
+    assert "#1   TUL  hook_a1" in text and "trial 1 of 12" in text
 
 
 def test_run_case_without_a_callback_logs_its_lines(monkeypatch, caplog, tmp_path):
@@ -79,17 +79,17 @@ def test_each_step_line_names_its_phase_and_the_status_line_is_cut_to_the_width(
              ("encoding 3 clips", "video"), ("pddl check", "planning"),
              ("plan: [a]", "planning")]
     for line, phase in steps:
-        progress("TC    1  hook_a1  loc 2  success")
+        progress("#14 TC  hook_a1  loc 2  success")
         assert (progress.phase, progress.trial, progress.last) == (
-            "tool creation", 1, "hook_a1 success")
+            "tool creation", 14, "hook_a1 success")
         progress(line)
         assert (progress.phase, progress.trial, progress.doing) == (phase, None, line)
         assert progress.status() == f"{phase} · 0:00 elapsed · {line}"
     progress("a line that starts no step")
     assert progress.status() == "planning · 0:00 elapsed · plan: [a]"
-    progress("DEMO  1  hook_a2  loc 1  success")
-    assert progress.status() == "demonstration · trial 1 · 0:00 elapsed · last: hook_a2 success"
-    progress("TUL   4  hook_a3  loc 3  blocked")
+    progress("#0 DEMO  hook_a2  loc 1  success")
+    assert progress.status() == "demonstration · trial 0 · 0:00 elapsed · last: hook_a2 success"
+    progress("#4 TUL  hook_a3  loc 3  blocked")
     assert progress.status() == "tool-use learning · trial 4 · 0:00 elapsed · last: hook_a3 " \
                                 "blocked"   # no budget: no "of N"
     rich = progress.__rich__()

@@ -215,11 +215,12 @@ def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real
     assert "trials.png" in images
     assert imageio.imread(_local_file(real_run, "trials.png")).shape[0] > 100
     # One table row per recorded trial, with its tool, outcome and whole reason, the
-    # measured verdict after it.
+    # measured verdict folded under it.
     assert len(dom.rows) == len(trials) >= 3
     for row, t in zip(dom.rows, trials):
         assert row[0] == str(t["trial"]) and t["tool"] in row and t["outcome"] in row
-        assert row[-1] == reason_text(TrialRecord.from_dict(t))
+        # the measured verdict folded under the reason (<details>: "measured")
+        assert row[-1] == reason_text(TrialRecord.from_dict(t)).replace(" -- ", "measured", 1)
         assert row[-1].startswith(t["reason"]) and t["verdict"]["text"] in row[-1]
     # The created tool: its render and its dimensions.
     summary = json.loads((real_run / "summary.json").read_text())
@@ -229,9 +230,16 @@ def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real
     for tool in created:
         render = f"tools/{tool['name']}/{tool['name']}.png"
         assert render in images and _local_file(real_run, render).is_file()
+        # in millimetres and degrees, as the print tables (issue 25: no metres beside
+        # millimetres, no internal keys)
         for key, value in tool["dims"].items():
-            assert f"{key} {value:.6g}" in text if isinstance(value, float) else \
-                f"{key} {value}" in text
+            name = key.removesuffix("_deg").replace("_", " ")
+            if key.endswith("_deg"):
+                assert f"{name} {value:g} deg" in text
+            elif isinstance(value, (int, float)) and not isinstance(value, bool):
+                assert f"{name} {value * 1000:.1f} mm" in text
+            else:
+                assert f"{name} {value}" in text
     # The learned hypotheses, literal by literal, and the plan's steps.
     for key in ("hs", "hg"):
         head, _, body = readable_term(summary["hypotheses"][key]).partition(" :- ")

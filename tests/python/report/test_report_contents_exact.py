@@ -94,14 +94,15 @@ def test_read_run_exact(tmp_path):
 
 def test_every_column_and_cell_exact(tmp_path):
     c = read_run(_folder(tmp_path))
-    assert [h for h, _ in c.columns] == ["#", "phase", "n", "tool", "variant", "loc", "pose",
+    # One trial number: the run's (#); no phase count column (issue 25).
+    assert [h for h, _ in c.columns] == ["#", "phase", "tool", "variant", "loc", "pose",
                                          "tested", "violated", "outcome", "reason"]
     rows = [[cell(t) for _, cell in c.columns] for t in c.trials]
     assert rows == [
-        ["1", "use", "1", "hook_a1", "standard", "2", "dx 0.0312346, dy 0, roll -1",
+        ["1", "use", "hook_a1", "standard", "2", "dx 0.0312346, dy 0, roll -1",
          "hook_length(hook_a1,short)", "handle_length(hook_a1,medium), behind(hook_a1,cube1)",
          "blocked", "the arm hit the tube"],
-        ["2", "eval", "1", "hook_new", "long_tube", "1", "-", "-", "-", "success", "-"],
+        ["2", "eval", "hook_new", "long_tube", "1", "-", "-", "-", "success", "-"],
     ]
 
 

@@ -32,13 +32,13 @@ SUMMARY = [
 HEADLINE = "Tool creation on the harder task ?: not solved."
 
 WIDE = """\
-┏━━━┳━━━━━━━┳━━━┳━━━━━━━━━━┳━━━━━━━━━━━┳━━━━━┳━━━━━━━━━━━━━━━━━━━━━━━━━━━━━┳━━━━━━━━━━━━━━━━━━━━━━━━━━━━┳━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━┳━━━━━━━━━┳━━━━━━━━━━━━━━━━━━━━━━┓
-┃ # ┃ phase ┃ n ┃ tool     ┃ variant   ┃ loc ┃ pose                        ┃ tested                     ┃ violated                                             ┃ outcome ┃ reason               ┃
-┡━━━╇━━━━━━━╇━━━╇━━━━━━━━━━╇━━━━━━━━━━━╇━━━━━╇━━━━━━━━━━━━━━━━━━━━━━━━━━━━━╇━━━━━━━━━━━━━━━━━━━━━━━━━━━━╇━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━╇━━━━━━━━━╇━━━━━━━━━━━━━━━━━━━━━━┩
-│ 1 │ use   │ 1 │ hook_a1  │ standard  │   2 │ dx 0.0312346, dy 0, roll -1 │ hook_length(hook_a1,short) │ handle_length(hook_a1,medium), behind(hook_a1,cube1) │ blocked │ the arm hit the tube │
-│ 2 │ eval  │ 1 │ hook_new │ long_tube │   1 │ -                           │ -                          │ -                                                    │ success │ -                    │
-└───┴───────┴───┴──────────┴───────────┴─────┴─────────────────────────────┴────────────────────────────┴──────────────────────────────────────────────────────┴─────────┴──────────────────────┘"""
-"""The table of the two trials, 193 columns wide: every cell whole, # and loc on the
+┏━━━┳━━━━━━━┳━━━━━━━━━━┳━━━━━━━━━━━┳━━━━━┳━━━━━━━━━━━━━━━━━━━━━━━━━━━━━┳━━━━━━━━━━━━━━━━━━━━━━━━━━━━┳━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━┳━━━━━━━━━┳━━━━━━━━━━━━━━━━━━━━━━┓
+┃ # ┃ phase ┃ tool     ┃ variant   ┃ loc ┃ pose                        ┃ tested                     ┃ violated                                             ┃ outcome ┃ reason               ┃
+┡━━━╇━━━━━━━╇━━━━━━━━━━╇━━━━━━━━━━━╇━━━━━╇━━━━━━━━━━━━━━━━━━━━━━━━━━━━━╇━━━━━━━━━━━━━━━━━━━━━━━━━━━━╇━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━━╇━━━━━━━━━╇━━━━━━━━━━━━━━━━━━━━━━┩
+│ 1 │ use   │ hook_a1  │ standard  │   2 │ dx 0.0312346, dy 0, roll -1 │ hook_length(hook_a1,short) │ handle_length(hook_a1,medium), behind(hook_a1,cube1) │ blocked │ the arm hit the tube │
+│ 2 │ eval  │ hook_new │ long_tube │   1 │ -                           │ -                          │ -                                                    │ success │ -                    │
+└───┴───────┴──────────┴───────────┴─────┴─────────────────────────────┴────────────────────────────┴──────────────────────────────────────────────────────┴─────────┴──────────────────────┘"""
+"""The table of the two trials, 189 columns wide: every cell whole, # and loc on the
 right."""
 
 
@@ -57,7 +57,7 @@ def test_the_wide_report_is_the_headline_the_table_and_the_summary(tmp_path):
             "video videos/use-1.mp4: use 1 hook_a1 blocked (kept as first failure)"]
     expected = [HEADLINE, "", str(run), *WIDE.splitlines(), *SUMMARY, *rest]
     assert _printed(run, 200) == expected
-    # Into a file, the width is the table's own (193 columns): the same lines.
+    # Into a file, the width is the table's own (189 columns): the same lines.
     assert _printed(run, None) == expected
 
 
@@ -65,12 +65,12 @@ def test_an_80_column_report_prints_a_block_per_trial(tmp_path):
     run = _folder(tmp_path)
     assert _printed(run, 80) == [
         HEADLINE, "", str(run),
-        "  1  use 1  hook_a1  standard  loc 2  blocked",
+        "  1  use  hook_a1  standard  loc 2  blocked",
         "     pose     dx 0.0312346, dy 0, roll -1",
         "     tested   hook_length(hook_a1,short)",
         "     violated handle_length(hook_a1,medium), behind(hook_a1,cube1)",
         "     reason   the arm hit the tube",
-        "  2  eval 1  hook_new  long_tube  loc 1  success",
+        "  2  eval  hook_new  long_tube  loc 1  success",
         "     pose     -",
         "     tested   -",
         "     violated -",
@@ -87,14 +87,14 @@ def test_a_40_column_report_folds_every_long_cell(tmp_path):
     run = _folder(tmp_path)
     assert _printed(run, 40) == [
         "Tool creation on the harder task ?: not", "solved.", "", str(run),
-        "  1  use 1  hook_a1  standard  loc 2", "blocked",
+        "  1  use  hook_a1  standard  loc 2", "blocked",
         "     pose     dx 0.0312346, dy 0, roll",
         "              -1",
         "     tested   hook_length(hook_a1,short)",
         "     violated handle_length(hook_a1,medi",
         "              um), behind(hook_a1,cube1)",
         "     reason   the arm hit the tube",
-        "  2  eval 1  hook_new  long_tube  loc 1", "success",
+        "  2  eval  hook_new  long_tube  loc 1", "success",
         "     pose     -", "     tested   -", "     violated -", "     reason   -",
         *SUMMARY,
         "created hook_new: hook_a2 -> hook_new;", "handle_length 400.0 mm (success;",
@@ -112,10 +112,10 @@ def test_each_outcome_has_its_colour_in_the_narrow_layout(tmp_path):
         for i, o in enumerate(outcomes, 1)))
     heads = trial_blocks(read_run(run)).renderables[::2]
     assert [h.plain for h in heads] == [
-        f"{i:>3}  eval 1  hook_new  long_tube  loc 1  {o}" for i, o in enumerate(outcomes, 1)]
+        f"{i:>3}  eval  hook_new  long_tube  loc 1  {o}" for i, o in enumerate(outcomes, 1)]
     assert [[(s.start, s.end, s.style) for s in h.spans] for h in heads] == [
-        [(41, 48, "bold green")], [(41, 48, "bold red")], [(41, 48, "bold yellow")],
-        [(41, 52, "bold")], [(41, 48, "bold magenta")]]
+        [(39, 46, "bold green")], [(39, 46, "bold red")], [(39, 46, "bold yellow")],
+        [(39, 50, "bold")], [(39, 46, "bold magenta")]]
 
 
 def test_the_width_is_the_one_asked_else_the_terminal_s_else_the_table_s(tmp_path):
@@ -123,13 +123,13 @@ def test_the_width_is_the_one_asked_else_the_terminal_s_else_the_table_s(tmp_pat
     table = trial_table(run)
     assert table.title == str(run.path) and table.title_justify == "left"
     assert [(c.header, c.justify, c.overflow) for c in table.columns] == [
-        (h, "right" if h in ("#", "n", "loc") else "left", "fold")
-        for h in ["#", "phase", "n", "tool", "variant", "loc", "pose", "tested",
+        (h, "right" if h in ("#", "loc") else "left", "fold")
+        for h in ["#", "phase", "tool", "variant", "loc", "pose", "tested",
                   "violated", "outcome", "reason"]]
-    assert natural_width(table) == 193
+    assert natural_width(table) == 189
     pipe = Console(file=io.StringIO(), force_terminal=False, width=120)
     assert report_width(pipe, table, 57) == 57
-    assert report_width(pipe, table, None) == 193
+    assert report_width(pipe, table, None) == 189
     terminal = Console(file=io.StringIO(), force_terminal=True, width=123)
     assert report_width(terminal, table, None) == 123
     small = Table("a")  # a table narrower than 80 columns is printed at 80
