@@ -3,8 +3,9 @@ them from (:func:`read_run_json`)."""
 
 from __future__ import annotations
 
+import hashlib
 import json
-from dataclasses import dataclass, fields
+from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 from typing import Any, Optional
 
@@ -114,8 +115,25 @@ class RunOptions:
         strategy_named(self.strategy)
 
 
-RUN_JSON_KEYS = ("case", "options", "world", "drawn_world")
+RUN_JSON_KEYS = ("case", "options", "world", "drawn_world", "check")
 """The keys of a run folder's ``run.json`` (:func:`read_run_json`)."""
+
+
+def run_json(case: str, options: RunOptions, world: Optional[Path],
+             drawn: Optional[dict[str, Any]]) -> dict[str, Any]:
+    """Return the ``run.json`` of a new run: its case, options, world folder and drawn
+    world, and ``check``, the SHA-256 of those four (:func:`run_json_check`), by which a
+    resume refuses a ``run.json`` edited after the run began."""
+    meta = {"case": case, "options": asdict(options),
+            "world": str(world) if world else None, "drawn_world": drawn}
+    return {**meta, "check": run_json_check(meta)}
+
+
+def run_json_check(meta: dict[str, Any]) -> str:
+    """Return the SHA-256 (hex) of a ``run.json``'s case, options, world and drawn world,
+    as canonical JSON (sorted keys)."""
+    body = {k: meta.get(k) for k in ("case", "options", "world", "drawn_world")}
+    return hashlib.sha256(json.dumps(body, sort_keys=True).encode("utf-8")).hexdigest()
 
 
 def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
@@ -126,7 +144,8 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     A run recorded before there were strategies ran the paper's Algorithm 1, and one
     recorded before catalogued objects were tried first made a tool at once; other
     missing options take their defaults. A resumed run shows no GUI (the display it
-    was started on may be gone).
+    was started on may be gone). A ``run.json`` whose ``check`` does not match
+    (:func:`run_json_check`) was edited after the run began and is refused.
 
     Raises
     ------
@@ -148,6 +167,11 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     for key in ("case", "options"):
         if key not in meta:
             raise ValueError(f"{meta_path}: field {key!r} is missing")
+    if "check" in meta and meta["check"] != run_json_check(meta):
+        # A run.json of a run recorded before the check was written has none.
+        raise ValueError(f"{meta_path}: field 'check' does not match the case, options, "
+                         "world and drawn world: run.json was changed after the run began; "
+                         "the run cannot be resumed (start a new run for other options)")
     if not isinstance(meta["case"], str):
         raise ValueError(f"{meta_path}: field 'case' must be text, got {meta['case']!r}")
     opts = meta["options"]

@@ -25,7 +25,7 @@ from creative_py.learning import phases
 from creative_py.learning.checks import check_catalogue, check_manifest, require_display
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.drawn_world import draw_catalogue_world
-from creative_py.learning.options import RunOptions, read_run_json
+from creative_py.learning.options import RunOptions, read_run_json, run_json
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import RunFolder, read_resume
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
@@ -176,9 +176,7 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
         waiting = _interrupted_folders(Path(out), case, options.seed)
         run = RunFolder.create(Path(out), case, options.seed, run_name)
         try:
-            run.write_json("run.json", {"case": case, "options": asdict(options),
-                                        "world": str(world_dir) if world_dir else None,
-                                        "drawn_world": drawn})
+            run.write_json("run.json", run_json(case, options, world_dir, drawn))
         except BaseException:
             run.release()
             shutil.rmtree(run.path, ignore_errors=True)

@@ -90,6 +90,9 @@ WORLD_CASES = [
      r"[-0-9.e+]+ \(variant standard, location 1\)"),
     ("hook_tube", "case.toml", "posture_search = true", "posture_search = 1",
      r"case\.toml: field 'skill\[1\]\.options\.posture_search': must be true or false"),
+    ("hook_tube", "case.toml", "posture_search = true", 'posture_search = "yes"',
+     r"case\.toml: field 'skill\[1\]\.options\.posture_search': must be true or false, "
+     r"got 'yes'"),
     ("wedge_door", "case.toml", "duration = 4.0", "duration = 1e9",
      r"case\.toml: field 'skill\[2\]\.options\.duration': must lie within \[0, 60\] s"),
     ("wedge_door", "case.toml", "settle_time = 0.25}", "settle_time = 1e6}",

@@ -22,6 +22,7 @@ import pytest
 
 from creative_py.case import broken_cases, case_index, get_case, read_manifest
 from creative_py.records.folder import RunFolder, read_resume
+from creative_py.learning.options import read_run_json
 from creative_py.world_files import WORLDS_ROOT, WorldFileError
 
 from test_bad_input import BANNER, _tree_copy
@@ -409,3 +410,26 @@ def test_building_the_metadata_prints_no_licence_warning(tmp_path):
     assert "Deprecat" not in proc.stdout + proc.stderr
     assert "licen" not in (proc.stdout + proc.stderr).lower().replace(
         "adding license file 'license'", "")
+
+
+def test_a_run_json_edited_after_the_run_began_is_refused_on_resume(tmp_path):
+    """A changed seed in run.json was accepted: the summary then named a seed the
+    trials were not run with."""
+    from creative_py.learning.options import RunOptions, run_json
+
+    folder = tmp_path / "hook-edited-s0"
+    folder.mkdir()
+    recorded = ROOT / "tests" / "fixtures" / "runs" / "hook_s0"
+    (folder / "trials.jsonl").write_bytes((recorded / "trials.jsonl").read_bytes())
+    meta = run_json("hook", RunOptions(seed=0, strategy="paper", video="none"), None, None)
+    (folder / "run.json").write_text(json.dumps(meta, indent=2))
+    read_run_json(folder)                                      # as written: accepted
+    meta["options"]["seed"] = 5
+    (folder / "run.json").write_text(json.dumps(meta, indent=2))
+    before = {p.name: p.read_bytes() for p in folder.iterdir()}
+    proc = creative("run", "hook", "--resume", str(folder))
+    assert refused(proc) == (f"error: {folder / 'run.json'}: field 'check' does not match "
+                             "the case, options, world and drawn world: run.json was "
+                             "changed after the run began; the run cannot be resumed (start "
+                             "a new run for other options)")
+    assert {p.name: p.read_bytes() for p in folder.iterdir()} == before

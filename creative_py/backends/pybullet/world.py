@@ -510,6 +510,10 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     case_file = world.manifest.folder / "case.toml"
     flags = primitives.option_flags()
     for i, s in enumerate(world.skills.values()):
+        for k, raw in s.options.items():  # a flag is never a scene expression
+            if k in flags and not isinstance(raw, bool):
+                raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{k}': must "
+                                     f"be true or false, got {raw!r}")
         opts = resolve_options(s.options, ns, f"skill {s.name} options")
         for k, v in opts.items():
             where = f"{case_file}: field 'skill[{i}].options.{k}'"
