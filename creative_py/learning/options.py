@@ -63,6 +63,10 @@ class RunOptions:
     demonstrate_creation : bool
         When a catalogued object solved the harder task, still create a tool afterwards
         as a demonstration of Algorithm 2 (``make hook`` does).
+    prior : str or None
+        Transfer: a run folder (or its ``model.pl``) of another case whose learned model
+        the version space starts from, where the ontology maps its literals
+        (:mod:`creative_py.learning.prior`); None: learn from the demonstration alone.
     """
 
     seed: int = 0
@@ -77,6 +81,7 @@ class RunOptions:
     world_seed: Optional[int] = None
     catalogue_first: Optional[bool] = None
     demonstrate_creation: bool = False
+    prior: Optional[str] = None
 
     @property
     def tries_catalogue(self) -> bool:
@@ -111,6 +116,9 @@ class RunOptions:
         if not isinstance(self.demonstrate_creation, bool):
             raise ValueError(f"option demonstrate_creation must be true or false, got "
                              f"{self.demonstrate_creation!r}")
+        if self.prior is not None and (not isinstance(self.prior, str) or not self.prior):
+            raise ValueError(f"option prior must be a path (a run folder or model.pl), "
+                             f"got {self.prior!r}")
         strategy_named(self.strategy)
 
 

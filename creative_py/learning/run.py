@@ -26,6 +26,7 @@ from creative_py.learning.checks import check_catalogue, check_manifest, require
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.learning.options import RunOptions, read_run_json
+from creative_py.learning.prior import load_prior
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import RunFolder, read_resume
 from creative_py.records.summary import RunSummary, TrialCounts, VideoEntry, WallTimes
@@ -106,6 +107,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     t_start = time.perf_counter()
     engine, world, drawn = _checked_world(case, options, world_dir, drawn,
                                           resume[0].path / "run.json" if resume else None)
+    if options.prior:
+        load_prior(engine, case, options.prior)  # a bad --prior fails before the folder
     run, replay, lines, before = _open_folder(out, case, options, world_dir, drawn,
                                               run_name, resume, say)
     try:
