@@ -201,7 +201,7 @@ class UsePhase(Part):
     strategy: Optional[str] = None
     stop: Optional[str] = None
     """``confirmed``, ``certified``, ``exhausted`` or ``budget``."""
-    prior: Optional[UsePrior] = None
+    prior: Optional[UsePrior] = _omit()
     """The prior of a transfer run (None: learned without one)."""
 
 
