@@ -1,7 +1,8 @@
 :- module(transfer,
           [ read_prior/2,            % +File, -Prior
             prior_shared/3,          % +Case, +Prior, -Shared
-            prior_literals/4         % +Case, +Prior, +Example, -Literals
+            prior_literals/4,        % +Case, +Prior, +Example, -Literals
+            prior_contradicted/4     % +Case, +Prior, +Example, -Literals
           ]).
 
 /** <module> Transfer: a learned model of one case as the prior of another
@@ -104,6 +105,32 @@ prior_literals(Case, Prior, Example, Literals) :-
         list_to_set(Literals0, Literals)
     ;   Literals = []
     ).
+
+%!  prior_contradicted(+Case, +Prior, +Example, -Literals:list) is det.
+%
+%   Literals are the mapped literals of the prior's h_g (prior_shared/3), with its head
+%   bound to Example's, that the demonstration Example violates: ground and not in its
+%   body (a prior's handle_length(T, long) against a demonstration whose tool's
+%   handle is medium). The demonstration succeeded without them, so the physics contradicts the
+%   prior there: they are not taken.
+
+prior_contradicted(Case, Prior, Example, Literals) :-
+    prior_shared(Case, Prior, Shared0),
+    Prior = prior(_, _, HG),
+    copy_term(HG-Shared0, HG1-Shared),
+    body_list_(HG1, PHead, _),
+    body_list_(Example, Head, Body),
+    (   functor(PHead, N, A),
+        functor(Head, N, A)
+    ->  PHead = Head,
+        include(violated_(Body), Shared, Literals0),
+        list_to_set(Literals0, Literals)
+    ;   Literals = []
+    ).
+
+violated_(Body, L) :-
+    ground(L),
+    \+ memberchk(L, Body).
 
 in_body_(Body, L) :-
     ground(L),

@@ -483,6 +483,11 @@ class Engine:
         (``transfer:prior_literals/4``)."""
         return self._must("prior_literals", case, prior, example)
 
+    def prior_contradicted(self, case: str, prior: Term, example: Term) -> list:
+        """Return the prior's mapped literals that the demonstration ``example``
+        violates (``transfer:prior_contradicted/4``): not taken."""
+        return self._must("prior_contradicted", case, prior, example)
+
     def vs_update(self, vs: Term, labelled: Term) -> Term:
         """Return the version space after ``pos(Example)`` or ``neg(Example)``."""
         return self._must("vs_update", vs, labelled)

@@ -164,7 +164,8 @@ class UseResult:
     """The literals h_g took from the prior, as text (not tested)."""
     prior_dropped: tuple[tuple[str, int], ...] = ()
     """The prior's literals a trial contradicted (it succeeded though it violated
-    them), with that trial's number: dropped from h_g and learned afresh."""
+    them), with that trial's number (0: the demonstration, whose tool lacks them): not
+    in h_g, learned afresh."""
 
 
 class ToolUseLearner:
@@ -241,6 +242,14 @@ class ToolUseLearner:
         else:
             vs = self.engine.vs_init(example)
         dropped: list[tuple[str, int]] = []
+        if self.prior is not None:
+            # The demonstration is the first trial the prior can be wrong about: a
+            # literal it violates is contradicted there (trial 0) and not taken.
+            for lit in self.engine.prior_contradicted(self.case, self.prior.term, example):
+                dropped.append((str(lit), 0))
+                runner.progress(f"the demonstration contradicted the prior: {lit} "
+                                "not taken, learned afresh")
+        n_demo = len(dropped)
         n0, exact0 = self.engine.vs_count(vs)
         runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}; "
                         f"{n0} hypotheses{'' if exact0 else ' at most'}")
@@ -264,7 +273,7 @@ class ToolUseLearner:
                     break
             rec, vs = self._trial(strategy, exp, i, vs, task, decision, skip)
             if self.prior is not None:
-                self._note_dropped(vs, i, dropped)
+                self._note_dropped(vs, i, dropped, n_demo)
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
@@ -287,10 +296,12 @@ class ToolUseLearner:
                          demo_tool, time.perf_counter() - t0, stop, n0, exact0,
                          self.prior, tuple(str(t) for t in taken), tuple(dropped))
 
-    def _note_dropped(self, vs: Term, i: int, dropped: list[tuple[str, int]]) -> None:
-        """Record which of the prior's literals trial ``i`` contradicted."""
+    def _note_dropped(self, vs: Term, i: int, dropped: list[tuple[str, int]],
+                      n_demo: int) -> None:
+        """Record which of the prior's literals trial ``i`` contradicted (after the
+        ``n_demo`` the demonstration did)."""
         _kept, now = self.engine.vs_prior(vs)
-        for pair in now[len(dropped):]:
+        for pair in now[len(dropped) - n_demo:]:
             lit = pair.args[0] if isinstance(pair, Compound) else pair
             dropped.append((str(lit), i))
             self.runner.progress(f"trial {i} contradicted the prior: {lit} dropped from "

@@ -38,6 +38,13 @@ test(literals_by_value) :-
     assertion(L == [hook_down(rake_a2), behind(rake_a2, box1), centred_on(rake_a2, box1),
                     hook(rake_a2)]).
 
+%   The demonstration violates the prior's handle_length(T, medium): contradicted.
+test(contradicted_by_the_demonstration) :-
+    hook_prior(P),
+    rake_demo(E),
+    transfer:prior_contradicted(rake, P, E, L),
+    assertion(L == [handle_length(rake_a2, medium)]).
+
 test(read_prior_missing, [throws(error(existence_error(file, '/nonexistent/model.pl'), _))]) :-
     transfer:read_prior('/nonexistent/model.pl', _).
 
