@@ -20,8 +20,11 @@ the same meaning and roles:
     both cases' tool classes are the same hierarchy (case_tool_class/2: the rake and
     the hook are both hook_like, ontology/kinds/hook_like.pl);
   - a spatial literal when both cases declare a spatial_definition/4 with the same
-    template, roles included (behind(tool, target) in the hook, the rake and the
-    paddle; its geometry is each case's own).
+    template, roles included (behind(tool, target); its geometry is each case's own),
+    or templates with the same roles to which both cases give the same meaning with
+    the optional hook spatial_meaning(?Case, ?Template, ?Meaning) (a prong turned down
+    and a blade upright are both the working part across the pull's path); the
+    literal then takes the new case's name.
 
 The roles map through the version space's head, tool_pose(Tool, Target, Context): the
 prior's head variables are bound to the new example's, so a literal transfers only as
@@ -39,7 +42,8 @@ the prior).
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
-:- use_module(case, [must_be_case/1, case_answer/1, case_holds/1, class_holds/1]).
+:- use_module(case, [must_be_case/1, case_answer/1, case_holds/1, class_holds/1,
+                      case_knowledge/2]).
 
 %!  read_prior(+File, -Prior) is det.
 %
@@ -74,8 +78,8 @@ read_terms_(In, Terms) :-
 
 %!  prior_shared(+Case, +Prior, -Shared:list) is det.
 %
-%   Shared are the literals of the prior's h_g (as the prior writes them) whose
-%   predicate the ontology maps from the prior's case to Case (see the module comment).
+%   Shared are the literals of the prior's h_g whose predicate the ontology maps from
+%   the prior's case to Case (see the module comment), in Case's vocabulary.
 %   [] means the prior says nothing about Case. Raises existence_error(case, C) when
 %   the prior's case is not in the loaded ontology.
 
@@ -83,7 +87,13 @@ prior_shared(Case, prior(PCase, _HS, HG), Shared) :-
     must_be_case(Case),
     must_be_case(PCase),
     body_list_(HG, _, Body),
-    include(transferable_(PCase, Case), Body, Shared).
+    foldl(transfer_literal_(PCase, Case), Body, Shared, []).
+
+transfer_literal_(PCase, Case, L, Out0, Out) :-
+    (   transferable_(PCase, Case, L, L1)
+    ->  Out0 = [L1|Out]
+    ;   Out0 = Out
+    ).
 
 %!  prior_literals(+Case, +Prior, +Example, -Literals:list) is det.
 %
@@ -136,7 +146,7 @@ in_body_(Body, L) :-
     ground(L),
     memberchk(L, Body).
 
-transferable_(PCase, Case, L) :-
+transferable_(PCase, Case, L, L1) :-
     compound(L),
     L \= in_range(_, _, _),
     functor(L, N, A),
@@ -144,13 +154,31 @@ transferable_(PCase, Case, L) :-
         structural_(Case, N/A),
         case_answer(case_tool_class(PCase, Class)),
         case_answer(case_tool_class(Case, Class))
-    ->  true
+    ->  L1 = L
     ;   case_holds(spatial_definition(PCase, T, _, _)),
         functor(T, N, A),
         case_holds(spatial_definition(Case, T2, _, _)),
-        T2 =@= T
-    ->  true
+        same_meaning_(PCase, T, Case, T2)
+    ->  functor(T2, N2, _),
+        L =.. [_|Args],
+        L1 =.. [N2|Args]
     ).
+
+%   Two spatial templates mean the same when they are the same template (name and
+%   roles) or when both cases give them the same spatial_meaning/3 with the same roles.
+same_meaning_(_, T, _, T2) :-
+    T2 =@= T,
+    !.
+same_meaning_(PCase, T, Case, T2) :-
+    T =.. [_|Roles],
+    T2 =.. [_|Roles2],
+    Roles == Roles2,
+    case_knowledge(PCase, spatial_meaning(PCase, T0, M)),
+    T0 =@= T,
+    case_knowledge(Case, spatial_meaning(Case, T1, M1)),
+    T1 =@= T2,
+    M1 =@= M,
+    !.
 
 structural_(Case, PI) :-
     case_answer(case_tool_class(Case, Class)),

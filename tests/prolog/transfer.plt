@@ -17,10 +17,12 @@ test(shared_same_kind) :-
     transfer:prior_shared(rake, P, S),
     length(S, 5).
 
+%   The paddle shares the tube's spatial definitions, and gives its blade_upright the
+%   meaning the hook gives hook_down (spatial_meaning/3): the literal takes its name.
 test(shared_spatial_only) :-
     hook_prior(P),
     transfer:prior_shared(paddle_tube, P, S),
-    assertion(S = [behind(_, _), centred_on(_, _)]).
+    assertion(S = [blade_upright(_), behind(_, _), centred_on(_, _)]).
 
 test(shared_unrelated) :-
     hook_prior(P),
