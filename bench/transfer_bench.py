@@ -7,8 +7,12 @@ CLI, so every run is a real run folder); then the table: pair, worlds, tool-use 
 without and with the prior (median, range), evaluation successes, and how the learned
 h_g compares.
 
-    python bench/transfer_bench.py run --out /tmp/transfer 1 2 3
-    python bench/transfer_bench.py table --out /tmp/transfer [--json bench/results/transfer.json]
+    python bench/transfer_bench.py run --out /tmp/transfer --pairs PRIOR:CASE,... 1 2 3
+    python bench/transfer_bench.py table --out /tmp/transfer --pairs PRIOR:CASE,... \
+        [--json bench/results/transfer.json]
+
+(the measured pairs: the hook before the rake and before the paddle, the rake before the
+hook; docs/results.md, "Transfer").
 
 Not a test: it takes ~1-2 minutes a world on a 2-core machine.
 """
@@ -22,8 +26,8 @@ import subprocess
 import sys
 from pathlib import Path
 
-PAIRS = (("hook -> rake", "rake", "hook"), ("hook -> paddle", "paddle_tube", "hook"),
-         ("rake -> hook", "hook", "rake"))
+PAIRS: tuple[tuple[str, str, str], ...] = ()
+"""(name, case, prior case) of each pair, from ``--pairs``."""
 
 
 def _run(out: Path, name: str, case: str, world: int, prior: Path | None = None) -> None:
@@ -40,8 +44,9 @@ def _folder(out: Path, name: str) -> Path | None:
 
 
 def run(out: Path, worlds: list[int]) -> None:
+    cases = sorted({c for _, a, b in PAIRS for c in (a, b)})
     for n in worlds:
-        for case in ("hook", "rake", "paddle_tube"):
+        for case in cases:
             _run(out, f"{case}_w{n}", case, n)
         for _name, case, prior in PAIRS:
             _run(out, f"{case}_p{prior}_w{n}", case, n, _folder(out, f"{prior}_w{n}"))
@@ -86,6 +91,8 @@ def table(out: Path) -> dict:
 if __name__ == "__main__":
     cmd, rest = sys.argv[1], sys.argv[2:]
     out = Path(rest[rest.index("--out") + 1])
+    PAIRS = tuple((f"{p} -> {c}", c, p) for p, c in
+                  (pair.split(":") for pair in rest[rest.index("--pairs") + 1].split(",")))
     if cmd == "run":
         run(out, [int(x) for x in rest if x.isdigit()])
     else:

@@ -4,7 +4,7 @@ them from (:func:`read_run_json`)."""
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, fields
+from dataclasses import asdict, dataclass, fields
 from pathlib import Path
 from typing import Any, Optional
 
@@ -82,6 +82,14 @@ class RunOptions:
     catalogue_first: Optional[bool] = None
     demonstrate_creation: bool = False
     prior: Optional[str] = None
+
+    def recorded(self) -> dict[str, Any]:
+        """The options by name as ``run.json`` and ``summary.json`` record them:
+        ``prior`` only when set (runs recorded before it existed write back the same)."""
+        out = asdict(self)
+        if out["prior"] is None:
+            del out["prior"]
+        return out
 
     @property
     def tries_catalogue(self) -> bool:

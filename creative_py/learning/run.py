@@ -16,7 +16,7 @@ from __future__ import annotations
 import logging
 import shutil
 import time
-from dataclasses import asdict, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Optional
 
@@ -116,7 +116,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         clips = runner.clips
         wall: dict[str, float] = {}
         parts: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
-                                 "options": asdict(options), "world_seed": options.world_seed,
+                                 "options": options.recorded(), "world_seed": options.world_seed,
                                  "drawn_world": drawn,
                                  **phases.case_facts(world.manifest, options)}
         use, learned = phases.learn_to_use(runner, options, wall, say)
@@ -165,7 +165,7 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
     if resume is None:
         run = RunFolder.create(Path(out), case, options.seed, run_name)
         try:
-            run.write_json("run.json", {"case": case, "options": asdict(options),
+            run.write_json("run.json", {"case": case, "options": options.recorded(),
                                         "world": str(world_dir) if world_dir else None,
                                         "drawn_world": drawn})
         except BaseException:

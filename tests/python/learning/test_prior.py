@@ -105,3 +105,8 @@ def test_a_real_rake_run_with_a_hook_prior(tmp_path):
     assert tested and not any(t.startswith(("hook_down", "behind", "hook(")) for t in tested)
     assert "learned_hypothesis(rake, prior," in (folder.path / "model.pl").read_text()
     assert summary.eval.successes == 1
+
+
+def test_run_json_records_the_prior_only_when_set():
+    assert "prior" not in RunOptions().recorded()
+    assert RunOptions(prior="m.pl").recorded()["prior"] == "m.pl"

@@ -183,7 +183,8 @@ def test_the_default_options():
     assert asdict(RunOptions()) == {
         "seed": 0, "phase": "all", "max_trials": None, "consecutive": 2, "eval_trials": 4,
         "create_eval_trials": 5, "video": "key", "gui": False, "strategy": "informative",
-        "world_seed": None, "catalogue_first": None, "demonstrate_creation": False}
+        "world_seed": None, "catalogue_first": None, "demonstrate_creation": False,
+        "prior": None}
 
 
 @pytest.mark.parametrize("strategy, first, tries", [
@@ -290,7 +291,7 @@ def test_read_run_json_without_run_json(tmp_path):
     ({"case": "hook", "options": {"seeds": 1, "zz": 2}},
      "field 'options.seeds' is not an option (catalogue_first, consecutive, "
      "create_eval_trials, demonstrate_creation, eval_trials, gui, max_trials, phase, "
-     "seed, strategy, video, world_seed)"),
+     "prior, seed, strategy, video, world_seed)"),
     ({"case": "hook", "options": {"seed": -1}},
      "field 'options': option seed must be a whole number >= 0, got -1"),
     ({"case": "hook", "options": {}, "world": 3},
@@ -571,7 +572,7 @@ def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
         run_case("hook", tmp_path, options, progress=stop, run_name="stopped")
     assert seen == [f"run folder {tmp_path / 'stopped'}",
                     "demonstration: the trainer shows the task with hook_a2 (loc 1)",
-                    {"case": "hook", "options": asdict(options), "world": None,
+                    {"case": "hook", "options": options.recorded(), "world": None,
                      "drawn_world": None}]
     assert list(tmp_path.iterdir()) == []
 
@@ -726,7 +727,7 @@ def test_open_folder_of_a_new_run_writes_run_json(tmp_path, hook_world):
             tmp_path / "new", [], [], None, False)
         assert said == [f"run folder {tmp_path / 'new'}"]
         assert json.loads((run.path / "run.json").read_text()) == {
-            "case": "hook", "options": asdict(options),
+            "case": "hook", "options": options.recorded(),
             "world": str(hook_world[1].manifest.folder), "drawn_world": drawn}
     finally:
         run.release()
