@@ -436,6 +436,10 @@ def run(
     demonstrate_creation: bool = typer.Option(
         False, "--demonstrate-creation", help="When a catalogued object solved the harder "
         "task, still create a tool afterwards as a demonstration (make hook does)."),
+    prior: Optional[str] = typer.Option(None, "--prior", help="Transfer: start tool-use "
+                                        "learning from another case's learned model (its "
+                                        "run folder or model.pl) where the ontology maps "
+                                        "its literals; test only the rest."),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot,
     video clips)."""
@@ -485,7 +489,7 @@ def run(
                           consecutive=consecutive, eval_trials=eval_trials, video=video,
                           gui=gui, strategy=strategy, world_seed=world_seed,
                           catalogue_first=catalogue_first,
-                          demonstrate_creation=demonstrate_creation)
+                          demonstrate_creation=demonstrate_creation, prior=prior)
     except UnknownStrategy as exc:
         _fail(f"--strategy: {exc}")
     except ValueError as exc:

@@ -47,7 +47,10 @@ if it needs a new module, its use_module/1 below.
 :- use_module(nbr, [nbr_reduce/3]).
 :- use_module(version_space,
               [ vs_init/2, vs_update/3, vs_bounds/3, vs_unknown/2, vs_examples/3,
-                vs_converged/1, vs_covers/3, vs_notes/2, vs_count/3 ]).
+                vs_converged/1, vs_covers/3, vs_notes/2, vs_count/3,
+                vs_init_prior/3, vs_prior/3 ]).
+:- use_module(transfer, [read_prior/2, prior_shared/3, prior_literals/4,
+                          prior_contradicted/4]).
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4, pose_world/5]).
 :- use_module(case, [case_info/2, tool_vocabulary/2, size_context_facts/1,
@@ -108,6 +111,14 @@ api_op(vs_converged(VS), true, vs_converged(VS)).
 api_op(vs_covers(VS, Bound, Example), true, vs_covers(VS, Bound, Example)).
 api_op(vs_notes(VS), Notes, vs_notes(VS, Notes)).
 api_op(vs_count(VS), count(N, Exact), vs_count(VS, N, Exact)).
+% Transfer from a prior case's learned model (transfer.pl).
+api_op(vs_init_prior(Example, Lits), VS, vs_init_prior(Example, Lits, VS)).
+api_op(vs_prior(VS), prior(Kept, Dropped), vs_prior(VS, Kept, Dropped)).
+api_op(read_prior(File), Prior, read_prior(File, Prior)).
+api_op(prior_shared(Case, Prior), Shared, prior_shared(Case, Prior, Shared)).
+api_op(prior_literals(Case, Prior, Example), Lits, prior_literals(Case, Prior, Example, Lits)).
+api_op(prior_contradicted(Case, Prior, Example), Lits,
+       prior_contradicted(Case, Prior, Example, Lits)).
 % Tool creation (replacement.pl) and perception's facts -> literals (abstract_state.pl).
 api_op(replacement(Literal), replacement(General, Alternatives),
        replacement(Literal, General, Alternatives)).

@@ -805,7 +805,8 @@ kb_reset :-
 %!  kb_assert_learned(+Term) is det.
 %
 %   Add what a run learned: Term is learned_model(Task, Action, Pre, Eff) or
-%   learned_hypothesis(Task, Bound, Clause) (Bound is hs or hg), as written in a run's
+%   learned_hypothesis(Task, Bound, Clause) (Bound is hs, hg, or prior: the literals of
+%   h_g a prior gave, transfer.pl), as written in a run's
 %   model.pl (model_file:load_model_file/1 reads it). Raises a domain_error for any
 %   other term. Removed by kb_reset/0.
 %
@@ -823,7 +824,7 @@ kb_assert_learned(Term) :-
         assertz(learned_model_(Task, Action, Pre, Eff))
     ;   Term = learned_hypothesis(Task, Bound, Clause)
     ->  must_be(atom, Task),
-        must_be(oneof([hs, hg]), Bound),
+        must_be(oneof([hs, hg, prior]), Bound),
         assertz(learned_hypothesis_(Task, Bound, Clause))
     ;   domain_error(learned_term, Term)
     ).

@@ -15,6 +15,8 @@ model.pl holds plain terms, one per clause, with a header comment:
     learned_model(Task, Action, Pre, Eff).       % Eff: [add(L), ..., del(L), ...]
     learned_hypothesis(Task, hs, Clause).         % the version space's boundaries
     learned_hypothesis(Task, hg, Clause).
+    learned_hypothesis(Task, prior, Clause).      % a run with a prior: h_g's literals
+                                                  % taken from it (transfer.pl)
 
 The learned model's precondition is the observed model's literals about the robot and
 the task (holding the tool, the cube in the tube, the door open), then h_g: the literals the physics showed necessary. load_model_file/1 reads the terms
@@ -28,7 +30,7 @@ where knowledge:learned_model/4 answers queries.
 :- use_module(library(readutil)).
 :- use_module(library(yall)).
 :- use_module(knowledge, [kb_assert_learned/1]).
-:- use_module(version_space, [vs_bounds/3]).
+:- use_module(version_space, [vs_bounds/3, vs_prior_clause/2]).
 :- use_module(experiment, [hypothesis_parts/4, observed_state/3]).
 :- use_module(library(option)).
 :- use_module(action_model, [innate_action_models/2, action_task_goal/2,
@@ -60,7 +62,13 @@ write_model_file(File, Case, Models, VS) :-
           forall(member(M, Models), write_model_(Out, Case, M, HS-HG)),
           nl(Out),
           portray_clause(Out, learned_hypothesis(Case, hs, HS)),
-          portray_clause(Out, learned_hypothesis(Case, hg, HG))
+          portray_clause(Out, learned_hypothesis(Case, hg, HG)),
+          (   vs_prior_clause(VS, Prior)
+          ->  format(Out, '%   The literals of h_g taken from a prior case\'s learned model (--prior),~n', []),
+              format(Out, '%   not tested here: the stop is certified relative to them.~n', []),
+              portray_clause(Out, learned_hypothesis(Case, prior, Prior))
+          ;   true
+          )
         ),
         close(Out)).
 

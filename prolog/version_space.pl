@@ -1,5 +1,8 @@
 :- module(version_space,
           [ vs_init/2,               % +Example, -VS
+            vs_init_prior/3,         % +Example, +PriorLiterals, -VS
+            vs_prior/3,              % +VS, -Kept, -Dropped
+            vs_prior_clause/2,       % +VS, -Clause
             vs_update/3,             % +VS0, +LabelledExample, -VS
             vs_bounds/3,             % +VS, -HS, -HG
             vs_unknown/2,            % +VS, -Literals
@@ -17,6 +20,7 @@
 :- use_module(library(apply)).
 :- use_module(library(pairs)).
 :- use_module(library(ordsets)).
+:- use_module(library(yall)).
 :- use_module(lgg, [clause_lgg/3]).
 :- use_module(subsumption,
               [ clause_head_body/3, clause_covers/2, clause_violations/3 ]).
@@ -42,6 +46,10 @@ inconsistent:
   - noisy_negative(E): the negative E is covered by h_s, so no literal of h_s
     can exclude it; h_g was left unchanged and E is ignored when h_g is
     specialised later.
+  - prior(L): the literal L of h_g was taken from a prior (vs_init_prior/3), not
+    learned here; while it stays in h_g, the hypotheses keep it (vs_space/4).
+  - prior_dropped(L, E): the positive E violated the prior's literal L (the physics
+    contradicted the prior): L left h_g (and, by the LGG, h_s).
 
 *Free literals.* After an LGG, a literal whose variable occurs nowhere else
 in h_s and has no range (e.g. `handle_length(T, L)` from `medium` and
@@ -89,6 +97,71 @@ vs_init(Example, VS) :-
     maplist(replace_constants_(Map), Body0, Body1),
     dedupe_(Body1, SBody),
     VS = vs(Head, SBody, [], [Example], [], []).
+
+%!  vs_init_prior(+Example, +PriorLiterals, -VS) is det.
+%
+%   As vs_init/2, with h_g starting as the body literals of Example listed in
+%   PriorLiterals (ground, as in Example: transfer:prior_literals/4 gives them) instead
+%   of empty, each noted prior(L). No experiment tests them (the hypotheses keep them,
+%   vs_space/4), so a stop is certified relative to the prior; a positive that
+%   violates one drops it from h_g (noted prior_dropped(L, E)). A literal of
+%   PriorLiterals that Example lacks is ignored.
+%
+%   ==
+%   ?- vs_init_prior((tp(h1, c, t) :- hook(h1), behind(h1, c)), [behind(h1, c)], VS),
+%      vs_bounds(VS, _, HG).
+%   HG = (tp(A, B, C) :- behind(A, B)).
+%   ==
+vs_init_prior(Example, PriorLits, VS) :-
+    must_be(list, PriorLits),
+    vs_init(Example, VS0),
+    clause_head_body(Example, Head0, Body0),
+    Head0 =.. [_|Args],
+    VS0 = vs(Head, SBody, [], Pos, Neg, []),
+    Head =.. [_|Vars],
+    pairs_keys_values(Map, Args, Vars),
+    include(in_example_(Body0), PriorLits, Lits0),
+    maplist(replace_constants_(Map), Lits0, Lits1),
+    include(in_sbody_(SBody), Lits1, Lits2),
+    dedupe_(Lits2, GBody),
+    maplist([L, prior(L)]>>true, GBody, Notes),
+    VS = vs(Head, SBody, GBody, Pos, Neg, Notes).
+
+in_example_(Body, L) :-
+    member_eq_(Body, L).
+
+in_sbody_(SBody, L) :-
+    member_eq_(SBody, L).
+
+%!  vs_prior(+VS, -Kept:list, -Dropped:list) is det.
+%
+%   Kept are the prior's literals still in h_g (copies sharing the head of
+%   vs_bounds/3's copy only by position: compare them as text or by variant), Dropped
+%   the prior(L)-E pairs of literals a positive E contradicted, oldest first. Both []
+%   for a version space without a prior.
+
+vs_prior(VS, Kept, Dropped) :-
+    copy_term(VS, vs(Head, _, GBody, _, _, Notes)),
+    findall(L, ( member(prior(L), Notes), in_body_(Head, GBody, L) ), Kept),
+    findall(L-E, member(prior_dropped(L, E), Notes), Dropped0),
+    reverse(Dropped0, Dropped).
+
+%!  vs_prior_clause(+VS, -Clause) is semidet.
+%
+%   Clause is h_g's head with the prior's literals still in h_g as its body (Head
+%   alone when the physics dropped them all); fails for a version space without a
+%   prior (vs_init/2).
+
+vs_prior_clause(VS, Clause) :-
+    copy_term(VS, vs(Head, _, GBody, _, _, Notes)),
+    memberchk(prior(_), Notes),
+    include(prior_kept_(Notes), GBody, Kept),
+    clause_head_body(Clause, Head, Kept).
+
+prior_kept_(Notes, L) :-
+    member(prior(P), Notes),
+    P == L,
+    !.
 
 replace_constants_(Map, T0, T) :-
     (   atom(T0),
@@ -153,7 +226,11 @@ update_pos_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS) :-
     ->  VS = vs(Head, SBody2, GBody0, Pos, Neg, Notes0)
     ;   exclude(member_eq_(Violated), GBody0, GBody1),
         drop_orphan_ranges_(Head, GBody1, GBody2),
-        Notes1 = [hg_weakened(E, Violated)|Notes0],
+        findall(prior_dropped(L, E),
+                ( member(prior(L), Notes0), member_eq_(Violated, L) ),
+                Dropped),
+        append(Dropped, Notes0, NotesD),
+        Notes1 = [hg_weakened(E, Violated)|NotesD],
         consistent_negatives_(Neg, Notes1, Negs),
         specialise_(Head, SBody2, GBody2, Negs, [], GBody, Left),
         note_noisy_(Left, Notes1, Notes),
@@ -470,9 +547,24 @@ vs_space(VS, HS, Literals, Constraints) :-
               vs_space_positions(Literals, Viol, Set),
               Set \== []
             ),
-            Sets0),
+            Sets1),
+    prior_sets_(VS, PriorSets),
+    append(Sets1, PriorSets, Sets0),
     sort(Sets0, Sets),
     exclude(non_minimal_(Sets), Sets, Constraints).
+
+%   The prior's literals still in h_g, each a constraint of its own position: every
+%   hypothesis keeps it (relative to the prior, it is known necessary).
+prior_sets_(VS, Sets) :-
+    copy_term(VS, vs(Head, SBody, GBody, _, _, Notes)),
+    exclude(range_lit_, SBody, Lits),
+    findall([I],
+            ( member(prior(L), Notes),
+              in_body_(Head, GBody, L),
+              nth1(I, Lits, L1),
+              L1 == L
+            ),
+            Sets).
 
 %!  vs_space_positions(+Literals, +Violated, -Positions) is det.
 %

@@ -457,6 +457,37 @@ class Engine:
         """Return the version space of a first positive example (an opaque term)."""
         return self._must("vs_init", example)
 
+    def vs_init_prior(self, example: Term, literals: Sequence[Term]) -> Term:
+        """Return the version space of a first positive example whose h_g starts with
+        ``literals`` (of the example's body) taken from a prior
+        (``version_space:vs_init_prior/3``)."""
+        return self._must("vs_init_prior", example, list(literals))
+
+    def vs_prior(self, vs: Term) -> tuple[list, list]:
+        """Return ``(kept, dropped)``: the prior's literals still in h_g, and the
+        ``Literal-Example`` pairs the physics contradicted (``version_space:vs_prior/3``)."""
+        reply = self._must("vs_prior", vs)
+        return reply.args[0], reply.args[1]
+
+    def read_prior(self, path: PathLike) -> Term:
+        """Return ``prior(Case, HS, HG)`` read from a run's ``model.pl``
+        (``transfer:read_prior/2``; Prolog's errors as :meth:`call` raises them)."""
+        return self._must("read_prior", str(path))
+
+    def prior_shared(self, case: str, prior: Term) -> list:
+        """Return the literals of the prior's h_g that the ontology maps to ``case``."""
+        return self._must("prior_shared", case, prior)
+
+    def prior_literals(self, case: str, prior: Term, example: Term) -> list:
+        """Return the literals of ``example``'s body the prior's h_g gives
+        (``transfer:prior_literals/4``)."""
+        return self._must("prior_literals", case, prior, example)
+
+    def prior_contradicted(self, case: str, prior: Term, example: Term) -> list:
+        """Return the prior's mapped literals that the demonstration ``example``
+        violates (``transfer:prior_contradicted/4``): not taken."""
+        return self._must("prior_contradicted", case, prior, example)
+
     def vs_update(self, vs: Term, labelled: Term) -> Term:
         """Return the version space after ``pos(Example)`` or ``neg(Example)``."""
         return self._must("vs_update", vs, labelled)

@@ -64,6 +64,10 @@ class RunOptions:
     demonstrate_creation : bool
         When a catalogued object solved the harder task, still create a tool afterwards
         as a demonstration of Algorithm 2 (``make hook`` does).
+    prior : str or None
+        Transfer: a run folder (or its ``model.pl``) of another case whose learned model
+        the version space starts from, where the ontology maps its literals
+        (:mod:`creative_py.learning.prior`); None: learn from the demonstration alone.
     """
 
     seed: int = 0
@@ -78,6 +82,15 @@ class RunOptions:
     world_seed: Optional[int] = None
     catalogue_first: Optional[bool] = None
     demonstrate_creation: bool = False
+    prior: Optional[str] = None
+
+    def recorded(self) -> dict[str, Any]:
+        """The options by name as ``run.json`` and ``summary.json`` record them:
+        ``prior`` only when set (runs recorded before it existed write back the same)."""
+        out = asdict(self)
+        if out["prior"] is None:
+            del out["prior"]
+        return out
 
     @property
     def tries_catalogue(self) -> bool:
@@ -112,6 +125,9 @@ class RunOptions:
         if not isinstance(self.demonstrate_creation, bool):
             raise ValueError(f"option demonstrate_creation must be true or false, got "
                              f"{self.demonstrate_creation!r}")
+        if self.prior is not None and (not isinstance(self.prior, str) or not self.prior):
+            raise ValueError(f"option prior must be a path (a run folder or model.pl), "
+                             f"got {self.prior!r}")
         strategy_named(self.strategy)
 
 
@@ -124,7 +140,7 @@ def run_json(case: str, options: RunOptions, world: Optional[Path],
     """Return the ``run.json`` of a new run: its case, options, world folder and drawn
     world, and ``check``, the SHA-256 of those four (:func:`run_json_check`), by which a
     resume refuses a ``run.json`` edited after the run began."""
-    meta = {"case": case, "options": asdict(options),
+    meta = {"case": case, "options": options.recorded(),
             "world": str(world) if world else None, "drawn_world": drawn}
     return {**meta, "check": run_json_check(meta)}
 

@@ -12,13 +12,15 @@ from typing import Any, Callable, Optional
 from creative_py.bridge import Compound
 from creative_py.learning.creation import CreateResult, ToolCreator
 from creative_py.learning.options import RunOptions
+from creative_py.learning.prior import load_prior
 from creative_py.learning.pddl_files import check_pddl, created_pddl
 from creative_py.learning.tool_use import LearningOptions, ToolUseLearner, UseResult
 from creative_py.learning.trials import TrialRunner, term_text
 from creative_py.records.summary import (CatalogueEntry, CreatedToolSummary, CreateSummary,
                                          Demonstration, Hypotheses, Outcomes, PddlCheck,
                                          PddlChecks, Prediction, PrintSummary,
-                                         StrengthSummary, UsePhase)
+                                         StrengthSummary, UsePhase, UsePrior,
+                                         PriorDrop)
 
 Say = Callable[[str], None]
 
@@ -43,7 +45,8 @@ def learn_to_use(runner: TrialRunner, options: RunOptions, wall: dict[str, float
     lopts = LearningOptions(max_trials=options.max_trials or runner.manifest.trial_budget,
                             consecutive=options.consecutive, strategy=options.strategy)
     t0 = time.perf_counter()
-    use = ToolUseLearner(runner, lopts).learn()
+    prior = load_prior(engine, runner.case, options.prior) if options.prior else None
+    use = ToolUseLearner(runner, lopts, prior).learn()
     wall["use"] = round(time.perf_counter() - t0, 2)
     engine.write_model_file(run.path / "model.pl", runner.case, use.models, use.vs)
     hs, hg = runner.bounds(use.vs)
@@ -53,7 +56,12 @@ def learn_to_use(runner: TrialRunner, options: RunOptions, wall: dict[str, float
         "demonstration": Demonstration(tool=use.demo_tool),
         "use": UsePhase(trials=len(use.trials), converged=use.converged,
                         trials_to_converge=use.trials_to_converge,
-                        strategy=options.strategy, stop=use.stop),
+                        strategy=options.strategy, stop=use.stop,
+                        prior=(UsePrior(source=str(use.prior.source), case=use.prior.case,
+                                        taken=list(use.prior_taken),
+                                        dropped=[PriorDrop(literal=lit, trial=i)
+                                                 for lit, i in use.prior_dropped])
+                               if use.prior is not None else None)),
         # The version space after the demonstration, and the information-theoretic
         # bound: with binary outcomes, telling N0 hypotheses apart in the worst case
         # takes ceil(log2 N0) trials.

@@ -16,7 +16,7 @@ from __future__ import annotations
 import logging
 import shutil
 import time
-from dataclasses import asdict, replace
+from dataclasses import replace
 from pathlib import Path
 from typing import Any, Callable, Optional
 
@@ -26,6 +26,7 @@ from creative_py.learning.checks import check_catalogue, check_manifest, require
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.learning.options import RunOptions, read_run_json, run_json
+from creative_py.learning.prior import load_prior
 from creative_py.learning.trials import TrialRunner
 from creative_py.records.folder import RunFolder, read_resume
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
@@ -108,6 +109,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     t_start = time.perf_counter()
     engine, world, drawn = _checked_world(case, options, world_dir, drawn,
                                           resume[0].path / "run.json" if resume else None)
+    if options.prior:
+        load_prior(engine, case, options.prior)  # a bad --prior fails before the folder
     run, replay, lines, before, resumed = _open_folder(out, case, options, world_dir,
                                                        drawn, run_name, resume, say)
     clips: Optional[ClipKeeper] = None
@@ -116,7 +119,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         clips = runner.clips
         wall: dict[str, float] = {}
         parts: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
-                                 "options": asdict(options), "world_seed": options.world_seed,
+                                 "options": options.recorded(), "world_seed": options.world_seed,
                                  "drawn_world": drawn,
                                  **phases.case_facts(world.manifest, options)}
         use, learned = phases.learn_to_use(runner, options, wall, say)

@@ -30,6 +30,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Optional
 
 from creative_py.bridge import Compound, Engine, Term, fact_term
+from creative_py.learning.prior import Prior
 from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
 
@@ -157,6 +158,14 @@ class UseResult:
     vs_count_initial: int = 0
     """The hypotheses after the demonstration (``version_space:vs_count/3``)."""
     vs_count_initial_exact: bool = True
+    prior: Optional[Prior] = None
+    """The prior the version space started from (``--prior``), or None."""
+    prior_taken: tuple[str, ...] = ()
+    """The literals h_g took from the prior, as text (not tested)."""
+    prior_dropped: tuple[tuple[str, int], ...] = ()
+    """The prior's literals a trial contradicted (it succeeded though it violated
+    them), with that trial's number (0: the demonstration, whose tool lacks them): not
+    in h_g, learned afresh."""
 
 
 class ToolUseLearner:
@@ -167,13 +176,18 @@ class ToolUseLearner:
     runner : TrialRunner
         Runs and records the trials (its world's manifest names the case).
     options : LearningOptions
+    prior : Prior or None
+        Another case's learned model (:func:`creative_py.learning.prior.load_prior`):
+        the version space starts with the literals the ontology maps from it in h_g.
     """
 
-    def __init__(self, runner: TrialRunner, options: LearningOptions = LearningOptions()) -> None:
+    def __init__(self, runner: TrialRunner, options: LearningOptions = LearningOptions(),
+                 prior: Optional[Prior] = None) -> None:
         self.runner = runner
         self.engine: Engine = runner.engine
         self.case = runner.case
         self.options = options
+        self.prior = prior
 
     def observe_demonstration(self) -> tuple[Term, Term, str]:
         """Run the trainer's demonstration and build the new action model from it.
@@ -218,7 +232,24 @@ class ToolUseLearner:
         runner, opts = self.runner, self.options
         strategy = strategy_named(opts.strategy)
         models, example, demo_tool = self.observe_demonstration()
-        vs = self.engine.vs_init(example)
+        taken: list[Term] = []
+        if self.prior is not None:
+            taken = list(self.engine.prior_literals(self.case, self.prior.term, example))
+            vs = self.engine.vs_init_prior(example, taken)
+            runner.progress(f"prior from case {self.prior.case} ({self.prior.source}): "
+                            f"h_g starts with {len(taken)} literal(s), not tested: "
+                            + (", ".join(str(t) for t in taken) or "none"))
+        else:
+            vs = self.engine.vs_init(example)
+        dropped: list[tuple[str, int]] = []
+        if self.prior is not None:
+            # The demonstration is the first trial the prior can be wrong about: a
+            # literal it violates is contradicted there (trial 0) and not taken.
+            for lit in self.engine.prior_contradicted(self.case, self.prior.term, example):
+                dropped.append((str(lit), 0))
+                runner.progress(f"the demonstration contradicted the prior: {lit} "
+                                "not taken, learned afresh")
+        n_demo = len(dropped)
         n0, exact0 = self.engine.vs_count(vs)
         runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}; "
                         f"{n0} hypotheses{'' if exact0 else ' at most'}")
@@ -241,6 +272,8 @@ class ToolUseLearner:
                     stop = strategy.stop
                     break
             rec, vs = self._trial(strategy, exp, i, vs, task, decision, skip)
+            if self.prior is not None:
+                self._note_dropped(vs, i, dropped, n_demo)
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
@@ -260,7 +293,19 @@ class ToolUseLearner:
         else:
             converged = stop == strategy.stop
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
-                         demo_tool, time.perf_counter() - t0, stop, n0, exact0)
+                         demo_tool, time.perf_counter() - t0, stop, n0, exact0,
+                         self.prior, tuple(str(t) for t in taken), tuple(dropped))
+
+    def _note_dropped(self, vs: Term, i: int, dropped: list[tuple[str, int]],
+                      n_demo: int) -> None:
+        """Record which of the prior's literals trial ``i`` contradicted (after the
+        ``n_demo`` the demonstration did)."""
+        _kept, now = self.engine.vs_prior(vs)
+        for pair in now[len(dropped) - n_demo:]:
+            lit = pair.args[0] if isinstance(pair, Compound) else pair
+            dropped.append((str(lit), i))
+            self.runner.progress(f"trial {i} contradicted the prior: {lit} dropped from "
+                                 "h_g, learned afresh")
 
     def _trial(self, strategy: Strategy, exp: Term, i: int, vs: Term, task: Any,
                decision: float, skip: list[Term]) -> tuple[TrialRecord, Term]:

@@ -169,6 +169,29 @@ class Demonstration(Part):
 
 
 @dataclass(frozen=True, kw_only=True)
+class PriorDrop(Part):
+    """One literal of the prior that a trial contradicted (``use.prior.dropped``)."""
+
+    literal: Optional[str] = None
+    trial: Optional[int] = None
+    """The tool-use trial that succeeded though it violated the literal."""
+
+
+@dataclass(frozen=True, kw_only=True)
+class UsePrior(Part):
+    """``use.prior``: the prior case's learned model the version space started from
+    (``--prior``, :mod:`creative_py.learning.prior`)."""
+
+    source: Optional[str] = None
+    """The model file read."""
+    case: Optional[str] = None
+    taken: list[str] = field(default_factory=list)
+    """The literals h_g took from the prior (not tested: the stop is certified
+    relative to them)."""
+    dropped: list[PriorDrop] = field(default_factory=list)
+
+
+@dataclass(frozen=True, kw_only=True)
 class UsePhase(Part):
     """``use``: tool-use learning (Algorithm 1)."""
 
@@ -178,6 +201,8 @@ class UsePhase(Part):
     strategy: Optional[str] = None
     stop: Optional[str] = None
     """``confirmed``, ``certified``, ``exhausted`` or ``budget``."""
+    prior: Optional[UsePrior] = _omit()
+    """The prior of a transfer run (None: learned without one)."""
 
 
 @dataclass(frozen=True, kw_only=True)

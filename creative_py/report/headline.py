@@ -96,6 +96,12 @@ def headline(run: RunContents) -> Headline:
         if run.paper_trials:
             text += f"; the paper's robot used {run.paper_trials}"
         out.lines.append(text + ".")
+        if use.prior is not None:
+            out.lines.append(f"Started from case {use.prior.case}'s learned model: "
+                             f"{len(use.prior.taken)} literal(s) of h_g taken untested "
+                             "(the stop is certified relative to them)"
+                             + (f", {len(use.prior.dropped)} dropped by the physics"
+                                if use.prior.dropped else "") + ".")
         out.figures.append(Figure("use.trials", n, f"{n}" + (f" of {run.budget}"
                                                                if run.budget else ""),
                                   "tool-use trials (of the budget)"

@@ -541,6 +541,16 @@ def _hypotheses_section(run: RunContents) -> str:
         for key, clause in (("hs", hyp.hs), ("hg", hyp.hg)):
             if clause is not None:
                 out.append(f"<h3>{names[key]}</h3>{_clause_html(clause)}")
+    prior = run.summary.use.prior if run.summary.use is not None else None
+    if prior is not None:
+        out.append(f"<h3>Taken from the prior (case {escape(prior.case or '?')}), not "
+                   "tested: the stop is certified relative to them</h3><pre>"
+                   + escape("\n".join(prior.taken) or "none") + "</pre>")
+        if prior.dropped:
+            out.append("<h3>Prior literals the physics contradicted (dropped, learned "
+                       "afresh)</h3><pre>" + escape("\n".join(
+                           f"{d.literal} (trial {d.trial})" for d in prior.dropped))
+                       + "</pre>")
     create = run.summary.create
     models = create.model if create is not None else None
     if models:

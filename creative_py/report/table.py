@@ -69,6 +69,12 @@ def summary_lines(run: RunContents) -> list[str]:
     hyp = s.hypotheses or Hypotheses()
     for key, clause in (("hs", hyp.hs), ("hg", hyp.hg)):
         lines.append(f"{key}: {readable_term('?' if clause is None else clause)}")
+    prior = s.use.prior if s.use is not None else None
+    if prior is not None:
+        lines.append(f"prior (case {prior.case}), taken untested: "
+                     + (", ".join(prior.taken) or "none")
+                     + "".join(f"; dropped {d.literal} (trial {d.trial})"
+                               for d in prior.dropped))
     if s.plan is not None:
         lines.append(f"plan: {s.plan}")
     for task, answer in (s.pddl.tasks() if s.pddl is not None else []):

@@ -66,6 +66,12 @@ spatial_definition(hook, hook_flat(tool), hook_pose(_Dx, _Dy, Roll),
 spatial_definition(hook, hook_flat(tool), hook_pose(_Dx, _Dy, Roll),
                    [Roll =< -1.2]).
 
+%   spatial_meaning(?Case, ?Template, ?Meaning): what a spatial relation means across
+%   cases (prolog/transfer.pl: a prior's literal transfers to a case that gives its own
+%   relation the same meaning).  working_part_down(tool): the tool's working part (a
+%   prong, a blade) turned down across the pull's path, roll within 0.35 rad of it.
+spatial_meaning(hook, hook_down(tool), working_part_down(tool)).
+
 %   pose_domain(?Case, ?PoseTerm, ?Constraints): where a pose can be at all.  The roll
 %   stays within +-pi/2 (prong down to prong flat on either side): a prong rolled
 %   further points up, away from anything it could pull, and the arm's insertion motion

@@ -50,6 +50,12 @@ spatial_definition(paddle_tube, blade_flat(tool), paddle_pose(_Dx, _Dy, Roll),
 spatial_definition(paddle_tube, blade_flat(tool), paddle_pose(_Dx, _Dy, Roll),
                    [Roll =< -1.2]).
 
+%   spatial_meaning(?Case, ?Template, ?Meaning): what a spatial relation means across
+%   cases (prolog/transfer.pl: a prior's literal transfers to a case that gives its own
+%   relation the same meaning).  working_part_down(tool): the tool's working part (a
+%   prong, a blade) turned down across the pull's path, roll within 0.35 rad of it.
+spatial_meaning(paddle_tube, blade_upright(tool), working_part_down(tool)).
+
 pose_domain(paddle_tube, paddle_pose(Dx, Dy, Roll),
             [Dx >= -tube_length, Dx =< tube_length, Dy >= -dy_room, Dy =< dy_room,
              Roll >= -pi/2, Roll =< pi/2]).

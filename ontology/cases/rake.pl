@@ -110,6 +110,12 @@ spatial_definition(rake, hook_down(tool), rake_pose(_, _, Roll),
 spatial_definition(rake, hook_flat(tool), rake_pose(_, _, Roll), [Roll >= 1.2]).
 spatial_definition(rake, hook_flat(tool), rake_pose(_, _, Roll), [Roll =< -1.2]).
 
+%   spatial_meaning(?Case, ?Template, ?Meaning): what a spatial relation means across
+%   cases (prolog/transfer.pl: a prior's literal transfers to a case that gives its own
+%   relation the same meaning).  working_part_down(tool): the tool's working part (a
+%   prong, a blade) turned down across the pull's path, roll within 0.35 rad of it.
+spatial_meaning(rake, hook_down(tool), working_part_down(tool)).
+
 pose_domain(rake, rake_pose(Dx, Dy, Roll),
             [Dx >= -shelf_depth, Dx =< shelf_depth, Dy >= -dy_room, Dy =< dy_room,
              Roll >= -pi/2, Roll =< pi/2]).

@@ -11,6 +11,7 @@ inputs.
 from __future__ import annotations
 
 import copy
+import hashlib
 import json
 import shutil
 import time
@@ -25,7 +26,7 @@ from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.creation import CreatedTool, CreateResult
 from creative_py.learning.checks import (catalogue_ranges, check_catalogue, check_manifest,
                                          require_display)
-from creative_py.learning.options import RunOptions, read_run_json
+from creative_py.learning.options import RunOptions, read_run_json, run_json
 from creative_py.learning.pddl_files import check_pddl, created_pddl, plan_steps
 from creative_py.learning.phases import _relative, case_facts, creation_summary
 from creative_py.learning.run import (_checked_world, _earlier_summary, _finish, _open_folder,
@@ -194,7 +195,8 @@ def test_the_default_options():
     assert asdict(RunOptions()) == {
         "seed": 0, "phase": "all", "max_trials": None, "consecutive": 2, "eval_trials": 4,
         "create_eval_trials": 5, "video": "key", "gui": False, "strategy": "informative",
-        "world_seed": None, "catalogue_first": None, "demonstrate_creation": False}
+        "world_seed": None, "catalogue_first": None, "demonstrate_creation": False,
+        "prior": None}
 
 
 @pytest.mark.parametrize("strategy, first, tries", [
@@ -292,8 +294,8 @@ def test_read_run_json_without_run_json(tmp_path):
     ('{"case": ', "not JSON (Expecting value)"),
     (b'{"case": "\xff"}', "not JSON ('utf-8' codec can't decode byte 0xff in position 10: "
                           "invalid start byte)"),
-    ("[1, 2]", "a JSON object with keys case, options, world, drawn_world was expected, "
-               "not a list"),
+    ("[1, 2]", "a JSON object with keys case, options, world, drawn_world, check was "
+               "expected, not a list"),
     ({"options": {}}, "field 'case' is missing"),
     ({"case": "hook"}, "field 'options' is missing"),
     ({"case": 3, "options": {}}, "field 'case' must be text, got 3"),
@@ -301,7 +303,7 @@ def test_read_run_json_without_run_json(tmp_path):
     ({"case": "hook", "options": {"seeds": 1, "zz": 2}},
      "field 'options.seeds' is not an option (catalogue_first, consecutive, "
      "create_eval_trials, demonstrate_creation, eval_trials, gui, max_trials, phase, "
-     "seed, strategy, video, world_seed)"),
+     "prior, seed, strategy, video, world_seed)"),
     ({"case": "hook", "options": {"seed": -1}},
      "field 'options': option seed must be a whole number >= 0, got -1"),
     ({"case": "hook", "options": {}, "world": 3},
@@ -582,8 +584,7 @@ def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
         run_case("hook", tmp_path, options, progress=stop, run_name="stopped")
     assert seen == [f"run folder {tmp_path / 'stopped'}",
                     "demonstration: the trainer shows the task with hook_a2 (loc 1)",
-                    {"case": "hook", "options": asdict(options), "world": None,
-                     "drawn_world": None},
+                    run_json("hook", options, None, None),
                     "interrupted before the first trial: nothing was kept"]
     assert list(tmp_path.iterdir()) == []
 
@@ -761,9 +762,11 @@ def test_open_folder_of_a_new_run_writes_run_json(tmp_path, hook_world):
         assert (run.path, replay, lines, before, run.sealed) == (
             tmp_path / "new", [], [], None, False)
         assert said == [f"run folder {tmp_path / 'new'}"]
+        meta = {"case": "hook", "options": options.recorded(),
+                "world": str(hook_world[1].manifest.folder), "drawn_world": drawn}
         assert json.loads((run.path / "run.json").read_text()) == {
-            "case": "hook", "options": asdict(options),
-            "world": str(hook_world[1].manifest.folder), "drawn_world": drawn}
+            **meta, "check": hashlib.sha256(json.dumps(meta, sort_keys=True).encode()
+                                            ).hexdigest()}
     finally:
         run.release()
 

@@ -1,0 +1,194 @@
+:- module(transfer,
+          [ read_prior/2,            % +File, -Prior
+            prior_shared/3,          % +Case, +Prior, -Shared
+            prior_literals/4,        % +Case, +Prior, +Example, -Literals
+            prior_contradicted/4     % +Case, +Prior, +Example, -Literals
+          ]).
+
+/** <module> Transfer: a learned model of one case as the prior of another
+
+A prior is the learned model of an earlier run (its model.pl, model_file.pl writes it):
+
+    prior(PriorCase, HS, HG)
+
+with the two boundary clauses of its version space. What it says about a new case is
+only what the ontology maps: a literal of the prior's h_g (one the physics showed
+necessary there) transfers to the new case when both cases declare its predicate with
+the same meaning and roles:
+
+  - a structural literal (structural_predicate(Class, Name/Arity) of a tool kind) when
+    both cases' tool classes are the same hierarchy (case_tool_class/2: the rake and
+    the hook are both hook_like, ontology/kinds/hook_like.pl);
+  - a spatial literal when both cases declare a spatial_definition/4 with the same
+    template, roles included (behind(tool, target); its geometry is each case's own),
+    or templates with the same roles to which both cases give the same meaning with
+    the optional hook spatial_meaning(?Case, ?Template, ?Meaning) (a prong turned down
+    and a blade upright are both the working part across the pull's path); the
+    literal then takes the new case's name.
+
+The roles map through the version space's head, tool_pose(Tool, Target, Context): the
+prior's head variables are bound to the new example's, so a literal transfers only as
+the very literal of the new demonstration (handle_length(T, medium) does not transfer
+to a demonstration whose tool has handle_length(T, long)). Task literals never transfer
+(no experiment tests them). No name of a case, class or predicate is written here: the
+mapping is what the two cases' ontologies declare.
+
+The version space then starts with the transferred literals in h_g
+(version_space:vs_init_prior/3): no experiment tests them, the stop is certified
+relative to them, and a success that violates one drops it (the physics contradicted
+the prior).
+*/
+
+:- use_module(library(error)).
+:- use_module(library(lists)).
+:- use_module(library(apply)).
+:- use_module(case, [must_be_case/1, case_answer/1, case_holds/1, class_holds/1,
+                      case_knowledge/2]).
+
+%!  read_prior(+File, -Prior) is det.
+%
+%   Prior is prior(Case, HS, HG) from the learned_hypothesis(Case, hs|hg, Clause)
+%   terms of the model file File (model_file.pl). Raises existence_error(file, File)
+%   for a missing file, the reader's syntax_error, and
+%   domain_error(learned_model_file, File) when File has no two bounds of one case.
+
+read_prior(File, prior(Case, HS, HG)) :-
+    must_be(atom, File),
+    (   exists_file(File)
+    ->  true
+    ;   existence_error(file, File)
+    ),
+    setup_call_cleanup(open(File, read, In, [encoding(utf8)]),
+                       read_terms_(In, Terms),
+                       close(In)),
+    (   memberchk(learned_hypothesis(Case, hs, HS), Terms),
+        memberchk(learned_hypothesis(Case, hg, HG), Terms),
+        atom(Case)
+    ->  true
+    ;   domain_error(learned_model_file, File)
+    ).
+
+read_terms_(In, Terms) :-
+    read_term(In, T, []),
+    (   T == end_of_file
+    ->  Terms = []
+    ;   Terms = [T|Ts],
+        read_terms_(In, Ts)
+    ).
+
+%!  prior_shared(+Case, +Prior, -Shared:list) is det.
+%
+%   Shared are the literals of the prior's h_g whose predicate the ontology maps from
+%   the prior's case to Case (see the module comment), in Case's vocabulary.
+%   [] means the prior says nothing about Case. Raises existence_error(case, C) when
+%   the prior's case is not in the loaded ontology.
+
+prior_shared(Case, prior(PCase, _HS, HG), Shared) :-
+    must_be_case(Case),
+    must_be_case(PCase),
+    body_list_(HG, _, Body),
+    foldl(transfer_literal_(PCase, Case), Body, Shared, []).
+
+transfer_literal_(PCase, Case, L, Out0, Out) :-
+    (   transferable_(PCase, Case, L, L1)
+    ->  Out0 = [L1|Out]
+    ;   Out0 = Out
+    ).
+
+%!  prior_literals(+Case, +Prior, +Example, -Literals:list) is det.
+%
+%   Literals are the body literals of Example (the ground first positive of the new
+%   case's version space, tool_pose(Tool, Target, Context) :- ...) that the prior's
+%   h_g names once its head is bound to Example's and that prior_shared/3 maps: the
+%   literals the version space takes from the prior.
+
+prior_literals(Case, Prior, Example, Literals) :-
+    prior_shared(Case, Prior, Shared0),
+    Prior = prior(_, _, HG),
+    copy_term(HG-Shared0, HG1-Shared),
+    body_list_(HG1, PHead, _),
+    body_list_(Example, Head, Body),
+    (   functor(PHead, N, A),
+        functor(Head, N, A)
+    ->  PHead = Head,
+        include(in_body_(Body), Shared, Literals0),
+        list_to_set(Literals0, Literals)
+    ;   Literals = []
+    ).
+
+%!  prior_contradicted(+Case, +Prior, +Example, -Literals:list) is det.
+%
+%   Literals are the mapped literals of the prior's h_g (prior_shared/3), with its head
+%   bound to Example's, that the demonstration Example violates: ground and not in its
+%   body (a prior's handle_length(T, long) against a demonstration whose tool's
+%   handle is medium). The demonstration succeeded without them, so the physics contradicts the
+%   prior there: they are not taken.
+
+prior_contradicted(Case, Prior, Example, Literals) :-
+    prior_shared(Case, Prior, Shared0),
+    Prior = prior(_, _, HG),
+    copy_term(HG-Shared0, HG1-Shared),
+    body_list_(HG1, PHead, _),
+    body_list_(Example, Head, Body),
+    (   functor(PHead, N, A),
+        functor(Head, N, A)
+    ->  PHead = Head,
+        include(violated_(Body), Shared, Literals0),
+        list_to_set(Literals0, Literals)
+    ;   Literals = []
+    ).
+
+violated_(Body, L) :-
+    ground(L),
+    \+ memberchk(L, Body).
+
+in_body_(Body, L) :-
+    ground(L),
+    memberchk(L, Body).
+
+transferable_(PCase, Case, L, L1) :-
+    compound(L),
+    L \= in_range(_, _, _),
+    functor(L, N, A),
+    (   structural_(PCase, N/A),
+        structural_(Case, N/A),
+        case_answer(case_tool_class(PCase, Class)),
+        case_answer(case_tool_class(Case, Class))
+    ->  L1 = L
+    ;   case_holds(spatial_definition(PCase, T, _, _)),
+        functor(T, N, A),
+        case_holds(spatial_definition(Case, T2, _, _)),
+        same_meaning_(PCase, T, Case, T2)
+    ->  functor(T2, N2, _),
+        L =.. [_|Args],
+        L1 =.. [N2|Args]
+    ).
+
+%   Two spatial templates mean the same when they are the same template (name and
+%   roles) or when both cases give them the same spatial_meaning/3 with the same roles.
+same_meaning_(_, T, _, T2) :-
+    T2 =@= T,
+    !.
+same_meaning_(PCase, T, Case, T2) :-
+    T =.. [_|Roles],
+    T2 =.. [_|Roles2],
+    Roles == Roles2,
+    case_knowledge(PCase, spatial_meaning(PCase, T0, M)),
+    T0 =@= T,
+    case_knowledge(Case, spatial_meaning(Case, T1, M1)),
+    T1 =@= T2,
+    M1 =@= M,
+    !.
+
+structural_(Case, PI) :-
+    case_answer(case_tool_class(Case, Class)),
+    once(class_holds(structural_predicate(Class, PI))).
+
+body_list_((H :- B), H, L) :- !,
+    conj_list_(B, L).
+body_list_(H, H, []).
+
+conj_list_(true, []) :- !.
+conj_list_((A, B), [A|L]) :- !,
+    conj_list_(B, L).
+conj_list_(A, [A]).
