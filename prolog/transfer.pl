@@ -103,18 +103,7 @@ transfer_literal_(PCase, Case, L, Out0, Out) :-
 %   literals the version space takes from the prior.
 
 prior_literals(Case, Prior, Example, Literals) :-
-    prior_shared(Case, Prior, Shared0),
-    Prior = prior(_, _, HG),
-    copy_term(HG-Shared0, HG1-Shared),
-    body_list_(HG1, PHead, _),
-    body_list_(Example, Head, Body),
-    (   functor(PHead, N, A),
-        functor(Head, N, A)
-    ->  PHead = Head,
-        include(in_body_(Body), Shared, Literals0),
-        list_to_set(Literals0, Literals)
-    ;   Literals = []
-    ).
+    mapped_literals_(Case, Prior, Example, in_body_, Literals).
 
 %!  prior_contradicted(+Case, +Prior, +Example, -Literals:list) is det.
 %
@@ -125,6 +114,15 @@ prior_literals(Case, Prior, Example, Literals) :-
 %   prior there: they are not taken.
 
 prior_contradicted(Case, Prior, Example, Literals) :-
+    mapped_literals_(Case, Prior, Example, violated_, Literals).
+
+%   mapped_literals_(+Case, +Prior, +Example, +Test, -Literals) is det.
+%
+%   The mapped literals of the prior's h_g (prior_shared/3), its head bound to
+%   Example's, for which call(Test, Body, Literal) holds on Example's body; [] when the
+%   two heads differ.
+
+mapped_literals_(Case, Prior, Example, Test, Literals) :-
     prior_shared(Case, Prior, Shared0),
     Prior = prior(_, _, HG),
     copy_term(HG-Shared0, HG1-Shared),
@@ -133,7 +131,7 @@ prior_contradicted(Case, Prior, Example, Literals) :-
     (   functor(PHead, N, A),
         functor(Head, N, A)
     ->  PHead = Head,
-        include(violated_(Body), Shared, Literals0),
+        include(call(Test, Body), Shared, Literals0),
         list_to_set(Literals0, Literals)
     ;   Literals = []
     ).
