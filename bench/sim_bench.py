@@ -148,6 +148,21 @@ def bench_case(manifest, args) -> dict:
     }
 
 
+def by_hand_refusal(manifest) -> str | None:
+    """Return why the trainer cannot place ``manifest``'s tool by hand (its pose skill's
+    primitive has no ``by_hand`` option), or None when it can."""
+    from creative_py.backends.pybullet.primitives import primitive
+
+    world = load_world(manifest)
+    for binding in manifest.skills:
+        if binding.pose:
+            name = world.skills[binding.name].primitive
+            if "by_hand" not in primitive(name).options:
+                return (f"--by-hand: case {manifest.id!r}: its pose skill {binding.name!r} "
+                        f"binds {name}, which has no trainer placing (by_hand)")
+    return None
+
+
 def main(argv: list[str] | None = None) -> None:
     """Run the benchmark and write its results."""
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -160,10 +175,20 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--out-dir", type=Path, default=RESULTS)
     args = ap.parse_args(argv)
     logging.basicConfig(level=logging.WARNING)
-    cases = load_cases()
-    for cid in args.cases or sorted(cases):
+    cases = {cid: m for cid, m in load_cases().items() if m.backend == "pybullet"}
+    chosen = args.cases or sorted(cases)
+    for cid in chosen:
         if cid not in cases:
-            sys.exit(f"unknown case {cid!r}; cases: {', '.join(sorted(cases))}")
+            print(f"sim_bench: unknown pybullet case {cid!r}; cases: "
+                  f"{', '.join(sorted(cases))}", file=sys.stderr)
+            sys.exit(2)
+    if args.by_hand:
+        refusals = {cid: by_hand_refusal(cases[cid]) for cid in chosen}
+        if args.cases and any(refusals.values()):
+            print(f"sim_bench: {next(r for r in refusals.values() if r)}", file=sys.stderr)
+            sys.exit(2)
+        chosen = [cid for cid in chosen if not refusals[cid]]
+    for cid in chosen:
         record = bench_case(cases[cid], args)
         out = args.out_dir / f"sim_{cid}{'_by_hand' if args.by_hand else ''}.json"
         out.parent.mkdir(parents=True, exist_ok=True)
