@@ -321,6 +321,12 @@ def test_every_installed_backend_s_world_and_episode_have_the_protocol_s_members
         module = backend(name)
     except BackendError as exc:
         pytest.skip(str(exc))
+    from creative_py.backends import DEFAULT_BACKEND
+
     assert signature_mismatches(Episode, module.Episode) == []
-    manifest = next(m for _, m in sorted(load_cases().items()) if m.backend == name)
+    # A backend that ships no case of its own (one that drives an arm over a world
+    # described by the default backend's files) is checked on a default backend's case.
+    cases = sorted(load_cases().items())
+    manifest = next((m for _, m in cases if m.backend == name),
+                    next(m for _, m in cases if m.backend == DEFAULT_BACKEND))
     assert signature_mismatches(World, module.load_world(manifest)) == []
