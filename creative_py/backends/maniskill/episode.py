@@ -226,8 +226,9 @@ class Episode:
         ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry])
               and d.move(beside * [1, 1, 0] + [0, 0, carry])
               and d.move(beside, settle=int(opts["settle_steps"]))
-              and d.move(tcp, settle=int(opts["settle_steps"]),
-                         step_m=float(opts["slide_step_m"])))
+              and (float(opts["side_clear"]) == 0.0  # lowered in place: no slide
+                   or d.move(tcp, settle=int(opts["settle_steps"]),
+                             step_m=float(opts["slide_step_m"]))))
         self.state["place_tcp"] = tcp
         return SkillOutcome("ok") if ok else self._out_of_steps()
 
