@@ -77,8 +77,10 @@ def run_figures(run: Path, recs: list[dict]) -> dict:
             "budget": summary.get("trial_budget"), "strategy": summary["use"]["strategy"],
             "stop": summary["use"]["stop"],
             "env_steps": sum(int(r["verdict"]["measures"]["control_steps"]) for r in use),
-            "hg": summary["hypotheses"]["hg"],
+            "hg": summary["hypotheses"]["hg"], "hs": summary["hypotheses"]["hs"],
             "eval": summary["eval"]["outcomes"],
+            "use_sequence": [{"tool": r["tool"], "tested": r["tested"], "pose": r["pose"],
+                              "outcome": r["outcome"]} for r in use],
             "wall_time_s": summary.get("wall_time_s"),
             "create": {"variant": create.get("variant"), "trials": create.get("trials"),
                        "sequence": [{"tool": r["tool"], "outcome": r["outcome"]}
