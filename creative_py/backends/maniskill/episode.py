@@ -1,23 +1,24 @@
 """One trial of a ManiSkill case: ManiSkill's environment driven by the manifest's skills.
 
 An episode resets ManiSkill's environment (:mod:`creative_py.backends.maniskill.env`) with the
-location's seed, so the robot, the tool and the cube start in ManiSkill's own seeded
-initial state; the tool is the catalogued (or created) object, built from its spec's
+location's seed, so the robot, the tool and the target (the actors ``tasks.toml``'s
+``[env]`` names) start in ManiSkill's own seeded initial state; the tool is the catalogued (or created) object, built from its spec's
 boxes. The skills run the primitives their manifest entries bind, each a few straight
 moves of the end-effector pose controller (:mod:`creative_py.backends.maniskill.skills`).
 
 Perception: the primitive facts come from the simulator's state, not from cameras
-(``pose/5`` and ``size/4`` of the cube from its actor's pose and ManiSkill's cube
-size; the held tool's ``tip_position/4``, ``tool_roll/2`` and ``tool_axis_y/2`` from
+(``pose/5`` and ``size/4`` of the target from its actor's pose and ``[env]
+target_half``; the held tool's ``tip_position/4``, ``tool_roll/2`` and ``tool_axis_y/2`` from
 the tool actor's pose and its spec; ``reach_zone/4`` of the goal region from the robot
-base's pose and ``tasks.toml``'s radius; every object's catalogue facts from its kind).
+base's or the goal actor's pose and ``tasks.toml``'s radius; every object's catalogue
+facts from its kind).
 
 While the tool acts, the contact load on it is read from SAPIEN's contacts
 (:mod:`creative_py.backends.maniskill.loads`), for the strength check of a created tool.
 
 The goal verdict is ManiSkill's ``env.evaluate()["success"]`` and nothing else; the
-Verdict records the cube's distance to the base in xy and ManiSkill's own
-``cube_distance`` and ``cube_progress``. Steps are ManiSkill control steps
+Verdict records the target's distance to the goal region's centre in xy and the
+``evaluate()`` entries ``[env] measures`` names (``cube_distance``, ...). Steps are ManiSkill control steps
 (``env.step`` calls, 20 Hz), counted against the world's ``max_steps``; a skill that
 runs out of them reports its motion ``blocked``. A trial is run above the boundary
 (:func:`creative_py.simulator.trial.run_trial`), as every backend's.
