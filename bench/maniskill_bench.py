@@ -9,7 +9,8 @@ The pose's world target comes from the engine's pose solution, the verdict from
 ManiSkill's ``evaluate()["success"]``. Each seed is also tried without a tool (a bare-finger
 pull: the closed gripper lowered 4.5 cm behind the cube's centre, then drawn towards the
 robot base): a seed solved that way needs no tool, and the success rate is given both
-over all seeds and over the seeds that need the tool. Writes ``bench/results/maniskill.json``: per
+over all seeds and over the seeds that need the tool. Writes ``bench/results/maniskill.json``
+(or ``--out``): per
 seed the outcome, ManiSkill's measures and the control steps; the success rate; the
 trials and simulated environment steps the run took to learn (with ``--run``).
 """
@@ -18,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import time
 from dataclasses import replace
 from pathlib import Path
@@ -26,9 +28,13 @@ HERE = Path(__file__).resolve().parent
 
 
 def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
-    """Return whether ManiSkill's evaluate() says success after a bare-finger pull: the
-    closed gripper goes down 4.5 cm behind the cube (away from the robot) and is drawn
-    straight towards the robot base until it is 0.45 m from it (same step budget)."""
+    """Return whether ManiSkill's evaluate() says success after a bare-finger move (same
+    step budget). A goal region about the robot base: the closed gripper goes down
+    4.5 cm behind the target (away from the robot) and is drawn straight towards the
+    robot base until it is 0.45 m from it. A goal region about an actor: the closed
+    gripper goes down 4.5 cm behind the target on the side away from the goal's centre
+    and pushes it along that line until the target's centre would be 2 cm past the
+    goal's, then holds still for 6 control steps."""
     import numpy as np
 
     from creative_py.backends.maniskill.skills import CLOSED
@@ -37,11 +43,19 @@ def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
         d = ep.driver
         cube = next(f for f in ep.observe().facts if f[0] == "pose")
         base = np.array([f for f in ep.observe().facts if f[0] == "reach_zone"][0][2:4])
-        behind = np.array([cube[2] + 0.045, cube[3], 0.02])
-        out = behind[:2] - base
-        end = np.array([*(base + out / np.linalg.norm(out) * 0.45), 0.02])
+        if world.zone_centre == "robot":
+            behind = np.array([cube[2] + 0.045, cube[3], 0.02])
+            out = behind[:2] - base
+            end = np.array([*(base + out / np.linalg.norm(out) * 0.45), 0.02])
+            settle = 3
+        else:
+            c = np.array(cube[2:4], dtype=float)
+            u = (base - c) / np.linalg.norm(base - c)
+            behind = np.array([*(c - u * 0.045), 0.02])
+            end = np.array([*(base + u * (0.02 - 0.045)), 0.02])
+            settle = 6
         (d.set_gripper(CLOSED, 2) and d.move(behind + [0, 0, 0.08])
-         and d.move(behind, settle=2) and d.move(end, settle=3, step_m=0.02))
+         and d.move(behind, settle=2) and d.move(end, settle=settle, step_m=0.02))
         return ep.goal_reached()
 
 
@@ -63,8 +77,10 @@ def run_figures(run: Path, recs: list[dict]) -> dict:
             "budget": summary.get("trial_budget"), "strategy": summary["use"]["strategy"],
             "stop": summary["use"]["stop"],
             "env_steps": sum(int(r["verdict"]["measures"]["control_steps"]) for r in use),
-            "hg": summary["hypotheses"]["hg"],
+            "hg": summary["hypotheses"]["hg"], "hs": summary["hypotheses"]["hs"],
             "eval": summary["eval"]["outcomes"],
+            "use_sequence": [{"tool": r["tool"], "tested": r["tested"], "pose": r["pose"],
+                              "outcome": r["outcome"]} for r in use],
             "wall_time_s": summary.get("wall_time_s"),
             "create": {"variant": create.get("variant"), "trials": create.get("trials"),
                        "sequence": [{"tool": r["tool"], "outcome": r["outcome"]}
@@ -107,6 +123,7 @@ def main() -> None:
     poses = pose_resolver(engine, manifest)
     fresh = replace(world, seeds=tuple(seeds))
     rows = []
+    load_before = [round(v, 2) for v in os.getloadavg()]
     t0 = time.perf_counter()
     for i, seed in enumerate(seeds, 1):
         r = run_trial(fresh, tool, manifest.demonstration.variant, i, pose,
@@ -127,7 +144,9 @@ def main() -> None:
            "seeds_needing_tool": len(need), "successes_needing_tool": ok_need,
            "success_rate_needing_tool": ok_need / len(need) if need else None,
            "env_steps": sum(r["steps"] for r in rows), "learning": learning,
-           "wall_s": round(time.perf_counter() - t0, 1), "trials": rows}
+           "wall_s": round(time.perf_counter() - t0, 1),
+           "load_avg_before": load_before,
+           "load_avg_after": [round(v, 2) for v in os.getloadavg()], "trials": rows}
     a.out.parent.mkdir(parents=True, exist_ok=True)
     a.out.write_text(json.dumps(out, indent=1) + "\n")
     print(f"{ok}/{len(rows)} seeds succeed ({source}), {ok_need}/{len(need)} of those a "

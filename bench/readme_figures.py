@@ -485,6 +485,35 @@ def maniskill() -> dict[str, Any]:
             "rows": "\n".join(rows), "successes": m["successes"]}
 
 
+@block("maniskill-poke")
+def maniskill_poke() -> dict[str, Any]:
+    """The second ManiSkill task's learning run and its learned model on fresh ManiSkill
+    seeds (maniskill_poke.json; ``make bench-maniskill-poke``)."""
+    m = result("maniskill_poke")
+    lr = m["learning"]
+    cr = lr["create"]
+    seeds = m["seeds"]
+    hg = _hg_body(lr["hg"]) if ":-" in lr["hg"] else "empty (any tool of the hierarchy)"
+    made = cr["made"]
+    return {"lr": lr, "cr": cr, "wall_s": lr["wall_time_s"]["total"], "hg": hg,
+            "hs": _hg_body(lr["hs"]), "tool": m["tool"],
+            "pose": ", ".join(f"{k} {v:+.4f} m" for k, v in m["pose"].items()),
+            "eval_ok": lr["eval"].count("success"), "eval_n": len(lr["eval"]),
+            "tried": ", ".join(f"`{c['tool']}` {c['outcome']}" for c in cr["sequence"]),
+            "solved": (f"solved by `{cr['solved_by']}`" if cr.get("solved_by")
+                       else f"not solved ({len(made)} tools made)"),
+            "tried_use": "; ".join(
+                f"`{u['tool']}` at " + ", ".join(f"{k} {v:+.4f}" for k, v in u["pose"].items())
+                + f" testing {', '.join(f'`{t}`' for t in u['tested']) or 'nothing'}: "
+                + u["outcome"] for u in lr["use_sequence"]),
+            "n_seeds": len(seeds), "first": seeds[0], "last": seeds[-1], "end": seeds[-1] + 1,
+            "successes": m["successes"], "rate": 100.0 * m["success_rate"],
+            "env_steps": m["env_steps"], "eval_wall_s": m["wall_s"],
+            "load": m["load_avg_before"][0], "need": m["seeds_needing_tool"],
+            "no_tool": len(seeds) - m["seeds_needing_tool"],
+            "ok_need": m["successes_needing_tool"]}
+
+
 def _other_cases() -> list[str]:
     """The cases of release_runs.json outside :data:`TABLED`."""
     cases = sorted({k.rsplit("-", 1)[0] for k in result("release_runs")["runs"]})

@@ -171,7 +171,8 @@ action_motion_tool(action_model(_, _, _, Add, _), Tool) :-
 %!  action_tool_model(+Model, -Tool) is semidet.
 %
 %   True if Model is a *tool action*: it has a parameter Tool of type `tool` and its
-%   precondition holds at least one structural literal of Tool (a learned model).
+%   precondition holds at least one structural literal of Tool or, where any tool
+%   worked, a spatial one (a learned model).
 %
 %       ?- action_tool_model(action_model(pull_out, [T-tool, C-target],
 %                                         [hook(T), behind(T, C)], [], []), X).
@@ -180,8 +181,15 @@ action_motion_tool(action_model(_, _, _, Add, _), Tool) :-
 action_tool_model(action_model(_, Params, Pre, _, _), Tool) :-
     member(Tool-tool, Params),
     member(L, Pre),
-    tool_literal_kind(Tool, L, structural),
+    tool_literal_kind(Tool, L, Kind),
+    tool_model_kind_(Kind),
     !.
+
+%   A learned model needs a structural literal of its tool or, when any tool of the
+%   hierarchy worked, a spatial one (the pose); no innate model's precondition holds
+%   either.
+tool_model_kind_(structural).
+tool_model_kind_(spatial).
 
 %!  tool_literal_kind(+Tool, +Literal, -Kind) is det.
 %

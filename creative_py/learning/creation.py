@@ -394,15 +394,22 @@ class ToolCreator:
             write_strength(Path(urdf).with_suffix(".json"), check)
 
     def _kind(self, struct: list) -> str:
-        """Return the spec kind of a new tool: its class literal among ``struct``."""
+        """Return the spec kind of a new tool: its class literal among ``struct``; when
+        the learned model names none (any tool of the hierarchy worked), the kind of the
+        demonstration's tool."""
         from creative_py.kinds import spec_classes
 
         kinds = [s.name for s in struct
                  if isinstance(s, Compound) and len(s.args) == 1 and s.name in spec_classes()]
-        if not kinds:
+        if kinds:
+            return kinds[0]
+        world = self.runner.world
+        demo = world.manifest.demonstration.tool
+        kind = getattr(world.item(demo).spec, "kind", None) if demo in world.items else None
+        if kind not in spec_classes():
             raise RuntimeError(f"{self.case}: the new tool's literals name no tool kind "
                                f"({', '.join(spec_classes())}): {term_text(struct)}")
-        return kinds[0]
+        return kind
 
     def _manufacture(self, k: int, struct: list, dims: Term,
                      ) -> tuple[Any, dict, dict, Optional[float], dict]:

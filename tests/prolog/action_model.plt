@@ -63,6 +63,12 @@ test(tool_model) :-
     M = action_model(_, [T1-tool|_], _, _, _),
     T == T1.
 
+test(a_model_needing_only_a_pose_is_a_tool_model) :-
+    M = action_model(poke_in, [T-tool, C-target, Z-site],
+                     [holding(T), out_of_zone(C, Z), behind(T, C)], [in_zone(C, Z)], []),
+    action_tool_model(M, X),
+    X == T.
+
 test(innate_models_are_not_tool_models, Tools == []) :-
     innate_action_models(hook, Ms),
     include([M]>>action_tool_model(M, _), Ms, Tools).

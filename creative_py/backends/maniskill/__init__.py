@@ -1,12 +1,14 @@
-"""The ManiSkill3 backend: ManiSkill's ``PullCubeTool-v1`` on SAPIEN's CPU backend, with
-ManiSkill's Panda, table and cube, the case's L-tools built with ManiSkill's actor
-builder, and ManiSkill's ``evaluate()["success"]`` as the only goal verdict.
+"""The ManiSkill3 backend: a ManiSkill tabletop task with a tool (the one a world's
+``tasks.toml`` names: ``PullCubeTool-v1``, ``PokeCube-v1``) on SAPIEN's CPU backend, with
+ManiSkill's Panda, table and target, the case's tools built with ManiSkill's actor
+builder in place of the task's own, and ManiSkill's ``evaluate()["success"]`` as the
+only goal verdict.
 
 The one home of ``mani_skill``, ``sapien``, ``torch`` and ``gymnasium`` in the project
 (installed by ``pip install -e '.[maniskill]'`` / ``make setup-maniskill``). It
 implements :class:`creative_py.simulator.Backend`:
 
-``env``       the environment subclass (tool from a spec's boxes, cube moved by a variant)
+``env``       the task's subclass (tool from a spec's boxes, target moved by a variant)
 ``skills``    straight end-effector moves through ManiSkill's ``pd_ee_pose`` controller
 ``world``     the world folder (catalogue, ManiSkill seeds as locations, step budget)
 ``episode``   one episode: skills, perception from the simulator's state, the verdict

@@ -1,14 +1,21 @@
-"""ManiSkill3's ``PullCubeTool-v1`` with the L-tool built from a catalogued spec.
+"""A ManiSkill3 task with its tool built from a catalogued spec.
 
-The environment is ManiSkill's own task class, subclassed only where the case's data
-enters: the tool is built with ManiSkill's actor builder from the boxes of a tool
+The environment is ManiSkill's own task class, named by the world's ``tasks.toml``
+(``[env] task``, e.g. a tabletop task with a tool), subclassed only where the case's data
+enters: the tool actor the world file names (``[env] tool``, the actor's name in
+ManiSkill's scene) is built with ManiSkill's actor builder from the boxes of a tool
 kind's spec (:meth:`creative_py.kinds.parts.KindSpec.parts`: handle and prong of a
-hook-like tool, the same boxes for a catalogued and a created tool), and a variant may
-move the cube farther from the robot (``cube_dx``, metres along +x). Everything else is
-ManiSkill's: the Panda, the table, the cube, the seeded initial state of
-``reset(seed=...)`` (the tool's and the cube's draws are those of the stock task; the
-tool is then laid on the table at its own height) and the success check
-:meth:`evaluate`.
+hook-like tool, the handle alone of a stick; the same boxes for a catalogued and a
+created tool), and a variant may move the target (``[env] target``) farther along +x
+(``cube_dx``, metres; the goal actor ``[env] goal``, when there is one, moves with it).
+Everything else is ManiSkill's: the robot, the table, the target, the seeded initial
+state of ``reset(seed=...)`` (the tool's and the target's draws are those of the stock
+task; the tool is then laid on the table at its own height, its far end where the stock
+tool has its own) and the success check :meth:`evaluate`.
+
+The tool's boxes replace the stock tool's shapes when the task builds it: the task's
+scene-loading code runs unchanged (the actors are made in the same order), and the
+builder of the actor with the tool's name is given the spec's boxes in place of its own.
 
 Runs on the CPU backend (``sim_backend="cpu"``) with one environment. SAPIEN needs a
 Vulkan device even without rendering: :func:`vulkan_ready` points ``VK_ICD_FILENAMES``
@@ -22,8 +29,8 @@ import logging
 import os
 from typing import Any
 
-ENV_ID = "CreativePullCubeTool-v1"
-"""The id this subclass is registered under (ManiSkill's is ``PullCubeTool-v1``)."""
+ENV_PREFIX = "Creative"
+"""The subclass of ManiSkill's task ``T`` is registered as ``Creative`` + ``T``."""
 
 LAVAPIPE_GLOB = "/usr/share/vulkan/icd.d/lvp_icd*.json"
 """Where Debian's ``mesa-vulkan-drivers`` puts lavapipe's ICD file."""
@@ -41,42 +48,68 @@ def vulkan_ready() -> None:
 _REGISTERED: dict[str, Any] = {}
 
 
-def env_class():
-    """Return the registered subclass of ManiSkill's ``PullCubeToolEnv`` (imported and
-    registered on first use, so importing this module loads no simulator)."""
-    if "cls" in _REGISTERED:
-        return _REGISTERED["cls"]
+def task_ids() -> list[str]:
+    """Return the ids of ManiSkill's registered tasks (imports ManiSkill)."""
     vulkan_ready()
-    import numpy as np
+    import mani_skill.envs  # noqa: F401  (registers the tasks)
+    from mani_skill.utils.registration import REGISTERED_ENVS
+
+    return sorted(k for k in REGISTERED_ENVS if not k.startswith(ENV_PREFIX))
+
+
+def env_id(task: str) -> str:
+    """Return the id the subclass of ManiSkill's ``task`` is registered under."""
+    return ENV_PREFIX + task
+
+
+def env_class(task: str):
+    """Return the registered subclass of ManiSkill's task ``task`` (imported and
+    registered on first use, so importing this module loads no simulator)."""
+    if task in _REGISTERED:
+        return _REGISTERED[task]
+    vulkan_ready()
     import sapien
     import torch
+    import mani_skill.envs  # noqa: F401  (registers the tasks)
     from mani_skill import logger as maniskill_logger
-    from mani_skill.envs.tasks import PullCubeToolEnv
-    from mani_skill.utils.registration import register_env
+    from mani_skill.utils.registration import REGISTERED_ENVS, register_env
     from mani_skill.utils.structs import Pose
 
     # ManiSkill warns at every environment it builds that no initial pose was set for the
     # builders (the episode's initialisation sets them) and that CUDA is missing (the CPU
     # backend is meant): a run printed 7 such lines a trial. Its errors still show.
     maniskill_logger.setLevel(logging.ERROR)
+    if task not in REGISTERED_ENVS:
+        raise KeyError(task)
+    spec = REGISTERED_ENVS[task]
 
-    class CataloguePullCubeToolEnv(PullCubeToolEnv):
-        """``PullCubeTool-v1`` whose L-tool is built from ``tool_parts`` and whose cube
-        starts ``cube_dx`` farther along +x (0: the stock task)."""
+    class CatalogueEnv(spec.cls):
+        """ManiSkill's task whose tool actor is built from ``tool_parts`` and whose
+        target starts ``cube_dx`` farther along +x (0: the stock task)."""
 
-        def __init__(self, *args, tool_parts=(), tool_mass=0.5, tool_friction=None,
-                     cube_dx=0.0, **kwargs):
+        def __init__(self, *args, tool_actor="", target_actor="", goal_actor="",
+                     tool_parts=(), tool_mass=0.5, tool_friction=None, cube_dx=0.0,
+                     **kwargs):
+            self.tool_actor, self.target_actor = tool_actor, target_actor
+            self.goal_actor = goal_actor
             self.tool_parts = tuple(tool_parts)
             self.tool_mass = float(tool_mass)
             self.tool_friction = tool_friction
             self.cube_dx = float(cube_dx)
+            self.stock_far = 0.0
             super().__init__(*args, **kwargs)
 
-        def _build_l_shaped_tool(self, handle_length, hook_length, width, height):
-            if not self.tool_parts:
-                return super()._build_l_shaped_tool(handle_length, hook_length, width,
-                                                    height)
-            builder = self.scene.create_actor_builder()
+        def actor(self, name: str):
+            """Return the scene's actor called ``name``."""
+            return self.scene.actors[name]
+
+        def _tool_boxes(self, builder) -> None:
+            """Give ``builder`` (the stock tool's) the spec's boxes in place of its own,
+            keeping how far the stock tool's shapes reach along +x."""
+            self.stock_far = max(float(r.pose.p[0]) + float(r.scale[0])
+                                 for r in builder.collision_records if r.type == "box")
+            builder.collision_records.clear()
+            builder.visual_records.clear()
             mat = sapien.render.RenderMaterial()
             mat.set_base_color([1, 0, 0, 1])
             volume = sum(p.size[0] * p.size[1] * p.size[2] for p in self.tool_parts)
@@ -91,33 +124,61 @@ def env_class():
                 half = [s / 2 for s in part.size]
                 builder.add_box_collision(pose, half, density=density, material=phys)
                 builder.add_box_visual(pose, half, material=mat)
-            return builder.build(name="l_shape_tool")
+
+        def _load_scene(self, options):
+            if not self.tool_parts:
+                return super()._load_scene(options)
+            scene = self.scene
+            create = scene.create_actor_builder
+            env = self
+
+            def create_actor_builder(*a, **k):
+                builder = create(*a, **k)
+                build = builder.build
+
+                def build_tool(name, *ba, **bk):
+                    if name == env.tool_actor:
+                        env._tool_boxes(builder)
+                    return build(name, *ba, **bk)
+
+                builder.build = build_tool
+                return builder
+
+            scene.create_actor_builder = create_actor_builder
+            try:
+                return super()._load_scene(options)
+            finally:
+                del scene.create_actor_builder
 
         def _initialize_episode(self, env_idx, options):
             super()._initialize_episode(env_idx, options)
             if not self.tool_parts and self.cube_dx == 0.0:
                 return
             with torch.device(self.device):
-                tool = self.l_shape_tool.pose
-                p = tool.p.clone()
                 if self.tool_parts:
+                    actor = self.actor(self.tool_actor)
+                    tool = actor.pose
+                    p = tool.p.clone()
                     # the tool frame on the handle's axis, its lowest face on the table
                     p[..., 2] = -min(part.center[2] - part.size[2] / 2
                                      for part in self.tool_parts)
-                    # its far end where ManiSkill's tool has its own (a longer handle
-                    # reaches back towards the robot, not into the cube's region)
+                    # its far end where the stock tool has its own (a longer handle
+                    # reaches back towards the robot, not into the target's region)
                     far = max(part.center[0] + part.size[0] / 2 for part in self.tool_parts)
-                    p[..., 0] -= max(0.0, far - self.handle_length)
-                self.l_shape_tool.set_pose(Pose.create_from_pq(p=p, q=tool.q))
-                cube = self.cube.pose
-                c = cube.p.clone()
-                c[..., 0] += self.cube_dx
-                self.cube.set_pose(Pose.create_from_pq(p=c, q=cube.q))
+                    p[..., 0] -= max(0.0, far - self.stock_far)
+                    actor.set_pose(Pose.create_from_pq(p=p, q=tool.q))
+                # the target is set again even where it stays (as it always was)
+                for name in (self.target_actor, self.goal_actor):
+                    if name and (name == self.target_actor or self.cube_dx != 0.0):
+                        moved = self.actor(name)
+                        c = moved.pose.p.clone()
+                        c[..., 0] += self.cube_dx
+                        moved.set_pose(Pose.create_from_pq(p=c, q=moved.pose.q))
 
-    register_env(ENV_ID, max_episode_steps=100)(CataloguePullCubeToolEnv)
-    _REGISTERED["cls"] = CataloguePullCubeToolEnv
-    del np
-    return CataloguePullCubeToolEnv
+    CatalogueEnv.__name__ = CatalogueEnv.__qualname__ = "Catalogue" + spec.cls.__name__
+    register_env(env_id(task), max_episode_steps=spec.max_episode_steps)(CatalogueEnv)
+    _REGISTERED[task] = CatalogueEnv
+    return CatalogueEnv
 
 
 def _yaw_quat_wxyz(yaw: float) -> list[float]:
@@ -127,24 +188,31 @@ def _yaw_quat_wxyz(yaw: float) -> list[float]:
     return [math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2)]
 
 
-def make_env(parts=(), mass: float = 0.5, friction: float | None = None,
+def make_env(task: str, tool_actor: str, target_actor: str, goal_actor: str = "",
+             parts=(), mass: float = 0.5, friction: float | None = None,
              cube_dx: float = 0.0, max_steps: int = 100, render: bool = False,
              camera: dict | None = None):
-    """Return a gymnasium environment of the task on the CPU backend, state observations,
-    ManiSkill's end-effector pose controller (``pd_ee_pose``).
+    """Return a gymnasium environment of ManiSkill's ``task`` on the CPU backend, state
+    observations, ManiSkill's end-effector pose controller (``pd_ee_pose``).
 
     Parameters
     ----------
+    task : str
+        ManiSkill's task id.
+    tool_actor, target_actor, goal_actor : str
+        The names of the task's tool, target and goal actors in its scene (the goal's
+        may be empty: the task has none).
     parts : sequence of Box
-        The tool's boxes in its frame (metres); empty: ManiSkill's own L-tool.
+        The tool's boxes in its frame (metres); empty: ManiSkill's own tool.
     mass : float
         The tool's mass, kg (spread over the boxes by volume).
     friction : float or None
         The tool's friction (static = dynamic); None: SAPIEN's default material.
     cube_dx : float
-        How much farther along +x the cube starts than ManiSkill draws it, metres.
+        How much farther along +x the target (and the goal actor) start than ManiSkill
+        draws them, metres.
     max_steps : int
-        The episode's step limit (ManiSkill's task: 100 control steps at 20 Hz).
+        The episode's step limit (control steps at the task's control rate).
     render : bool
         Build the human render camera (``rgb_array``) for clips.
     camera : dict or None
@@ -154,10 +222,10 @@ def make_env(parts=(), mass: float = 0.5, friction: float | None = None,
     """
     import gymnasium as gym
 
-    env_class()
-    return gym.make(ENV_ID, obs_mode="state", control_mode="pd_ee_pose", sim_backend="cpu",
-                    render_mode="rgb_array" if render else None,
-                    max_episode_steps=max_steps, tool_parts=parts, tool_mass=mass,
-                    tool_friction=friction, cube_dx=cube_dx,
+    env_class(task)
+    return gym.make(env_id(task), obs_mode="state", control_mode="pd_ee_pose",
+                    sim_backend="cpu", render_mode="rgb_array" if render else None,
+                    max_episode_steps=max_steps, tool_actor=tool_actor,
+                    target_actor=target_actor, goal_actor=goal_actor, tool_parts=parts,
+                    tool_mass=mass, tool_friction=friction, cube_dx=cube_dx,
                     **({"human_render_camera_configs": camera} if camera else {}))
-

@@ -1,23 +1,24 @@
 """One trial of a ManiSkill case: ManiSkill's environment driven by the manifest's skills.
 
 An episode resets ManiSkill's environment (:mod:`creative_py.backends.maniskill.env`) with the
-location's seed, so the robot, the tool and the cube start in ManiSkill's own seeded
-initial state; the tool is the catalogued (or created) object, built from its spec's
+location's seed, so the robot, the tool and the target (the actors ``tasks.toml``'s
+``[env]`` names) start in ManiSkill's own seeded initial state; the tool is the catalogued (or created) object, built from its spec's
 boxes. The skills run the primitives their manifest entries bind, each a few straight
 moves of the end-effector pose controller (:mod:`creative_py.backends.maniskill.skills`).
 
 Perception: the primitive facts come from the simulator's state, not from cameras
-(``pose/5`` and ``size/4`` of the cube from its actor's pose and ManiSkill's cube
-size; the held tool's ``tip_position/4``, ``tool_roll/2`` and ``tool_axis_y/2`` from
+(``pose/5`` and ``size/4`` of the target from its actor's pose and ``[env]
+target_half``; the held tool's ``tip_position/4``, ``tool_roll/2`` and ``tool_axis_y/2`` from
 the tool actor's pose and its spec; ``reach_zone/4`` of the goal region from the robot
-base's pose and ``tasks.toml``'s radius; every object's catalogue facts from its kind).
+base's or the goal actor's pose and ``tasks.toml``'s radius; every object's catalogue
+facts from its kind).
 
 While the tool acts, the contact load on it is read from SAPIEN's contacts
 (:mod:`creative_py.backends.maniskill.loads`), for the strength check of a created tool.
 
 The goal verdict is ManiSkill's ``env.evaluate()["success"]`` and nothing else; the
-Verdict records the cube's distance to the base in xy and ManiSkill's own
-``cube_distance`` and ``cube_progress``. Steps are ManiSkill control steps
+Verdict records the target's distance to the goal region's centre in xy and the
+``evaluate()`` entries ``[env] measures`` names (``cube_distance``, ...). Steps are ManiSkill control steps
 (``env.step`` calls, 20 Hz), counted against the world's ``max_steps``; a skill that
 runs out of them reports its motion ``blocked``. A trial is run above the boundary
 (:func:`creative_py.simulator.trial.run_trial`), as every backend's.
@@ -35,10 +36,6 @@ from creative_py.backends.maniskill.skills import OPEN, Driver, grasp_handle
 from creative_py.backends.maniskill.scene import World
 from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome, Verdict,
                                          pose_numbers)
-
-CUBE_HALF_M = 0.02
-"""ManiSkill's cube half size in PullCubeTool-v1 (``cube_half_size``), m."""
-
 
 def tool_mass(item) -> float:
     """Return the tool's mass, kg: the catalogue's, else printed PLA's (created tools)."""
@@ -91,7 +88,9 @@ class Episode:
         self.seed = seed
         self.reset_seed = world.seed(location)
         m.variant(variant)
-        self.env = make_env(self.spec.parts(), tool_mass(self.item), self.item.friction,
+        te = world.env
+        self.env = make_env(te.task, te.tool, te.target, te.goal, self.spec.parts(),
+                            tool_mass(self.item), self.item.friction,
                             world.cube_dx(variant), world.max_steps,
                             render=record is not None,
                             camera=None if record is None else record.camera.camera_config())
@@ -111,6 +110,23 @@ class Episode:
         self.with_robot = robot
 
     # ----------------------------------------------------------------- state
+    @property
+    def tool_actor(self):
+        """Return the tool's actor (ManiSkill's scene, the name ``[env] tool`` gives)."""
+        return self.u.scene.actors[self.world.env.tool]
+
+    @property
+    def target_actor(self):
+        """Return the target's actor (the name ``[env] target`` gives)."""
+        return self.u.scene.actors[self.world.env.target]
+
+    def zone_centre(self) -> np.ndarray:
+        """Return the goal region's centre, world metres: the robot base's position or
+        the goal actor's (``[zone] centre``)."""
+        if self.world.zone_centre == "robot":
+            return self._p(self.u.agent.robot)
+        return self._p(self.u.scene.actors[self.world.zone_centre])
+
     def _p(self, actor) -> np.ndarray:
         return actor.pose.p[0].numpy().astype(float)
 
@@ -119,7 +135,7 @@ class Episode:
 
     def tool_point(self, local: Sequence[float]) -> np.ndarray:
         """Return a point of the tool frame (its spec's frame) in the world, m."""
-        tool = self.u.l_shape_tool
+        tool = self.tool_actor
         return self._p(tool) + _rotate(self._q(tool), local)
 
     def prong_centre(self) -> np.ndarray:
@@ -177,7 +193,7 @@ class Episode:
         if not grasp_handle(self.driver, grip, opts["approach"]):
             return self._out_of_steps()
         self.held = True
-        self.grasp_offset = self.driver.tcp() - self._p(self.u.l_shape_tool)
+        self.grasp_offset = self.driver.tcp() - self._p(self.tool_actor)
         self.grasp_z = self.driver.tcp()[2]
         d = self.driver
         if not d.move(d.tcp() * [1, 1, 0] + [0, 0, float(opts["lift_to"])]):
@@ -211,8 +227,9 @@ class Episode:
         ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry])
               and d.move(beside * [1, 1, 0] + [0, 0, carry])
               and d.move(beside, settle=int(opts["settle_steps"]))
-              and d.move(tcp, settle=int(opts["settle_steps"]),
-                         step_m=float(opts["slide_step_m"])))
+              and (float(opts["side_clear"]) == 0.0  # lowered in place: no slide
+                   or d.move(tcp, settle=int(opts["settle_steps"]),
+                             step_m=float(opts["slide_step_m"]))))
         self.state["place_tcp"] = tcp
         return SkillOutcome("ok") if ok else self._out_of_steps()
 
@@ -234,16 +251,32 @@ class Episode:
               and d.move(d.tcp() + [0.0, 0.0, float(opts["lift_by"])], settle=0))
         return SkillOutcome("ok") if ok else self._out_of_steps()
 
+    def _push_to_zone(self, opts, pose) -> SkillOutcome:
+        """Push the held tool straight along the direction from the target to the goal
+        region's centre (in xy, at the grasp's height) by the target's distance to that
+        centre plus ``beyond`` metres, then hold it still for ``settle_steps`` (where the
+        tool meets the target, and so where the target stops, is the pose's business)."""
+        if not self.held:
+            return SkillOutcome("blocked", "no tool is held (pick it up first)")
+        d = self.driver
+        out = (self.zone_centre() - self._p(self.target_actor)) * [1, 1, 0]
+        dist = float(np.linalg.norm(out))
+        travel = dist + float(opts["beyond"])
+        end = d.tcp() + out / max(dist, 1e-9) * travel
+        end[2] = self.grasp_z
+        ok = d.move(end, settle=int(opts["settle_steps"]), step_m=float(opts["step_m"]))
+        return SkillOutcome("ok") if ok else self._out_of_steps()
+
     # ------------------------------------------------------------ perception
     def observe(self, cameras: bool = True) -> Observation:
         """Return the primitive facts from the simulator's state (see the module
         docstring; ``cameras`` changes nothing: no camera is used)."""
-        cube = self._p(self.u.cube)
-        cube_yaw = _yaw(self._q(self.u.cube))
-        side = 2 * CUBE_HALF_M
+        cube = self._p(self.target_actor)
+        cube_yaw = _yaw(self._q(self.target_actor))
+        side = 2 * self.world.env.target_half
         facts: list[Fact] = [("pose", self.target_name, *map(float, cube), cube_yaw),
                              ("size", self.target_name, side, side, side)]
-        base = self._p(self.u.agent.robot)
+        base = self.zone_centre()
         facts.append(("reach_zone", self.context_name, float(base[0]), float(base[1]),
                       float(self.world.zone_radius)))
         if self.held:
@@ -258,30 +291,37 @@ class Episode:
         return Observation(facts=tuple(facts), truth=self.truth())
 
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
-        """Return ``name -> (x, y, z, yaw)`` of the cube and the tool (its frame)."""
+        """Return ``name -> (x, y, z, yaw)`` of the target and the tool (its frame)."""
         out = {}
-        for name, actor in ((self.target_name, self.u.cube),
-                            (self.spec.name, self.u.l_shape_tool)):
+        for name, actor in ((self.target_name, self.target_actor),
+                            (self.spec.name, self.tool_actor)):
             p = self._p(actor)
             out[name] = (float(p[0]), float(p[1]), float(p[2]), _yaw(self._q(actor)))
         return out
 
     # ---------------------------------------------------------------- oracle
     def verdict(self) -> Verdict:
-        """Return ManiSkill's verdict: ``evaluate()["success"]``, with the cube's xy
-        distance to the robot base (what it thresholds at 0.6 m) and ManiSkill's own
-        ``cube_distance`` and ``cube_progress``."""
+        """Return ManiSkill's verdict: ``evaluate()["success"]``, with the target's xy
+        distance to the goal region's centre (the robot base or the goal actor) against
+        the region's radius, and the ``evaluate()`` entries ``[env] measures`` names."""
         info = self.u.evaluate()
         success = bool(info["success"][0])
-        cube = self._p(self.u.cube)
-        base = self._p(self.u.agent.robot.get_links()[0])
-        dist = float(np.linalg.norm(cube[:2] - base[:2]))
-        measures = {"evaluate_success": success,
-                    "cube_distance": float(info["cube_distance"]),
-                    "cube_progress": float(info["cube_progress"]),
-                    "control_steps": self.steps}
-        return Verdict(f"{self.target_name} distance to the robot base in xy", dist, 0.6, "m",
-                       "<", success, "ManiSkill PullCubeTool-v1 evaluate()",
+        cube = self._p(self.target_actor)
+        if self.world.zone_centre == "robot":
+            centre, about = self._p(self.u.agent.robot.get_links()[0]), "the robot base"
+        else:
+            centre, about = self.zone_centre(), f"the centre of {self.world.zone_centre}"
+        dist = float(np.linalg.norm(cube[:2] - centre[:2]))
+        measures: dict[str, Any] = {"evaluate_success": success}
+        for name in self.world.env.measures:
+            value = info[name]
+            value = value.reshape(-1)[0] if hasattr(value, "reshape") else value
+            measures[name] = bool(value) if getattr(value, "dtype", None) is not None \
+                and str(value.dtype).endswith("bool") else float(value)
+        measures["control_steps"] = self.steps
+        return Verdict(f"{self.target_name} distance to {about} in xy", dist,
+                       float(self.world.zone_radius), "m", "<", success,
+                       f"ManiSkill {self.world.env.task} evaluate()",
                        detail=f"ManiSkill evaluate() success={success}", measures=measures)
 
     def goal_reached(self) -> bool:
@@ -317,7 +357,7 @@ def tool_rests(world: World, tool: str) -> bool:
     then ten control steps holding the robot still; rests unless it dropped 1 cm."""
     demo = world.manifest.demonstration
     with open_episode(world, demo.variant, demo.location, tool) as ep:
-        z0 = ep._p(ep.u.l_shape_tool)[2]
+        z0 = ep._p(ep.tool_actor)[2]
         ep.driver.set_gripper(OPEN, 10)
-        return z0 - ep._p(ep.u.l_shape_tool)[2] <= 0.01
+        return z0 - ep._p(ep.tool_actor)[2] <= 0.01
 

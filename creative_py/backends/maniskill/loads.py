@@ -43,7 +43,7 @@ class LoadMonitor:
         self.ep = ep
         u = ep.u
         self.scene = u.scene.sub_scenes[0]
-        self.tool_name = u.l_shape_tool._objs[0].name
+        self.tool_name = ep.tool_actor._objs[0].name
         self.robot_names = {link.name for link in u.agent.robot.get_links()}
         self.dt = 1.0 / float(u.sim_freq)
         self.samples: list[float] = []
@@ -74,7 +74,7 @@ class LoadMonitor:
                 touched.add(other.split("_", 1)[-1])
         self.samples.append(total)
         if total > 0 and (self.best is None or total > self.best["max_force_n"]):
-            tool = ep.u.l_shape_tool
+            tool = ep.tool_actor
             tp, tq = ep._p(tool), ep._q(tool)
             point = _to_tool(tp, tq, weighted / total)
             force = _to_tool(tp, tq, tp + vector)  # a direction: rotated only

@@ -6,6 +6,14 @@ The world folder of a ManiSkill case holds ``case.toml`` (``backend = "maniskill
 
 .. code-block:: toml
 
+    [env]                    # ManiSkill's task and the actors of its scene, by name
+    task = "PullCubeTool-v1" # a registered ManiSkill task (its evaluate() is the verdict)
+    tool = "l_shape_tool"    # the tool actor: built from the catalogued tool's boxes
+    target = "cube"          # the actor the task moves (the case's target role)
+    target_half = 0.02       # its half size, m (the size/4 fact)
+    goal = ""                # optional: a goal actor that moves with the target (cube_dx)
+    measures = ["cube_distance", "cube_progress"]   # evaluate() entries kept per trial
+
     [episode]
     max_steps = 100          # control steps of one trial (ManiSkill's task: 100)
 
@@ -13,6 +21,7 @@ The world folder of a ManiSkill case holds ``case.toml`` (``backend = "maniskill
     seed = 3                 # a location is ManiSkill's seeded initial state reset(seed=3)
 
     [zone]                   # what the robot knows of the goal region (a fixed fact):
+    centre = "robot"         # the robot base (default) or the name of an actor
     radius = 0.6             # ManiSkill's evaluate() threshold, cube to base in xy, m
 
     [video]                  # optional: the trial clips' camera (maniskill/recorder.py)
@@ -24,7 +33,8 @@ The world folder of a ManiSkill case holds ``case.toml`` (``backend = "maniskill
     fps = 5.0                # frames per second of simulated time
 
 A variant's ``set`` may give ``cube_dx``: how much farther along +x than ManiSkill
-draws it the cube starts (metres). Errors name the file and the field.
+draws it the target (with the goal actor, if any) starts (metres). Errors name the file
+and the field.
 """
 
 from __future__ import annotations
@@ -46,6 +56,7 @@ PRIMITIVES = {
     "place_at_pose": {"carry_z": 0.25, "settle_steps": 4, "side_clear": 0.08,
                       "slide_step_m": 0.02},
     "pull_to_radius": {"radius": 0.55, "step_m": 0.02, "settle_steps": 3, "lift_by": 0.06},
+    "push_to_zone": {"beyond": 0.0, "step_m": 0.02, "settle_steps": 3},
 }
 """The skill primitives of this backend and their options with defaults
 (:mod:`creative_py.backends.maniskill.episode`)."""
@@ -62,6 +73,33 @@ class CatalogueItem:
     mass: Optional[float] = None
     urdf: Optional[Path] = None
     outside_ranges: bool = False
+
+
+@dataclass(frozen=True)
+class TaskEnv:
+    """ManiSkill's task of a world and the names of its scene's actors (``[env]``).
+
+    Attributes
+    ----------
+    task : str
+        ManiSkill's task id (registered by ManiSkill).
+    tool, target : str
+        The names of the tool actor (built from the catalogued tool) and of the actor
+        the task moves.
+    target_half : float
+        The target's half size, m.
+    goal : str
+        The name of a goal actor that moves with the target, or "".
+    measures : tuple of str
+        The entries of ``evaluate()`` a trial's verdict keeps.
+    """
+
+    task: str
+    tool: str
+    target: str
+    target_half: float
+    goal: str = ""
+    measures: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -82,6 +120,10 @@ class World(CatalogueWorld):
         The goal region's radius about the robot base, m (a fact the robot is given).
     skills : dict
         ``skill name -> (primitive, options)``.
+    env : TaskEnv
+        ManiSkill's task and its actors' names.
+    zone_centre : str
+        The goal region's centre: ``robot`` (the robot base) or an actor's name.
     """
 
     manifest: CaseManifest
@@ -91,6 +133,8 @@ class World(CatalogueWorld):
     max_steps: int
     zone_radius: float
     skills: dict[str, tuple[str, dict[str, Any]]]
+    env: TaskEnv = TaskEnv("", "", "", 0.02)
+    zone_centre: str = "robot"
     variation: str = ""
     video: Optional[VideoCamera] = None
     """The clips' camera and frame rate (the ``[video]`` table of ``tasks.toml``), or
@@ -195,6 +239,7 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
     items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
     p = world_file(d, "tasks.toml")
     f = Fields(load_toml(p), p)
+    env = _read_env(f)
     ef = f.table("episode")
     max_steps = ef.int("max_steps", 100, minimum=10, maximum=1000)
     ef.done()
@@ -206,7 +251,11 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
     if not seeds:
         raise f.error("location", "at least one [[location]] is needed")
     zf = f.table("zone")
-    radius = zf.float("radius", minimum=0.05, maximum=2.0)
+    centre = zf.str("centre", "robot")
+    if centre != "robot" and centre not in (env.target, env.goal):
+        raise zf.error("centre", f"must be 'robot' or the goal actor named in [env] "
+                                 f"({env.goal or 'none'}), got {centre!r}")
+    radius = zf.float("radius", minimum=0.01, maximum=2.0)
     zf.done()
     video = read_video(f)
     f.done()
@@ -238,4 +287,25 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
     if demo.location > len(seeds):
         raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
                              f"{len(seeds)}, got {demo.location}")
-    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills, video=video)
+    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills, env, centre,
+                 video=video)
+
+
+def _read_env(f: Fields) -> TaskEnv:
+    """Read ``[env]``: ManiSkill's task (checked to be registered) and its actors."""
+    tf = f.table("env")
+    task = tf.str("task")
+    from creative_py.backends.maniskill.env import task_ids
+
+    known = task_ids()
+    if task not in known:
+        raise tf.error("task", f"not a registered ManiSkill task: {task!r}")
+    tool, target = tf.str("tool"), tf.str("target")
+    half = tf.float("target_half", minimum=0.001, maximum=0.5)
+    goal = tf.str("goal", "")
+    measures = tf.raw("measures", [])
+    if not (isinstance(measures, list) and all(isinstance(m, str) for m in measures)):
+        raise tf.error("measures", f"must be a list of evaluate()'s entry names, got "
+                                   f"{measures!r}")
+    tf.done()
+    return TaskEnv(task, tool, target, half, goal, tuple(measures))
