@@ -101,6 +101,7 @@ class ArmClient:
         self._lock = threading.Lock()
         self.node.create_subscription(JointState, profile.joint_states_topic,
                                       self._on_joints, 10)
+        self._pose_type = PoseStamped
         for n in objects:
             self.node.create_subscription(PoseStamped, profile.object_topic_of(n),
                                           lambda m, n=n: self._on_pose(n, m), 10)
@@ -129,6 +130,15 @@ class ArmClient:
         with self._lock:
             self.poses[name] = Latest(msg, time.monotonic(), self.poses[name].count + 1,
                                      time.time())
+
+    def follow(self, name: str) -> None:
+        """Also follow the pose topic of object ``name`` (a tool of a later episode)."""
+        with self._lock:
+            if name in self.poses:
+                return
+            self.poses[name] = Latest()
+        self.node.create_subscription(self._pose_type, self.profile.object_topic_of(name),
+                                      lambda m: self._on_pose(name, m), 10)
 
     # ---------------------------------------------------------------- observation
     def wait_for_arm(self, timeout: float) -> None:

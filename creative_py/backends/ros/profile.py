@@ -45,6 +45,9 @@ class RobotProfile:
     max_joint_speed: float
     workspace_min: tuple[float, float, float]
     workspace_max: tuple[float, float, float]
+    trainer_request_topic: str = "trainer/scene_request"
+    trainer_done_topic: str = "trainer/scene_done"
+    trainer_timeout_s: float = 120.0
 
     def object_topic_of(self, name: str) -> str:
         """Return the pose topic of the case's object ``name`` (its mocap name mapped)."""
@@ -119,7 +122,15 @@ def load_profile(spec: str | Path = "baxter") -> RobotProfile:
         raise lim.error("workspace_max", f"must exceed workspace_min {list(lo)} on every "
                         f"axis, got {list(hi)}")
     lim.done()
+    tr = f.table("trainer", {})
+    trainer = (_name(tr, "request_topic") if "request_topic" in tr.data
+               else RobotProfile.trainer_request_topic,
+               _name(tr, "done_topic") if "done_topic" in tr.data
+               else RobotProfile.trainer_done_topic,
+               tr.float("timeout_s", RobotProfile.trainer_timeout_s, minimum=1.0,
+                        maximum=3600.0))
+    tr.done()
     f.done()
     return RobotProfile(str(path), name, urdf, *frames, js_topic, js_rate, stale, arm_action,
                         tuple(joints), *tolerances, *gripper, topic, rate, dict(names), speed,
-                        lo, hi)
+                        lo, hi, *trainer)

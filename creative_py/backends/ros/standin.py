@@ -108,6 +108,10 @@ class SimArm:
         self.tracked = list(dict.fromkeys(names))
         self.closed = False
 
+    def rebind(self, episode: Any) -> None:
+        """Take over a newly built scene (the trainer's answer to a scene request)."""
+        self.__init__(episode, self.profile, self.reach)
+
     def q(self) -> list[float]:
         """Return the arm's joint positions (rad), in the profile's order."""
         q = self.robot.arm_q()
@@ -201,8 +205,12 @@ def _trajectory_run(goal: Any, arm: SimArm, start: Sequence[float]) -> Trajector
 
 
 def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
-          out=sys.stdout) -> int:
-    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0."""
+          out=sys.stdout, scenes: Any = None) -> int:
+    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0.
+
+    With ``scenes`` (a :class:`~creative_py.backends.ros.trainer.SceneKeeper`) it also
+    answers the trainer's scene requests: the scene is rebuilt in the physics loop.
+    """
     import rclpy
     from rclpy.action import ActionServer, CancelResponse, GoalResponse
     from rclpy.callback_groups import ReentrantCallbackGroup
@@ -266,6 +274,14 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
     pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
                  for n in arm.tracked}
+    trainer_done = None
+    if scenes is not None:
+        from std_msgs.msg import String
+
+        node.create_subscription(String, p.trainer_request_topic,
+                                 lambda m: scenes.requests.put(m.data), 10,
+                                 callback_group=group)
+        trainer_done = node.create_publisher(String, p.trainer_done_topic, 10)
     executor = MultiThreadedExecutor(num_threads=4)
     executor.add_node(node)
 
@@ -281,6 +297,9 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                  "gripper_action": p.gripper_action, "joints": list(p.joints),
                  "objects": {n: p.object_topic_of(n) for n in arm.tracked},
                  "frame": p.world_frame}
+    if scenes is not None:
+        interface["trainer"] = {"request": p.trainer_request_topic,
+                                "done": p.trainer_done_topic}
     print("standin ready " + json.dumps(interface), file=out, flush=True)
 
     js_period, pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
@@ -299,6 +318,33 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
         job.done.set()
 
     while not stop.is_set() and time.monotonic() < deadline:
+        if scenes is not None and not scenes.requests.empty():
+            # The trainer's scene request (trainer.py): rebuild the scene here, in the
+            # physics loop, and start its clock afresh.
+            rid, error, episode = scenes.apply(scenes.requests.get())
+            if episode is not None:
+                if active is not None:
+                    finish(active, INVALID_GOAL, "the trainer reset the scene", False)
+                    active = None
+                arm.rebind(episode)
+                for name in arm.tracked:
+                    if name not in pose_pubs:
+                        pose_pubs[name] = node.create_publisher(
+                            PoseStamped, p.object_topic_of(name), 10)
+                hold = arm.q()
+                next_js = next_pose = arm.time()
+                last_fb = -math.inf
+                prev_q, prev_t = arm.q(), arm.time()
+                wall0, sim0 = time.monotonic(), arm.time()
+                with lock:
+                    state["q"] = arm.q()
+            if rid is not None:
+                from std_msgs.msg import String
+
+                trainer_done.publish(String(data=json.dumps(
+                    {"id": rid, "ok": error is None, "error": error or ""})))
+            if error is not None:
+                node.get_logger().warning(f"scene request {rid}: {error}")
         with lock:
             pending, jobs[:] = list(jobs), []
         for job in pending:
@@ -435,7 +481,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     if not args.seconds > 0:
         print(f"{prog}: option --seconds: must be > 0, got {args.seconds}", file=sys.stderr)
         return 2
-    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.backends.pybullet import load_world
     from creative_py.case import get_case
 
     try:  # every input is checked before ROS or the physics start
@@ -468,13 +514,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         print(f"{prog}: {exc.name or 'rclpy'} is not installed: run make setup-ros "
               "(docs/real-robot.md)", file=sys.stderr)
         return 2
+    from creative_py.backends.ros.trainer import SceneKeeper
+
+    scenes = SceneKeeper(world)
     try:
-        with open_episode(world, variant, location, tool) as ep:
-            arm = SimArm(ep, profile, args.grasp_reach)
-            return serve(arm, args.realtime, args.seconds)
+        ep = scenes.open(variant, location, tool)
+        arm = SimArm(ep, profile, args.grasp_reach)
+        return serve(arm, args.realtime, args.seconds, scenes=scenes)
     except WorldFileError as exc:
         print(f"{prog}: {exc}", file=sys.stderr)
         return 2
+    finally:
+        scenes.close()
 
 
 if __name__ == "__main__":
