@@ -92,6 +92,7 @@ class ArmClient:
         from sensor_msgs.msg import JointState
 
         self.profile = profile
+        self._closing = False
         self._own_context = not rclpy.ok()
         if self._own_context:
             rclpy.init()
@@ -120,6 +121,9 @@ class ArmClient:
             self.executor.spin()
         except ExternalShutdownException:
             pass
+        except RuntimeError:  # the executor's pool refused work: it is being shut down
+            if not self._closing:
+                raise
 
     def _on_joints(self, msg: Any) -> None:
         with self._lock:
@@ -277,6 +281,7 @@ class ArmClient:
         """Destroy the node (and the rclpy context if this client made it)."""
         import rclpy
 
+        self._closing = True
         self.executor.shutdown(timeout_sec=1.0)
         self.trajectory.destroy()
         self.gripper.destroy()

@@ -255,11 +255,12 @@ class RosEpisode(PybulletEpisode):
                              item.urdf if created else None)
         for name in self.tracked:
             conn.client.follow(name)
+        conn.request_scene(rid, text)
+        # Two messages of each after the answer: the first may have left before it
+        # (another topic: DDS keeps no order between topics).
         counts = {n: conn.client.poses[n].count for n in self.tracked}
         js = conn.client.joint_state.count
-        conn.request_scene(rid, text)
         end = time.monotonic() + conn.profile.trainer_timeout_s
-        # Two messages of each after the answer: the first may have left before it.
         while (any(conn.client.poses[n].count < counts[n] + 2 for n in self.tracked)
                or conn.client.joint_state.count < js + 2):
             if time.monotonic() > end:

@@ -1,5 +1,4 @@
-"""The learner's side of an arm's motion over ROS 2, and the episode skeleton of the
-ROS 2 backend.
+"""The learner's side of an arm's motion over ROS 2.
 
 :class:`LearnerArm` moves the gripper the way the learner's skills do, with the
 kinematics on the learner's side:
@@ -22,18 +21,14 @@ backend's motions give:
 * ``invalid``: the arm rejected the goal, did not answer in time, or its joint states
   are stale.
 
-:class:`RosEpisode` is the episode side of the backend, shaped as the backends' episodes
-are after the trial loop moved above the boundary: open an episode, run a skill,
-observe, measure the verdict, truth, time, steps and tool load. Only the parts that need
-no case's skills are written: truth from the motion-capture topics, the time and the
-count of goals. ``run_skill``, ``observe`` and ``verdict`` raise NotImplementedError
-until the skills are expressed over ROS (issue 26).
+:class:`creative_py.backends.ros.episode.RosEpisode` (the backend's episode) moves
+the arm through :meth:`LearnerArm.send` and :meth:`LearnerArm.grip`; ``log`` keeps each
+goal's timings.
 """
 
 from __future__ import annotations
 
 import math
-import time
 from typing import Any, Optional, Sequence
 
 from creative_py.backends.ros.client import ArmClient, ArmUnavailable
@@ -107,6 +102,9 @@ class LearnerArm:
         self.step, self.timeout = step, timeout
         self.check = goal_checker(self.profile, client.arm_q, kinematics.forward_position)
         self.goals_sent = 0
+        self.log: list[dict] = []
+        """One entry per goal sent: its planned duration, status and the seconds from
+        sending it to its acceptance, first feedback and result (``GoalTimes``)."""
 
     def gripper_pose(self) -> Pose:
         """Return the gripper's pose by forward kinematics of the joint states."""
@@ -136,6 +134,9 @@ class LearnerArm:
             return SkillOutcome("invalid", str(exc))
         self.goals_sent += 1
         r = self.client.send_trajectory(goal, timeout=points[-1][0] + self.timeout)
+        self.log.append({"planned_s": points[-1][0], "points": len(points),
+                         "status": r.status, "error_code": r.error_code,
+                         **vars(r.times)})
         if r.status == "succeeded":
             return SkillOutcome("ok")
         if r.status == "aborted":
@@ -195,89 +196,3 @@ class LearnerArm:
                                 "not answer")
         self.holding = bool(close and r.stalled and not r.reached_goal)
         return SkillOutcome("ok")
-
-
-class RosEpisode:
-    """One episode on an arm over ROS 2: the backend's episode side (a skeleton).
-
-    Parameters
-    ----------
-    profile : RobotProfile
-    objects : sequence of str
-        The case's tracked objects (their poses come from the profile's topics).
-    wait : float
-        Seconds to wait for the arm; :class:`ArmUnavailable` names what stayed silent.
-    name : str
-        The node's name.
-    """
-
-    def __init__(self, profile: RobotProfile, objects: Sequence[str], wait: float = 10.0,
-                 name: str = "creative_episode") -> None:
-        self.profile, self.objects = profile, list(objects)
-        self.client = ArmClient(profile, self.objects, name=name)
-        self.kin: Optional[Kinematics] = None
-        try:
-            self.client.wait_for_arm(wait)
-            self.kin = Kinematics(profile)
-        except BaseException:
-            self.close()
-            raise
-        self.arm = LearnerArm(self.client, self.kin)
-        self._t0 = time.monotonic()
-
-    def truth(self) -> dict[str, tuple[float, float, float, float]]:
-        """Return ``name -> (x, y, z, yaw)`` of the tracked objects, as the motion-capture
-        topics last gave them (the measured quantity comes from the topics)."""
-        out = {}
-        for name in self.objects:
-            pose = self.client.pose(name)
-            if pose is None:
-                continue
-            (x, y, z), (qx, qy, qz, qw), _ = pose
-            yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
-            out[name] = (x, y, z, yaw)
-        return out
-
-    def sim_time(self) -> float:
-        """Return the seconds since the episode opened (the arm's time is the wall's)."""
-        return time.monotonic() - self._t0
-
-    @property
-    def steps(self) -> int:
-        """Return the number of trajectory goals sent (a real arm has no physics steps)."""
-        return self.arm.goals_sent
-
-    @property
-    def tool_load(self) -> None:
-        """No force on the tool is measured over ROS yet (it needs a wrench topic)."""
-        return None
-
-    def run_skill(self, name: str, pose: Optional[Sequence[float]] = None) -> SkillOutcome:
-        """Not written yet: a case's skills as Cartesian paths over ROS (issue 26)."""
-        raise NotImplementedError(f"skill {name!r}: the ROS 2 backend does not run a case's "
-                                  "skills yet (docs/real-robot.md, 'Not done yet')")
-
-    def observe(self, cameras: bool = True) -> Any:
-        """Not written yet: the primitive facts of a case from the topics (issue 26)."""
-        raise NotImplementedError("the ROS 2 backend does not make a case's facts yet "
-                                  "(docs/real-robot.md, 'Not done yet')")
-
-    def verdict(self) -> Any:
-        """Not written yet: the case's oracle measured from the pose topics (issue 26)."""
-        raise NotImplementedError("the ROS 2 backend does not measure a verdict yet "
-                                  "(docs/real-robot.md, 'Not done yet')")
-
-    def close(self) -> None:
-        """Release the node and the kinematics (idempotent)."""
-        if self.kin is not None:
-            self.kin.close()
-            self.kin = None
-        if self.client is not None:
-            self.client.close()
-            self.client = None
-
-    def __enter__(self) -> "RosEpisode":
-        return self
-
-    def __exit__(self, *exc: Any) -> None:
-        self.close()

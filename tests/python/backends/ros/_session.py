@@ -165,7 +165,7 @@ try:
                       "gap_in_joint_states": client.joints()[profile.gripper_joint]}
 
     # -- the learner's side: straight gripper moves through its own IK, and the episode
-    from creative_py.backends.ros.motion import Kinematics, LearnerArm, RosEpisode
+    from creative_py.backends.ros.motion import Kinematics, LearnerArm
 
     kin = Kinematics(profile)
     arm = LearnerArm(client, kin)
@@ -201,14 +201,6 @@ try:
                       "tool_before": position, "tool_after": client.pose(spec.name)[0],
                       "gap": client.joints()[profile.gripper_joint]}
     kin.close()
-    with RosEpisode(profile, objects) as ep:
-        time.sleep(0.2)  # its subscriptions' first messages
-        out["episode"] = {"truth": ep.truth(), "steps": ep.steps, "tool_load": ep.tool_load,
-                          "poses_now": {n: client.pose(n) for n in objects}}
-        try:
-            ep.run_skill("any")
-        except NotImplementedError as exc:
-            out["episode"]["run_skill"] = str(exc)
 
     # -- a frozen arm (SIGSTOP): stale joint states, and a goal that gets no result
     import signal

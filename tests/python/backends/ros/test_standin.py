@@ -217,15 +217,6 @@ def test_a_move_below_the_workspace_box_is_unreachable_and_not_sent(session):
     assert r["goals_sent"] == 1  # still the one of the move up
 
 
-def test_the_episode_skeleton_reads_truth_from_the_pose_topics(session):
-    ep = session["episode"]
-    assert set(ep["truth"]) == set(session["interface"]["objects"])
-    for name, (x, y, z, yaw) in ep["truth"].items():
-        assert ep["poses_now"][name][0] == pytest.approx([x, y, z], abs=0.002)
-    assert ep["steps"] == 0 and ep["tool_load"] is None
-    assert "does not run a case's skills yet" in ep["run_skill"]
-
-
 def test_the_learner_picks_the_tool_up_over_ros(session, profile):
     pick = session["pick_up"]
     assert pick["moves"] == ["ok"] * 4
