@@ -171,7 +171,18 @@ def connection() -> Connection:
     return conn
 
 
+GOAL_LOG_ENV = "CREATIVE_ROS_GOAL_LOG"
+"""The environment variable of a JSON file to write, at the process's end, every goal's
+timings (:attr:`~creative_py.backends.ros.motion.LearnerArm.log`) and the scene set-ups'
+seconds: the benchmark's (``bench/ros_hook_bench.py``)."""
+
+
 def _close_connections() -> None:
+    path = os.environ.get(GOAL_LOG_ENV)
+    if path and _CONNECTION:
+        data = {name: {"goals": conn.arm.log, "scene_s": conn.scene_s}
+                for name, conn in _CONNECTION.items()}
+        Path(path).write_text(json.dumps(data), encoding="utf-8")
     for conn in _CONNECTION.values():
         try:
             conn.close()
