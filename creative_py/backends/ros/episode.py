@@ -327,19 +327,10 @@ class RosEpisode(PybulletEpisode):
     def _extent(self, name: str) -> tuple[float, float, float]:
         """Return the object's box extents (m) in its own frame, from the world files'
         geometry (the twin's body, turned to the identity for a moment)."""
-        import pybullet as pb
+        from creative_py.backends.pybullet.bodies import local_extents
 
         if name not in self._extents:
-            body, c = self.body_id(name), self.sim.client
-            pos, quat = pb.getBasePositionAndOrientation(body, physicsClientId=c)
-            pb.resetBasePositionAndOrientation(body, (0, 0, 0), (0, 0, 0, 1), physicsClientId=c)
-            lo, hi = [math.inf] * 3, [-math.inf] * 3
-            for link in range(-1, pb.getNumJoints(body, physicsClientId=c)):
-                a, b = pb.getAABB(body, link, physicsClientId=c)
-                lo = [min(x, y) for x, y in zip(lo, a)]
-                hi = [max(x, y) for x, y in zip(hi, b)]
-            pb.resetBasePositionAndOrientation(body, pos, quat, physicsClientId=c)
-            self._extents[name] = tuple(float(h - l) for l, h in zip(lo, hi))
+            self._extents[name] = local_extents(self.sim, self.body_id(name))
         return self._extents[name]
 
     def _estimates(self):
