@@ -231,6 +231,10 @@ def open_episode(world: Any, variant: str, location: int, tool: str, seed: int =
         raise ValueError(display_reachable())
     if record is not None:
         raise ValueError("the ros backend records no clips (its world has no video camera)")
+    if world.variation:
+        raise WorldFileError(f"{world.variation}: the ros backend runs the world as its files "
+                             "say; a drawn world (--world-seed) is not one the trainer's "
+                             "scene requests can set up")
     conn = connection()
     ep = RosEpisode(conn, world, variant, location, tool, seed, pose_target, robot=robot)
     try:

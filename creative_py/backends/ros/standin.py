@@ -31,6 +31,11 @@ and serves:
   the result says so (``stalled`` true, ``reached_goal`` false: the fingers stopped on
   the tool); its reported gap while holding is the middle of the open and closed gaps.
 
+It also answers the trainer's scene requests (``std_msgs/String`` JSON on the profile's
+``[trainer]`` topics, :mod:`.trainer`): it rebuilds its scene for the requested variant,
+location and tool (a created tool from the request's spec and URDF) in its physics loop,
+aborting a running goal, and answers with the request's id.
+
 Physics time runs at ``--realtime`` times the wall clock (1: as fast as a real arm), or
 slower where the machine cannot keep up (it never runs faster to catch up); the
 messages' stamps are the node's (wall) clock, a trajectory's times are physics time. The first line on the standard
