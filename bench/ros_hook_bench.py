@@ -131,8 +131,11 @@ def goal_figures(log: dict) -> dict:
 def compare(direct: list[dict], ros: list[dict]) -> list[dict]:
     rows = []
     for d, r in zip(direct, ros):
-        same = all(d[k] == r[k] for k in ("phase", "tool", "variant", "location", "pose"))
+        same = all(d[k] == r[k] for k in ("phase", "tool", "variant", "location"))
+        pose_diff = (max(abs(d["pose"][k] - r["pose"][k]) for k in d["pose"])
+                     if d["pose"] and r["pose"] else None)
         rows.append({"trial": d["trial"], "same_experiment": same,
+                     "same_pose": d["pose"] == r["pose"], "pose_diff": pose_diff,
                      "direct": d["outcome"], "ros": r["outcome"],
                      "same_outcome": d["outcome"] == r["outcome"],
                      "moved_m": [d["moved_m"], r["moved_m"]],
@@ -166,6 +169,9 @@ def inside(kinds: list[str]) -> dict:
             entry["comparison"] = {
                 "trials": [len(t["direct"]), len(t["ros"])],
                 "same_experiments": sum(r["same_experiment"] for r in rows),
+                "same_poses": sum(r["same_pose"] for r in rows),
+                "largest_pose_diff": max((r["pose_diff"] for r in rows
+                                          if r["pose_diff"] is not None), default=None),
                 "same_outcomes": sum(r["same_outcome"] for r in rows),
                 "same_model": s["direct"]["hypotheses"] == s["ros"]["hypotheses"],
                 "same_plan": s["direct"]["plan"] == s["ros"]["plan"],

@@ -76,6 +76,27 @@ class Connection:
         self.client.node.create_subscription(String, profile.trainer_done_topic,
                                              self._on_answer, 10)
         self.scene_s: list[float] = []
+        self.wrenches: Optional[list] = None  # recording: (force, torque), gripper frame
+        if profile.wrench_topic:
+            from geometry_msgs.msg import WrenchStamped
+
+            self.client.node.create_subscription(WrenchStamped, profile.wrench_topic,
+                                                 self._on_wrench, 50)
+
+    def _on_wrench(self, msg: Any) -> None:
+        samples = self.wrenches
+        if samples is not None:
+            f, t = msg.wrench.force, msg.wrench.torque
+            samples.append(((f.x, f.y, f.z), (t.x, t.y, t.z)))
+
+    def record_wrenches(self) -> None:
+        """Start keeping the wrist sensor's samples (a tool action begins)."""
+        self.wrenches = []
+
+    def recorded_wrenches(self) -> list:
+        """Stop keeping them; return the samples kept."""
+        samples, self.wrenches = self.wrenches or [], None
+        return samples
 
     def _on_answer(self, msg: Any) -> None:
         try:

@@ -29,11 +29,12 @@ tracking guard) is ``blocked``; rejected, not answered in time or stale joint st
 is ``invalid``; no IK solution or outside the learner's bounds is ``unreachable``.
 The trial's outcome is labelled above the boundary (:mod:`creative_py.simulator.trial`).
 
-What the arm side does not tell is not made up: the contact load on the tool is not
-measured (:meth:`RosEpisode.measured_load` gives ``(0.0, None)``: a created tool's
-strength check then says ``unmeasured``), no camera frames, no touching bodies in a
-stopped motion's verdict. Time is the wall's since the episode opened; steps are the
-trajectory goals sent.
+The contact load on the tool during the tool action comes from a wrist force/torque
+sensor's ``geometry_msgs/WrenchStamped`` topic (the profile's ``[wrench]``;
+:func:`wrench_load`); without one it is not measured (``(0.0, None)``: a created tool's
+strength check then says ``unmeasured``). What the arm side does not tell is not made
+up: no camera frames, no touching bodies in a stopped motion's verdict. Time is the
+wall's since the episode opened; steps are the trajectory goals sent.
 """
 
 from __future__ import annotations
@@ -75,6 +76,46 @@ def unsupported_skills(world: Any) -> list[str]:
     return [f"{where}: skill {s.name!r} binds primitive {world.skills[s.name].primitive!r}, "
             f"which the ros backend does not run (it runs {', '.join(PRIMITIVES)})"
             for s in m.skills if world.skills[s.name].primitive not in PRIMITIVES]
+
+
+def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
+                working_point: Sequence[float] = (0.0, 0.0, 0.0)) -> Any:
+    """Return the tool action's contact load (the pybullet backend's
+    :class:`~creative_py.backends.pybullet.loads.ToolLoad`) from a wrist sensor's
+    samples ``(force, torque)`` (gripper frame, tared; torque about the gripper).
+
+    The force of a sample is its magnitude (the net force: where the pybullet backend
+    sums the contacts' normal forces every physics step, a sensor gives their vector
+    sum at its rate). A sensor gives the force's line of action, not the point on it:
+    the point is the peak sample's line's point nearest the tool's ``working_point``
+    (tool frame; a hook's prong), in the tool frame through the grasp (the tool frame
+    in the gripper frame). The robust force is the 95th percentile over the samples
+    with contact.
+    """
+    import numpy as np
+
+    from creative_py.backends.pybullet.loads import ROBUST_PERCENTILE, ToolLoad
+    from creative_py.backends.ros.standin import compose, invert
+
+    norms = [float(np.linalg.norm(f)) for f, _ in samples]
+    contact = [n for n in norms if n > 1e-6]
+    if not contact:
+        return ToolLoad(steps=len(samples))
+    k = int(np.argmax(norms))
+    f, t = np.asarray(samples[k][0]), np.asarray(samples[k][1])
+    tool_in_gripper = (tuple(grasp[0]), tuple(grasp[1]))
+    gripper_in_tool = invert(tool_in_gripper)
+    on_line = np.cross(f, t) / float(f @ f)  # the line's point nearest the gripper
+    unit = f / np.linalg.norm(f)
+    work = np.asarray(compose(tool_in_gripper, (tuple(working_point), (0, 0, 0, 1)))[0])
+    point_g = on_line + float((work - on_line) @ unit) * unit
+    point = compose(gripper_in_tool, (tuple(point_g), (0.0, 0.0, 0.0, 1.0)))[0]
+    force = compose(((0.0, 0.0, 0.0), gripper_in_tool[1]), (tuple(f), (0.0, 0.0, 0.0, 1.0)))[0]
+    return ToolLoad(max_force_n=norms[k], point=point, force=force,
+                    grasp_point=gripper_in_tool[0], contacts=0, bodies=(), step=k,
+                    steps=len(samples),
+                    robust_force_n=float(np.percentile(contact, ROBUST_PERCENTILE)),
+                    contact_steps=len(contact), impulse_ns=sum(contact) / rate_hz)
 
 
 class RosRobot:
@@ -238,6 +279,7 @@ class RosEpisode(PybulletEpisode):
         if self.robot is not None:
             self.robot = RosRobot(self)
         self._extents: dict[str, tuple[float, float, float]] = {}
+        self.ros_load: Any = None  # the last tool action's ToolLoad, from the wrench topic
         self._t0 = time.monotonic()
         self._goals0 = conn.arm.goals_sent
 
@@ -311,12 +353,21 @@ class RosEpisode(PybulletEpisode):
         if prim not in PRIMITIVES:
             raise WorldFileError(f"{self.manifest.folder}/case.toml: skill {name!r} binds "
                                  f"primitive {prim!r}, which the ros backend does not run")
+        acting = self.manifest.skill(name).tool_action and bool(self.conn.profile.wrench_topic)
+        if acting:
+            self.conn.record_wrenches()
         try:
             return super().run_skill(name, pose, **options)
         except GripMissed as exc:
             return SkillOutcome("blocked", f"{name}: {exc}")
         except ArmUnavailable as exc:
             return SkillOutcome("invalid", f"{name}: {exc}")
+        finally:
+            if acting:
+                work = (self.spec.working_point() if hasattr(self.spec, "working_point")
+                        else self.kind.centre(self.spec))
+                self.ros_load = wrench_load(self.conn.recorded_wrenches(), self.grasp,
+                                        self.conn.profile.joint_states_rate_hz, work)
 
     def run_primitive(self, primitive: str, pose: Optional[Sequence[float]] = None,
                       **options: Any) -> SkillOutcome:
@@ -387,6 +438,9 @@ class RosEpisode(PybulletEpisode):
         return self.conn.arm.goals_sent - self._goals0
 
     def measured_load(self):
-        """No contact load is measured over ROS 2 (no wrench topic): ``(0.0, None)``;
-        a created tool's strength check is then ``unmeasured``."""
-        return 0.0, None
+        """Return the contact load on the tool during the last tool action, from the
+        wrist sensor's topic (:func:`wrench_load`); ``(0.0, None)`` without one (a
+        created tool's strength check is then ``unmeasured``)."""
+        if self.ros_load is None:
+            return 0.0, None
+        return self.ros_load.max_force_n, self.ros_load.to_dict()

@@ -112,12 +112,19 @@ class LearnerArm:
 
     def _timed(self, start: Sequence[float], path: Sequence[Sequence[float]],
                min_duration: float) -> list[tuple[float, list[float]]]:
-        """Time the joint path: each segment at most the margin of the joint speed."""
+        """Time the joint path: each segment at most the margin of the joint speed.
+
+        The first segment is timed as if each joint had the profile's goal tolerance
+        more to move: after a goal succeeded the arm may still settle that far (the
+        controller judged it within the tolerance), and the bounds are checked from
+        where the joint states say the arm is when the goal is sent."""
         speed = SPEED_MARGIN * self.profile.max_joint_speed
         t, prev, points = 0.0, list(start), []
         per = min_duration / max(1, len(path))
+        slack = self.profile.goal_tolerance
         for q in path:
-            move = max(abs(a - b) for a, b in zip(q, prev))
+            move = max(abs(a - b) for a, b in zip(q, prev)) + slack
+            slack = 0.0
             t += max(per, move / speed, 1e-3)
             points.append((t, list(q)))
             prev = list(q)

@@ -48,6 +48,8 @@ class RobotProfile:
     trainer_request_topic: str = "trainer/scene_request"
     trainer_done_topic: str = "trainer/scene_done"
     trainer_timeout_s: float = 120.0
+    wrench_topic: str = ""
+    wrench_frame: str = ""
 
     def object_topic_of(self, name: str) -> str:
         """Return the pose topic of the case's object ``name`` (its mocap name mapped)."""
@@ -130,7 +132,10 @@ def load_profile(spec: str | Path = "baxter") -> RobotProfile:
                tr.float("timeout_s", RobotProfile.trainer_timeout_s, minimum=1.0,
                         maximum=3600.0))
     tr.done()
+    wr = f.table("wrench", {})
+    wrench = ((_name(wr, "topic"), _name(wr, "frame")) if wr.data else ("", ""))
+    wr.done()
     f.done()
     return RobotProfile(str(path), name, urdf, *frames, js_topic, js_rate, stale, arm_action,
                         tuple(joints), *tolerances, *gripper, topic, rate, dict(names), speed,
-                        lo, hi, *trainer)
+                        lo, hi, *trainer, *wrench)

@@ -8,6 +8,9 @@ It publishes, with the names of the robot profile (:mod:`.profile`):
 
 * ``sensor_msgs/JointState`` of the arm's joints (and the gripper's gap) at the
   profile's rate;
+* ``geometry_msgs/WrenchStamped`` of a wrist force/torque sensor (the profile's
+  ``[wrench]``): the contact force on the held tool and its torque about the gripper,
+  in the gripper frame, tared, with the joint states;
 * ``geometry_msgs/PoseStamped`` of each tracked object of the scene (the case's
   perceived objects, its context and the tool) on its own topic, in the world frame,
   as a motion-capture system publishes rigid bodies;
@@ -112,6 +115,7 @@ class SimArm:
         names = [n for n, _ in episode.perceived] + [episode.context_name, episode.tool]
         self.tracked = list(dict.fromkeys(names))
         self.closed = False
+        self.wrench: tuple = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
     def rebind(self, episode: Any) -> None:
         """Take over a newly built scene (the trainer's answer to a scene request)."""
@@ -132,7 +136,23 @@ class SimArm:
     def step(self) -> float:
         """Advance the physics one time step; return the simulated time (s)."""
         self.ep.sim.step(1)
+        if self.profile.wrench_topic:
+            self.wrench = self.measure_wrench()
         return self.ep.sim_time()
+
+    def measure_wrench(self) -> tuple:
+        """Return what a wrist force/torque sensor measures now, tared: the contact
+        force on the held tool and its torque about the gripper, in the gripper frame
+        (zero when nothing is held)."""
+        if not self.holding:
+            return ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+        from creative_py.backends.pybullet.loads import contact_wrench
+
+        g_pos, g_quat = self.robot.gripper_pose()
+        force, torque = contact_wrench(self.ep.sim, self.ep.tool_body, g_pos)
+        inv = Rotation.from_quat(g_quat).inv()
+        return (tuple(float(v) for v in inv.apply(force)),
+                tuple(float(v) for v in inv.apply(torque)))
 
     def time(self) -> float:
         """Return the simulated time (s)."""
@@ -279,6 +299,11 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
     pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
                  for n in arm.tracked}
+    wrench_pub = None
+    if p.wrench_topic:
+        from geometry_msgs.msg import WrenchStamped
+
+        wrench_pub = node.create_publisher(WrenchStamped, p.wrench_topic, 10)
     trainer_done = None
     if scenes is not None:
         from std_msgs.msg import String
@@ -305,6 +330,8 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     if scenes is not None:
         interface["trainer"] = {"request": p.trainer_request_topic,
                                 "done": p.trainer_done_topic}
+    if wrench_pub is not None:
+        interface["wrench"] = p.wrench_topic
     print("standin ready " + json.dumps(interface), file=out, flush=True)
 
     js_period, pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
@@ -423,6 +450,12 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
             dt = now - prev_t
             msg.velocity = [*((a - b) / dt for a, b in zip(q, prev_q)), 0.0] if dt > 0 else []
             js_pub.publish(msg)
+            if wrench_pub is not None:
+                w = WrenchStamped()
+                w.header.stamp, w.header.frame_id = msg.header.stamp, p.wrench_frame
+                (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = arm.wrench[0]
+                (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = arm.wrench[1]
+                wrench_pub.publish(w)
             prev_q, prev_t = q, now
             next_js = max(next_js + js_period, now)
         if now >= next_pose:

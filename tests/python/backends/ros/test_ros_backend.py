@@ -129,6 +129,30 @@ def test_the_stand_in_sets_up_the_scene_a_request_asks_for():
         keeper.close()
 
 
+def test_a_wrist_sensors_samples_give_the_tool_load():
+    import math
+
+    from creative_py.backends.ros.episode import wrench_load
+
+    # the tool frame is the gripper frame shifted 0.1 m back; a 2 N pull along -x acting
+    # on the line y = 0.05 (the torque about the gripper: r x F), then 1 N, then nothing
+    grasp = ((-0.1, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+    f = (-2.0, 0.0, 0.0)
+    t = (0.0, 0.0, 0.05 * 2.0)  # (x, 0.05, 0) x (-2, 0, 0) = (0, 0, 0.1)
+    samples = [((0.0, 0.0, 0.0), (0.0, 0.0, 0.0)), (f, t),
+               ((-1.0, 0.0, 0.0), (0.0, 0.0, 0.05))]
+    load = wrench_load(samples, grasp, 50.0, working_point=(0.4, 0.05, 0.0))
+    assert load.max_force_n == 2.0 and load.steps == 3 and load.contact_steps == 2
+    assert load.robust_force_n == pytest.approx(1.95)
+    # the line's point nearest the working point, in the tool frame
+    assert load.point == pytest.approx((0.4, 0.05, 0.0), abs=1e-9)
+    assert load.grasp_point == pytest.approx((0.1, 0.0, 0.0))
+    assert load.force == pytest.approx(f)
+    assert load.impulse_ns == pytest.approx(3.0 / 50.0)
+    assert wrench_load(samples[:1], grasp, 50.0).max_force_n == 0.0
+    assert math.isclose(load.to_dict()["max_force_n"], 2.0)
+
+
 # -------------------------------------------------------------------- over ROS
 @pytest.fixture(scope="module")
 def hook_trials() -> dict:
@@ -159,7 +183,10 @@ def test_hook_trials_over_ros_are_decided_by_the_stand_ins_physics(hook_trials):
     assert ok["true_final"]["cube1"][0] == pytest.approx(v["value"], abs=1e-6)
     assert ok["steps"] > 0  # trajectory goals sent
     assert ["held", "hook_a2"] in ok["facts"]
-    assert ok["tool_load"] is None  # no wrench topic: unmeasured
+    # the pull's contact load, from the wrist sensor's topic (the stand-in's contacts)
+    load = ok["tool_load"]
+    assert load["max_force_n"] > 0 and 0 < load["robust_force_n"] <= load["max_force_n"]
+    assert load["contact_steps"] > 0 and load["point"] is not None
     # a short hook cannot reach behind the cube; the medium one not in the long tube
     for t in (short, long_tube):
         assert t["outcome"] in ("failure", "blocked"), t
