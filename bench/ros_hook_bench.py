@@ -100,7 +100,9 @@ def summary(folder: Path) -> dict:
             "solved_by": create.get("solved_by"),
             "created": [t.get("name") for t in tools],
             "create_success": create.get("success"),
-            "strength": [(t.get("strength") or {}).get("verdict") for t in tools]}
+            "strength": [{k: (t.get("strength") or {}).get(k)
+                          for k in ("verdict", "force_n", "peak_force_n", "safety_factor",
+                                    "lever_arm_m")} for t in tools]}
 
 
 def goal_figures(log: dict) -> dict:
