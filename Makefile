@@ -124,9 +124,8 @@ test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs includ
 mutate-prolog: $(STAMP)  ## Run the hand-written mutants of the Prolog core; score in bench/results/prolog_mutants.json.
 	$(PY) tests/prolog/mutants/mutants.py
 
-run: $(STAMP)  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros: over ROS 2).
+run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros: over ROS 2).
 ifeq ($(BACKEND),ros)
-	$(MAKE) --no-print-directory $(ROS_STAMP)
 	@# The stand-in and the learner, two processes talking ROS 2 in a private network
 	@# namespace with only loopback (unshare -n where allowed, else -rn).
 	@prefix="unshare -n"; $$prefix true 2>/dev/null || prefix="unshare -rn"; \
