@@ -19,8 +19,11 @@ backend's motions give:
   the stop's :class:`~creative_py.simulator.types.Verdict`;
 * ``unreachable``: no IK solution, or the learner's bounds refused the motion, which
   is then never sent;
-* ``invalid``: the arm rejected the goal, did not answer in time, or its joint states
-  are stale.
+* ``invalid``: the arm rejected the goal, did not answer in time, or went silent (its
+  joint states stale or its clock stopped, before the goal or while it ran). A silent
+  arm is also kept as :attr:`LearnerArm.lost` (an :class:`ArmUnavailable`, which is a
+  :class:`~creative_py.simulator.types.BackendLost`): an episode raises it through the
+  boundary so that the run stops resumably instead of recording a failed trial.
 
 :class:`RosEpisode` is the episode side of the backend, shaped as the backends' episodes
 are after the trial loop moved above the boundary: open an episode, run a skill,
@@ -107,6 +110,18 @@ class LearnerArm:
         self.step, self.timeout = step, timeout
         self.check = goal_checker(self.profile, client.arm_q, kinematics.forward_position)
         self.goals_sent = 0
+        self.lost: Optional[ArmUnavailable] = None
+
+    def _silent(self, why: str) -> SkillOutcome:
+        """Note that the arm went silent; return the motion's ``invalid`` outcome."""
+        self.lost = ArmUnavailable(why)
+        return SkillOutcome("invalid", f"the arm went silent: {why}")
+
+    def raise_if_lost(self) -> None:
+        """Raise the :class:`ArmUnavailable` of a motion that found the arm silent (an
+        episode calls it after a motion: the run then stops resumably)."""
+        if self.lost is not None:
+            raise self.lost
 
     def gripper_pose(self) -> Pose:
         """Return the gripper's pose by forward kinematics of the joint states."""
@@ -133,7 +148,7 @@ class LearnerArm:
         except OutOfBounds as exc:
             return SkillOutcome("unreachable", f"refused by the learner's bounds: {exc}")
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         self.goals_sent += 1
         r = self.client.send_trajectory(goal, timeout=points[-1][0] + self.timeout)
         if r.status == "succeeded":
@@ -149,6 +164,8 @@ class LearnerArm:
                            measures={"error_code": r.error_code})
             return SkillOutcome("blocked", f"the arm aborted the goal ({r.error_name}): "
                                 f"{r.error_string}", stop)
+        if r.status == "silent":
+            return self._silent(r.error_string)
         return SkillOutcome("invalid", f"the goal was {r.status}: {r.error_string}")
 
     def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:
@@ -156,7 +173,7 @@ class LearnerArm:
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         return self.send(self._timed(start, [list(q)], min_duration))
 
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
@@ -165,7 +182,7 @@ class LearnerArm:
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         here = self.kin.forward(start)
         dist = math.dist(here[0], target[0])
         n = max(1, math.ceil(dist / self.step))
@@ -191,6 +208,10 @@ class LearnerArm:
         """Close or open the gripper; ``ok`` when it answered (``holding`` says more)."""
         r = self.client.grip(close)
         if r is None:
+            try:
+                self.client.check_fresh()
+            except ArmUnavailable as exc:
+                return self._silent(str(exc))
             return SkillOutcome("invalid", f"the gripper {self.profile.gripper_action!r} did "
                                 "not answer")
         self.holding = bool(close and r.stalled and not r.reached_goal)
