@@ -25,8 +25,12 @@ topics give:
 A motion that did not go as planned is reported as the arm reported it
 (:class:`~creative_py.backends.ros.motion.LearnerArm`): aborted on a path or goal
 tolerance (a jammed tool makes the arm lag: the role of the pybullet backend's
-tracking guard) is ``blocked``; rejected, not answered in time or stale joint states
-is ``invalid``; no IK solution or outside the learner's bounds is ``unreachable``.
+tracking guard) is ``blocked``; rejected or not answered in time is ``invalid``; no
+IK solution or outside the learner's bounds is ``unreachable``. An arm gone silent
+(stale joint states, a stopped clock) is no outcome: its
+:class:`~creative_py.backends.ros.client.ArmUnavailable` (a
+:class:`~creative_py.simulator.types.BackendLost`) goes through the boundary and the
+run stops resumably.
 The trial's outcome is labelled above the boundary (:mod:`creative_py.simulator.trial`).
 
 The contact load on the tool during the tool action comes from a wrist force/torque
@@ -315,6 +319,7 @@ class RosEpisode(PybulletEpisode):
         self.sync()
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
         self.held = False
+        conn.arm.lost = None  # the arm answered again: a new scene, a new start
         self._t0 = time.monotonic()
         self._goals0 = conn.arm.goals_sent
 
@@ -357,11 +362,13 @@ class RosEpisode(PybulletEpisode):
         if acting:
             self.conn.record_wrenches()
         try:
-            return super().run_skill(name, pose, **options)
+            res = super().run_skill(name, pose, **options)
+            # An arm gone silent is no outcome of the trial: BackendLost (ArmUnavailable)
+            # goes through the boundary, the run stops resumably.
+            self.conn.arm.raise_if_lost()
+            return res
         except GripMissed as exc:
             return SkillOutcome("blocked", f"{name}: {exc}")
-        except ArmUnavailable as exc:
-            return SkillOutcome("invalid", f"{name}: {exc}")
         finally:
             if acting:
                 work = (self.spec.working_point() if hasattr(self.spec, "working_point")

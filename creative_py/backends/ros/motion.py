@@ -18,8 +18,11 @@ backend's motions give:
   the stop's :class:`~creative_py.simulator.types.Verdict`;
 * ``unreachable``: no IK solution, or the learner's bounds refused the motion, which
   is then never sent;
-* ``invalid``: the arm rejected the goal, did not answer in time, or its joint states
-  are stale.
+* ``invalid``: the arm rejected the goal, did not answer in time, or went silent (its
+  joint states stale or its clock stopped, before the goal or while it ran). A silent
+  arm is also kept as :attr:`LearnerArm.lost` (an :class:`ArmUnavailable`, which is a
+  :class:`~creative_py.simulator.types.BackendLost`): an episode raises it through the
+  boundary so that the run stops resumably instead of recording a failed trial.
 
 :class:`creative_py.backends.ros.episode.RosEpisode` (the backend's episode) moves
 the arm through :meth:`LearnerArm.send` and :meth:`LearnerArm.grip`; ``log`` keeps each
@@ -105,6 +108,18 @@ class LearnerArm:
         self.log: list[dict] = []
         """One entry per goal sent: its planned duration, status and the seconds from
         sending it to its acceptance, first feedback and result (``GoalTimes``)."""
+        self.lost: Optional[ArmUnavailable] = None
+
+    def _silent(self, why: str) -> SkillOutcome:
+        """Note that the arm went silent; return the motion's ``invalid`` outcome."""
+        self.lost = ArmUnavailable(why)
+        return SkillOutcome("invalid", f"the arm went silent: {why}")
+
+    def raise_if_lost(self) -> None:
+        """Raise the :class:`ArmUnavailable` of a motion that found the arm silent (an
+        episode calls it after a motion: the run then stops resumably)."""
+        if self.lost is not None:
+            raise self.lost
 
     def gripper_pose(self) -> Pose:
         """Return the gripper's pose by forward kinematics of the joint states."""
@@ -138,7 +153,7 @@ class LearnerArm:
         except OutOfBounds as exc:
             return SkillOutcome("unreachable", f"refused by the learner's bounds: {exc}")
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         self.goals_sent += 1
         r = self.client.send_trajectory(goal, timeout=points[-1][0] + self.timeout)
         self.log.append({"planned_s": points[-1][0], "points": len(points),
@@ -157,6 +172,8 @@ class LearnerArm:
                            measures={"error_code": r.error_code})
             return SkillOutcome("blocked", f"the arm aborted the goal ({r.error_name}): "
                                 f"{r.error_string}", stop)
+        if r.status == "silent":
+            return self._silent(r.error_string)
         return SkillOutcome("invalid", f"the goal was {r.status}: {r.error_string}")
 
     def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:
@@ -164,7 +181,7 @@ class LearnerArm:
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         return self.send(self._timed(start, [list(q)], min_duration))
 
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
@@ -173,7 +190,7 @@ class LearnerArm:
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         here = self.kin.forward(start)
         dist = math.dist(here[0], target[0])
         n = max(1, math.ceil(dist / self.step))
@@ -199,6 +216,10 @@ class LearnerArm:
         """Close or open the gripper; ``ok`` when it answered (``holding`` says more)."""
         r = self.client.grip(close)
         if r is None:
+            try:
+                self.client.check_fresh()
+            except ArmUnavailable as exc:
+                return self._silent(str(exc))
             return SkillOutcome("invalid", f"the gripper {self.profile.gripper_action!r} did "
                                 "not answer")
         self.holding = bool(close and r.stalled and not r.reached_goal)

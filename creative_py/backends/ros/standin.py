@@ -40,8 +40,14 @@ location and tool (a created tool from the request's spec and URDF) in its physi
 aborting a running goal, and answers with the request's id.
 
 Physics time runs at ``--realtime`` times the wall clock (1: as fast as a real arm), or
-slower where the machine cannot keep up (it never runs faster to catch up); the
-messages' stamps are the node's (wall) clock, a trajectory's times are physics time. The first line on the standard
+slower where the machine cannot keep up (a lag of up to 0.25 s is caught up, a longer
+one is dropped, and a warning gives the real-time factor every 5 s: :class:`Pace`).
+The physics time is published as ``rosgraph_msgs/Clock`` on the profile's clock topic
+(``/clock``), as Gazebo does; the messages' stamps are that simulated time when the
+profile's ``[clock] use_sim_time`` is true, else the node's wall clock. A trajectory's
+times are physics time. SIGUSR1 stops the joint states (the clock and everything else
+go on) and a second SIGUSR1 resumes them: the fault tests' arm that is alive but
+silent. The first line on the standard
 output is ``standin ready`` followed by the interface's names as JSON. It stops on
 SIGINT/SIGTERM or after ``--seconds``. Bad input: one line naming the option or the
 file and field, exit 2.
@@ -116,10 +122,14 @@ class SimArm:
         self.tracked = list(dict.fromkeys(names))
         self.closed = False
         self.wrench: tuple = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+        self.offset = 0.0  # s: the arm's time minus the episode's (scenes rebuilt before)
 
     def rebind(self, episode: Any) -> None:
-        """Take over a newly built scene (the trainer's answer to a scene request)."""
+        """Take over a newly built scene (the trainer's answer to a scene request); the
+        arm's time goes on from where it was (the clock and the stamps never go back)."""
+        before = self.time()
         self.__init__(episode, self.profile, self.reach)
+        self.offset = before - episode.sim_time()
 
     def q(self) -> list[float]:
         """Return the arm's joint positions (rad), in the profile's order."""
@@ -138,7 +148,7 @@ class SimArm:
         self.ep.sim.step(1)
         if self.profile.wrench_topic:
             self.wrench = self.measure_wrench()
-        return self.ep.sim_time()
+        return self.time()
 
     def measure_wrench(self) -> tuple:
         """Return what a wrist force/torque sensor measures now, tared: the contact
@@ -155,8 +165,8 @@ class SimArm:
                 tuple(float(v) for v in inv.apply(torque)))
 
     def time(self) -> float:
-        """Return the simulated time (s)."""
-        return self.ep.sim_time()
+        """Return the simulated time (s), across the scenes built so far."""
+        return self.ep.sim_time() + self.offset
 
     def poses(self) -> dict[str, Pose]:
         """Return the world pose of each tracked object's own frame."""
@@ -229,6 +239,56 @@ def _trajectory_run(goal: Any, arm: SimArm, start: Sequence[float]) -> Trajector
                          p.goal_tolerance, p.goal_time_tolerance)
 
 
+def _sim_stamp(t: float) -> Any:
+    """Return physics time ``t`` (s) as a ``builtin_interfaces/Time``."""
+    from builtin_interfaces.msg import Time
+
+    sec = int(t)
+    return Time(sec=sec, nanosec=min(999_999_999, int(round((t - sec) * 1e9))))
+
+
+class Pace:
+    """Keeps physics time at ``realtime`` times the wall clock, and says when it cannot.
+
+    :meth:`wait` is called once a publication period (not every physics step: each
+    sleep is a wake-up the scheduler may serve late on a loaded machine, and the GIL
+    must be won back after it). A lag behind the wall clock is caught up, by stepping
+    without sleeping, up to :attr:`CATCH_UP` s; a longer one is dropped (the physics
+    never races to make up for a stall). Every :attr:`REPORT_EVERY` s of wall time the
+    real-time factor of that window is measured (:attr:`factor`) and a warning is
+    logged when it is below 0.9 of ``realtime``.
+    """
+
+    CATCH_UP = 0.25
+    REPORT_EVERY = 5.0
+
+    def __init__(self, realtime: float, sim0: float, logger: Any = None,
+                 clock=time.monotonic, sleep=time.sleep) -> None:
+        self.realtime, self.logger, self.clock, self.sleep = realtime, logger, clock, sleep
+        self.wall0 = self.win_wall = clock()
+        self.sim0 = self.win_sim = sim0
+        self.factor: Optional[float] = None
+        self.dropped = 0.0  # wall seconds of lag dropped
+
+    def wait(self, now: float) -> None:
+        """Sleep until the wall clock reaches physics time ``now`` (s)."""
+        wall = self.clock()
+        ahead = self.wall0 + (now - self.sim0) / self.realtime - wall
+        if ahead > 0:
+            self.sleep(ahead)
+        elif ahead < -self.CATCH_UP:
+            self.dropped -= ahead
+            self.wall0, self.sim0 = wall, now
+        span = wall - self.win_wall
+        if span >= self.REPORT_EVERY:
+            self.factor = (now - self.win_sim) / span
+            if self.factor < 0.9 * self.realtime and self.logger is not None:
+                self.logger.warning(f"physics ran at {self.factor:.2f} x real time over the "
+                                    f"last {span:.1f} s: this machine cannot keep up (the "
+                                    "simulated time is on the clock topic)")
+            self.win_wall, self.win_sim = wall, now
+
+
 def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
           out=sys.stdout, scenes: Any = None) -> int:
     """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0.
@@ -244,14 +304,18 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
 
     from control_msgs.action import FollowJointTrajectory, GripperCommand
     from geometry_msgs.msg import PoseStamped
+    from rosgraph_msgs.msg import Clock
     from sensor_msgs.msg import JointState
 
     from rclpy.signals import SignalHandlerOptions
 
     p = arm.profile
     stop = threading.Event()
+    muted = threading.Event()  # SIGUSR1 toggles it: a live arm whose joint states stop
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda *_: stop.set())
+    signal.signal(signal.SIGUSR1,
+                  lambda *_: muted.clear() if muted.is_set() else muted.set())
     rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ours stop the loop
     node = Node("creative_standin")
     group = ReentrantCallbackGroup()
@@ -261,9 +325,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
 
     def on_trajectory(goal: Any) -> Any:
         try:
-            with lock:
-                q = list(state["q"])
-            _trajectory_run(goal, arm, q)
+            _trajectory_run(goal, arm, list(state["q"]))
         except InvalidTrajectory as exc:
             node.get_logger().warning(f"rejected a trajectory: {exc}")
             return GoalResponse.REJECT
@@ -273,7 +335,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
         def run(handle: Any) -> Any:
             job = Job(handle, kind, handle.request)
             with lock:
-                jobs.append(job)
+                jobs.append(job)  # the physics loop takes it at its next step
             while not job.done.wait(0.05):
                 if stop.is_set():
                     handle.abort()
@@ -297,6 +359,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     ActionServer(node, GripperCommand, p.gripper_action, execute_callback=execute("gripper"),
                  cancel_callback=lambda _: CancelResponse.REJECT, callback_group=group)
     js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
+    clock_pub = node.create_publisher(Clock, p.clock_topic, 10)
     pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
                  for n in arm.tracked}
     wrench_pub = None
@@ -326,7 +389,8 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     interface = {"joint_states": p.joint_states_topic, "trajectory_action": p.arm_action,
                  "gripper_action": p.gripper_action, "joints": list(p.joints),
                  "objects": {n: p.object_topic_of(n) for n in arm.tracked},
-                 "frame": p.world_frame}
+                 "frame": p.world_frame, "clock": p.clock_topic,
+                 "use_sim_time": p.use_sim_time}
     if scenes is not None:
         interface["trainer"] = {"request": p.trainer_request_topic,
                                 "done": p.trainer_done_topic}
@@ -340,8 +404,15 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     next_js = next_pose = arm.time()
     last_fb = -math.inf
     prev_q, prev_t = arm.q(), arm.time()
-    wall0, sim0 = time.monotonic(), arm.time()
+    pace = Pace(realtime, arm.time(), node.get_logger())
     deadline = time.monotonic() + seconds
+
+    def stamp(now: float) -> Any:
+        """The header stamp of a message about physics time ``now``: that simulated time
+        when the profile says use_sim_time (as Gazebo stamps), else the wall clock."""
+        if p.use_sim_time:
+            return _sim_stamp(now)
+        return node.get_clock().now().to_msg()
 
     def finish(job: Job, code: int, message: str, succeeded: bool) -> None:
         result = _result("trajectory", code, message)
@@ -352,7 +423,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     while not stop.is_set() and time.monotonic() < deadline:
         if scenes is not None and not scenes.requests.empty():
             # The trainer's scene request (trainer.py): rebuild the scene here, in the
-            # physics loop, and start its clock afresh.
+            # physics loop; the arm's time goes on from where it was (SimArm.rebind).
             rid, error, episode = scenes.apply(scenes.requests.get())
             if episode is not None:
                 if active is not None:
@@ -364,12 +435,8 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                         pose_pubs[name] = node.create_publisher(
                             PoseStamped, p.object_topic_of(name), 10)
                 hold = arm.q()
-                next_js = next_pose = arm.time()
-                last_fb = -math.inf
-                prev_q, prev_t = arm.q(), arm.time()
-                wall0, sim0 = time.monotonic(), arm.time()
-                with lock:
-                    state["q"] = arm.q()
+                prev_q = hold
+                state["q"] = hold
             if rid is not None:
                 from std_msgs.msg import String
 
@@ -377,8 +444,11 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                     {"id": rid, "ok": error is None, "error": error or ""})))
             if error is not None:
                 node.get_logger().warning(f"scene request {rid}: {error}")
-        with lock:
-            pending, jobs[:] = list(jobs), []
+        if jobs:
+            with lock:
+                pending, jobs[:] = list(jobs), []
+        else:
+            pending = []
         for job in pending:
             if job.kind == "gripper":
                 close = job.request.command.position <= (p.gripper_open + p.gripper_closed) / 2
@@ -424,7 +494,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                     last_fb = now
                     desired, index = active.run.desired(t)
                     fb = FollowJointTrajectory.Feedback()
-                    fb.header.stamp = node.get_clock().now().to_msg()
+                    fb.header.stamp = stamp(now)
                     fb.joint_names = list(p.joints)
                     fb.desired.positions = desired
                     fb.actual.positions = q
@@ -440,11 +510,15 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                     hold = active.run.targets[-1]
                 finish(active, result.code, result.message, ok)
                 active = None
-        with lock:
-            state["q"] = q
-        if now >= next_js:
+        state["q"] = q  # one reference swapped: atomic under the GIL
+        if now < next_js:
+            continue  # the physics runs ahead, at most one publication period
+        clock_msg = Clock()
+        clock_msg.clock = _sim_stamp(now)
+        clock_pub.publish(clock_msg)
+        if not muted.is_set():
             msg = JointState()
-            msg.header.stamp = node.get_clock().now().to_msg()
+            msg.header.stamp = stamp(now)
             msg.name = [*p.joints, p.gripper_joint]
             msg.position = [*q, arm.gap()]
             dt = now - prev_t
@@ -456,23 +530,19 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                 (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = arm.wrench[0]
                 (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = arm.wrench[1]
                 wrench_pub.publish(w)
-            prev_q, prev_t = q, now
-            next_js = max(next_js + js_period, now)
+        prev_q, prev_t = q, now
+        next_js = max(next_js + js_period, now)
         if now >= next_pose:
-            stamp = node.get_clock().now().to_msg()
+            pose_stamp = stamp(now)
             for name, (pos, quat) in arm.poses().items():
                 msg = PoseStamped()
-                msg.header.stamp, msg.header.frame_id = stamp, p.world_frame
+                msg.header.stamp, msg.header.frame_id = pose_stamp, p.world_frame
                 msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = pos
                 (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
                  msg.pose.orientation.w) = quat
                 pose_pubs[name].publish(msg)
             next_pose = max(next_pose + pose_period, now)
-        ahead = wall0 + (now - sim0) / realtime - time.monotonic()
-        if ahead > 0:
-            time.sleep(ahead)
-        elif ahead < -0.05:  # behind (a loaded machine): never run faster to catch up
-            wall0, sim0 = time.monotonic(), now
+        pace.wait(now)  # once a publication period: wall time catches up with physics
     stop.set()
     if active is not None:
         finish(active, INVALID_GOAL, "the stand-in stopped", False)
