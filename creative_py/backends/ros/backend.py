@@ -284,5 +284,8 @@ def recorder(camera: Any) -> Any:
     raise ValueError("the ros backend records no clips")
 
 
-__all__ = ["ArmAbsent", "Connection", "SceneRefused", "connection", "display_reachable",
-           "load_world", "open_episode", "recorder", "tool_rests"]
+Episode = RosEpisode
+"""The backend's episode class (:class:`creative_py.simulator.Episode`)."""
+
+__all__ = ["ArmAbsent", "Connection", "Episode", "SceneRefused", "connection",
+           "display_reachable", "load_world", "open_episode", "recorder", "tool_rests"]
