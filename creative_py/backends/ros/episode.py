@@ -65,7 +65,12 @@ WAYPOINT_RAD = 0.1
 
 
 class GripMissed(Exception):
-    """The gripper closed on nothing (the arm's GripperCommand result)."""
+    """The grasp did not hold the tool: the gripper closed on nothing (``blocked``) or
+    did not answer (``invalid``), as the arm's GripperCommand said."""
+
+    def __init__(self, reason: str, status: str = "blocked") -> None:
+        super().__init__(reason)
+        self.status = status
 
 
 class SceneRefused(WorldFileError):
@@ -244,7 +249,9 @@ class RosRobot:
     # ----------------------------------------------------------------- grasp
     def grasp(self, body: int, frame_in_gripper) -> None:
         """Close the gripper; raise GripMissed unless it then holds something."""
-        self.arm.grip(True)
+        res = self.arm.grip(True)
+        if not res.ok:
+            raise GripMissed(res.reason, res.status)
         if not getattr(self.arm, "holding", False):
             raise GripMissed("the gripper closed on nothing (GripperCommand on "
                              f"{self.conn.profile.gripper_action!r}: not stalled on an object)")
@@ -368,7 +375,8 @@ class RosEpisode(PybulletEpisode):
             self.conn.arm.raise_if_lost()
             return res
         except GripMissed as exc:
-            return SkillOutcome("blocked", f"{name}: {exc}")
+            self.conn.arm.raise_if_lost()  # a silent gripper is no miss
+            return SkillOutcome(exc.status, f"{name}: {exc}")
         finally:
             if acting:
                 work = (self.spec.working_point() if hasattr(self.spec, "working_point")
