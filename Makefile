@@ -12,6 +12,10 @@ OUT   ?= runs
 # make hook/wedge/rake show tool creation even when a catalogued object solved the
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
+# make run BACKEND=ros: the case on the stand-in arm over ROS 2 (make setup-ros first);
+# ROS_DOMAIN is the domain id of its private, loopback-only network namespace.
+BACKEND ?=
+ROS_DOMAIN ?= 42
 
 .PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
 
@@ -127,8 +131,18 @@ test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs includ
 mutate-prolog: $(STAMP)  ## Run the hand-written mutants of the Prolog core; score in bench/results/prolog_mutants.json.
 	$(PY) tests/prolog/mutants/mutants.py
 
-run: $(STAMP)  ## Any case end to end (CASE=<id>, see make cases).
-	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE)
+run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros: over ROS 2).
+ifeq ($(BACKEND),ros)
+	@# The stand-in and the learner, two processes talking ROS 2 in a private network
+	@# namespace with only loopback (unshare -n where allowed, else -rn).
+	@prefix="unshare -n"; $$prefix true 2>/dev/null || prefix="unshare -rn"; \
+	$$prefix sh -c 'ip link set lo up && ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST \
+	  ROS_DOMAIN_ID=$(ROS_DOMAIN) exec $(PY) -m creative_py.backends.ros.launch \
+	  --case $(CASE) -- run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) --backend ros'
+else
+	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) \
+	  $(if $(BACKEND),--backend $(BACKEND))
+endif
 
 cases: $(STAMP)  ## List the cases (every worlds/*/case.toml).
 	$(VENV)/bin/creative cases

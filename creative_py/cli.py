@@ -184,6 +184,32 @@ def _need_display(manifest=None) -> None:
         _fail(str(exc))
 
 
+def _backend_override(backend: Optional[str], robot_profile: Optional[str]) -> None:
+    """Check ``--backend`` (a registered backend whose packages are installed) and
+    ``--robot-profile`` (only with ``--backend ros``), or fail in one line; set the
+    profile for the ros backend (its environment variable)."""
+    from creative_py.simulator.loader import BackendError, backend as load_backend
+
+    if backend is not None:
+        try:
+            load_backend(backend)
+        except BackendError as exc:
+            _fail(f"--backend {backend}: {exc}")
+    if robot_profile is not None:
+        if backend != "ros":
+            _fail("--robot-profile: only with --backend ros (the profile of the arm "
+                  "over ROS 2)")
+        if not robot_profile.strip():
+            _fail("--robot-profile must not be empty")
+        os.environ["CREATIVE_ROBOT_PROFILE"] = robot_profile
+
+
+_BACKEND_HELP = ("Run on this simulator backend instead of the case manifest's (ros: the "
+                 "arm over ROS 2, docs/real-robot.md).")
+_PROFILE_HELP = ("With --backend ros: the robot profile, a name under robots/ or a .toml "
+                 "path (default baxter).")
+
+
 @app.command()
 def cases(as_json: bool = typer.Option(False, "--json", help="Print the cases as JSON.")) -> None:
     """List the cases: id, world folder, variants (the harder one marked) and trial budget.
@@ -249,20 +275,23 @@ def trial(
                                         "shipped one of the case)."),
     list_: bool = typer.Option(False, "--list", help="Print objects, locations, variants "
                                "and the default pose as JSON, and exit."),
+    backend: Optional[str] = typer.Option(None, "--backend", help=_BACKEND_HELP),
+    robot_profile: Optional[str] = typer.Option(None, "--robot-profile", help=_PROFILE_HELP),
 ) -> None:
     """Run one physical trial and report its outcome (success, failure, blocked,
     unreachable or invalid)."""
     variant = _name("--variant", variant)
     save_images, world = _path("--save-images", save_images), _path("--world", world)
+    _backend_override(backend, robot_profile)
     with _one_line_errors(), _stdout_to_stderr():
         lines = _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
-                       world, list_)
+                       world, list_, backend)
     for line in lines:
         typer.echo(line)
 
 
 def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui, world,
-           list_) -> list[str]:
+           list_, backend=None) -> list[str]:
     out: list[str] = []
     from creative_py.bridge import Engine
     from creative_py.learning.poses import pose_resolver
@@ -272,6 +301,10 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
     from creative_py.world_files import WorldFileError
 
     m = _manifest(case, world)
+    if backend is not None and backend != m.backend:
+        from dataclasses import replace
+
+        m = replace(m, backend=backend)
     _check_counts(("--seed", seed, 0, SEED_MAX))
     if save_images is not None and save_images.exists() and not save_images.is_dir():
         _fail(f"--save-images {save_images}: not a folder")
@@ -440,6 +473,8 @@ def run(
                                         "learning from another case's learned model (its "
                                         "run folder or model.pl) where the ontology maps "
                                         "its literals; test only the rest."),
+    backend: Optional[str] = typer.Option(None, "--backend", help=_BACKEND_HELP),
+    robot_profile: Optional[str] = typer.Option(None, "--robot-profile", help=_PROFILE_HELP),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot,
     video clips)."""
@@ -478,6 +513,7 @@ def run(
         typer.echo(str(folder.path))
         return
     _manifest(case, world)
+    _backend_override(backend, robot_profile)
     _check_counts(("--seed", seed, 0, SEED_MAX), ("--max-trials", max_trials, 1, TRIALS_MAX),
                   ("--consecutive", consecutive, 1, TRIALS_MAX),
                   ("--eval-trials", eval_trials, 0, EVAL_TRIALS_MAX),
@@ -489,7 +525,8 @@ def run(
                           consecutive=consecutive, eval_trials=eval_trials, video=video,
                           gui=gui, strategy=strategy, world_seed=world_seed,
                           catalogue_first=catalogue_first,
-                          demonstrate_creation=demonstrate_creation, prior=prior)
+                          demonstrate_creation=demonstrate_creation, prior=prior,
+                          backend=backend, robot_profile=robot_profile)
     except UnknownStrategy as exc:
         _fail(f"--strategy: {exc}")
     except ValueError as exc:

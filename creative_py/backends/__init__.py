@@ -3,6 +3,8 @@
 
 ``pybullet``   the reference: Baxter and a case's scene in pybullet
 ``maniskill``  ManiSkill3 on SAPIEN (optional: ``make setup-maniskill``)
+``ros``        an arm over ROS 2, the pybullet stand-in or a lab's (optional:
+               ``make setup-ros``; ``creative run CASE --backend ros``)
 
 This module is their registry (:data:`BACKENDS`: name -> package, optional extra, set-up
 command) and imports none of them: nothing above the boundary imports a backend, the
@@ -41,6 +43,8 @@ BACKENDS: dict[str, BackendEntry] = {
     "pybullet": BackendEntry("creative_py.backends.pybullet"),
     "maniskill": BackendEntry("creative_py.backends.maniskill", extra="maniskill",
                               setup="make setup-maniskill"),
+    "ros": BackendEntry("creative_py.backends.ros.backend", extra="ros",
+                        setup="make setup-ros"),
 }
 """The simulator backends a manifest's ``backend`` may name: the registry that
 :func:`creative_py.simulator.loader.backend` reads. It lives here, beside the backends

@@ -68,6 +68,14 @@ class RunOptions:
         Transfer: a run folder (or its ``model.pl``) of another case whose learned model
         the version space starts from, where the ontology maps its literals
         (:mod:`creative_py.learning.prior`); None: learn from the demonstration alone.
+    backend : str or None
+        A simulator backend (:data:`creative_py.backends.BACKENDS`) instead of the one
+        the case's manifest names (``--backend ros``: the arm over ROS 2); None: the
+        manifest's.
+    robot_profile : str or None
+        The robot profile of the ``ros`` backend (a name under ``robots/`` or a
+        ``.toml`` path; None: ``baxter``), passed to it in the environment variable
+        ``CREATIVE_ROBOT_PROFILE``.
     """
 
     seed: int = 0
@@ -83,13 +91,17 @@ class RunOptions:
     catalogue_first: Optional[bool] = None
     demonstrate_creation: bool = False
     prior: Optional[str] = None
+    backend: Optional[str] = None
+    robot_profile: Optional[str] = None
 
     def recorded(self) -> dict[str, Any]:
         """The options by name as ``run.json`` and ``summary.json`` record them:
-        ``prior`` only when set (runs recorded before it existed write back the same)."""
+        ``prior``, ``backend`` and ``robot_profile`` only when set (runs recorded
+        before they existed write back the same)."""
         out = asdict(self)
-        if out["prior"] is None:
-            del out["prior"]
+        for name in ("prior", "backend", "robot_profile"):
+            if out[name] is None:
+                del out[name]
         return out
 
     @property
@@ -128,6 +140,10 @@ class RunOptions:
         if self.prior is not None and (not isinstance(self.prior, str) or not self.prior):
             raise ValueError(f"option prior must be a path (a run folder or model.pl), "
                              f"got {self.prior!r}")
+        for name in ("backend", "robot_profile"):
+            value = getattr(self, name)
+            if value is not None and (not isinstance(value, str) or not value):
+                raise ValueError(f"option {name} must be a name, got {value!r}")
         strategy_named(self.strategy)
 
 

@@ -14,6 +14,7 @@ what ``creative run --resume`` calls. A run checks its case
 from __future__ import annotations
 
 import logging
+import os
 import shutil
 import time
 from dataclasses import replace
@@ -240,6 +241,10 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
     if manifest.id != case:
         raise ValueError(f"{Path(world_dir) / 'case.toml'}: declares case {manifest.id!r}, "
                          f"not {case!r}")
+    if options.backend is not None and options.backend != manifest.backend:
+        manifest = replace(manifest, backend=options.backend)  # --backend: the case unedited
+    if options.robot_profile is not None:
+        os.environ["CREATIVE_ROBOT_PROFILE"] = options.robot_profile  # the ros backend's
     physics = backend_for(manifest)
     world = physics.load_world(manifest)
     engine = Engine.instance()

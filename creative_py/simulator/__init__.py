@@ -95,10 +95,11 @@ from creative_py.simulator.protocol import (Backend, CatalogueEntry, ClipCamera,
                                             Episode, World)
 from creative_py.simulator.loader import (BackendError, BackendUnavailable, UnknownBackend,
                                             backend, backend_for, backend_packages)
-from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, Fact, Observation,
-                                         PoseTarget, SkillOutcome, TrialResult, Verdict)
+from creative_py.simulator.types import (SKILL_STATUSES, TRIAL_OUTCOMES, BackendLost, Fact,
+                                         Observation, PoseTarget, SkillOutcome, TrialResult,
+                                         Verdict)
 
-__all__ = ["Backend", "BackendError", "BackendUnavailable", "CatalogueEntry", "ClipCamera",
+__all__ = ["Backend", "BackendError", "BackendLost", "BackendUnavailable", "CatalogueEntry", "ClipCamera",
            "ClipRecorder", "Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES",
            "SkillOutcome", "TRIAL_OUTCOMES", "TrialResult", "UnknownBackend", "Verdict",
            "World", "backend", "backend_for", "backend_packages"]

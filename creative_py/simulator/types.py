@@ -156,6 +156,19 @@ def _num(v: float, unit: str = "") -> str:
     return text[1:] if text.startswith("-") and float(text) == 0.0 else text
 
 
+class BackendLost(RuntimeError):
+    """The world behind the boundary went away during a run: a robot's arm stopped
+    answering or publishing (its joint states or its clock went silent), a simulator's
+    process died.
+
+    Not an outcome of the trial: nothing was learned about the tool, so the trial must
+    not be recorded as a failure. An episode raises it (from ``run_skill``,
+    ``observe`` or ``verdict``) and the learning loop stops the run resumably, as on a
+    Ctrl-C: the trials recorded so far stay, and the run folder says how to go on
+    (:func:`creative_py.learning.run.run_case`). The message names what went silent.
+    """
+
+
 @dataclass(frozen=True)
 class SkillOutcome:
     """How a skill or a single arm motion ended: ``status`` and why.

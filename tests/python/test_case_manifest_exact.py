@@ -251,9 +251,9 @@ def _error(folder):
      "field 'demonstration.pose': demonstration.pose: dx must be within [-0.1, 0.2] m, "
      "got 0.5"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "mujoco"\n',
-     "field 'backend': must be one of maniskill, pybullet, got 'mujoco'"),
+     "field 'backend': must be one of maniskill, pybullet, ros, got 'mujoco'"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "PyBullet"\n',
-     "field 'backend': must be one of maniskill, pybullet, got 'PyBullet' "
+     "field 'backend': must be one of maniskill, pybullet, ros, got 'PyBullet' "
      "(did you mean 'pybullet'?)"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = 1\n',
      "field 'backend': must be a string, got 1"),

@@ -160,11 +160,11 @@ def test_an_unknown_backend_is_a_field_error_of_the_manifest(tmp_path):
     with pytest.raises(WorldFileError) as caught:
         read_manifest(folder)
     assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': must be one of "
-                                 "maniskill, pybullet, got 'mujoco'")
+                                 "maniskill, pybullet, ros, got 'mujoco'")
     with pytest.raises(UnknownBackend) as caught:
         backend("mujoco", folder / "case.toml")
     assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': unknown simulator "
-                                 "backend 'mujoco'; backends: maniskill, pybullet")
+                                 "backend 'mujoco'; backends: maniskill, pybullet, ros")
     with pytest.raises(UnknownBackend, match="^unknown simulator backend 'mujoco'; "):
         backend("mujoco")
 
@@ -205,7 +205,7 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
     result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
     assert result.exit_code == 2
     assert result.output.strip() == (f"error: {folder / 'case.toml'}: field 'backend': must "
-                                     "be one of maniskill, pybullet, got 'mujoco'")
+                                     "be one of maniskill, pybullet, ros, got 'mujoco'")
     monkeypatch.setitem(BACKENDS, "core_gone", BackendEntry("creative_test_gone_backend"))
     (folder / "case.toml").write_text(MANIFEST.format(backend='backend = "core_gone"'))
     result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
@@ -216,7 +216,7 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
 
 
 def test_the_backend_packages_are_the_registry_s():
-    assert backend_packages() == {"backends.pybullet", "backends.maniskill"}
+    assert backend_packages() == {"backends.pybullet", "backends.maniskill", "backends.ros"}
 
 
 def test_a_missing_maniskill_says_the_make_target_that_installs_it(monkeypatch):

@@ -203,6 +203,21 @@ def set_frame_pose(sim: Sim, body: int, pose: Pose) -> None:
     pb.resetBaseVelocity(body, (0, 0, 0), (0, 0, 0), physicsClientId=sim.client)
 
 
+def local_extents(sim: Sim, body: int) -> tuple[float, float, float]:
+    """Return the extents (m) of a body's box in its own frame: its axis-aligned
+    bounding box (every link) with the body turned to the identity for a moment."""
+    c = sim.client
+    pos, quat = pb.getBasePositionAndOrientation(body, physicsClientId=c)
+    pb.resetBasePositionAndOrientation(body, (0, 0, 0), (0, 0, 0, 1), physicsClientId=c)
+    lo, hi = [math.inf] * 3, [-math.inf] * 3
+    for link in range(-1, pb.getNumJoints(body, physicsClientId=c)):
+        a, b = pb.getAABB(body, link, physicsClientId=c)
+        lo = [min(x, y) for x, y in zip(lo, a)]
+        hi = [max(x, y) for x, y in zip(hi, b)]
+    pb.resetBasePositionAndOrientation(body, pos, quat, physicsClientId=c)
+    return tuple(float(h - l) for l, h in zip(lo, hi))
+
+
 def yaw_of(quat: Sequence[float]) -> float:
     """Return the yaw (rotation about world z, radians) of a quaternion (x, y, z, w)."""
     x, y, z, w = quat

@@ -179,3 +179,21 @@ class ToolLoadMonitor:
             contacts=len(cps),
             bodies=tuple(sorted({self._names.get(cp[2], f"body{cp[2]}") for cp in cps})),
             step=ep.sim.steps, steps=self._steps)
+
+
+def contact_wrench(sim: Any, body: int, about: Any) -> tuple[tuple[float, float, float],
+                                                            tuple[float, float, float]]:
+    """Return the net contact force on ``body`` after the last step and its torque
+    about the point ``about`` (world frame, N and N m): normal and friction forces of
+    every contact point whose body A is ``body`` (what a force/torque sensor between the
+    gripper and a held tool measures, tared: without the tool's weight). The stand-in
+    robot publishes it as a wrist sensor would (:mod:`creative_py.backends.ros.standin`)."""
+    force, torque = np.zeros(3), np.zeros(3)
+    origin = np.asarray(about, dtype=float)
+    for cp in pb.getContactPoints(bodyA=body, physicsClientId=sim.client):
+        f = (cp[9] * np.asarray(cp[7]) + cp[10] * np.asarray(cp[11])
+             + cp[12] * np.asarray(cp[13]))
+        force += f
+        torque += np.cross(np.asarray(cp[5]) - origin, f)
+    return tuple(float(v) for v in force), tuple(float(v) for v in torque)
+

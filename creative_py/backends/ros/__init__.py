@@ -18,11 +18,20 @@ profile (``robots/<name>.toml``, :mod:`profile`), so a lab remaps them without c
 ``client``      the learner's node: subscriptions, trajectory and gripper goals, timed
 ``motion``      the learner's side of a motion: straight gripper moves through the
                 learner's IK (from the robot's URDF, no scene) sent as bounded trajectory
-                goals (LearnerArm); the episode side of the backend (RosEpisode, a
-                skeleton: truth from the pose topics; skills, facts, verdict to come)
+                goals (LearnerArm), each goal's timings logged
+``trainer``     who sets each episode's scene up: the scene request and answer
+                (std_msgs/String JSON), the stand-in's side (SceneKeeper)
+``episode``     the backend's episode (RosEpisode): a learner-side pybullet twin of
+                the world files whose tracked objects follow the pose topics, the
+                hook-like primitives as trajectory and gripper goals (RosRobot), the
+                facts and the oracle measured from the topics
+``backend``     the ``ros`` backend of the simulator boundary (load_world,
+                open_episode, ...: ``creative run CASE --backend ros``); imports rclpy
+``launch``      the stand-in and a ``creative`` command, two processes
+                (``make run CASE=hook BACKEND=ros``)
 ``check``       a read-only check of an arm's interface against a profile
                 (``python -m creative_py.backends.ros.check``): it sends nothing
 
-Nothing here imports ``rclpy`` at import time: a machine without the ``ros`` extra
-imports this package, reads profiles and runs the pure checks.
+Nothing here but ``backend`` imports ``rclpy`` at import time: a machine without the
+``ros`` extra imports this package, reads profiles and runs the pure checks.
 """

@@ -38,7 +38,7 @@ def check(profile, objects: Sequence[str], seconds: float, timeout: float) -> di
             report["missing"] = str(exc)
             return report
         report["arm_up_s"] = round(time.monotonic() - t0, 3)
-        n0 = client.joint_state.count
+        n0, c0 = client.joint_state.count, client.clock.count
         counts0 = {n: client.poses[n].count for n in objects}
         latencies = []
         end = time.monotonic() + seconds
@@ -47,8 +47,8 @@ def check(profile, objects: Sequence[str], seconds: float, timeout: float) -> di
             latest = client.joint_state
             if latest.count != seen and latest.msg is not None:
                 seen = latest.count
-                stamp = latest.msg.header.stamp
-                latencies.append(latest.wall - (stamp.sec + stamp.nanosec * 1e-9))
+                if not profile.use_sim_time:  # simulated stamps: no wall-clock latency
+                    latencies.append(latest.wall - latest.stamp)
             time.sleep(0.001)
         names = list(client.joint_state.msg.name)
         report["joint_states"] = {
@@ -58,6 +58,9 @@ def check(profile, objects: Sequence[str], seconds: float, timeout: float) -> di
                            "max": round(1e3 * max(latencies), 2)} if latencies else None,
             "names": names,
             "profile_joints_missing": [j for j in profile.joints if j not in names]}
+        if profile.use_sim_time:
+            report["clock"] = {"topic": profile.clock_topic,
+                               "rate_hz": round((client.clock.count - c0) / seconds, 1)}
         report["objects"] = {}
         for n in objects:
             pose = client.pose(n)

@@ -9,6 +9,18 @@ bound; every goal's messages are timed (:class:`GoalTimes`). A trajectory goes t
 profile's speed or workspace bounds raises :class:`~.limits.OutOfBounds` and is never
 sent.
 
+**Whose clock.** With the profile's ``[clock] use_sim_time`` (a simulated arm: the
+stand-in, Gazebo), the client follows ``rosgraph_msgs/Clock`` on the clock topic, as a
+ROS node with ``use_sim_time`` does: the joint states' age is the clock minus their
+stamp, and a goal's timeout counts simulated seconds, so an arm simulated slower than
+real time on a loaded machine is neither stale nor late. A clock that stops for
+``silent_after_s`` of wall-clock time means the simulator died or froze. Without it
+(a real arm) ages and timeouts are wall-clock seconds.
+
+**An arm that goes silent** (its joint states stale, or its clock stopped) while a goal
+or a gripper command is waited for ends the wait at once: status ``silent``, naming
+what stopped, instead of waiting for the goal's whole timeout.
+
 Needs the ``ros`` extra (``make setup-ros``); rclpy is imported when a client is made.
 """
 
@@ -21,10 +33,13 @@ from typing import Any, Callable, Optional, Sequence
 
 from creative_py.backends.ros.profile import RobotProfile
 from creative_py.backends.ros.trajectory import ERROR_NAMES
+from creative_py.simulator.types import BackendLost
 
 
-class ArmUnavailable(RuntimeError):
-    """The arm did not answer in time (no joint states, no action server)."""
+class ArmUnavailable(BackendLost):
+    """The arm did not answer in time or went silent (no joint states, stale joint
+    states, a stopped clock, no action server). A :class:`BackendLost`: raised through
+    the boundary, it stops a run resumably."""
 
 
 @dataclass
@@ -40,7 +55,9 @@ class GoalTimes:
 @dataclass
 class TrajectoryResult:
     """How a trajectory goal ended: ``status`` is ``rejected``, ``succeeded``,
-    ``aborted``, ``canceled`` or ``timeout``; ``error_code`` is control_msgs' code."""
+    ``aborted``, ``canceled``, ``timeout`` or ``silent`` (the arm's joint states or
+    clock stopped while the goal ran: ``error_string`` names them); ``error_code`` is
+    control_msgs' code."""
 
     status: str
     error_code: Optional[int]
@@ -63,6 +80,12 @@ class Latest:
     at: float = field(default=-1.0)
     count: int = 0
     wall: float = 0.0
+
+    @property
+    def stamp(self) -> float:
+        """Return the header's stamp (s), or the clock's time for a Clock message."""
+        t = self.msg.clock if hasattr(self.msg, "clock") else self.msg.header.stamp
+        return t.sec + t.nanosec * 1e-9
 
 
 _STATUS = {4: "succeeded", 5: "canceled", 6: "aborted"}
@@ -92,6 +115,7 @@ class ArmClient:
         from sensor_msgs.msg import JointState
 
         self.profile = profile
+        self._closing = False
         self._own_context = not rclpy.ok()
         if self._own_context:
             rclpy.init()
@@ -101,9 +125,15 @@ class ArmClient:
         self._lock = threading.Lock()
         self.node.create_subscription(JointState, profile.joint_states_topic,
                                       self._on_joints, 10)
+        self._pose_type = PoseStamped
         for n in objects:
             self.node.create_subscription(PoseStamped, profile.object_topic_of(n),
                                           lambda m, n=n: self._on_pose(n, m), 10)
+        self.clock = Latest()
+        if profile.use_sim_time:
+            from rosgraph_msgs.msg import Clock
+
+            self.node.create_subscription(Clock, profile.clock_topic, self._on_clock, 10)
         self.trajectory = ActionClient(self.node, FollowJointTrajectory, profile.arm_action)
         self.gripper = ActionClient(self.node, GripperCommand, profile.gripper_action)
         self._fjt, self._grip = FollowJointTrajectory, GripperCommand
@@ -119,16 +149,32 @@ class ArmClient:
             self.executor.spin()
         except ExternalShutdownException:
             pass
+        except RuntimeError:  # the executor's pool refused work: it is being shut down
+            if not self._closing:
+                raise
 
     def _on_joints(self, msg: Any) -> None:
         with self._lock:
             self.joint_state = Latest(msg, time.monotonic(), self.joint_state.count + 1,
                                       time.time())
 
+    def _on_clock(self, msg: Any) -> None:
+        with self._lock:
+            self.clock = Latest(msg, time.monotonic(), self.clock.count + 1, time.time())
+
     def _on_pose(self, name: str, msg: Any) -> None:
         with self._lock:
             self.poses[name] = Latest(msg, time.monotonic(), self.poses[name].count + 1,
                                      time.time())
+
+    def follow(self, name: str) -> None:
+        """Also follow the pose topic of object ``name`` (a tool of a later episode)."""
+        with self._lock:
+            if name in self.poses:
+                return
+            self.poses[name] = Latest()
+        self.node.create_subscription(self._pose_type, self.profile.object_topic_of(name),
+                                      lambda m: self._on_pose(name, m), 10)
 
     # ---------------------------------------------------------------- observation
     def wait_for_arm(self, timeout: float) -> None:
@@ -140,6 +186,12 @@ class ArmClient:
             Naming the topic or action that stayed silent for ``timeout`` s.
         """
         end = time.monotonic() + timeout
+        p = self.profile
+        while p.use_sim_time and self.clock.msg is None:
+            if time.monotonic() > end:
+                raise ArmUnavailable(f"no rosgraph_msgs/Clock on {p.clock_topic!r} within "
+                                     f"{timeout:g} s (the profile's [clock] use_sim_time)")
+            time.sleep(0.02)
         while self.joint_state.msg is None:
             if time.monotonic() > end:
                 raise ArmUnavailable(f"no sensor_msgs/JointState on "
@@ -150,23 +202,68 @@ class ArmClient:
             if not client.wait_for_server(timeout_sec=max(0.0, end - time.monotonic())):
                 raise ArmUnavailable(f"no action server {name!r} within {timeout:g} s")
 
+    def now(self) -> float:
+        """Return the time staleness and timeouts count (s): the simulated clock's last
+        time with ``use_sim_time``, else ``time.monotonic()``.
+
+        Raises
+        ------
+        ArmUnavailable
+            With ``use_sim_time``: no clock yet, or none for ``silent_after_s`` of
+            wall-clock time (the simulator died or froze).
+        """
+        p = self.profile
+        if not p.use_sim_time:
+            return time.monotonic()
+        with self._lock:
+            clock = self.clock
+        if clock.msg is None:
+            raise ArmUnavailable(f"no rosgraph_msgs/Clock on {p.clock_topic!r}")
+        silent = time.monotonic() - clock.at
+        if silent > p.clock_silent_after_s:
+            raise ArmUnavailable(f"the clock on {p.clock_topic!r} stopped {silent:.2f} s ago "
+                                 f"(silent after {p.clock_silent_after_s:g} s of wall-clock "
+                                 "time): the simulated arm died or froze")
+        return clock.stamp
+
+    def joint_state_age(self) -> float:
+        """Return the age (s) of the latest joint states, on :meth:`now`'s clock.
+
+        Raises
+        ------
+        ArmUnavailable
+            None yet, or the clock stopped (:meth:`now`).
+        """
+        with self._lock:
+            latest = self.joint_state
+        if latest.msg is None:
+            raise ArmUnavailable(f"no joint states on {self.profile.joint_states_topic!r}")
+        now = self.now()
+        return now - latest.stamp if self.profile.use_sim_time else now - latest.at
+
+    def check_fresh(self, max_age: Optional[float] = None) -> None:
+        """Raise :class:`ArmUnavailable` naming the topic if the joint states are older
+        than ``max_age`` s (default: the profile's ``stale_after_s``) or the clock
+        stopped."""
+        limit = self.profile.stale_after_s if max_age is None else max_age
+        age = self.joint_state_age()
+        if age > limit:
+            where = " in simulated time" if self.profile.use_sim_time else ""
+            raise ArmUnavailable(f"joint states on {self.profile.joint_states_topic!r} are "
+                                 f"{age:.2f} s old{where} (stale after {limit:g} s)")
+
     def joints(self, max_age: Optional[float] = None) -> dict[str, float]:
         """Return the latest joint positions by name.
 
         Raises
         ------
         ArmUnavailable
-            None yet, or older than ``max_age`` s (default: the profile's ``stale_after_s``).
+            None yet, older than ``max_age`` s (default: the profile's
+            ``stale_after_s``), or the clock stopped (:meth:`check_fresh`).
         """
-        age_limit = self.profile.stale_after_s if max_age is None else max_age
+        self.check_fresh(max_age)
         with self._lock:
             latest = self.joint_state
-        if latest.msg is None:
-            raise ArmUnavailable(f"no joint states on {self.profile.joint_states_topic!r}")
-        age = time.monotonic() - latest.at
-        if age > age_limit:
-            raise ArmUnavailable(f"joint states on {self.profile.joint_states_topic!r} are "
-                                 f"{age:.2f} s old (stale after {age_limit:g} s)")
         return dict(zip(latest.msg.name, latest.msg.position))
 
     def arm_q(self, max_age: Optional[float] = None) -> list[float]:
@@ -215,10 +312,12 @@ class ArmClient:
     def send_trajectory(self, goal: Any, timeout: float = 30.0,
                         check: Optional[Callable[[Any], None]] = None,
                         on_feedback: Optional[Callable[[Any], None]] = None) -> TrajectoryResult:
-        """Send a FollowJointTrajectory goal and wait for its end (at most ``timeout`` s).
+        """Send a FollowJointTrajectory goal and wait for its end (at most ``timeout`` s
+        of :meth:`now`'s clock, simulated time with ``use_sim_time``).
 
         ``check(goal)`` runs first and raises to stop the goal from being sent (the
-        learner's bounds, :mod:`.limits`).
+        learner's bounds, :mod:`.limits`). While waiting, joint states that go stale or
+        a clock that stops end the wait with status ``silent``.
         """
         if check is not None:
             check(goal)
@@ -234,18 +333,28 @@ class ArmClient:
             if on_feedback is not None:
                 on_feedback(msg.feedback)
 
+        try:
+            deadline = self.now() + timeout
+        except ArmUnavailable as exc:
+            return TrajectoryResult("silent", None, str(exc), times)
         sent = self.trajectory.send_goal_async(goal, feedback_callback=feedback)
-        handle, at = _wait(sent, t0 + timeout)
+        handle, at, why = self._wait(sent, deadline)
         if handle is None:
+            if why:
+                return TrajectoryResult("silent", None, f"before the goal was accepted: {why}",
+                                        times)
             return TrajectoryResult("timeout", None, "no answer to the goal", times)
         times.accepted = at - t0
         if not handle.accepted:
             return TrajectoryResult("rejected", None, "the arm rejected the goal", times)
-        res, at = _wait(handle.get_result_async(), t0 + timeout)
+        res, at, why = self._wait(handle.get_result_async(), deadline)
         if res is None:
             handle.cancel_goal_async()
-            return TrajectoryResult("timeout", None, f"no result within {timeout:g} s", times,
-                                    last[0])
+            if why:
+                return TrajectoryResult("silent", None, f"while the goal ran: {why}", times,
+                                        last[0])
+            return TrajectoryResult("timeout", None, f"no result within {timeout:g} s "
+                                    f"({self.profile.now_source()})", times, last[0])
         times.result = at - t0
         return TrajectoryResult(_STATUS.get(res.status, f"status {res.status}"),
                                 res.result.error_code, res.result.error_string, times, last[0])
@@ -256,17 +365,21 @@ class ArmClient:
         p = self.profile
         goal.command.position = p.gripper_closed if close else p.gripper_open
         goal.command.max_effort = p.gripper_max_effort
-        end = time.monotonic() + timeout
-        handle, _ = _wait(self.gripper.send_goal_async(goal), end)
+        try:
+            end = self.now() + timeout
+        except ArmUnavailable:
+            return None
+        handle, _, _ = self._wait(self.gripper.send_goal_async(goal), end)
         if handle is None or not handle.accepted:
             return None
-        res, _ = _wait(handle.get_result_async(), end)
+        res, _, _ = self._wait(handle.get_result_async(), end)
         return None if res is None else res.result
 
     def close(self) -> None:
         """Destroy the node (and the rclpy context if this client made it)."""
         import rclpy
 
+        self._closing = True
         self.executor.shutdown(timeout_sec=1.0)
         self.trajectory.destroy()
         self.gripper.destroy()
@@ -280,18 +393,26 @@ class ArmClient:
     def __exit__(self, *exc: Any) -> None:
         self.close()
 
+    def _wait(self, future: Any, deadline: float, poll: float = 0.02
+              ) -> tuple[Any, Optional[float], str]:
+        """Wait for ``future``: return its result, when it was done (``time.monotonic()``)
+        and ``""``; or ``(None, None, "")`` once :meth:`now` passes ``deadline``; or
+        ``(None, None, why)`` as soon as the arm goes silent (:meth:`check_fresh`)."""
+        done = threading.Event()
+        at: list[float] = []
 
-def _wait(future: Any, deadline: float) -> tuple[Any, Optional[float]]:
-    """Return a future's result once done and when it was done (``time.monotonic()``),
-    or ``(None, None)`` after ``deadline`` (monotonic s)."""
-    done = threading.Event()
-    at: list[float] = []
+        def finished(_: Any) -> None:
+            at.append(time.monotonic())
+            done.set()
 
-    def finished(_: Any) -> None:
-        at.append(time.monotonic())
-        done.set()
-
-    future.add_done_callback(finished)
-    if not done.wait(max(0.0, deadline - time.monotonic())):
-        return None, None
-    return future.result(), at[0] if at else time.monotonic()
+        future.add_done_callback(finished)
+        while not done.wait(poll):
+            try:
+                self.check_fresh()
+                if self.now() > deadline:
+                    return None, None, ""
+            except ArmUnavailable as exc:
+                if done.is_set():
+                    break
+                return None, None, str(exc)
+        return future.result(), at[0] if at else time.monotonic(), ""

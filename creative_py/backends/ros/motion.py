@@ -1,5 +1,4 @@
-"""The learner's side of an arm's motion over ROS 2, and the episode skeleton of the
-ROS 2 backend.
+"""The learner's side of an arm's motion over ROS 2.
 
 :class:`LearnerArm` moves the gripper the way the learner's skills do, with the
 kinematics on the learner's side:
@@ -19,21 +18,20 @@ backend's motions give:
   the stop's :class:`~creative_py.simulator.types.Verdict`;
 * ``unreachable``: no IK solution, or the learner's bounds refused the motion, which
   is then never sent;
-* ``invalid``: the arm rejected the goal, did not answer in time, or its joint states
-  are stale.
+* ``invalid``: the arm rejected the goal, did not answer in time, or went silent (its
+  joint states stale or its clock stopped, before the goal or while it ran). A silent
+  arm is also kept as :attr:`LearnerArm.lost` (an :class:`ArmUnavailable`, which is a
+  :class:`~creative_py.simulator.types.BackendLost`): an episode raises it through the
+  boundary so that the run stops resumably instead of recording a failed trial.
 
-:class:`RosEpisode` is the episode side of the backend, shaped as the backends' episodes
-are after the trial loop moved above the boundary: open an episode, run a skill,
-observe, measure the verdict, truth, time, steps and tool load. Only the parts that need
-no case's skills are written: truth from the motion-capture topics, the time and the
-count of goals. ``run_skill``, ``observe`` and ``verdict`` raise NotImplementedError
-until the skills are expressed over ROS (issue 26).
+:class:`creative_py.backends.ros.episode.RosEpisode` (the backend's episode) moves
+the arm through :meth:`LearnerArm.send` and :meth:`LearnerArm.grip`; ``log`` keeps each
+goal's timings.
 """
 
 from __future__ import annotations
 
 import math
-import time
 from typing import Any, Optional, Sequence
 
 from creative_py.backends.ros.client import ArmClient, ArmUnavailable
@@ -107,6 +105,21 @@ class LearnerArm:
         self.step, self.timeout = step, timeout
         self.check = goal_checker(self.profile, client.arm_q, kinematics.forward_position)
         self.goals_sent = 0
+        self.log: list[dict] = []
+        """One entry per goal sent: its planned duration, status and the seconds from
+        sending it to its acceptance, first feedback and result (``GoalTimes``)."""
+        self.lost: Optional[ArmUnavailable] = None
+
+    def _silent(self, why: str) -> SkillOutcome:
+        """Note that the arm went silent; return the motion's ``invalid`` outcome."""
+        self.lost = ArmUnavailable(why)
+        return SkillOutcome("invalid", f"the arm went silent: {why}")
+
+    def raise_if_lost(self) -> None:
+        """Raise the :class:`ArmUnavailable` of a motion that found the arm silent (an
+        episode calls it after a motion: the run then stops resumably)."""
+        if self.lost is not None:
+            raise self.lost
 
     def gripper_pose(self) -> Pose:
         """Return the gripper's pose by forward kinematics of the joint states."""
@@ -114,12 +127,19 @@ class LearnerArm:
 
     def _timed(self, start: Sequence[float], path: Sequence[Sequence[float]],
                min_duration: float) -> list[tuple[float, list[float]]]:
-        """Time the joint path: each segment at most the margin of the joint speed."""
+        """Time the joint path: each segment at most the margin of the joint speed.
+
+        The first segment is timed as if each joint had the profile's goal tolerance
+        more to move: after a goal succeeded the arm may still settle that far (the
+        controller judged it within the tolerance), and the bounds are checked from
+        where the joint states say the arm is when the goal is sent."""
         speed = SPEED_MARGIN * self.profile.max_joint_speed
         t, prev, points = 0.0, list(start), []
         per = min_duration / max(1, len(path))
+        slack = self.profile.goal_tolerance
         for q in path:
-            move = max(abs(a - b) for a, b in zip(q, prev))
+            move = max(abs(a - b) for a, b in zip(q, prev)) + slack
+            slack = 0.0
             t += max(per, move / speed, 1e-3)
             points.append((t, list(q)))
             prev = list(q)
@@ -133,9 +153,12 @@ class LearnerArm:
         except OutOfBounds as exc:
             return SkillOutcome("unreachable", f"refused by the learner's bounds: {exc}")
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         self.goals_sent += 1
         r = self.client.send_trajectory(goal, timeout=points[-1][0] + self.timeout)
+        self.log.append({"planned_s": points[-1][0], "points": len(points),
+                         "status": r.status, "error_code": r.error_code,
+                         **vars(r.times)})
         if r.status == "succeeded":
             return SkillOutcome("ok")
         if r.status == "aborted":
@@ -149,6 +172,8 @@ class LearnerArm:
                            measures={"error_code": r.error_code})
             return SkillOutcome("blocked", f"the arm aborted the goal ({r.error_name}): "
                                 f"{r.error_string}", stop)
+        if r.status == "silent":
+            return self._silent(r.error_string)
         return SkillOutcome("invalid", f"the goal was {r.status}: {r.error_string}")
 
     def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:
@@ -156,7 +181,7 @@ class LearnerArm:
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         return self.send(self._timed(start, [list(q)], min_duration))
 
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
@@ -165,7 +190,7 @@ class LearnerArm:
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
-            return SkillOutcome("invalid", str(exc))
+            return self._silent(str(exc))
         here = self.kin.forward(start)
         dist = math.dist(here[0], target[0])
         n = max(1, math.ceil(dist / self.step))
@@ -191,93 +216,11 @@ class LearnerArm:
         """Close or open the gripper; ``ok`` when it answered (``holding`` says more)."""
         r = self.client.grip(close)
         if r is None:
+            try:
+                self.client.check_fresh()
+            except ArmUnavailable as exc:
+                return self._silent(str(exc))
             return SkillOutcome("invalid", f"the gripper {self.profile.gripper_action!r} did "
                                 "not answer")
         self.holding = bool(close and r.stalled and not r.reached_goal)
         return SkillOutcome("ok")
-
-
-class RosEpisode:
-    """One episode on an arm over ROS 2: the backend's episode side (a skeleton).
-
-    Parameters
-    ----------
-    profile : RobotProfile
-    objects : sequence of str
-        The case's tracked objects (their poses come from the profile's topics).
-    wait : float
-        Seconds to wait for the arm; :class:`ArmUnavailable` names what stayed silent.
-    name : str
-        The node's name.
-    """
-
-    def __init__(self, profile: RobotProfile, objects: Sequence[str], wait: float = 10.0,
-                 name: str = "creative_episode") -> None:
-        self.profile, self.objects = profile, list(objects)
-        self.client = ArmClient(profile, self.objects, name=name)
-        self.kin: Optional[Kinematics] = None
-        try:
-            self.client.wait_for_arm(wait)
-            self.kin = Kinematics(profile)
-        except BaseException:
-            self.close()
-            raise
-        self.arm = LearnerArm(self.client, self.kin)
-        self._t0 = time.monotonic()
-
-    def truth(self) -> dict[str, tuple[float, float, float, float]]:
-        """Return ``name -> (x, y, z, yaw)`` of the tracked objects, as the motion-capture
-        topics last gave them (the measured quantity comes from the topics)."""
-        out = {}
-        for name in self.objects:
-            pose = self.client.pose(name)
-            if pose is None:
-                continue
-            (x, y, z), (qx, qy, qz, qw), _ = pose
-            yaw = math.atan2(2 * (qw * qz + qx * qy), 1 - 2 * (qy * qy + qz * qz))
-            out[name] = (x, y, z, yaw)
-        return out
-
-    def sim_time(self) -> float:
-        """Return the seconds since the episode opened (the arm's time is the wall's)."""
-        return time.monotonic() - self._t0
-
-    @property
-    def steps(self) -> int:
-        """Return the number of trajectory goals sent (a real arm has no physics steps)."""
-        return self.arm.goals_sent
-
-    @property
-    def tool_load(self) -> None:
-        """No force on the tool is measured over ROS yet (it needs a wrench topic)."""
-        return None
-
-    def run_skill(self, name: str, pose: Optional[Sequence[float]] = None) -> SkillOutcome:
-        """Not written yet: a case's skills as Cartesian paths over ROS (issue 26)."""
-        raise NotImplementedError(f"skill {name!r}: the ROS 2 backend does not run a case's "
-                                  "skills yet (docs/real-robot.md, 'Not done yet')")
-
-    def observe(self, cameras: bool = True) -> Any:
-        """Not written yet: the primitive facts of a case from the topics (issue 26)."""
-        raise NotImplementedError("the ROS 2 backend does not make a case's facts yet "
-                                  "(docs/real-robot.md, 'Not done yet')")
-
-    def verdict(self) -> Any:
-        """Not written yet: the case's oracle measured from the pose topics (issue 26)."""
-        raise NotImplementedError("the ROS 2 backend does not measure a verdict yet "
-                                  "(docs/real-robot.md, 'Not done yet')")
-
-    def close(self) -> None:
-        """Release the node and the kinematics (idempotent)."""
-        if self.kin is not None:
-            self.kin.close()
-            self.kin = None
-        if self.client is not None:
-            self.client.close()
-            self.client = None
-
-    def __enter__(self) -> "RosEpisode":
-        return self
-
-    def __exit__(self, *exc: Any) -> None:
-        self.close()

@@ -45,6 +45,20 @@ class RobotProfile:
     max_joint_speed: float
     workspace_min: tuple[float, float, float]
     workspace_max: tuple[float, float, float]
+    use_sim_time: bool = False
+    clock_topic: str = "/clock"
+    clock_silent_after_s: float = 3.0
+
+    trainer_request_topic: str = "trainer/scene_request"
+    trainer_done_topic: str = "trainer/scene_done"
+    trainer_timeout_s: float = 120.0
+    wrench_topic: str = ""
+    wrench_frame: str = ""
+
+    def now_source(self) -> str:
+        """Return what the learner's staleness and timeouts count: ``simulated time on
+        '/clock'`` or ``wall-clock time``."""
+        return f"simulated time on {self.clock_topic!r}" if self.use_sim_time else "wall-clock time"
 
     def object_topic_of(self, name: str) -> str:
         """Return the pose topic of the case's object ``name`` (its mocap name mapped)."""
@@ -119,7 +133,22 @@ def load_profile(spec: str | Path = "baxter") -> RobotProfile:
         raise lim.error("workspace_max", f"must exceed workspace_min {list(lo)} on every "
                         f"axis, got {list(hi)}")
     lim.done()
+    c = f.table("clock", {})  # optional: a simulated arm's clock (rosgraph_msgs/Clock)
+    clock = (c.bool("use_sim_time", False), _name(c, "topic") if c.has("topic") else "/clock",
+             c.float("silent_after_s", 3.0, minimum=0.1, maximum=60.0))
+    c.done()
+    tr = f.table("trainer", {})
+    trainer = (_name(tr, "request_topic") if "request_topic" in tr.data
+               else RobotProfile.trainer_request_topic,
+               _name(tr, "done_topic") if "done_topic" in tr.data
+               else RobotProfile.trainer_done_topic,
+               tr.float("timeout_s", RobotProfile.trainer_timeout_s, minimum=1.0,
+                        maximum=3600.0))
+    tr.done()
+    wr = f.table("wrench", {})
+    wrench = ((_name(wr, "topic"), _name(wr, "frame")) if wr.data else ("", ""))
+    wr.done()
     f.done()
     return RobotProfile(str(path), name, urdf, *frames, js_topic, js_rate, stale, arm_action,
                         tuple(joints), *tolerances, *gripper, topic, rate, dict(names), speed,
-                        lo, hi)
+                        lo, hi, *clock, *trainer, *wrench)

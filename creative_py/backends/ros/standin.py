@@ -8,6 +8,9 @@ It publishes, with the names of the robot profile (:mod:`.profile`):
 
 * ``sensor_msgs/JointState`` of the arm's joints (and the gripper's gap) at the
   profile's rate;
+* ``geometry_msgs/WrenchStamped`` of a wrist force/torque sensor (the profile's
+  ``[wrench]``): the contact force on the held tool and its torque about the gripper,
+  in the gripper frame, tared, with the joint states;
 * ``geometry_msgs/PoseStamped`` of each tracked object of the scene (the case's
   perceived objects, its context and the tool) on its own topic, in the world frame,
   as a motion-capture system publishes rigid bodies;
@@ -31,9 +34,20 @@ and serves:
   the result says so (``stalled`` true, ``reached_goal`` false: the fingers stopped on
   the tool); its reported gap while holding is the middle of the open and closed gaps.
 
+It also answers the trainer's scene requests (``std_msgs/String`` JSON on the profile's
+``[trainer]`` topics, :mod:`.trainer`): it rebuilds its scene for the requested variant,
+location and tool (a created tool from the request's spec and URDF) in its physics loop,
+aborting a running goal, and answers with the request's id.
+
 Physics time runs at ``--realtime`` times the wall clock (1: as fast as a real arm), or
-slower where the machine cannot keep up (it never runs faster to catch up); the
-messages' stamps are the node's (wall) clock, a trajectory's times are physics time. The first line on the standard
+slower where the machine cannot keep up (a lag of up to 0.25 s is caught up, a longer
+one is dropped, and a warning gives the real-time factor every 5 s: :class:`Pace`).
+The physics time is published as ``rosgraph_msgs/Clock`` on the profile's clock topic
+(``/clock``), as Gazebo does; the messages' stamps are that simulated time when the
+profile's ``[clock] use_sim_time`` is true, else the node's wall clock. A trajectory's
+times are physics time. SIGUSR1 stops the joint states (the clock and everything else
+go on) and a second SIGUSR1 resumes them: the fault tests' arm that is alive but
+silent. The first line on the standard
 output is ``standin ready`` followed by the interface's names as JSON. It stops on
 SIGINT/SIGTERM or after ``--seconds``. Bad input: one line naming the option or the
 file and field, exit 2.
@@ -107,6 +121,15 @@ class SimArm:
         names = [n for n, _ in episode.perceived] + [episode.context_name, episode.tool]
         self.tracked = list(dict.fromkeys(names))
         self.closed = False
+        self.wrench: tuple = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+        self.offset = 0.0  # s: the arm's time minus the episode's (scenes rebuilt before)
+
+    def rebind(self, episode: Any) -> None:
+        """Take over a newly built scene (the trainer's answer to a scene request); the
+        arm's time goes on from where it was (the clock and the stamps never go back)."""
+        before = self.time()
+        self.__init__(episode, self.profile, self.reach)
+        self.offset = before - episode.sim_time()
 
     def q(self) -> list[float]:
         """Return the arm's joint positions (rad), in the profile's order."""
@@ -123,11 +146,27 @@ class SimArm:
     def step(self) -> float:
         """Advance the physics one time step; return the simulated time (s)."""
         self.ep.sim.step(1)
-        return self.ep.sim_time()
+        if self.profile.wrench_topic:
+            self.wrench = self.measure_wrench()
+        return self.time()
+
+    def measure_wrench(self) -> tuple:
+        """Return what a wrist force/torque sensor measures now, tared: the contact
+        force on the held tool and its torque about the gripper, in the gripper frame
+        (zero when nothing is held)."""
+        if not self.holding:
+            return ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+        from creative_py.backends.pybullet.loads import contact_wrench
+
+        g_pos, g_quat = self.robot.gripper_pose()
+        force, torque = contact_wrench(self.ep.sim, self.ep.tool_body, g_pos)
+        inv = Rotation.from_quat(g_quat).inv()
+        return (tuple(float(v) for v in inv.apply(force)),
+                tuple(float(v) for v in inv.apply(torque)))
 
     def time(self) -> float:
-        """Return the simulated time (s)."""
-        return self.ep.sim_time()
+        """Return the simulated time (s), across the scenes built so far."""
+        return self.ep.sim_time() + self.offset
 
     def poses(self) -> dict[str, Pose]:
         """Return the world pose of each tracked object's own frame."""
@@ -200,9 +239,63 @@ def _trajectory_run(goal: Any, arm: SimArm, start: Sequence[float]) -> Trajector
                          p.goal_tolerance, p.goal_time_tolerance)
 
 
+def _sim_stamp(t: float) -> Any:
+    """Return physics time ``t`` (s) as a ``builtin_interfaces/Time``."""
+    from builtin_interfaces.msg import Time
+
+    sec = int(t)
+    return Time(sec=sec, nanosec=min(999_999_999, int(round((t - sec) * 1e9))))
+
+
+class Pace:
+    """Keeps physics time at ``realtime`` times the wall clock, and says when it cannot.
+
+    :meth:`wait` is called once a publication period (not every physics step: each
+    sleep is a wake-up the scheduler may serve late on a loaded machine, and the GIL
+    must be won back after it). A lag behind the wall clock is caught up, by stepping
+    without sleeping, up to :attr:`CATCH_UP` s; a longer one is dropped (the physics
+    never races to make up for a stall). Every :attr:`REPORT_EVERY` s of wall time the
+    real-time factor of that window is measured (:attr:`factor`) and a warning is
+    logged when it is below 0.9 of ``realtime``.
+    """
+
+    CATCH_UP = 0.25
+    REPORT_EVERY = 5.0
+
+    def __init__(self, realtime: float, sim0: float, logger: Any = None,
+                 clock=time.monotonic, sleep=time.sleep) -> None:
+        self.realtime, self.logger, self.clock, self.sleep = realtime, logger, clock, sleep
+        self.wall0 = self.win_wall = clock()
+        self.sim0 = self.win_sim = sim0
+        self.factor: Optional[float] = None
+        self.dropped = 0.0  # wall seconds of lag dropped
+
+    def wait(self, now: float) -> None:
+        """Sleep until the wall clock reaches physics time ``now`` (s)."""
+        wall = self.clock()
+        ahead = self.wall0 + (now - self.sim0) / self.realtime - wall
+        if ahead > 0:
+            self.sleep(ahead)
+        elif ahead < -self.CATCH_UP:
+            self.dropped -= ahead
+            self.wall0, self.sim0 = wall, now
+        span = wall - self.win_wall
+        if span >= self.REPORT_EVERY:
+            self.factor = (now - self.win_sim) / span
+            if self.factor < 0.9 * self.realtime and self.logger is not None:
+                self.logger.warning(f"physics ran at {self.factor:.2f} x real time over the "
+                                    f"last {span:.1f} s: this machine cannot keep up (the "
+                                    "simulated time is on the clock topic)")
+            self.win_wall, self.win_sim = wall, now
+
+
 def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
-          out=sys.stdout) -> int:
-    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0."""
+          out=sys.stdout, scenes: Any = None) -> int:
+    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0.
+
+    With ``scenes`` (a :class:`~creative_py.backends.ros.trainer.SceneKeeper`) it also
+    answers the trainer's scene requests: the scene is rebuilt in the physics loop.
+    """
     import rclpy
     from rclpy.action import ActionServer, CancelResponse, GoalResponse
     from rclpy.callback_groups import ReentrantCallbackGroup
@@ -211,14 +304,18 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
 
     from control_msgs.action import FollowJointTrajectory, GripperCommand
     from geometry_msgs.msg import PoseStamped
+    from rosgraph_msgs.msg import Clock
     from sensor_msgs.msg import JointState
 
     from rclpy.signals import SignalHandlerOptions
 
     p = arm.profile
     stop = threading.Event()
+    muted = threading.Event()  # SIGUSR1 toggles it: a live arm whose joint states stop
     for sig in (signal.SIGINT, signal.SIGTERM):
         signal.signal(sig, lambda *_: stop.set())
+    signal.signal(signal.SIGUSR1,
+                  lambda *_: muted.clear() if muted.is_set() else muted.set())
     rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ours stop the loop
     node = Node("creative_standin")
     group = ReentrantCallbackGroup()
@@ -228,9 +325,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
 
     def on_trajectory(goal: Any) -> Any:
         try:
-            with lock:
-                q = list(state["q"])
-            _trajectory_run(goal, arm, q)
+            _trajectory_run(goal, arm, list(state["q"]))
         except InvalidTrajectory as exc:
             node.get_logger().warning(f"rejected a trajectory: {exc}")
             return GoalResponse.REJECT
@@ -240,7 +335,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
         def run(handle: Any) -> Any:
             job = Job(handle, kind, handle.request)
             with lock:
-                jobs.append(job)
+                jobs.append(job)  # the physics loop takes it at its next step
             while not job.done.wait(0.05):
                 if stop.is_set():
                     handle.abort()
@@ -264,8 +359,22 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     ActionServer(node, GripperCommand, p.gripper_action, execute_callback=execute("gripper"),
                  cancel_callback=lambda _: CancelResponse.REJECT, callback_group=group)
     js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
+    clock_pub = node.create_publisher(Clock, p.clock_topic, 10)
     pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
                  for n in arm.tracked}
+    wrench_pub = None
+    if p.wrench_topic:
+        from geometry_msgs.msg import WrenchStamped
+
+        wrench_pub = node.create_publisher(WrenchStamped, p.wrench_topic, 10)
+    trainer_done = None
+    if scenes is not None:
+        from std_msgs.msg import String
+
+        node.create_subscription(String, p.trainer_request_topic,
+                                 lambda m: scenes.requests.put(m.data), 10,
+                                 callback_group=group)
+        trainer_done = node.create_publisher(String, p.trainer_done_topic, 10)
     executor = MultiThreadedExecutor(num_threads=4)
     executor.add_node(node)
 
@@ -280,7 +389,13 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     interface = {"joint_states": p.joint_states_topic, "trajectory_action": p.arm_action,
                  "gripper_action": p.gripper_action, "joints": list(p.joints),
                  "objects": {n: p.object_topic_of(n) for n in arm.tracked},
-                 "frame": p.world_frame}
+                 "frame": p.world_frame, "clock": p.clock_topic,
+                 "use_sim_time": p.use_sim_time}
+    if scenes is not None:
+        interface["trainer"] = {"request": p.trainer_request_topic,
+                                "done": p.trainer_done_topic}
+    if wrench_pub is not None:
+        interface["wrench"] = p.wrench_topic
     print("standin ready " + json.dumps(interface), file=out, flush=True)
 
     js_period, pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
@@ -289,8 +404,15 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
     next_js = next_pose = arm.time()
     last_fb = -math.inf
     prev_q, prev_t = arm.q(), arm.time()
-    wall0, sim0 = time.monotonic(), arm.time()
+    pace = Pace(realtime, arm.time(), node.get_logger())
     deadline = time.monotonic() + seconds
+
+    def stamp(now: float) -> Any:
+        """The header stamp of a message about physics time ``now``: that simulated time
+        when the profile says use_sim_time (as Gazebo stamps), else the wall clock."""
+        if p.use_sim_time:
+            return _sim_stamp(now)
+        return node.get_clock().now().to_msg()
 
     def finish(job: Job, code: int, message: str, succeeded: bool) -> None:
         result = _result("trajectory", code, message)
@@ -299,8 +421,34 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
         job.done.set()
 
     while not stop.is_set() and time.monotonic() < deadline:
-        with lock:
-            pending, jobs[:] = list(jobs), []
+        if scenes is not None and not scenes.requests.empty():
+            # The trainer's scene request (trainer.py): rebuild the scene here, in the
+            # physics loop; the arm's time goes on from where it was (SimArm.rebind).
+            rid, error, episode = scenes.apply(scenes.requests.get())
+            if episode is not None:
+                if active is not None:
+                    finish(active, INVALID_GOAL, "the trainer reset the scene", False)
+                    active = None
+                arm.rebind(episode)
+                for name in arm.tracked:
+                    if name not in pose_pubs:
+                        pose_pubs[name] = node.create_publisher(
+                            PoseStamped, p.object_topic_of(name), 10)
+                hold = arm.q()
+                prev_q = hold
+                state["q"] = hold
+            if rid is not None:
+                from std_msgs.msg import String
+
+                trainer_done.publish(String(data=json.dumps(
+                    {"id": rid, "ok": error is None, "error": error or ""})))
+            if error is not None:
+                node.get_logger().warning(f"scene request {rid}: {error}")
+        if jobs:
+            with lock:
+                pending, jobs[:] = list(jobs), []
+        else:
+            pending = []
         for job in pending:
             if job.kind == "gripper":
                 close = job.request.command.position <= (p.gripper_open + p.gripper_closed) / 2
@@ -346,7 +494,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                     last_fb = now
                     desired, index = active.run.desired(t)
                     fb = FollowJointTrajectory.Feedback()
-                    fb.header.stamp = node.get_clock().now().to_msg()
+                    fb.header.stamp = stamp(now)
                     fb.joint_names = list(p.joints)
                     fb.desired.positions = desired
                     fb.actual.positions = q
@@ -362,33 +510,39 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                     hold = active.run.targets[-1]
                 finish(active, result.code, result.message, ok)
                 active = None
-        with lock:
-            state["q"] = q
-        if now >= next_js:
+        state["q"] = q  # one reference swapped: atomic under the GIL
+        if now < next_js:
+            continue  # the physics runs ahead, at most one publication period
+        clock_msg = Clock()
+        clock_msg.clock = _sim_stamp(now)
+        clock_pub.publish(clock_msg)
+        if not muted.is_set():
             msg = JointState()
-            msg.header.stamp = node.get_clock().now().to_msg()
+            msg.header.stamp = stamp(now)
             msg.name = [*p.joints, p.gripper_joint]
             msg.position = [*q, arm.gap()]
             dt = now - prev_t
             msg.velocity = [*((a - b) / dt for a, b in zip(q, prev_q)), 0.0] if dt > 0 else []
             js_pub.publish(msg)
-            prev_q, prev_t = q, now
-            next_js = max(next_js + js_period, now)
+            if wrench_pub is not None:
+                w = WrenchStamped()
+                w.header.stamp, w.header.frame_id = msg.header.stamp, p.wrench_frame
+                (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = arm.wrench[0]
+                (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = arm.wrench[1]
+                wrench_pub.publish(w)
+        prev_q, prev_t = q, now
+        next_js = max(next_js + js_period, now)
         if now >= next_pose:
-            stamp = node.get_clock().now().to_msg()
+            pose_stamp = stamp(now)
             for name, (pos, quat) in arm.poses().items():
                 msg = PoseStamped()
-                msg.header.stamp, msg.header.frame_id = stamp, p.world_frame
+                msg.header.stamp, msg.header.frame_id = pose_stamp, p.world_frame
                 msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = pos
                 (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
                  msg.pose.orientation.w) = quat
                 pose_pubs[name].publish(msg)
             next_pose = max(next_pose + pose_period, now)
-        ahead = wall0 + (now - sim0) / realtime - time.monotonic()
-        if ahead > 0:
-            time.sleep(ahead)
-        elif ahead < -0.05:  # behind (a loaded machine): never run faster to catch up
-            wall0, sim0 = time.monotonic(), now
+        pace.wait(now)  # once a publication period: wall time catches up with physics
     stop.set()
     if active is not None:
         finish(active, INVALID_GOAL, "the stand-in stopped", False)
@@ -435,7 +589,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     if not args.seconds > 0:
         print(f"{prog}: option --seconds: must be > 0, got {args.seconds}", file=sys.stderr)
         return 2
-    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.backends.pybullet import load_world
     from creative_py.case import get_case
 
     try:  # every input is checked before ROS or the physics start
@@ -468,13 +622,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         print(f"{prog}: {exc.name or 'rclpy'} is not installed: run make setup-ros "
               "(docs/real-robot.md)", file=sys.stderr)
         return 2
+    from creative_py.backends.ros.trainer import SceneKeeper
+
+    scenes = SceneKeeper(world)
     try:
-        with open_episode(world, variant, location, tool) as ep:
-            arm = SimArm(ep, profile, args.grasp_reach)
-            return serve(arm, args.realtime, args.seconds)
+        ep = scenes.open(variant, location, tool)
+        arm = SimArm(ep, profile, args.grasp_reach)
+        return serve(arm, args.realtime, args.seconds, scenes=scenes)
     except WorldFileError as exc:
         print(f"{prog}: {exc}", file=sys.stderr)
         return 2
+    finally:
+        scenes.close()
 
 
 if __name__ == "__main__":

@@ -2,7 +2,14 @@
 test_standin.py (never in the host's): starts the stand-in as its own process, drives it
 through the learner's client (creative_py.backends.ros.client) and prints what it saw as
 JSON on its last line. The scenarios run in order on one stand-in (its scene build and
-the DDS discovery cost about 6 s, paid once).
+the DDS discovery cost about 6 s, paid once); the faults that end a stand-in (an absent
+arm, one killed mid-goal) run last, the second on a stand-in of its own.
+
+Both sides read the shipped profile with ``[clock] use_sim_time = true`` (a copy in a
+temporary folder): the stand-in stamps with its physics time and the learner judges
+staleness and timeouts on /clock, so a loaded machine that slows the physics makes no
+arm stale. A second client with the shipped profile as it is (wall-clock time, as for a
+real arm) checks the wall-clock staleness.
 
     python _session.py CASE
 """
@@ -16,10 +23,25 @@ import subprocess
 import sys
 import time
 
+import tempfile
+from dataclasses import replace
+from pathlib import Path
+
 CASE = sys.argv[1] if len(sys.argv) > 1 else "hook"
 t_start = time.monotonic()
-standin = subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin", "--case",
-                            CASE, "--seconds", "240"], stdout=subprocess.PIPE, text=True)
+TMP = Path(tempfile.mkdtemp(prefix="standin-session-"))
+SHIPPED = Path(__file__).resolve().parents[4] / "robots" / "baxter.toml"
+SIM_PROFILE = TMP / "baxter-sim.toml"
+SIM_PROFILE.write_text(SHIPPED.read_text().replace("use_sim_time = false", "use_sim_time = true"))
+
+
+def start_standin() -> subprocess.Popen:
+    return subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin", "--case",
+                             CASE, "--seconds", "240", "--profile", str(SIM_PROFILE)],
+                            stdout=subprocess.PIPE, text=True)
+
+
+standin = start_standin()
 out: dict = {"namespace_links": sorted(name for _, name in socket.if_nameindex()),
              "domain_id": os.environ.get("ROS_DOMAIN_ID"),
              "discovery_range": os.environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE")}
@@ -42,10 +64,13 @@ try:
     from creative_py.backends.ros.limits import OutOfBounds, goal_checker, urdf_forward
     from creative_py.backends.ros.profile import load_profile
 
-    profile = load_profile()
+    profile = load_profile(SIM_PROFILE)
+    wall_profile = load_profile()
     objects = list(info["objects"])
     client = ArmClient(profile, objects)
     client.wait_for_arm(30.0)
+    wall_client = ArmClient(wall_profile, [], name="creative_wall_clock")
+    wall_client.wait_for_arm(30.0)
     out["arm_up_s"] = time.monotonic() - t_start
 
     # -- the read-only interface check, and an arm that is not there (a renamed topic)
@@ -57,7 +82,7 @@ try:
     out["check"] = check_interface(profile, objects, 1.0, 10.0)
     with tempfile.TemporaryDirectory() as tmp:
         absent = Path(tmp) / "absent.toml"
-        absent.write_text(Path(profile.source).read_text().replace(
+        absent.write_text(Path(wall_profile.source).read_text().replace(
             'topic = "joint_states"', 'topic = "absent/joint_states"'))
         t = time.monotonic()
         out["check_absent"] = check_interface(load_profile(absent), [], 1.0, 2.0)
@@ -165,7 +190,7 @@ try:
                       "gap_in_joint_states": client.joints()[profile.gripper_joint]}
 
     # -- the learner's side: straight gripper moves through its own IK, and the episode
-    from creative_py.backends.ros.motion import Kinematics, LearnerArm, RosEpisode
+    from creative_py.backends.ros.motion import Kinematics, LearnerArm
 
     kin = Kinematics(profile)
     arm = LearnerArm(client, kin)
@@ -201,32 +226,60 @@ try:
                       "tool_before": position, "tool_after": client.pose(spec.name)[0],
                       "gap": client.joints()[profile.gripper_joint]}
     kin.close()
-    with RosEpisode(profile, objects) as ep:
-        time.sleep(0.2)  # its subscriptions' first messages
-        out["episode"] = {"truth": ep.truth(), "steps": ep.steps, "tool_load": ep.tool_load,
-                          "poses_now": {n: client.pose(n) for n in objects}}
-        try:
-            ep.run_skill("any")
-        except NotImplementedError as exc:
-            out["episode"]["run_skill"] = str(exc)
 
-    # -- a frozen arm (SIGSTOP): stale joint states, and a goal that gets no result
+    # -- an aborted goal through the learner's arm: 'blocked' with the error code
+    from creative_py.backends.ros.motion import Kinematics as _K
+
+    arm = LearnerArm(client, _K(profile))
+    # the box would refuse the goal under the table: here a lab's box reaching lower
+    loose = replace(profile, workspace_min=(0.2, -1.1, -0.5))
+    arm.check = goal_checker(loose, client.arm_q, forward)
+    q_home = client.arm_q()
+    r = arm.move_joints(below, min_duration=4.0)
+    out["learner_blocked"] = {"status": r.status, "reason": r.reason,
+                              "stop": r.stop.to_dict() if r.stop is not None else None,
+                              "lost": arm.lost is not None}
+    arm.move_joints(q_home, min_duration=4.0)
+    arm.check = goal_checker(profile, client.arm_q, forward)
+
+    # -- stale joint states of a live arm (SIGUSR1: the stand-in stops them, its clock
+    # goes on): the learner refuses to send a goal, naming the staleness
     import signal
     import threading
 
     from creative_py.backends.ros.client import ArmUnavailable
 
-    arm = LearnerArm(client, Kinematics(profile))
     q = client.arm_q()
+    sent_before = arm.goals_sent
+    os.kill(standin.pid, signal.SIGUSR1)
+    try:
+        time.sleep(0.3)
+        t = client.now()
+        while client.now() < t + profile.stale_after_s + 0.2:  # simulated time
+            time.sleep(0.05)
+        r = arm.move_joints(q)
+        out["muted"] = {"move": vars(r) | {"stop": None}, "goals_sent": arm.goals_sent - sent_before,
+                        "lost": type(arm.lost).__name__, "clock_ok": client.now() > t}
+    finally:
+        os.kill(standin.pid, signal.SIGUSR1)
+    time.sleep(0.5)
+    out["after_unmute"] = {"arm_q_ok": len(client.arm_q()) == len(profile.joints)}
+
+    # -- a frozen arm (SIGSTOP): its clock stops; the wall-clock client sees stale
+    # joint states, the simulated-time one a stopped clock; a goal ends 'silent'
     os.kill(standin.pid, signal.SIGSTOP)
     try:
-        time.sleep(profile.stale_after_s + 0.3)
-        try:
-            client.arm_q()
-            stale = "no error"
-        except ArmUnavailable as exc:
-            stale = str(exc)
-        out["stale"] = {"arm_q": stale, "move": vars(arm.move_joints(q))}
+        time.sleep(max(profile.clock_silent_after_s, wall_profile.stale_after_s) + 0.3)
+        found = {}
+        for key, c in (("sim", client), ("wall", wall_client)):
+            try:
+                c.arm_q()
+                found[key] = "no error"
+            except ArmUnavailable as exc:
+                found[key] = str(exc)
+        arm2 = LearnerArm(client, _K(profile))
+        out["stale"] = {"arm_q": found["wall"], "sim_arm_q": found["sim"],
+                        "move": vars(arm2.move_joints(q)) | {"stop": None}}
     finally:
         os.kill(standin.pid, signal.SIGCONT)
     time.sleep(0.5)
@@ -234,27 +287,78 @@ try:
     target[0] += 0.1
     box: dict = {}
     worker = threading.Thread(target=lambda: box.update(
-        r=client.send_trajectory(client.make_goal([(1.0, target)]), timeout=2.5)))
+        r=client.send_trajectory(client.make_goal([(1.0, target)]), timeout=30.0)))
     t = time.monotonic()
     worker.start()
     time.sleep(0.3)
     os.kill(standin.pid, signal.SIGSTOP)
     worker.join()
     out["frozen_mid_goal"] = {"status": box["r"].status, "after_s": time.monotonic() - t,
+                              "message": box["r"].error_string,
                               "feedbacks": box["r"].times.feedbacks}
     os.kill(standin.pid, signal.SIGCONT)
     time.sleep(0.5)
     out["after_thaw"] = {"arm_q_ok": len(client.arm_q()) == len(profile.joints)}
+
+    # -- the stand-in stopped: an arm absent at start names the topic it waited for
+    standin.terminate()
+    out["standin_rc"] = standin.wait(10)
+    for key, prof in (("sim", profile), ("wall", wall_profile)):
+        t = time.monotonic()
+        with ArmClient(prof, [], name=f"creative_absent_{key}") as absent_client:
+            try:
+                absent_client.wait_for_arm(2.0)
+                found = "no error"
+            except ArmUnavailable as exc:
+                found = str(exc)
+        out.setdefault("absent", {})[key] = {"message": found, "after_s": time.monotonic() - t}
+
+    # -- an arm killed mid-goal (SIGKILL of a second stand-in): the learner's motion
+    # comes back 'invalid' naming what went silent, and the arm is kept as lost
+    wall_client.close()
+    n0 = client.joint_state.count
+    standin = start_standin()
+    line = standin.stdout.readline()
+    if not line.startswith("standin ready "):
+        raise SystemExit(f"the second stand-in did not start: {line!r}")
+    deadline = time.monotonic() + 30.0
+    while client.joint_state.count < n0 + 10 and time.monotonic() < deadline:
+        time.sleep(0.05)  # the new stand-in's own joint states (its clock restarts at 0)
+    client.wait_for_arm(30.0)
+    arm3 = LearnerArm(client, _K(profile))
+    q = client.arm_q()
+    target = list(q)
+    target[0] += 0.3
+    box = {}
+    worker = threading.Thread(target=lambda: box.update(
+        r=arm3.move_joints(target, min_duration=3.0)))
+    t = time.monotonic()
+    worker.start()
+    time.sleep(0.8)
+    os.kill(standin.pid, signal.SIGKILL)
+    worker.join()
+    try:
+        arm3.raise_if_lost()
+        raised = "nothing"
+    except BaseException as exc:
+        from creative_py.simulator.types import BackendLost
+
+        raised = [type(exc).__name__, isinstance(exc, BackendLost), str(exc)]
+    out["killed_mid_goal"] = {"status": box["r"].status, "reason": box["r"].reason,
+                              "after_s": time.monotonic() - t, "raised": raised,
+                              "goal_timeout_s": 3.0 + arm3.timeout,
+                              "rc": standin.wait(10)}
 except BaseException as exc:  # report what went wrong as the session's result
     out["error"] = f"{type(exc).__name__}: {exc}"
 finally:
     if client is not None:
         client.close()
-    standin.terminate()
-    try:
-        out["standin_rc"] = standin.wait(10)
-    except subprocess.TimeoutExpired:
-        standin.kill()
-        out["standin_rc"] = "killed"
+    if standin.poll() is None:
+        standin.terminate()
+        try:
+            out.setdefault("standin_rc", standin.wait(10))
+        except subprocess.TimeoutExpired:
+            standin.kill()
+            out["standin_rc"] = "killed"
     out["session_s"] = time.monotonic() - t_start
     print(json.dumps(out), flush=True)

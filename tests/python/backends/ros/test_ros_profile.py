@@ -54,3 +54,20 @@ def test_a_bad_field_is_named_in_one_line(tmp_path, old, new, message):
 def test_an_unknown_profile_lists_the_shipped_ones():
     with pytest.raises(WorldFileError, match="shipped profiles: baxter"):
         load_profile("nosuch")
+
+
+def test_the_clock_table_is_optional_and_checked(tmp_path):
+    p = load_profile("baxter")
+    assert (p.use_sim_time, p.clock_topic, p.clock_silent_after_s) == (False, "/clock", 3.0)
+    assert p.now_source() == "wall-clock time"
+    without = _write(tmp_path, SHIPPED.split("\n[clock]")[0] + "\n")
+    assert load_profile(without).use_sim_time is False  # a real arm's profile leaves it out
+    sim = load_profile(_write(tmp_path, SHIPPED.replace("use_sim_time = false",
+                                                        "use_sim_time = true")))
+    assert sim.use_sim_time and sim.now_source() == "simulated time on '/clock'"
+    with pytest.raises(WorldFileError, match=r"clock\.silent_after_s"):
+        load_profile(_write(tmp_path, SHIPPED.replace("silent_after_s = 3.0",
+                                                      "silent_after_s = 0")))
+    with pytest.raises(WorldFileError, match=r"'clock.use_sim_tme': unknown field"):
+        load_profile(_write(tmp_path, SHIPPED.replace("use_sim_time = false",
+                                                      "use_sim_tme = false")))

@@ -99,6 +99,7 @@ def test_the_traffic_stays_in_a_loopback_only_namespace(session):
     assert session["discovery_range"] == "LOCALHOST"
     assert 100 <= int(session["domain_id"]) < 200
     assert session["standin_rc"] == 0  # it stopped cleanly on SIGTERM
+    assert session["interface"]["clock"] == "/clock" and session["interface"]["use_sim_time"]
 
 
 def test_joint_states_arrive_at_the_profile_rate(session, profile):
@@ -140,8 +141,11 @@ def test_a_trajectory_goal_moves_the_arm_and_succeeds_with_feedback(session, pro
         assert t["result"] > 0.95  # a 1 s trajectory of physics time cannot end sooner
         assert t["feedbacks"] >= 1
         assert trip["feedback_names"] == list(profile.joints)
-    # the feedback's actual positions end at the goal's
-    assert trips[0]["last_feedback_actual"] == pytest.approx(session["q1"], abs=0.02)
+    # the last feedback received was on its way to the goal (the result may overtake the
+    # feedback messages sent just before it: they travel on a topic, the result does not)
+    q1 = session["q1"]
+    last = trips[0]["last_feedback_actual"]
+    assert max(abs(a - b) for a, b in zip(last, q1)) < 0.15
 
 
 def test_invalid_goals_are_rejected(session):
@@ -193,7 +197,8 @@ def test_the_read_only_check_sees_the_interface_and_names_what_is_absent(session
     report = session["check"]
     js = report["joint_states"]
     assert js["profile_joints_missing"] == [] and js["rate_hz"] > 0
-    assert js["latency_ms"]["median"] >= 0
+    assert js["latency_ms"] is None  # simulated stamps: no wall-clock latency
+    assert report["clock"]["topic"] == "/clock" and report["clock"]["rate_hz"] > 0
     assert {n: o["frame"] for n, o in report["objects"].items()} == {
         n: profile.world_frame for n in session["interface"]["objects"]}
     assert all(o["rate_hz"] > 0 for o in report["objects"].values())  # 30 Hz nominal
@@ -217,15 +222,6 @@ def test_a_move_below_the_workspace_box_is_unreachable_and_not_sent(session):
     assert r["goals_sent"] == 1  # still the one of the move up
 
 
-def test_the_episode_skeleton_reads_truth_from_the_pose_topics(session):
-    ep = session["episode"]
-    assert set(ep["truth"]) == set(session["interface"]["objects"])
-    for name, (x, y, z, yaw) in ep["truth"].items():
-        assert ep["poses_now"][name][0] == pytest.approx([x, y, z], abs=0.002)
-    assert ep["steps"] == 0 and ep["tool_load"] is None
-    assert "does not run a case's skills yet" in ep["run_skill"]
-
-
 def test_the_learner_picks_the_tool_up_over_ros(session, profile):
     pick = session["pick_up"]
     assert pick["moves"] == ["ok"] * 4
@@ -236,12 +232,55 @@ def test_the_learner_picks_the_tool_up_over_ros(session, profile):
     assert math.dist(after[:2], before[:2]) < 0.01
 
 
-def test_a_frozen_arm_gives_stale_joint_states_and_a_goal_without_result(session, profile):
+def test_a_frozen_arm_gives_stale_joint_states_and_a_goal_that_ends_silent(session, profile):
     stale = session["stale"]
+    # on the wall clock (a real arm's profile): the joint states' age
     assert stale["arm_q"].startswith(f"joint states on '{profile.joint_states_topic}' are ")
     assert f"(stale after {profile.stale_after_s:g} s)" in stale["arm_q"]
-    assert stale["move"]["status"] == "invalid" and "stale" in stale["move"]["reason"]
+    # on the simulated clock: the clock stopped, naming its topic
+    assert stale["sim_arm_q"].startswith("the clock on '/clock' stopped ")
+    assert stale["move"]["status"] == "invalid"
+    assert stale["move"]["reason"].startswith("the arm went silent: the clock on '/clock'")
     frozen = session["frozen_mid_goal"]
-    assert frozen["status"] == "timeout" and 2.4 < frozen["after_s"] < 6.0
+    assert frozen["status"] == "silent"  # not its 30 s timeout
+    assert frozen["message"].startswith("while the goal ran: the clock on '/clock' stopped")
     assert frozen["feedbacks"] >= 1  # it was moving when it froze
     assert session["after_thaw"] == {"arm_q_ok": True}
+
+
+def test_an_absent_arm_names_the_topic_it_waited_for(session):
+    absent = session["absent"]
+    assert absent["wall"]["message"] == "no sensor_msgs/JointState on 'joint_states' within 2 s"
+    assert absent["sim"]["message"] == ("no rosgraph_msgs/Clock on '/clock' within 2 s (the "
+                                        "profile's [clock] use_sim_time)")
+
+
+def test_an_arm_killed_mid_goal_gives_an_invalid_motion_and_a_lost_arm(session):
+    killed = session["killed_mid_goal"]
+    assert killed["rc"] == -9  # SIGKILL while the goal ran
+    assert killed["status"] == "invalid"
+    assert killed["reason"].startswith("the arm went silent: while the goal ran: the clock on "
+                                       "'/clock' stopped ")
+    name, is_lost, message = killed["raised"]
+    assert (name, is_lost) == ("ArmUnavailable", True)  # a BackendLost: the run stops
+    assert message in killed["reason"]
+
+
+def test_an_aborted_goal_is_blocked_with_its_error_code(session):
+    r = session["learner_blocked"]
+    assert r["status"] == "blocked", r
+    assert "PATH_TOLERANCE_VIOLATED" in r["reason"]
+    assert r["stop"]["measures"]["error_code"] == -4
+    assert r["stop"]["threshold_name"] == "path_tolerance_violated"
+    assert r["lost"] is False  # an arm that aborts is there: the trial's outcome
+
+
+def test_stale_joint_states_of_a_live_arm_stop_the_goal_before_it_is_sent(session, profile):
+    muted = session["muted"]
+    assert muted["clock_ok"]  # the stand-in was alive: its clock went on
+    assert muted["move"]["status"] == "invalid"
+    assert muted["move"]["reason"].startswith(
+        f"the arm went silent: joint states on '{profile.joint_states_topic}' are ")
+    assert "in simulated time (stale after 1 s)" in muted["move"]["reason"]
+    assert muted["goals_sent"] == 0 and muted["lost"] == "ArmUnavailable"
+    assert session["after_unmute"] == {"arm_q_ok": True}

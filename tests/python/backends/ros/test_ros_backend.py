@@ -1,0 +1,203 @@
+"""The ros backend behind the simulator boundary.
+
+Without ROS: its registration, the command line's bad input (one line naming the
+option, exit 2), the primitives it refuses, the trainer's scene requests as the
+stand-in answers them (pybullet scenes, no ROS). With ROS, inside a private network
+namespace with only loopback (``_hook_trials.py``, about a minute): an absent arm, then
+hook trials of the trial loop run on the stand-in over ROS 2, their outcomes decided by
+the stand-in's physics and measured from the pose topics.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+HERE = Path(__file__).resolve().parent
+ROOT = HERE.parents[3]
+
+
+def creative(*args: str, env: dict | None = None) -> subprocess.CompletedProcess:
+    e = dict(os.environ, PYTHONPATH=os.pathsep.join(
+        filter(None, [str(ROOT), os.environ.get("PYTHONPATH")])), **(env or {}))
+    return subprocess.run([sys.executable, "-m", "creative_py.cli", *args], cwd=ROOT, env=e,
+                          capture_output=True, text=True, timeout=120)
+
+
+# ------------------------------------------------------------------ without ROS
+def test_the_ros_backend_is_registered_with_its_extra():
+    from creative_py.backends import BACKENDS
+    from creative_py.simulator.loader import backend_packages
+
+    entry = BACKENDS["ros"]
+    assert (entry.module, entry.extra, entry.setup) == (
+        "creative_py.backends.ros.backend", "ros", "make setup-ros")
+    assert "backends.ros" in backend_packages()
+
+
+@pytest.mark.parametrize("args,message", [
+    (["run", "hook", "--backend", "nope"],
+     "error: --backend nope: unknown simulator backend 'nope'; backends: maniskill, "
+     "pybullet, ros"),
+    (["trial", "hook", "--tool", "hook_a2", "--backend", "nope"],
+     "error: --backend nope: unknown simulator backend 'nope'"),
+    (["run", "hook", "--robot-profile", "baxter"],
+     "error: --robot-profile: only with --backend ros"),
+])
+def test_bad_backend_options_are_one_line_and_exit_2(args, message):
+    r = creative(*args)
+    assert r.returncode == 2, r.stderr
+    assert r.stderr.startswith(message) and r.stderr.count("\n") == 1, r.stderr
+
+
+@pytest.mark.skipif(importlib.util.find_spec("rclpy") is not None,
+                    reason="the ros extra is installed here")
+def test_the_ros_backend_without_its_extra_says_what_installs_it():
+    r = creative("run", "hook", "--backend", "ros")
+    assert r.returncode == 2
+    assert r.stderr == ("error: --backend ros: the simulator backend 'ros' needs the module "
+                        "rclpy, which is not installed: make setup-ros (the extra "
+                        "'.[ros]')\n")
+
+
+def test_a_run_records_the_backend_only_when_given():
+    from creative_py.learning.options import RunOptions
+
+    assert "backend" not in RunOptions().recorded()  # recorded runs write back the same
+    opts = RunOptions(backend="ros", robot_profile="baxter").recorded()
+    assert (opts["backend"], opts["robot_profile"]) == ("ros", "baxter")
+    with pytest.raises(ValueError, match="option backend must be a name"):
+        RunOptions(backend="")
+
+
+def test_a_primitive_the_ros_backend_lacks_is_named_with_the_case_file():
+    from creative_py.backends.pybullet import load_world
+    from creative_py.backends.ros.episode import unsupported_skills
+    from creative_py.case import load_cases
+
+    cases = load_cases(strict=False)
+    assert unsupported_skills(load_world(cases["hook"])) == []
+    lines = [line for m in cases.values() if m.backend == "pybullet"
+             for line in unsupported_skills(load_world(m))]
+    assert lines  # some case binds place_on_floor, release_joint, push_along_axis
+    for line in lines:
+        assert "/case.toml: skill '" in line and "which the ros backend does not run" in line
+
+
+def test_the_stand_in_sets_up_the_scene_a_request_asks_for():
+    from creative_py.backends.pybullet import load_world
+    from creative_py.backends.ros.trainer import SceneKeeper, scene_request
+    from creative_py.case import get_case
+
+    world = load_world(get_case("hook"))
+    keeper = SceneKeeper(world)
+    try:
+        rid, error, ep = keeper.apply(scene_request("a1", "hook", "long_tube", 3, "hook_a4"))
+        assert (rid, error) == ("a1", None)
+        assert (ep.variant, ep.location, ep.tool) == ("long_tube", 3, "hook_a4")
+        assert keeper.episode is ep
+        # a created tool: its spec travels in the request (built from its parts here)
+        spec = world.item("hook_a2").spec
+        from dataclasses import replace
+
+        made = replace(spec, name="hook_new1", handle_length=0.5)
+        rid, error, ep = keeper.apply(scene_request("a2", "hook", "long_tube", 1, "hook_new1",
+                                                    made))
+        assert error is None and ep.tool == "hook_new1"
+        assert ep.spec.handle_length == 0.5
+        # refusals keep the old scene, with one line saying why
+        for text, answer in (
+                ("{", (None, "not JSON")),
+                (json.dumps({"id": 1}), (None, "not a scene request")),
+                (scene_request("b", "wedge", "standard", 1, "hook_a2"),
+                 ("b", "field 'case': the stand-in runs case 'hook', not 'wedge'")),
+                (scene_request("c", "hook", "nope", 1, "hook_a2"),
+                 ("c", "field 'variant': 'nope' is not a variant of hook")),
+                (scene_request("d", "hook", "standard", 9, "hook_a2"),
+                 ("d", "field 'location': 9 is not a location of hook")),
+                (scene_request("e", "hook", "standard", 1, "nope"), ("e", "nope"))):
+            rid, error, new = keeper.apply(text)
+            assert new is None and keeper.episode is ep
+            assert rid == answer[0] and answer[1] in error and "\n" not in error
+    finally:
+        keeper.close()
+
+
+def test_a_wrist_sensors_samples_give_the_tool_load():
+    import math
+
+    from creative_py.backends.ros.episode import wrench_load
+
+    # the tool frame is the gripper frame shifted 0.1 m back; a 2 N pull along -x acting
+    # on the line y = 0.05 (the torque about the gripper: r x F), then 1 N, then nothing
+    grasp = ((-0.1, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+    f = (-2.0, 0.0, 0.0)
+    t = (0.0, 0.0, 0.05 * 2.0)  # (x, 0.05, 0) x (-2, 0, 0) = (0, 0, 0.1)
+    samples = [((0.0, 0.0, 0.0), (0.0, 0.0, 0.0)), (f, t),
+               ((-1.0, 0.0, 0.0), (0.0, 0.0, 0.05))]
+    load = wrench_load(samples, grasp, 50.0, working_point=(0.4, 0.05, 0.0))
+    assert load.max_force_n == 2.0 and load.steps == 3 and load.contact_steps == 2
+    assert load.robust_force_n == pytest.approx(1.95)
+    # the line's point nearest the working point, in the tool frame
+    assert load.point == pytest.approx((0.4, 0.05, 0.0), abs=1e-9)
+    assert load.grasp_point == pytest.approx((0.1, 0.0, 0.0))
+    assert load.force == pytest.approx(f)
+    assert load.impulse_ns == pytest.approx(3.0 / 50.0)
+    assert wrench_load(samples[:1], grasp, 50.0).max_force_n == 0.0
+    assert math.isclose(load.to_dict()["max_force_n"], 2.0)
+
+
+# -------------------------------------------------------------------- over ROS
+@pytest.fixture(scope="module")
+def hook_trials() -> dict:
+    from test_standin import run_in_namespace
+
+    return run_in_namespace(HERE / "_hook_trials.py", domain=200 + os.getpid() % 30,
+                            timeout=600.0)
+
+
+@pytest.mark.sim
+def test_an_absent_arm_is_one_line_naming_the_topic(hook_trials):
+    assert hook_trials["namespace_links"] == ["lo"]
+    msg = hook_trials["absent"]
+    assert msg.startswith(str(ROOT / "robots" / "baxter.toml"))
+    assert "no sensor_msgs/JointState on 'joint_states' within 2 s" in msg
+    assert "\n" not in msg
+
+
+@pytest.mark.sim
+def test_hook_trials_over_ros_are_decided_by_the_stand_ins_physics(hook_trials):
+    ok, short, long_tube = hook_trials["trials"]
+    # the demonstration's tool and pose pull the cube out: the stand-in's physics moved
+    # it, and the verdict measured it on the pose topic
+    assert ok["outcome"] == "success", ok
+    v = ok["verdict"]
+    assert v["asked"] and v["holds"] and v["quantity"] == "cube1 centre x"
+    assert v["measures"]["moved_m"] > 0.2
+    assert ok["true_final"]["cube1"][0] == pytest.approx(v["value"], abs=1e-6)
+    assert ok["steps"] > 0  # trajectory goals sent
+    assert ["held", "hook_a2"] in ok["facts"]
+    # the pull's contact load, from the wrist sensor's topic (the stand-in's contacts)
+    load = ok["tool_load"]
+    assert load["max_force_n"] > 0 and 0 < load["robust_force_n"] <= load["max_force_n"]
+    assert load["contact_steps"] > 0 and load["point"] is not None
+    # a short hook cannot reach behind the cube; the medium one not in the long tube
+    for t in (short, long_tube):
+        assert t["outcome"] in ("failure", "blocked"), t
+        assert not t["verdict"]["holds"]
+    # each scene was set up by the trainer (the stand-in), the cube where its location is
+    assert len(hook_trials["scene_s"]) >= 3  # (and the task facts' scene)
+    assert hook_trials["standin_rc"] == 0
+
+
+@pytest.mark.sim
+def test_the_trainer_refuses_a_scene_in_one_line(hook_trials):
+    msg = hook_trials["refused"]
+    assert "the trainer on 'trainer/scene_done' refused the scene" in msg
+    assert "no_such_tool" in msg and "\n" not in msg
