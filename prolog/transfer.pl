@@ -2,7 +2,8 @@
           [ read_prior/2,            % +File, -Prior
             prior_shared/3,          % +Case, +Prior, -Shared
             prior_literals/4,        % +Case, +Prior, +Example, -Literals
-            prior_contradicted/4     % +Case, +Prior, +Example, -Literals
+            prior_contradicted/4,    % +Case, +Prior, +Example, -Literals
+            prior_kinds/3            % +Case, +Literals, -KindLiterals
           ]).
 
 /** <module> Transfer: a learned model of one case as the prior of another
@@ -33,10 +34,14 @@ to a demonstration whose tool has handle_length(T, long)). Task literals never t
 (no experiment tests them). No name of a case, class or predicate is written here: the
 mapping is what the two cases' ontologies declare.
 
-The version space then starts with the transferred literals in h_g
-(version_space:vs_init_prior/3): no experiment tests them, the stop is certified
-relative to them, and a success that violates one drops it (the physics contradicted
-the prior).
+The version space then starts with the transferred literals as the prior's
+predictions, open (version_space:vs_init_prior/3): trusted only as far as the trials
+confirm them. A spatial literal (a relation the two cases give the same meaning) is
+settled by the first success that satisfies it, and the stop is then certified
+relative to it; a structural literal (a property of the demonstrated tool) is tested
+like any unknown literal, only likelier necessary; a success that violates either drops
+it (the physics contradicted the prior), and a failure is learned from as without a
+prior.
 */
 
 :- use_module(library(error)).
@@ -134,6 +139,25 @@ mapped_literals_(Case, Prior, Example, Test, Literals) :-
         include(call(Test, Body), Shared, Literals0),
         list_to_set(Literals0, Literals)
     ;   Literals = []
+    ).
+
+%!  prior_kinds(+Case, +Literals:list, -KindLiterals:list) is det.
+%
+%   KindLiterals pairs each literal of Literals (in Case's vocabulary, as
+%   prior_literals/4 gives them) with its kind: spatial when Case declares a
+%   spatial_definition/4 of its name and arity, else structural.
+
+prior_kinds(Case, Lits, Pairs) :-
+    must_be_case(Case),
+    maplist(prior_kind_(Case), Lits, Pairs).
+
+prior_kind_(Case, L, Kind-L) :-
+    (   compound(L),
+        functor(L, N, A),
+        case_holds(spatial_definition(Case, T, _, _)),
+        functor(T, N, A)
+    ->  Kind = spatial
+    ;   Kind = structural
     ).
 
 violated_(Body, L) :-
