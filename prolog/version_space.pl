@@ -183,11 +183,14 @@ vs_prior(VS, Kept, Dropped) :-
 %!  vs_prior_events(+VS, -Events:list) is det.
 %
 %   Events are, oldest first, what the physics did to the prior's literals:
-%   settled(L, E), confirmed(L, E) and dropped(L, E) (module comment); [] without a
-%   prior.
+%   settled(L, E), confirmed(L, E) and dropped(L, E) (module comment), each L as the
+%   first positive (the demonstration) instantiates it, as vs_init_prior/3 was given
+%   it; [] without a prior.
 
 vs_prior_events(VS, Events) :-
-    copy_term(VS, vs(_, _, _, _, _, Notes)),
+    copy_term(VS, vs(Head, _, _, [First|_], _, Notes)),
+    clause_head_body(First, Head0, _),
+    ignore(Head = Head0),
     findall(Ev, ( member(N, Notes), prior_event_(N, Ev) ), Evs0),
     reverse(Evs0, Events).
 
