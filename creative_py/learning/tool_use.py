@@ -184,7 +184,8 @@ class ToolUseLearner:
     options : LearningOptions
     prior : Prior or None
         Another case's learned model (:func:`creative_py.learning.prior.load_prior`):
-        the version space starts with the literals the ontology maps from it in h_g.
+        the literals the ontology maps from it are the version space's open
+        predictions, trusted only as far as the trials confirm them.
     """
 
     def __init__(self, runner: TrialRunner, options: LearningOptions = LearningOptions(),
