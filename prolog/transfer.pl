@@ -30,8 +30,9 @@ the same meaning and roles:
 The roles map through the version space's head, tool_pose(Tool, Target, Context): the
 prior's head variables are bound to the new example's, so a literal transfers only as
 the very literal of the new demonstration (handle_length(T, medium) does not transfer
-to a demonstration whose tool has handle_length(T, long)). Task literals never transfer
-(no experiment tests them). No name of a case, class or predicate is written here: the
+to a demonstration whose tool has handle_length(T, long)). Task literals (which do not
+name the tool) and the new case's untestable literals never transfer: no trial could
+confirm or contradict them. No name of a case, class or predicate is written here: the
 mapping is what the two cases' ontologies declare.
 
 The version space then starts with the transferred literals as the prior's
@@ -136,7 +137,10 @@ mapped_literals_(Case, Prior, Example, Test, Literals) :-
     (   functor(PHead, N, A),
         functor(Head, N, A)
     ->  PHead = Head,
-        include(call(Test, Body), Shared, Literals0),
+        arg(1, Head, Tool),
+        case_answer(untestable_literals(Case, Untestable)),
+        include(testable_about_(Tool, Untestable), Shared, Shared1),
+        include(call(Test, Body), Shared1, Literals0),
         list_to_set(Literals0, Literals)
     ;   Literals = []
     ).
@@ -159,6 +163,15 @@ prior_kind_(Case, L, Kind-L) :-
     ->  Kind = spatial
     ;   Kind = structural
     ).
+
+%   A literal a trial can test: about the tool (a task literal, which does not name
+%   it, is what every trial of the case has) and none of the case's untestable ones
+%   (in_tube(T, C): the tool in the tube): no trial could confirm or contradict the
+%   others, so they are not taken.
+testable_about_(Tool, Untestable, L) :-
+    L =.. [_|Args],
+    once(( member(X, Args), X == Tool )),
+    \+ ( member(Pattern, Untestable), subsumes_term(Pattern, L) ).
 
 violated_(Body, L) :-
     ground(L),

@@ -47,6 +47,17 @@ test(contradicted_by_the_demonstration) :-
     transfer:prior_contradicted(rake, P, E, L),
     assertion(L == [handle_length(rake_a2, medium)]).
 
+%   Task literals (not about the tool) and the case's untestable ones (the tool in the
+%   tube) never transfer: no trial could confirm or contradict them.
+test(no_task_or_untestable_literals) :-
+    P = prior(hook, (tool_pose(T, C, X) :- hook(T)),
+              (tool_pose(T, C, X) :- hook_down(T), in_tube(T, X), in_tube(C, X))),
+    E = (tool_pose(hook_a2, cube1, tube1) :-
+         hook(hook_a2), hook_down(hook_a2), in_tube(hook_a2, tube1),
+         in_tube(cube1, tube1)),
+    transfer:prior_literals(hook, P, E, L),
+    assertion(L == [hook_down(hook_a2)]).
+
 test(read_prior_missing, [throws(error(existence_error(file, '/nonexistent/model.pl'), _))]) :-
     transfer:read_prior('/nonexistent/model.pl', _).
 
