@@ -167,6 +167,39 @@ def learning_table() -> str:
     return "\n".join(rows)
 
 
+# --- Results: transfer between cases (transfer.json) ----------------------------------
+
+def _span(xs: list[int]) -> str:
+    """median [min-max] of whole numbers, or -."""
+    return f"{med(statistics.median(xs))} [{min(xs)}-{max(xs)}]" if xs else "-"
+
+
+@block("transfer-table")
+def transfer_table() -> str:
+    """Tool-use trials with and without a prior, per pair over randomised worlds
+    (transfer.json, ``bench/transfer_bench.py``)."""
+    d = result("transfer")
+    rows = ["| prior -> case | worlds | trials alone | trials with prior | eval alone | "
+            "eval with prior | h_g as alone | contradicted |",
+            "|---|---|---|---|---|---|---|---|"]
+    for name, pair in d.items():
+        runs, refused = pair["rows"], pair["refused"]
+        alone = [r["alone"]["trials"] for r in runs + refused]
+        ea = [sum(r["alone"]["eval"][i] for r in runs + refused) for i in (0, 1)]
+        if refused and not runs:
+            rows.append(f"| {name} | {len(refused)} | {_span(alone)} | refused, exit 2, in "
+                        f"{len(refused)} of {len(refused)} | {ea[0]}/{ea[1]} | - | - | - |")
+            continue
+        tb = [r["prior"]["trials"] for r in runs]
+        eb = [sum(r["prior"]["eval"][i] for r in runs) for i in (0, 1)]
+        same = sum(r["alone"]["hg"] == r["prior"]["hg"] for r in runs)
+        contra = sum(bool(r["prior"]["dropped"]) for r in runs)
+        rows.append(f"| {name} | {len(runs)} | {_span(alone)} | **{_span(tb)}** | "
+                    f"{ea[0]}/{ea[1]} | {eb[0]}/{eb[1]} | {same} of {len(runs)} | "
+                    f"{contra} of {len(runs)} |")
+    return "\n".join(rows)
+
+
 # --- Results: the strategies on the shipped worlds, seed 0 (release_runs.json) ---------
 
 def _kinds(r: dict[str, Any]) -> str:

@@ -379,6 +379,9 @@ def sweep(
                                     "learned model."),
     video: str = typer.Option("none", "--video", help="MP4 clips of every run: none, key "
                               "or all (as creative run --video)."),
+    prior: Optional[str] = typer.Option(None, "--prior", help="A prior for every run (as "
+                                        "creative run --prior); {world} and {seed} in it "
+                                        "stand for each run's world seed and seed."),
 ) -> None:
     """Run every combination of cases, strategies, seeds and world seeds on Ray and
     write sweep.csv and sweep.png.
@@ -415,8 +418,20 @@ def sweep(
 
     if video not in VIDEO_MODES:
         _fail(f"--video must be one of {', '.join(VIDEO_MODES)}, got {video!r}")
+    if prior is not None:
+        from creative_py.learning.prior import model_file_of
+        from creative_py.sweep import prior_for
+
+        if not prior.strip():
+            _fail("--prior: empty")
+        for spec in runs:
+            given = Path(prior_for(spec, prior))
+            if not model_file_of(given).is_file():
+                _fail(f"--prior {given}: "
+                      + ("the run folder has no model.pl" if given.is_dir()
+                         else "no such run folder or model file"))
     opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials,
-                        video=video)
+                        video=video, prior=prior)
     try:
         with _one_line_errors():
             result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,

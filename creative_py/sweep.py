@@ -1,5 +1,9 @@
 """Sweeps: many independent runs (cases x strategies x seeds x world seeds) on Ray.
 
+``--prior`` gives every run a prior (transfer, ``creative run --prior``); ``{world}``
+in it stands for the run's world seed, so each world's run starts from the prior
+case's run of the same world.
+
 ``creative sweep hook wedge --strategies paper,informative --seeds 0-19 --world-seeds
 0-19`` runs every combination as its own run (:func:`creative_py.learning.run.run_case`)
 in its own run folder under the sweep's folder, as Ray tasks: a local Ray instance
@@ -84,6 +88,20 @@ class SweepOptions:
     eval_trials: int = 4
     create_eval_trials: int = 5
     video: str = "none"
+    prior: Optional[str] = None
+    """``--prior`` of every run (transfer): a run folder or ``model.pl``, in which
+    ``{world}`` and ``{seed}`` stand for the run's world seed and seed (each world its
+    own prior: ``runs/hook-informative-s0-w{world}``); None: no prior."""
+
+
+def prior_for(spec: "RunSpec", prior: Optional[str]) -> Optional[str]:
+    """Return the ``--prior`` of run ``spec``: ``prior`` with ``{world}`` and
+    ``{seed}`` replaced by its world seed and seed (``{world}`` of a run on the world
+    files is ``files``)."""
+    if prior is None:
+        return None
+    world = "files" if spec.world_seed is None else str(spec.world_seed)
+    return prior.replace("{world}", world).replace("{seed}", str(spec.seed))
 
 
 NUMBERS_MAX = 10000
@@ -188,8 +206,10 @@ def run_one(spec: RunSpec, runs_dir: str, options: SweepOptions) -> dict[str, An
     row.update(case=spec.case, strategy=spec.strategy, seed=spec.seed,
                world_seed="" if spec.world_seed is None else spec.world_seed)
     try:
+        fields = asdict(options)
+        fields["prior"] = prior_for(spec, options.prior)
         opts = RunOptions(seed=spec.seed, strategy=spec.strategy, world_seed=spec.world_seed,
-                          **asdict(options))
+                          **fields)
         folder = run_case(spec.case, Path(runs_dir), opts, run_name=spec.name)
         summary = RunSummary.read(folder.path)
         row.update(status="ok", run_dir=str(folder.path), **summary_row(summary))

@@ -48,9 +48,9 @@ if it needs a new module, its use_module/1 below.
 :- use_module(version_space,
               [ vs_init/2, vs_update/3, vs_bounds/3, vs_unknown/2, vs_examples/3,
                 vs_converged/1, vs_covers/3, vs_notes/2, vs_count/3,
-                vs_init_prior/3, vs_prior/3 ]).
+                vs_init_prior/3, vs_prior/3, vs_prior_events/2 ]).
 :- use_module(transfer, [read_prior/2, prior_shared/3, prior_literals/4,
-                          prior_contradicted/4]).
+                          prior_contradicted/4, prior_kinds/3]).
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4, pose_world/5]).
 :- use_module(case, [case_info/2, tool_vocabulary/2, size_context_facts/1,
@@ -112,8 +112,10 @@ api_op(vs_covers(VS, Bound, Example), true, vs_covers(VS, Bound, Example)).
 api_op(vs_notes(VS), Notes, vs_notes(VS, Notes)).
 api_op(vs_count(VS), count(N, Exact), vs_count(VS, N, Exact)).
 % Transfer from a prior case's learned model (transfer.pl).
-api_op(vs_init_prior(Example, Lits), VS, vs_init_prior(Example, Lits, VS)).
+api_op(vs_init_prior(Case, Example, Lits), VS,
+       ( prior_kinds(Case, Lits, Kinded), vs_init_prior(Example, Kinded, VS) )).
 api_op(vs_prior(VS), prior(Kept, Dropped), vs_prior(VS, Kept, Dropped)).
+api_op(vs_prior_events(VS), Events, vs_prior_events(VS, Events)).
 api_op(read_prior(File), Prior, read_prior(File, Prior)).
 api_op(prior_shared(Case, Prior), Shared, prior_shared(Case, Prior, Shared)).
 api_op(prior_literals(Case, Prior, Example), Lits, prior_literals(Case, Prior, Example, Lits)).

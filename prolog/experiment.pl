@@ -410,7 +410,11 @@ feasible_experiment(experiment_problem(Case, _, _, _, _, Context, _, _), Cands,
 %
 %       R = p (N - N_s) + (1 - p) N_s
 %
-%   and the largest R comes first; ties go to the likelier success (a success also
+%   and the largest R comes first (after a prior, --prior: the experiments that put
+%   fewer of the prior's open literals at risk come first, whatever their R, so the
+%   prior's predictions are tested after what it says nothing about, and a success in
+%   between can settle them, version_space:vs_init_prior/3); ties go to the likelier
+%   success (a success also
 %   moves the task on and shrinks h_s, which can turn an object that violates several
 %   literals into a test of one), then to fewer violated literals, to the earlier
 %   literals of h_s, and to the object's name. An experiment whose outcome every
@@ -431,19 +435,22 @@ informative_candidates(experiment_problem(Case, VS, HS0, _, Objects, _, Skip,
     Head0 =.. [_, _, Target, Ctx],
     clause_head_body_(HS, Head, _),
     Head =.. [_, _, Target, Ctx],
-    maplist(literal_prior(Head), Lits, Priors),
+    maplist(literal_prior(Head), Lits, Priors0),
+    vs_prior_open(VS, Open),
+    prior_open_priors_(Priors0, 1, Open, Priors),
     vs_space_count(Lits, Cs, [], Priors, N-W),
     hypothesis_parts(HS, _, Spatial, Task),
     findall(Key-Cand,
             informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W,
-                                   Spatial, Task, Objects, Key, Cand),
+                                   Spatial, Task, Objects, Open, Key, Cand),
             Scored),
     exclude(skipped_(Skip), Scored, Scored1),
     keysort(Scored1, Sorted),
     pairs_values(Sorted, Cands).
 
 informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W, Spatial, Task,
-                       Objects, k(NegR, NegP, K, PosV, O), cand(L, O, Req, Neg, Viol)) :-
+                       Objects, Open, k(NOpen, NegR, NegP, K, PosV, O),
+                       cand(L, O, Req, Neg, Viol)) :-
     member(object(O, Struct), Objects),
     copy_term(Head-(Spatial-Task-Lits), HeadC-(SpatialC-TaskC-LitsC)),
     HeadC =.. [_, O|_],
@@ -472,6 +479,8 @@ informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W, Spati
     NegR is -R,
     NegP is -P,
     length(PosV, K),
+    ord_intersection(PosV, Open, OpenV),
+    length(OpenV, NOpen),
     findall(V, ( member(J, PosV), nth1(J, LitsC, V) ), Viol),
     (   Neg = [L]                   % a pose test is named by its negated literal
     ->  true
@@ -497,6 +506,18 @@ informative_candidate_(Case, Untestable, HS, Head, Lits, Cs, Priors, N, W, Spati
 %   succeeds with probability 9/25 and has R = 0.43 N against 0.5 N): several literals
 %   are violated together when no single test is left or when earlier trials made
 %   their necessity unlikely.
+
+%   The literals a prior predicts necessary and the physics has not yet settled
+%   (version_space:vs_prior_open/2): 9/10, whatever their kind; they stay hypotheses to
+%   test, tried after the literals the prior says nothing about.
+prior_open_priors_([], _, _, []).
+prior_open_priors_([P0|Ps0], I, Open, [P|Ps]) :-
+    (   ord_memberchk(I, Open)
+    ->  P = 9r10
+    ;   P = P0
+    ),
+    I1 is I + 1,
+    prior_open_priors_(Ps0, I1, Open, Ps).
 
 literal_prior(Head, L, P) :-
     literal_role(Head, L, Role),

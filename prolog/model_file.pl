@@ -16,7 +16,7 @@ model.pl holds plain terms, one per clause, with a header comment:
     learned_hypothesis(Task, hs, Clause).         % the version space's boundaries
     learned_hypothesis(Task, hg, Clause).
     learned_hypothesis(Task, prior, Clause).      % a run with a prior: h_g's literals
-                                                  % taken from it (transfer.pl)
+                                                  % from it (transfer.pl)
 
 The learned model's precondition is the observed model's literals about the robot and
 the task (holding the tool, the cube in the tube, the door open), then h_g: the literals the physics showed necessary. load_model_file/1 reads the terms
@@ -64,8 +64,9 @@ write_model_file(File, Case, Models, VS) :-
           portray_clause(Out, learned_hypothesis(Case, hs, HS)),
           portray_clause(Out, learned_hypothesis(Case, hg, HG)),
           (   vs_prior_clause(VS, Prior)
-          ->  format(Out, '%   The literals of h_g taken from a prior case\'s learned model (--prior),~n', []),
-              format(Out, '%   not tested here: the stop is certified relative to them.~n', []),
+          ->  format(Out, '%   The literals of h_g from a prior case\'s learned model (--prior): settled by a~n', []),
+              format(Out, '%   success (untested: the stop is certified relative to them) or made necessary~n', []),
+              format(Out, '%   by a failure (summary.json use.prior says which).~n', []),
               portray_clause(Out, learned_hypothesis(Case, prior, Prior))
           ;   true
           )

@@ -2,7 +2,8 @@
           [ read_prior/2,            % +File, -Prior
             prior_shared/3,          % +Case, +Prior, -Shared
             prior_literals/4,        % +Case, +Prior, +Example, -Literals
-            prior_contradicted/4     % +Case, +Prior, +Example, -Literals
+            prior_contradicted/4,    % +Case, +Prior, +Example, -Literals
+            prior_kinds/3            % +Case, +Literals, -KindLiterals
           ]).
 
 /** <module> Transfer: a learned model of one case as the prior of another
@@ -29,14 +30,19 @@ the same meaning and roles:
 The roles map through the version space's head, tool_pose(Tool, Target, Context): the
 prior's head variables are bound to the new example's, so a literal transfers only as
 the very literal of the new demonstration (handle_length(T, medium) does not transfer
-to a demonstration whose tool has handle_length(T, long)). Task literals never transfer
-(no experiment tests them). No name of a case, class or predicate is written here: the
+to a demonstration whose tool has handle_length(T, long)). Task literals (which do not
+name the tool) and the new case's untestable literals never transfer: no trial could
+confirm or contradict them. No name of a case, class or predicate is written here: the
 mapping is what the two cases' ontologies declare.
 
-The version space then starts with the transferred literals in h_g
-(version_space:vs_init_prior/3): no experiment tests them, the stop is certified
-relative to them, and a success that violates one drops it (the physics contradicted
-the prior).
+The version space then starts with the transferred literals as the prior's
+predictions, open (version_space:vs_init_prior/3): trusted only as far as the trials
+confirm them. A spatial literal (a relation the two cases give the same meaning) is
+settled by the first success that satisfies it, and the stop is then certified
+relative to it; a structural literal (a property of the demonstrated tool) is tested
+like any unknown literal, only likelier necessary; a success that violates either drops
+it (the physics contradicted the prior), and a failure is learned from as without a
+prior.
 */
 
 :- use_module(library(error)).
@@ -131,10 +137,41 @@ mapped_literals_(Case, Prior, Example, Test, Literals) :-
     (   functor(PHead, N, A),
         functor(Head, N, A)
     ->  PHead = Head,
-        include(call(Test, Body), Shared, Literals0),
+        arg(1, Head, Tool),
+        case_answer(untestable_literals(Case, Untestable)),
+        include(testable_about_(Tool, Untestable), Shared, Shared1),
+        include(call(Test, Body), Shared1, Literals0),
         list_to_set(Literals0, Literals)
     ;   Literals = []
     ).
+
+%!  prior_kinds(+Case, +Literals:list, -KindLiterals:list) is det.
+%
+%   KindLiterals pairs each literal of Literals (in Case's vocabulary, as
+%   prior_literals/4 gives them) with its kind: spatial when Case declares a
+%   spatial_definition/4 of its name and arity, else structural.
+
+prior_kinds(Case, Lits, Pairs) :-
+    must_be_case(Case),
+    maplist(prior_kind_(Case), Lits, Pairs).
+
+prior_kind_(Case, L, Kind-L) :-
+    (   compound(L),
+        functor(L, N, A),
+        case_holds(spatial_definition(Case, T, _, _)),
+        functor(T, N, A)
+    ->  Kind = spatial
+    ;   Kind = structural
+    ).
+
+%   A literal a trial can test: about the tool (a task literal, which does not name
+%   it, is what every trial of the case has) and none of the case's untestable ones
+%   (in_tube(T, C): the tool in the tube): no trial could confirm or contradict the
+%   others, so they are not taken.
+testable_about_(Tool, Untestable, L) :-
+    L =.. [_|Args],
+    once(( member(X, Args), X == Tool )),
+    \+ ( member(Pattern, Untestable), subsumes_term(Pattern, L) ).
 
 violated_(Body, L) :-
     ground(L),

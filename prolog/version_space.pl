@@ -2,6 +2,8 @@
           [ vs_init/2,               % +Example, -VS
             vs_init_prior/3,         % +Example, +PriorLiterals, -VS
             vs_prior/3,              % +VS, -Kept, -Dropped
+            vs_prior_events/2,       % +VS, -Events
+            vs_prior_open/2,         % +VS, -Positions
             vs_prior_clause/2,       % +VS, -Clause
             vs_update/3,             % +VS0, +LabelledExample, -VS
             vs_bounds/3,             % +VS, -HS, -HG
@@ -46,10 +48,21 @@ inconsistent:
   - noisy_negative(E): the negative E is covered by h_s, so no literal of h_s
     can exclude it; h_g was left unchanged and E is ignored when h_g is
     specialised later.
-  - prior(L): the literal L of h_g was taken from a prior (vs_init_prior/3), not
-    learned here; while it stays in h_g, the hypotheses keep it (vs_space/4).
+  - prior(L, Kind): the literal L of h_s was taken from a prior (vs_init_prior/3);
+    Kind is spatial or structural. It starts *open*: a prediction, not in h_g and
+    not a constraint of the hypotheses, only likelier necessary for the strategy
+    (vs_prior_open/2). The physics decides what becomes of it:
+  - prior_settled(L, E): the positive E satisfied the open spatial literal L (a
+    success consistent with the prior's relation): L joins h_g and every hypothesis
+    keeps it (vs_space/4); the stop is certified relative to it.
+  - prior_confirmed(L, E): after the example E, the learned part of h_g holds L (a
+    failure made it necessary, as without a prior).
   - prior_dropped(L, E): the positive E violated the prior's literal L (the physics
-    contradicted the prior): L left h_g (and, by the LGG, h_s).
+    contradicted the prior): L left h_g (and, by the LGG, h_s), learned afresh.
+  - hg_learned(Body): the part of h_g learned from the examples alone, exactly the
+    h_g of the same examples without a prior; h_g is it plus the settled literals.
+    A failure is learned from with this part only, so no literal of the prior can
+    explain a failure away.
 
 *Free literals.* After an LGG, a literal whose variable occurs nowhere else
 in h_s and has no range (e.g. `handle_length(T, L)` from `medium` and
@@ -100,17 +113,22 @@ vs_init(Example, VS) :-
 
 %!  vs_init_prior(+Example, +PriorLiterals, -VS) is det.
 %
-%   As vs_init/2, with h_g starting as the body literals of Example listed in
-%   PriorLiterals (ground, as in Example: transfer:prior_literals/4 gives them) instead
-%   of empty, each noted prior(L). No experiment tests them (the hypotheses keep them,
-%   vs_space/4), so a stop is certified relative to the prior; a positive that
-%   violates one drops it from h_g (noted prior_dropped(L, E)). A literal of
-%   PriorLiterals that Example lacks is ignored.
+%   As vs_init/2, with the body literals of Example listed in PriorLiterals (ground,
+%   as in Example: transfer:prior_literals/4 gives them, each as Kind-Literal with Kind
+%   spatial or structural; a bare literal is structural) noted as the prior's
+%   predictions, open (module comment): h_g starts empty, as without a prior, and no
+%   literal is settled before the physics speaks. An open spatial literal is settled
+%   by the first success that satisfies it; an open structural literal (a property of
+%   the demonstrated tool) is never settled by a success, only tested like an unknown
+%   literal, likelier necessary; a success that violates an open or settled literal
+%   drops it (prior_dropped/2). A literal of PriorLiterals that Example lacks is
+%   ignored.
 %
 %   ==
-%   ?- vs_init_prior((tp(h1, c, t) :- hook(h1), behind(h1, c)), [behind(h1, c)], VS),
-%      vs_bounds(VS, _, HG).
-%   HG = (tp(A, B, C) :- behind(A, B)).
+%   ?- vs_init_prior((tp(h1, c, t) :- hook(h1), behind(h1, c)),
+%                    [spatial-behind(h1, c)], VS),
+%      vs_bounds(VS, _, HG), vs_prior_open(VS, Open).
+%   HG = tp(A, B, C), Open = [2].
 %   ==
 vs_init_prior(Example, PriorLits, VS) :-
     must_be(list, PriorLits),
@@ -120,46 +138,102 @@ vs_init_prior(Example, PriorLits, VS) :-
     VS0 = vs(Head, SBody, [], Pos, Neg, []),
     Head =.. [_|Vars],
     pairs_keys_values(Map, Args, Vars),
-    include(in_example_(Body0), PriorLits, Lits0),
-    maplist(replace_constants_(Map), Lits0, Lits1),
+    maplist(prior_kind_, PriorLits, Kinded),
+    include(in_example_(Body0), Kinded, Lits0),
+    maplist(replace_kinded_(Map), Lits0, Lits1),
     include(in_sbody_(SBody), Lits1, Lits2),
-    dedupe_(Lits2, GBody),
-    maplist([L, prior(L)]>>true, GBody, Notes),
-    VS = vs(Head, SBody, GBody, Pos, Neg, Notes).
+    dedupe_kinded_(Lits2, Lits),
+    maplist([K-L, prior(L, K)]>>true, Lits, Notes0),
+    reverse(Notes0, Notes1),
+    VS = vs(Head, SBody, [], Pos, Neg, [hg_learned([])|Notes1]).
 
-in_example_(Body, L) :-
+prior_kind_(K-L, K-L) :-
+    memberchk(K, [spatial, structural]),
+    !.
+prior_kind_(L, structural-L).
+
+replace_kinded_(Map, K-L0, K-L) :-
+    replace_constants_(Map, L0, L).
+
+dedupe_kinded_([], []).
+dedupe_kinded_([K-L|Ls], [K-L|Ds]) :-
+    exclude([_-M]>>(M == L), Ls, Rest),
+    dedupe_kinded_(Rest, Ds).
+
+in_example_(Body, _-L) :-
     member_eq_(Body, L).
 
-in_sbody_(SBody, L) :-
+in_sbody_(SBody, _-L) :-
     member_eq_(SBody, L).
 
 %!  vs_prior(+VS, -Kept:list, -Dropped:list) is det.
 %
-%   Kept are the prior's literals still in h_g (copies sharing the head of
-%   vs_bounds/3's copy only by position: compare them as text or by variant), Dropped
-%   the prior(L)-E pairs of literals a positive E contradicted, oldest first. Both []
+%   Kept are the prior's literals now in h_g, settled or confirmed (copies sharing the
+%   head of vs_bounds/3's copy only by position: compare them as text or by variant),
+%   Dropped the L-E pairs of literals a positive E contradicted, oldest first. Both []
 %   for a version space without a prior.
 
 vs_prior(VS, Kept, Dropped) :-
     copy_term(VS, vs(Head, _, GBody, _, _, Notes)),
-    findall(L, ( member(prior(L), Notes), in_body_(Head, GBody, L) ), Kept),
+    findall(L, ( member(prior(L, _), Notes), in_body_(Head, GBody, L) ), Kept0),
+    reverse(Kept0, Kept),
     findall(L-E, member(prior_dropped(L, E), Notes), Dropped0),
     reverse(Dropped0, Dropped).
 
+%!  vs_prior_events(+VS, -Events:list) is det.
+%
+%   Events are, oldest first, what the physics did to the prior's literals:
+%   settled(L, E), confirmed(L, E) and dropped(L, E) (module comment), each L as the
+%   first positive (the demonstration) instantiates it, as vs_init_prior/3 was given
+%   it; [] without a prior.
+
+vs_prior_events(VS, Events) :-
+    copy_term(VS, vs(Head, _, _, [First|_], _, Notes)),
+    clause_head_body(First, Head0, _),
+    ignore(Head = Head0),
+    findall(Ev, ( member(N, Notes), prior_event_(N, Ev) ), Evs0),
+    reverse(Evs0, Events).
+
+prior_event_(prior_settled(L, E), settled(L, E)).
+prior_event_(prior_confirmed(L, E), confirmed(L, E)).
+prior_event_(prior_dropped(L, E), dropped(L, E)).
+
+%!  vs_prior_open(+VS, -Positions:list) is det.
+%
+%   Positions are the 1-based positions, in the literals of vs_space/4 (h_s's body
+%   without in_range/3), of the prior's literals still open: neither in h_g nor
+%   dropped. The informative strategy takes them as likelier necessary.
+
+vs_prior_open(VS, Positions) :-
+    copy_term(VS, vs(Head, SBody, GBody, _, _, Notes)),
+    exclude(range_lit_, SBody, Lits),
+    findall(I,
+            ( member(prior(L, _), Notes),
+              prior_open_(Head, GBody, Notes, L),
+              nth1(I, Lits, L1),
+              L1 == L
+            ),
+            Is),
+    sort(Is, Positions).
+
+prior_open_(Head, GBody, Notes, L) :-
+    \+ in_body_(Head, GBody, L),
+    \+ ( member(prior_dropped(D, _), Notes), D == L ).
+
 %!  vs_prior_clause(+VS, -Clause) is semidet.
 %
-%   Clause is h_g's head with the prior's literals still in h_g as its body (Head
-%   alone when the physics dropped them all); fails for a version space without a
-%   prior (vs_init/2).
+%   Clause is h_g's head with the prior's literals now in h_g (settled or confirmed)
+%   as its body (Head alone when none is); fails for a version space without a prior
+%   (vs_init/2).
 
 vs_prior_clause(VS, Clause) :-
     copy_term(VS, vs(Head, _, GBody, _, _, Notes)),
-    memberchk(prior(_), Notes),
+    memberchk(prior(_, _), Notes),
     include(prior_kept_(Notes), GBody, Kept),
     clause_head_body(Clause, Head, Kept).
 
 prior_kept_(Notes, L) :-
-    member(prior(P), Notes),
+    member(prior(P, _), Notes),
     P == L,
     !.
 
@@ -211,6 +285,10 @@ vs_update(VS0, Labelled, VS) :-
     ).
 
 update_pos_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS) :-
+    memberchk(hg_learned(_), Notes0),
+    !,
+    update_pos_prior_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS).
+update_pos_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS) :-
     clause_head_body(HS0, Head, SBody),
     clause_lgg(HS0, E, HS1),
     clause_head_body(HS1, Head1, SBody1),
@@ -226,17 +304,115 @@ update_pos_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS) :-
     ->  VS = vs(Head, SBody2, GBody0, Pos, Neg, Notes0)
     ;   exclude(member_eq_(Violated), GBody0, GBody1),
         drop_orphan_ranges_(Head, GBody1, GBody2),
-        findall(prior_dropped(L, E),
-                ( member(prior(L), Notes0), member_eq_(Violated, L) ),
-                Dropped),
-        append(Dropped, Notes0, NotesD),
-        Notes1 = [hg_weakened(E, Violated)|NotesD],
+        Notes1 = [hg_weakened(E, Violated)|Notes0],
         consistent_negatives_(Neg, Notes1, Negs),
         specialise_(Head, SBody2, GBody2, Negs, [], GBody, Left),
         note_noisy_(Left, Notes1, Notes),
         VS = vs(Head, SBody2, GBody, Pos, Neg, Notes)
     ).
 
+%   A positive with a prior: the learned part of h_g changes exactly as h_g does
+%   without a prior; the prior's literals E violates are dropped, the open spatial
+%   ones it satisfies are settled; h_g is the learned part and the settled literals.
+update_pos_prior_(vs(Head, SBody, GBody0, Pos0, Neg, Notes0), E, VS) :-
+    select(hg_learned(LBody0), Notes0, NotesR),
+    !,
+    clause_head_body(HS0, Head, SBody),
+    clause_lgg(HS0, E, HS1),
+    clause_head_body(HS1, Head1, SBody1),
+    drop_free_literals_(Head1, SBody1, SBody2),
+    Head = Head1,
+    append(Pos0, [E], Pos),
+    violations_(Head, LBody0, E, LViol),
+    prior_lits_(NotesR, PLits),
+    violations_(Head, PLits, E, PViol),
+    exclude(noted_(prior_dropped, NotesR), PViol, NewDrop),
+    maplist(note_with_(prior_dropped, E), NewDrop, Dropped),
+    append(Dropped, NotesR, Notes1),
+    (   LViol == []
+    ->  LBody = LBody0,
+        Notes2 = Notes1
+    ;   exclude(member_eq_(LViol), LBody0, LBody1),
+        drop_orphan_ranges_(Head, LBody1, LBody2),
+        Notes3 = [hg_weakened(E, LViol)|Notes1],
+        consistent_negatives_(Neg, Notes3, Negs),
+        specialise_(Head, SBody2, LBody2, Negs, [], LBody, Left),
+        note_noisy_(Left, Notes3, Notes2)
+    ),
+    include(prior_spatial_open_(Head, GBody0, Notes2, PViol), PLits, ToSettle),
+    maplist(note_with_(prior_settled, E), ToSettle, Settled),
+    append(Settled, Notes2, Notes4),
+    prior_hg_(Head, SBody2, LBody, E, Notes4, GBody, Notes),
+    VS = vs(Head, SBody2, GBody, Pos, Neg, Notes).
+
+%   h_g of a version space with a prior: the learned part LBody, then the settled
+%   literals not dropped and not in it; notes the literals of the prior the learned
+%   part now holds (confirmed by E) and the new learned part.
+prior_hg_(Head, SBody, LBody, E, Notes0, GBody, [hg_learned(LBody)|Notes]) :-
+    prior_lits_(Notes0, PLits),
+    include(noted_(prior_settled, Notes0), PLits, Settled0),
+    exclude(noted_(prior_dropped, Notes0), Settled0, Settled1),
+    include(member_eq_(SBody), Settled1, Settled),
+    exclude(in_body_(Head, LBody), Settled, Extra),
+    append(LBody, Extra, GBody1),
+    dedupe_(GBody1, GBody),
+    include(in_body_(Head, LBody), PLits, InLearned),
+    exclude(noted_(prior_confirmed, Notes0), InLearned, NewConf),
+    maplist(note_with_(prior_confirmed, E), NewConf, Confirmed),
+    append(Confirmed, Notes0, Notes).
+
+%   The prior's literals (the very terms of the notes, sharing the head's variables),
+%   in the order vs_init_prior/3 was given them. findall/3 would copy them.
+prior_lits_(Notes, Lits) :-
+    foldl(prior_lit_, Notes, [], Lits).
+
+prior_lit_(N, Ls, [L|Ls]) :-
+    N = prior(L, _),
+    !.
+prior_lit_(_, Ls, Ls).
+
+%   noted_(+Name, +Notes, +L): Notes has Name(L, _) for this very L.
+noted_(Name, Notes, L) :-
+    member(N, Notes),
+    compound(N),
+    compound_name_arguments(N, Name, [L1, _]),
+    L1 == L,
+    !.
+
+note_with_(Name, E, L, Note) :-
+    Note =.. [Name, L, E].
+
+prior_spatial_open_(Head, GBody, Notes, Violated, L) :-
+    member(prior(L1, spatial), Notes),
+    L1 == L,
+    !,
+    \+ member_eq_(Violated, L),
+    prior_open_(Head, GBody, Notes, L).
+
+violations_(Head, Lits, E, Viol) :-
+    clause_head_body(C, Head, Lits),
+    (   clause_violations(C, E, Viol)
+    ->  true
+    ;   Viol = Lits
+    ).
+
+update_neg_(vs(Head, SBody, GBody0, Pos, Neg0, Notes0), E, VS) :-
+    select(hg_learned(LBody0), Notes0, NotesR),
+    !,
+    append(Neg0, [E], Neg),
+    clause_head_body(HL0, Head, LBody0),
+    clause_head_body(HS, Head, SBody),
+    (   \+ clause_covers(HL0, E)
+    ->  VS = vs(Head, SBody, GBody0, Pos, Neg, Notes0)
+    ;   clause_violations(HS, E, Violated),
+        Violated \== []
+    ->  consistent_negatives_(Neg, NotesR, Negs),
+        specialise_(Head, SBody, LBody0, Negs, Violated, LBody, Left),
+        note_noisy_(Left, NotesR, Notes1),
+        prior_hg_(Head, SBody, LBody, E, Notes1, GBody, Notes),
+        VS = vs(Head, SBody, GBody, Pos, Neg, Notes)
+    ;   VS = vs(Head, SBody, GBody0, Pos, Neg, [noisy_negative(E)|Notes0])
+    ).
 update_neg_(vs(Head, SBody, GBody0, Pos, Neg0, Notes0), E, VS) :-
     append(Neg0, [E], Neg),
     clause_head_body(HG0, Head, GBody0),
@@ -553,13 +729,15 @@ vs_space(VS, HS, Literals, Constraints) :-
     sort(Sets0, Sets),
     exclude(non_minimal_(Sets), Sets, Constraints).
 
-%   The prior's literals still in h_g, each a constraint of its own position: every
-%   hypothesis keeps it (relative to the prior, it is known necessary).
+%   The prior's settled literals still in h_g, each a constraint of its own position:
+%   every hypothesis keeps it (relative to the prior, it is known necessary). Open
+%   literals constrain nothing: they are predictions still to be tested.
 prior_sets_(VS, Sets) :-
     copy_term(VS, vs(Head, SBody, GBody, _, _, Notes)),
     exclude(range_lit_, SBody, Lits),
     findall([I],
-            ( member(prior(L), Notes),
+            ( member(prior_settled(L, _), Notes),
+              \+ ( member(prior_dropped(D, _), Notes), D == L ),
               in_body_(Head, GBody, L),
               nth1(I, Lits, L1),
               L1 == L

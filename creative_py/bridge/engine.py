@@ -457,11 +457,18 @@ class Engine:
         """Return the version space of a first positive example (an opaque term)."""
         return self._must("vs_init", example)
 
-    def vs_init_prior(self, example: Term, literals: Sequence[Term]) -> Term:
-        """Return the version space of a first positive example whose h_g starts with
-        ``literals`` (of the example's body) taken from a prior
-        (``version_space:vs_init_prior/3``)."""
-        return self._must("vs_init_prior", example, list(literals))
+    def vs_init_prior(self, case: str, example: Term, literals: Sequence[Term]) -> Term:
+        """Return the version space of a first positive example with ``literals`` (of
+        the example's body, in ``case``'s vocabulary) noted as a prior's open
+        predictions (``version_space:vs_init_prior/3``, their kinds from
+        ``transfer:prior_kinds/3``)."""
+        return self._must("vs_init_prior", case, example, list(literals))
+
+    def vs_prior_events(self, vs: Term) -> list:
+        """Return, oldest first, ``settled(L, E)``, ``confirmed(L, E)`` and
+        ``dropped(L, E)``: what the physics did to the prior's literals
+        (``version_space:vs_prior_events/2``)."""
+        return self._must("vs_prior_events", vs)
 
     def vs_prior(self, vs: Term) -> tuple[list, list]:
         """Return ``(kept, dropped)``: the prior's literals still in h_g, and the

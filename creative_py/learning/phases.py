@@ -60,7 +60,11 @@ def learn_to_use(runner: TrialRunner, options: RunOptions, wall: dict[str, float
                         prior=(UsePrior(source=str(use.prior.source), case=use.prior.case,
                                         taken=list(use.prior_taken),
                                         dropped=[PriorDrop(literal=lit, trial=i)
-                                                 for lit, i in use.prior_dropped])
+                                                 for lit, i in use.prior_dropped],
+                                        settled=[PriorDrop(literal=lit, trial=i)
+                                                 for lit, i in use.prior_settled],
+                                        confirmed=[PriorDrop(literal=lit, trial=i)
+                                                   for lit, i in use.prior_confirmed])
                                if use.prior is not None else None)),
         # The version space after the demonstration, and the information-theoretic
         # bound: with binary outcomes, telling N0 hypotheses apart in the worst case

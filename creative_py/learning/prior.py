@@ -2,9 +2,11 @@
 
 The prior is a run folder or its ``model.pl``. Prolog decides what it says about this
 case (``prolog/transfer.pl``): the literals of the prior's h_g whose predicate both
-cases' ontologies declare with the same meaning and roles. The version space starts
-with them in h_g (``version_space:vs_init_prior/3``); the physics still labels every
-trial, and a success that violates one drops it (``vs_prior/3``).
+cases' ontologies declare with the same meaning and roles. The version space takes
+them as open predictions, trusted only as far as the trials confirm them
+(``version_space:vs_init_prior/3``): a success settles a spatial one it satisfies, a
+success that violates one drops it, a failure is learned from as without a prior
+(``vs_prior_events/2``).
 """
 
 from __future__ import annotations

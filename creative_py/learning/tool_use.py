@@ -161,11 +161,17 @@ class UseResult:
     prior: Optional[Prior] = None
     """The prior the version space started from (``--prior``), or None."""
     prior_taken: tuple[str, ...] = ()
-    """The literals h_g took from the prior, as text (not tested)."""
+    """The literals taken from the prior, as text: open predictions at the start."""
     prior_dropped: tuple[tuple[str, int], ...] = ()
     """The prior's literals a trial contradicted (it succeeded though it violated
     them), with that trial's number (0: the demonstration, whose tool lacks them): not
     in h_g, learned afresh."""
+    prior_settled: tuple[tuple[str, int], ...] = ()
+    """The prior's spatial literals a success satisfied, with its trial number: in h_g
+    from then on, untested (the stop is certified relative to them)."""
+    prior_confirmed: tuple[tuple[str, int], ...] = ()
+    """The prior's literals the physics made necessary (a failure, as without a prior),
+    with the trial number."""
 
 
 class ToolUseLearner:
@@ -178,7 +184,8 @@ class ToolUseLearner:
     options : LearningOptions
     prior : Prior or None
         Another case's learned model (:func:`creative_py.learning.prior.load_prior`):
-        the version space starts with the literals the ontology maps from it in h_g.
+        the literals the ontology maps from it are the version space's open
+        predictions, trusted only as far as the trials confirm them.
     """
 
     def __init__(self, runner: TrialRunner, options: LearningOptions = LearningOptions(),
@@ -235,13 +242,15 @@ class ToolUseLearner:
         taken: list[Term] = []
         if self.prior is not None:
             taken = list(self.engine.prior_literals(self.case, self.prior.term, example))
-            vs = self.engine.vs_init_prior(example, taken)
+            vs = self.engine.vs_init_prior(self.case, example, taken)
             runner.progress(f"prior from case {self.prior.case} ({self.prior.source}): "
-                            f"h_g starts with {len(taken)} literal(s), not tested: "
+                            f"{len(taken)} literal(s) predicted necessary, open until the "
+                            "physics settles them: "
                             + (", ".join(str(t) for t in taken) or "none"))
         else:
             vs = self.engine.vs_init(example)
         dropped: list[tuple[str, int]] = []
+        events: list[tuple[str, str, int]] = []
         if self.prior is not None:
             # The demonstration is the first trial the prior can be wrong about: a
             # literal it violates is contradicted there (trial 0) and not taken.
@@ -249,7 +258,6 @@ class ToolUseLearner:
                 dropped.append((str(lit), 0))
                 runner.progress(f"the demonstration contradicted the prior: {lit} "
                                 "not taken, learned afresh")
-        n_demo = len(dropped)
         n0, exact0 = self.engine.vs_count(vs)
         runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}; "
                         f"{n0} hypotheses{'' if exact0 else ' at most'}")
@@ -273,7 +281,7 @@ class ToolUseLearner:
                     break
             rec, vs = self._trial(strategy, exp, i, vs, task, decision, skip)
             if self.prior is not None:
-                self._note_dropped(vs, i, dropped, n_demo)
+                self._note_prior(vs, i, events, dropped)
             if rec.outcome == "success":
                 cons += 1
                 task.next_location()
@@ -294,18 +302,29 @@ class ToolUseLearner:
             converged = stop == strategy.stop
         return UseResult(vs, models, list(runner.trials), converged, converged_at,
                          demo_tool, time.perf_counter() - t0, stop, n0, exact0,
-                         self.prior, tuple(str(t) for t in taken), tuple(dropped))
+                         self.prior, tuple(str(t) for t in taken), tuple(dropped),
+                         tuple((lit, i) for kind, lit, i in events if kind == "settled"),
+                         tuple((lit, i) for kind, lit, i in events if kind == "confirmed"))
 
-    def _note_dropped(self, vs: Term, i: int, dropped: list[tuple[str, int]],
-                      n_demo: int) -> None:
-        """Record which of the prior's literals trial ``i`` contradicted (after the
-        ``n_demo`` the demonstration did)."""
-        _kept, now = self.engine.vs_prior(vs)
-        for pair in now[len(dropped) - n_demo:]:
-            lit = pair.args[0] if isinstance(pair, Compound) else pair
-            dropped.append((str(lit), i))
-            self.runner.progress(f"trial {i} contradicted the prior: {lit} dropped from "
-                                 "h_g, learned afresh")
+    def _note_prior(self, vs: Term, i: int, events: list[tuple[str, str, int]],
+                    dropped: list[tuple[str, int]]) -> None:
+        """Record what trial ``i`` did to the prior's literals
+        (``version_space:vs_prior_events/2``): settled by a success consistent with it,
+        confirmed by the physics as without a prior, or dropped (contradicted)."""
+        now = self.engine.vs_prior_events(vs)
+        for ev in now[len(events):]:
+            kind, lit = str(ev.name), str(ev.args[0])
+            events.append((kind, lit, i))
+            if kind == "dropped":
+                dropped.append((lit, i))
+                self.runner.progress(f"trial {i} contradicted the prior: {lit} dropped, "
+                                     "learned afresh")
+            elif kind == "settled":
+                self.runner.progress(f"trial {i} succeeded as the prior predicted: {lit} "
+                                     "settled")
+            else:
+                self.runner.progress(f"trial {i}: the physics made {lit} necessary, as "
+                                     "the prior predicted")
 
     def _trial(self, strategy: Strategy, exp: Term, i: int, vs: Term, task: Any,
                decision: float, skip: list[Term]) -> tuple[TrialRecord, Term]:

@@ -170,11 +170,14 @@ class Demonstration(Part):
 
 @dataclass(frozen=True, kw_only=True)
 class PriorDrop(Part):
-    """One literal of the prior that a trial contradicted (``use.prior.dropped``)."""
+    """One literal of the prior and the trial that decided it (``use.prior.dropped``,
+    ``settled``, ``confirmed``)."""
 
     literal: Optional[str] = None
     trial: Optional[int] = None
-    """The tool-use trial that succeeded though it violated the literal."""
+    """The tool-use trial: for ``dropped`` the one that succeeded though it violated
+    the literal (0: the demonstration), for ``settled`` the success that satisfied it,
+    for ``confirmed`` the one after which the physics made it necessary."""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -186,9 +189,15 @@ class UsePrior(Part):
     """The model file read."""
     case: Optional[str] = None
     taken: list[str] = field(default_factory=list)
-    """The literals h_g took from the prior (not tested: the stop is certified
-    relative to them)."""
+    """The literals taken from the prior: open predictions at the start, trusted only
+    as far as the trials confirm them."""
     dropped: list[PriorDrop] = field(default_factory=list)
+    """Contradicted by the physics: not in h_g, learned afresh."""
+    settled: list[PriorDrop] = field(default_factory=list)
+    """Spatial literals a success satisfied: in h_g, untested (the stop is certified
+    relative to them)."""
+    confirmed: list[PriorDrop] = field(default_factory=list)
+    """Literals the physics made necessary, as without a prior."""
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -97,11 +97,13 @@ def headline(run: RunContents) -> Headline:
             text += f"; the paper's robot used {run.paper_trials}"
         out.lines.append(text + ".")
         if use.prior is not None:
-            out.lines.append(f"Started from case {use.prior.case}'s learned model: "
-                             f"{len(use.prior.taken)} literal(s) of h_g taken untested "
-                             "(the stop is certified relative to them)"
-                             + (f", {len(use.prior.dropped)} dropped by the physics"
-                                if use.prior.dropped else "") + ".")
+            pr = use.prior
+            out.lines.append(f"Started from case {pr.case}'s learned model: "
+                             f"{len(pr.taken)} literal(s) predicted necessary; "
+                             f"{len(pr.settled)} settled by a success (untested: the "
+                             f"stop is certified relative to them), {len(pr.confirmed)} "
+                             f"made necessary by the physics, {len(pr.dropped)} "
+                             "contradicted by the physics (dropped, learned afresh).")
         out.figures.append(Figure("use.trials", n, f"{n}" + (f" of {run.budget}"
                                                                if run.budget else ""),
                                   "tool-use trials (of the budget)"

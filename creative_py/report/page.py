@@ -543,14 +543,19 @@ def _hypotheses_section(run: RunContents) -> str:
                 out.append(f"<h3>{names[key]}</h3>{_clause_html(clause)}")
     prior = run.summary.use.prior if run.summary.use is not None else None
     if prior is not None:
-        out.append(f"<h3>Taken from the prior (case {escape(prior.case or '?')}), not "
-                   "tested: the stop is certified relative to them</h3><pre>"
-                   + escape("\n".join(prior.taken) or "none") + "</pre>")
-        if prior.dropped:
-            out.append("<h3>Prior literals the physics contradicted (dropped, learned "
-                       "afresh)</h3><pre>" + escape("\n".join(
-                           f"{d.literal} (trial {d.trial})" for d in prior.dropped))
-                       + "</pre>")
+        out.append(f"<h3>Predicted necessary by the prior (case "
+                   f"{escape(prior.case or '?')}), open until the physics settles "
+                   "them</h3><pre>" + escape("\n".join(prior.taken) or "none") + "</pre>")
+        for title, items in (
+                ("Settled by a success consistent with the prior (untested: the stop "
+                 "is certified relative to them)", prior.settled),
+                ("Made necessary by the physics, as the prior predicted",
+                 prior.confirmed),
+                ("Prior literals the physics contradicted (dropped, learned afresh)",
+                 prior.dropped)):
+            if items:
+                out.append(f"<h3>{title}</h3><pre>" + escape("\n".join(
+                    f"{d.literal} (trial {d.trial})" for d in items)) + "</pre>")
     create = run.summary.create
     models = create.model if create is not None else None
     if models:

@@ -71,8 +71,12 @@ def summary_lines(run: RunContents) -> list[str]:
         lines.append(f"{key}: {readable_term('?' if clause is None else clause)}")
     prior = s.use.prior if s.use is not None else None
     if prior is not None:
-        lines.append(f"prior (case {prior.case}), taken untested: "
+        lines.append(f"prior (case {prior.case}), predicted necessary: "
                      + (", ".join(prior.taken) or "none")
+                     + "".join(f"; settled {d.literal} (trial {d.trial})"
+                               for d in prior.settled)
+                     + "".join(f"; confirmed {d.literal} (trial {d.trial})"
+                               for d in prior.confirmed)
                      + "".join(f"; dropped {d.literal} (trial {d.trial})"
                                for d in prior.dropped))
     if s.plan is not None:

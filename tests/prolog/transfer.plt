@@ -47,6 +47,17 @@ test(contradicted_by_the_demonstration) :-
     transfer:prior_contradicted(rake, P, E, L),
     assertion(L == [handle_length(rake_a2, medium)]).
 
+%   Task literals (not about the tool) and the case's untestable ones (the tool in the
+%   tube) never transfer: no trial could confirm or contradict them.
+test(no_task_or_untestable_literals) :-
+    P = prior(hook, (tool_pose(T, C, X) :- hook(T)),
+              (tool_pose(T, C, X) :- hook_down(T), in_tube(T, X), in_tube(C, X))),
+    E = (tool_pose(hook_a2, cube1, tube1) :-
+         hook(hook_a2), hook_down(hook_a2), in_tube(hook_a2, tube1),
+         in_tube(cube1, tube1)),
+    transfer:prior_literals(hook, P, E, L),
+    assertion(L == [hook_down(hook_a2)]).
+
 test(read_prior_missing, [throws(error(existence_error(file, '/nonexistent/model.pl'), _))]) :-
     transfer:read_prior('/nonexistent/model.pl', _).
 
@@ -61,28 +72,85 @@ test(read_prior_file) :-
     assertion(Case == hook),
     assertion(G = (tool_pose(_, _, _) :- _)).
 
-%   The version space starts with the prior's literals in h_g; they are not unknown and
-%   every hypothesis keeps them; a success that violates one drops it, noted.
-test(vs_prior_start_and_drop) :-
+%   The prior's literals start open: h_g is empty as without a prior, they are still
+%   unknown, and they constrain no hypothesis (the count is the count without a prior).
+test(vs_prior_starts_open) :-
     rake_demo(E),
-    version_space:vs_init_prior(E, [hook_down(rake_a2), behind(rake_a2, box1)], VS),
+    version_space:vs_init_prior(E, [spatial-hook_down(rake_a2),
+                                    spatial-behind(rake_a2, box1)], VS),
+    vs_bounds(VS, _, HG),
+    assertion(HG = tool_pose(_, _, _)),
     vs_unknown(VS, U),
-    assertion(\+ memberchk(hook_down(_), U)),
+    assertion(memberchk(hook_down(_), U)),
     vs_count(VS, N, true),
     version_space:vs_init(E, VS0),
     vs_count(VS0, N0, true),
-    assertion(N * 4 =:= N0),
-    version_space:vs_prior(VS, Kept, []),
-    assertion(length(Kept, 2)),
-    vs_update(VS, pos((tool_pose(r3, box1, shelf1) :-
-                       hook(r3), handle_length(r3, long), behind(r3, box1),
-                       centred_on(r3, box1), hook_length(r3, short),
-                       under_shelf(box1, shelf1))), VS1),
-    version_space:vs_prior(VS1, Kept1, Dropped),
-    assertion(Kept1 = [behind(_, _)]),
+    assertion(N == N0),
+    version_space:vs_prior_open(VS, Open),
+    assertion(Open == [3, 4]),
+    version_space:vs_prior(VS, [], []).
+
+r3_success((tool_pose(r3, box1, shelf1) :-
+            hook(r3), handle_length(r3, medium), behind(r3, box1),
+            centred_on(r3, box1), hook_length(r3, short), under_shelf(box1, shelf1))).
+
+%   A success settles the open spatial literals it satisfies (h_g takes them, every
+%   hypothesis keeps them) and drops those it violates; a structural literal is not
+%   settled by a success: it stays open, to be tested.
+test(vs_prior_settled_and_dropped) :-
+    rake_demo(E),
+    version_space:vs_init_prior(E, [spatial-hook_down(rake_a2),
+                                    spatial-behind(rake_a2, box1),
+                                    structural-hook_length(rake_a2, short)], VS),
+    r3_success(P),
+    vs_update(VS, pos(P), VS1),
+    version_space:vs_prior(VS1, Kept, Dropped),
+    assertion(Kept = [behind(_, _)]),
     assertion(Dropped = [hook_down(_)-_]),
-    version_space:vs_prior_clause(VS1, (tool_pose(A, B, _) :- behind(A1, B1))),
-    assertion(A == A1), assertion(B == B1).
+    version_space:vs_prior_events(VS1, Events),
+    assertion(Events = [dropped(hook_down(_), _), settled(behind(_, _), _)]),
+    vs_bounds(VS1, _, (tool_pose(A, B, _) :- GBody)),
+    assertion(GBody == behind(A, B)),
+    version_space:vs_prior_open(VS1, Open),
+    vs_space(VS1, _, Lits, Cs),
+    assertion(( Open = [I], nth1(I, Lits, hook_length(_, short)) )),
+    assertion(( nth1(J, Lits, behind(_, _)), memberchk([J], Cs) )),
+    version_space:vs_prior_clause(VS1, (tool_pose(X, Y, _) :- behind(X1, Y1))),
+    assertion(X == X1), assertion(Y == Y1).
+
+%   A success that violates a wrong structural literal of the prior (one the
+%   demonstration satisfies) drops it, recorded; h_g is what it is without the prior.
+test(vs_prior_wrong_structural_dropped) :-
+    rake_demo(E),
+    version_space:vs_init_prior(E, [structural-handle_length(rake_a2, long),
+                                    spatial-behind(rake_a2, box1)], VS),
+    r3_success(P),
+    vs_update(VS, pos(P), VS1),
+    version_space:vs_prior_events(VS1, Events),
+    assertion(Events = [dropped(handle_length(_, long), P), settled(behind(_, _), P)]).
+
+%   A failure is learned from as without a prior, even when it also violates a
+%   settled literal of the prior: the learned part of h_g is h_g without the prior
+%   (hook_down here, first in h_s), not absorbed by the prior's centred_on, and h_g
+%   adds the settled literal.
+test(vs_prior_failure_not_absorbed) :-
+    rake_demo(E),
+    P = (tool_pose(r3, box1, shelf1) :-
+         hook(r3), handle_length(r3, medium), hook_down(r3), behind(r3, box1),
+         centred_on(r3, box1), hook_length(r3, short), under_shelf(box1, shelf1)),
+    Fail = (tool_pose(r4, box1, shelf1) :-
+            hook(r4), handle_length(r4, medium), behind(r4, box1),
+            hook_length(r4, short), under_shelf(box1, shelf1)),
+    version_space:vs_init_prior(E, [spatial-centred_on(rake_a2, box1)], VS0),
+    vs_update(VS0, pos(P), VS1),
+    vs_update(VS1, neg(Fail), VS2),
+    vs_init(E, W0),
+    vs_update(W0, pos(P), W1),
+    vs_update(W1, neg(Fail), W2),
+    vs_bounds(W2, _, (tool_pose(T0, _, _) :- WBody)),
+    assertion(WBody == hook_down(T0)),
+    vs_bounds(VS2, _, (tool_pose(T, C, _) :- GBody)),
+    assertion(GBody == (hook_down(T), centred_on(T, C))).
 
 test(no_prior_clause, [fail]) :-
     rake_demo(E),

@@ -54,6 +54,8 @@ def test_two_runs_on_a_local_ray_instance(tmp_path):
     (["hook", "--strategies", "paper,bogus"], "unknown strategy 'bogus'"),
     (["hok"], "unknown case 'hok'"),
     (["hook", "--world-seeds", "1-x"], "--world-seeds 1-x"),
+    (["hook", "--world-seeds", "3", "--prior", "/nonexistent/hook-w{world}"],
+     "--prior /nonexistent/hook-w3: no such run folder or model file"),
 ])
 def test_bad_options_are_one_line_and_exit_2_before_ray(tmp_path, args, says):
     env = dict(os.environ, RAY_ADDRESS="")
@@ -112,3 +114,25 @@ def test_a_crashed_run_is_a_row_and_the_sweep_goes_on(tmp_path, monkeypatch):
     assert (meta["ok"], meta["crashed"]) == (1, 1)
     assert (tmp_path / "s" / "sweep.png").stat().st_size > 0
     assert "crashed" in lines[0] and "[2/2, 0 left]" in lines[1]
+
+
+def test_each_run_gets_its_prior_of_its_world(tmp_path, monkeypatch):
+    """--prior with {world}: each run of the sweep starts from the prior of its world."""
+    import creative_py.learning.run as run_mod
+    from creative_py.sweep import RunSpec, prior_for
+
+    assert prior_for(RunSpec("rake", "informative", 2, 7), "r/hook-w{world}-s{seed}") \
+        == "r/hook-w7-s2"
+    assert prior_for(RunSpec("rake", "informative", 0, None), "r/{world}") == "r/files"
+    assert prior_for(RunSpec("rake", "informative", 0, 1), None) is None
+    seen = {}
+
+    def fake_run_case(case, out, opts, run_name=None):
+        seen[opts.world_seed] = opts.prior
+        raise RuntimeError("not run")
+
+    monkeypatch.setattr(run_mod, "run_case", fake_run_case)
+    run_sweep(plan_runs(["rake"], ["informative"], [0], [1, 2]), tmp_path,
+              SweepOptions(phase="use", prior="m/hook-w{world}"), serial=True,
+              progress=lambda _m: None, name="s")
+    assert seen == {1: "m/hook-w1", 2: "m/hook-w2"}

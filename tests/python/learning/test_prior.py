@@ -110,3 +110,54 @@ def test_a_real_rake_run_with_a_hook_prior(tmp_path):
 def test_run_json_records_the_prior_only_when_set():
     assert "prior" not in RunOptions().recorded()
     assert RunOptions(prior="m.pl").recorded()["prior"] == "m.pl"
+
+
+# Deliberately wrong priors of the hook for the hook (seed 0, the world files): each
+# literal is one the demonstration's hook_a2 satisfies. WRONG puts hook_length(A, long)
+# in place of handle_length(A, medium); EXTRA adds hook_width(A, wide) to the learned
+# model. The physics shows both unnecessary (a hook of another length or width pulls
+# the cube out), and the run without a prior learns neither. Before the prior was
+# trusted only as far as the trials confirm it, the run stopped after 2 and 1 trials
+# with them in h_g.
+WRONG_HOOK_MODEL = """\
+learned_hypothesis(hook, hs, (tool_pose(A, B, C) :- hook(A), handle_length(A, medium), hook_length(A, long), hook_down(A), behind(A, B), centred_on(A, B), in_tube(A, C))).
+learned_hypothesis(hook, hg, (tool_pose(A, B, _) :- hook_length(A, long), hook_down(A), behind(A, B), centred_on(A, B), hook(A))).
+"""
+EXTRA_HOOK_MODEL = """\
+learned_hypothesis(hook, hs, (tool_pose(A, B, C) :- hook(A), handle_length(A, medium), hook_width(A, wide), hook_down(A), behind(A, B), centred_on(A, B), in_tube(A, C))).
+learned_hypothesis(hook, hg, (tool_pose(A, B, _) :- handle_length(A, medium), hook_width(A, wide), hook_down(A), behind(A, B), centred_on(A, B), hook(A))).
+"""
+
+
+def _literals(clause: str) -> set[str]:
+    import re
+
+    return set(re.findall(r"[a-z_]+\([^()]*\)", clause.split(":-")[1]))
+
+
+@pytest.mark.parametrize("model, wrong", [(WRONG_HOOK_MODEL, "hook_length(hook_a2,long)"),
+                                          (EXTRA_HOOK_MODEL, "hook_width(hook_a2,wide)")],
+                         ids=["wrong", "extra"])
+def test_a_wrong_prior_ends_in_the_model_without_it(tmp_path, model, wrong):
+    """A misleading prior costs trials, never the model: the run ends in the h_g of the
+    run without a prior (the recorded seed-0 hook run), the trial that contradicted
+    the prior's literal is recorded, and the model passes evaluation."""
+    from creative_py.learning.run import run_case
+
+    fixture = Path(__file__).parents[2] / "fixtures" / "runs" / "hook_s0" / "summary.json"
+    alone = _literals(json.loads(fixture.read_text())["hypotheses"]["hg"])
+    (tmp_path / "model.pl").write_text(model)
+    folder = run_case("hook", tmp_path / "runs",
+                      RunOptions(phase="use", video="none", eval_trials=1,
+                                 prior=str(tmp_path / "model.pl")))
+    summary = RunSummary.read(folder.path / "summary.json")
+    assert _literals(summary.hypotheses.hg) == alone
+    dropped = {d.literal: d.trial for d in summary.use.prior.dropped}
+    assert list(dropped) == [wrong]
+    trials = [json.loads(line) for line in
+              (folder.path / "trials.jsonl").read_text().splitlines()]
+    contradicting = trials[dropped[wrong] - 1]
+    assert contradicting["outcome"] == "success"
+    assert any(t.startswith(wrong.split("(")[0]) for t in contradicting["tested"])
+    assert summary.eval.successes == summary.eval.trials == 1
+    assert summary.use.trials < 7    # still fewer than without a prior
