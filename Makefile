@@ -13,7 +13,7 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 
-.PHONY: help setup setup-maniskill test-maniskill bench-maniskill setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-rl setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -71,6 +71,21 @@ bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate 
 	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
+
+# The PPO baseline on ManiSkill's own PullCubeTool-v1 (state observations, CPU simulation,
+# stable-baselines3 from the rl extra) for a fixed budget of environment steps: its success
+# on 50 fresh seeds against steps, beside the learner's (bench/results/ppo_baseline.json and
+# .png). Niced, one torch thread. STEPS=640000 took about half an hour on the shared 2-core
+# machine; give millions where there is time.
+RL_STAMP := $(VENV)/.rl
+STEPS    ?= 640000
+
+$(RL_STAMP): pyproject.toml $(MS_STAMP)
+	$(PY) -m pip install -q -e '.[test,maniskill,rl]'
+	touch $(RL_STAMP)
+
+bench-rl: $(RL_STAMP)  ## Train the PPO baseline on ManiSkill's PullCubeTool-v1 for STEPS steps (about 35 min) and record its success curve.
+	VK_ICD_FILENAMES=$(LAVAPIPE) nice -n 10 $(PY) bench/ppo_baseline_bench.py --budget $(STEPS)
 
 # The ROS 2 backend (optional; docs/real-robot.md): ROS 2 Kilted's rclpy, Fast DDS and the
 # standard messages from PyPI wheels (the ros extra), then control_msgs' FollowJointTrajectory
