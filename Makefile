@@ -75,10 +75,10 @@ bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate 
 # The PPO baseline on ManiSkill's own PullCubeTool-v1 (state observations, CPU simulation,
 # stable-baselines3 from the rl extra) for a fixed budget of environment steps: its success
 # on 50 fresh seeds against steps, beside the learner's (bench/results/ppo_baseline.json and
-# .png). Niced, one torch thread. STEPS=640000 took about half an hour on the shared 2-core
+# .png). Niced, one torch thread. STEPS=384000 took about 40 min on the shared 2-core
 # machine; give millions where there is time.
 RL_STAMP := $(VENV)/.rl
-STEPS    ?= 640000
+STEPS    ?= 384000
 
 $(RL_STAMP): pyproject.toml $(MS_STAMP)
 	$(PY) -m pip install -q -e '.[test,maniskill,rl]'

@@ -110,7 +110,7 @@ def _int(text: str, name: str, low: int = 1) -> int:
 
 def parse(argv: list[str] | None) -> argparse.Namespace:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--budget", default="400000",
+    ap.add_argument("--budget", default="384000",
                     help="training environment steps (rounded up to whole rollouts)")
     ap.add_argument("--num-envs", default=str(HYPERPARAMETERS["num_envs"][0]))
     ap.add_argument("--num-steps", default=str(HYPERPARAMETERS["num_steps"][0]),
@@ -387,7 +387,7 @@ def plot(result: dict[str, Any], learner: dict[str, Any] | None, path: Path) -> 
         ax.plot([lr["env_steps"]], [100 * learner["success_rate"]], "*", color="tab:red",
                 markersize=16,
                 label=(f"CREATIVE-py: 1 demonstration + {lr['trials']} trials "
-                       f"{lr['env_steps']} steps;\nits model on {len(learner['seeds'])} fresh "
+                       f"({lr['env_steps']} steps);\nits model on {len(learner['seeds'])} fresh "
                        f"seeds {learner['seeds'][0]}-{learner['seeds'][-1]}: "
                        f"{learner['successes']}/{len(learner['seeds'])}"))
     ax.set_xscale("log")
