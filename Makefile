@@ -75,8 +75,9 @@ bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate 
 # The PPO baseline on ManiSkill's own PullCubeTool-v1 (state observations, CPU simulation,
 # stable-baselines3 from the rl extra) for a fixed budget of environment steps: its success
 # on 50 fresh seeds against steps, beside the learner's (bench/results/ppo_baseline.json and
-# .png). Niced, one torch thread. STEPS=384000 took about 40 min on the shared 2-core
-# machine; give millions where there is time.
+# .png). Niced, one torch thread. STEPS=384000 took 48 min of training and 10 of evaluation
+# on the shared 2-core machine at load 2-13 (picked at 350 steps/s, load 2.7, it ran at
+# 133); give millions where there is time.
 RL_STAMP := $(VENV)/.rl
 STEPS    ?= 384000
 
@@ -84,7 +85,7 @@ $(RL_STAMP): pyproject.toml $(MS_STAMP)
 	$(PY) -m pip install -q -e '.[test,maniskill,rl]'
 	touch $(RL_STAMP)
 
-bench-rl: $(RL_STAMP)  ## Train the PPO baseline on ManiSkill's PullCubeTool-v1 for STEPS steps (about 35 min) and record its success curve.
+bench-rl: $(RL_STAMP)  ## Train the PPO baseline on ManiSkill's PullCubeTool-v1 for STEPS steps (about an hour here) and record its success curve.
 	VK_ICD_FILENAMES=$(LAVAPIPE) nice -n 10 $(PY) bench/ppo_baseline_bench.py --budget $(STEPS)
 
 # The ROS 2 backend (optional; docs/real-robot.md): ROS 2 Kilted's rclpy, Fast DDS and the
