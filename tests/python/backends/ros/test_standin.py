@@ -98,7 +98,8 @@ def test_the_traffic_stays_in_a_loopback_only_namespace(session):
     assert session["namespace_links"] == ["lo"]
     assert session["discovery_range"] == "LOCALHOST"
     assert 100 <= int(session["domain_id"]) < 200
-    assert session["standin_rc"] == 0  # it stopped cleanly on SIGTERM
+    # it stopped cleanly on SIGTERM
+    assert session["standin_rc"] == 0, session.get("standin_stderr")
     assert session["interface"]["clock"] == "/clock" and session["interface"]["use_sim_time"]
 
 
