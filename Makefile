@@ -17,7 +17,7 @@ CREATE ?= --demonstrate-creation
 BACKEND ?=
 ROS_DOMAIN ?= 42
 
-.PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl
+.PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl bench-ros
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -132,6 +132,9 @@ setup-ros: $(ROS_STAMP)  ## Install the ROS 2 backend (rclpy wheels, control_msg
 # calls unshare itself and skips, saying why, where the namespace is refused).
 test-ros: $(ROS_STAMP)  ## Run the ROS 2 backend's tests (the stand-in arm in its own process).
 	$(PY) -m pytest -q -p no:randomly -n 0 tests/python/backends/ros
+
+bench-ros: $(ROS_STAMP)  ## Measure the stand-in's rates and a goal's round trip, idle and under load.
+	$(PY) bench/ros_roundtrip.py
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 

@@ -561,14 +561,25 @@ def run(
 def _interrupt_exits() -> Iterator[None]:
     """Ctrl-C (SIGINT) at any moment of a run ends it with exit code 130 (the run has
     printed how to resume it), even when something on its way swallowed the
-    KeyboardInterrupt (:mod:`creative_py.learning.interrupts`)."""
+    KeyboardInterrupt (:mod:`creative_py.learning.interrupts`). A backend lost mid-run
+    (:class:`creative_py.simulator.BackendLost`: an arm gone silent) ends it with one
+    line naming what went away and how to resume, exit code 75 (EX_TEMPFAIL)."""
     from creative_py.learning import interrupts
+
+    from creative_py.simulator import BackendLost
 
     try:
         with interrupts.watching():
             yield
     except KeyboardInterrupt:
         raise typer.Exit(130) from None
+    except BackendLost as exc:  # the arm or simulator went away: resumable, exit 75
+        if _DEBUG["on"]:
+            raise
+        hint = getattr(exc, "resume_command", None)
+        typer.echo(f"error: the backend was lost: {' '.join(str(exc).split())}"
+                   + (f"; the run stopped, to go on: {hint}" if hint else ""), err=True)
+        raise typer.Exit(75) from None
     if interrupts.interrupted():
         typer.echo("interrupted (Ctrl-C) as the run ended; its folder is complete", err=True)
         raise typer.Exit(130)

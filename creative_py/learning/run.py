@@ -13,6 +13,7 @@ what ``creative run --resume`` calls. A run checks its case
 
 from __future__ import annotations
 
+import json
 import logging
 import os
 import shutil
@@ -33,7 +34,7 @@ from creative_py.records.folder import RunFolder, read_resume
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
-from creative_py.simulator import World, backend_for
+from creative_py.simulator import BackendLost, World, backend_for
 from creative_py.simulator.randomise import apply_drawn
 
 log = logging.getLogger(__name__)
@@ -133,9 +134,11 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         runner.end_replay()  # a resume with nothing left to run: the replay was checked
         _finish(runner, clips, parts, wall, t_start, say,
                 before if resume is not None and runner.physical == 0 else None, resumed)
+        (run.path / STOPPED).unlink(missing_ok=True)  # a resumed run went on to its end
     except BaseException as exc:
         interrupted = isinstance(exc, KeyboardInterrupt)
-        if interrupted and clips is not None:
+        lost = isinstance(exc, BackendLost)
+        if (interrupted or lost) and clips is not None:
             _finish_clips(clips, say)
         # Nothing learned yet (the demonstration failed, the run was interrupted before
         # its first trial): leave no empty folder behind. (A run killed outright leaves
@@ -145,14 +148,40 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
             shutil.rmtree(run.path, ignore_errors=True)
             if interrupted:
                 say("interrupted before the first trial: nothing was kept")
+            elif lost:
+                say(f"the backend was lost before the first trial ({exc}): nothing was kept")
         elif interrupted:
             say(f"interrupted after {len(run.trials)} trial(s); to go on: "
                 f"creative run {case} --resume {run.path}")
+        elif lost:
+            exc.resume_command = _stopped(run, case, exc, say)
         raise
     finally:
         if resume is None:
             run.release()  # a resumed folder's lock is resume_run's
     return run
+
+
+STOPPED = "stopped.json"
+"""Written in the run folder when the backend was lost mid-run: why, and how to go on."""
+
+
+def _stopped(run: RunFolder, case: str, exc: BaseException, say: Callable[[str], None]) -> str:
+    """Note in the run folder that the run stopped because the backend went away (the
+    trial it was running is not recorded: nothing was learned from it); return the
+    command that resumes the run."""
+    command = f"creative run {case} --resume {run.path}"
+    note = {"stopped": "the backend was lost", "reason": str(exc),
+            "trials_recorded": len(run.trials),
+            "not_recorded": "the trial that was running when the backend went away",
+            "resume": command}
+    try:
+        (run.path / STOPPED).write_text(json.dumps(note, indent=1) + "\n", encoding="utf-8")
+    except OSError:
+        pass  # the message below says it too
+    say(f"stopped after {len(run.trials)} trial(s): the backend was lost ({exc}); the "
+        f"trial it was running is not recorded; to go on once it is back: {command}")
+    return command
 
 
 def _trial_runner(engine: Engine, world: World, run: RunFolder, options: RunOptions,

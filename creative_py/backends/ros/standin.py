@@ -337,12 +337,26 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
             with lock:
                 jobs.append(job)  # the physics loop takes it at its next step
             while not job.done.wait(0.05):
-                if stop.is_set():
-                    handle.abort()
-                    return _result(kind, SUCCESSFUL if kind == "gripper" else INVALID_GOAL,
-                                   "the stand-in stopped")
+                if stop.is_set():  # the loop ends: it may still finish the job itself
+                    settle(job, INVALID_GOAL, "the stand-in stopped", None)
             return job.result
         return run
+
+    def settle(job: Job, code: int, message: str, succeeded: Optional[bool]) -> None:
+        """End a job once, whichever thread comes first (the physics loop, or the
+        action server's thread when the stand-in stops): succeed or abort its goal
+        (``succeeded`` None: abort), set its result, wake its thread. A goal the client
+        already ended (cancelled while the stand-in was stopped) is only logged."""
+        with lock:
+            if job.done.is_set():
+                return
+            job.result = _result(job.kind, SUCCESSFUL if job.kind == "gripper" else code,
+                                 message)
+            try:
+                (job.handle.succeed if succeeded else job.handle.abort)()
+            except Exception as exc:  # rclpy refuses a transition from a terminal state
+                node.get_logger().warning(f"goal ended as {message!r}: {exc}")
+            job.done.set()
 
     def _result(kind: str, code: int, message: str) -> Any:
         if kind == "gripper":
@@ -415,10 +429,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
         return node.get_clock().now().to_msg()
 
     def finish(job: Job, code: int, message: str, succeeded: bool) -> None:
-        result = _result("trajectory", code, message)
-        (job.handle.succeed if succeeded else job.handle.abort)()
-        job.result = result
-        job.done.set()
+        settle(job, code, message, succeeded)
 
     while not stop.is_set() and time.monotonic() < deadline:
         if scenes is not None and not scenes.requests.empty():
@@ -461,9 +472,11 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
                 fb.position, fb.effort, fb.stalled, fb.reached_goal = (
                     r.position, r.effort, r.stalled, r.reached_goal)
                 job.handle.publish_feedback(fb)
-                job.handle.succeed()
-                job.result = r
-                job.done.set()
+                with lock:
+                    if not job.done.is_set():  # not ended by a stop meanwhile
+                        job.handle.succeed()
+                        job.result = r
+                        job.done.set()
                 continue
             if active is not None:
                 finish(active, INVALID_GOAL, "preempted by a newer goal", False)
@@ -483,9 +496,11 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
             t = now - active.t0
             result: Optional[GoalResult] = None
             if active.handle.is_cancel_requested:
-                active.handle.canceled()
-                active.result = _result("trajectory", SUCCESSFUL, "canceled")
-                active.done.set()
+                with lock:
+                    if not active.done.is_set():
+                        active.handle.canceled()
+                        active.result = _result("trajectory", SUCCESSFUL, "canceled")
+                        active.done.set()
                 hold, active = q, None
                 arm.command(hold)
             else:
@@ -544,10 +559,8 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
             next_pose = max(next_pose + pose_period, now)
         pace.wait(now)  # once a publication period: wall time catches up with physics
     stop.set()
-    if active is not None:
-        finish(active, INVALID_GOAL, "the stand-in stopped", False)
-    for job in jobs:
-        job.done.set()
+    for job in [*([active] if active is not None else []), *jobs]:
+        settle(job, INVALID_GOAL, "the stand-in stopped", False)
     executor.shutdown(timeout_sec=2.0)
     spinner.join(timeout=2.0)
     node.destroy_node()

@@ -35,10 +35,19 @@ SIM_PROFILE = TMP / "baxter-sim.toml"
 SIM_PROFILE.write_text(SHIPPED.read_text().replace("use_sim_time = false", "use_sim_time = true"))
 
 
+ERRORS: list[Path] = []
+
+
 def start_standin() -> subprocess.Popen:
+    ERRORS.append(TMP / f"standin{len(ERRORS)}.err")  # its log, kept for a failed stop
     return subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin", "--case",
                              CASE, "--seconds", "240", "--profile", str(SIM_PROFILE)],
-                            stdout=subprocess.PIPE, text=True)
+                            stdout=subprocess.PIPE, stderr=ERRORS[-1].open("w"), text=True)
+
+
+def stderr_tail(k: int) -> str:
+    lines = ERRORS[k].read_text(errors="replace").splitlines()
+    return "\n".join(line for line in lines if "[WARN]" not in line)[-3000:]
 
 
 standin = start_standin()
@@ -303,6 +312,8 @@ try:
     # -- the stand-in stopped: an arm absent at start names the topic it waited for
     standin.terminate()
     out["standin_rc"] = standin.wait(10)
+    if out["standin_rc"] != 0:
+        out["standin_stderr"] = stderr_tail(0)
     for key, prof in (("sim", profile), ("wall", wall_profile)):
         t = time.monotonic()
         with ArmClient(prof, [], name=f"creative_absent_{key}") as absent_client:

@@ -98,7 +98,8 @@ def test_the_traffic_stays_in_a_loopback_only_namespace(session):
     assert session["namespace_links"] == ["lo"]
     assert session["discovery_range"] == "LOCALHOST"
     assert 100 <= int(session["domain_id"]) < 200
-    assert session["standin_rc"] == 0  # it stopped cleanly on SIGTERM
+    # it stopped cleanly on SIGTERM
+    assert session["standin_rc"] == 0, session.get("standin_stderr")
     assert session["interface"]["clock"] == "/clock" and session["interface"]["use_sim_time"]
 
 
@@ -243,7 +244,7 @@ def test_a_frozen_arm_gives_stale_joint_states_and_a_goal_that_ends_silent(sessi
     assert stale["move"]["reason"].startswith("the arm went silent: the clock on '/clock'")
     frozen = session["frozen_mid_goal"]
     assert frozen["status"] == "silent"  # not its 30 s timeout
-    assert frozen["message"].startswith("while the goal ran: the clock on '/clock' stopped")
+    assert "the clock on '/clock' stopped" in frozen["message"]
     assert frozen["feedbacks"] >= 1  # it was moving when it froze
     assert session["after_thaw"] == {"arm_q_ok": True}
 
@@ -259,8 +260,8 @@ def test_an_arm_killed_mid_goal_gives_an_invalid_motion_and_a_lost_arm(session):
     killed = session["killed_mid_goal"]
     assert killed["rc"] == -9  # SIGKILL while the goal ran
     assert killed["status"] == "invalid"
-    assert killed["reason"].startswith("the arm went silent: while the goal ran: the clock on "
-                                       "'/clock' stopped ")
+    assert killed["reason"].startswith("the arm went silent: ")
+    assert "the clock on '/clock' stopped " in killed["reason"]
     name, is_lost, message = killed["raised"]
     assert (name, is_lost) == ("ArmUnavailable", True)  # a BackendLost: the run stops
     assert message in killed["reason"]
