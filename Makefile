@@ -112,8 +112,8 @@ ROS_BUILD := $(VENV)/build/control_msgs
 ROS_IFACES := $(wildcard ros/control_msgs/*.txt ros/control_msgs/*.xml ros/control_msgs/msg/*.msg ros/control_msgs/action/*.action)
 
 $(ROS_STAMP): pyproject.toml $(STAMP) $(ROS_IFACES)
-	@command -v cmake >/dev/null && command -v g++ >/dev/null || \
-	  ($(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq cmake g++ >/dev/null)
+	@command -v cmake >/dev/null && command -v g++ >/dev/null && command -v ip >/dev/null || \
+	  ($(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq cmake g++ iproute2 >/dev/null)
 	$(PY) -m pip install -q -e '.[test,ros]'
 	@mkdir -p $(ROS_BUILD)
 	venv=$$(cd $(VENV) && pwd) && { \
