@@ -4,11 +4,16 @@
     the goal; the robot is told the disc as reach_zone/4).
 
     Plain Prolog data loaded into this case's own module (case/1 names it), which sees
-    the hook_like kind's module and the shared files.  The primitive facts come from
-    the simulator's state (creative_py/backends/maniskill/episode.py).
+    the hook_like kind's module, the goal zone's (ontology/apparatus/goal_zone.pl) and
+    the shared files.  The primitive facts come from the simulator's state
+    (creative_py/backends/maniskill/episode.py).
 */
 
 case(poke_cube).
+
+%   The cube, the goal disc and the task: ontology/apparatus/goal_zone.pl, shared with
+%   the other ManiSkill tabletop case.
+case_apparatus(poke_cube, goal_zone).
 
 case_tool_class(poke_cube, hook_like).
 
@@ -20,17 +25,8 @@ task_roles(poke_cube, cube1, goal1).
 
 case_goal(poke_cube, [in_zone(cube1, goal1)]).
 
-case_extra_objects(poke_cube, []).
-
 case_skills(poke_cube, [pick_up, position_tool, push]).
 
-%   position_tool(T, C, Zone): put the held tool at a pose relative to the cube lying
-%   outside the goal region; which spatial literals become true is the pose's business.
-innate_skill(poke_cube, position_tool,
-             action_model(position_tool, [T-tool, C-target, Zone-site],
-                          [holding(T), out_of_zone(C, Zone)],
-                          [spatial_of(T)],
-                          [spatial_of(T)])).
 %   push(T, C, Zone): push the held tool from the cube towards the goal's centre.
 innate_skill(poke_cube, push,
              action_model(push, [T-tool, _C-target, _Zone-site],
@@ -39,41 +35,6 @@ innate_skill(poke_cube, push,
                           [spatial_of(T)])).
 
 learned_action_names(poke_cube, [name(push, in_zone, poke_in)]).
-
-tool_acts_when(poke_cube, held).
-
-untestable_literals(poke_cube, []).
-
-                 /*******************************
-                 *     STATE                    *
-                 *******************************/
-
-%   reach_zone(Zone, X, Y, R): the goal disc's centre (world x, y) and radius (metres).
-%   tool_axis_y(Tool, Y): the held tool's handle axis, world y.
-primitive_predicate(reach_zone/4).
-primitive_predicate(tool_axis_y/2).
-
-task_predicate(poke_cube, in_zone/2).
-task_predicate(poke_cube, out_of_zone/2).
-
-in_zone(C, Zone) :-
-    reach_zone(Zone, ZX, ZY, R),
-    pose(C, X, Y, _, _),
-    \+ object_kind(C, _),
-    (X - ZX)**2 + (Y - ZY)**2 < R**2.
-
-out_of_zone(C, Zone) :-
-    reach_zone(Zone, _, _, _),
-    pose(C, _, _, _, _),
-    \+ object_kind(C, _),
-    \+ in_zone(C, Zone).
-
-%   tool_in_use(?Case, ?Tool), proved on the state: a held tool lowered to the table
-%   (its tip's centre below 6 cm) has spatial literals.
-tool_in_use(poke_cube, Tool) :-
-    held(Tool),
-    tip_position(Tool, _, _, Z),
-    Z < 0.06.
 
                  /*******************************
                  *     POSE                     *
@@ -118,10 +79,6 @@ geometry_default(poke_cube, align, 0.01, 'how far the handle axis may lie off th
 geometry_default(poke_cube, dx_max, 0.12, 'bound of Dx either side of the cube').
 geometry_default(poke_cube, dy_room, 0.09, 'bound of Dy either side of the cube').
 
-geometry_value(poke_cube, cube_half, _Tool, Target, _G, V) :-
-    nonvar(Target),
-    size(Target, Sx, _, _),
-    V is Sx / 2.
 geometry_value(poke_cube, tip_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     hook_width_m(Tool, W),

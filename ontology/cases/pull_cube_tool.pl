@@ -4,11 +4,16 @@
     evaluate() judges the goal; the robot is told the disc as reach_zone/4).
 
     Plain Prolog data loaded into this case's own module (case/1 names it), which sees
-    the hook_like kind's module and the shared files.  The primitive facts come from
-    the simulator's state (creative_py/backends/maniskill/episode.py).
+    the hook_like kind's module, the goal zone's (ontology/apparatus/goal_zone.pl) and
+    the shared files.  The primitive facts come from the simulator's state
+    (creative_py/backends/maniskill/episode.py).
 */
 
 case(pull_cube_tool).
+
+%   The cube, the goal disc and the task: ontology/apparatus/goal_zone.pl, shared with
+%   the other ManiSkill tabletop case.
+case_apparatus(pull_cube_tool, goal_zone).
 
 case_tool_class(pull_cube_tool, hook_like).
 
@@ -20,17 +25,8 @@ task_roles(pull_cube_tool, cube1, zone1).
 
 case_goal(pull_cube_tool, [in_zone(cube1, zone1)]).
 
-case_extra_objects(pull_cube_tool, []).
-
 case_skills(pull_cube_tool, [pick_up, position_tool, pull]).
 
-%   position_tool(T, C, Zone): put the held tool at a pose relative to the cube lying
-%   outside the zone; which spatial literals become true is the pose's business.
-innate_skill(pull_cube_tool, position_tool,
-             action_model(position_tool, [T-tool, C-target, Zone-site],
-                          [holding(T), out_of_zone(C, Zone)],
-                          [spatial_of(T)],
-                          [spatial_of(T)])).
 %   pull(T, C, Zone): draw the held tool back along -x, towards the robot.
 innate_skill(pull_cube_tool, pull,
              action_model(pull, [T-tool, _C-target, _Zone-site],
@@ -39,41 +35,6 @@ innate_skill(pull_cube_tool, pull,
                           [spatial_of(T)])).
 
 learned_action_names(pull_cube_tool, [name(pull, in_zone, pull_in)]).
-
-tool_acts_when(pull_cube_tool, held).
-
-untestable_literals(pull_cube_tool, []).
-
-                 /*******************************
-                 *     STATE                    *
-                 *******************************/
-
-%   reach_zone(Zone, X, Y, R): the goal disc's centre (the robot base, world x, y) and
-%   radius (metres).  tool_axis_y(Tool, Y): the held tool's handle axis, world y.
-primitive_predicate(reach_zone/4).
-primitive_predicate(tool_axis_y/2).
-
-task_predicate(pull_cube_tool, in_zone/2).
-task_predicate(pull_cube_tool, out_of_zone/2).
-
-in_zone(C, Zone) :-
-    reach_zone(Zone, ZX, ZY, R),
-    pose(C, X, Y, _, _),
-    \+ object_kind(C, _),
-    (X - ZX)**2 + (Y - ZY)**2 < R**2.
-
-out_of_zone(C, Zone) :-
-    reach_zone(Zone, _, _, _),
-    pose(C, _, _, _, _),
-    \+ object_kind(C, _),
-    \+ in_zone(C, Zone).
-
-%   tool_in_use(?Case, ?Tool), proved on the state: a held tool lowered to the table
-%   (its prong's centre below 6 cm) has spatial literals.
-tool_in_use(pull_cube_tool, Tool) :-
-    held(Tool),
-    tip_position(Tool, _, _, Z),
-    Z < 0.06.
 
                  /*******************************
                  *     POSE                     *
@@ -113,10 +74,6 @@ geometry_default(pull_cube_tool, band, 0.025, 'width of the band beside the cube
 geometry_default(pull_cube_tool, dx_max, 0.12, 'bound of Dx either side of the cube').
 geometry_default(pull_cube_tool, dy_room, 0.09, 'bound of Dy either side of the cube').
 
-geometry_value(pull_cube_tool, cube_half, _Tool, Target, _G, V) :-
-    nonvar(Target),
-    size(Target, Sx, _, _),
-    V is Sx / 2.
 geometry_value(pull_cube_tool, prong_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     (   hook_width_m(Tool, W),
