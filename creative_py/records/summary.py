@@ -549,6 +549,15 @@ class RunSummary(Part):
         return self.options.get("strategy") or (self.use.strategy if self.use else None)
 
     @property
+    def backend(self) -> Optional[str]:
+        """The backend the run was driven through when its options chose one other than
+        the case's (``--backend ros``, with its robot profile when one was named), else
+        None."""
+        name = self.options.get("backend")
+        profile = self.options.get("robot_profile")
+        return f"{name} (robot profile {profile})" if name and profile else name
+
+    @property
     def budget(self) -> Any:
         """N of Algorithm 1: ``trial_budget``, or for an older folder its
         ``--max-trials`` (None when neither was recorded)."""

@@ -78,7 +78,8 @@ def headline(run: RunContents) -> Headline:
     strategy = s.strategy
     first = [f"case {s.case}" if s.case is not None else "",
              f"strategy {strategy}" if strategy else "",
-             f"seed {s.seed}" if s.seed is not None else ""]
+             f"seed {s.seed}" if s.seed is not None else "",
+             f"backend {s.backend}" if s.backend else ""]
     if any(first):
         out.lines.append(", ".join(x for x in first if x).capitalize() + ".")
     if s.demonstration is not None and s.demonstration.tool:

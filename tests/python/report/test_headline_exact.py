@@ -176,3 +176,14 @@ def test_a_tool_made_after_a_catalogued_object_solved_the_task_is_a_demonstratio
         "hook_a4 (success); solved by the catalogued hook_a4; hook_new1 made all the "
         "same, as a demonstration (--demonstrate-creation); the created tool's "
         "evaluation: 1 of 1 trials succeeded."]
+
+
+@pytest.mark.parametrize("options, first", [
+    ({"strategy": "paper", "backend": "ros"}, "Case hook, strategy paper, seed 3, backend ros."),
+    ({"backend": "ros", "robot_profile": "lab.toml"},
+     "Case hook, seed 3, backend ros (robot profile lab.toml)."),
+    ({"strategy": "paper"}, "Case hook, strategy paper, seed 3."),
+])
+def test_the_first_line_names_a_backend_the_options_chose(options, first):
+    h = headline(_run({**FULL, "options": options, "use": None}))
+    assert h.lines[0] == first
