@@ -14,10 +14,19 @@ import os
 import socket
 import subprocess
 import sys
+import tempfile
 import time
+from pathlib import Path
 
 out: dict = {"namespace_links": sorted(name for _, name in socket.if_nameindex())}
 standin = None
+# Both sides read the shipped profile with [clock] use_sim_time = true (as _session.py
+# does): the learner judges the stand-in's staleness on its simulated clock, so a
+# stand-in starved of CPU on a loaded machine runs slower instead of looking dead.
+TMP = Path(tempfile.mkdtemp(prefix="hook-trials-"))
+SHIPPED = Path(__file__).resolve().parents[4] / "robots" / "baxter.toml"
+SIM_PROFILE = TMP / "baxter-sim.toml"
+SIM_PROFILE.write_text(SHIPPED.read_text().replace("use_sim_time = false", "use_sim_time = true"))
 try:
     from creative_py.case import get_case
     from creative_py.simulator.loader import backend
@@ -37,9 +46,10 @@ try:
         out["absent"] = str(exc)
     out["absent_s"] = time.monotonic() - t
     os.environ["CREATIVE_ROS_WAIT_S"] = "60"
+    os.environ["CREATIVE_ROBOT_PROFILE"] = str(SIM_PROFILE)  # the absent arm: the shipped one
 
     standin = subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin",
-                                "--case", "hook", "--seconds", "600"],
+                                "--case", "hook", "--seconds", "600", "--profile", str(SIM_PROFILE)],
                                stdout=subprocess.PIPE, text=True)
     line = standin.stdout.readline()
     if not line.startswith("standin ready "):

@@ -188,8 +188,11 @@ def test_hook_trials_over_ros_are_decided_by_the_stand_ins_physics(hook_trials):
     assert load["max_force_n"] > 0 and 0 < load["robust_force_n"] <= load["max_force_n"]
     assert load["contact_steps"] > 0 and load["point"] is not None
     # a short hook cannot reach behind the cube; the medium one not in the long tube
+    # (the arm aborts it, or the pull leaves the cube inside; at the long tube's far
+    # location the learner's IK may also find no posture from where the arm settled)
     for t in (short, long_tube):
-        assert t["outcome"] in ("failure", "blocked"), t
+        assert t["outcome"] in ("failure", "blocked", "unreachable"), t
+        assert t["outcome"] != "unreachable" or t is long_tube, t
         assert not t["verdict"]["holds"]
     # each scene was set up by the trainer (the stand-in), the cube where its location is
     assert len(hook_trials["scene_s"]) >= 3  # (and the task facts' scene)
