@@ -167,21 +167,39 @@ STOPPED = "stopped.json"
 
 
 def _stopped(run: RunFolder, case: str, exc: BaseException, say: Callable[[str], None]) -> str:
-    """Note in the run folder that the run stopped because the backend went away (the
-    trial it was running is not recorded: nothing was learned from it); return the
-    command that resumes the run."""
+    """Note in the run folder that the run stopped because the backend went away; return
+    the command that resumes the run.
+
+    The trial that was running (``lost_trial``, when the backend went away during one)
+    did not go as planned: ``stopped.json`` records it with the skill it was in, but not
+    in ``trials.jsonl``, since nothing was learned about the tool from it (it labels no
+    example); the resume runs it again."""
     command = f"creative run {case} --resume {run.path}"
+    lost = lost_trial(exc)
     note = {"stopped": "the backend was lost", "reason": str(exc),
-            "trials_recorded": len(run.trials),
-            "not_recorded": "the trial that was running when the backend went away",
-            "resume": command}
+            "trials_recorded": len(run.trials), "lost_trial": lost, "resume": command}
     try:
         (run.path / STOPPED).write_text(json.dumps(note, indent=1) + "\n", encoding="utf-8")
     except OSError:
         pass  # the message below says it too
-    say(f"stopped after {len(run.trials)} trial(s): the backend was lost ({exc}); the "
-        f"trial it was running is not recorded; to go on once it is back: {command}")
+    where = ("between trials" if lost is None else
+             f"in trial #{lost['trial']} ({lost['tool']} at location {lost['location']}"
+             + (f", skill {lost['skill']}" if lost.get("skill") else "")
+             + "), which did not go as planned and is run again on resuming")
+    say(f"stopped after {len(run.trials)} recorded trial(s): the backend was lost {where} "
+        f"({exc}); to go on once it is back: {command}")
     return command
+
+
+def lost_trial(exc: BaseException) -> Optional[dict[str, Any]]:
+    """Return the trial a :class:`BackendLost` interrupted as ``stopped.json`` records
+    it (outcome ``not as planned``, ``learned`` false), or None when it came between
+    trials."""
+    trial = getattr(exc, "trial", None)
+    if not trial:
+        return None
+    return {**trial, "skill": getattr(exc, "skill", None), "outcome": "not as planned",
+            "reason": " ".join(str(exc).split()), "learned": False}
 
 
 def _trial_runner(engine: Engine, world: World, run: RunFolder, options: RunOptions,
@@ -220,7 +238,8 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
                 f"can go on with: creative run {case} --resume {waiting[-1]}")
         return run, [], [], None, None
     run, replay, lines = resume
-    resumed = Resumed(replayed=len(replay), earlier_wall_time_s=_earlier_wall(run.path))
+    resumed = Resumed(replayed=len(replay), earlier_wall_time_s=_earlier_wall(run.path),
+                      lost_trial=_stopped_trial(run.path))
     # Nothing is written until the replay is checked (TrialRunner unseals it); with
     # nothing to replay (killed before its first trial) the run starts afresh.
     run.seal(replay)
@@ -229,6 +248,17 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
     say(f"resuming {run.path}: replaying {len(replay)} recorded trials")
     say(f"run folder {run.path}")
     return run, replay, lines, _earlier_summary(run.path), resumed
+
+
+def _stopped_trial(run_dir: Path) -> Optional[dict[str, Any]]:
+    """Return the trial the backend was lost in, from the run's ``stopped.json`` (None
+    without one, or when it names none or cannot be read)."""
+    try:
+        note = json.loads((run_dir / STOPPED).read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return None
+    lost = note.get("lost_trial") if isinstance(note, dict) else None
+    return lost if isinstance(lost, dict) else None
 
 
 def _interrupted_folders(out: Path, case: str, seed: int) -> list[Path]:

@@ -43,6 +43,7 @@ from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
 from creative_py.records.trial import TrialRecord, verdict_lines
 from creative_py.simulator.trial import task_facts
+from creative_py.simulator.types import BackendLost
 
 if TYPE_CHECKING:
     from creative_py.simulator import PoseTarget, World
@@ -318,10 +319,19 @@ class TrialRunner:
                                  outcome, reason, task.location,
                                  measured=verdict_lines(measured))
 
-        return run_trial(
-            self.world, tool, task.variant, task.location, pose_numbers(pose),
-            self.seed * 1000 + n, images, gui=self.gui, record=recorder,
-            verdict=verdict if recorder is not None else None, pose_target=self.pose_target)
+        try:
+            return run_trial(
+                self.world, tool, task.variant, task.location, pose_numbers(pose),
+                self.seed * 1000 + n, images, gui=self.gui, record=recorder,
+                verdict=verdict if recorder is not None else None,
+                pose_target=self.pose_target)
+        except BackendLost as exc:
+            # Not an outcome: the run stops resumably and says which trial did not go
+            # as planned (stopped.json); the resume runs it again.
+            exc.trial = {"trial": n, "phase": phase, "phase_trial": phase_trial,
+                         "tool": tool, "variant": task.variant, "location": task.location,
+                         "pose": self._pose_dict(pose)}
+            raise
 
     def _label(self, vs: Term, exp: Term, ex: Any, task: TaskState) -> Term:
         """Return the version space after the trial's example (success: ``pos``;

@@ -15,8 +15,9 @@ Layout (docs/architecture.md, section 5)::
     <run>/report.html         the run on one page (creative_py.report.page), written last
     <run>/run.json            case, options and world of the run (what --resume reads)
     <run>/stopped.json        only after the backend was lost mid-run (an arm gone silent):
-                              why, the trials kept, the --resume command (removed when a
-                              resume runs to the end; creative_py.learning.run)
+                              why, the trials kept, the trial it was lost in (not as
+                              planned), the --resume command (removed when a resume runs
+                              to the end; creative_py.learning.run)
     <run>/.lock               advisory lock (fcntl.flock) held by the process running it
 
 A run folder is locked for the life of the run that writes it (:meth:`RunFolder.create`,

@@ -500,6 +500,11 @@ class Resumed(Part):
     unknown."""
     total_wall_time_s: Optional[float] = None
     """``earlier_wall_time_s`` plus this session's ``wall_time_s.total``."""
+    lost_trial: Optional[dict[str, Any]] = None
+    """The trial that did not go as planned because the backend was lost during it (from
+    the interrupted run's ``stopped.json``: its number, phase, tool, variant, location,
+    pose, the skill it was in, the reason); the resume ran it again. None: the run was
+    not stopped by a lost backend, or not during a trial."""
 
 
 @dataclass(frozen=True, kw_only=True)

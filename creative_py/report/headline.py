@@ -147,6 +147,13 @@ def headline(run: RunContents) -> Headline:
         if resumed.total_wall_time_s is not None:
             text += f"; {number_text(resumed.total_wall_time_s)} s in all"
         out.lines.append(text + ".")
+        lost = resumed.lost_trial
+        if lost:
+            skill = f", in skill {lost['skill']}" if lost.get("skill") else ""
+            out.lines.append(f"Trial #{lost.get('trial')} ({lost.get('tool')} at location "
+                             f"{lost.get('location')}) did not go as planned: the backend "
+                             f"was lost{skill} ({lost.get('reason')}); nothing was learned "
+                             "from it and the resume ran it again.")
     wall = s.wall_time_s
     if wall is not None and wall.total is not None:
         parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.phases())

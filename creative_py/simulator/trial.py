@@ -33,8 +33,8 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple, Optional, Sequence
 
-from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome,
-                                         TrialResult, Verdict)
+from creative_py.simulator.types import (BackendLost, Fact, Observation, PoseTarget,
+                                         SkillOutcome, TrialResult, Verdict)
 
 if TYPE_CHECKING:
     from creative_py.case import CaseManifest
@@ -149,7 +149,11 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
             acted = True
         t0 = time.perf_counter()
         options = {"by_hand": True} if by_hand and skill.pose else {}
-        status = ep.run_skill(skill.name, pose if skill.pose else None, **options)
+        try:
+            status = ep.run_skill(skill.name, pose if skill.pose else None, **options)
+        except BackendLost as exc:
+            exc.skill = exc.skill or skill.name  # the skill the backend was lost in
+            raise
         if timings is not None:
             timings[f"{skill.name}_s"] = time.perf_counter() - t0
         if not status.ok:

@@ -166,7 +166,20 @@ class BackendLost(RuntimeError):
     ``observe`` or ``verdict``) and the learning loop stops the run resumably, as on a
     Ctrl-C: the trials recorded so far stay, and the run folder says how to go on
     (:func:`creative_py.learning.run.run_case`). The message names what went silent.
+
+    Attributes
+    ----------
+    skill : str or None
+        The skill that was running when the backend went away (set by the episode that
+        raised it; None between skills, e.g. while a trainer set up the scene).
+    trial : dict or None
+        The trial that was running (set by the learning loop: its number, phase, tool,
+        variant, location and pose): ``stopped.json`` records it as a trial that did
+        not go as planned, and the resume runs it again.
     """
+
+    skill: Optional[str] = None
+    trial: Optional[dict] = None
 
 
 @dataclass(frozen=True)

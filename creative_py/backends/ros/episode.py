@@ -190,12 +190,9 @@ class RosRobot:
         return self.twin.dry_run(q_start, path, max_step)
 
     # ----------------------------------------------------------------- motion
-    def _send(self, start: Sequence[float], path: Sequence[Sequence[float]],
-              duration: float) -> SkillOutcome:
-        arm = self.arm
-        points = arm._timed(self._profile_q(start), [self._profile_q(q) for q in path],
-                            duration)
-        return arm.send(points)
+    def _send(self, path: Sequence[Sequence[float]], duration: float) -> SkillOutcome:
+        """Send a joint path (Baxter's order), timed from where the arm is as it leaves."""
+        return self.arm.send_path([self._profile_q(q) for q in path], duration)
 
     def move_to(self, target, speed: Optional[float] = None, check: bool = True,
                 watch: Sequence[int] = (),
@@ -207,7 +204,6 @@ class RosRobot:
         speed = speed or cfg.speed
         q = self.sync()
         start_pos, start_quat = self.twin.gripper_pose()
-        start = list(q)
         dist = math.dist(start_pos, target[0])
         ang = quat_angle(start_quat, target[1])
         n = max(1, math.ceil(max(dist / WAYPOINT_M, ang / WAYPOINT_RAD)))
@@ -225,7 +221,7 @@ class RosRobot:
                                     f"{pos[1]:.3f}, {pos[2]:.3f}) m")
             path.append(sol)
             q = sol
-        res = self._send(start, path, max(dist / speed, ang / cfg.turn_speed))
+        res = self._send(path, max(dist / speed, ang / cfg.turn_speed))
         if res.ok and check and guard is not None:
             self.ep.sync()
             res = guard() or res
@@ -236,7 +232,7 @@ class RosRobot:
         """Move the arm in joint space to ``q_goal`` (rad, Baxter's order)."""
         q0 = self.arm_q()
         move = max(abs(a - b) for a, b in zip(q_goal, q0))
-        return self._send(q0, [list(q_goal)], move / joint_speed)
+        return self._send([list(q_goal)], move / joint_speed)
 
     def reach(self, target, joint_speed: float = 0.8, watch: Sequence[int] = ()) -> SkillOutcome:
         q = self.solve_ik_global(target)

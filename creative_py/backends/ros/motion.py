@@ -145,6 +145,21 @@ class LearnerArm:
             prev = list(q)
         return points
 
+    def send_path(self, path: Sequence[Sequence[float]], min_duration: float = 0.0
+                  ) -> SkillOutcome:
+        """Send a joint path (profile order; waypoints planned from where the arm was),
+        timed from where the joint states say the arm is now.
+
+        The path was planned from an earlier reading (IK of its waypoints takes a
+        while); the arm may have gone on settling after its last goal since. Timing
+        from a fresh reading, just before the bounds check it, keeps the first
+        segment within the joint speed the bounds hold it to."""
+        try:
+            start = self.client.arm_q()
+        except ArmUnavailable as exc:
+            return self._silent(str(exc))
+        return self.send(self._timed(start, path, min_duration))
+
     def send(self, points: Sequence[tuple[float, Sequence[float]]]) -> SkillOutcome:
         """Send a trajectory (profile joint order) through the bounds; return its outcome."""
         goal = self.client.make_goal(points)
@@ -178,11 +193,7 @@ class LearnerArm:
 
     def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:
         """Move to joint positions ``q`` (profile order) in one segment."""
-        try:
-            start = self.client.arm_q()
-        except ArmUnavailable as exc:
-            return self._silent(str(exc))
-        return self.send(self._timed(start, [list(q)], min_duration))
+        return self.send_path([list(q)], min_duration)
 
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
         """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s
@@ -210,7 +221,7 @@ class LearnerArm:
                                     f"to ({p[0]:.3f}, {p[1]:.3f}, {p[2]:.3f}) m")
             path.append(sol)
             q = sol
-        return self.send(self._timed(start, path, dist / speed))
+        return self.send_path(path, dist / speed)
 
     def grip(self, close: bool) -> SkillOutcome:
         """Close or open the gripper; ``ok`` when it answered (``holding`` says more)."""

@@ -1,7 +1,9 @@
 """A backend lost mid-run (an arm gone silent over ROS 2, a simulator's process dead)
-stops the run resumably: the trial it was running is not recorded as a failure, the
-folder keeps the trials before it and says how to go on (``stopped.json``), the command
-line prints one line and exits 75, and a resume runs the rest.
+stops the run resumably: the trial it was running is recorded as not as planned in
+``stopped.json`` (with the skill it was in), not as a failure in ``trials.jsonl`` (it
+labels nothing); the folder keeps the trials before it and says how to go on, the
+command line prints one line and exits 75, and a resume runs the lost trial again and
+the rest, its report saying which trial was lost.
 
 The backend here is the hook case's pybullet backend behind a scripted wrapper whose
 episode raises :class:`creative_py.simulator.BackendLost` from ``run_skill`` in the
@@ -91,21 +93,38 @@ def test_a_lost_backend_stops_the_run_resumably_and_a_resume_finishes_it(tmp_pat
     assert all(json.loads(line)["outcome"] != "invalid" for line in lines)
     note = json.loads((folder / STOPPED).read_text())
     command = f"creative run hook --resume {folder}"
+    lost = note.pop("lost_trial")
     assert note == {"stopped": "the backend was lost", "reason": SILENT,
-                    "trials_recorded": len(lines),
-                    "not_recorded": "the trial that was running when the backend went away",
-                    "resume": command}
+                    "trials_recorded": len(lines), "resume": command}
+    # the trial it was running: the next one, in the first skill of the case
+    assert lost.pop("pose").keys() == {"dx", "dy", "roll"}
+    assert lost == {"trial": len(lines) + 1, "phase": "use", "phase_trial": len(lines) + 1,
+                    "tool": lost["tool"], "variant": "standard", "location": 1,
+                    "skill": "pick_up", "outcome": "not as planned", "reason": SILENT,
+                    "learned": False}
     assert err.value.resume_command == command
-    assert said[-1] == (f"stopped after {len(lines)} trial(s): the backend was lost "
-                        f"({SILENT}); the trial it was running is not recorded; to go on "
-                        f"once it is back: {command}")
+    assert said[-1] == (f"stopped after {len(lines)} recorded trial(s): the backend was lost "
+                        f"in trial #{len(lines) + 1} ({lost['tool']} at location 1, skill "
+                        f"pick_up), which did not go as planned and is run again on "
+                        f"resuming ({SILENT}); to go on once it is back: {command}")
     assert not (folder / "summary.json").exists()
-    # the arm is back: the resume replays the kept trials and runs the rest
+    # the arm is back: the resume replays the kept trials, runs the lost one again (as
+    # planned then: the same tool) and the rest
     monkeypatch.setattr(loader, "backend_for", _REAL_BACKEND_FOR)
     resume_run(folder, progress=said.append)
     assert (folder / "summary.json").exists() and not (folder / STOPPED).exists()
     resumed = (folder / "trials.jsonl").read_text().splitlines()
     assert resumed[:len(lines)] == lines and len(resumed) > len(lines)
+    again = json.loads(resumed[len(lines)])
+    assert (again["trial"], again["tool"]) == (lost["trial"], lost["tool"])
+    summary = json.loads((folder / "summary.json").read_text())
+    assert summary["resumed"]["lost_trial"]["trial"] == lost["trial"]
+    from creative_py.report.contents import read_run
+    from creative_py.report.headline import headline
+
+    text = "\n".join(headline(read_run(folder)).lines)
+    assert (f"Trial #{lost['trial']} ({lost['tool']} at location 1) did not go as planned: "
+            f"the backend was lost, in skill pick_up ({SILENT})") in text
 
 
 def test_the_command_line_says_in_one_line_how_to_go_on_and_exits_75(monkeypatch, tmp_path):

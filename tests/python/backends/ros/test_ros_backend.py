@@ -204,3 +204,51 @@ def test_the_trainer_refuses_a_scene_in_one_line(hook_trials):
     msg = hook_trials["refused"]
     assert "the trainer on 'trainer/scene_done' refused the scene" in msg
     assert "no_such_tool" in msg and "\n" not in msg
+
+
+# ------------------------------------------------- the arm killed mid-trial, a whole run
+@pytest.fixture(scope="module")
+def lost_run() -> dict:
+    from test_standin import run_in_namespace
+
+    return run_in_namespace(HERE / "_lost_run.py", domain=230 + os.getpid() % 20,
+                            timeout=900.0)
+
+
+@pytest.mark.sim
+def test_an_arm_killed_mid_trial_stops_the_run_resumably(lost_run):
+    assert lost_run["namespace_links"] == ["lo"]
+    assert lost_run["stopped_rc"] == 75, lost_run["stopped_log"]
+    kept = lost_run["trials_at_stop"]
+    assert len(kept) == lost_run["recorded_at_kill"] >= 2  # nothing recorded after the kill
+    note = lost_run["stopped_json"]
+    lost = note["lost_trial"]
+    # the trial that was running is recorded as not as planned, not as an outcome
+    assert (lost["trial"], lost["outcome"], lost["learned"]) == (len(kept) + 1,
+                                                                  "not as planned", False)
+    assert lost["skill"] in (None, "pick_up", "position_tool", "pull")
+    assert "'/clock'" in lost["reason"] or "joint states" in lost["reason"], lost
+    assert note["trials_recorded"] == len(kept)
+    assert note["resume"].startswith("creative run hook --resume ")
+    assert not lost_run["summary_after_stop"]
+    last = lost_run["stopped_log"].splitlines()[-1]
+    assert last.startswith("error: the backend was lost: ") and note["resume"] in last
+
+
+@pytest.mark.sim
+def test_the_resumed_run_runs_the_lost_trial_again_and_equals_the_direct_run(lost_run):
+    assert lost_run["resume_rc"] == 0, lost_run["resume_log"]
+    assert not lost_run["stopped_json_after"]
+    kept, resumed = lost_run["trials_at_stop"], lost_run["resumed_trials"]
+    assert resumed[:len(kept)] == kept  # replayed, not run again
+    lost = lost_run["stopped_json"]["lost_trial"]
+    again = resumed[len(kept)]
+    assert (again["trial"], again["tool"], again["location"], again["pose"]) == (
+        lost["trial"], lost["tool"], lost["location"], lost["pose"])
+    assert lost_run["resumed"]["replayed"] == len(kept)
+    assert lost_run["resumed"]["lost_trial"]["trial"] == lost["trial"]
+    # the same experiments and outcomes as the run in one process with pybullet
+    assert lost_run["direct_rc"] == 0
+    keys = ("trial", "phase", "tool", "variant", "location", "pose", "outcome")
+    assert ([{k: t[k] for k in keys} for t in resumed]
+            == [{k: t[k] for k in keys} for t in lost_run["direct_trials"]])
