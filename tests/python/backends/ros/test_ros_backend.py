@@ -211,7 +211,7 @@ def test_the_trainer_refuses_a_scene_in_one_line(hook_trials):
 def lost_run() -> dict:
     from test_standin import run_in_namespace
 
-    return run_in_namespace(HERE / "_lost_run.py", domain=230 + os.getpid() % 20,
+    return run_in_namespace(HERE / "_lost_run.py", domain=1 + os.getpid() % 30,
                             timeout=900.0)
 
 
@@ -247,8 +247,14 @@ def test_the_resumed_run_runs_the_lost_trial_again_and_equals_the_direct_run(los
         lost["trial"], lost["tool"], lost["location"], lost["pose"])
     assert lost_run["resumed"]["replayed"] == len(kept)
     assert lost_run["resumed"]["lost_trial"]["trial"] == lost["trial"]
-    # the same experiments and outcomes as the run in one process with pybullet
+    # the same experiments and outcomes as the run in one process with pybullet; the
+    # poses within two millimetres (the learner sizes them from motion capture's poses
+    # over ROS, from the cameras' estimates directly: bench/results/ros_hook.json)
     assert lost_run["direct_rc"] == 0
-    keys = ("trial", "phase", "tool", "variant", "location", "pose", "outcome")
-    assert ([{k: t[k] for k in keys} for t in resumed]
-            == [{k: t[k] for k in keys} for t in lost_run["direct_trials"]])
+    direct = lost_run["direct_trials"]
+    keys = ("trial", "phase", "tool", "variant", "location", "outcome")
+    assert [{k: t[k] for k in keys} for t in resumed] == [{k: t[k] for k in keys}
+                                                          for t in direct]
+    for r, d in zip(resumed, direct):
+        assert r["pose"].keys() == d["pose"].keys()
+        assert all(abs(r["pose"][k] - d["pose"][k]) <= 2e-3 for k in d["pose"]), (r, d)
