@@ -67,8 +67,9 @@ def ended(p: subprocess.Popen, name: str, timeout: float) -> tuple[int, str]:
 
 def trials(folder: Path) -> list[dict]:
     rows = [json.loads(line) for line in (folder / "trials.jsonl").read_text().splitlines()]
-    return [{k: t.get(k) for k in ("trial", "phase", "tool", "variant", "location", "pose",
-                                   "outcome", "reason")} for t in rows]
+    return [{**{k: t.get(k) for k in ("trial", "phase", "tool", "variant", "location", "pose",
+                                      "outcome", "reason", "facts", "hs")},
+             "value": (t.get("verdict") or {}).get("value")} for t in rows]
 
 
 standins: list[subprocess.Popen] = []

@@ -17,6 +17,7 @@ real arm) checks the wall-clock staleness.
 from __future__ import annotations
 
 import json
+import math
 import os
 import socket
 import subprocess
@@ -206,8 +207,15 @@ try:
     here = arm.gripper_pose()
     up = ((here[0][0], here[0][1], here[0][2] + 0.05), here[1])
     r = arm.move_to(up, speed=0.1)
-    time.sleep(0.1)
-    after = arm.gripper_pose()
+    # The goal succeeded once every joint was within the goal tolerance (0.02 rad: up to
+    # 2 cm at the gripper); where the arm ends is read once it settled (two readings
+    # 0.2 s apart within 1 mm; the stand-in may run slower than real time).
+    after, settle_end = arm.gripper_pose(), time.monotonic() + 10.0
+    while time.monotonic() < settle_end:
+        time.sleep(0.2)
+        before, after = after, arm.gripper_pose()
+        if math.dist(before[0], after[0]) < 0.001:
+            break
     out["move_up"] = {"status": r.status, "reason": r.reason, "from": here[0], "to": after[0],
                       "target": up[0], "goals_sent": arm.goals_sent}
     down = ((here[0][0], here[0][1], -0.22), here[1])

