@@ -5,7 +5,8 @@ option, exit 2), the primitives it refuses, the trainer's scene requests as the
 stand-in answers them (pybullet scenes, no ROS). With ROS, inside a private network
 namespace with only loopback (``_hook_trials.py``, about a minute): an absent arm, then
 hook trials of the trial loop run on the stand-in over ROS 2, their outcomes decided by
-the stand-in's physics and measured from the pose topics.
+the stand-in's physics and measured from the pose topics; and (``_lost_run.py``, about
+four minutes) a whole run whose stand-in is killed mid-trial, resumed on a new one.
 """
 
 from __future__ import annotations
@@ -251,8 +252,8 @@ def test_the_resumed_run_runs_the_lost_trial_again_and_equals_the_direct_run(los
     # Up to the lost trial run again: the same experiments and outcomes as the run in one
     # process with pybullet, the poses within two millimetres (the learner sizes them
     # from motion capture's poses over ROS, from the cameras' estimates directly). The
-    # trials after it may part: over ROS the physics' timing differs from run to run,
-    # and a fact observed near a threshold can label otherwise (the whole run's
+    # trials after it may part: over ROS the physics' timing differs from run to run (in
+    # one of six runs here the learner tried another tool in trial 4; the whole run's
     # comparison is bench/ros_hook_bench.py's, bench/results/ros_hook.json).
     assert lost_run["direct_rc"] == 0
     direct = lost_run["direct_trials"][:len(kept) + 1]
