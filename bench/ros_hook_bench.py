@@ -20,7 +20,8 @@ minus the trajectory's planned duration) and the scene set-ups; the load (``upti
 before and after. Then the trial-by-trial comparison. Writes
 ``bench/results/ros_hook.json``.
 
-    PYTHONPATH=. <venv with the ros extra>/bin/python bench/ros_hook_bench.py [--kinds default make]
+    PYTHONPATH=. <venv with the ros extra>/bin/python bench/ros_hook_bench.py \
+        [--kinds default make] [--keep DIR]
 """
 
 from __future__ import annotations
@@ -147,7 +148,7 @@ def compare(direct: list[dict], ros: list[dict]) -> list[dict]:
     return rows
 
 
-def inside(kinds: list[str]) -> dict:
+def inside(kinds: list[str], keep: str | None = None) -> dict:
     links = sorted(name for _, name in socket.if_nameindex())
     if links != ["lo"]:
         raise SystemExit(f"not in a loopback-only namespace: {links}")
@@ -155,7 +156,8 @@ def inside(kinds: list[str]) -> dict:
               f"{os.cpu_count()} cores (shared)", "recorded": time.strftime(
                   "%Y-%m-%d %H:%M UTC", time.gmtime()),
               "namespace_links": links, "runs": {}}
-    tmp = Path(tempfile.mkdtemp(prefix="ros_hook_"))
+    tmp = Path(keep) if keep else Path(tempfile.mkdtemp(prefix="ros_hook_"))
+    tmp.mkdir(parents=True, exist_ok=True)
     try:
         for kind in kinds:
             runs = {b: run(kind, b, tmp / f"{kind}-{b}") for b in ("direct", "ros")}
@@ -180,17 +182,21 @@ def inside(kinds: list[str]) -> dict:
                 "rows": rows}
             result["runs"][kind] = entry
     finally:
-        shutil.rmtree(tmp, ignore_errors=True)
+        if not keep:
+            shutil.rmtree(tmp, ignore_errors=True)
     return result
 
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS))
+    ap.add_argument("--keep", metavar="DIR", help="keep the run folders under DIR (new)")
     ap.add_argument("--inside", action="store_true", help=argparse.SUPPRESS)
     args = ap.parse_args()
+    if args.keep and Path(args.keep).exists():
+        raise SystemExit(f"--keep {args.keep}: exists already; give a new folder")
     if args.inside:
-        result = inside(args.kinds)
+        result = inside(args.kinds, args.keep)
         RESULTS.write_text(json.dumps(result, indent=1) + "\n")
         for kind, e in result["runs"].items():
             c = e["comparison"]
@@ -210,7 +216,8 @@ def main() -> None:
     env = dict(os.environ, ROS_AUTOMATIC_DISCOVERY_RANGE="LOCALHOST",
                ROS_DOMAIN_ID=str(150 + os.getpid() % 50), PYTHONPATH=str(ROOT))
     script = " ".join(["ip link set lo up && exec", sys.executable, str(Path(__file__).resolve()),
-                       "--inside", "--kinds", *args.kinds])
+                       "--inside", "--kinds", *args.kinds,
+                       *(["--keep", str(Path(args.keep).resolve())] if args.keep else [])])
     sys.exit(subprocess.call([*prefix, "sh", "-c", script], env=env, cwd=ROOT))
 
 

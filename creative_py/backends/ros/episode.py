@@ -229,10 +229,12 @@ class RosRobot:
 
     def move_joints(self, q_goal: Sequence[float], joint_speed: float = 0.8,
                     check: bool = True, watch: Sequence[int] = ()) -> SkillOutcome:
-        """Move the arm in joint space to ``q_goal`` (rad, Baxter's order)."""
+        """Move the arm in joint space to ``q_goal`` (rad, Baxter's order), easing in and
+        out (:meth:`LearnerArm.move_joints`), the fastest joint at most at
+        ``joint_speed`` on average."""
         q0 = self.arm_q()
         move = max(abs(a - b) for a, b in zip(q_goal, q0))
-        return self._send([list(q_goal)], move / joint_speed)
+        return self.arm.move_joints(self._profile_q(q_goal), move / joint_speed)
 
     def reach(self, target, joint_speed: float = 0.8, watch: Sequence[int] = ()) -> SkillOutcome:
         q = self.solve_ik_global(target)

@@ -45,6 +45,9 @@ Pose = tuple[tuple[float, float, float], tuple[float, float, float, float]]
 SPEED_MARGIN = 0.9
 """The learner times its trajectories at this fraction of the profile's joint speed."""
 
+EASE_STEP = 0.05
+"""Radians of the fastest joint between the points of an eased joint-space move."""
+
 
 class Kinematics:
     """The robot's kinematics on the learner's side, from the profile's URDF (no scene).
@@ -192,8 +195,23 @@ class LearnerArm:
         return SkillOutcome("invalid", f"the goal was {r.status}: {r.error_string}")
 
     def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:
-        """Move to joint positions ``q`` (profile order) in one segment."""
-        return self.send_path([list(q)], min_duration)
+        """Move to joint positions ``q`` (profile order) in joint space, easing in and out.
+
+        A single segment would ask the arm to be at full speed at once: the controller
+        interpolates linearly from where the arm is, and an arm under load lags that
+        step past the path tolerance (seen on the stand-in carrying a tool). The move
+        is cut into points on a half-cosine of time (at rest at both ends, at most the
+        margin of the joint speed in the middle: ``pi / 2`` times the average)."""
+        try:
+            start = self.client.arm_q()
+        except ArmUnavailable as exc:
+            return self._silent(str(exc))
+        move = max((abs(a - b) for a, b in zip(q, start)), default=0.0)
+        speed = SPEED_MARGIN * self.profile.max_joint_speed
+        k = max(1, math.ceil(move / EASE_STEP))
+        path = [[a + (1 - math.cos(math.pi * i / k)) / 2 * (b - a) for a, b in zip(start, q)]
+                for i in range(1, k + 1)]
+        return self.send_path(path, max(min_duration, math.pi / 2 * move / speed))
 
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
         """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s

@@ -3,6 +3,8 @@ before it is sent (no ROS needed)."""
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from creative_py.backends.ros.limits import OutOfBounds, check_points, goal_checker
@@ -52,3 +54,42 @@ def test_the_goal_checker_reads_a_goal_in_any_joint_order():
     check = goal_checker(PROFILE, lambda: [0.0] * N, toy_forward)
     with pytest.raises(OutOfBounds, match="1.800 rad/s"):
         check(Goal)
+
+
+def test_a_joint_space_move_eases_in_and_out_within_the_bounds():
+    from creative_py.backends.ros.client import GoalTimes, TrajectoryResult
+    from creative_py.backends.ros.motion import SPEED_MARGIN, LearnerArm
+
+    start, goal = [0.0] * N, [0.8, -0.4] + [0.0] * (N - 2)
+    sent = []
+
+    class Client:  # the arm's side of LearnerArm, without ROS: the points it would send
+        profile = PROFILE
+
+        def arm_q(self):
+            return list(start)
+
+        def make_goal(self, points):
+            return points
+
+        def send_trajectory(self, points, timeout):
+            sent.append(points)
+            return TrajectoryResult("succeeded", 0, "", GoalTimes())
+
+    class Kinematics:
+        forward_position = staticmethod(toy_forward)
+
+    arm = LearnerArm(Client(), Kinematics())
+    arm.check = lambda points: check_points(PROFILE, start, points, toy_forward)
+    assert arm.move_joints(goal).status == "ok"
+    (points,) = sent
+    assert points[-1][1] == pytest.approx(goal)
+    speeds, prev_t, prev_q = [], 0.0, start
+    for t, q in points:
+        speeds.append(max(abs(a - b) for a, b in zip(q, prev_q)) / (t - prev_t))
+        prev_t, prev_q = t, q
+    peak = SPEED_MARGIN * PROFILE.max_joint_speed
+    # at rest at both ends, the margin of the joint speed in the middle
+    assert max(speeds) <= peak + 1e-9 and max(speeds) > 0.95 * peak
+    assert speeds[0] < 0.2 * peak and speeds[-1] < 0.2 * peak
+    assert points[-1][0] == pytest.approx(math.pi / 2 * 0.8 / peak, rel=0.02)
