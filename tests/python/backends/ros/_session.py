@@ -17,7 +17,6 @@ real arm) checks the wall-clock staleness.
 from __future__ import annotations
 
 import json
-import math
 import os
 import socket
 import subprocess
@@ -44,6 +43,20 @@ def start_standin() -> subprocess.Popen:
     return subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin", "--case",
                              CASE, "--seconds", "240", "--profile", str(SIM_PROFILE)],
                             stdout=subprocess.PIPE, stderr=ERRORS[-1].open("w"), text=True)
+
+
+def settled(client) -> list:
+    """Return the arm's joint positions once it settled: two readings 0.2 s apart within
+    0.002 rad (at most 10 s). A goal succeeds once every joint is within the goal
+    tolerance at its end, which an arm still moving may overshoot for a moment; the
+    stand-in may also run slower than real time."""
+    q, end = client.arm_q(), time.monotonic() + 10.0
+    while time.monotonic() < end:
+        time.sleep(0.2)
+        before, q = q, client.arm_q()
+        if max(abs(a - b) for a, b in zip(before, q)) < 0.002:
+            break
+    return q
 
 
 def stderr_tail(k: int) -> str:
@@ -124,8 +137,7 @@ try:
         first: list = []
         r = client.send_trajectory(client.make_goal([(1.0, target)]), check=check,
                                    on_feedback=lambda fb: first.append(fb) if not first else None)
-        time.sleep(0.1)
-        q = client.arm_q()
+        q = settled(client)
         trips.append({"status": r.status, "code": r.error_code, "times": vars(r.times),
                       "error_after": max(abs(a - b) for a, b in zip(q, target)),
                       "feedback_names": list(first[0].joint_names) if first else [],
@@ -207,15 +219,7 @@ try:
     here = arm.gripper_pose()
     up = ((here[0][0], here[0][1], here[0][2] + 0.05), here[1])
     r = arm.move_to(up, speed=0.1)
-    # The goal succeeded once every joint was within the goal tolerance (0.02 rad: up to
-    # 2 cm at the gripper); where the arm ends is read once it settled (two readings
-    # 0.2 s apart within 1 mm; the stand-in may run slower than real time).
-    after, settle_end = arm.gripper_pose(), time.monotonic() + 10.0
-    while time.monotonic() < settle_end:
-        time.sleep(0.2)
-        before, after = after, arm.gripper_pose()
-        if math.dist(before[0], after[0]) < 0.001:
-            break
+    after = kin.forward(settled(client))
     out["move_up"] = {"status": r.status, "reason": r.reason, "from": here[0], "to": after[0],
                       "target": up[0], "goals_sent": arm.goals_sent}
     down = ((here[0][0], here[0][1], -0.22), here[1])
