@@ -41,7 +41,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Sequence
+from typing import Callable, Iterator, Sequence
 
 import numpy as np
 import pybullet as pb
@@ -367,6 +367,43 @@ def slerp(q1: Sequence[float], q2: Sequence[float], t: float) -> Quat:
         q = (math.sin((1 - t) * th) * a + math.sin(t * th) * b) / math.sin(th)
     q = q / np.linalg.norm(q)
     return tuple(float(v) for v in q)
+
+
+def straight_line(solve_ik: Callable[..., list[float] | None], start: Pose, target: Pose,
+                  n: int, q: Sequence[float]) -> Iterator[tuple[Point, Quat, list[float]]]:
+    """Yield the ``n`` waypoints of a straight gripper move from ``start`` to ``target``:
+    each one's position (on the line), orientation (slerped) and arm posture, solved by
+    ``solve_ik(pose, seed=...)`` from the posture before it (from ``q`` first).
+
+    Lazily, so that a caller moving the arm as it goes stops where the path does. A
+    waypoint without a posture, or one the arm would reach only by flipping (a joint
+    jumping more than 0.5 rad), ends the path with :class:`Unreachable`; what
+    was yielded before it stands.
+    """
+    for i in range(1, n + 1):
+        t = i / n
+        pos = tuple(a + t * (b - a) for a, b in zip(start[0], target[0]))
+        quat = slerp(start[1], target[1], t)
+        sol = solve_ik((pos, quat), seed=q)
+        if sol is None:
+            raise Unreachable(SkillOutcome("unreachable", f"IK found no arm posture for "
+                                           f"gripper at ({pos[0]:.3f}, {pos[1]:.3f}, "
+                                           f"{pos[2]:.3f}) m"))
+        if max(abs(a - b) for a, b in zip(sol, q)) > 0.5:
+            raise Unreachable(SkillOutcome("unreachable", "the arm would have to flip its "
+                                           f"posture (joint jump > 0.5 rad) near ({pos[0]:.3f}"
+                                           f", {pos[1]:.3f}, {pos[2]:.3f}) m"))
+        q = sol
+        yield pos, quat, sol
+
+
+class Unreachable(Exception):
+    """A straight gripper path that the arm cannot follow (:func:`straight_line`):
+    ``outcome`` says where and why."""
+
+    def __init__(self, outcome: SkillOutcome) -> None:
+        super().__init__(outcome.reason)
+        self.outcome = outcome
 
 
 class _Model:
@@ -714,28 +751,19 @@ class Baxter:
         step_len = speed * cfg.steps_per_waypoint * self.sim.physics.time_step
         turn_len = cfg.turn_speed * cfg.steps_per_waypoint * self.sim.physics.time_step
         n = max(1, math.ceil(max(dist / step_len, ang / turn_len)))
-        q = self.arm_q()
-        # Continue from the last commanded solution, if any, to avoid wrist flips.
-        for i in range(1, n + 1):
-            t = i / n
-            pos = tuple(a + t * (b - a) for a, b in zip(start_pos, target[0]))
-            quat = slerp(start_quat, target[1], t)
-            sol = self.solve_ik((pos, quat), seed=q)
-            if sol is None:
-                return SkillOutcome("unreachable", f"IK found no arm posture for gripper at "
-                                  f"({pos[0]:.3f}, {pos[1]:.3f}, {pos[2]:.3f}) m")
-            if max(abs(a - b) for a, b in zip(sol, q)) > 0.5:
-                return SkillOutcome("unreachable", "the arm would have to flip its posture "
-                                  f"(joint jump > 0.5 rad) near ({pos[0]:.3f}, {pos[1]:.3f}, "
-                                  f"{pos[2]:.3f}) m")
-            q = sol
-            self._command(q)
-            self.sim.step(cfg.steps_per_waypoint)
-            bad = self._check(pos, check, watch) or self._check_turn(quat, check)
-            if bad is None and check and guard is not None:
-                bad = guard()
-            if bad is not None:
-                return bad
+        # Each waypoint's IK starts from the one before it, to avoid wrist flips.
+        try:
+            for pos, quat, q in straight_line(self.solve_ik, (start_pos, start_quat), target,
+                                              n, self.arm_q()):
+                self._command(q)
+                self.sim.step(cfg.steps_per_waypoint)
+                bad = self._check(pos, check, watch) or self._check_turn(quat, check)
+                if bad is None and check and guard is not None:
+                    bad = guard()
+                if bad is not None:
+                    return bad
+        except Unreachable as exc:
+            return exc.outcome
         for _ in range(cfg.settle_steps // cfg.steps_per_waypoint):
             actual = self.gripper_pose()[0]
             if math.dist(actual, target[0]) < 0.001:

@@ -48,7 +48,7 @@ import time
 import uuid
 from typing import Any, Callable, Optional, Sequence
 
-from creative_py.backends.pybullet.baxter import quat_angle, slerp
+from creative_py.backends.pybullet.baxter import Unreachable, quat_angle, straight_line
 from creative_py.backends.pybullet.episode import Episode as PybulletEpisode
 from creative_py.backends.ros.client import ArmUnavailable
 from creative_py.simulator.types import SkillOutcome
@@ -207,20 +207,11 @@ class RosRobot:
         dist = math.dist(start_pos, target[0])
         ang = quat_angle(start_quat, target[1])
         n = max(1, math.ceil(max(dist / WAYPOINT_M, ang / WAYPOINT_RAD)))
-        path = []
-        for i in range(1, n + 1):
-            t = i / n
-            pos = tuple(a + t * (b - a) for a, b in zip(start_pos, target[0]))
-            sol = self.twin.solve_ik((pos, slerp(start_quat, target[1], t)), seed=q)
-            if sol is None:
-                return SkillOutcome("unreachable", f"IK found no arm posture for gripper at "
-                                    f"({pos[0]:.3f}, {pos[1]:.3f}, {pos[2]:.3f}) m")
-            if max(abs(a - b) for a, b in zip(sol, q)) > 0.5:
-                return SkillOutcome("unreachable", "the arm would have to flip its posture "
-                                    f"(joint jump > 0.5 rad) near ({pos[0]:.3f}, "
-                                    f"{pos[1]:.3f}, {pos[2]:.3f}) m")
-            path.append(sol)
-            q = sol
+        try:
+            path = [sol for _, _, sol in straight_line(self.twin.solve_ik,
+                                                       (start_pos, start_quat), target, n, q)]
+        except Unreachable as exc:
+            return exc.outcome
         res = self._send(path, max(dist / speed, ang / cfg.turn_speed))
         if res.ok and check and guard is not None:
             self.ep.sync()

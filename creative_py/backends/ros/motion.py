@@ -214,8 +214,11 @@ class LearnerArm:
         return self.send_path(path, max(min_duration, math.pi / 2 * move / speed))
 
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
-        """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s
-        (the orientation interpolated linearly in its quaternion, normalised)."""
+        """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s, the
+        orientation slerped (the waypoints of
+        :func:`creative_py.backends.pybullet.baxter.straight_line`, every ``step`` m)."""
+        from creative_py.backends.pybullet.baxter import Unreachable, straight_line
+
         try:
             start = self.client.arm_q()
         except ArmUnavailable as exc:
@@ -223,22 +226,10 @@ class LearnerArm:
         here = self.kin.forward(start)
         dist = math.dist(here[0], target[0])
         n = max(1, math.ceil(dist / self.step))
-        q, path = list(start), []
-        dot = sum(a * b for a, b in zip(here[1], target[1]))
-        sign = -1.0 if dot < 0 else 1.0
-        for i in range(1, n + 1):
-            a = i / n
-            pos = tuple(p + a * (t - p) for p, t in zip(here[0], target[0]))
-            quat = [p + a * (sign * t - p) for p, t in zip(here[1], target[1])]
-            norm = math.sqrt(sum(v * v for v in quat))
-            sol = self.kin.ik((pos, tuple(v / norm for v in quat)), q)
-            if sol is None:
-                p = target[0]
-                return SkillOutcome("unreachable", f"IK found no arm posture for the gripper "
-                                    f"at ({pos[0]:.3f}, {pos[1]:.3f}, {pos[2]:.3f}) m on the way "
-                                    f"to ({p[0]:.3f}, {p[1]:.3f}, {p[2]:.3f}) m")
-            path.append(sol)
-            q = sol
+        try:
+            path = [q for _, _, q in straight_line(self.kin.ik, here, target, n, start)]
+        except Unreachable as exc:
+            return exc.outcome
         return self.send_path(path, dist / speed)
 
     def grip(self, close: bool) -> SkillOutcome:

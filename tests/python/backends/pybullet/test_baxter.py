@@ -156,3 +156,30 @@ def test_the_via_posture_is_searched_once_per_target(monkeypatch, mode, searches
             pass
     assert len(world.postures) == 2 + (mode != "heavy")
     assert calls.count(6) == searches  # the via search (the start pose's keeps 1)
+
+
+def test_a_straight_line_is_solved_lazily_and_ends_where_the_arm_cannot_follow():
+    from creative_py.backends.pybullet.baxter import Unreachable, straight_line
+
+    start, target = ((0.0, 0.0, 0.0), FORWARD), ((0.4, 0.0, 0.0), FORWARD)
+    asked = []
+
+    def ik(pose, seed):  # one "joint" per metre of x; no posture beyond x = 0.25
+        asked.append(pose[0][0])
+        return None if pose[0][0] > 0.25 else [pose[0][0]]
+
+    line = straight_line(ik, start, target, 4, [0.0])
+    pos, quat, q = next(line)
+    assert pos == pytest.approx((0.1, 0.0, 0.0)) and q == pytest.approx([0.1])
+    assert quat == pytest.approx(FORWARD) and asked == pytest.approx([0.1])  # lazily
+    assert next(line)[2] == pytest.approx([0.2])
+    with pytest.raises(Unreachable) as err:
+        next(line)
+    assert err.value.outcome.status == "unreachable"
+    assert err.value.outcome.reason == ("IK found no arm posture for gripper at "
+                                        "(0.300, 0.000, 0.000) m")
+    # a posture that jumps more than 0.5 rad from the one before it is a flip
+    flip = straight_line(lambda pose, seed: [seed[0] + 0.6], start, target, 4, [0.0])
+    with pytest.raises(Unreachable, match=r"flip its posture \(joint jump > 0.5 rad\) near "
+                                          r"\(0.100, 0.000, 0.000\) m"):
+        next(flip)
