@@ -206,7 +206,11 @@ try:
     # -- the gripper: closing far from the tool holds nothing, opening again
     closed = client.grip(True)
     opened = client.grip(False)
-    time.sleep(0.1)
+    # the gap as the joint states publish it after the answer: two messages later (the
+    # stand-in may run slower than real time; a fixed wait once read the closed gap)
+    n0, end = client.joint_state.count, time.monotonic() + 10.0
+    while client.joint_state.count < n0 + 2 and time.monotonic() < end:
+        time.sleep(0.02)
     out["gripper"] = {"closed": [closed.position, closed.stalled, closed.reached_goal],
                       "opened": [opened.position, opened.stalled, opened.reached_goal],
                       "gap_in_joint_states": client.joints()[profile.gripper_joint]}
