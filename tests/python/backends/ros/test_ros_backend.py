@@ -177,7 +177,7 @@ def test_hook_trials_over_ros_are_decided_by_the_stand_ins_physics(hook_trials):
     ok, short, long_tube = hook_trials["trials"]
     # the demonstration's tool and pose pull the cube out: the stand-in's physics moved
     # it, and the verdict measured it on the pose topic
-    assert ok["outcome"] == "success", ok
+    assert ok["outcome"] == "success", (ok["outcome"], ok["reason"], ok["verdict"])
     v = ok["verdict"]
     assert v["asked"] and v["holds"] and v["quantity"] == "cube1 centre x"
     assert v["measures"]["moved_m"] > 0.2
