@@ -170,8 +170,9 @@ class BackendLost(RuntimeError):
     Attributes
     ----------
     skill : str or None
-        The skill that was running when the backend went away (set by the episode that
-        raised it; None between skills, e.g. while a trainer set up the scene).
+        The skill that was running when the backend went away (set by the trial loop,
+        :func:`creative_py.simulator.trial.run_trial`; None outside a skill, e.g.
+        while a trainer set up the scene).
     trial : dict or None
         The trial that was running (set by the learning loop: its number, phase, tool,
         variant, location and pose): ``stopped.json`` records it as a trial that did

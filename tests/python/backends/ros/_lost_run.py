@@ -109,7 +109,6 @@ try:
     out["resumed_trials"] = trials(folder)
     summary = json.loads((folder / "summary.json").read_text())
     out["resumed"] = summary.get("resumed")
-    out["model"] = (folder / "model.pl").read_text() if (folder / "model.pl").is_file() else None
     # the same run in one process (pybullet), to compare
     direct = creative("direct", *RUN, "--out", str(TMP / "direct"), backend=False)
     out["direct_rc"], _ = ended(direct, "direct", 300)
