@@ -21,7 +21,7 @@ from creative_py.records.folder import write_atomic
 from creative_py.records.summary import PddlCheck
 from creative_py.report.contents import (
     Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
-    plan_steps, read_run, readable_term, relative_inside, why_text,
+    plan_steps, read_run, readable_term, relative_inside, state_text, why_text,
 )
 from creative_py.report.headline import duration_text, headline
 
@@ -141,9 +141,9 @@ def render_html(run: RunContents) -> str:
         f"phase {s.phase}" if s.phase is not None else "",
         f"backend {s.backend}" if s.backend else "") if x)
     warnings = ""
-    if not (run.path / "summary.json").is_file():
-        warnings = ('<div class="warn">No <code>summary.json</code>: the run has not finished '
-                    "(or was interrupted); only its recorded trials are shown.</div>")
+    state = state_text(run)
+    if state:
+        warnings = f'<div class="warn">{escape(state)}</div>'
     if run.warnings:
         warnings += ('<div class="warn"><b>Not everything could be read:</b><ul>'
                     + "".join(f"<li>{escape(w)}</li>" for w in run.warnings) + "</ul></div>")
