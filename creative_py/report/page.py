@@ -309,7 +309,8 @@ def _tools_section(run: RunContents) -> str:
                 f"{escape(str(c.tool))} ({escape(str(c.outcome))})"
                 for c in create.catalogue))
         if create.exhausted:
-            bits.append(f"search exhausted: {escape(create.exhausted)}")
+            bits.append("no literal left to generalise (what was tried of each: "
+                        f"<code>{escape(create.exhausted)}</code>)")
         intro = f"<p>{'; '.join(bits)}.</p>"
     if not run.tools:
         return intro + '<p class="none">This run created no tool.</p>'
