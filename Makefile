@@ -87,7 +87,7 @@ test-maniskill: $(MS_STAMP)  ## Run the ManiSkill backend's tests (a real short 
 # (bench/results/maniskill.json) and the demonstration's tool and pose on the same seeds.
 bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate the model on 20 fresh seeds (about 4 min).
 	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
-	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
+	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run --record && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
 
 # The second ManiSkill task: a learning run of poke_cube, then its learned model on 50
@@ -152,7 +152,7 @@ test-ros: $(ROS_STAMP)  ## Run the ROS 2 backend's tests (the stand-in arm in it
 	$(PY) -m pytest -q -p no:randomly -n 0 tests/python/backends/ros
 
 bench-ros: $(ROS_STAMP)  ## Measure the stand-in's rates and a goal's round trip, idle and under load.
-	$(PY) bench/ros_roundtrip.py
+	$(PY) bench/ros_roundtrip.py --record
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 
@@ -207,7 +207,7 @@ MUTATE_ARGS ?=
 mutate: $(STAMP)  ## Mutation testing of learning/, case.py, report/ (hours); score in bench/results/mutation.json.
 	$(call say,pip: installing mutmut (the mutate extra))
 	time $(PY) -m pip install -q -e '.[mutate]'
-	$(PY) bench/mutation.py $(MUTATE_ARGS)
+	$(PY) bench/mutation.py --record $(MUTATE_ARGS)
 
 clean:  ## Remove the environment and run folders.
 	rm -rf $(VENV) runs .pytest_cache mutants
