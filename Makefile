@@ -5,6 +5,7 @@ PY    := $(VENV)/bin/python
 SWIPL := swipl
 STAMP := $(VENV)/.installed
 SUDO  := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+comma := ,
 RUN   ?=
 SEED  ?= 0
 CASE  ?= hook
@@ -28,22 +29,32 @@ help:  ## List the targets.
 APT_PACKAGES := swi-prolog-nox openscad prusa-slicer ffmpeg chromium libsdformat-dev g++ pkg-config
 APT_PROGRAMS := swipl openscad prusa-slicer ffmpeg chromium g++ pkg-config
 
+# Each long step says what it installs before it starts (`say`; with the time it took
+# on a fresh clone on a 2-core machine where that was measured: issue 32) and how long
+# it took when it ends (bash's `time`, in the format TIMEFORMAT gives).
+say = @printf '\n==> %s\n' "$(1)"
+export TIMEFORMAT := ==> took %0R s
+
 /usr/bin/swipl:
+	$(call say,apt: installing SWI-Prolog$(comma) OpenSCAD$(comma) PrusaSlicer$(comma) ffmpeg$(comma) Chromium$(comma) libsdformat and g++ (minutes: downloads))
 	$(SUDO) apt-get update -qq
 	DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(APT_PACKAGES) >/dev/null
 
 $(STAMP): pyproject.toml | /usr/bin/swipl
 	@for p in $(APT_PROGRAMS); do command -v $$p >/dev/null || missing=1; done; \
 	  pkg-config --exists sdformat12 2>/dev/null || missing=1; \
-	  [ -z "$$missing" ] || ($(SUDO) apt-get update -qq && \
+	  [ -z "$$missing" ] || (printf '\n==> %s\n' "apt: installing the missing system packages: $(APT_PACKAGES) (minutes: downloads)" && \
+	  $(SUDO) apt-get update -qq && \
 	  DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq $(APT_PACKAGES) >/dev/null)
+	$(call say,pip: creating $(VENV) and installing CREATIVE-py with pybullet$(comma) trimesh$(comma) manifold3d$(comma) pyswip$(comma) pytest and the rest of its test tools (about 75 s))
 	python3 -m venv $(VENV)
 	@# setuptools as pyproject.toml's build-system asks (a venv of Python 3.11 starts with
 	@# 65.5, which rejects the licence expression license = "MIT").
 	$(PY) -m pip install -q --upgrade pip 'setuptools>=77'
-	$(PY) -m pip install -q -e '.[test]'
+	time $(PY) -m pip install -q -e '.[test]'
 	$(PY) -m pip install -q --no-deps example-robot-data
 	touch $(STAMP)
+	$(call say,setup done: $(VENV) is ready)
 
 setup: $(STAMP)  ## Install SWI-Prolog, OpenSCAD, PrusaSlicer, ffmpeg, Chromium and the Python environment.
 
@@ -60,11 +71,14 @@ $(BACKPORTS):
 
 $(MS_STAMP): pyproject.toml $(STAMP) | $(BACKPORTS)
 	@dpkg-query -W -f='$${Version}' mesa-vulkan-drivers 2>/dev/null | grep -q '^2[5-9]' || \
-	  ($(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install \
+	  (printf '\n==> %s\n' "apt: installing Mesa 25's Vulkan drivers from bookworm-backports (a download)" && \
+	  $(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install \
 	  -y -qq -t bookworm-backports mesa-vulkan-drivers libvulkan1 >/dev/null)
-	$(PY) -m pip install -q torch==2.13.0
-	$(PY) -m pip install -q -e '.[test,maniskill]'
+	$(call say,pip: installing torch 2.13.0 (the CPU build)$(comma) then mani-skill and SAPIEN (the maniskill extra): about 3.5 min for the two)
+	time $(PY) -m pip install -q torch==2.13.0
+	time $(PY) -m pip install -q -e '.[test,maniskill]'
 	touch $(MS_STAMP)
+	$(call say,setup-maniskill done: run the ManiSkill cases with VK_ICD_FILENAMES=$(LAVAPIPE))
 
 setup-maniskill: $(MS_STAMP)  ## Install the ManiSkill3 backend (Mesa 25 Vulkan on the CPU, mani-skill, CPU torch).
 
@@ -75,7 +89,7 @@ test-maniskill: $(MS_STAMP)  ## Run the ManiSkill backend's tests (a real short 
 # (bench/results/maniskill.json) and the demonstration's tool and pose on the same seeds.
 bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate the model on 20 fresh seeds (about 4 min).
 	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
-	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run && \
+	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run --record && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
 
 # The second ManiSkill task: a learning run of poke_cube, then its learned model on 50
@@ -95,11 +109,12 @@ RL_STAMP := $(VENV)/.rl
 STEPS    ?= 384000
 
 $(RL_STAMP): pyproject.toml $(MS_STAMP)
-	$(PY) -m pip install -q -e '.[test,maniskill,rl]'
+	$(call say,pip: installing stable-baselines3 (the rl extra))
+	time $(PY) -m pip install -q -e '.[test,maniskill,rl]'
 	touch $(RL_STAMP)
 
 bench-rl: $(RL_STAMP)  ## Train the PPO baseline on ManiSkill's PullCubeTool-v1 for STEPS steps (about an hour here) and record its success curve.
-	VK_ICD_FILENAMES=$(LAVAPIPE) nice -n 10 $(PY) bench/ppo_baseline_bench.py --budget $(STEPS)
+	VK_ICD_FILENAMES=$(LAVAPIPE) nice -n 10 $(PY) bench/ppo_baseline_bench.py --budget $(STEPS) --record
 
 # The ROS 2 backend (optional; docs/real-robot.md): ROS 2 Kilted's rclpy, Fast DDS and the
 # standard messages from PyPI wheels (the ros extra), then control_msgs' FollowJointTrajectory
@@ -116,9 +131,11 @@ ROS_IFACES := $(wildcard ros/control_msgs/*.txt ros/control_msgs/*.xml ros/contr
 $(ROS_STAMP): pyproject.toml $(STAMP) $(ROS_IFACES)
 	@command -v cmake >/dev/null && command -v g++ >/dev/null && command -v ip >/dev/null || \
 	  ($(SUDO) apt-get update -qq && DEBIAN_FRONTEND=noninteractive $(SUDO) apt-get install -y -qq cmake g++ iproute2 >/dev/null)
-	$(PY) -m pip install -q -e '.[test,ros]'
+	$(call say,pip: installing ROS 2 Kilted's rclpy$(comma) Fast DDS and the standard messages (the ros extra))
+	time $(PY) -m pip install -q -e '.[test,ros]'
+	$(call say,cmake: building control_msgs (FollowJointTrajectory$(comma) GripperCommand) into $(VENV) (about 3 min; its output goes to $(ROS_BUILD)/make.log$(comma) the end of which is shown if it fails))
 	@mkdir -p $(ROS_BUILD)
-	venv=$$(cd $(VENV) && pwd) && { \
+	venv=$$(cd $(VENV) && pwd) && time { \
 	  AMENT_PREFIX_PATH=$$venv cmake -S ros/control_msgs -B $(ROS_BUILD) -Wno-dev \
 	    -DCMAKE_PREFIX_PATH=$$venv -DCMAKE_INSTALL_PREFIX=$$venv -DPython3_EXECUTABLE=$$venv/bin/python \
 	    -DBUILD_TESTING=OFF -DCMAKE_BUILD_TYPE=Release && \
@@ -127,6 +144,7 @@ $(ROS_STAMP): pyproject.toml $(STAMP) $(ROS_IFACES)
 	  { tail -n 30 $(ROS_BUILD)/make.log; echo "control_msgs build failed: $(ROS_BUILD)/make.log"; exit 1; }
 	$(PY) -c 'from control_msgs.action import FollowJointTrajectory, GripperCommand'
 	touch $(ROS_STAMP)
+	$(call say,setup-ros done: control_msgs built and importable)
 
 setup-ros: $(ROS_STAMP)  ## Install the ROS 2 backend (rclpy wheels, control_msgs built once; 1-4 min).
 
@@ -136,7 +154,7 @@ test-ros: $(ROS_STAMP)  ## Run the ROS 2 backend's tests (the stand-in arm in it
 	$(PY) -m pytest -q -p no:randomly -n 0 tests/python/backends/ros
 
 bench-ros: $(ROS_STAMP)  ## Measure the stand-in's rates and a goal's round trip, idle and under load.
-	$(PY) bench/ros_roundtrip.py
+	$(PY) bench/ros_roundtrip.py --record
 
 test: test-prolog test-python  ## Run the quick test suite (Prolog plunit + pytest, sim tests included).
 
@@ -203,8 +221,9 @@ readme-figures: $(STAMP)  ## Write the README's figures and docs/results.md (fro
 # MUTATE_ARGS narrows the run, e.g. MUTATE_ARGS="--only creative_py/report/table.py".
 MUTATE_ARGS ?=
 mutate: $(STAMP)  ## Mutation testing of learning/, case.py, report/ (hours); score in bench/results/mutation.json.
-	$(PY) -m pip install -q -e '.[mutate]'
-	$(PY) bench/mutation.py $(MUTATE_ARGS)
+	$(call say,pip: installing mutmut (the mutate extra))
+	time $(PY) -m pip install -q -e '.[mutate]'
+	$(PY) bench/mutation.py --record $(MUTATE_ARGS)
 
 clean:  ## Remove the environment and run folders.
 	rm -rf $(VENV) runs .pytest_cache mutants

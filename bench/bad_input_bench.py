@@ -24,13 +24,16 @@ sys.path.insert(0, str(ROOT / "tests" / "reliability"))
 
 from test_bad_input import CORPUS, creative  # noqa: E402
 
+from recording import add_output_options, write_figures  # noqa: E402
+
 AIM_S = 10.0
 
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeat", type=int, default=3)
-    parser.add_argument("--out", type=Path, default=ROOT / "bench" / "results" / "bad_input.json")
+    parser.add_argument("--repeat", type=int, default=3,
+                        help="runs of each refused command; its worst time counts (default 3)")
+    add_output_options(parser, "bad_input.json", "each command's median and worst time (JSON)")
     args = parser.parse_args()
     rows = []
     for argv, _message in CORPUS:
@@ -46,13 +49,14 @@ def main() -> int:
                 codes.add(proc.returncode)
         rows.append({"args": argv, "median_s": round(statistics.median(times), 3),
                      "worst_s": round(max(times), 3), "exit_codes": sorted(codes)})
-        print(f"{max(times):6.2f} s  {' '.join(argv)}", flush=True)
+        print(f"worst of {args.repeat}: {max(times):6.2f} s  creative {' '.join(argv)}",
+              flush=True)
     worst = max(r["worst_s"] for r in rows)
     result = {"rows": rows, "repeat": args.repeat, "worst_s": worst, "aim_s": AIM_S,
               "all_under_aim": worst < AIM_S,
               "note": "wall time of one refused command, process start included"}
-    args.out.write_text(json.dumps(result, indent=1) + "\n")
-    print(f"worst {worst:.2f} s (aim < {AIM_S:g} s): {args.out}")
+    print(f"worst refused command: {worst:.2f} s (aim < {AIM_S:g} s)")
+    write_figures(args, "bad_input.json", result)
     return 0
 
 

@@ -30,6 +30,7 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
 from creative_py.bridge import Compound, Engine, clause, clause_parts, decode, encode  # noqa: E402
+from recording import add_output_options, write_figures  # noqa: E402
 
 
 def example_clause(rng: random.Random, tool: str, n_literals: int = 20) -> Compound:
@@ -83,7 +84,7 @@ def main() -> None:
     parser.add_argument("--repeat", type=int, default=2000, help="calls per measurement")
     parser.add_argument("--distinct", type=int, default=20000,
                         help="distinct requests for the memory check")
-    parser.add_argument("--out", type=Path, default=ROOT / "bench" / "results" / "bridge.json")
+    add_output_options(parser, "bridge.json", "the timings and memory growth (JSON)")
     args = parser.parse_args()
 
     start = time.perf_counter()
@@ -141,9 +142,6 @@ def main() -> None:
         "platform": platform.platform(),
     }
 
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text(json.dumps(results, indent=2) + "\n", encoding="utf-8")
-
     print(f"{'measurement':42s} {'median us':>10s} {'mean us':>10s} {'p95 us':>10s}")
     for name, row in results.items():
         if isinstance(row, dict) and "median_us" in row:
@@ -155,7 +153,8 @@ def main() -> None:
     print(f"RSS growth over {mem['requests_per_round']} distinct requests: "
           f"{mem['growth_first_round_kib']} KiB (first round), "
           f"{mem['growth_second_round_kib']} KiB (second round)")
-    print(f"engine start (creative.pl loaded): {startup_s:.2f} s; wrote {args.out}")
+    print(f"engine start (creative.pl loaded): {startup_s:.2f} s")
+    write_figures(args, "bridge.json", results, indent=2)
 
 
 if __name__ == "__main__":

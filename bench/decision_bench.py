@@ -3,16 +3,19 @@
 For each case (every worlds/*/case.toml): run the demonstration once in the physics, build the version space, then
 time (median and worst of 30 calls, through the bridge) the three Prolog decisions a
 trial needs: next_experiment (which literal, which object, which pose), label_trial
-(build the example and update the version space) and vs_bounds. Writes
-bench/results/decisions.json. Aim: every learning decision of a trial under 50 ms.
+(build the example and update the version space) and vs_bounds. Prints one line a
+case; ``--out FILE`` (or ``--record``: the tracked bench/results/decisions.json) writes
+them. Aim: every learning decision of a trial under 50 ms.
 """
 
 from __future__ import annotations
 
+import argparse
 import json
 import statistics
 import time
-from pathlib import Path
+
+from recording import add_output_options, write_figures
 
 from creative_py.bridge import Compound, Engine, fact_term
 from creative_py.case import load_cases
@@ -35,6 +38,9 @@ def timed(fn, n: int = N) -> dict:
 
 
 def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    add_output_options(ap, "decisions.json", "the median and worst times (JSON)")
+    args = ap.parse_args()
     engine = Engine.instance()
     out = {}
     for case, manifest in load_cases().items():
@@ -56,10 +62,8 @@ def main() -> int:
                                                      "neg", "planned")),
             "vs_bounds": timed(lambda: engine.call("vs_bounds", vs)),
         }
-        print(case, json.dumps(out[case]))
-    path = Path(__file__).resolve().parent / "results" / "decisions.json"
-    path.parent.mkdir(exist_ok=True)
-    path.write_text(json.dumps(out, indent=2) + "\n")
+        print(f"{case} (milliseconds of {N} calls):", json.dumps(out[case]))
+    write_figures(args, "decisions.json", out, indent=2)
     return 0
 
 

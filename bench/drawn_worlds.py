@@ -24,6 +24,8 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 
+from recording import add_output_options, write_figures
+
 
 def main() -> int:
     from creative_py.bridge import Engine
@@ -33,10 +35,11 @@ def main() -> int:
     from creative_py.sweep import parse_ints
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--case", default="hook")
-    parser.add_argument("--seeds", default="0-99")
-    parser.add_argument("--out", type=Path,
-                        default=ROOT / "bench" / "results" / "drawn_worlds.json")
+    parser.add_argument("--case", default="hook",
+                        help="the case whose catalogue worlds are drawn (default hook)")
+    parser.add_argument("--seeds", default="0-99",
+                        help="the world seeds, as --world-seed takes them (default 0-99)")
+    add_output_options(parser, "drawn_worlds.json", "the redraws of every world (JSON)")
     args = parser.parse_args()
     world = load_world(get_case(args.case))
     engine = Engine.instance()
@@ -71,9 +74,8 @@ def main() -> int:
                 "draws its location again while it fails",
         "per_world": rows,
     }
-    args.out.write_text(json.dumps(result, indent=1) + "\n")
-    print(f"{len(redrawn)} of {len(rows)} worlds needed a redraw, {len(failed)} failed: "
-          f"{args.out}")
+    print(f"{len(redrawn)} of {len(rows)} worlds needed a redraw, {len(failed)} failed")
+    write_figures(args, "drawn_worlds.json", result)
     return 0
 
 

@@ -11,10 +11,12 @@
     reduction's local tests are cut by their inference bound at 100 and 200
     literals, where the new one finishes them).
 
-        swipl bench/engine_bench.pl
+        swipl bench/engine_bench.pl [--out FILE | --record]
 
-    Prints a table and writes bench/results/engine.json (milliseconds, median
-    of several runs of wall time). The clauses are generated with a fixed
+    Prints a table (milliseconds, median of several runs of wall time);
+    --out FILE writes its figures (JSON) to FILE, --record to the tracked
+    bench/results/engine.json (as bench/recording.py does for the Python
+    benchmarks: a tracked file is only overwritten when asked). The clauses are generated with a fixed
     seed: scenes of objects with kinds, qualitative sizes, measured lengths
     (numbers), binary relations that share objects, and a few negated
     literals, so every predicate occurs many times at the larger sizes. The
@@ -39,21 +41,42 @@
 sizes([10, 50, 100, 200]).
 
 main :-
-    sizes(Sizes),
-    maplist(bench_size, Sizes, Rows),
-    bench_vs_update(VsRow),
-    print_table(Rows, VsRow),
+    current_prolog_flag(argv, Argv),
+    (   memberchk('--help', Argv)
+    ->  format("usage: swipl bench/engine_bench.pl [--out FILE | --record]~n"),
+        format("  --out FILE  write the figures (JSON) to FILE (default: only print)~n"),
+        format("  --record    write them to the tracked bench/results/engine.json~n")
+    ;   sizes(Sizes),
+        maplist(bench_size, Sizes, Rows),
+        bench_vs_update(VsRow),
+        print_table(Rows, VsRow),
+        current_prolog_flag(version, V),
+        Dict = _{ benchmark: "engine", unit: "ms", statistic: "median wall time",
+                  swipl_version: V, sizes: Rows, vs_update: VsRow },
+        write_figures(Argv, Dict)
+    ).
+
+%   write_figures(+Argv, +Dict) is det: write Dict (JSON) where --out or
+%   --record says, or say that nothing was written.
+write_figures(Argv, Dict) :-
+    (   output_file(Argv, Out)
+    ->  file_directory_name(Out, OutDir),
+        make_directory_path(OutDir),
+        setup_call_cleanup(open(Out, write, S),
+                           json_write_dict(S, Dict, [width(100)]),
+                           close(S)),
+        format("~nfigures written to ~w~n", [Out])
+    ;   format("~nfigures not written (give --out FILE, or --record to update the \c
+                tracked bench/results/engine.json)~n")
+    ).
+
+output_file(Argv, File) :-
+    append(_, ['--out', File|_], Argv),
+    !.
+output_file(Argv, File) :-
+    memberchk('--record', Argv),
     prolog_load_context_root(Root),
-    directory_file_path(Root, 'bench/results', OutDir),
-    make_directory_path(OutDir),
-    directory_file_path(OutDir, 'engine.json', Out),
-    current_prolog_flag(version, V),
-    Dict = _{ benchmark: "engine", unit: "ms", statistic: "median wall time",
-              swipl_version: V, sizes: Rows, vs_update: VsRow },
-    setup_call_cleanup(open(Out, write, S),
-                       json_write_dict(S, Dict, [width(100)]),
-                       close(S)),
-    format("~nwrote ~w~n", [Out]).
+    directory_file_path(Root, 'bench/results/engine.json', File).
 
 prolog_load_context_root(Root) :-
     source_file(main, File),

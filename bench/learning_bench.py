@@ -22,6 +22,9 @@ import tempfile
 from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
+
+from recording import add_output_options, output_path  # noqa: E402
 PAPER = {"hook": {"use_trials": 12, "create_failed": 1, "create_success": 1},
          "wedge": {"use_trials": 9, "create_failed": 2, "create_success": 1}}
 
@@ -75,11 +78,14 @@ def per_seed(seed: int, r: dict) -> dict:
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--seeds", type=int, default=10)
-    ap.add_argument("--cases", nargs="+", default=["hook", "wedge"])
+    ap.add_argument("--seeds", type=int, default=10,
+                    help="runs per case, seeds 0 to SEEDS-1 (default 10)")
+    ap.add_argument("--cases", nargs="+", default=["hook", "wedge"],
+                    help="the cases to run (default hook wedge)")
     ap.add_argument("--eval-trials", type=int, default=5,
                     help="evaluation trials of the learned model per run")
-    ap.add_argument("--out", type=Path, default=HERE / "results" / "learning.json")
+    add_output_options(ap, "learning.json", "the trial counts per case (JSON; the "
+                       "other cases' figures already in the file are kept)")
     args = ap.parse_args()
     results = {}
     with tempfile.TemporaryDirectory() as tmp:
@@ -89,9 +95,10 @@ def main() -> int:
                 s = one_run(case, seed, Path(tmp), args.eval_trials)
                 runs.append(s)
                 print(f"{case} seed {seed}: " + (str(s["error"]) if "error" in s else
-                      f"TUL {s['use']['trials']} (nothing left to test after "
-                      f"{s['use']['trials_to_converge']}), TC {s.get('create', {}).get('trials')}"
-                      f", {s['wall_time_s']['total']} s"), flush=True)
+                      f"tool-use trials {s['use']['trials']} (nothing left to test after "
+                      f"{s['use']['trials_to_converge']}), creation trials "
+                      f"{s.get('create', {}).get('trials')}, wall time "
+                      f"{s['wall_time_s']['total']} s"), flush=True)
             ok = [r for r in runs if "error" not in r]
             results[case] = {
                 "seeds": args.seeds,
@@ -112,14 +119,19 @@ def main() -> int:
                                 for ph in ("use", "eval", "create", "total")},
                 "paper": PAPER[case],
             }
-    out = args.out
-    if out.exists():  # keep the other cases' figures when only some were run
+    out = output_path(args, "learning.json")
+    if out is not None and out.exists():  # keep the other cases' figures
         previous = json.loads(out.read_text())
         previous.update(results)
         results = previous
-    out.parent.mkdir(exist_ok=True)
-    out.write_text(json.dumps(results, indent=2) + "\n")
     print(json.dumps(results, indent=2))
+    if out is None:
+        print("figures not written (give --out FILE, or --record to update the tracked "
+              "bench/results/learning.json)")
+        return 0
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps(results, indent=2) + "\n")
+    print(f"figures written to {out}")
     return 0
 
 

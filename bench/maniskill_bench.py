@@ -1,6 +1,7 @@
 """Evaluate a tool and pose of a ManiSkill case on fresh ManiSkill seeds.
 
     python bench/maniskill_bench.py CASE [--run RUN_FOLDER] [--seeds 1000:1020]
+                                    [--out FILE | --record]
 
 Each seed is ManiSkill's seeded initial state (``env.reset(seed=...)``), none of them a
 learning location. Without ``--run`` the demonstration's tool and pose are evaluated;
@@ -9,9 +10,9 @@ The pose's world target comes from the engine's pose solution, the verdict from
 ManiSkill's ``evaluate()["success"]``. Each seed is also tried without a tool (a bare-finger
 pull: the closed gripper lowered 4.5 cm behind the cube's centre, then drawn towards the
 robot base): a seed solved that way needs no tool, and the success rate is given both
-over all seeds and over the seeds that need the tool. Writes ``bench/results/maniskill.json``
-(or ``--out``): per
-seed the outcome, ManiSkill's measures and the control steps; the success rate; the
+over all seeds and over the seeds that need the tool. Prints one labelled line a seed;
+with ``--out FILE`` (or ``--record``: the tracked ``bench/results/maniskill.json``) writes
+per seed the outcome, ManiSkill's measures and the control steps; the success rate; the
 trials and simulated environment steps the run took to learn (with ``--run``).
 """
 
@@ -24,7 +25,10 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
+from recording import add_output_options, write_figures
+
 HERE = Path(__file__).resolve().parent
+TRACKED = "maniskill.json"
 
 
 def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
@@ -90,10 +94,14 @@ def run_figures(run: Path, recs: list[dict]) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("case")
-    ap.add_argument("--run", type=Path, default=None)
-    ap.add_argument("--seeds", default="1000:1020")
-    ap.add_argument("--out", type=Path, default=HERE / "results" / "maniskill.json")
+    ap.add_argument("case", help="a case whose backend is ManiSkill (creative cases "
+                                 "lists them)")
+    ap.add_argument("--run", type=Path, default=None, metavar="RUN_FOLDER",
+                    help="evaluate the tool and pose of this learning run's evaluation "
+                         "trials (default: the demonstration's tool and pose)")
+    ap.add_argument("--seeds", default="1000:1020", metavar="FIRST:END",
+                    help="ManiSkill's reset seeds FIRST to END-1 (default 1000:1020)")
+    add_output_options(ap, TRACKED, "the per-seed outcomes and success rates (JSON)")
     a = ap.parse_args()
 
     from creative_py.bridge import Engine
@@ -133,7 +141,8 @@ def main() -> None:
                      "cube_distance_to_base_m": r.verdict["value"],
                      "evaluate_success": r.verdict["measures"]["evaluate_success"],
                      "bare_finger_success": finger})
-        print(seed, r.outcome, r.steps, "bare finger", finger, flush=True)
+        print(f"seed {seed}: {r.outcome} in {r.steps} control steps; bare finger "
+              f"(no tool) {'solves it too' if finger else 'does not solve it'}", flush=True)
     ok = sum(r["evaluate_success"] for r in rows)
     need = [r for r in rows if not r["bare_finger_success"]]
     ok_need = sum(r["evaluate_success"] for r in need)
@@ -147,10 +156,9 @@ def main() -> None:
            "wall_s": round(time.perf_counter() - t0, 1),
            "load_avg_before": load_before,
            "load_avg_after": [round(v, 2) for v in os.getloadavg()], "trials": rows}
-    a.out.parent.mkdir(parents=True, exist_ok=True)
-    a.out.write_text(json.dumps(out, indent=1) + "\n")
-    print(f"{ok}/{len(rows)} seeds succeed ({source}), {ok_need}/{len(need)} of those a "
-          f"bare finger does not solve; {a.out}")
+    print(f"{ok} of {len(rows)} seeds succeed ({source}); {ok_need} of the {len(need)} "
+          "seeds a bare finger does not solve")
+    write_figures(a, TRACKED, out)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ import time
 from pathlib import Path
 
 import trimesh
+from recording import add_output_options, write_figures
 
 from creative_py.mesh.check import check_tool_files
 from creative_py.mesh.export import write_tool_files
@@ -75,9 +76,9 @@ def bench_kind(spec, repeats: int, root: Path) -> dict:
 def main() -> None:
     """Run the benchmark and write the JSON results."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--repeats", type=int, default=5)
-    parser.add_argument("--out", type=Path,
-                        default=Path(__file__).resolve().parent / "results" / "mesh.json")
+    parser.add_argument("--repeats", type=int, default=5,
+                        help="runs of each step; the median counts (default 5)")
+    add_output_options(parser, "mesh.json", "the median times of each step (JSON)")
     args = parser.parse_args()
     logging.basicConfig(level=logging.ERROR)
     with tempfile.TemporaryDirectory(prefix="mesh_bench_") as tmp:
@@ -93,15 +94,14 @@ def main() -> None:
         "date_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
         "kinds": results,
     }
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text(json.dumps(record, indent=2) + "\n", encoding="utf-8")
     width = max(map(len, results))
-    print(f"{'kind':{width}}  solid  files  picture  check  openscad  ok")
+    print(f"median milliseconds of each step, {args.repeats} runs:")
+    print(f"{'kind':{width}}  solid  files  picture  check  openscad  files check out")
     for kind, r in results.items():
         print(f"{kind:{width}}  {r['solid_and_mass_ms']:5.1f}  {r['write_urdf_sdf_scad_stl_ms']:5.1f}"
               f"  {r['picture_ms']:7.1f}  {r['check_ms']:5.1f}  {r['openscad_render_ms']:8.1f}"
               f"  {r['check_ok']}")
-    print(f"wrote {args.out}")
+    write_figures(args, "mesh.json", record, indent=2)
 
 
 if __name__ == "__main__":

@@ -37,7 +37,11 @@ from datetime import datetime, timezone
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
+from recording import add_output_options, write_figures  # noqa: E402
+
 RESULTS = ROOT / "bench" / "results" / "mutation.json"
+"""The tracked figures: read as the earlier runs (the modules not run now keep their
+counts), written only under --record (or to --out)."""
 
 # mutmut's exit codes of a mutant's test run (mutmut.stats.status_by_exit_code).
 KILLED, SURVIVED = {1, 3, 37}, {0}
@@ -296,7 +300,9 @@ def main(argv: list[str] | None = None) -> int:
                         help="pytest's -m for the mutants' test runs, in place of the "
                              "configured 'not slow' (e.g. 'not slow and not sim': no "
                              "physics)")
-    parser.add_argument("--max-children", type=int, default=None)
+    parser.add_argument("--max-children", type=int, default=None,
+                        help="mutmut's parallel test processes (default: mutmut's, one "
+                             "a core)")
     parser.add_argument("--label", default=None,
                         help="a note stored with the figures (e.g. 'before the new tests')")
     parser.add_argument("--mutants", action="append", default=[],
@@ -322,6 +328,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--summarise", action="store_true",
                         help="run nothing: recompute the totals and the equivalent "
                              "mutants of the recorded modules")
+    add_output_options(parser, "mutation.json", "the scores (JSON, with the other modules' "
+                                                "recorded counts)")
     args = parser.parse_args(argv)
     if args.merge:
         args.summarise = True
@@ -406,9 +414,9 @@ def main(argv: list[str] | None = None) -> int:
               f"{samples[sampled]['sample']} killed, non-equivalent score "
               f"{samples[sampled]['score_non_equivalent']} "
               f"(95 % interval {samples[sampled].get('interval95_non_equivalent')})")
-    RESULTS.write_text(json.dumps(result, indent=2) + "\n")
     print(f"mutation score {totals['score']} ({totals['score_non_equivalent']} of the "
-          f"non-equivalent mutants) over {', '.join(sorted(merged))}: {RESULTS}")
+          f"non-equivalent mutants) over {', '.join(sorted(merged))}")
+    write_figures(args, "mutation.json", result, indent=2)
     return 0
 
 

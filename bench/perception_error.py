@@ -26,6 +26,7 @@ from pathlib import Path
 
 import numpy as np
 import pybullet as pb
+from recording import add_output_options, write_figures
 
 from creative_py.perception import estimate_objects
 from creative_py.backends.pybullet.bodies import frame_pose, set_frame_pose
@@ -206,9 +207,11 @@ def render_times(repeats: int) -> dict:
 def main() -> None:
     """Run the measurements and write the JSON file."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--seeds", type=int, default=5)
-    parser.add_argument("--repeats", type=int, default=10)
-    parser.add_argument("--out", type=Path, default=ROOT / "bench/results/perception.json")
+    parser.add_argument("--seeds", type=int, default=5,
+                        help="sensor-noise seeds per case (default 5)")
+    parser.add_argument("--repeats", type=int, default=10,
+                        help="renders per image size for the render times (default 10)")
+    add_output_options(parser, "perception.json", "the pose errors and render times (JSON)")
     args = parser.parse_args()
     logging.basicConfig(level=logging.INFO, format="%(message)s")
     from creative_py.case import load_cases
@@ -219,22 +222,23 @@ def main() -> None:
     result["machine"] = {"python": platform.python_version(), "processor": platform.machine(),
                          "pybullet": pb.getAPIVersion()}
     result["wall_time_s"] = time.perf_counter() - t0
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text(json.dumps(result, indent=1) + "\n")
     for cid, r in result.items():
         if not isinstance(r, dict) or "noise_free" not in r:
             continue
         for k in ("noise_free", "top_only", "noisy"):
             if k in r:
                 v = r[k]
-                log.info("%s, %s: %.2f mm mean, %.2f mm worst, %s deg worst", cid, k,
+                log.info("%s, %s: position error %.2f mm mean, %.2f mm worst; yaw error "
+                         "%s deg worst", cid, k,
                          v["xy_mm_mean"], v["xy_mm_worst"], v["yaw_deg_worst"])
-        log.info("%s: tip direction wrong %d, unseen %d", cid, r["tip_direction_wrong"],
+        log.info("%s: tip direction wrong %d times, objects unseen %d", cid,
+                 r["tip_direction_wrong"],
                  len(r["unseen"]))
     for k, v in result["render"].items():
         if isinstance(v, dict):
             log.info("render %s: %.1f ms median", k, v["render_ms_median"])
-    log.info("wrote %s in %.1f s", args.out, result["wall_time_s"])
+    log.info("measured in %.1f s", result["wall_time_s"])
+    write_figures(args, "perception.json", result)
 
 
 if __name__ == "__main__":

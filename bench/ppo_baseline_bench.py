@@ -112,17 +112,29 @@ def parse(argv: list[str] | None) -> argparse.Namespace:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--budget", default="384000",
                     help="training environment steps (rounded up to whole rollouts)")
-    ap.add_argument("--num-envs", default=str(HYPERPARAMETERS["num_envs"][0]))
+    ap.add_argument("--num-envs", default=str(HYPERPARAMETERS["num_envs"][0]),
+                    help="parallel ManiSkill environments (default "
+                         f"{HYPERPARAMETERS['num_envs'][0]})")
     ap.add_argument("--num-steps", default=str(HYPERPARAMETERS["num_steps"][0]),
                     help="steps per environment and rollout")
-    ap.add_argument("--num-minibatches", default=str(HYPERPARAMETERS["num_minibatches"][0]))
+    ap.add_argument("--num-minibatches", default=str(HYPERPARAMETERS["num_minibatches"][0]),
+                    help="minibatches each rollout is split into for the PPO update "
+                         f"(default {HYPERPARAMETERS['num_minibatches'][0]})")
     ap.add_argument("--eval-every", default=None,
                     help="environment steps between evaluations (default: budget / 10)")
-    ap.add_argument("--eval-episodes", default="50")
+    ap.add_argument("--eval-episodes", default="50",
+                    help="episodes (fresh seeds) of each evaluation (default 50)")
     ap.add_argument("--eval-seed", default="20000", help="the first evaluation seed")
     ap.add_argument("--seed", default="0", help="PPO's seed (torch, numpy)")
-    ap.add_argument("--env-id", default=ENV_ID)
-    ap.add_argument("--out", type=Path, default=RESULTS / "ppo_baseline.json")
+    ap.add_argument("--env-id", default=ENV_ID,
+                    help=f"the ManiSkill environment trained on (default {ENV_ID})")
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--out", type=Path, default=None, metavar="FILE",
+                       help="write the figures (JSON) to FILE and the plot beside it; "
+                            "one of --out and --record is needed")
+    where.add_argument("--record", action="store_true",
+                       help="write them to the tracked bench/results/ppo_baseline.json "
+                            "and .png, which docs/results.md is made from")
     ap.add_argument("--plot", type=Path, default=None,
                     help="the plot (default: --out with .png)")
     ap.add_argument("--learner", type=Path, default=RESULTS / "maniskill.json",
@@ -130,6 +142,11 @@ def parse(argv: list[str] | None) -> argparse.Namespace:
     ap.add_argument("--replot", action="store_true",
                     help="train nothing: draw the plot again from --out's figures")
     a = ap.parse_args(argv)
+    if a.out is None and not a.record:
+        raise Usage("give --out FILE, or --record to update the tracked "
+                    "bench/results/ppo_baseline.json: a tracked file is only overwritten "
+                    "when asked")
+    a.out = a.out or RESULTS / "ppo_baseline.json"
     a.budget = _int(a.budget, "--budget")
     a.num_envs = _int(a.num_envs, "--num-envs")
     a.num_steps = _int(a.num_steps, "--num-steps")

@@ -42,7 +42,9 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-RESULTS = HERE / "results" / "release_runs.json"
+from recording import add_output_options, output_path, write_figures  # noqa: E402
+
+TRACKED = "release_runs.json"
 CREATIVE = Path(sys.executable).parent / "creative"
 KINDS = {"default": ["--strategy", "informative", "--video", "key"],
          "make": ["--strategy", "informative", "--video", "key", "--demonstrate-creation"],
@@ -119,10 +121,13 @@ def main() -> int:
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--cases", nargs="+", default=None,
                     help="case ids (default: every case of worlds/)")
-    ap.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS))
+    ap.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS),
+                    help="which runs of each case (default: all of them)")
     ap.add_argument("--keep", type=Path, help="keep the run folders under DIR")
     ap.add_argument("--record-only", action="store_true",
                     help="record the folders kept under --keep again, running nothing")
+    add_output_options(ap, TRACKED, "each run's figures (JSON; the runs of other cases "
+                                    "already in the file are kept)")
     args = ap.parse_args()
     if args.record_only and args.keep is None:
         ap.error("--record-only needs --keep DIR")
@@ -130,7 +135,8 @@ def main() -> int:
         from creative_py.case import load_cases
 
         args.cases = sorted(load_cases())
-    old = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
+    results = output_path(args, TRACKED)
+    old = json.loads(results.read_text()) if results is not None and results.exists() else {}
     runs = dict(old.get("runs", {}))
     failed = []
     base = args.keep or Path(tempfile.mkdtemp(prefix="release-runs-"))
@@ -157,12 +163,13 @@ def main() -> int:
                       f"{proc.stderr.strip().splitlines()[-1:]}", flush=True)
                 continue
             runs[f"{case}-{kind}"] = record(folders[-1], argv, wall)
-            print(f"{case} {kind}: {wall:.0f} s, {folders[-1]}", flush=True)
-    RESULTS.write_text(json.dumps({
+            print(f"{case} {kind}: wall time {wall:.0f} s, run folder {folders[-1]}",
+                  flush=True)
+    write_figures(args, TRACKED, {
         "bench": "release_runs",
         "machine": f"{platform.node()} ({platform.machine()}), shared 2-core",
         "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-        "runs": runs}, indent=1) + "\n")
+        "runs": runs})
     if args.keep is None:
         shutil.rmtree(base, ignore_errors=True)
     if failed:

@@ -116,7 +116,12 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("cases", nargs="*", default=["hook", "wedge"],
                     help="case ids (default: hook wedge)")
     ap.add_argument("--trials", type=int, default=4, help="tools per mode (default 4)")
-    ap.add_argument("--out-dir", type=Path, default=RESULTS)
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--out-dir", type=Path, default=None, metavar="DIR",
+                       help="write the CPU costs (robot_cost.json) into DIR (default: write nothing, only print)")
+    where.add_argument("--record", action="store_true",
+                       help="write them into the tracked bench/results/, which "
+                            "docs/results.md is made from")
     args = ap.parse_args(argv)
     if args.trials < 1:
         sys.exit("error: option --trials must be at least 1")
@@ -129,10 +134,10 @@ def main(argv: list[str] | None = None) -> None:
     for cid in args.cases:
         rec = bench_case(cases[cid], args.trials)
         records[cid] = rec
-        print(f"{cid}: CPU s per trial " + ", ".join(
+        print(f"{cid}: CPU seconds per trial " + ", ".join(
             f"{m} {rec['cpu_s_per_trial'][m]:.2f}" for m in MODES)
               + f"; light/heavy {rec['ratio_light_over_heavy']:.2f}, exact/heavy "
-              f"{rec['ratio_exact_over_heavy']:.2f}; step ms " + ", ".join(
+              f"{rec['ratio_exact_over_heavy']:.2f}; CPU ms per physics step " + ", ".join(
                   f"{k} {v:.3f}" for k, v in rec["step_cpu_ms"].items()), flush=True)
     out = {
         "machine": {"platform": platform.platform(), "python": platform.python_version(),
@@ -142,10 +147,15 @@ def main(argv: list[str] | None = None) -> None:
         "modes": list(MODES),
         "cases": records,
     }
-    args.out_dir.mkdir(parents=True, exist_ok=True)
-    path = args.out_dir / "robot_cost.json"
+    out_dir = args.out_dir or (RESULTS if args.record else None)
+    if out_dir is None:
+        print("figures not written (give --out-dir DIR, or --record to update the tracked "
+              "bench/results/robot_cost.json)")
+        return
+    out_dir.mkdir(parents=True, exist_ok=True)
+    path = out_dir / "robot_cost.json"
     path.write_text(json.dumps(out, indent=1, sort_keys=True) + "\n")
-    print(f"wrote {path}")
+    print(f"figures written to {path}")
 
 
 if __name__ == "__main__":

@@ -39,9 +39,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from recording import add_output_options, write_figures
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-RESULTS = HERE / "results" / "ros_hook.json"
+TRACKED = "ros_hook.json"
 KINDS = {"default": [], "make": ["--demonstrate-creation"]}
 
 
@@ -189,22 +191,24 @@ def inside(kinds: list[str], keep: str | None = None) -> dict:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS))
+    ap.add_argument("--kinds", nargs="+", default=list(KINDS), choices=list(KINDS),
+                    help="which runs: default (the run as it is) and make (with "
+                         "--demonstrate-creation, as make runs it); default both")
     ap.add_argument("--keep", metavar="DIR", help="keep the run folders under DIR (new)")
     ap.add_argument("--inside", action="store_true", help=argparse.SUPPRESS)
+    add_output_options(ap, TRACKED, "the comparison of the two runs (JSON)")
     args = ap.parse_args()
     if args.keep and Path(args.keep).exists():
         raise SystemExit(f"--keep {args.keep}: exists already; give a new folder")
     if args.inside:
         result = inside(args.kinds, args.keep)
-        RESULTS.write_text(json.dumps(result, indent=1) + "\n")
         for kind, e in result["runs"].items():
             c = e["comparison"]
             print(f"{kind}: trials {c['trials']}, same experiments {c['same_experiments']}, "
                   f"same outcomes {c['same_outcomes']}, same model {c['same_model']}; wall "
-                  f"{e['direct']['wall_time_s']} s direct, {e['ros']['wall_time_s']} s ros; "
-                  f"{e['ros']['round_trip']['goals']} goals")
-        print(RESULTS)
+                  f"time {e['direct']['wall_time_s']} s direct, {e['ros']['wall_time_s']} s "
+                  f"over ROS; {e['ros']['round_trip']['goals']} trajectory goals sent")
+        write_figures(args, TRACKED, result)
         return
     for prefix in (["unshare", "-n"], ["unshare", "-rn"]):
         ok = subprocess.run([*prefix, "true"], capture_output=True).returncode == 0
@@ -217,6 +221,8 @@ def main() -> None:
                ROS_DOMAIN_ID=str(150 + os.getpid() % 50), PYTHONPATH=str(ROOT))
     script = " ".join(["ip link set lo up && exec", sys.executable, str(Path(__file__).resolve()),
                        "--inside", "--kinds", *args.kinds,
+                       *(["--out", str(Path(args.out).resolve())] if args.out else []),
+                       *(["--record"] if args.record else []),
                        *(["--keep", str(Path(args.keep).resolve())] if args.keep else [])])
     sys.exit(subprocess.call([*prefix, "sh", "-c", script], env=env, cwd=ROOT))
 

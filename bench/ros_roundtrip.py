@@ -33,6 +33,8 @@ import tempfile
 import time
 from pathlib import Path
 
+from recording import add_output_options, write_figures
+
 ROOT = Path(__file__).resolve().parents[1]
 MARK = "CREATIVE_ROS_BENCH_IN_NAMESPACE"
 
@@ -146,11 +148,12 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--loads", default="0,2", help="busy processes per condition (default 0,2)")
     ap.add_argument("--nice", type=int, default=0, help="the stand-in's niceness (default 0)")
-    ap.add_argument("--goals", type=int, default=6)
+    ap.add_argument("--goals", type=int, default=6,
+                    help="trajectory goals sent per condition (default 6)")
     ap.add_argument("--wall-clock", action="store_true",
                     help="the client judges on the wall clock (default: use_sim_time)")
     ap.add_argument("--standin-root", help="run the stand-in of this checkout (a comparison)")
-    ap.add_argument("--out", default=str(ROOT / "bench/results/ros_roundtrip.json"))
+    add_output_options(ap, "ros_roundtrip.json", "the rates and round trips (JSON)")
     args = ap.parse_args()
     args.loads = [int(v) for v in args.loads.split(",")]
     if os.environ.get(MARK):
@@ -175,8 +178,6 @@ def main() -> int:
         print(r.stderr[-3000:], file=sys.stderr)
         return 1
     result = json.loads(lines[-1])
-    Path(args.out).parent.mkdir(parents=True, exist_ok=True)
-    Path(args.out).write_text(json.dumps(result, indent=1) + "\n")
     for c in result["conditions"]:
         rt = c.get("round_trip_s", {})
         print(f"load {c['load_processes']} (loadavg {c['loadavg_start'][0]:.2f}), nice "
@@ -185,7 +186,7 @@ def main() -> int:
               f"{rt.get('result', {}).get('median')} s, first feedback "
               f"{rt.get('first_feedback', {}).get('median')} s, feedbacks/goal "
               f"{c.get('feedbacks_per_goal', {}).get('median')}")
-    print(f"written {args.out}")
+    write_figures(args, "ros_roundtrip.json", result)
     return 0
 
 

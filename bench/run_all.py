@@ -19,27 +19,30 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 
+# Each Python benchmark writes its tracked file only when asked: --record
+# (bench/recording.py).
 BENCHES = [
-    ["swipl", str(HERE / "engine_bench.pl")],
-    [sys.executable, str(HERE / "bridge_bench.py")],
-    [sys.executable, str(HERE / "mesh_bench.py")],
-    [sys.executable, str(HERE / "perception_error.py")],
-    [sys.executable, str(HERE / "sim_bench.py")],
-    [sys.executable, str(HERE / "sim_wedge_bench.py")],
-    [sys.executable, str(HERE / "robot_cost_bench.py")],
-    [sys.executable, str(HERE / "decision_bench.py")],
-    [sys.executable, str(HERE / "soak_bench.py")],
-    [sys.executable, str(HERE / "bad_input_bench.py")],
+    ["swipl", str(HERE / "engine_bench.pl"), "--record"],
+    [sys.executable, str(HERE / "bridge_bench.py"), "--record"],
+    [sys.executable, str(HERE / "mesh_bench.py"), "--record"],
+    [sys.executable, str(HERE / "perception_error.py"), "--record"],
+    [sys.executable, str(HERE / "sim_bench.py"), "--record"],
+    [sys.executable, str(HERE / "sim_wedge_bench.py"), "--record"],
+    [sys.executable, str(HERE / "robot_cost_bench.py"), "--record"],
+    [sys.executable, str(HERE / "decision_bench.py"), "--record"],
+    [sys.executable, str(HERE / "soak_bench.py"), "--record"],
+    [sys.executable, str(HERE / "bad_input_bench.py"), "--record"],
 ]
-LEARNING = [sys.executable, str(HERE / "learning_bench.py")]
-RUNS = [[sys.executable, str(HERE / "release_runs.py")],
-        [sys.executable, str(HERE / "video_cost_bench.py")]]
+LEARNING = [sys.executable, str(HERE / "learning_bench.py"), "--record"]
+RUNS = [[sys.executable, str(HERE / "release_runs.py"), "--record"],
+        [sys.executable, str(HERE / "video_cost_bench.py"), "--record"]]
 
 
 def main() -> int:
     """Run the benchmarks; return 1 if any failed."""
     ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--quick", action="store_true", help="leave out the whole runs")
+    ap.add_argument("--quick", action="store_true",
+                    help="leave out the learning benchmark and the whole runs")
     args = ap.parse_args()
     (HERE / "results").mkdir(exist_ok=True)
     failed = []
@@ -50,7 +53,8 @@ def main() -> int:
         t0 = time.perf_counter()
         print(f"== {Path(cmd[1]).name}", flush=True)
         rc = subprocess.call(cmd, cwd=ROOT)
-        print(f"== {Path(cmd[1]).name}: exit {rc} in {time.perf_counter() - t0:.1f} s",
+        print(f"== {Path(cmd[1]).name}: exit code {rc}, wall time "
+              f"{time.perf_counter() - t0:.1f} s",
               flush=True)
         if rc != 0:
             failed.append(Path(cmd[1]).name)

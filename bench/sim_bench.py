@@ -172,7 +172,12 @@ def main(argv: list[str] | None = None) -> None:
                     help="the trainer places the tool; no robot")
     ap.add_argument("--extra", action="append", default=[], metavar="NAME=POSE",
                     help="one more pose for the demonstrated tool, e.g. flat=0.03,0,1.5708")
-    ap.add_argument("--out-dir", type=Path, default=RESULTS)
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--out-dir", type=Path, default=None, metavar="DIR",
+                       help="write each case's table (sim_<case>[_by_hand].json) into DIR (default: write nothing, only print)")
+    where.add_argument("--record", action="store_true",
+                       help="write them into the tracked bench/results/, which "
+                            "docs/results.md is made from")
     args = ap.parse_args(argv)
     logging.basicConfig(level=logging.WARNING)
     cases = {cid: m for cid, m in load_cases().items() if m.backend == "pybullet"}
@@ -190,12 +195,19 @@ def main(argv: list[str] | None = None) -> None:
         chosen = [cid for cid in chosen if not refusals[cid]]
     for cid in chosen:
         record = bench_case(cases[cid], args)
-        out = args.out_dir / f"sim_{cid}{'_by_hand' if args.by_hand else ''}.json"
-        out.parent.mkdir(parents=True, exist_ok=True)
-        out.write_text(json.dumps(record, indent=1, sort_keys=True) + "\n")
         print(record["table_markdown"])
         print(json.dumps({k: v for k, v in record.items()
                           if k not in ("trials", "table_markdown")}, indent=1))
+        out_dir = args.out_dir or (RESULTS if args.record else None)
+        name = f"sim_{cid}{'_by_hand' if args.by_hand else ''}.json"
+        if out_dir is None:
+            print(f"figures not written (give --out-dir DIR, or --record to update the "
+                  f"tracked bench/results/{name})")
+            continue
+        out = out_dir / name
+        out.parent.mkdir(parents=True, exist_ok=True)
+        out.write_text(json.dumps(record, indent=1, sort_keys=True) + "\n")
+        print(f"figures written to {out}")
 
 
 if __name__ == "__main__":

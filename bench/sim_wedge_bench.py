@@ -4,13 +4,15 @@ For every case whose pose skill the trainer can do by hand (its primitive has th
 ``by_hand`` option, e.g. ``place_on_floor``), runs ``bench/sim_bench.py --by-hand``:
 every tool in every variant put at the demonstration's pose without the robot, then
 the tool action, judged by the oracle. The table with the arm placing comes from
-``bench/sim_bench.py``. Writes ``bench/results/sim_<case>_by_hand.json``.
+``bench/sim_bench.py``. Prints each table; ``--out-dir DIR`` (or ``--record``: the
+tracked ``bench/results/``) writes ``sim_<case>_by_hand.json``.
 
-    .venv/bin/python bench/sim_wedge_bench.py
+    .venv/bin/python bench/sim_wedge_bench.py [--out-dir DIR | --record]
 """
 
 from __future__ import annotations
 
+import argparse
 import sys
 from pathlib import Path
 
@@ -33,6 +35,16 @@ def by_hand_cases() -> list[str]:
 
 
 if __name__ == "__main__":
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    where = ap.add_mutually_exclusive_group()
+    where.add_argument("--out-dir", metavar="DIR",
+                       help="write each case's table (sim_<case>_by_hand.json) into DIR "
+                            "(default: write nothing, only print)")
+    where.add_argument("--record", action="store_true",
+                       help="write them into the tracked bench/results/")
+    args = ap.parse_args()
     cases = by_hand_cases()
     if cases:
-        sim_bench_main([*cases, "--by-hand"])
+        sim_bench_main([*cases, "--by-hand",
+                        *(["--out-dir", args.out_dir] if args.out_dir else []),
+                        *(["--record"] if args.record else [])])

@@ -20,6 +20,8 @@ import statistics
 import time
 from pathlib import Path
 
+from recording import add_output_options, write_figures
+
 from creative_py.bridge import Engine
 from creative_py.case import load_cases
 from creative_py.learning.poses import pose_resolver
@@ -51,9 +53,9 @@ def trial_plan():
 
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--trials", type=int, default=500)
-    ap.add_argument("--out", type=Path,
-                    default=Path(__file__).resolve().parent / "results" / "soak.json")
+    ap.add_argument("--trials", type=int, default=500,
+                    help="trials to run, round robin over the cases (default 500)")
+    add_output_options(ap, "soak.json", "the memory and time checkpoints (JSON)")
     args = ap.parse_args(argv)
     marks = sorted({c for c in CHECKPOINTS if c <= args.trials} | {args.trials})
     records, walls, outcomes = [], [], {}
@@ -80,9 +82,8 @@ def main(argv: list[str] | None = None) -> None:
                                "max": round(max(walls), 3)},
               "outcomes": outcomes,
               "total_wall_s": round(time.perf_counter() - t_start, 1)}
-    args.out.parent.mkdir(parents=True, exist_ok=True)
-    args.out.write_text(json.dumps(result, indent=2) + "\n")
     print(json.dumps({k: v for k, v in result.items() if k != "checkpoints"}))
+    write_figures(args, "soak.json", result, indent=2)
 
 
 if __name__ == "__main__":

@@ -36,6 +36,8 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 sys.path.insert(0, str(ROOT))
 
+from recording import add_output_options, output_path, write_figures  # noqa: E402
+
 from creative_py.case import get_case, load_cases  # noqa: E402
 from creative_py.learning.strategies import STRATEGIES  # noqa: E402
 from creative_py.sweep import (SweepOptions, parse_ints, plan_runs, read_csv,  # noqa: E402
@@ -130,8 +132,8 @@ def cmd_table(args) -> int:
                                      if r["world_seed"] != ""}),
               "machine": {"cores": os.cpu_count()} if args.source else _machine(),
               "records": records}
-    (HERE / "results" / "strategies.json").write_text(json.dumps(result, indent=1) + "\n")
     print(table_md(records))
+    write_figures(args, "strategies.json", result)
     return 0
 
 
@@ -170,9 +172,8 @@ def cmd_creation(args) -> int:
               "created_eval_trials": sum(len(p["created_eval"] or []) for p in ok),
               "machine": {"cores": os.cpu_count()} if args.source else _machine(),
               "per_world": per_world}
-    path = HERE / "results" / f"creation_worlds_{args.case}.json"
-    path.write_text(json.dumps(result, indent=1) + "\n")
     print({k: v for k, v in result.items() if k != "per_world"})
+    write_figures(args, f"creation_worlds_{args.case}.json", result)
     return 0
 
 
@@ -195,11 +196,11 @@ def cmd_speedup(args) -> int:
               "cores": os.cpu_count(),
               "serial_run_s": [r["wall_time_s"] for r in serial.rows],
               "ray_run_s": [r["wall_time_s"] for r in ray.rows]}
-    path = HERE / "results" / "sweep_speedup.json"
-    recorded = json.loads(path.read_text()) if path.exists() else {}
-    recorded["fresh_workers" if args.fresh_workers else "reused_workers"] = result
-    path.write_text(json.dumps(recorded, indent=1) + "\n")
     print(result)
+    path = output_path(args, "sweep_speedup.json")
+    recorded = json.loads(path.read_text()) if path is not None and path.exists() else {}
+    recorded["fresh_workers" if args.fresh_workers else "reused_workers"] = result
+    write_figures(args, "sweep_speedup.json", recorded)
     return 0
 
 
@@ -207,20 +208,36 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = ap.add_subparsers(dest="what", required=True)
-    t = sub.add_parser("table")
-    t.add_argument("--from", dest="source")
-    t.add_argument("--cases", nargs="+", default=sorted(load_cases()))
-    t.add_argument("--world-seeds", default="0-19")
-    c = sub.add_parser("creation")
-    c.add_argument("--from", dest="source")
-    c.add_argument("--case", required=True)
-    c.add_argument("--world-seeds", default="0-19")
-    s = sub.add_parser("speedup")
-    s.add_argument("--cases", nargs="+", default=sorted(load_cases()))
-    s.add_argument("--strategy", default="informative")
-    s.add_argument("--phase", default="use")
-    s.add_argument("--world-seeds", default="0-3")
-    s.add_argument("--fresh-workers", action="store_true")
+    source = "read the runs of this sweep folder (its sweep.csv) instead of running them"
+    t = sub.add_parser("table", help="trials to learn per strategy and case, over drawn "
+                                     "worlds")
+    t.add_argument("--from", dest="source", metavar="SWEEP_FOLDER", help=source)
+    t.add_argument("--cases", nargs="+", default=sorted(load_cases()),
+                   help="the cases (default: every case)")
+    t.add_argument("--world-seeds", default="0-19",
+                   help="the drawn worlds, as --world-seed takes them (default 0-19)")
+    add_output_options(t, "strategies.json", "the table's figures (JSON)")
+    c = sub.add_parser("creation", help="the creation phase of one case over drawn worlds")
+    c.add_argument("--from", dest="source", metavar="SWEEP_FOLDER", help=source)
+    c.add_argument("--case", required=True, help="the case")
+    c.add_argument("--world-seeds", default="0-19",
+                   help="the drawn worlds, as --world-seed takes them (default 0-19)")
+    add_output_options(c, "creation_worlds_<case>.json", "the per-world creation figures "
+                                                          "(JSON)")
+    s = sub.add_parser("speedup", help="the same sweep serially and on ray's workers")
+    s.add_argument("--cases", nargs="+", default=sorted(load_cases()),
+                   help="the cases (default: every case)")
+    s.add_argument("--strategy", default="informative",
+                   help="the strategy of every run (default informative)")
+    s.add_argument("--phase", default="use", help="the phase the runs stop after "
+                                                  "(default use)")
+    s.add_argument("--world-seeds", default="0-3",
+                   help="the drawn worlds, as --world-seed takes them (default 0-3)")
+    s.add_argument("--fresh-workers", action="store_true",
+                   help="a fresh ray worker process for every run (default: reused)")
+    add_output_options(s, "sweep_speedup.json", "the two wall times (JSON; the file's "
+                                                 "figures of the other worker mode are "
+                                                 "kept)")
     args = ap.parse_args()
     return {"table": cmd_table, "creation": cmd_creation, "speedup": cmd_speedup}[args.what](args)
 

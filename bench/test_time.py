@@ -27,9 +27,11 @@ from collections import defaultdict
 from datetime import datetime, timezone
 from pathlib import Path
 
+from recording import add_output_options, output_path
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-RESULTS = HERE / "results" / "test_time.json"
+TRACKED = "test_time.json"
 
 
 def _children_cpu() -> float:
@@ -67,8 +69,13 @@ def counts(prolog_out: str, python_out: str) -> dict:
 
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--label", default=None)
-    ap.add_argument("--top", type=int, default=40)
+    ap.add_argument("--label", default=None,
+                    help="a name for this measurement in the file's history (e.g. the change "
+                         "it measures)")
+    ap.add_argument("--top", type=int, default=40,
+                    help="the dearest tests kept, by CPU seconds (default 40)")
+    add_output_options(ap, TRACKED, "the times (JSON; the file's earlier measurement moves "
+                                    "to its history)")
     args = ap.parse_args(argv)
     env = dict(os.environ)
     env["PYTHONPATH"] = os.pathsep.join(p for p in (str(ROOT), str(HERE),
@@ -105,20 +112,26 @@ def main(argv: list[str] | None = None) -> int:
                           sorted(by_file.items(), key=lambda kv: -kv[1][0])},
         "dearest_tests": sorted(tests, key=lambda t: -t["cpu_s"])[:args.top],
     }
-    previous = json.loads(RESULTS.read_text()) if RESULTS.exists() else {}
+    print(f"make test: {entry['total_wall_s']} s wall, {entry['total_cpu_s']} s CPU "
+          f"(load average {entry['load_average_before'][0]} before, "
+          f"{entry['load_average_after'][0]} after)")
+    results = output_path(args, TRACKED)
+    if results is None:
+        print(f"figures not written (give --out FILE, or --record to update the tracked "
+              f"bench/results/{TRACKED})")
+        return 0 if prolog["exit_code"] == 0 and python["exit_code"] == 0 else 1
+    previous = json.loads(results.read_text()) if results.exists() else {}
     history = previous.get("history", [])
     if previous.get("latest"):
         history.append({k: previous["latest"].get(k) for k in
                         ("at", "label", "counts", "load_average_before", "load_average_after",
                          "prolog", "python", "total_wall_s", "total_cpu_s")})
-    RESULTS.write_text(json.dumps({
+    results.write_text(json.dumps({
         "what": "make test (plunit, then pytest -m 'not slow' -n auto): wall and CPU "
                 "seconds (user + system, the commands and their children); per test "
                 "through bench/_test_cpu.py",
         "latest": entry, "history": history}, indent=2) + "\n")
-    print(f"make test: {entry['total_wall_s']} s wall, {entry['total_cpu_s']} s CPU "
-          f"(load {entry['load_average_before'][0]} -> {entry['load_average_after'][0]}):"
-          f" {RESULTS}")
+    print(f"figures written to {results}")
     return 0 if prolog["exit_code"] == 0 and python["exit_code"] == 0 else 1
 
 

@@ -28,6 +28,7 @@ Not a test: ~10 s a run; 7 sweeps of 20 worlds take ~15 min on 2 cores.
 
 from __future__ import annotations
 
+import argparse
 import json
 import re
 import statistics
@@ -158,16 +159,35 @@ def _pairs(text: str) -> tuple[tuple[str, str, str, bool], ...]:
     return tuple(out)
 
 
+def parse(argv: list[str] | None = None) -> argparse.Namespace:
+    """Return the command line's arguments (``run`` or ``table``, see the module's
+    docstring)."""
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter,
+                                 epilog="\n".join(__doc__.splitlines()[2:]))
+    ap.add_argument("command", choices=("run", "table"),
+                    help="run: the sweeps; table: the table of sweeps already run")
+    ap.add_argument("--out", type=Path, required=True, metavar="DIR",
+                    help="the folder of the sweeps (run writes it, table reads it)")
+    ap.add_argument("--pairs", required=True, metavar="PRIOR:CASE,...",
+                    help="the pairs, PRIOR:CASE each (PRIOR!:CASE: an edited, wrong prior)")
+    ap.add_argument("--num-cpus", type=int, default=2,
+                    help="ray's CPUs for the sweeps (default 2)")
+    ap.add_argument("--worlds", default="1-20",
+                    help="the world seeds, as --world-seed takes them (default 1-20)")
+    ap.add_argument("--json", type=Path, default=None, metavar="FILE",
+                    help="table: also write the table's figures (JSON) to FILE (e.g. the "
+                         "tracked bench/results/transfer.json; default: only print)")
+    return ap.parse_args(argv)
+
+
 if __name__ == "__main__":
-    cmd, rest = sys.argv[1], sys.argv[2:]
-    out = Path(rest[rest.index("--out") + 1]).resolve()
-    PAIRS = _pairs(rest[rest.index("--pairs") + 1])
-    cpus = int(rest[rest.index("--num-cpus") + 1]) if "--num-cpus" in rest else 2
-    worlds = (parse_ints(rest[rest.index("--worlds") + 1], "--worlds") if "--worlds" in rest
-              else list(range(1, 21)))
-    if cmd == "run":
-        run(out, worlds, cpus)
+    args = parse()
+    PAIRS = _pairs(args.pairs)
+    worlds = parse_ints(args.worlds, "--worlds")
+    if args.command == "run":
+        run(args.out.resolve(), worlds, args.num_cpus)
     else:
-        res = table(out, worlds)
-        if "--json" in rest:
-            Path(rest[rest.index("--json") + 1]).write_text(json.dumps(res, indent=1) + "\n")
+        res = table(args.out.resolve(), worlds)
+        if args.json is not None:
+            args.json.write_text(json.dumps(res, indent=1) + "\n")

@@ -6,9 +6,10 @@ first) once with ``--video none`` and once with ``--video key``, one after the o
 run its wall time, the CPU time of the process and its children (the clip encoders are
 forked children), the load average before it, and whether the two ``trials.jsonl``
 agree trial for trial (tool, tested literal, outcome, reason, pose): recording must not
-change the physics. Writes ``bench/results/video_cost.json``.
+change the physics. Prints one JSON line a pair; ``--out FILE`` (or ``--record``: the
+tracked ``bench/results/video_cost.json``) writes them.
 
-    .venv/bin/python bench/video_cost_bench.py [--case hook] [--rounds 1]
+    .venv/bin/python bench/video_cost_bench.py [--case hook] [--rounds 1] [--out FILE | --record]
 """
 
 from __future__ import annotations
@@ -23,6 +24,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
+from recording import add_output_options, write_figures
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
@@ -58,8 +61,10 @@ def main() -> int:
     """Run the pairs and write the record."""
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--case", default="hook")
-    ap.add_argument("--rounds", type=int, default=1)
+    ap.add_argument("--case", default="hook", help="the case run (default hook)")
+    ap.add_argument("--rounds", type=int, default=1,
+                    help="pairs of runs, alternating which goes first (default 1)")
+    add_output_options(ap, "video_cost.json", "the pairs' times (JSON)")
     args = ap.parse_args()
     base = Path(tempfile.mkdtemp(prefix="video-cost-"))
     pairs = []
@@ -77,11 +82,11 @@ def main() -> int:
             print(json.dumps(pairs[-1]), flush=True)
     finally:
         shutil.rmtree(base, ignore_errors=True)
-    (HERE / "results" / "video_cost.json").write_text(json.dumps({
+    write_figures(args, "video_cost.json", {
         "bench": "video_cost", "case": args.case, "seed": 0,
         "command": f"creative run {args.case} --seed 0 --video none|key",
         "cores": os.cpu_count(), "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-        "pairs": pairs}, indent=1) + "\n")
+        "pairs": pairs})
     return 0
 
 

@@ -33,13 +33,14 @@ from creative_py.bridge.terms import (
     encode,
     fact_term,
     is_ground,
+    readable,
     variables,
 )
 
 __all__ = [
     "FAILED", "BridgeError", "fact_term", "BridgeProtocolError", "Compound", "Engine",
     "EngineStateError", "LoadMessage", "LoadReport", "PlString", "PrologError",
-    "PrologFailed", "PrologFileNotFoundError", "PrologLoadError", "PrologSyntaxError",
+    "readable", "PrologFailed", "PrologFileNotFoundError", "PrologLoadError", "PrologSyntaxError",
     "Term", "Var", "WrongThreadError", "clause", "clause_parts", "conj", "conj_to_list",
     "decode", "encode", "is_ground", "variables",
 ]

@@ -27,7 +27,10 @@ right-nested ``","`` conjunction as body; :func:`clause`, :func:`conj` and
 The bridge's one Prolog-text writer, :func:`encode`, lives here with the terms it
 writes, so ``str()`` of a :class:`Compound`, :class:`Var` or :class:`PlString` is its
 Prolog syntax (the clause operators ``:-``, ``,``, ``;`` and ``->`` written infix) and
-this module imports nothing of the project. Requests travel to Prolog as text that
+this module imports nothing of the project. :func:`readable` writes a term for a person
+(a reason, a headline): the pairs ``X-Y`` infix too and the variables lettered ``A``,
+``B``, ... as SWI-Prolog prints them; never ``str()`` or ``repr()`` a Python list of
+terms, which shows the dataclasses (``[Compound(name='-', ...)]``). Requests travel to Prolog as text that
 ``prolog/api.pl`` parses with ``term_string/3``; :func:`encode_request` writes a whole
 request. Nothing else in the project may build Prolog text: use these functions or
 ``str()`` of a term. Replies are read by :mod:`creative_py.bridge.codec`.
@@ -276,6 +279,9 @@ _INFIX = {
     "->": (1050, "xfy"),
     ",": (1000, "xfy"),
 }
+_READABLE_INFIX = {**_INFIX, "-": (500, "yfx")}
+"""The operators :func:`readable` writes infix: the clause operators and the pair
+``Key-Value`` (``yfx`` 500, as in SWI-Prolog)."""
 _ARG_PRIORITY = 999
 _TOP_PRIORITY = 1200
 
@@ -356,7 +362,32 @@ def encode(value: Any, *, operators: bool = False) -> str:
         A value is not part of the term model (``bool``, ``tuple``, ``dict``, ``None``,
         ...); the message names the type and where it was found.
     """
-    return _encode(value, operators, _TOP_PRIORITY)
+    return _encode(value, _INFIX if operators else {}, _TOP_PRIORITY)
+
+
+def readable(value: Any) -> str:
+    """Return a term as a person reads it, for reasons, headlines and reports.
+
+    The text :func:`encode` writes with ``operators=True``, with the pairs ``K-V``
+    infix too, and every named variable renamed ``A``, ``B``, ... ``Z``, ``A1``, ... in
+    order of first appearance (the engine's fresh ``_G0``, ``_G1`` read as SWI-Prolog
+    prints them), so ``[handle_length(_G0,long)-tried]`` reads
+    ``[handle_length(A,long)-tried]``. A Python list of terms is written as a Prolog
+    list. It reads back as the same term up to the variables' names.
+
+    Raises
+    ------
+    ValueError, TypeError
+        As :func:`encode`.
+    """
+    names = {v.name: Var(_letter(i)) for i, v in enumerate(variables(value))}
+    lettered = map_variables(value, lambda v: names.get(v.name, v))
+    return _encode(lettered, _READABLE_INFIX, _TOP_PRIORITY)
+
+
+def _letter(index: int) -> str:
+    """``A`` .. ``Z``, then ``A1`` .. ``Z1``, ... (SWI-Prolog's ``'$VAR'(N)`` names)."""
+    return chr(ord("A") + index % 26) + (str(index // 26) if index >= 26 else "")
 
 
 def argument_suffix(index: int) -> str:
@@ -377,7 +408,7 @@ def encode_request(op: str, args: Sequence[Any], *, separate_variables: bool = T
     if not separate_variables or len(args) == 1:
         return encode(Compound(op, tuple(args)))
     parts = [
-        _encode(arg, False, _ARG_PRIORITY, (Compound(op, tuple(args)), i), False,
+        _encode(arg, {}, _ARG_PRIORITY, (Compound(op, tuple(args)), i), False,
                 argument_suffix(i))
         for i, arg in enumerate(args)
     ]
@@ -393,8 +424,10 @@ def _where(path: tuple) -> str:
     return f"list element {index + 1}"
 
 
-def _encode(value: Any, operators: bool, max_priority: int, path: tuple = (),
+def _encode(value: Any, operators: dict, max_priority: int, path: tuple = (),
             operand: bool = False, suffix: str = "") -> str:
+    # ``operators`` maps the names written infix to (priority, type): {} (the wire
+    # format), _INFIX or _READABLE_INFIX.
     # ``path`` is (parent, index) of value, turned into text only for an error message;
     # ``suffix`` is appended to every variable name (see encode_request).
     if isinstance(value, str):
@@ -452,20 +485,22 @@ def _chain(value: Compound) -> list:
     return items
 
 
-def _encode_binary(value: Compound, operators: bool, max_priority: int, operand: bool,
+def _encode_binary(value: Compound, operators: dict, max_priority: int, operand: bool,
                    suffix: str) -> str:
     items = _chain(value)
     links = len(items) - 1
-    if operators and value.name in _INFIX:
-        priority, kind = _INFIX[value.name]
+    if value.name in operators:
+        priority, kind = operators[value.name]
         if kind != "xfy":
             items, links = [value.args[0], value.args[1]], 1
-        left_max = priority - 1
+        left_max = priority if kind == "yfx" else priority - 1
         right_max = priority if kind == "xfy" else priority - 1
-        sep = ", " if value.name == "," else f" {value.name} "
+        sep = {",": ", ", "-": "-"}.get(value.name, f" {value.name} ")
         parts = [_encode(item, operators, left_max, (value, 0), True, suffix)
                  for item in items[:-1]]
         parts.append(_encode(items[-1], operators, right_max, (value, 1), True, suffix))
+        if sep == "-" and parts[-1][:1] in "-+":  # a-(-1) is written a- -1
+            parts[-1] = " " + parts[-1]
         text = sep.join(parts)
         return "(" + text + ")" if priority > max_priority else text
     functor = _atom(value.name) + "("

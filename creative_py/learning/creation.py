@@ -38,7 +38,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable, Optional
 
-from creative_py.bridge import Compound, Engine, Term
+from creative_py.bridge import Compound, Engine, Term, readable
 from creative_py.learning.trials import TaskState, TrialRecord, TrialRunner, term_text
 from creative_py.records.summary import print_summary
 from creative_py.report.contents import readable_term
@@ -180,7 +180,7 @@ class ToolCreator:
         while len(created) < self.max_tools:
             reply = self.engine.next_tool(self.case, vs, tried, runner.task_facts(task))
             if reply.name == "exhausted":
-                exhausted = term_text(reply.args[0])
+                exhausted = readable(reply.args[0])
                 runner.progress(f"no literal left to generalise: {exhausted}")
                 break
             replaced, _general, instance, _struct, _dims = reply.args

@@ -30,7 +30,7 @@ from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.learning.options import RunOptions, read_run_json, run_json
 from creative_py.learning.prior import load_prior
 from creative_py.learning.trials import TrialRunner
-from creative_py.records.folder import RunFolder, read_resume
+from creative_py.records.folder import RunFolder, read_resume, running_pid
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
@@ -263,10 +263,12 @@ def _stopped_trial(run_dir: Path) -> Optional[dict[str, Any]]:
 
 def _interrupted_folders(out: Path, case: str, seed: int) -> list[Path]:
     """Return the run folders under ``out`` of ``case`` and ``seed`` that an interruption
-    left unfinished (a ``run.json``, no ``summary.json``), oldest first."""
+    left unfinished (a ``run.json``, no ``summary.json``, and no process holding its
+    lock: a run still going beside the new one is not interrupted), oldest first."""
     try:
         found = [p for p in out.glob(f"{case}-*-s{seed}")
-                 if (p / "run.json").is_file() and not (p / "summary.json").exists()]
+                 if (p / "run.json").is_file() and not (p / "summary.json").exists()
+                 and not running_pid(p)]
     except OSError:
         return []
     return sorted(found, key=lambda p: p.name)

@@ -35,7 +35,8 @@ import time
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any, Callable, Optional, Sequence
 
-from creative_py.bridge import Compound, Engine, PrologError, PrologFailed, Term, fact_term
+from creative_py.bridge import (Compound, Engine, PrologError, PrologFailed, Term, encode,
+                                fact_term)
 from creative_py.case import CaseManifest
 from creative_py.learning import interrupts
 from creative_py.learning.clips import ClipKeeper
@@ -69,8 +70,9 @@ class TaskState:
 
 
 def term_text(t: Term) -> str:
-    """Return a term as Prolog text (for logs and JSON)."""
-    return str(t)
+    """Return a term as Prolog text (for logs and JSON): the bridge's writer, so a
+    list of terms is a Prolog list, not the Python ``repr`` of its items."""
+    return encode(t, operators=True)
 
 
 def pose_numbers(pose: Term) -> tuple[float, ...]:

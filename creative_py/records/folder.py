@@ -22,7 +22,8 @@ Layout (docs/architecture.md, section 5)::
 
 A run folder is locked for the life of the run that writes it (:meth:`RunFolder.create`,
 :meth:`RunFolder.open`): a second run or resume of the same folder is refused with
-:class:`FolderInUse`. A resumed run reads its trials through :func:`read_resume`, which
+:class:`FolderInUse`, and :func:`running_pid` tells a run still going (locked) from one
+that was interrupted (unlocked, no ``summary.json``). A resumed run reads its trials through :func:`read_resume`, which
 refuses any invalid line (a torn last line aside), and keeps the folder *sealed* while
 it replays them: nothing is written (no rewrite of ``trials.jsonl``, no snapshot) until
 the replay has been checked and the first new trial runs (:meth:`RunFolder.unseal`).
@@ -206,6 +207,35 @@ class RunFolder:
     def write_json(self, name: str, data: Any) -> Path:
         """Write a JSON file of the run atomically."""
         return write_atomic(self.path / name, json.dumps(jsonable(data), indent=2) + "\n")
+
+
+def running_pid(run_dir: Path) -> str:
+    """Return the pid of the process running (or resuming) the run folder, or ``""``
+    when no process holds its lock: the run finished, was interrupted, or is a folder
+    without a ``.lock``.
+
+    The lock is only looked at, never taken (a run starting or resuming the folder at
+    that moment is not refused): the holder comes from Linux's ``/proc/locks``; where
+    that cannot be read, a shared ``flock`` is tried and at once released.
+    """
+    try:
+        fd = os.open(Path(run_dir) / LOCK_NAME, os.O_RDONLY)
+    except OSError:
+        return ""
+    try:
+        pid = _lock_holder(fd)
+        if pid or os.path.exists("/proc/locks"):
+            return pid
+        try:
+            fcntl.flock(fd, fcntl.LOCK_SH | fcntl.LOCK_NB)
+        except OSError as exc:
+            if exc.errno in (errno.EWOULDBLOCK, errno.EAGAIN, errno.EACCES):
+                return os.read(fd, 32).decode("ascii", "replace").strip() or "?"
+            return ""
+        fcntl.flock(fd, fcntl.LOCK_UN)
+        return ""
+    finally:
+        os.close(fd)
 
 
 def _lock_holder(fd: int) -> str:

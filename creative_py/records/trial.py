@@ -209,17 +209,84 @@ def _cell(name: str) -> Callable[[TrialRecord], str]:
 
 
 def verdict_words(verdict: Any) -> str:
-    """Return a trial's measured verdict (the ``verdict`` field) in words: the
-    guard's measure of a stopped motion first, then the oracle's (empty for none)."""
+    """Return a trial's measured verdict (the ``verdict`` field) in words, for people:
+    the guard's measure of a stopped motion first, then the oracle's (empty for none),
+    each as :func:`measure_words` writes it."""
     if not isinstance(verdict, dict):
         return ""
     parts = []
     stop = verdict.get("stop")
     if isinstance(stop, dict) and stop.get("text"):
-        parts.append(f"stopped: {stop['text']}")
+        parts.append(f"stopped: {measure_words(stop)}")
     if verdict.get("text"):
-        parts.append(str(verdict["text"]))
+        parts.append(measure_words(verdict))
     return " | ".join(parts)
+
+
+def measure_words(measure: dict[str, Any]) -> str:
+    """Return one measured verdict (a :class:`~creative_py.simulator.types.Verdict`'s
+    ``to_dict()``) in words, one unit per quantity: lengths in millimetres and angles in
+    degrees (the pose column's units), the limit's source as words (``tube1.mouth_x``
+    is ``tube1's mouth x``), then the other measures, their lengths in millimetres too.
+    A verdict without its numbers (an older record) is its text, lengths in mm."""
+    text = str(measure.get("text") or "")
+    quantity, value = measure.get("quantity"), measure.get("value")
+    threshold, unit = measure.get("threshold"), measure.get("unit")
+    if not isinstance(quantity, str) or not isinstance(unit, str) or "(needs " not in text:
+        return lengths_in_mm(text)
+    head = f"{quantity} {_amount(value, unit)}"
+    relation = measure.get("relation")
+    if isinstance(relation, str) and relation:
+        source = limit_words(measure.get("threshold_name"))
+        head += (f" (needs {relation} {_amount(threshold, unit)}"
+                 + (f"; the limit: {source}" if source else "") + ")")
+    _, sep, detail = text.partition("); ")
+    return head + (f"; {lengths_in_mm(detail)}" if sep and detail else "")
+
+
+def _amount(value: Any, unit: str) -> str:
+    """A measured number with its unit: metres as millimetres, radians as degrees."""
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return "unmeasured"
+    if unit == "m":
+        return f"{value * 1000:.1f} mm"
+    if unit == "rad":
+        return f"{math.degrees(value):.1f} deg"
+    return f"{value:.4g} {unit}".rstrip()
+
+
+_LIMIT_NAME = re.compile(r"\b([A-Za-z]\w*)\.([A-Za-z_]\w*)")
+_UNIT_WORD = re.compile(r"_(m|mm|rad|deg|s|n)\b")
+
+
+def limit_words(name: Any) -> str:
+    """Return where a limit comes from in words: a scene expression ``tube1.mouth_x -
+    0.05`` as ``tube1's mouth x - 0.05``, an option's key ``max_tracking_error`` as
+    ``max tracking error``, its unit suffix (``grasp_slip_max_rad``) left out (the
+    number beside it has its unit); ``""`` for none."""
+    if not isinstance(name, str) or not name.strip():
+        return ""
+    text = _LIMIT_NAME.sub(r"\1's \2", name.strip())
+    return _UNIT_WORD.sub("", text).replace("_", " ")
+
+
+_LENGTH = re.compile(r"(?<![\w.])(-?\d+(?:\.(\d+))?) (m|cm)\b")
+_POINT = re.compile(r"\((-?\d+(?:\.\d+)?(?:, -?\d+(?:\.\d+)?)+)\) m\b")
+
+
+def lengths_in_mm(text: str) -> str:
+    """Return ``text`` with every length written in metres or centimetres (``1.1 cm``,
+    ``0.8500 m``, a point ``(0.978, -0.250, -0.052) m``) in millimetres, to the same
+    precision (``11 mm``, ``850.0 mm``, ``(978, -250, -52) mm``): one unit for every
+    length in a report cell."""
+    def mm(number: str, unit: str) -> str:
+        decimals = len(number.partition(".")[2])
+        scale, shift = (1000, 3) if unit == "m" else (10, 1)
+        return f"{float(number) * scale:.{max(0, decimals - shift)}f}"
+
+    text = _POINT.sub(lambda m: "(" + ", ".join(mm(x, "m") for x in m.group(1).split(", "))
+                      + ") mm", text)
+    return _LENGTH.sub(lambda m: f"{mm(m.group(1), m.group(3))} mm", text)
 
 
 def verdict_lines(verdict: Any) -> list[str]:
@@ -263,7 +330,8 @@ def reason_text(record: TrialRecord) -> str:
     """Return the reason cell of the reports: the reason and, after it, the measured
     verdict (``reason -- measured``; ``-`` for neither)."""
     measured = verdict_words(record.verdict)
-    text = " -- ".join(t for t in (record.reason, measured) if t)
+    reason = lengths_in_mm(record.reason) if record.reason else record.reason
+    text = " -- ".join(t for t in (reason, measured) if t)
     return text or "-"
 
 
@@ -379,4 +447,5 @@ def jsonable(value: Any) -> Any:
 
 
 __all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
-           "reason_text", "trial_columns", "verdict_lines", "verdict_words"]
+           "lengths_in_mm", "limit_words", "measure_words", "reason_text", "trial_columns",
+           "verdict_lines", "verdict_words"]

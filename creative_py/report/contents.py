@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Callable
 
-from creative_py.records.folder import read_records
+from creative_py.records.folder import read_records, running_pid
 from creative_py.records.summary import (CreatedToolSummary, RunSummary, VideoEntry,
                                          as_summary)
 from creative_py.records.trial import TrialRecord, trial_columns
@@ -109,6 +109,11 @@ class RunContents:
         older folder its ``--max-trials``, else None).
     paper_trials : int or None
         The paper's count of tool-use trials for the case, from ``summary.json``.
+    running : str
+        The pid of the process still writing the folder (it holds the folder's lock:
+        :func:`creative_py.records.folder.running_pid`), ``""`` when none does.
+    case : str or None
+        The case of the run, from ``run.json`` (what ``--resume`` needs).
     """
 
     path: Path
@@ -123,6 +128,8 @@ class RunContents:
     pose_units: dict[str, str] = field(default_factory=dict)
     budget: int | None = None
     paper_trials: int | None = None
+    running: str = ""
+    case: str | None = None
 
     def __post_init__(self) -> None:
         # A summary given as a dict (built by hand) is read as the reports read a file:
@@ -171,7 +178,35 @@ def read_run(run_dir: Path | str) -> RunContents:
         plot="trials.png" if (root / "trials.png").is_file() else None,
         clips=_clips(root, summary, warnings), tools=_tools(root, summary, warnings),
         pddl_files=[n for n in ("domain.pddl", "problem.pddl") if (root / n).is_file()],
-        warnings=warnings, pose_units=units, budget=budget, paper_trials=paper)
+        warnings=warnings, pose_units=units, budget=budget, paper_trials=paper,
+        running="" if (root / "summary.json").is_file() else running_pid(root),
+        case=_run_case(root))
+
+
+def _run_case(root: Path) -> str | None:
+    """The case ``run.json`` names (None without a readable one)."""
+    try:
+        case = json.loads((root / "run.json").read_text(encoding="utf-8")).get("case")
+    except (OSError, ValueError, AttributeError):
+        return None
+    return case if isinstance(case, str) and case else None
+
+
+def state_text(run: RunContents) -> str:
+    """Return what a folder without ``summary.json`` is, in a sentence: a run still
+    going (a process holds its lock) or one that was interrupted, with the command
+    that resumes it (``""`` for a finished run)."""
+    if (run.path / "summary.json").is_file():
+        return ""
+    n = len(run.trials)
+    trials = f"{n} trial{'s' if n != 1 else ''}"
+    if run.running:
+        return (f"Still running (process {run.running}): {trials} recorded so far; the "
+                "summary and the rest of the report come when it ends.")
+    again = (f"; to go on: creative run {run.case} --resume {run.path}" if run.case
+             else "")
+    return (f"Interrupted after {trials} (no summary.json, and no process is running "
+            f"it){again}.")
 
 
 def _case_facts(summary: RunSummary) -> tuple[dict[str, str], int | None, int | None]:

@@ -192,7 +192,8 @@ def _creation_line(create: CreateSummary) -> str:
     elif solved:
         bits.append(f"solved by {solved}")
     elif create.needed is not False:
-        bits.append("not solved" + (f" ({create.exhausted})" if create.exhausted else ""))
+        bits.append("not solved" + (f": no literal left to generalise ({create.exhausted})"
+                                    if create.exhausted else ""))
     done, total = _successes(create.eval)
     if total:
         bits.append(f"the created tool's evaluation: {done} of {total} trials succeeded")

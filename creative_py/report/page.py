@@ -19,9 +19,10 @@ from urllib.parse import quote
 
 from creative_py.records.folder import write_atomic
 from creative_py.records.summary import PddlCheck
+from creative_py.records.trial import lengths_in_mm
 from creative_py.report.contents import (
     Clip, RunContents, ToolEntry, clause_parts, literals_text, number_text,
-    plan_steps, read_run, readable_term, relative_inside, why_text,
+    plan_steps, read_run, readable_term, relative_inside, state_text, why_text,
 )
 from creative_py.report.headline import duration_text, headline
 
@@ -141,9 +142,9 @@ def render_html(run: RunContents) -> str:
         f"phase {s.phase}" if s.phase is not None else "",
         f"backend {s.backend}" if s.backend else "") if x)
     warnings = ""
-    if not (run.path / "summary.json").is_file():
-        warnings = ('<div class="warn">No <code>summary.json</code>: the run has not finished '
-                    "(or was interrupted); only its recorded trials are shown.</div>")
+    state = state_text(run)
+    if state:
+        warnings = f'<div class="warn">{escape(state)}</div>'
     if run.warnings:
         warnings += ('<div class="warn"><b>Not everything could be read:</b><ul>'
                     + "".join(f"<li>{escape(w)}</li>" for w in run.warnings) + "</ul></div>")
@@ -232,7 +233,8 @@ def _predicted_row(run: RunContents) -> str:
               "variant": _or(predicted.variant, ""), "loc": _or(predicted.location, ""),
               "pose": "-", "tested": "-",
               "violated": literals_text(predicted.conflict),
-              "outcome": "predicted failure, not run", "reason": _or(predicted.why, "")}
+              "outcome": "predicted failure, not run",
+              "reason": lengths_in_mm(_or(predicted.why, ""))}
     cells = "".join(f'<td class="col-{escape(h)}">{escape(readable_term(str(values.get(h, ""))))}'
                     "</td>" for h, _ in run.columns)
     return f'<tr class="predicted">{cells}</tr>'
@@ -278,7 +280,7 @@ def _clip_caption(clip: Clip) -> str:
         parts.append(_outcome(info.outcome))
     text = " · ".join(p for p in parts if p)
     if info.reason:
-        text += f"<br>{escape(info.reason)}"
+        text += f"<br>{escape(lengths_in_mm(info.reason))}"
     if info.why:
         text += f"<br><i>kept as {escape(why_text(info.why))}</i>"
     return text + f' <a href="{_url(clip.file)}">{escape(Path(clip.file).name)}</a>'
@@ -307,7 +309,8 @@ def _tools_section(run: RunContents) -> str:
                 f"{escape(str(c.tool))} ({escape(str(c.outcome))})"
                 for c in create.catalogue))
         if create.exhausted:
-            bits.append(f"search exhausted: {escape(create.exhausted)}")
+            bits.append("no literal left to generalise (what was tried of each: "
+                        f"<code>{escape(create.exhausted)}</code>)")
         intro = f"<p>{'; '.join(bits)}.</p>"
     if not run.tools:
         return intro + '<p class="none">This run created no tool.</p>'
@@ -397,11 +400,56 @@ def _print_html(printed: Any, link: Linker) -> str:
                    f"<tbody>{rows}</tbody></table>")
     shown = {"pieces", "joints", "print_time_s", "filament_g", "filament_mm",
              "build_volume_mm", "profile", "how_they_join"}
-    rest = {k: _with_unit(k, v) for k, v in printed.items() if k not in shown}
+    rest = {_print_label(k): _print_value(k, v) for k, v in printed.items()
+            if k not in shown}
     if rest:
         out.append("<details><summary>Other print figures</summary>"
                    + _key_value_table(rest, link) + "</details>")
     return "".join(out) or '<p class="none">No print figures.</p>'
+
+
+PRINT_LABELS = {
+    "printable": "printable",
+    "nozzle_mm": "nozzle diameter",
+    "min_feature_mm": "smallest feature the printer makes",
+    "joint": "joint between the parts",
+    "clearance_mm": "clearance of a pin in its hole",
+    "design_volume_mm3": "volume of the tool as designed",
+    "union_volume_mm3": "volume of the printed pieces put together",
+    "union_volume_error_pct": "pieces put together against the design (volume)",
+    "union_mismatch_pct": "volume where the pieces and the design differ",
+    "sliced": "sliced into G-code",
+    "wall_time_s": "time to split and slice it",
+}
+"""The words for each key of a tool JSON's ``print`` entry that the print table does
+not show in its own columns (:func:`_print_label` makes words of any other key)."""
+
+_PRINT_WORDS = {"square_dowel_pin": "square dowel pin"}
+
+
+def _print_label(key: str) -> str:
+    """A print figure's key in words: :data:`PRINT_LABELS`, else the key without its
+    unit suffix, underscores as spaces (the unit goes with the value)."""
+    if key in PRINT_LABELS:
+        return PRINT_LABELS[key]
+    for suffix, _unit in _UNITS:
+        if key.endswith(suffix):
+            key = key[: -len(suffix)]
+            break
+    return key.replace("_", " ")
+
+
+def _print_value(key: str, value: Any) -> Any:
+    """A print figure with its unit: volumes in cm³ (as the piece table has them), a
+    percentage to two decimals, a joint's kind in words, else :func:`_with_unit`."""
+    if isinstance(value, (int, float)) and not isinstance(value, bool):
+        if key.endswith("_mm3"):
+            return f"{value / 1000:.2f} cm³"
+        if key.endswith("_pct"):
+            return f"{value:+.2f} %" if key.endswith("error_pct") else f"{value:.2f} %"
+    if isinstance(value, str):
+        return _PRINT_WORDS.get(value, value)
+    return _with_unit(key, value)
 
 
 def _pieces_table(pieces: list[dict[str, Any]], link: Linker) -> str:
@@ -664,18 +712,17 @@ def _value_html(key: str, value: Any, link: Linker | None = None) -> str:
         if value and all(isinstance(v, dict) for v in value):
             return _records_table(value, link)
         return escape(", ".join(number_text(v) for v in value)) or "-"
-    text = escape(number_text(value))
-    if isinstance(value, (int, float)) and not isinstance(value, bool) and \
-            key.endswith("_s") and value >= 60:
-        minutes = round(value / 60)
-        text += f" ({minutes // 60} h {minutes % 60} min)" if minutes >= 60 else \
-            f" ({minutes} min)"
+    # A number with the unit its key names (its label leaves the suffix out), seconds
+    # from a minute on with their hours and minutes.
+    number = isinstance(value, (int, float)) and not isinstance(value, bool)
+    text = escape(str(_with_unit(key, value)) if number else number_text(value))
     target = link(value) if isinstance(value, str) and link is not None else None
     return f'<a href="{_url(target)}">{text}</a>' if target else text
 
 
 def _key_value_table(mapping: dict[str, Any], link: Linker | None = None) -> str:
-    rows = "".join(f"<tr><th>{escape(str(k))}</th><td>{_value_html(str(k), v, link)}</td></tr>"
+    rows = "".join(f"<tr><th>{escape(_print_label(str(k)))}</th>"
+                   f"<td>{_value_html(str(k), v, link)}</td></tr>"
                    for k, v in mapping.items())
     return f"<table>{rows}</table>"
 
@@ -684,7 +731,7 @@ def _records_table(records: list[dict[str, Any]], link: Linker | None = None) ->
     keys: list[str] = []
     for r in records:
         keys += [str(k) for k in r if str(k) not in keys]
-    head = "".join(f"<th>{escape(k)}</th>" for k in keys)
+    head = "".join(f"<th>{escape(_print_label(k))}</th>" for k in keys)
     rows = "".join("<tr>" + "".join(f"<td>{_value_html(k, r.get(k), link)}</td>" for k in keys)
                    + "</tr>" for r in records)
     return f"<table><thead><tr>{head}</tr></thead><tbody>{rows}</tbody></table>"

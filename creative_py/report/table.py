@@ -127,7 +127,9 @@ def print_report(run: RunContents, console: Console, width: int | None = None) -
 
     table = trial_table(run)
     console.width = report_width(console, table, width)
-    lines = headline(run).lines
+    from creative_py.report.contents import state_text
+
+    lines = [x for x in (state_text(run),) if x] + headline(run).lines
     for line in lines:
         console.print(line, markup=False, highlight=False)
     if lines:

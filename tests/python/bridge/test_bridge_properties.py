@@ -8,7 +8,9 @@ from typing import Any
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from creative_py.bridge import FAILED, Compound, Engine, PlString, Var, clause, encode
+from creative_py.bridge import (FAILED, Compound, Engine, PlString, Var, clause, encode,
+                                readable)
+from creative_py.bridge.terms import map_variables, variables
 
 SETTINGS = settings(max_examples=200, deadline=None)
 
@@ -72,6 +74,22 @@ def test_any_term_round_trips_through_prolog(engine: Engine, term: Any) -> None:
 def test_pretty_text_reads_back_as_the_same_term(engine: Engine, term: Any) -> None:
     back = engine.parse(encode(term, operators=True))
     assert same(back, term), (encode(term, operators=True), back)
+
+
+PAIRED = st.recursive(TERMS, lambda inner: st.one_of(
+    st.builds(lambda a, b: Compound("-", (a, b)), inner, inner),
+    st.lists(inner, max_size=3)), max_leaves=12)
+
+
+@SETTINGS
+@given(term=PAIRED)
+def test_readable_text_reads_back_as_the_same_term_with_lettered_variables(
+        engine: Engine, term: Any) -> None:
+    """``readable`` (pairs infix, variables lettered A, B, ...) is Prolog text of the
+    same term: only the variables' names differ, each renamed once, in order."""
+    text = readable(term)
+    letters = {v.name: Var(chr(ord("A") + i)) for i, v in enumerate(variables(term))}
+    assert same(engine.parse(text), map_variables(term, lambda v: letters.get(v.name, v))), text
 
 
 # ----------------------------------------------------------------- (2) LGG laws

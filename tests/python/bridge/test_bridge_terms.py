@@ -21,6 +21,7 @@ from creative_py.bridge import (
     decode,
     encode,
     is_ground,
+    readable,
     variables,
 )
 
@@ -166,3 +167,24 @@ def test_decode_reads_every_kind_of_reply_value() -> None:
 def test_decode_rejects_malformed_replies(bad) -> None:
     with pytest.raises(BridgeProtocolError):
         decode(bad)
+
+
+def test_a_list_of_engine_terms_reads_as_prolog_text_with_lettered_variables() -> None:
+    """What a person is shown of the engine's reply (a reason, a headline): Prolog text,
+    pairs infix and the engine's fresh variables lettered, never the dataclasses."""
+    G0, G1 = Var("_G0"), Var("_G1")
+    exhausted = [Compound("-", (Compound("handle_length", (G0, "medium")), "tried")),
+                 Compound("-", (Compound("stick", (G1,)), Compound("infeasible", (
+                     [Compound("handle_length", (G1, "medium")),
+                      Compound("tube_length_m", ("tube1", 0.45))],))))]
+    assert readable(exhausted) == (
+        "[handle_length(A,medium)-tried,"
+        "stick(B)-infeasible([handle_length(B,medium),tube_length_m(tube1,0.45)])]")
+    assert readable(Compound("-", ("a", -1))) == "a- -1"
+    assert readable(Compound("-", ("a", Compound("-", ("b", "c"))))) == "a-(b-c)"
+    assert readable(Compound("-", (Compound("-", ("a", "b")), "c"))) == "a-b-c"
+    assert readable(Compound(":-", (Compound("p", (Var("X"),)), Compound(
+        ",", (Compound("q", (Var("X"), G0)), "r"))))) == "p(A) :- q(A,B), r"
+    letters = [Compound("f", (Var(f"_G{i}"),)) for i in range(28)]
+    assert readable(letters).endswith("f(Y),f(Z),f(A1),f(B1)]")
+    assert str(exhausted[0]) == "'-'(handle_length(_G0,medium),tried)"  # str() unchanged

@@ -14,6 +14,8 @@ import copy
 import hashlib
 import json
 import shutil
+import subprocess
+import sys
 import time
 from dataclasses import asdict, fields, replace
 from pathlib import Path
@@ -34,7 +36,7 @@ from creative_py.learning.run import (_checked_world, _earlier_summary, _finish,
 from creative_py.records.summary import Resumed, RunSummary, WallTimes
 from creative_py.learning.trials import TrialRunner
 from creative_py.mesh.slicer import SliceError
-from creative_py.records.folder import RunFolder, read_resume
+from creative_py.records.folder import RunFolder, read_resume, running_pid
 from creative_py.report import plot_trials
 from creative_py.simulator import backend_for
 
@@ -722,6 +724,31 @@ def test_a_new_run_names_the_interrupted_run_of_its_case_and_seed(tmp_path, hook
     assert said == [f"run folder {tmp_path / 'new'}",
                     f"a new run; the interrupted run {old} of this case and seed can go "
                     f"on with: creative run hook --resume {old}"]
+
+
+def test_a_new_run_beside_a_live_one_does_not_call_it_interrupted(tmp_path, hook_world):
+    # Issue 32: a run started beside one still going called the live run "interrupted"
+    # and offered to resume it.
+    live = tmp_path / "hook-20260101-000000-s3"
+    live.mkdir()
+    (live / "run.json").write_text("{}")
+    holder = subprocess.Popen(
+        [sys.executable, "-c", "import fcntl, os, sys, time; "
+         f"fd = os.open({str(live / '.lock')!r}, os.O_RDWR | os.O_CREAT); "
+         "fcntl.flock(fd, fcntl.LOCK_EX); print('locked', flush=True); time.sleep(60)"],
+        stdout=subprocess.PIPE, text=True)
+    try:
+        assert holder.stdout.readline() == "locked\n"
+        assert running_pid(live) == str(holder.pid)
+        said = []
+        run = _open_folder(tmp_path, "hook", RunOptions(seed=3), None, None, "new", None,
+                           said.append)[0]
+        run.release()
+        assert said == [f"run folder {tmp_path / 'new'}"]
+    finally:
+        holder.kill()
+        holder.wait()
+    assert running_pid(live) == ""  # the lock died with its process: now interrupted
 
 
 def test_open_folder_of_a_resume_seals_it_and_reads_its_summary(tmp_path):

@@ -181,8 +181,12 @@ def test_the_reason_cell_and_the_short_lines_carry_the_measured_verdict():
                       outcome="blocked", reason="position_tool: gripper lagged",
                       verdict=verdict)
     assert TrialRecord.from_json(rec.to_json()) == rec
-    assert reason_text(rec) == ("position_tool: gripper lagged -- stopped: "
-                                f"{stop.text()} | {oracle.text()}")
+    # Words with one unit a quantity (issue 32: the page showed max_tracking_error,
+    # tube1.mouth_x, and m and cm in one cell).
+    assert reason_text(rec) == (
+        "position_tool: gripper lagged -- stopped: gripper lag 32.0 mm (needs <= 30.0 mm; "
+        "the limit: max tracking error); touching: robot against base1 | box1 centre x "
+        "1070.0 mm (needs < 850.0 mm; the limit: shelf1's mouth x)")
     assert verdict_lines(rec.verdict) == [
         "stopped: gripper lag 0.0320 m, needs <= 0.0300 m", "touching robot against base1",
         "box1 centre x 1.0700 m, needs < 0.8500 m", "moved 0.0 cm"]
@@ -191,3 +195,28 @@ def test_the_reason_cell_and_the_short_lines_carry_the_measured_verdict():
                       outcome="failure", reason="goal not reached")
     assert reason_text(old) == "goal not reached" and verdict_lines(old.verdict) == []
     assert "verdict" not in old.to_dict()
+
+
+def test_lengths_and_limits_read_as_words_with_one_unit():
+    from creative_py.records.trial import lengths_in_mm, limit_words, measure_words
+
+    assert lengths_in_mm("gripper lagged its target by 3.0 cm at (0.978, -0.250, -0.052) m: "
+                         "24.9 cm short; moved 1.1 cm; 0.8500 m; 2 mm; 3 min") == (
+        "gripper lagged its target by 30 mm at (978, -250, -52) mm: 249 mm short; moved "
+        "11 mm; 850.0 mm; 2 mm; 3 min")
+    assert [limit_words(n) for n in ("tube1.mouth_x - 0.05", "grasp_slip_max_rad",
+                                     "max_tracking_error", "", None)] == [
+        "tube1's mouth x - 0.05", "grasp slip max", "max tracking error", "", ""]
+    door = {"quantity": "door1 angle", "value": 12.46, "threshold": 20.0, "unit": "deg",
+            "relation": ">=", "threshold_name": "door1.min_open_deg",
+            "text": "door1 angle 12.5 deg (needs >= 20 deg, door1.min_open_deg); closed "
+                    "0.3 deg after touching the tool (needs < 2 deg)"}
+    assert measure_words(door) == ("door1 angle 12.46 deg (needs >= 20 deg; the limit: "
+                                   "door1's min open); closed 0.3 deg after touching the "
+                                   "tool (needs < 2 deg)")
+    slip = {"quantity": "grasp slip", "value": 0.2, "threshold": 0.1, "unit": "rad",
+            "relation": "<=", "threshold_name": "grasp_slip_max_rad",
+            "text": "grasp slip 0.2000 rad (needs <= 0.1000 rad, grasp_slip_max_rad)"}
+    assert measure_words(slip) == "grasp slip 11.5 deg (needs <= 5.7 deg; the limit: grasp slip max)"
+    # An older record without the numbers: its text, lengths in mm.
+    assert measure_words({"text": "moved 1.1 cm"}) == "moved 11 mm"

@@ -111,7 +111,8 @@ def test_the_short_forms_when_keys_are_missing():
     ({"solved_by": "the_learned_model"},
      "Tool creation on the harder task ?: solved by the_learned_model.", "the_learned_model"),
     ({"exhausted": "no candidate left", "predicted": {"feasible": True, "tool": "t"}},
-     "Tool creation on the harder task ?: not solved (no candidate left).", None),
+     "Tool creation on the harder task ?: not solved: no literal left to generalise "
+     "(no candidate left).", None),
     ({"needed": False, "variant": "w"}, "Tool creation on the harder task w.", None),
     ({"needed": True}, "Tool creation on the harder task ?: not solved.", None),
 ])

@@ -15,12 +15,14 @@ CSS, a constant, stays in ``page.py`` alone.
 from __future__ import annotations
 
 import json
+import os
 import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from test_report_contents_exact import CREATED, TRIALS, _folder  # noqa: E402
 
+from creative_py.records.folder import RunFolder  # noqa: E402
 from creative_py.report.contents import read_run  # noqa: E402
 from creative_py.report.page import _CSS, render_html, write_html_report  # noqa: E402
 
@@ -122,7 +124,28 @@ def test_the_page_of_a_run_still_going_exact(tmp_path):
     # writing it leaves it: each a warning on the page
     (run / "trials.jsonl").write_text("".join(json.dumps(t) + "\n" for t in TRIALS)
                                       + '{"trial": 3}\n{"trial": 4, "pha')
-    path = write_html_report(run)
+    folder = RunFolder(run)
+    folder.lock()  # the run writing it holds its lock
+    try:
+        path = write_html_report(run)
+    finally:
+        folder.release()
     assert path == run / "report.html"
-    assert path.read_text(encoding="utf-8") == _expected("page_going.html", run)
-    assert sorted(p.name for p in run.iterdir()) == ["report.html", "trials.jsonl"]
+    assert path.read_text(encoding="utf-8") == _expected("page_going.html", run).replace(
+        "{PID}", str(os.getpid()))
+    assert sorted(p.name for p in run.iterdir()) == [".lock", "report.html", "trials.jsonl"]
+
+
+def test_the_page_of_an_interrupted_run_says_how_to_go_on(tmp_path):
+    # Issue 32: the page said "has not finished (or was interrupted)" of both a live
+    # run and an interrupted one; a live one is "still running" (see the test above).
+    run = tmp_path / "gone"
+    run.mkdir()
+    (run / "trials.jsonl").write_text("".join(json.dumps(t) + "\n" for t in TRIALS))
+    (run / "run.json").write_text(json.dumps({"case": "hook"}))
+    (run / ".lock").write_text("12345\n")  # the pid of a process long gone
+    page = render_html(read_run(run))
+    assert ('<div class="warn">Interrupted after 2 trials (no summary.json, and no '
+            f"process is running it); to go on: creative run hook --resume {run}.</div>"
+            ) in page
+    assert "Still running" not in page

@@ -9,6 +9,7 @@ table with a creation trial, and the numbers of the run's JSON at their threshol
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Union
@@ -131,12 +132,14 @@ def test_records_and_their_files_are_linked():
 
 
 def test_seconds_at_a_minute_and_an_hour():
-    assert _value_html("t_s", 59) == "59"
-    assert _value_html("t_s", 60) == "60 (1 min)"
-    assert _value_html("t_s", 3600) == "3600 (1 h 0 min)"
-    assert _value_html("t_s", 7290) == "7290 (2 h 2 min)"
+    assert _value_html("t_s", 59) == "59 s"
+    assert _value_html("t_s", 60) == "60 s (1 min)"
+    assert _value_html("t_s", 3600) == "3600 s (1 h 00 min)"
+    assert _value_html("t_s", 7290) == "7290 s (2 h 02 min)"
+    # The label a word, the unit with the number (issue 32: the page showed keys such
+    # as union_volume_error_pct).
     assert _key_value_table({"wait_s": 75}) == (
-        "<table><tr><th>wait_s</th><td>75 (1 min)</td></tr></table>")
+        "<table><tr><th>wait</th><td>75 s (1 min)</td></tr></table>")
     assert _with_unit("wait_s", 60) == "60 s (1 min)"
     assert _with_unit("count", 5) == 5
 
@@ -209,3 +212,21 @@ def test_a_predicted_row_has_an_empty_cell_for_a_column_of_its_own(tmp_path):
         '<td class="col-violated">-</td>'
         '<td class="col-outcome">predicted failure, not run</td>'
         '<td class="col-reason"></td><td class="col-note"></td></tr>')
+
+
+def test_the_print_figures_read_as_words_with_one_unit_a_quantity():
+    # Issue 32: "Other print figures" showed the JSON's keys (union_volume_error_pct
+    # -0.194792 %) and volumes in mm³ beside the cm³ of the piece table.
+    page = _print_html({"nozzle_mm": 0.4, "design_volume_mm3": 51840.0,
+                        "union_volume_mm3": 51739.02, "union_volume_error_pct": -0.194792,
+                        "union_mismatch_pct": 0.194792, "joint": "square_dowel_pin",
+                        "wall_time_s": 2.452}, _link)
+    rows = re.findall(r"<tr><th>([^<]*)</th><td>([^<]*)</td></tr>", page)
+    assert rows == [("nozzle diameter", "0.4 mm"),
+                    ("volume of the tool as designed", "51.84 cm³"),
+                    ("volume of the printed pieces put together", "51.74 cm³"),
+                    ("pieces put together against the design (volume)", "-0.19 %"),
+                    ("volume where the pieces and the design differ", "0.19 %"),
+                    ("joint between the parts", "square dowel pin"),
+                    ("time to split and slice it", "2.452 s")]
+    assert "_" not in "".join(label for label, _ in rows)

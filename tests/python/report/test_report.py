@@ -29,7 +29,8 @@ import pytest
 
 from creative_py.learning.options import RunOptions
 from creative_py.learning.run import run_case
-from creative_py.records.trial import TrialRecord, reason_text
+from creative_py.records.trial import (TrialRecord, lengths_in_mm, measure_words,
+                                       reason_text)
 from creative_py.report.contents import read_run, readable_term
 from creative_py.report.page import render_html
 
@@ -221,7 +222,9 @@ def test_the_page_shows_the_plot_every_trial_and_the_created_tool(real_run, real
         assert row[0] == str(t["trial"]) and t["tool"] in row and t["outcome"] in row
         # the measured verdict folded under the reason (<details>: "measured")
         assert row[-1] == reason_text(TrialRecord.from_dict(t)).replace(" -- ", "measured", 1)
-        assert row[-1].startswith(t["reason"]) and t["verdict"]["text"] in row[-1]
+        # in words, every length in mm (issue 32)
+        assert row[-1].startswith(lengths_in_mm(t["reason"]))
+        assert measure_words(t["verdict"]) in row[-1]
     # The created tool: its render and its dimensions.
     summary = json.loads((real_run / "summary.json").read_text())
     created = summary["create"]["created_tools"]
@@ -365,7 +368,11 @@ def test_the_page_reads_at_1280_px(real_run, real_page, tmp_path):
     assert videos and json.loads(body["data-hidden"]) == []
     text = body["data-text"]
     for bad in (r"\b_G\d+", r"(?<![\w.])_\d+\b", r"'-'\(", r"failure:\w+:", r"\bfirst_success\b",
-                r"\bsolved_by\b", r"\btrials_to_converge\b"):
+                r"\bsolved_by\b", r"\btrials_to_converge\b",
+                # issue 32: Python's repr of terms, option and scene keys, m and cm
+                # beside mm, the print figures' JSON keys
+                r"Compound\(", r"\bmax_tracking_error\b", r"\b[a-z]+\d\.[a-z]+_[a-z]+\b",
+                r"\d cm\b", r"\b\w+_pct\b", r"\b\w+_mm3?\b"):
         assert not re.search(bad, text), (bad, re.search(bad, text))
     # The headline: each card's figure is the summary's number at its key.
     cards = [a for t, a in Dom(proc.stdout).elements if t == "div" and "data-figure" in a]
@@ -377,7 +384,7 @@ def test_the_page_reads_at_1280_px(real_run, real_page, tmp_path):
     assert f"Tool-use learning: {use['trials']} trials of a budget of 2" in text
     assert f"strategy {summary['options']['strategy']}" in text.lower()
     for clip in videos:                                   # the caption says the outcome
-        assert clip["reason"] in text
+        assert lengths_in_mm(clip["reason"]) in text
 
 
 def test_the_runs_model_file_loads_in_swipl_without_a_warning(real_run):
@@ -418,7 +425,7 @@ def test_the_terminal_report_shows_the_longest_reason_whole_in_80_columns(real_r
     assert len(longest["reason"]) > 80
     # Into a pipe (not a terminal) with COLUMNS=80: one line per trial, cut nowhere.
     out = _creative("report", str(real_run)).stdout
-    lines = [line for line in out.splitlines() if longest["reason"] in line]
+    lines = [line for line in out.splitlines() if lengths_in_mm(longest["reason"]) in line]
     assert lines and all(t["tool"] in out for t in trials)
     for key in ("tested", "violated"):
         for literal in longest[key]:

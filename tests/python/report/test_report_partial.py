@@ -30,7 +30,8 @@ def test_a_partial_run_gets_a_page_of_its_readable_trials_and_nothing_else(tmp_p
     page = (tmp_path / "report.html").read_text()
     assert page.count('<tr class="trial ') == 2
     assert "a &lt;b&gt;bold&lt;/b&gt; &amp; odd reason" in page and "<b>bold</b>" not in page
-    assert "No <code>summary.json</code>" in page and "line 2 is not a JSON object" in page
+    assert "Interrupted after 2 trials (no summary.json" in page
+    assert "line 2 is not a JSON object" in page
     assert "No trials.png in this run folder." in page
 
 
