@@ -367,9 +367,10 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
     assert lines == [
         "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
         "because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, "
-        "-0.052) m: something is in the way  [stopped: gripper lag 0.0301 m, needs <= 0.0300 m; touching hook_a1 against cube1, "
-        "hook_a1 against tube1, robot against riser1, robot against tube1; cube1 centre x "
-        "1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
+        "-0.052) m: something is in the way  [stopped: gripper lag 0.0301 m, needs <= "
+        "0.0300 m; touching hook_a1 against cube1, hook_a1 against tube1, robot against "
+        "riser1, robot against tube1; cube1 centre x 1.0985 m, needs < 0.8500 m; moved "
+        "1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
