@@ -528,12 +528,15 @@ def maniskill_poke() -> dict[str, Any]:
     seeds = m["seeds"]
     hg = _hg_body(lr["hg"]) if ":-" in lr["hg"] else "empty (any tool of the hierarchy)"
     made = cr["made"]
+    winner = ([t["name"] for t in made if t.get("trial_outcome") == "success"]
+              if cr.get("solved_by") == "created" else [])
     return {"lr": lr, "cr": cr, "wall_s": lr["wall_time_s"]["total"], "hg": hg,
             "hs": _hg_body(lr["hs"]), "tool": m["tool"],
             "pose": ", ".join(f"{k} {v:+.4f} m" for k, v in m["pose"].items()),
             "eval_ok": lr["eval"].count("success"), "eval_n": len(lr["eval"]),
             "tried": ", ".join(f"`{c['tool']}` {c['outcome']}" for c in cr["sequence"]),
-            "solved": (f"solved by `{cr['solved_by']}`" if cr.get("solved_by")
+            "solved": (f"solved by the created `{winner[0]}`" if winner
+                       else f"solved by `{cr['solved_by']}`" if cr.get("solved_by")
                        else f"not solved ({len(made)} tools made)"),
             "tried_use": "; ".join(
                 f"`{u['tool']}` at " + ", ".join(f"{k} {v:+.4f}" for k, v in u["pose"].items())

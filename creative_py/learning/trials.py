@@ -43,7 +43,7 @@ from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
 from creative_py.records.trial import TrialRecord, verdict_lines
-from creative_py.simulator.trial import task_facts
+from creative_py.simulator.trial import plain_reason, task_facts
 from creative_py.simulator.types import BackendLost
 
 if TYPE_CHECKING:
@@ -191,7 +191,9 @@ class TrialRunner:
         # own, n of trials.jsonl (the demonstration is 0); a phase's count repeats
         # (the created tool's evaluation starts at 1 again).
         line = (f"#{n:<3} {PHASE_TAGS[phase]:<4} {str(tool):<14} "
-                f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}")
+                f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}"
+                # how the trial did not go as planned, as the table and the clip say it
+                + ("" if plain_reason(ex.reason) else f"  because {ex.reason}"))
         if replayed:
             rec = self._checked_replay(n, hs, hg)
             self.progress(line + "  (replayed)")

@@ -26,8 +26,9 @@ from typing import Any, Callable, Union
 
 TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
 """Outcomes of a trial: ``success`` / ``failure`` (the goal was or was not reached),
-``blocked`` (a motion before the tool action was stopped by a collision),
-``unreachable`` (no arm posture reaches a waypoint), ``invalid`` (the physics blew up)."""
+``blocked`` (a motion before the tool action was stopped by a collision, or the
+trial's step or time budget ran out before the goal was reached), ``unreachable`` (no
+arm posture reaches a waypoint), ``invalid`` (the physics blew up)."""
 
 PHASES: tuple[str, ...] = ("use", "create", "eval")
 """Phases of a run: tool-use learning, tool creation, evaluation."""

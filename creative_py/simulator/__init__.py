@@ -64,7 +64,8 @@ tool. It does not run trials, label outcomes or draw worlds: :mod:`.trial` and
    draws no randomised worlds).
 4. Its episodes have the members of :class:`Episode`, in the units they document:
    ``run_skill`` (returns a :class:`SkillOutcome`: ``ok``, or ``blocked`` with the
-   guard's :class:`Verdict` as ``stop``, ``unreachable``, ``invalid``; how the motion
+   guard's :class:`Verdict` as ``stop``, ``out_of_time`` with the budget's,
+   ``unreachable``, ``invalid``; how the motion
    ended, never the trial's outcome), ``observe``, ``verdict`` (the case's oracle
    measured in the simulated state: a :class:`Verdict`), ``goal_reached``, ``truth``,
    ``sim_time``, ``steps``, ``render_time_s``, ``measured_load``. Its recorders have

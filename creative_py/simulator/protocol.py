@@ -186,7 +186,9 @@ class Episode(Protocol):
                   **options: Any) -> SkillOutcome:
         """Run the manifest's skill ``name`` (the primitive it binds, with its options)
         and return how its motion ended: ``ok``, ``blocked`` (a guard stopped a
-        motion; ``stop`` says what it measured), ``unreachable`` (no arm posture) or
+        motion; ``stop`` says what it measured), ``out_of_time`` (the episode's step
+        or time budget ran out before the motion's end; ``stop`` says what it needed
+        against the budget), ``unreachable`` (no arm posture) or
         ``invalid`` (a physics blow-up, or a skill that cannot run in this state); the
         reason names the skill.
 

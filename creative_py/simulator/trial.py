@@ -13,7 +13,8 @@ ending means, what the result holds) is decided here, once, for every backend::
                   command line's ``creative trial``, the benchmarks')
 ``play_trial``    its body, for a caller that opens the episode itself (the simulator
                   benchmark: ``by_hand``, ``timings``, no observation)
-``trial_outcome`` what each way of ending a trial means: the one place
+``trial_outcome`` what each way of ending a trial means: the one place (a motion
+                  out of steps or time included)
 ``verdict_data``  a trial's measured verdict as JSON-ready data
 ``task_facts``    what the robot perceives of a task before acting, observed once per
                   task through the case's backend (the planner's and the size model's
@@ -159,8 +160,9 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
         if not status.ok:
             break
     # The oracle is asked when the goal can have been reached: every skill ran, or
-    # the tool acted until it was stopped (a physics blow-up leaves no state to ask).
-    asked = status.ok or (acted and status.status == "blocked")
+    # the tool acted until it was stopped or ran out of time (a physics blow-up leaves
+    # no state to ask).
+    asked = status.ok or (acted and status.status in STOPPED)
     # The oracle measures every trial (the measure is reported); it decides only when
     # asked. A blow-up may leave nothing finite to measure.
     try:
@@ -202,6 +204,23 @@ def verdict_data(oracle: Optional[Verdict], asked: bool,
     return data
 
 
+STOPPED = ("blocked", "out_of_time")
+"""The skill statuses of a motion that stopped before its end with the scene intact: a
+guard stopped it, or its step or time budget ran out (the goal is asked after either
+once the tool acted)."""
+
+GOAL_REACHED, GOAL_NOT_REACHED = "goal reached", "goal not reached"
+"""The reasons of a trial whose skills all ran (:func:`trial_outcome`): any other
+reason says how the trial did not go as planned, and every line that shows a trial's
+outcome shows it too (:func:`plain_reason`)."""
+
+
+def plain_reason(reason: str) -> bool:
+    """Return whether ``reason`` is only the goal's judgement of a trial whose skills
+    all ran (nothing more to say beside the outcome)."""
+    return reason in ("", GOAL_REACHED, GOAL_NOT_REACHED)
+
+
 def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str, str]:
     """Return a trial's ``(outcome, reason)``: the one place that says what each way of
     ending a trial means, for every backend.
@@ -223,10 +242,18 @@ def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str
         Blocked before the tool action: ``blocked`` (the arm could not carry out the
         planned motion). Blocked while the tool acted: the tool could not carry out the
         action to its end, and the physics says ``success`` or ``failure`` by the goal.
+        Out of time (``out_of_time``: the episode's control steps, a goal's seconds),
+        wherever it ran out, in every backend: ``success`` if the tool acted and the
+        goal holds when the time is up (the physics judges the state the budget left),
+        ``blocked`` otherwise: the plan did not fit the budget, so the trial says
+        nothing of what the tool would have done at its end (a ``failure`` would say
+        the tool did all of it and missed). The reason is the skill's.
         Otherwise the skill's status (``unreachable``, ``invalid``) with its reason.
     """
     if status.ok:
-        return ("success", "goal reached") if reached else ("failure", "goal not reached")
+        return ("success", GOAL_REACHED) if reached else ("failure", GOAL_NOT_REACHED)
+    if status.status == "out_of_time":
+        return ("success" if acted and reached else "blocked"), status.reason
     if status.status == "blocked" and acted:
         return ("success" if reached else "failure"), status.reason
     return status.status, status.reason

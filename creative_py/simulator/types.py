@@ -11,7 +11,8 @@ above the boundary: :func:`creative_py.simulator.trial.trial_outcome`): ``succes
 ``failure`` (every skill
 ran, or the tool was stopped while acting; the goal was or was not reached),
 ``blocked`` (a move before the tool action was stopped by a collision: the
-tracking-error guard), ``unreachable`` (no arm posture reaches a waypoint),
+tracking-error guard; or the trial's step or time budget ran out before the goal was
+reached, wherever it ran out), ``unreachable`` (no arm posture reaches a waypoint),
 ``invalid`` (the physics blew up: NaN, an object thrown out of the scene).
 """
 
@@ -24,9 +25,9 @@ from typing import Any, Callable, Literal, Optional, Sequence
 
 from creative_py.records.trial import TRIAL_OUTCOMES  # noqa: F401 - the simulator's vocabulary too
 
-SkillStatus = Literal["ok", "blocked", "unreachable", "invalid"]
+SkillStatus = Literal["ok", "blocked", "out_of_time", "unreachable", "invalid"]
 TrialOutcome = Literal["success", "failure", "blocked", "unreachable", "invalid"]
-SKILL_STATUSES: tuple[str, ...] = ("ok", "blocked", "unreachable", "invalid")
+SKILL_STATUSES: tuple[str, ...] = ("ok", "blocked", "out_of_time", "unreachable", "invalid")
 
 Fact = tuple[Any, ...]
 """A primitive fact as a tuple: predicate name then arguments, e.g. ``("held", "t1")``."""
@@ -74,7 +75,9 @@ class Verdict:
         The other measures by name (numbers, names), JSON-ready.
     note : str
         The measure beside the main one that the judgement also rests on, in a few
-        words (``closed 0.3 deg after contact, needs < 2``), for short lines.
+        words (``closed 0.3 deg after contact, needs < 2``), for short lines. Left
+        empty while the judgement disagrees with the main measure, the short lines
+        say so (:meth:`short_note`), so that no line reads as a pass that failed.
     """
 
     quantity: str
@@ -93,6 +96,16 @@ class Verdict:
         if self.value is None or self.threshold is None:
             return False
         return bool(_RELATIONS[self.relation](self.value, self.threshold))
+
+    def short_note(self) -> str:
+        """Return :attr:`note`, or, when there is none and the judgement is not what
+        the main measure against its threshold says, what judged it (``judged not met
+        by ManiSkill PokeCube-v1 evaluate()``); empty otherwise."""
+        if self.note or self.value is None or self.threshold is None \
+                or self.met() == bool(self.holds):
+            return self.note
+        return (f"judged {'met' if self.holds else 'not met'} by "
+                f"{self.threshold_name or 'the oracle'}")
 
     def text(self) -> str:
         """Return the verdict in words, e.g. ``door1 angle 12.5 deg (needs >= 20 deg);
@@ -122,7 +135,7 @@ class Verdict:
                 "relation": self.relation, "holds": bool(self.holds),
                 "threshold_name": self.threshold_name,
                 "measures": json.loads(json.dumps(self.measures, default=str)),
-                "text": self.text(), "brief": self.brief(), "note": self.note}
+                "text": self.text(), "brief": self.brief(), "note": self.short_note()}
 
 
 _DECIMALS = {"m": 4, "deg": 1, "rad": 4, "N": 1}
@@ -191,14 +204,19 @@ class SkillOutcome:
     ----------
     status : str
         One of :data:`SKILL_STATUSES`: ``ok``, ``blocked`` (the tracking guard stopped a
-        motion), ``unreachable`` (no arm posture), ``invalid`` (a physics blow-up or a
-        skill that cannot run in this state).
+        motion), ``out_of_time`` (the motion's step or time budget ran out before it
+        ended: a ManiSkill episode's control steps, a ROS goal's time; what that means
+        for the trial is decided above the boundary,
+        :func:`creative_py.simulator.trial.trial_outcome`), ``unreachable`` (no arm
+        posture), ``invalid`` (a physics blow-up or a skill that cannot run in this
+        state).
     reason : str
         Why, in words (empty for a plain ``ok``).
     stop : Verdict or None
         For a motion a guard stopped: what the guard measured against its limit (the
         gripper's lag, its twist, the grasp's slip) and which bodies the robot and
-        the held tool touched then (``measures["touching"]``).
+        the held tool touched then (``measures["touching"]``); for a motion out of
+        time: what it needed against the budget (control steps, seconds).
     """
 
     status: SkillStatus

@@ -23,6 +23,7 @@ from test_simulator_registry import signature_mismatches
 
 from creative_py.backends import BACKENDS, BackendEntry
 from creative_py.case import read_manifest
+from creative_py.records.trial import verdict_lines
 from creative_py.simulator import TRIAL_OUTCOMES, Episode, Observation, SkillOutcome, Verdict
 from creative_py.simulator.trial import play_trial, run_trial, trial_outcome
 
@@ -287,7 +288,68 @@ def test_by_hand_skips_the_carrying_and_timings_has_each_skill(backend):
     (SkillOutcome("blocked", "b"), False, True, ("blocked", "b")),
     (SkillOutcome("blocked", "b"), True, False, ("failure", "b")),
     (SkillOutcome("invalid", "nan"), True, True, ("invalid", "nan")),
+    # Out of steps or time, wherever it ran out: blocked unless the tool acted and the
+    # goal holds when the time is up (never a failure: the plan did not fit the budget).
+    (SkillOutcome("out_of_time", "place: steps ran out"), False, False,
+     ("blocked", "place: steps ran out")),
+    (SkillOutcome("out_of_time", "place: steps ran out"), False, True,
+     ("blocked", "place: steps ran out")),
+    (SkillOutcome("out_of_time", "push: steps ran out"), True, False,
+     ("blocked", "push: steps ran out")),
+    (SkillOutcome("out_of_time", "push: steps ran out"), True, True,
+     ("success", "push: steps ran out")),
 ])
 def test_each_ending_has_one_outcome_for_every_backend(status, acted, reached, want):
     got = trial_outcome(status, acted, reached)
     assert got == want and got[0] in TRIAL_OUTCOMES
+
+
+OUT_OF_STEPS = Verdict("control steps needed at least", 56, 50, "steps", "<=", False,
+                       "[episode] max_steps")
+
+
+@pytest.mark.parametrize("skill", ["place", "push"])
+def test_a_run_out_of_steps_is_blocked_wherever_it_ran_out(backend, skill):
+    # Before the tool action (place) or while the tool acts (push): one outcome, the
+    # backend's reason, the budget's measure first on every short line, and the robot's
+    # view where the motion stopped (what a planned example is labelled with).
+    reason = f"{skill}: the episode's 50 control steps ran out"
+    backend.episode = ScriptedEpisode(
+        ends={skill: SkillOutcome("out_of_time", reason, OUT_OF_STEPS)}, holds=False)
+    result = run_trial(backend.world, "stick1", "easy", 1)
+    log = backend.episode.log
+    assert (result.outcome, result.reason) == ("blocked", reason)
+    seen = max(i for i, call in enumerate(log) if call == ("observe",))
+    assert seen > max(i for i, call in enumerate(log) if call[0] == "run_skill")
+    assert result.facts_before == (("seen", seen + 1),)  # seen where it stopped
+    assert result.verdict["stop"]["quantity"] == "control steps needed at least"
+    assert result.verdict["asked"] is (skill == "push")
+    assert verdict_lines(result.verdict)[0] == (
+        "stopped: control steps needed at least 56 steps, needs <= 50 steps")
+
+
+def test_a_goal_reached_when_the_steps_ran_out_is_a_success(backend):
+    backend.episode = ScriptedEpisode(
+        ends={"push": SkillOutcome("out_of_time", "push: ran out", OUT_OF_STEPS)})
+    result = run_trial(backend.world, "stick1", "easy", 1)
+    assert (result.outcome, result.reason) == ("success", "push: ran out")
+    assert result.verdict["asked"] is True and result.verdict["holds"] is True
+
+
+def test_a_verdict_line_never_reads_as_a_pass_that_failed():
+    # The main measure meets its threshold but the oracle judged otherwise (ManiSkill's
+    # evaluate() also needs the robot static): the short lines say what judged it.
+    placed = Verdict("cube1 distance", 0.0284, 0.05, "m", "<", False, "evaluate()")
+    assert placed.to_dict()["note"] == "judged not met by evaluate()"
+    assert verdict_lines(placed.to_dict()) == [
+        "cube1 distance 0.0284 m, needs < 0.0500 m", "judged not met by evaluate()"]
+    # a note of its own says why instead; a judgement that agrees needs none
+    said = Verdict("cube1 distance", 0.0284, 0.05, "m", "<", False, "evaluate()",
+                   note="robot moving")
+    assert said.to_dict()["note"] == "robot moving"
+    for holds, value in ((True, 0.0284), (False, 0.07)):
+        agreed = Verdict("cube1 distance", value, 0.05, "m", "<", holds, "evaluate()")
+        assert agreed.to_dict()["note"] == "" and len(verdict_lines(agreed.to_dict())) == 1
+    # judged met though the measure misses its threshold
+    assert Verdict("box1 x", 0.5, 0.6, "m", ">", True, "limit").short_note() == (
+        "judged met by limit")

@@ -18,10 +18,14 @@ While the tool acts, the contact load on it is read from SAPIEN's contacts
 
 The goal verdict is ManiSkill's ``env.evaluate()["success"]`` and nothing else; the
 Verdict records the target's distance to the goal region's centre in xy and the
-``evaluate()`` entries ``[env] measures`` names (``cube_distance``, ...). Steps are ManiSkill control steps
-(``env.step`` calls, 20 Hz), counted against the world's ``max_steps``; a skill that
-runs out of them reports its motion ``blocked``. A trial is run above the boundary
-(:func:`creative_py.simulator.trial.run_trial`), as every backend's.
+``evaluate()`` entries ``[env] measures`` names (``cube_distance``, ...), and the arm's
+fastest joint (``evaluate()`` of some tasks needs the robot static): where the judgement
+is not what the distance says, its short note says why. Steps are ManiSkill control
+steps (``env.step`` calls, 20 Hz), counted against the world's ``max_steps``; a skill
+that runs out of them reports its motion ``out_of_time`` with the steps it needed, and
+what that means for the trial is decided above the boundary, as for every backend
+(:func:`creative_py.simulator.trial.trial_outcome`, in
+:func:`creative_py.simulator.trial.run_trial`).
 """
 
 from __future__ import annotations
@@ -185,18 +189,28 @@ class Episode:
         return res
 
     def _out_of_steps(self) -> SkillOutcome:
-        return SkillOutcome("blocked", f"the episode's {self.world.max_steps} control steps "
-                                       "ran out")
+        """Return the ``out_of_time`` outcome of a move the episode's step budget cut
+        short, with what it needed: the steps taken and the rest of that move (at
+        least: the moves after it are not counted) against the budget."""
+        budget, needed = self.world.max_steps, self.steps + self.driver.short
+        stop = Verdict("control steps needed at least", needed, budget, "steps", "<=", False,
+                       "[episode] max_steps",
+                       detail=f"{self.steps} taken and {self.driver.short} more for the move "
+                              "that ran out; the moves after it not counted",
+                       measures={"steps_taken": self.steps, "move_left": self.driver.short})
+        return SkillOutcome("out_of_time", f"the episode's {budget} control steps ran out",
+                            stop)
 
     def _grasp(self, opts, pose) -> SkillOutcome:
         grip = self.tool_point(self.spec.grip_point)
-        if not grasp_handle(self.driver, grip, opts["approach"]):
+        step = float(opts["step_m"])
+        if not grasp_handle(self.driver, grip, opts["approach"], step):
             return self._out_of_steps()
         self.held = True
         self.grasp_offset = self.driver.tcp() - self._p(self.tool_actor)
         self.grasp_z = self.driver.tcp()[2]
         d = self.driver
-        if not d.move(d.tcp() * [1, 1, 0] + [0, 0, float(opts["lift_to"])]):
+        if not d.move(d.tcp() * [1, 1, 0] + [0, 0, float(opts["lift_to"])], step_m=step):
             return self._out_of_steps()
         return SkillOutcome("ok")
 
@@ -224,9 +238,10 @@ class Episode:
         # into place: the drooping tool is levelled by the table, not on the cube.
         side = -1.0 if getattr(self.spec, "hook_side", "left") == "right" else 1.0
         beside = tcp - [0.0, side * float(opts["side_clear"]), 0.0]
-        ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry])
-              and d.move(beside * [1, 1, 0] + [0, 0, carry])
-              and d.move(beside, settle=int(opts["settle_steps"]))
+        step = float(opts["step_m"])
+        ok = (d.move(d.tcp() * [1, 1, 0] + [0, 0, carry], step_m=step)
+              and d.move(beside * [1, 1, 0] + [0, 0, carry], step_m=step)
+              and d.move(beside, settle=int(opts["settle_steps"]), step_m=step)
               and (float(opts["side_clear"]) == 0.0  # lowered in place: no slide
                    or d.move(tcp, settle=int(opts["settle_steps"]),
                              step_m=float(opts["slide_step_m"]))))
@@ -319,10 +334,21 @@ class Episode:
             measures[name] = bool(value) if getattr(value, "dtype", None) is not None \
                 and str(value.dtype).endswith("bool") else float(value)
         measures["control_steps"] = self.steps
+        # the arm's fastest joint (the fingers left out), as ManiSkill's is_static reads it
+        qvel = self.u.agent.robot.get_qvel()[0, :-2].numpy()
+        speed = float(np.max(np.abs(qvel))) if qvel.size else 0.0
+        measures["arm_joint_speed_rad_s"] = round(speed, 4)
+        radius = float(self.world.zone_radius)
+        note = ""
+        if (dist < radius) != success:
+            # the distance alone would say otherwise: say what else evaluate() judged
+            note = (f"ManiSkill evaluate() success {success}, the arm's joints at up to "
+                    f"{speed:.2f} rad/s")
         return Verdict(f"{self.target_name} distance to {about} in xy", dist,
-                       float(self.world.zone_radius), "m", "<", success,
+                       radius, "m", "<", success,
                        f"ManiSkill {self.world.env.task} evaluate()",
-                       detail=f"ManiSkill evaluate() success={success}", measures=measures)
+                       detail=f"ManiSkill evaluate() success={success}", measures=measures,
+                       note=note)
 
     def goal_reached(self) -> bool:
         """Return ManiSkill's ``evaluate()["success"]``."""

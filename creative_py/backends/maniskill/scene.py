@@ -52,14 +52,17 @@ VARIANT_VALUES = {"cube_dx": (0.0, 0.5)}
 """The values a variant may set, with their bounds (metres)."""
 
 PRIMITIVES = {
-    "grasp": {"approach": 0.08, "lift_to": 0.25},
+    "grasp": {"approach": 0.08, "lift_to": 0.25, "step_m": 0.03},
     "place_at_pose": {"carry_z": 0.25, "settle_steps": 4, "side_clear": 0.08,
-                      "slide_step_m": 0.02},
+                      "slide_step_m": 0.02, "step_m": 0.03},
     "pull_to_radius": {"radius": 0.55, "step_m": 0.02, "settle_steps": 3, "lift_by": 0.06},
     "push_to_zone": {"beyond": 0.0, "step_m": 0.02, "settle_steps": 3},
 }
 """The skill primitives of this backend and their options with defaults
-(:mod:`creative_py.backends.maniskill.episode`)."""
+(:mod:`creative_py.backends.maniskill.episode`). ``step_m`` is the largest move of the
+TCP in one control step, metres (of a grasp's approach and lift, of a placing's carry
+and lowering, of a pull or a push): fewer, longer steps fit a skill into the episode's
+step budget. An option ending in ``step_m`` must be above 0."""
 
 
 @dataclass(frozen=True)
@@ -270,6 +273,13 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
             if name not in known:
                 raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{name}': unknown "
                                      f"option of {s.primitive}; options: {', '.join(known)}")
+            value = s.options[name]
+            if name.endswith("step_m") and not (isinstance(value, (int, float))
+                                                and not isinstance(value, bool)
+                                                and 0.0 < value <= 1.0):
+                raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{name}': must "
+                                     f"be a number of metres above 0 and at most 1, got "
+                                     f"{value!r}")
         skills[s.name] = (s.primitive, {**known, **s.options})
     for v in manifest.variants:
         for k, val in v.set.items():

@@ -46,12 +46,16 @@ class Driver:
         Control steps taken since the episode's reset.
     max_steps : int
         The episode's step budget; a move that would exceed it stops (``out of steps``).
+    short : int
+        The control steps the move that ran out of the budget still needed (0 while
+        none ran out).
     """
 
     env: Any
     step_m: float = 0.03
     max_steps: int = 100
     steps: int = 0
+    short: int = 0
     gripper: float = OPEN
     yaw: float = 0.0
     on_step: Optional[Callable[[], None]] = None
@@ -86,6 +90,7 @@ class Driver:
         n = max(1, int(math.ceil(np.linalg.norm(target - start) / (step_m or self.step_m))))
         for i in range(1, n + settle + 1):
             if self.steps >= self.max_steps:
+                self.short = n + settle + 1 - i
                 return False
             self._act(start + (target - start) * min(1.0, i / n))
         return True
@@ -94,15 +99,18 @@ class Driver:
         """Open (1) or close (-1) the gripper holding the TCP where it is."""
         self.gripper = command
         here = self.tcp()
-        for _ in range(steps):
+        for i in range(steps):
             if self.steps >= self.max_steps:
+                self.short = steps - i
                 return False
             self._act(here)
         return True
 
 
-def grasp_handle(d: Driver, grip: Sequence[float], approach: float = 0.08) -> bool:
-    """Open, come down over the grip point ``grip`` (world, metres), close, lift."""
+def grasp_handle(d: Driver, grip: Sequence[float], approach: float = 0.08,
+                 step_m: float | None = None) -> bool:
+    """Open, come down over the grip point ``grip`` (world, metres), close; moves of at
+    most ``step_m`` a control step (default :attr:`Driver.step_m`)."""
     g = np.asarray(grip, dtype=float)
-    return (d.set_gripper(OPEN, 1) and d.move(g + [0, 0, approach])
-            and d.move(g, settle=4) and d.set_gripper(CLOSED, 5))
+    return (d.set_gripper(OPEN, 1) and d.move(g + [0, 0, approach], step_m=step_m)
+            and d.move(g, settle=4, step_m=step_m) and d.set_gripper(CLOSED, 5))

@@ -18,7 +18,10 @@ backend's motions give:
   the stop's :class:`~creative_py.simulator.types.Verdict`;
 * ``unreachable``: no IK solution, or the learner's bounds refused the motion, which
   is then never sent;
-* ``invalid``: the arm rejected the goal, did not answer in time, or went silent (its
+* ``out_of_time``: the arm accepted the goal but gave no result within its duration
+  plus :attr:`LearnerArm.timeout` (the trial loop judges it as a ManiSkill episode out
+  of control steps: :func:`creative_py.simulator.trial.trial_outcome`);
+* ``invalid``: the arm rejected the goal, did not accept it in time, or went silent (its
   joint states stale or its clock stopped, before the goal or while it ran). A silent
   arm is also kept as :attr:`LearnerArm.lost` (an :class:`ArmUnavailable`, which is a
   :class:`~creative_py.simulator.types.BackendLost`): an episode raises it through the
@@ -173,7 +176,8 @@ class LearnerArm:
         except ArmUnavailable as exc:
             return self._silent(str(exc))
         self.goals_sent += 1
-        r = self.client.send_trajectory(goal, timeout=points[-1][0] + self.timeout)
+        timeout = points[-1][0] + self.timeout
+        r = self.client.send_trajectory(goal, timeout=timeout)
         self.log.append({"planned_s": points[-1][0], "points": len(points),
                          "status": r.status, "error_code": r.error_code,
                          **vars(r.times)})
@@ -192,6 +196,14 @@ class LearnerArm:
                                 f"{r.error_string}", stop)
         if r.status == "silent":
             return self._silent(r.error_string)
+        if r.status == "timeout" and r.times.accepted is not None:
+            # Accepted, then no result in its time: the motion ran out of time, which
+            # the trial loop judges as every backend's (simulator/trial.py).
+            stop = Verdict("time without the goal's result", timeout, timeout, "s", "<",
+                           False, threshold_name="the trajectory's duration + the timeout",
+                           measures={"planned_s": points[-1][0], "timeout_s": self.timeout})
+            return SkillOutcome("out_of_time", f"the arm's goal ran out of time: "
+                                f"{r.error_string}", stop)
         return SkillOutcome("invalid", f"the goal was {r.status}: {r.error_string}")
 
     def move_joints(self, q: Sequence[float], min_duration: float = 0.0) -> SkillOutcome:

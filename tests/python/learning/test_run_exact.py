@@ -47,7 +47,9 @@ resuming {run}: replaying 19 recorded trials
 run folder {run}
 demonstration: the trainer shows the task with hook_a2 (loc 1)
 demonstration with hook_a2: new model pull_out; 16384 hypotheses
-#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)
+#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  \
+because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, -0.052) m: \
+something is in the way  (replayed)
 #2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)
 #3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)
 #4   TUL  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)

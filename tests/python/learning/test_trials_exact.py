@@ -55,7 +55,9 @@ EXP1 = ("experiment(hook_a1,handle_length(hook_a1,medium),[handle_length(hook_a1
         "centred_on(hook_a1,cube1),in_tube(hook_a1,tube1)],[])")
 
 USE_LINES = [
-    "#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  (replayed)",
+    "#1   TUL  hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
+    "because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, -0.052) m: "
+    "something is in the way  (replayed)",
     "#2   TUL  hook_a2        loc 1  failure     tested hook_down(hook_a2)  (replayed)",
     "#3   TUL  hook_a2        loc 1  failure     tested behind(hook_a2,cube1)  (replayed)",
     "#4   TUL  hook_a2        loc 1  failure     tested centred_on(hook_a2,cube1)  (replayed)",
@@ -397,9 +399,11 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
     assert lines == [
         "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
-        "[stopped: gripper lag 0.0301 m, needs <= 0.0300 m; touching hook_a1 against cube1, "
-        "hook_a1 against tube1, robot against riser1, robot against tube1; cube1 centre x "
-        "1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
+        "because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, "
+        "-0.052) m: something is in the way  [stopped: gripper lag 0.0301 m, needs <= "
+        "0.0300 m; touching hook_a1 against cube1, hook_a1 against tube1, robot against "
+        "riser1, robot against tube1; cube1 centre x 1.0985 m, needs < 0.8500 m; moved "
+        "1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):

@@ -100,6 +100,75 @@ def test_unknown_task_and_zone_centre_name_the_file(tmp_path):
         load_world(read_manifest(folder))
 
 
+# A hook as the engine sizes one for far_cube (poke_cube_new1 of `creative run poke_cube
+# --seed 0`: a medium handle, 0.375 m) at the pose it was tried with.
+MEDIUM_HOOK = {"name": "sized_hook", "kind": "hook", "handle_length": 0.375,
+               "handle_width": 0.018, "hook_length": 0.03, "hook_width": 0.012,
+               "hook_side": "right", "hook_angle_deg": 90, "grip_offset": 0.04}
+SIZED_POSE = (-0.056, 0.0)
+
+
+def _with_hook(world, step_m=None):
+    """The world with the sized hook; with ``step_m``, the free moves of picking up and
+    positioning at that many metres a control step instead of the case's."""
+    import dataclasses
+
+    from creative_py.kinds import spec_from_dict
+
+    w = world.with_tool(spec_from_dict(MEDIUM_HOOK))
+    if step_m is None:
+        return w
+    skills = {name: (prim, {**opts, "step_m": step_m}) if "step_m" in opts else (prim, opts)
+              for name, (prim, opts) in w.skills.items()}
+    skills["push"] = w.skills["push"]  # the push keeps its own 2 cm steps
+    return dataclasses.replace(w, skills=skills)
+
+
+def test_a_sized_hook_pokes_the_far_cube_within_the_50_steps(world):
+    """With the case's 5 cm steps of the free moves, the hook fits ManiSkill's budget
+    in far_cube (46-48 of the 50 steps at locations 1, 3, 4; docs/parts.md)."""
+    r = run_trial(_with_hook(world), "sized_hook", "far_cube", 1, pose=SIZED_POSE,
+                  pose_target=_place)
+    assert (r.outcome, r.reason) == ("success", "goal reached")
+    assert r.steps <= world.max_steps and r.verdict["measures"]["evaluate_success"] is True
+
+
+def test_a_trial_out_of_control_steps_is_blocked_with_what_it_needed(world):
+    """At the backend's default 3 cm a step the same trial runs out of the 50 steps in
+    the push, the cube already in the disc but the arm still moving: blocked (never a
+    failure whose measure reads as a pass), with the steps it needed and evaluate()'s
+    judgement on the short lines."""
+    from creative_py.records.trial import verdict_lines
+
+    r = run_trial(_with_hook(world, step_m=0.03), "sized_hook", "far_cube", 1,
+                  pose=SIZED_POSE, pose_target=_place)
+    assert (r.outcome, r.reason) == ("blocked", "push: the episode's 50 control steps ran out")
+    assert r.steps == world.max_steps == 50
+    stop = r.verdict["stop"]
+    assert stop["quantity"] == "control steps needed at least" and stop["threshold"] == 50
+    assert stop["value"] > 50 and stop["holds"] is False
+    assert r.verdict["asked"] is True and r.verdict["holds"] is False
+    assert r.verdict["measures"]["is_cube_placed"] is True  # the distance alone passes
+    lines = verdict_lines(r.verdict)
+    assert lines[0].startswith("stopped: control steps needed at least ")
+    assert lines[-1].startswith("ManiSkill evaluate() success False, the arm's joints at up to ")
+    assert r.verdict["measures"]["arm_joint_speed_rad_s"] > 0.0
+
+
+def test_a_step_size_out_of_range_names_the_file_and_field(tmp_path):
+    import shutil
+
+    folder = tmp_path / "w"
+    shutil.copytree(get_case(CASE).folder, folder)
+    text = (folder / "case.toml").read_text()
+    assert "lift_to = 0.08, step_m = 0.05}" in text
+    (folder / "case.toml").write_text(text.replace("lift_to = 0.08, step_m = 0.05}",
+                                                   "lift_to = 0.08, step_m = 0.0}"))
+    with pytest.raises(WorldFileError, match=r"case.toml: field 'skill\[0\].options.step_m': "
+                                             r"must be a number of metres above 0"):
+        load_world(read_manifest(folder))
+
+
 @pytest.mark.slow
 def test_poke_cube_learns_within_its_budget(tmp_path):
     """The case end to end, tool-use learning only (about 15 s): learned within its trial

@@ -93,3 +93,39 @@ def test_a_joint_space_move_eases_in_and_out_within_the_bounds():
     assert max(speeds) <= peak + 1e-9 and max(speeds) > 0.95 * peak
     assert speeds[0] < 0.2 * peak and speeds[-1] < 0.2 * peak
     assert points[-1][0] == pytest.approx(math.pi / 2 * 0.8 / peak, rel=0.02)
+
+
+@pytest.mark.parametrize("accepted, want", [(0.01, "out_of_time"), (None, "invalid")])
+def test_a_goal_without_a_result_in_its_time_is_a_motion_out_of_time(accepted, want):
+    # Accepted and then no result within its duration plus the timeout: out of time,
+    # judged above the boundary as a ManiSkill episode out of control steps. Never
+    # accepted: the arm did not answer, not a motion that ran long.
+    from creative_py.backends.ros.client import GoalTimes, TrajectoryResult
+    from creative_py.backends.ros.motion import LearnerArm
+    from creative_py.simulator.trial import trial_outcome
+
+    class Client:
+        profile = PROFILE
+
+        def arm_q(self):
+            return [0.0] * N
+
+        def make_goal(self, points):
+            return points
+
+        def send_trajectory(self, points, timeout):
+            why = "no result within 12.5 s (simulated time)" if accepted else "no answer"
+            return TrajectoryResult("timeout", None, why, GoalTimes(accepted=accepted))
+
+    class Kinematics:
+        forward_position = staticmethod(toy_forward)
+
+    arm = LearnerArm(Client(), Kinematics(), timeout=10.0)
+    arm.check = lambda points: None
+    out = arm.send([(2.5, [0.1] + [0.0] * (N - 1))])
+    assert out.status == want
+    if want == "out_of_time":
+        assert out.reason == ("the arm's goal ran out of time: no result within 12.5 s "
+                              "(simulated time)")
+        assert (out.stop.value, out.stop.threshold, out.stop.unit) == (12.5, 12.5, "s")
+        assert trial_outcome(out, acted=True, reached=False)[0] == "blocked"
