@@ -31,13 +31,17 @@ from __future__ import annotations
 
 import difflib
 import logging
+import math
 import re
 import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional, Sequence
 
-from creative_py.bridge import Compound, Engine, PrologError, Term, Var, fact_term
+from creative_py.bridge import (Compound, Engine, PrologError, Term, Var, conj_to_list,
+                               encode, fact_term)
+from creative_py.bridge.errors import reader_words
+from creative_py.bridge.text import PrologTextError
 from creative_py.mesh.export import ToolFiles, write_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.kinds import spec_classes, spec_from_dict
@@ -275,27 +279,59 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
     """Return the task facts of a command-line context such as
     ``"max_tool_length(0.3), tube_length_m(tube1, 0.45)"`` (Prolog syntax, metres).
 
+    The text is read as one Prolog term, a conjunction of facts, by the bridge's
+    guarded reader (:meth:`Engine.parse`: read as data, never called, never nested
+    deeper than :data:`creative_py.bridge.text.DEPTH_MAX`), so no bracket in it can
+    end a list it was put in and a directive (``:- halt``) is only an unknown fact.
+
     Raises
     ------
     ValueError
-        The text does not parse, a fact is not ground, or it is not one of
-        one the size model reads (:func:`context_facts`; it would silently ignore it).
+        The text does not parse or nests too deep, a fact is not ground, a number is
+        not finite, or it is not one of the facts the size model reads
+        (:func:`context_facts`; it would silently ignore it). The message shows the
+        text (its start and end when long).
     """
+    shown = text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
+    where = f"--context {shown!r}"
+    if not text.strip():
+        return []
     try:
-        facts = engine.parse(f"[{text}]") if text.strip() else []
+        facts = conj_to_list(engine.parse(text))
+    except PrologTextError as exc:
+        raise ValueError(f"{where}: not Prolog facts ({str(exc).split(': ', 1)[-1]})") \
+            from None
     except PrologError as exc:
-        raise ValueError(f"context {text!r}: not Prolog facts ({exc})") from None
+        raise ValueError(f"{where}: not Prolog facts ({reader_words(exc) or exc})") \
+            from None
     known_facts = context_facts(engine)
     for fact in facts:
         name = fact.name if isinstance(fact, Compound) else fact
         arity = len(fact.args) if isinstance(fact, Compound) else 0
-        if known_facts.get(name) != arity:
+        if not isinstance(name, str) or known_facts.get(name) != arity:
             known = ", ".join(f"{n}/{a}" for n, a in known_facts.items())
-            raise ValueError(f"context {text!r}: unknown task fact {fact}; the size model "
-                             f"understands {known}")
+            raise ValueError(f"{where}: unknown task fact {_fact_text(fact)}; the size "
+                             f"model understands {known}")
         if not all(isinstance(a, (int, float, str)) for a in fact.args):
-            raise ValueError(f"context {text!r}: {fact} must be ground (atoms and numbers)")
+            raise ValueError(f"{where}: {_fact_text(fact)} must be ground (atoms and "
+                             "numbers)")
+        if not all(math.isfinite(a) for a in fact.args if isinstance(a, float)):
+            raise ValueError(f"{where}: {_fact_text(fact)}: a number is not finite")
     return facts
+
+
+def _fact_text(fact: Term) -> str:
+    """Return a context fact as Prolog text for a message (80 characters at most)."""
+    def arg(a: Term) -> str:  # a non-finite float as SWI-Prolog writes it
+        if isinstance(a, float) and not math.isfinite(a):
+            return "1.5NaN" if math.isnan(a) else ("1.0Inf" if a > 0 else "-1.0Inf")
+        return encode(a, operators=True)
+
+    if isinstance(fact, Compound):
+        text = encode(fact.name) + "(" + ",".join(arg(a) for a in fact.args) + ")"
+    else:
+        text = arg(fact)
+    return text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
 
 
 def default_context(case: str, variant: Optional[str] = None, *,

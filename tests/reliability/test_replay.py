@@ -11,10 +11,12 @@ from pathlib import Path
 import pytest
 
 from _runs import SHORT, one_error_line, run_cli, shared_short_run, trials, tree_digest
+from creative_py.learning.options import run_json_check
 from creative_py.records.folder import read_resume
 
 RUN_JSON = {"case": "rake", "options": {"phase": "use", "max_trials": 3, "eval_trials": 1},
             "world": None, "drawn_world": None}
+RUN_JSON["check"] = run_json_check(RUN_JSON)
 
 
 def _line(n: int, **extra) -> str:
