@@ -765,7 +765,7 @@ def make_tool_cmd(
     the printed pieces (split to fit the build volume) and their G-code (PrusaSlicer)."""
     from creative_py.bridge import Engine, PrologError
     from creative_py.fabrication.manufacture import (
-        InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
+        InfeasibleSpec, default_context, make_tool, parse_context, parse_spec, with_context,
     )
     from creative_py.mesh.printability import PrintSettings
     from creative_py.mesh.slicer import require_slicer
@@ -778,6 +778,8 @@ def make_tool_cmd(
               f"it), got {len(name)}")
     # deepest: <out>/<name>/ros/<name>_description/meshes/<name>...
     out = _path("--out", out, 3 * len(name.encode("utf-8", "surrogateescape")) + 64)
+    if out.exists() and not out.is_dir():
+        _fail(f"--out {out}: not a folder")
     settings = PrintSettings()
     if build_volume is not None:
         settings = _print_settings(build_volume)
@@ -789,7 +791,7 @@ def make_tool_cmd(
                 engine = Engine.instance()
                 lits = parse_spec(case, spec)
                 extra = parse_context(engine, context) if context else []  # no scene yet
-                ctx = default_context(case, variant) + extra
+                ctx = with_context(default_context(case, variant), extra)
                 files = make_tool(engine, case, lits, ctx, name, out, picture=True,
                                   overwrite=overwrite, settings=settings,
                                   gcode=not no_slice)

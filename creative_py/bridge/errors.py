@@ -153,7 +153,8 @@ def reader_words(error: "PrologError") -> Optional[str]:
             isinstance(error.error_term, Compound) and len(error.error_term.args) == 2) \
             else None
         where = ""
-        if isinstance(context, Compound) and context.name == "stream" and len(context.args) == 4:
+        if (isinstance(context, Compound) and context.name == "stream"
+                and len(context.args) == 4 and context.args[1] != 0):  # 0: at the end
             where = f" at line {context.args[1]}, column {context.args[2]}"
         elif isinstance(context, Compound) and context.name == "string" and len(context.args) == 2:
             where = f" at character {context.args[1]}"

@@ -320,6 +320,22 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
     return facts
 
 
+def with_context(perceived: Sequence[Term], given: Sequence[Term]) -> list[Term]:
+    """Return the task facts ``perceived`` (:func:`default_context`) with the ``given``
+    ones (:func:`parse_context`) after them; raise ValueError when a given fact is about
+    an object the task does not have (``tube_length_m(tube2, 0.45)`` where the task
+    has ``tube1``): the size model would ignore it without a word."""
+    objects = {f.args[0] for f in perceived
+               if isinstance(f, Compound) and len(f.args) >= 2 and isinstance(f.args[0], str)}
+    for fact in given:
+        if (isinstance(fact, Compound) and len(fact.args) >= 2
+                and isinstance(fact.args[0], str) and fact.args[0] not in objects):
+            raise ValueError(f"--context: {_fact_text(fact)} is about {fact.args[0]}, "
+                             "which the task does not have (its objects: "
+                             f"{', '.join(sorted(objects)) or 'none'})")
+    return list(perceived) + list(given)
+
+
 def _fact_text(fact: Term) -> str:
     """Return a context fact as Prolog text for a message (80 characters at most)."""
     def arg(a: Term) -> str:  # a non-finite float as SWI-Prolog writes it

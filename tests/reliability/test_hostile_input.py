@@ -291,3 +291,62 @@ def test_a_trial_line_and_the_count_of_kept_trials_agree_under_ctrl_c(tmp_path,
     run.release()
     lines = (run.path / "trials.jsonl").read_text().splitlines()
     assert len(lines) == len(run.trials) == 1
+
+
+# ---------------------------------------------------------------- make-tool
+
+MAKE_TOOL = [
+    # --context is Prolog text read as data: one conjunction of facts, never called
+    (["--context", "a] , [b"], "error: --context 'a] , [b': not Prolog facts (syntax error: "
+     "cannot start term at line 1, column 1)"),                   # was a traceback
+    (["--context", "max_tool_length(0.3)|b"], "error: --context 'max_tool_length(0.3)|b': "
+     "unknown task fact '|'(max_tool_length(0.3),b); the size model understands "),  # idem
+    (["--context", "max_tool_length(" + "(" * 60000 + "0.3" + ")" * 60000 + ")"],
+     "not Prolog facts (brackets nested deeper than 1000 levels)"),    # was SIGSEGV
+    (["--context", "max_tool_length(" + "- " * 60000 + "0.3)"],
+     "not Prolog facts (a term nested deeper than 200 levels)"),       # was a traceback
+    (["--context", "max_tool_length(0.5). max_tool_length(0.01)"],
+     "error: --context 'max_tool_length(0.5). max_tool_length(0.01)': not Prolog facts "
+     "(syntax error: one term expected)"),                # the second fact was ignored
+    (["--context", "max_tool_length(0.3)]. :- initialization(halt). x([1"],
+     "not Prolog facts (syntax error: cannot start term at line 1, column 20)"),
+    (["--context", "max_tool_length(1.0Inf)"], "error: --context 'max_tool_length(1.0Inf)': "
+     "max_tool_length(1.0Inf): a number is not finite"),
+    (["--context", "tube_length_m(tube2, 0.45)"], "error: --context: "
+     "tube_length_m(tube2,0.45) is about tube2, which the task does not have (its objects: "
+     "tube1)"),                                           # a tool was made, the fact ignored
+    (["--context", os.fsdecode(b"max_tool_length(\xff)")],
+     "error: --context: not UTF-8 text (byte 0xff at character 17)"),  # "cannot start SWI"
+    # the other options
+    (["--name", os.fsdecode(b"h\xff")], "error: --name: not UTF-8 text (byte 0xff at "
+     "character 2)"),
+    (["--variant", os.fsdecode(b"\xfe")], "error: --variant: not UTF-8 text (byte 0xfe at "
+     "character 1)"),
+    (["--out", "{a_file}"], "error: --out {a_file}: not a folder"),   # "the tool's folder
+]                                                            # exists (--overwrite ...)"
+
+
+@pytest.mark.parametrize("extra, message", MAKE_TOOL,
+                         ids=[" ".join(a)[:40] for a, _ in MAKE_TOOL])
+def test_make_tool_refuses_hostile_input_in_one_line(tmp_path, extra, message):
+    a_file = tmp_path / "a_file"
+    a_file.write_text("not a folder\n")
+    flag = tmp_path / "ran"
+    extra = [a.format(a_file=a_file) for a in extra]
+    proc = creative("make-tool", "hook", "handle_length=long", "--out", str(tmp_path / "t"),
+                    "--no-slice", *extra)
+    line = refused(proc)
+    message = message.format(a_file=a_file)
+    assert line.startswith(message) if message.startswith("error: ") else message in line
+    assert not (tmp_path / "t").exists() and not flag.exists()
+    assert a_file.read_text() == "not a folder\n"
+
+
+def test_make_tool_context_directives_are_never_run(tmp_path):
+    flag = tmp_path / "ran"
+    for text in (f":- shell('touch {flag}')", f"shell('touch {flag}')",
+                 f"initialization(shell('touch {flag}'))", ":- halt", "halt"):
+        proc = creative("make-tool", "hook", "handle_length=long", "--context", text,
+                        "--out", str(tmp_path / "t"), "--no-slice")
+        assert "unknown task fact" in refused(proc)
+    assert not flag.exists() and not (tmp_path / "t").exists()

@@ -599,7 +599,8 @@ def test_resume_run_warns_of_a_torn_line_and_releases_the_folder(tmp_path, caplo
     folder = tmp_path / "run"
     folder.mkdir()
     world = hook_world[1].manifest.folder
-    _run_json(folder, {"case": "rake", "options": {"phase": "use"}, "world": str(world)})
+    _run_json(folder, {"case": "rake", "options": {"phase": "use"}, "world": str(world)},
+              check=True)
     (folder / "trials.jsonl").write_text('{"trial": 1, "pha', encoding="utf-8")
     with pytest.raises(ValueError) as err:
         resume_run(folder)
