@@ -144,12 +144,15 @@ def test_a_goal_that_does_not_parse_names_the_file_and_the_field(tmp_path):
 # ---------------------------------------------------------------- long paths
 
 def _deep(root: Path, length: int) -> Path:
-    """A path below ``root`` of about ``length`` bytes, in components of 199 bytes."""
+    """A path below ``root`` of exactly ``length`` bytes, in components of at most 199."""
     parts, n = [], len(str(root))
-    while n < length:
+    while length - n > 200:
         parts.append("d" * 199)
         n += 200
-    return root.joinpath(*parts)
+    parts.append("d" * (length - n - 1))
+    path = root.joinpath(*parts)
+    assert len(str(path)) == length
+    return path
 
 
 def test_a_4000_byte_out_is_refused_before_anything_is_made(tmp_path):
@@ -162,7 +165,7 @@ def test_a_4000_byte_out_is_refused_before_anything_is_made(tmp_path):
 
 
 def test_a_run_folder_that_cannot_be_made_leaves_no_folder_above_it(tmp_path):
-    parent = _deep(tmp_path / "o", 4090)      # the parents fit; the run folder does not
+    parent = _deep(tmp_path / "o", 4080)      # the parents fit; the run folder does not
     with pytest.raises(OSError):
         RunFolder.create(parent, "rake", 0)
     assert list(tmp_path.iterdir()) == []
