@@ -244,7 +244,8 @@ def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL, *,
     classes, kind_props = vocab.kinds[kind]
     lacking = [p for p in chosen if p not in kind_props]
     if lacking:
-        raise ValueError(f"{case} spec {text!r}: a {kind} has no {', '.join(lacking)} "
+        raise ValueError(f"{case} spec {_shown(text)!r}: a {kind} has no "
+                         f"{', '.join(lacking)} "
                          f"(its properties: {', '.join(kind_props)})")
     _check_atom(tool, "tool")
     return ([Compound(c, (tool,)) for c in classes]
@@ -258,18 +259,21 @@ def _spec_pairs(case: str, text: str, props: dict[str, Any], allowed: str) -> di
     for item in text.split(","):
         prop, sep, value = (s.strip() for s in item.partition("="))
         if not sep or not prop or not value:
-            raise ValueError(f"{case} spec {text!r}: {item.strip()!r} is not property=value; "
+            raise ValueError(f"{case} spec {_shown(text)!r}: {_shown(item.strip())!r} is not "
+                             "property=value; "
                              f"allowed: {allowed}")
         if prop not in props:
-            raise ValueError(f"{case} spec {text!r}: unknown property {prop!r}"
+            raise ValueError(f"{case} spec {_shown(text)!r}: unknown property "
+                             f"{_shown(prop)!r}"
                              f"{_did_you_mean(prop, props)}; allowed properties: "
                              f"{', '.join(props)}")
         if value not in props[prop]:
-            raise ValueError(f"{case} spec {text!r}: {prop} cannot be {value!r}"
+            raise ValueError(f"{case} spec {_shown(text)!r}: {prop} cannot be "
+                             f"{_shown(value)!r}"
                              f"{_did_you_mean(value, props[prop])}; allowed values: "
                              f"{', '.join(props[prop])}")
         if prop in chosen and chosen[prop] != value:
-            raise ValueError(f"{case} spec {text!r}: {prop} given twice ({chosen[prop]} "
+            raise ValueError(f"{case} spec {_shown(text)!r}: {prop} given twice ({chosen[prop]} "
                              f"and {value})")
         chosen[prop] = value
     return chosen
@@ -292,8 +296,7 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
         (:func:`context_facts`; it would silently ignore it). The message shows the
         text (its start and end when long).
     """
-    shown = text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
-    where = f"--context {shown!r}"
+    where = f"--context {_shown(text)!r}"
     if not text.strip():
         return []
     try:
@@ -334,6 +337,11 @@ def with_context(perceived: Sequence[Term], given: Sequence[Term]) -> list[Term]
                              "which the task does not have (its objects: "
                              f"{', '.join(sorted(objects)) or 'none'})")
     return list(perceived) + list(given)
+
+
+def _shown(text: str) -> str:
+    """Return command-line text for a message: its start and end when long."""
+    return text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
 
 
 def _fact_text(fact: Term) -> str:

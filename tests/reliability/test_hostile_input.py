@@ -353,3 +353,13 @@ def test_make_tool_context_directives_are_never_run(tmp_path):
                         "--out", str(tmp_path / "t"), "--no-slice")
         assert "unknown task fact" in refused(proc)
     assert not flag.exists() and not (tmp_path / "t").exists()
+
+
+def test_a_long_spec_is_shown_by_its_start_and_end(tmp_path):
+    """The whole 5,000-character spec was printed back in the error line."""
+    spec = "handle_length=" + "(" * 5000
+    proc = creative("make-tool", "hook", spec, "--out", str(tmp_path / "t"), "--no-slice")
+    line = refused(proc)
+    assert line.startswith("error: hook spec 'handle_length=((((") and len(line) < 400, line
+    assert "handle_length cannot be '((((" in line
+    assert not (tmp_path / "t").exists()
