@@ -76,6 +76,21 @@ def _close_inherited() -> None:
 os.register_at_fork(after_in_child=_close_inherited)
 
 
+@contextmanager
+def _sigint_held() -> Iterator[None]:
+    """Block SIGINT while the block runs (in the main thread; elsewhere signals are not
+    delivered anyway) and deliver one that came in after it: its KeyboardInterrupt is
+    raised after the block, not in the middle of it."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, before)
+
+
 @dataclass
 class RunFolder:
     """A run's output folder; create it with :meth:`create`, or :meth:`open` it to
@@ -229,21 +244,6 @@ class RunFolder:
     def write_json(self, name: str, data: Any) -> Path:
         """Write a JSON file of the run atomically."""
         return write_atomic(self.path / name, json.dumps(jsonable(data), indent=2) + "\n")
-
-
-@contextmanager
-def _sigint_held() -> Iterator[None]:
-    """Block SIGINT while the block runs (in the main thread; elsewhere signals are not
-    delivered anyway) and deliver one that came in after it: its KeyboardInterrupt is
-    raised after the block, not in the middle of it."""
-    if threading.current_thread() is not threading.main_thread():
-        yield
-        return
-    before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
-    try:
-        yield
-    finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, before)
 
 
 def _lock_holder(fd: int) -> str:
