@@ -46,7 +46,12 @@ _TOKEN = re.compile(r"""
 
 class PrologTextError(BridgeError, ValueError):
     """Text from outside that Prolog is not given to read: too large, not UTF-8, or
-    nested too deep. The message names where the text came from and the cause."""
+    nested too deep. The message is ``where: why`` (where the text came from, the
+    cause); ``why`` alone is an attribute."""
+
+    def __init__(self, where: str, why: str) -> None:
+        super().__init__(f"{where}: {why}")
+        self.where, self.why = where, why
 
 
 def nesting(text: str) -> int:
@@ -67,8 +72,7 @@ def check_nesting(text: str, where: str) -> str:
     """Return ``text`` if its brackets nest at most :data:`BRACKETS_MAX` deep; raise
     :class:`PrologTextError` naming ``where`` otherwise."""
     if nesting(text) > BRACKETS_MAX:
-        raise PrologTextError(f"{where}: brackets nested deeper than {BRACKETS_MAX} "
-                              "levels")
+        raise PrologTextError(where, f"brackets nested deeper than {BRACKETS_MAX} levels")
     return text
 
 
@@ -87,13 +91,13 @@ def read_text_file(path: Path | str, max_bytes: int = MODEL_FILE_BYTES_MAX) -> s
     path = Path(path)
     size = os.stat(path).st_size
     if size > max_bytes:
-        raise PrologTextError(f"{path}: {size} bytes, more than the {max_bytes} a model "
+        raise PrologTextError(str(path), f"{size} bytes, more than the {max_bytes} a model "
                               "file may have")
     data = path.read_bytes()[:max_bytes + 1]
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         line = data.count(b"\n", 0, exc.start) + 1
-        raise PrologTextError(f"{path}: not UTF-8 text (byte 0x{data[exc.start]:02x} at "
-                              f"line {line}, byte {exc.start + 1})") from None
+        raise PrologTextError(str(path), f"not UTF-8 text (byte 0x{data[exc.start]:02x} "
+                              f"at line {line}, byte {exc.start + 1})") from None
     return check_nesting(text, str(path))

@@ -302,8 +302,7 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
     try:
         facts = conj_to_list(engine.parse(text))
     except PrologTextError as exc:
-        raise ValueError(f"{where}: not Prolog facts ({str(exc).split(': ', 1)[-1]})") \
-            from None
+        raise ValueError(f"{where}: not Prolog facts ({exc.why})") from None
     except PrologError as exc:
         raise ValueError(f"{where}: not Prolog facts ({reader_words(exc) or exc})") \
             from None

@@ -83,7 +83,7 @@ def _literal(engine: Engine, where: Any, index: int, text: str) -> Any:
     try:
         return engine.parse(text)
     except PrologTextError as exc:
-        why = str(exc).split(": ", 1)[-1]
+        why = exc.why
     except PrologError as exc:
         why = reader_words(exc) or str(exc)
     raise ValueError(f"{where}: field 'goal', item {index + 1} {shown!r}: not a Prolog "
