@@ -78,17 +78,22 @@ os.register_at_fork(after_in_child=_close_inherited)
 
 @contextmanager
 def _sigint_held() -> Iterator[None]:
-    """Block SIGINT while the block runs (in the main thread; elsewhere signals are not
-    delivered anyway) and deliver one that came in after it: its KeyboardInterrupt is
-    raised after the block, not in the middle of it."""
+    """Hold a SIGINT back while the block runs (in the main thread, where Python runs
+    signal handlers) and give it, after the block, to the handler that was there: its
+    KeyboardInterrupt is raised after the block, not in the middle of it. (A handler
+    that notes, not a blocked signal mask: a signal sent to the process reaches any
+    thread that does not block it, and Python then runs the handler at once.)"""
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    before = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT})
+    noted: list[int] = []
+    before = signal.signal(signal.SIGINT, lambda signum, frame: noted.append(signum))
     try:
         yield
     finally:
-        signal.pthread_sigmask(signal.SIG_SETMASK, before)
+        signal.signal(signal.SIGINT, before)
+    if noted:
+        signal.raise_signal(signal.SIGINT)
 
 
 @dataclass

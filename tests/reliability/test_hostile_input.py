@@ -15,6 +15,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import threading
 from pathlib import Path
 
 import pytest
@@ -287,10 +288,20 @@ def test_a_trial_line_and_the_count_of_kept_trials_agree_under_ctrl_c(tmp_path,
         sum(range(1000))                          # bytecode on which Python handles it
 
     monkeypatch.setattr(folder.os, "fsync", fsync_then_ctrl_c)
-    with pytest.raises(KeyboardInterrupt):
-        run.append_trial({"trial": 1, "phase": "eval", "phase_trial": 1,
-                          "variant": "standard", "location": 1, "tool": "rake_a2",
-                          "outcome": "success"})
+    # Another thread, as a run has (the progress line's): a signal sent to the process
+    # may be taken by any thread that does not block it, so blocking it in this one
+    # would not hold it back.
+    done = threading.Event()
+    other = threading.Thread(target=done.wait)
+    other.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            run.append_trial({"trial": 1, "phase": "eval", "phase_trial": 1,
+                              "variant": "standard", "location": 1, "tool": "rake_a2",
+                              "outcome": "success"})
+    finally:
+        done.set()
+        other.join()
     run.release()
     lines = (run.path / "trials.jsonl").read_text().splitlines()
     assert len(lines) == len(run.trials) == 1
