@@ -133,26 +133,34 @@ def _check_counts(*checks: tuple[str, Optional[int], int, int]) -> None:
             _fail(f"{option} must be at most {most}, got {value}")
 
 
-def _path(option: str, text: Optional[str]) -> Optional[Path]:
+def _path(option: str, text: Optional[str], room: int = 0) -> Optional[Path]:
     """Return the path an option names (None if not given); fail in one line on an
-    empty one (``--out ''`` would otherwise mean the current folder)."""
+    empty one (``--out ''`` would otherwise mean the current folder), or as
+    :func:`_usable` does."""
     if text is None:
         return None
     if not text.strip():
         _fail(f"{option} must name a folder, got an empty string")
-    return _usable(option, Path(text))
+    return _usable(option, Path(text), room)
 
 
-def _usable(option: str, path: Path) -> Path:
-    """Return ``path`` if the file system can look it up; fail in one line naming the
-    option otherwise (a component longer than the file system allows, ENAMETOOLONG,
-    which ``Path.exists`` raises)."""
+def _usable(option: str, path: Path, room: int = 0) -> Path:
+    """Return ``path`` if the file system can look it up, and, for a folder the command
+    writes below, if ``room`` more bytes of path fit under Linux's PATH_MAX (a run's
+    folder and files: :data:`ROOM_BELOW_OUT`); fail in one line naming the option
+    otherwise (a component longer than the file system allows, ENAMETOOLONG, which
+    ``Path.exists`` raises; a run that would fail at its first deep file)."""
     text = str(path)
     shown = text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
     longest = max((len(os.fsencode(p)) for p in path.parts), default=0)
     if longest > NAME_MAX:  # even below a folder not made yet
         _fail(f"{option} {shown}: {os.strerror(errno.ENAMETOOLONG)} (a name of {longest} "
               f"bytes, at most {NAME_MAX})")
+    length = len(os.fsencode(os.path.abspath(path)))
+    if room and length + room > PATH_MAX:
+        _fail(f"{option} {shown}: {os.strerror(errno.ENAMETOOLONG)} (a path of {length} "
+              f"bytes leaves no room for the {room} bytes of what is written below it; "
+              f"at most {PATH_MAX - room})")
     try:
         path.exists()
     except OSError as exc:
@@ -163,12 +171,38 @@ def _usable(option: str, path: Path) -> Path:
 NAME_MAX = 255
 """The longest file name (one path component), bytes: Linux's NAME_MAX."""
 
+PATH_MAX = 4095
+"""The longest path, bytes: Linux's PATH_MAX (4096) less its terminating NUL."""
+
+ROOM_BELOW_OUT = 256
+"""The bytes of path a run writes below ``--out`` (its folder ``<case>-<time>-s<seed>``
+and, deepest, ``tools/<tool>/ros/<tool>_description/meshes/<file>``), with room to
+spare; a sweep's run folders sit one level deeper."""
+
+TOOL_NAME_MAX = 200
+"""The longest ``make-tool --name``: its files' names add to it (``<name>_description``,
+the writer's temporary ``.<name>.<random>.tmp``) and must stay within NAME_MAX."""
+
 
 def _name(option: str, text: Optional[str]) -> Optional[str]:
     """Return a name an option gives (None if not given); fail in one line on an empty
-    one (``--variant ''`` would otherwise mean the default)."""
+    one (``--variant ''`` would otherwise mean the default), or as :func:`_text`."""
     if text is not None and not text.strip():
         _fail(f"{option} must not be empty")
+    return _text(option, text)
+
+
+def _text(option: str, text: Optional[str]) -> Optional[str]:
+    """Return text an option gives for the engine (a name, a spec, Prolog text); fail
+    in one line when the command line held bytes that are not UTF-8 (Python keeps them
+    as lone surrogates, which no encoder takes)."""
+    if text is not None:
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError as exc:
+            byte = os.fsencode(text[exc.start:exc.start + 1])
+            _fail(f"{option}: not UTF-8 text (byte 0x{byte[0]:02x} at character "
+                  f"{exc.start + 1})")
     return text
 
 
@@ -281,7 +315,7 @@ def trial(
     """Run one physical trial and report its outcome (success, failure, blocked,
     unreachable or invalid)."""
     variant = _name("--variant", variant)
-    save_images, world = _path("--save-images", save_images), _path("--world", world)
+    save_images, world = _path("--save-images", save_images, 64), _path("--world", world)
     _backend_override(backend, robot_profile)
     with _one_line_errors(), _stdout_to_stderr():
         lines = _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
@@ -392,7 +426,7 @@ def sweep(
     from creative_py.sweep import (SweepOptions, SweepStopped, parse_ints,
                                    parse_strategies, plan_runs, run_sweep)
 
-    out = _path("--out", out)
+    out = _path("--out", out, 2 * ROOM_BELOW_OUT)   # <sweep>/runs/<run>/...
     try:
         names = parse_strategies(strategies)
         seed_list = parse_ints(seeds, "--seeds")
@@ -501,7 +535,8 @@ def run(
     from creative_py.world_files import WorldFileError
 
     console = Console(stderr=True)
-    out, world, resume = _path("--out", out), _path("--world", world), _path("--resume", resume)
+    out, world = _path("--out", out, ROOM_BELOW_OUT), _path("--world", world)
+    resume = _path("--resume", resume, ROOM_BELOW_OUT)
     if video not in ("all", "key", "none"):
         _fail(f"--video must be all, key or none, got {video!r}")
     if gui:
@@ -730,13 +765,21 @@ def make_tool_cmd(
     the printed pieces (split to fit the build volume) and their G-code (PrusaSlicer)."""
     from creative_py.bridge import Engine, PrologError
     from creative_py.fabrication.manufacture import (
-        InfeasibleSpec, default_context, make_tool, parse_context, parse_spec,
+        InfeasibleSpec, default_context, make_tool, parse_context, parse_spec, with_context,
     )
     from creative_py.mesh.printability import PrintSettings
     from creative_py.mesh.slicer import require_slicer
     from creative_py.world_files import WorldFileError
 
-    out, variant, name = _path("--out", out), _name("--variant", variant), _name("--name", name)
+    variant, name = _name("--variant", variant), _name("--name", name)
+    case, spec, context = _text("CASE", case), _text("SPEC", spec), _text("--context", context)
+    if len(name) > TOOL_NAME_MAX:
+        _fail(f"--name: at most {TOOL_NAME_MAX} characters (the tool's file names add to "
+              f"it), got {len(name)}")
+    # deepest: <out>/<name>/ros/<name>_description/meshes/<name>...
+    out = _path("--out", out, 3 * len(name.encode("utf-8", "surrogateescape")) + 64)
+    if out.exists() and not out.is_dir():
+        _fail(f"--out {out}: not a folder")
     settings = PrintSettings()
     if build_volume is not None:
         settings = _print_settings(build_volume)
@@ -747,9 +790,8 @@ def make_tool_cmd(
             with _stdout_to_stderr():
                 engine = Engine.instance()
                 lits = parse_spec(case, spec)
-                ctx = default_context(case, variant)
-                if context:
-                    ctx += parse_context(engine, context)
+                extra = parse_context(engine, context) if context else []  # no scene yet
+                ctx = with_context(default_context(case, variant), extra)
                 files = make_tool(engine, case, lits, ctx, name, out, picture=True,
                                   overwrite=overwrite, settings=settings,
                                   gcode=not no_slice)
@@ -760,7 +802,8 @@ def make_tool_cmd(
         except PrologError as exc:
             if not context:
                 raise
-            _fail(f"--context {context!r}: the size model cannot use it: {exc.formal}")
+            shown = context if len(context) <= 80 else f"{context[:60]}...{context[-12:]}"
+            _fail(f"--context {shown!r}: the size model cannot use it: {exc.formal}")
     typer.echo(tool_summary(files.manifest))
     for p in files.paths():
         typer.echo(str(p))

@@ -172,11 +172,16 @@ def parse_strategies(text: str) -> list[str]:
 
 def plan_runs(cases: Sequence[str], strategies: Sequence[str], seeds: Sequence[int],
               world_seeds: Sequence[Optional[int]]) -> list[RunSpec]:
-    """Return every combination, case-major; raise ValueError for an unknown case."""
+    """Return every combination, case-major; raise ValueError for an unknown case or
+    one given twice (as :func:`parse_ints` and :func:`parse_strategies` refuse a
+    number or a strategy given twice)."""
     from creative_py.case import get_case
 
     if not cases:
         raise ValueError("sweep: no case given")
+    twice = next((c for i, c in enumerate(cases) if c in cases[:i]), None)
+    if twice is not None:  # every run of it would run twice, in the same folder name
+        raise ValueError(f"sweep: case {twice!r} is given twice")
     total = len(cases) * len(strategies) * len(seeds) * len(world_seeds)
     if total > RUNS_MAX:
         raise ValueError(f"sweep: {len(cases)} case(s) x {len(strategies)} strateg"

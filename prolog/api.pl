@@ -49,7 +49,8 @@ if it needs a new module, its use_module/1 below.
               [ vs_init/2, vs_update/3, vs_bounds/3, vs_unknown/2, vs_examples/3,
                 vs_converged/1, vs_covers/3, vs_notes/2, vs_count/3,
                 vs_init_prior/3, vs_prior/3, vs_prior_events/2 ]).
-:- use_module(transfer, [read_prior/2, prior_shared/3, prior_literals/4,
+:- use_module(text_terms, [text_term/3]).
+:- use_module(transfer, [read_prior/2, read_prior_text/3, prior_shared/3, prior_literals/4,
                           prior_contradicted/4, prior_kinds/3]).
 :- use_module(replacement, [replacement/3]).
 :- use_module(abstract_state, [abstract_state/3, pose_numbers/4, pose_world/5]).
@@ -117,6 +118,7 @@ api_op(vs_init_prior(Case, Example, Lits), VS,
 api_op(vs_prior(VS), prior(Kept, Dropped), vs_prior(VS, Kept, Dropped)).
 api_op(vs_prior_events(VS), Events, vs_prior_events(VS, Events)).
 api_op(read_prior(File), Prior, read_prior(File, Prior)).
+api_op(read_prior_text(Text, File), Prior, read_prior_text(Text, File, Prior)).
 api_op(prior_shared(Case, Prior), Shared, prior_shared(Case, Prior, Shared)).
 api_op(prior_literals(Case, Prior, Example), Lits, prior_literals(Case, Prior, Example, Lits)).
 api_op(prior_contradicted(Case, Prior, Example), Lits,
@@ -435,11 +437,11 @@ api_version_(1, Major, Minor, Patch) :-
 
 %   api_parse_(+Text, -Term) is det.
 %
-%   Read Text (one term, no full stop) keeping its variable names.
+%   Read Text (one term, no full stop) keeping its variable names; a term nested
+%   deeper than text_terms:term_depth_max/1 raises (text_terms.pl says why).
 
 api_parse_(Text, Term) :-
-    must_be(text, Text),
-    term_string(Term, Text, [variable_names(Bindings)]),
+    text_term(Text, Term, Bindings),
     maplist(api_bind_var_name_, Bindings).
 
 api_bind_var_name_(Name = '$VAR'(Name)).

@@ -1,5 +1,6 @@
 :- module(transfer,
           [ read_prior/2,            % +File, -Prior
+            read_prior_text/3,       % +Text, +File, -Prior
             prior_shared/3,          % +Case, +Prior, -Shared
             prior_literals/4,        % +Case, +Prior, +Example, -Literals
             prior_contradicted/4,    % +Case, +Prior, +Example, -Literals
@@ -48,38 +49,42 @@ prior.
 :- use_module(library(error)).
 :- use_module(library(lists)).
 :- use_module(library(apply)).
+:- use_module(library(readutil), [read_file_to_string/3]).
+:- use_module(text_terms, [text_terms/2]).
 :- use_module(case, [must_be_case/1, case_answer/1, case_holds/1, class_holds/1,
                       case_knowledge/2]).
 
 %!  read_prior(+File, -Prior) is det.
 %
 %   Prior is prior(Case, HS, HG) from the learned_hypothesis(Case, hs|hg, Clause)
-%   terms of the model file File (model_file.pl). Raises existence_error(file, File)
-%   for a missing file, the reader's syntax_error, and
-%   domain_error(learned_model_file, File) when File has no two bounds of one case.
+%   terms of the model file File (model_file.pl), read as read_prior_text/3 reads
+%   its text. Raises existence_error(file, File) for a missing file.
 
-read_prior(File, prior(Case, HS, HG)) :-
+read_prior(File, Prior) :-
     must_be(atom, File),
     (   exists_file(File)
     ->  true
     ;   existence_error(file, File)
     ),
-    setup_call_cleanup(open(File, read, In, [encoding(utf8)]),
-                       read_terms_(In, Terms),
-                       close(In)),
+    read_file_to_string(File, Text, [encoding(utf8)]),
+    read_prior_text(Text, File, Prior).
+
+%!  read_prior_text(+Text, +File, -Prior) is det.
+%
+%   Prior is prior(Case, HS, HG) from the learned_hypothesis(Case, hs|hg, Clause)
+%   terms of Text, the contents of the model file File. The terms are read as data
+%   (text_terms:text_terms/2: never called, never deeper than term_depth_max/1).
+%   Raises the reader's syntax_error, representation_error(term_depth(Max)) for a
+%   term nested too deep, and domain_error(learned_model_file, File) when Text has no
+%   two bounds of one case.
+
+read_prior_text(Text, File, prior(Case, HS, HG)) :-
+    text_terms(Text, Terms),
     (   memberchk(learned_hypothesis(Case, hs, HS), Terms),
         memberchk(learned_hypothesis(Case, hg, HG), Terms),
         atom(Case)
     ->  true
     ;   domain_error(learned_model_file, File)
-    ).
-
-read_terms_(In, Terms) :-
-    read_term(In, T, []),
-    (   T == end_of_file
-    ->  Terms = []
-    ;   Terms = [T|Ts],
-        read_terms_(In, Ts)
     ).
 
 %!  prior_shared(+Case, +Prior, -Shared:list) is det.

@@ -367,11 +367,15 @@ class Engine:
         """Return the term that Prolog reads from ``text`` (one term, no full stop).
 
         Variables keep their names; anonymous ones come back as ``_G0``, ``_G1``, ...
-        A syntax error raises :class:`PrologError` with ``syntax_error(...)``.
+        A syntax error raises :class:`PrologError` with ``syntax_error(...)``; a term
+        nested deeper than :data:`creative_py.bridge.text.DEPTH_MAX` raises
+        :class:`~creative_py.bridge.text.PrologTextError` (brackets, before Prolog reads
+        it) or :class:`PrologError` with ``representation_error(term_depth(Max))``.
         """
         from creative_py.bridge.terms import PlString
+        from creative_py.bridge.text import check_nesting
 
-        return self._must("parse", PlString(text))
+        return self._must("parse", PlString(check_nesting(text, "text")))
 
     def load_ontology(self, path: PathLike) -> None:
         """Load a background-knowledge file with ``knowledge:load_ontology/1``.
@@ -478,8 +482,16 @@ class Engine:
 
     def read_prior(self, path: PathLike) -> Term:
         """Return ``prior(Case, HS, HG)`` read from a run's ``model.pl``
-        (``transfer:read_prior/2``; Prolog's errors as :meth:`call` raises them)."""
-        return self._must("read_prior", str(path))
+        (``transfer:read_prior_text/3``; Prolog's errors as :meth:`call` raises them).
+
+        The file is read here, checked (:func:`creative_py.bridge.text.read_text_file`:
+        size, UTF-8, nesting; :class:`~creative_py.bridge.text.PrologTextError`), and
+        its text given to Prolog, which reads its terms as data."""
+        from creative_py.bridge.terms import PlString
+        from creative_py.bridge.text import read_text_file
+
+        text = read_text_file(path)
+        return self._must("read_prior_text", PlString(text), str(path))
 
     def prior_shared(self, case: str, prior: Term) -> list:
         """Return the literals of the prior's h_g that the ontology maps to ``case``."""

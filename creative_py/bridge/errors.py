@@ -138,6 +138,33 @@ class PrologSyntaxError(PrologLoadError):
     """A consulted file has a syntax error; ``file`` and ``line`` locate the first one."""
 
 
+def reader_words(error: "PrologError") -> Optional[str]:
+    """Return in words what the reader said of text it could not take: a syntax error
+    (``syntax error: operator expected at line 3``; the line when the text was read
+    from a stream, the character when from a string) or a term nested too deep
+    (``prolog/text_terms.pl``); None for any other error."""
+    formal = error.formal
+    if not isinstance(formal, Compound) or len(formal.args) != 1:
+        return None
+    (what,) = formal.args
+    if formal.name == "syntax_error":
+        words = " ".join(str(what).replace("_", " ").split())
+        context = error.error_term.args[1] if (
+            isinstance(error.error_term, Compound) and len(error.error_term.args) == 2) \
+            else None
+        where = ""
+        if (isinstance(context, Compound) and context.name == "stream"
+                and len(context.args) == 4 and context.args[1] != 0):  # 0: at the end
+            where = f" at line {context.args[1]}, column {context.args[2]}"
+        elif isinstance(context, Compound) and context.name == "string" and len(context.args) == 2:
+            where = f" at character {context.args[1]}"
+        return f"syntax error: {words}{where}"
+    if (formal.name == "representation_error" and isinstance(what, Compound)
+            and what.name == "term_depth" and len(what.args) == 1):
+        return f"a term nested deeper than {what.args[0]} levels"
+    return None
+
+
 def _show(term: Any) -> str:
     try:
         return encode(term, operators=True)

@@ -31,13 +31,17 @@ from __future__ import annotations
 
 import difflib
 import logging
+import math
 import re
 import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Optional, Sequence
 
-from creative_py.bridge import Compound, Engine, PrologError, Term, Var, fact_term
+from creative_py.bridge import (Compound, Engine, PrologError, Term, Var, conj_to_list,
+                               encode, fact_term)
+from creative_py.bridge.errors import reader_words
+from creative_py.bridge.text import PrologTextError
 from creative_py.mesh.export import ToolFiles, write_tool_files
 from creative_py.mesh.printability import PrintSettings
 from creative_py.kinds import spec_classes, spec_from_dict
@@ -240,7 +244,8 @@ def parse_spec(case: str, text: str, tool: str = PLACEHOLDER_TOOL, *,
     classes, kind_props = vocab.kinds[kind]
     lacking = [p for p in chosen if p not in kind_props]
     if lacking:
-        raise ValueError(f"{case} spec {text!r}: a {kind} has no {', '.join(lacking)} "
+        raise ValueError(f"{case} spec {_shown(text)!r}: a {kind} has no "
+                         f"{', '.join(lacking)} "
                          f"(its properties: {', '.join(kind_props)})")
     _check_atom(tool, "tool")
     return ([Compound(c, (tool,)) for c in classes]
@@ -254,18 +259,21 @@ def _spec_pairs(case: str, text: str, props: dict[str, Any], allowed: str) -> di
     for item in text.split(","):
         prop, sep, value = (s.strip() for s in item.partition("="))
         if not sep or not prop or not value:
-            raise ValueError(f"{case} spec {text!r}: {item.strip()!r} is not property=value; "
+            raise ValueError(f"{case} spec {_shown(text)!r}: {_shown(item.strip())!r} is not "
+                             "property=value; "
                              f"allowed: {allowed}")
         if prop not in props:
-            raise ValueError(f"{case} spec {text!r}: unknown property {prop!r}"
+            raise ValueError(f"{case} spec {_shown(text)!r}: unknown property "
+                             f"{_shown(prop)!r}"
                              f"{_did_you_mean(prop, props)}; allowed properties: "
                              f"{', '.join(props)}")
         if value not in props[prop]:
-            raise ValueError(f"{case} spec {text!r}: {prop} cannot be {value!r}"
+            raise ValueError(f"{case} spec {_shown(text)!r}: {prop} cannot be "
+                             f"{_shown(value)!r}"
                              f"{_did_you_mean(value, props[prop])}; allowed values: "
                              f"{', '.join(props[prop])}")
         if prop in chosen and chosen[prop] != value:
-            raise ValueError(f"{case} spec {text!r}: {prop} given twice ({chosen[prop]} "
+            raise ValueError(f"{case} spec {_shown(text)!r}: {prop} given twice ({chosen[prop]} "
                              f"and {value})")
         chosen[prop] = value
     return chosen
@@ -275,27 +283,78 @@ def parse_context(engine: Engine, text: str) -> list[Term]:
     """Return the task facts of a command-line context such as
     ``"max_tool_length(0.3), tube_length_m(tube1, 0.45)"`` (Prolog syntax, metres).
 
+    The text is read as one Prolog term, a conjunction of facts, by the bridge's
+    guarded reader (:meth:`Engine.parse`: read as data, never called, never nested
+    deeper than :data:`creative_py.bridge.text.DEPTH_MAX`), so no bracket in it can
+    end a list it was put in and a directive (``:- halt``) is only an unknown fact.
+
     Raises
     ------
     ValueError
-        The text does not parse, a fact is not ground, or it is not one of
-        one the size model reads (:func:`context_facts`; it would silently ignore it).
+        The text does not parse or nests too deep, a fact is not ground, a number is
+        not finite, or it is not one of the facts the size model reads
+        (:func:`context_facts`; it would silently ignore it). The message shows the
+        text (its start and end when long).
     """
+    where = f"--context {_shown(text)!r}"
+    if not text.strip():
+        return []
     try:
-        facts = engine.parse(f"[{text}]") if text.strip() else []
+        facts = conj_to_list(engine.parse(text))
+    except PrologTextError as exc:
+        raise ValueError(f"{where}: not Prolog facts ({exc.why})") from None
     except PrologError as exc:
-        raise ValueError(f"context {text!r}: not Prolog facts ({exc})") from None
+        raise ValueError(f"{where}: not Prolog facts ({reader_words(exc) or exc})") \
+            from None
     known_facts = context_facts(engine)
     for fact in facts:
         name = fact.name if isinstance(fact, Compound) else fact
         arity = len(fact.args) if isinstance(fact, Compound) else 0
-        if known_facts.get(name) != arity:
+        if not isinstance(name, str) or known_facts.get(name) != arity:
             known = ", ".join(f"{n}/{a}" for n, a in known_facts.items())
-            raise ValueError(f"context {text!r}: unknown task fact {fact}; the size model "
-                             f"understands {known}")
+            raise ValueError(f"{where}: unknown task fact {_fact_text(fact)}; the size "
+                             f"model understands {known}")
         if not all(isinstance(a, (int, float, str)) for a in fact.args):
-            raise ValueError(f"context {text!r}: {fact} must be ground (atoms and numbers)")
+            raise ValueError(f"{where}: {_fact_text(fact)} must be ground (atoms and "
+                             "numbers)")
+        if not all(math.isfinite(a) for a in fact.args if isinstance(a, float)):
+            raise ValueError(f"{where}: {_fact_text(fact)}: a number is not finite")
     return facts
+
+
+def with_context(perceived: Sequence[Term], given: Sequence[Term]) -> list[Term]:
+    """Return the task facts ``perceived`` (:func:`default_context`) with the ``given``
+    ones (:func:`parse_context`) after them; raise ValueError when a given fact is about
+    an object the task does not have (``tube_length_m(tube2, 0.45)`` where the task
+    has ``tube1``): the size model would ignore it without a word."""
+    objects = {f.args[0] for f in perceived
+               if isinstance(f, Compound) and len(f.args) >= 2 and isinstance(f.args[0], str)}
+    for fact in given:
+        if (isinstance(fact, Compound) and len(fact.args) >= 2
+                and isinstance(fact.args[0], str) and fact.args[0] not in objects):
+            raise ValueError(f"--context: {_fact_text(fact)} is about {fact.args[0]}, "
+                             "which the task does not have (its objects: "
+                             f"{', '.join(sorted(objects)) or 'none'})")
+    return list(perceived) + list(given)
+
+
+def _shown(text: str) -> str:
+    """Return command-line text for a message: its start and end when long."""
+    return text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
+
+
+def _fact_text(fact: Term) -> str:
+    """Return a context fact as Prolog text for a message (80 characters at most)."""
+    def arg(a: Term) -> str:  # a non-finite float as SWI-Prolog writes it
+        if isinstance(a, float) and not math.isfinite(a):
+            return "1.5NaN" if math.isnan(a) else ("1.0Inf" if a > 0 else "-1.0Inf")
+        return encode(a, operators=True)
+
+    if isinstance(fact, Compound):
+        text = encode(fact.name) + "(" + ",".join(arg(a) for a in fact.args) + ")"
+    else:
+        text = arg(fact)
+    return text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
 
 
 def default_context(case: str, variant: Optional[str] = None, *,

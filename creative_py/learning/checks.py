@@ -8,6 +8,8 @@ from __future__ import annotations
 from typing import Any, Optional
 
 from creative_py.bridge import Compound, Engine, PrologError, fact_term
+from creative_py.bridge.errors import reader_words
+from creative_py.bridge.text import PrologTextError
 from creative_py.simulator import World, backend_for
 
 
@@ -61,7 +63,8 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
     skills, goal, target, context, pose_term = info.args
     checks = [
         ("skill", [s.name for s in manifest.skills], [str(s) for s in skills]),
-        ("goal", [str(engine.parse(g)) for g in manifest.goal], [str(g) for g in goal]),
+        ("goal", [str(_literal(engine, where, i, g)) for i, g in enumerate(manifest.goal)],
+         [str(g) for g in goal]),
         ("roles.target", manifest.target, str(target)),
         ("roles.context", manifest.context, str(context)),
         ("pose.term", manifest.pose_term, str(pose_term)),
@@ -70,6 +73,21 @@ def check_manifest(engine: Engine, manifest: Any) -> None:
         if mine != theirs:
             raise ValueError(f"{where}: field {field!r}: {mine} differs from the ontology's "
                              f"{theirs} (ontology/cases/{manifest.ontology}.pl)")
+
+
+def _literal(engine: Engine, where: Any, index: int, text: str) -> Any:
+    """Return the goal literal ``text`` (item ``index`` of the manifest's ``goal``) as
+    Prolog reads it; raise ValueError naming the file, the field and the item when it
+    does not read (a syntax error, a term nested too deep)."""
+    shown = text if len(text) <= 80 else f"{text[:60]}...{text[-12:]}"
+    try:
+        return engine.parse(text)
+    except PrologTextError as exc:
+        why = exc.why
+    except PrologError as exc:
+        why = reader_words(exc) or str(exc)
+    raise ValueError(f"{where}: field 'goal', item {index + 1} {shown!r}: not a Prolog "
+                     f"literal ({why})")
 
 
 def check_catalogue(engine: Engine, world: World) -> None:

@@ -176,15 +176,16 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     A run recorded before there were strategies ran the paper's Algorithm 1, and one
     recorded before catalogued objects were tried first made a tool at once; other
     missing options take their defaults. A resumed run shows no GUI (the display it
-    was started on may be gone). A ``run.json`` whose ``check`` does not match
-    (:func:`run_json_check`) was edited after the run began and is refused.
+    was started on may be gone). A ``run.json`` whose ``check`` is missing or does not
+    match (:func:`run_json_check`) was edited after the run began and is refused, after
+    its fields are checked.
 
     Raises
     ------
     ValueError
         One line naming ``run.json`` and the field: no ``run.json``, not JSON, not an
         object, a missing key, an unknown option or a bad option value, a
-        ``drawn_world`` that is not an object.
+        ``drawn_world`` that is not an object, a ``check`` missing or not matching.
     """
     meta_path = Path(run_dir) / "run.json"
     if not meta_path.is_file():
@@ -199,11 +200,6 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     for key in ("case", "options"):
         if key not in meta:
             raise ValueError(f"{meta_path}: field {key!r} is missing")
-    if "check" in meta and meta["check"] != run_json_check(meta):
-        # A run.json of a run recorded before the check was written has none.
-        raise ValueError(f"{meta_path}: field 'check' does not match the case, options, "
-                         "world and drawn world: run.json was changed after the run began; "
-                         "the run cannot be resumed (start a new run for other options)")
     if not isinstance(meta["case"], str):
         raise ValueError(f"{meta_path}: field 'case' must be text, got {meta['case']!r}")
     opts = meta["options"]
@@ -228,4 +224,14 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     if drawn is not None and not isinstance(drawn, dict):
         raise ValueError(f"{meta_path}: field 'drawn_world' must be an object or null, "
                          f"got {type(drawn).__name__}")
+    # Every run.json is written with its check (run_json), so a missing one was taken
+    # out: without it an edited seed resumed and mixed two seeds' trials.
+    if "check" not in meta:
+        raise ValueError(f"{meta_path}: field 'check' is missing, so an edit of run.json "
+                         "after the run began cannot be told; the run cannot be resumed "
+                         "(start a new run)")
+    if meta["check"] != run_json_check(meta):
+        raise ValueError(f"{meta_path}: field 'check' does not match the case, options, "
+                         "world and drawn world: run.json was changed after the run began; "
+                         "the run cannot be resumed (start a new run for other options)")
     return meta["case"], options, Path(world) if world else None, drawn

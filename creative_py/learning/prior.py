@@ -16,7 +16,8 @@ from pathlib import Path
 from typing import Any
 
 from creative_py.bridge import Engine
-from creative_py.bridge.errors import BridgeError
+from creative_py.bridge.errors import BridgeError, PrologError, reader_words
+from creative_py.bridge.text import PrologTextError
 
 
 class PriorError(ValueError):
@@ -54,9 +55,16 @@ def load_prior(engine: Engine, case: str, path: str | Path) -> Prior:
         raise PriorError(f"{where}: {why}")
     try:
         term = engine.read_prior(model.resolve())
-    except BridgeError as exc:
-        first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
-        raise PriorError(f"{where}: not a learned model file ({first})") from None
+    except PrologTextError as exc:  # too large, not UTF-8, nested too deep
+        raise PriorError(f"{where}: {exc}") from None
+    except PrologError as exc:
+        why = reader_words(exc)
+        if why is None:
+            first = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+            raise PriorError(f"{where}: not a learned model file ({first})") from None
+        raise PriorError(f"{where}: {model.resolve()}: {why}") from None
+    except OSError as exc:
+        raise PriorError(f"{where}: {exc.strerror or exc}") from None
     prior_case = str(term.args[0])
     try:
         shared = engine.prior_shared(case, term)

@@ -345,16 +345,22 @@ def write_tool_files(spec: KindSpec, out_dir: Path | str, *,
     check_min_feature(spec, settings)
     out_dir = Path(out_dir)
     made = _missing_folders(out_dir)  # removed again (if still empty) when this fails
-    out_dir.mkdir(parents=True, exist_ok=True)
     target = out_dir / spec.name
-    if target.exists() and not target.is_dir():
-        raise FileExistsError(f"{target}: exists and is not a tool folder; not replacing it")
-    if target.exists() and not overwrite:
-        raise FileExistsError(f"{target}: tool folder exists (pass overwrite=True to replace it)")
-    tmp = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".tmp", dir=out_dir))
-    tmp.chmod(FOLDER_MODE)
+    try:  # a name or path the file system refuses (ENAMETOOLONG) leaves nothing either
+        out_dir.mkdir(parents=True, exist_ok=True)
+        if target.exists() and not target.is_dir():
+            raise FileExistsError(f"{target}: exists and is not a tool folder; not "
+                                  "replacing it")
+        if target.exists() and not overwrite:
+            raise FileExistsError(f"{target}: tool folder exists (pass overwrite=True to "
+                                  "replace it)")
+        tmp = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".tmp", dir=out_dir))
+    except BaseException:
+        _remove_empty(made)
+        raise
     old: Path | None = None
     try:
+        tmp.chmod(FOLDER_MODE)
         mass, verdict, assembly = _write_all(spec, tmp, settings, picture, gcode)
         if target.exists():
             old = Path(tempfile.mkdtemp(prefix=f".{spec.name}.", suffix=".old", dir=out_dir))

@@ -35,11 +35,14 @@ import errno
 import fcntl
 import json
 import os
+import signal
 import tempfile
+import threading
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from datetime import datetime, timezone
 from pathlib import Path
-from typing import Any, Callable, Optional, Union
+from typing import Any, Callable, Iterator, Optional, Union
 
 from creative_py.records.trial import REQUIRED_KEYS, TrialRecord, jsonable
 
@@ -74,6 +77,26 @@ def _close_inherited() -> None:
 os.register_at_fork(after_in_child=_close_inherited)
 
 
+@contextmanager
+def _sigint_held() -> Iterator[None]:
+    """Hold a SIGINT back while the block runs (in the main thread, where Python runs
+    signal handlers) and give it, after the block, to the handler that was there: its
+    KeyboardInterrupt is raised after the block, not in the middle of it. (A handler
+    that notes, not a blocked signal mask: a signal sent to the process reaches any
+    thread that does not block it, and Python then runs the handler at once.)"""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    noted: list[int] = []
+    before = signal.signal(signal.SIGINT, lambda signum, frame: noted.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, before)
+    if noted:
+        signal.raise_signal(signal.SIGINT)
+
+
 @dataclass
 class RunFolder:
     """A run's output folder; create it with :meth:`create`, or :meth:`open` it to
@@ -88,20 +111,34 @@ class RunFolder:
 
     @classmethod
     def create(cls, parent: Path, case: str, seed: int, name: str | None = None) -> "RunFolder":
-        """Create a new, empty run folder ``<parent>/<case>-<UTC time>-s<seed>``."""
+        """Create a new, empty run folder ``<parent>/<case>-<UTC time>-s<seed>``; when
+        it cannot be made, the folders above it that this call made are removed."""
         if name is None:
             stamp = datetime.now(timezone.utc).strftime("%Y%m%d-%H%M%S")
             name = f"{case}-{stamp}-s{seed}"
         parent = Path(parent)
-        parent.mkdir(parents=True, exist_ok=True)
-        path, n = parent / name, 1
-        while True:  # mkdir is the atomic test: two runs never share a folder
-            try:
-                path.mkdir()
+        made = []  # the folders above the run this call makes, deepest first
+        for p in (parent, *parent.parents):
+            if p.exists():
                 break
-            except FileExistsError:
-                n += 1
-                path = parent / f"{name}-{n}"
+            made.append(p)
+        try:
+            parent.mkdir(parents=True, exist_ok=True)
+            path, n = parent / name, 1
+            while True:  # mkdir is the atomic test: two runs never share a folder
+                try:
+                    path.mkdir()
+                    break
+                except FileExistsError:
+                    n += 1
+                    path = parent / f"{name}-{n}"
+        except OSError:  # a path too long, a full disk: leave no empty folders behind
+            for p in made:
+                try:
+                    p.rmdir()
+                except OSError:
+                    break
+            raise
         run = cls(path)
         run.lock(record_pid=True)
         (path / "snapshots").mkdir()
@@ -184,14 +221,20 @@ class RunFolder:
 
     def append_trial(self, record: Union[TrialRecord, dict[str, Any]]) -> None:
         """Append one finished trial to ``trials.jsonl`` and flush it to disk (a
-        sealed folder is unsealed first)."""
+        sealed folder is unsealed first).
+
+        The line and :attr:`trials` take the trial together: a Ctrl-C (SIGINT) is held
+        back from the write to the list's append (in the main thread), so an interrupted
+        run never keeps a line it does not count (it said 8 trials kept where 9 were:
+        the signal came during the ``fsync``)."""
         self.unseal()
         line = _line(record)
-        with open(self.trials_path, "a", encoding="utf-8") as fh:
-            fh.write(line + "\n")
-            fh.flush()
-            os.fsync(fh.fileno())
-        self.trials.append(record)
+        with _sigint_held():
+            with open(self.trials_path, "a", encoding="utf-8") as fh:
+                fh.write(line + "\n")
+                fh.flush()
+                os.fsync(fh.fileno())
+            self.trials.append(record)
 
     def rewrite_trials(self, records: list[Union[TrialRecord, dict[str, Any]]]) -> None:
         """Replace ``trials.jsonl`` by ``records`` (atomically): a resumed run keeps its
@@ -416,18 +459,23 @@ def _line(record: Union[TrialRecord, dict[str, Any]]) -> str:
     return record.to_json()
 
 
-def write_atomic(path: Path, text: str) -> Path:
-    """Write ``text`` to ``path`` through a temporary file in the same folder."""
+def write_atomic(path: Path, text: Union[str, bytes]) -> Path:
+    """Write ``text`` (UTF-8; or ``bytes`` as they are) to ``path`` through a temporary
+    file in the same folder: the file is replaced whole or not at all. An OSError that
+    names no file (a full disk: ENOSPC) is raised again naming ``path``."""
     path = Path(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+    tmp = None
     try:
-        with os.fdopen(fd, "w", encoding="utf-8") as fh:
-            fh.write(text)
+        fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(text if isinstance(text, bytes) else text.encode("utf-8"))
         os.chmod(tmp, 0o666 & ~_umask())  # as open() would: mkstemp makes it 0600
         os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
+    except BaseException as exc:
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
+        if isinstance(exc, OSError) and not exc.filename and exc.errno:
+            raise OSError(exc.errno, os.strerror(exc.errno), str(path)) from exc
         raise
     return path
 

@@ -262,6 +262,33 @@ class Outcomes(Part):
     outcomes: list[str] = field(default_factory=list)
 
     @classmethod
+    def from_dict(cls, data: Any, where: str = "", warn: Warn = None) -> "Outcomes":
+        """Return the counts of a JSON object, checked as :meth:`Part.from_dict` does
+        and against each other: no count below 0, no more successes than trials, no more
+        outcomes listed than trials, and, where the outcomes are listed, as many
+        successes as ``success`` among them (an edited file said "9 of 4 trials succeeded");
+        counts that contradict each other raise ValueError naming the part."""
+        part = super().from_dict(data, where, warn)
+        trials, successes, outcomes = part.trials, part.successes, part.outcomes
+        what = f"field {where!r}: " if where else ""
+        wrong = None
+        if trials is not None and trials < 0:
+            wrong = f"{trials} trials"
+        elif successes is not None and successes < 0:
+            wrong = f"{successes} successes"
+        elif trials is not None and successes is not None and successes > trials:
+            wrong = f"{successes} successes of {trials} trials"
+        elif trials is not None and trials < len(outcomes):
+            wrong = f"{trials} trials but {len(outcomes)} outcomes"
+        elif (outcomes and successes is not None
+              and successes != sum(o == "success" for o in outcomes)):
+            wrong = (f"{successes} successes but {sum(o == 'success' for o in outcomes)} "
+                     "success outcomes")
+        if wrong is not None:
+            raise ValueError(f"{what}{wrong}: the counts contradict each other")
+        return part
+
+    @classmethod
     def of(cls, outcomes: Sequence[str], trials: Optional[int] = None) -> "Outcomes":
         """Return the counts of ``outcomes`` (``trials`` of them unless given)."""
         return cls(trials=len(outcomes) if trials is None else trials,

@@ -9,9 +9,11 @@ it tested. Evaluation trials (no learning) are labelled "EV".
 
 from __future__ import annotations
 
+import io
 from pathlib import Path
 from typing import Any, Sequence, Union
 
+from creative_py.records.folder import write_atomic
 from creative_py.records.summary import RunSummary
 from creative_py.records.trial import TrialRecord, as_record
 
@@ -81,9 +83,10 @@ def plot_trials(trials: Trials, path: Path, title: str = "") -> Path:
         ax.set_title(title, fontsize=10)
     ax.legend(loc="upper left", bbox_to_anchor=(1.0, 1.0), fontsize=8, frameon=False)
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    image = io.BytesIO()  # drawn whole first: a full disk leaves the old file as it was
+    fig.savefig(image, format=Path(path).suffix.lstrip(".") or "png", dpi=120)
     plt.close(fig)
-    return Path(path)
+    return write_atomic(Path(path), image.getvalue())
 
 
 def trial_labels(trials: Trials) -> list[str]:

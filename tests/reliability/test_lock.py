@@ -13,6 +13,7 @@ import textwrap
 import pytest
 
 from _runs import creative, one_error_line, run_cli, trials, wait_for
+from creative_py.learning.options import run_json_check
 from creative_py.records.folder import FolderInUse, RunFolder
 
 HOLD = textwrap.dedent("""
@@ -55,8 +56,8 @@ def test_a_lock_dies_with_its_process(tmp_path):
 def test_resuming_a_folder_in_use_is_refused_in_one_line(tmp_path):
     folder = tmp_path / "run"
     (folder / "snapshots").mkdir(parents=True)
-    (folder / "run.json").write_text(json.dumps({"case": "rake", "options": {"phase": "use"},
-                                                 "world": None, "drawn_world": None}))
+    meta = {"case": "rake", "options": {"phase": "use"}, "world": None, "drawn_world": None}
+    (folder / "run.json").write_text(json.dumps({**meta, "check": run_json_check(meta)}))
     (folder / "trials.jsonl").write_text("")
     holder = _holder(folder)
     try:

@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from _runs import SHORT, one_error_line, run_cli, shared_short_run, trials, tree_digest
+from creative_py.learning.options import run_json_check
 from creative_py.records.folder import read_resume
 
 RUN_JSON = {"case": "rake", "options": {"phase": "use", "max_trials": 3, "eval_trials": 1},
@@ -29,6 +30,8 @@ def _folder(tmp_path: Path, lines: list[str], meta=RUN_JSON) -> Path:
     folder = tmp_path / "run"
     (folder / "snapshots" / "use-001").mkdir(parents=True)
     (folder / "snapshots" / "use-001" / "frame.png").write_bytes(b"png")
+    if isinstance(meta, dict):  # its check as run_json writes it
+        meta = {**meta, "check": run_json_check(meta)}
     (folder / "run.json").write_text(meta if isinstance(meta, str) else json.dumps(meta))
     (folder / "trials.jsonl").write_text("".join(line + "\n" for line in lines))
     return folder

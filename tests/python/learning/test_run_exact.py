@@ -28,7 +28,8 @@ from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.creation import CreatedTool, CreateResult
 from creative_py.learning.checks import (catalogue_ranges, check_catalogue, check_manifest,
                                          require_display)
-from creative_py.learning.options import RunOptions, read_run_json, run_json
+from creative_py.learning.options import (RunOptions, read_run_json, run_json,
+                                          run_json_check)
 from creative_py.learning.pddl_files import check_pddl, created_pddl, plan_steps
 from creative_py.learning.phases import _relative, case_facts, creation_summary
 from creative_py.learning.run import (_checked_world, _earlier_summary, _finish, _open_folder,
@@ -259,7 +260,9 @@ def test_every_good_option_value_is_taken(field, good):
 
 # ---------------------------------------------------------------- run.json
 
-def _run_json(tmp_path: Path, meta) -> Path:
+def _run_json(tmp_path: Path, meta, check: bool = False) -> Path:
+    if check:  # as run_json writes it
+        meta = {**meta, "check": run_json_check(meta)}
     (tmp_path / "run.json").write_text(meta if isinstance(meta, str) else json.dumps(meta),
                                        encoding="utf-8")
     return tmp_path / "run.json"
@@ -273,13 +276,13 @@ def test_read_run_json_reads_the_recorded_run():
 
 def test_read_run_json_fills_old_runs_with_the_papers_algorithms_and_no_gui(tmp_path):
     _run_json(tmp_path, {"case": "rake", "options": {"seed": 3, "gui": True},
-                         "world": "/w/rake", "drawn_world": {"hook_a1": {}}})
+                         "world": "/w/rake", "drawn_world": {"hook_a1": {}}}, check=True)
     case, options, world, drawn = read_run_json(tmp_path)
     assert (case, world, drawn) == ("rake", Path("/w/rake"), {"hook_a1": {}})
     assert options == RunOptions(seed=3, strategy="paper", catalogue_first=False)
     _run_json(tmp_path, {"case": "rake", "options": {"strategy": "random",
                                                      "catalogue_first": True},
-                         "world": ""})
+                         "world": ""}, check=True)
     assert read_run_json(tmp_path) == ("rake", RunOptions(strategy="random",
                                                           catalogue_first=True), None, None)
 
@@ -600,7 +603,8 @@ def test_resume_run_warns_of_a_torn_line_and_releases_the_folder(tmp_path, caplo
     folder = tmp_path / "run"
     folder.mkdir()
     world = hook_world[1].manifest.folder
-    _run_json(folder, {"case": "rake", "options": {"phase": "use"}, "world": str(world)})
+    _run_json(folder, {"case": "rake", "options": {"phase": "use"}, "world": str(world)},
+              check=True)
     (folder / "trials.jsonl").write_text('{"trial": 1, "pha', encoding="utf-8")
     with pytest.raises(ValueError) as err:
         resume_run(folder)

@@ -226,3 +226,24 @@ def test_resumed_is_one_typed_field_absent_from_runs_never_resumed():
     assert new.to_dict() == data
     with pytest.raises(ValueError, match="field 'resumed.replayed': 'x' is not of type int"):
         RunSummary.from_dict({"resumed": {"replayed": "x"}})
+
+
+@pytest.mark.parametrize("counts, wrong", [
+    ({"trials": 4, "successes": 9}, "9 successes of 4 trials"),
+    ({"trials": -1}, "-1 trials"),
+    ({"successes": -2}, "-2 successes"),
+    ({"trials": 1, "outcomes": ["success", "failure"]}, "1 trials but 2 outcomes"),
+    ({"trials": 2, "successes": 2, "outcomes": ["success", "failure"]},
+     "2 successes but 1 success outcomes"),
+])
+def test_counts_that_contradict_each_other_are_refused(counts, wrong):
+    """An edited summary.json made the report say "9 of 4 trials succeeded"."""
+    with pytest.raises(ValueError) as info:
+        RunSummary.from_dict({"eval": counts})
+    assert str(info.value) == f"field 'eval': {wrong}: the counts contradict each other"
+    warned = []
+    assert RunSummary.from_dict({"eval": counts}, warn=warned.append).eval is None
+    assert warned == [f"field 'eval': {wrong}: the counts contradict each other; not shown"]
+    # an evaluation stopped early lists fewer outcomes than its trials: consistent
+    assert RunSummary.from_dict({"eval": {"trials": 4, "successes": 1,
+                                          "outcomes": ["success"]}}).eval.successes == 1
