@@ -16,6 +16,7 @@ from __future__ import annotations
 import json
 import logging
 import os
+import shlex
 import shutil
 import time
 from dataclasses import replace
@@ -152,7 +153,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                 say(f"the backend was lost before the first trial ({exc}): nothing was kept")
         elif interrupted:
             say(f"interrupted after {len(run.trials)} trial(s); to go on: "
-                f"creative run {case} --resume {run.path}")
+                f"{resume_command(case, run.path)}")
         elif lost:
             exc.resume_command = _stopped(run, case, exc, say)
         raise
@@ -160,6 +161,25 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         if resume is None:
             run.release()  # a resumed folder's lock is resume_run's
     return run
+
+
+RESUME_ENV = "CREATIVE_RESUME_COMMAND"
+"""The environment variable of the command that resumes a run, with ``{run}`` where its
+folder goes: a launcher that started the learner beside a stand-in robot sets it (the
+ROS 2 backend's, :mod:`creative_py.backends.ros.launch`; ``make run BACKEND=ros``),
+since ``creative run CASE --resume DIR`` alone would find no arm."""
+
+
+def resume_command(case: str, folder: Path | str) -> str:
+    """Return the command that goes on with the run in ``folder``, as the person who
+    started it can type it: the launcher's (:data:`RESUME_ENV`) when one started the
+    learner, else ``creative run CASE --resume FOLDER`` (the folder shell-quoted)."""
+    where = shlex.quote(str(folder))
+    template = os.environ.get(RESUME_ENV, "").strip()
+    if template:
+        return (template.replace("{run}", where) if "{run}" in template
+                else f"{template} {where}")
+    return f"creative run {case} --resume {where}"
 
 
 STOPPED = "stopped.json"
@@ -174,7 +194,7 @@ def _stopped(run: RunFolder, case: str, exc: BaseException, say: Callable[[str],
     did not go as planned: ``stopped.json`` records it with the skill it was in, but not
     in ``trials.jsonl``, since nothing was learned about the tool from it (it labels no
     example); the resume runs it again."""
-    command = f"creative run {case} --resume {run.path}"
+    command = resume_command(case, run.path)
     lost = lost_trial(exc)
     note = {"stopped": "the backend was lost", "reason": str(exc),
             "trials_recorded": len(run.trials), "lost_trial": lost, "resume": command}
@@ -235,7 +255,7 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
         say(f"run folder {run.path}")
         if waiting:
             say(f"a new run; the interrupted run {waiting[-1]} of this case and seed "
-                f"can go on with: creative run {case} --resume {waiting[-1]}")
+                f"can go on with: {resume_command(case, waiting[-1])}")
         return run, [], [], None, None
     run, replay, lines = resume
     resumed = Resumed(replayed=len(replay), earlier_wall_time_s=_earlier_wall(run.path),

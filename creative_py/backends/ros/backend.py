@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import atexit
 import json
+import logging
 import os
 import threading
 import time
@@ -33,11 +34,13 @@ from typing import Any, Iterator, Optional
 import rclpy  # noqa: F401  (the ros extra: the loader names it when missing)
 from control_msgs.action import FollowJointTrajectory  # noqa: F401  (make setup-ros)
 
-from creative_py.backends.ros.client import ArmClient, ArmUnavailable
+from creative_py.backends.ros.client import ArmClient, ArmUnavailable, discovery_warning
 from creative_py.backends.ros.episode import RosEpisode, SceneRefused, unsupported_skills
 from creative_py.backends.ros.motion import Kinematics, LearnerArm
 from creative_py.backends.ros.profile import RobotProfile, load_profile
 from creative_py.world_files import WorldFileError
+
+log = logging.getLogger(__name__)
 
 PROFILE_ENV = "CREATIVE_ROBOT_PROFILE"
 """The environment variable naming the robot profile (a name under ``robots/`` or a
@@ -178,6 +181,9 @@ def connection() -> Connection:
     if conn is not None and conn.client is not None:
         return conn
     profile = load_profile(name)
+    warning = discovery_warning(os.environ)
+    if warning:
+        log.warning("%s", warning)
     try:
         wait = float(os.environ.get(WAIT_ENV) or 20.0)
     except ValueError:

@@ -314,9 +314,14 @@ class RosEpisode(PybulletEpisode):
             if time.monotonic() > end:
                 late = [conn.profile.object_topic_of(n) for n in self.tracked
                         if conn.client.poses[n].count < counts[n] + 2]
-                raise ArmUnavailable(f"no fresh geometry_msgs/PoseStamped on "
-                                     f"{', '.join(late) or conn.profile.joint_states_topic!r}"
-                                     f" after the scene was set up")
+                if late:
+                    raise ArmUnavailable(
+                        f"no fresh geometry_msgs/PoseStamped on {', '.join(late)} after the "
+                        f"scene was set up; "
+                        + conn.client.published("geometry_msgs/msg/PoseStamped"))
+                raise ArmUnavailable(f"no fresh sensor_msgs/JointState on "
+                                     f"{conn.profile.joint_states_topic!r} after the scene "
+                                     "was set up")
             time.sleep(0.02)
         self.sync()
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
