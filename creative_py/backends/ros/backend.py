@@ -175,6 +175,12 @@ def connection() -> Connection:
     ArmAbsent
         The arm did not answer within :data:`WAIT_ENV` seconds (naming the topic or
         action it waited for).
+    WorldFileError
+        ``ROS_SECURITY_ENABLE=true`` with a Fast DDS built without DDS Security (the
+        PyPI wheels'), in one line.
+
+    Warns (logging) when discovery reaches beyond the host without DDS Security
+    (:func:`~creative_py.backends.ros.client.discovery_warning`).
     """
     name = profile_name()
     conn = _CONNECTION.get(name)
@@ -191,6 +197,15 @@ def connection() -> Connection:
                              f"seconds, got {os.environ[WAIT_ENV]!r}") from None
     try:
         conn = Connection(profile, wait)
+    except RuntimeError as exc:  # rclpy's RCLError: the node could not be made
+        said = " ".join(str(exc).split())
+        if "SECURITY=ON" not in said:
+            raise
+        raise WorldFileError(
+            "ROS_SECURITY_ENABLE=true: this ROS 2's Fast DDS is built without DDS Security "
+            "(it said: 'Please compile Fast DDS using the -DSECURITY=ON CMake option'; the "
+            "PyPI wheels' is): run the learner with the lab's own ROS 2 install and SROS2, "
+            "or on an isolated robot network (docs/real-robot.md, Network safety)") from None
     except ArmUnavailable as exc:
         raise ArmAbsent(f"{profile.source}: {exc}: no arm answers (start the arm or the "
                         f"stand-in first, docs/real-robot.md)") from None

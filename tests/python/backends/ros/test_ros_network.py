@@ -43,3 +43,24 @@ def test_static_peers_reach_beyond_the_host_even_on_localhost():
     w = discovery_warning({"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST",
                            "ROS_STATIC_PEERS": "192.168.1.20"})
     assert w is not None and "(ROS_STATIC_PEERS=192.168.1.20)" in w
+
+
+@pytest.mark.sim
+def test_sros2_on_the_wheels_fast_dds_is_refused_in_one_line():
+    # Measured: the PyPI wheels' Fast DDS has no DDS Security; the learner says so and
+    # where to go instead, exit 2, no traceback, no run folder.
+    import os
+    from pathlib import Path
+
+    from test_standin import run_in_namespace
+
+    out = run_in_namespace(Path(__file__).parent / "_security.py",
+                           domain=230 + os.getpid() % 20, timeout=180.0)
+    assert out["rc"] == 2, out["stderr"]
+    lines = out["stderr"].strip().splitlines()
+    assert lines[-1] == (
+        "error: ROS_SECURITY_ENABLE=true: this ROS 2's Fast DDS is built without DDS "
+        "Security (it said: 'Please compile Fast DDS using the -DSECURITY=ON CMake option'; "
+        "the PyPI wheels' is): run the learner with the lab's own ROS 2 install and SROS2, "
+        "or on an isolated robot network (docs/real-robot.md, Network safety)")
+    assert "Traceback" not in out["stderr"] and out["runs"] == []
