@@ -247,8 +247,9 @@ def check_strength(spec: KindSpec, load: Optional[dict[str, Any]], *,
             f"({load.get('contact_steps', 0)} steps with contact)" if window > 0 else
             f"the 95th percentile of the per-step contact force over "
             f"{load.get('contact_steps', 0) if load else 0} steps with contact")
+    shown = f"{force:.3g}" if window > 0 else f"{force:.1f}"  # windowed: a few 0.1 N
     caveat = "" if load is None else (
-        f"checked with {force:.1f} N, {what}; the one-step peak "
+        f"checked with {shown} N, {what}; the one-step peak "
         f"{peak:.1f} N (a contact spike, sensitive to the time step) would give a safety "
         f"factor of {'-' if peak_sf is None else f'{peak_sf:.1f}'}")
     check = replace(check, peak_force_n=peak if load is not None else None,
