@@ -15,8 +15,8 @@ the same frame, so that the strength check's lever arm runs from the grasp.
 
 One step's force is a poor measure of the load: a contact that opens or closes in a
 step (the door meeting the wedge) gives a spike an order of magnitude above the force
-that then holds (a wedge: a 3,557 N spike, a few hundred newtons for the rest of the
-action), and a hook pulling a cube meets it in one-step pulses. So the robust force
+that then holds (the door on the created wedge: a 1,791 N spike, 436 N for the rest of
+the action), and a hook pulling a cube meets it in one-step pulses. So the robust force
 beside the peak is the one every backend gives
 (:mod:`creative_py.simulator.load`): the 95th percentile of the force averaged over
 each 0.1 s of the action, over the windows with contact. The strength check of a
