@@ -197,6 +197,9 @@ def connection() -> Connection:
                              f"seconds, got {os.environ[WAIT_ENV]!r}") from None
     try:
         conn = Connection(profile, wait)
+    except ArmUnavailable as exc:
+        raise ArmAbsent(f"{profile.source}: {exc}: no arm answers (start the arm or the "
+                        f"stand-in first, docs/real-robot.md)") from None
     except RuntimeError as exc:  # rclpy's RCLError: the node could not be made
         said = " ".join(str(exc).split())
         if "SECURITY=ON" not in said:
@@ -206,9 +209,6 @@ def connection() -> Connection:
             "(it said: 'Please compile Fast DDS using the -DSECURITY=ON CMake option'; the "
             "PyPI wheels' is): run the learner with the lab's own ROS 2 install and SROS2, "
             "or on an isolated robot network (docs/real-robot.md, Network safety)") from None
-    except ArmUnavailable as exc:
-        raise ArmAbsent(f"{profile.source}: {exc}: no arm answers (start the arm or the "
-                        f"stand-in first, docs/real-robot.md)") from None
     _CONNECTION[name] = conn
     return conn
 
