@@ -16,7 +16,6 @@ from __future__ import annotations
 import json
 import logging
 import os
-import shlex
 import shutil
 import time
 from dataclasses import replace
@@ -31,7 +30,7 @@ from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.learning.options import RunOptions, read_run_json, run_json
 from creative_py.learning.prior import load_prior
 from creative_py.learning.trials import TrialRunner
-from creative_py.records.folder import RunFolder, read_resume
+from creative_py.records.folder import RunFolder, read_resume, resume_command
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
@@ -161,25 +160,6 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         if resume is None:
             run.release()  # a resumed folder's lock is resume_run's
     return run
-
-
-RESUME_ENV = "CREATIVE_RESUME_COMMAND"
-"""The environment variable of the command that resumes a run, with ``{run}`` where its
-folder goes: a launcher that started the learner beside a stand-in robot sets it (the
-ROS 2 backend's, :mod:`creative_py.backends.ros.launch`; ``make run BACKEND=ros``),
-since ``creative run CASE --resume DIR`` alone would find no arm."""
-
-
-def resume_command(case: str, folder: Path | str) -> str:
-    """Return the command that goes on with the run in ``folder``, as the person who
-    started it can type it: the launcher's (:data:`RESUME_ENV`) when one started the
-    learner, else ``creative run CASE --resume FOLDER`` (the folder shell-quoted)."""
-    where = shlex.quote(str(folder))
-    template = os.environ.get(RESUME_ENV, "").strip()
-    if template:
-        return (template.replace("{run}", where) if "{run}" in template
-                else f"{template} {where}")
-    return f"creative run {case} --resume {where}"
 
 
 STOPPED = "stopped.json"

@@ -17,8 +17,8 @@ loopback (the Makefile's ``unshare``). A lab's arm needs none of this: run ``cre
 run CASE --backend ros --robot-profile mylab.toml`` where the arm's topics are.
 
 The learner's hint on Ctrl-C or a lost arm says how to go on
-(:func:`creative_py.learning.run.resume_command`): this launcher tells it, in
-:data:`~creative_py.learning.run.RESUME_ENV`, to print the command that resumes the
+(:func:`creative_py.records.folder.resume_command`): this launcher tells it, in
+:data:`~creative_py.records.folder.RESUME_ENV`, to print the command that resumes the
 run with the stand-in started again (the Makefile's, when it gave one, else this
 module's ``--resume``).
 """
@@ -26,6 +26,7 @@ module's ``--resume``).
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import shlex
 import signal
@@ -42,6 +43,33 @@ class LaunchError(ValueError):
     """A bad command line or run folder (one line naming the option and the cause)."""
 
 
+def recorded_run(folder: Path) -> tuple[str, str]:
+    """Return the case and the robot profile (``baxter`` when none was given) that a run
+    folder's ``run.json`` records. Only what the stand-in needs is read here; the
+    learner's ``--resume`` checks the whole file.
+
+    Raises
+    ------
+    LaunchError
+        No ``run.json``, not a JSON object, or its ``case`` or ``options.robot_profile``
+        not text (naming the file).
+    """
+    meta_path = folder / "run.json"
+    if not meta_path.is_file():
+        raise LaunchError(f"--resume: {folder}: not a resumable run folder (no run.json)")
+    try:
+        meta = json.loads(meta_path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, json.JSONDecodeError) as exc:
+        raise LaunchError(f"--resume: {meta_path}: not JSON ({exc})") from None
+    options = meta.get("options") if isinstance(meta, dict) else None
+    case = meta.get("case") if isinstance(meta, dict) else None
+    profile = options.get("robot_profile", "baxter") if isinstance(options, dict) else None
+    if not (isinstance(case, str) and case and isinstance(profile, str) and profile):
+        raise LaunchError(f"--resume: {meta_path}: field 'case' or 'options.robot_profile' "
+                          "is missing or not text")
+    return case, profile
+
+
 def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
     """Return the parsed options, the case, the robot profile and the ``creative``
     command the launcher runs for ``argv``.
@@ -53,8 +81,6 @@ def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
         ``--resume`` folder that is not a resumable run (naming its ``run.json``) or
         whose recorded profile differs from ``--profile``.
     """
-    from creative_py.learning.options import read_run_json
-
     argv = list(argv)
     at = argv.index("--") if "--" in argv else len(argv)
     ap = argparse.ArgumentParser(prog=PROG)
@@ -73,11 +99,7 @@ def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
         if command:
             raise LaunchError("--resume: give no creative command after -- (the run "
                               "goes on with the options of its run.json)")
-        try:
-            case, options, _, _ = read_run_json(Path(args.resume))
-        except ValueError as exc:
-            raise LaunchError(f"--resume: {exc}") from None
-        recorded = options.robot_profile or "baxter"
+        case, recorded = recorded_run(Path(args.resume))
         if args.profile is not None and args.profile != recorded:
             raise LaunchError(f"--profile {args.profile}: the run {args.resume} was "
                               f"recorded with the robot profile {recorded!r}; a resume "
@@ -104,7 +126,7 @@ def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Start the stand-in, run the learner's command, stop the stand-in."""
-    from creative_py.learning.run import RESUME_ENV
+    from creative_py.records.folder import RESUME_ENV
 
     argv = list(sys.argv[1:] if argv is None else argv)
     try:

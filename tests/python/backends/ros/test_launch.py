@@ -10,7 +10,7 @@ import pytest
 
 from creative_py.backends.ros.launch import PROG, LaunchError, main, plan
 from creative_py.learning.options import RunOptions, run_json
-from creative_py.learning.run import RESUME_ENV, resume_command
+from creative_py.records.folder import RESUME_ENV, resume_command
 
 
 def _run_folder(tmp_path, name, case="hook", **options):
@@ -67,6 +67,15 @@ def test_a_resume_refuses_another_profile_a_command_or_a_folder_without_run_json
     assert main(["--resume", str(tmp_path / "nothing")]) == 2
     assert capsys.readouterr().err == (f"{PROG}: --resume: {tmp_path / 'nothing'}: not a "
                                        "resumable run folder (no run.json)\n")
+    broken = tmp_path / "broken"
+    broken.mkdir()
+    (broken / "run.json").write_text('{"case": "hook", "options": {"robot_profile": 3}}')
+    with pytest.raises(LaunchError, match="field 'case' or 'options.robot_profile' is "
+                                          "missing or not text"):
+        plan(["--resume", str(broken)])
+    (broken / "run.json").write_text("[1, 2")
+    with pytest.raises(LaunchError, match=r"run.json: not JSON \("):
+        plan(["--resume", str(broken)])
 
 
 def test_the_resume_hint_is_the_launchers_command_when_one_started_the_learner(
