@@ -14,9 +14,15 @@ OUT   ?= runs
 # harder task first (creative run --demonstrate-creation); CREATE= turns that off.
 CREATE ?= --demonstrate-creation
 # make run BACKEND=ros: the case on the stand-in arm over ROS 2 (make setup-ros first);
-# ROS_DOMAIN is the domain id of its private, loopback-only network namespace.
+# ROS_DOMAIN is the domain id of its private, loopback-only network namespace. PROFILE
+# (or ROBOT) names the robot profile (robots/<name>.toml or a .toml path; default
+# baxter); RESUME=DIR goes on with an interrupted or stopped run (over ROS its case,
+# options and profile from DIR/run.json; otherwise give its CASE=).
 BACKEND ?=
 ROS_DOMAIN ?= 42
+ROBOT ?=
+PROFILE ?= $(ROBOT)
+RESUME ?=
 
 .PHONY: help setup setup-maniskill test-narrow test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl bench-ros
 
@@ -184,14 +190,20 @@ test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs includ
 mutate-prolog: $(STAMP)  ## Run the hand-written mutants of the Prolog core; score in bench/results/prolog_mutants.json.
 	$(PY) tests/prolog/mutants/mutants.py
 
-run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros: over ROS 2).
+run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros [PROFILE=<name>]: over ROS 2; RESUME=DIR: go on with a run).
 ifeq ($(BACKEND),ros)
 	@# The stand-in and the learner, two processes talking ROS 2 in a private network
-	@# namespace with only loopback (unshare -n where allowed, else -rn).
+	@# namespace with only loopback (unshare -n where allowed, else -rn). The learner's
+	@# Ctrl-C hint names this target (CREATIVE_RESUME_COMMAND).
 	@prefix="unshare -n"; $$prefix true 2>/dev/null || prefix="unshare -rn"; \
 	$$prefix sh -c 'ip link set lo up && ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST \
-	  ROS_DOMAIN_ID=$(ROS_DOMAIN) exec $(PY) -m creative_py.backends.ros.launch \
-	  --case $(CASE) -- run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) --backend ros'
+	  ROS_DOMAIN_ID=$(ROS_DOMAIN) \
+	  CREATIVE_RESUME_COMMAND="make run BACKEND=ros$(if $(filter-out .venv,$(VENV)), VENV=$(VENV)) RESUME={run}" \
+	  exec $(PY) -m creative_py.backends.ros.launch $(if $(PROFILE),--profile $(PROFILE)) \
+	  $(if $(RESUME),--resume $(RESUME),--case $(CASE) -- run $(CASE) --seed $(SEED) \
+	  --out $(OUT) $(CREATE) --backend ros)'
+else ifneq ($(RESUME),)
+	$(VENV)/bin/creative run $(CASE) --resume $(RESUME)
 else
 	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) \
 	  $(if $(BACKEND),--backend $(BACKEND))

@@ -1,18 +1,26 @@
 """Is a created tool strong enough? A beam estimate from the force the physics measured.
 
-After a created tool's successful trial, the contact force the physics put on it during
-the tool action (the trial's ``tool_load``, measured by :mod:`creative_py.backends.pybullet.loads`)
+After a created tool's successful trial, the force of the task's contact during the
+tool action (the tool against the case's target, ``[roles] target``: the cube a hook
+pulls, the door a wedge holds; the trial's ``tool_load``, measured by the backend:
+:mod:`creative_py.backends.pybullet.loads`, :mod:`creative_py.backends.maniskill.loads`,
+or over ROS 2 a wrist sensor, :func:`creative_py.backends.ros.episode.wrench_load`)
 is turned into a stress and compared with the strength
 of printed PLA (:data:`creative_py.mesh.spec.PLA_STRENGTH`), asking for a safety factor
 of at least :data:`creative_py.mesh.spec.MIN_SAFETY_FACTOR`. The tool's kind gives the
 load model (``KindSpec.load_model`` of :mod:`creative_py.kinds`); the shipped ones:
 
-The force is the robust one (``robust_force_n``: the 95th percentile of the per-step
-summed normal force over the steps with contact), not the one-step peak
-(``max_force_n``), which is a contact spike: the wedge's peak was 3,557 N where the
-load it bore was a few hundred newtons, and it moved with the time step (2,859 N in
-another run of the same trial). The peak is kept beside it (``peak_force_n``, with the
-safety factor it would give) and the check says so in its ``caveat``.
+The force is the robust one (``robust_force_n``: the 95th percentile of the force
+averaged over each 0.1 s of the action, over the windows with contact; the rule every
+backend follows, :mod:`creative_py.simulator.load`), not the one-step peak
+(``max_force_n``), which is a contact spike: the door's one-step peak on the created
+wedge is 1,791 N where the load it bears is 436 N, and such a peak moves with the time
+step (counting the floor as well, 3,557 N in one run of the same trial, 2,859 N in
+another). The peak is kept beside it (``peak_force_n``, with the
+safety factor it would give) and the check says so in its ``caveat``. What else the
+tool touched (the table under a dragged tool, 1 mm from the grasp) is not the load:
+the pull_cube_tool case's created tool was once checked against its table contact,
+0.9 mm from the grasp, and passed with a safety factor of 4,018.
 
 - **hook, stick, paddle** (a cantilever): the handle is held by the gripper and loaded where the
   contact acted, so it is a cantilever from the grasp to the contact. Its lever arm L
@@ -74,8 +82,9 @@ class StrengthCheck:
         The estimate: the handle as a cantilever from the grasp, or a block in
         compression over its footprint.
     force_n : float
-        The force checked: the load's robust force (the 95th percentile of the
-        per-step summed normal force over the steps with contact), newtons.
+        The force checked: the load's robust force (the 95th percentile of the task's
+        contact force averaged over 0.1 s windows, over the windows with contact),
+        newtons.
     lever_arm_m : float or None
         Cantilever: distance along the handle from the grasp to the contact, metres.
     section_m : tuple of float
@@ -100,7 +109,8 @@ class StrengthCheck:
     grasp_point_m : tuple of float or None
         The grasp, tool frame, metres.
     bodies : tuple of str
-        What the tool touched when the force peaked.
+        Whose contact the force is (the case's target; empty from a wrist sensor,
+        which cannot tell contacts apart).
     trial : int or None
         The trial (number in ``trials.jsonl``) the force comes from.
     required_handle_width_m : float or None
@@ -205,8 +215,9 @@ def check_strength(spec: KindSpec, load: Optional[dict[str, Any]], *,
         The trial's ``tool_load`` (:meth:`creative_py.backends.pybullet.loads.ToolLoad.to_dict`):
         ``robust_force_n`` (the force checked; ``max_force_n`` for a load recorded
         before it existed), ``max_force_n`` (the peak, kept beside it), ``point`` and
-        ``grasp_point`` in the tool frame, ``bodies``. None gives the verdict
-        ``unmeasured``.
+        ``grasp_point`` in the tool frame (the lever arm runs from the grasp to the
+        point), ``bodies``, ``contact_steps`` and ``window_s`` (for the caveat). None
+        gives the verdict ``unmeasured``.
     strength_pa, safety_factor : float
         The material's strength and the least safety factor accepted.
     trial : int or None
@@ -232,9 +243,14 @@ def check_strength(spec: KindSpec, load: Optional[dict[str, Any]], *,
     if load is not None and check.stress_pa > 0 and force > 0:
         peak_stress = check.stress_pa * peak / force  # every model is linear in F
         peak_sf = strength_pa / peak_stress if peak_stress > 0 else None
+    window = 0.0 if load is None else float(load.get("window_s") or 0.0)
+    what = (f"the 95th percentile of the contact force averaged over {window:g} s windows "
+            f"({load.get('contact_steps', 0)} steps with contact)" if window > 0 else
+            f"the 95th percentile of the per-step contact force over "
+            f"{load.get('contact_steps', 0) if load else 0} steps with contact")
+    shown = f"{force:.3g}" if window > 0 else f"{force:.1f}"  # windowed: a few 0.1 N
     caveat = "" if load is None else (
-        f"checked with {force:.1f} N, the 95th percentile of the per-step contact force "
-        f"over {load.get('contact_steps', 0)} steps with contact; the one-step peak "
+        f"checked with {shown} N, {what}; the one-step peak "
         f"{peak:.1f} N (a contact spike, sensitive to the time step) would give a safety "
         f"factor of {'-' if peak_sf is None else f'{peak_sf:.1f}'}")
     check = replace(check, peak_force_n=peak if load is not None else None,

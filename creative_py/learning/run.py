@@ -30,7 +30,7 @@ from creative_py.learning.drawn_world import draw_catalogue_world
 from creative_py.learning.options import RunOptions, read_run_json, run_json
 from creative_py.learning.prior import load_prior
 from creative_py.learning.trials import TrialRunner
-from creative_py.records.folder import RunFolder, read_resume, running_pid
+from creative_py.records.folder import RunFolder, read_resume, resume_command, running_pid
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
@@ -152,7 +152,7 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
                 say(f"the backend was lost before the first trial ({exc}): nothing was kept")
         elif interrupted:
             say(f"interrupted after {len(run.trials)} trial(s); to go on: "
-                f"creative run {case} --resume {run.path}")
+                f"{resume_command(case, run.path)}")
         elif lost:
             exc.resume_command = _stopped(run, case, exc, say)
         raise
@@ -174,7 +174,7 @@ def _stopped(run: RunFolder, case: str, exc: BaseException, say: Callable[[str],
     did not go as planned: ``stopped.json`` records it with the skill it was in, but not
     in ``trials.jsonl``, since nothing was learned about the tool from it (it labels no
     example); the resume runs it again."""
-    command = f"creative run {case} --resume {run.path}"
+    command = resume_command(case, run.path)
     lost = lost_trial(exc)
     note = {"stopped": "the backend was lost", "reason": str(exc),
             "trials_recorded": len(run.trials), "lost_trial": lost, "resume": command}
@@ -235,7 +235,7 @@ def _open_folder(out: Path, case: str, options: RunOptions, world_dir: Optional[
         say(f"run folder {run.path}")
         if waiting:
             say(f"a new run; the interrupted run {waiting[-1]} of this case and seed "
-                f"can go on with: creative run {case} --resume {waiting[-1]}")
+                f"can go on with: {resume_command(case, waiting[-1])}")
         return run, [], [], None, None
     run, replay, lines = resume
     resumed = Resumed(replayed=len(replay), earlier_wall_time_s=_earlier_wall(run.path),

@@ -35,6 +35,7 @@ import errno
 import fcntl
 import json
 import os
+import shlex
 import signal
 import tempfile
 import threading
@@ -45,6 +46,26 @@ from pathlib import Path
 from typing import Any, Callable, Iterator, Optional, Union
 
 from creative_py.records.trial import REQUIRED_KEYS, TrialRecord, jsonable
+
+RESUME_ENV = "CREATIVE_RESUME_COMMAND"
+"""The environment variable of the command that resumes a run, with ``{run}`` where its
+folder goes: a launcher that started the learner beside a stand-in robot sets it (the
+ROS 2 backend's, :mod:`creative_py.backends.ros.launch`; ``make run BACKEND=ros``),
+since ``creative run CASE --resume DIR`` alone would find no arm. Read by
+:func:`resume_command`, which the run's Ctrl-C and lost-arm hints and ``stopped.json``
+use (:mod:`creative_py.learning.run`)."""
+
+
+def resume_command(case: str, folder: Path | str) -> str:
+    """Return the command that goes on with the run in ``folder``, as the person who
+    started it can type it: the launcher's (:data:`RESUME_ENV`) when one started the
+    learner, else ``creative run CASE --resume FOLDER`` (the folder shell-quoted)."""
+    where = shlex.quote(str(folder))
+    template = os.environ.get(RESUME_ENV, "").strip()
+    if template:
+        return (template.replace("{run}", where) if "{run}" in template
+                else f"{template} {where}")
+    return f"creative run {case} --resume {where}"
 
 
 class FolderInUse(ValueError):

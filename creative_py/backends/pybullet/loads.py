@@ -1,24 +1,29 @@
-"""The load the physics puts on a tool: the contact force during the tool action.
+"""The load the physics puts on a tool: the task's contact force during the tool action.
 
 While the manifest's tool action runs (``tool_action = true`` in ``case.toml``: the
 pull, the door's release), a :class:`ToolLoadMonitor` reads, after every physics step,
-every contact point whose body A is the tool (``getContactPoints(bodyA=tool)``) and sums
-their normal forces. It keeps the step with the largest sum and where on the tool that
-force acted: the contact points' centroid weighted by their normal forces, in the
-tool's own frame (the spec's frame: the handle along +x from its butt end; a block's
-base centred on the origin).
+the contact points between the tool and the case's *target* (the object the tool acts
+on: ``[roles] target`` of ``case.toml``, the cube a hook pulls, the door a wedge holds)
+and sums their normal forces. That is the load the task puts on the tool; what else the
+tool brushes against on the way (the table under a tool dragged along it, a tube's
+wall) is named in :attr:`ToolLoad.other_bodies` but not counted: a tool resting on the
+table 1 mm from the grasp is no load on its handle. The monitor keeps the step with
+the largest sum and where on the tool that force acted: the contact points' centroid
+weighted by their normal forces, in the tool's own frame (the spec's frame: the handle
+along +x from its butt end; a block's base centred on the origin), with the grasp in
+the same frame, so that the strength check's lever arm runs from the grasp.
 
-One step's peak is a poor measure of the load: a contact that opens or closes in a
+One step's force is a poor measure of the load: a contact that opens or closes in a
 step (the door meeting the wedge) gives a spike an order of magnitude above the force
-that then holds (a wedge: a 3,557 N spike, a few hundred newtons for the rest of the
-action), and the spike changes with the time step. So the monitor also keeps every
-step's sum and gives a robust force beside the peak: the :data:`ROBUST_PERCENTILE`
-th percentile of the sums over the steps with contact, the load the tool bears for
-all but the briefest part of the action. The strength check of a created tool
-(:mod:`creative_py.fabrication.strength`) reads the figures; nothing here decides an
-outcome.
+that then holds (the door on the created wedge: a 1,791 N spike, 436 N for the rest of
+the action), and a hook pulling a cube meets it in one-step pulses. So the robust force
+beside the peak is the one every backend gives
+(:mod:`creative_py.simulator.load`): the 95th percentile of the force averaged over
+each 0.1 s of the action, over the windows with contact. The strength check of a
+created tool (:mod:`creative_py.fabrication.strength`) reads the figures; nothing here
+decides an outcome.
 
-Units: newtons, metres, the tool frame unless a name says ``world``.
+Units: newtons, metres, seconds, the tool frame unless a name says ``world``.
 """
 
 from __future__ import annotations
@@ -30,21 +35,23 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.backends.pybullet.bodies import frame_pose
+from creative_py.simulator.load import (LOAD_WINDOW_S, ROBUST_PERCENTILE, robust_force,
+                                        samples_per_window)
 
-ROBUST_PERCENTILE = 95.0
-"""The percentile of the per-step summed normal force (over the steps with contact)
-that :attr:`ToolLoad.robust_force_n` is."""
+__all__ = ["LOAD_WINDOW_S", "ROBUST_PERCENTILE", "ToolLoad", "ToolLoadMonitor",
+           "contact_wrench"]
 
 
 @dataclass(frozen=True)
 class ToolLoad:
-    """The largest contact load on a tool during its action.
+    """The task's contact load on a tool during its action (the tool against the
+    case's target).
 
     Attributes
     ----------
     max_force_n : float
         The largest sum over one physics step of the normal forces of the tool's
-        contacts, newtons (0.0 when the tool touched nothing).
+        contacts with the target, newtons (0.0 when the tool did not touch it).
     point : tuple of float or None
         Where it acted: the contacts' centroid weighted by normal force, tool frame,
         metres (None without contact).
@@ -57,19 +64,26 @@ class ToolLoad:
     contacts : int
         Contact points of that step.
     bodies : tuple of str
-        The names of the bodies it touched then, sorted.
+        The names of the bodies whose contacts are the load (the target; empty
+        without contact).
     step : int
         The physics step (of the episode) at which it happened.
     steps : int
         The physics steps watched (the length of the tool action).
     robust_force_n : float
-        The :data:`ROBUST_PERCENTILE` th percentile of the per-step summed normal force
-        over the steps with contact, newtons (0.0 without contact): the force the
-        strength check uses, the peak being a contact spike.
+        The :data:`ROBUST_PERCENTILE` th percentile of the summed normal force
+        averaged over each :data:`LOAD_WINDOW_S` of the action, over the windows with
+        contact, newtons (0.0 without contact): the force the strength check uses,
+        the peak being a contact spike.
     contact_steps : int
-        The steps with contact.
+        The steps (or sensor samples) with contact.
     impulse_ns : float
         The summed normal force integrated over the action, newton seconds.
+    other_bodies : tuple of str
+        What else the tool touched during the action, not counted in the load, sorted.
+    window_s : float
+        The window the robust force averages over, seconds (0.0 for a load recorded
+        before windows: its robust force is the per-step percentile).
     """
 
     max_force_n: float = 0.0
@@ -83,6 +97,8 @@ class ToolLoad:
     robust_force_n: float = 0.0
     contact_steps: int = 0
     impulse_ns: float = 0.0
+    other_bodies: tuple[str, ...] = ()
+    window_s: float = 0.0
 
     def to_dict(self) -> dict[str, Any]:
         """Return the load as JSON-ready data (tuples become lists, floats rounded)."""
@@ -93,6 +109,7 @@ class ToolLoad:
         for k in ("max_force_n", "robust_force_n", "impulse_ns"):
             d[k] = round(float(d[k]), 6)
         d["bodies"] = list(d["bodies"])
+        d["other_bodies"] = list(d["other_bodies"])
         return d
 
     @classmethod
@@ -107,16 +124,19 @@ class ToolLoad:
                    int(data.get("contacts", 0)), tuple(data.get("bodies", ())),
                    int(data.get("step", 0)), int(data.get("steps", 0)),
                    float(data.get("robust_force_n", data.get("max_force_n", 0.0))),
-                   int(data.get("contact_steps", 0)), float(data.get("impulse_ns", 0.0)))
+                   int(data.get("contact_steps", 0)), float(data.get("impulse_ns", 0.0)),
+                   tuple(data.get("other_bodies", ())), float(data.get("window_s", 0.0)))
 
 
 class ToolLoadMonitor:
-    """Watch the tool's contacts after every physics step of an episode's tool action.
+    """Watch the tool's contacts with the target after every physics step of an
+    episode's tool action.
 
     Parameters
     ----------
     ep : Episode
-        The episode (its ``sim``, ``tool_body``, ``held``, ``grasp`` and ``bodies``).
+        The episode (its ``sim``, ``tool_body``, ``held``, ``grasp``, ``bodies`` and
+        ``target_name``: the case's target role).
 
     Use :meth:`start` before the action and :meth:`stop` after it; :attr:`load` holds
     the result. The monitor only reads the simulation, so the physics is unchanged.
@@ -129,6 +149,8 @@ class ToolLoadMonitor:
         self._sums: list[float] = []
         self._impulse = 0.0
         self._names = {b.id: name for name, b in ep.bodies.items()}
+        self.target = ep.body_id(ep.target_name)
+        self._others: set[str] = set()
 
     def start(self) -> None:
         """Begin watching (a step callback of the episode's simulator)."""
@@ -138,22 +160,27 @@ class ToolLoadMonitor:
         """Stop watching; return the load seen."""
         if self._after_step in self.ep.sim.after_step:
             self.ep.sim.after_step.remove(self._after_step)
-        robust = (float(np.percentile(self._sums, ROBUST_PERCENTILE)) if self._sums
-                  else 0.0)
+        dt = self.ep.sim.physics.time_step
         self.load = ToolLoad(**{**asdict(self.load), "steps": self._steps,
-                                "robust_force_n": robust,
-                                "contact_steps": len(self._sums),
-                                "impulse_ns": self._impulse})
+                                "robust_force_n": robust_force(
+                                    self._sums, samples_per_window(1.0 / dt)),
+                                "contact_steps": sum(f > 0 for f in self._sums),
+                                "impulse_ns": self._impulse,
+                                "other_bodies": tuple(sorted(self._others)),
+                                "window_s": LOAD_WINDOW_S})
         return self.load
 
     def _after_step(self) -> None:
         self._steps += 1
         ep = self.ep
-        cps = pb.getContactPoints(bodyA=ep.tool_body, physicsClientId=ep.sim.client)
-        if not cps:
-            return
+        every = pb.getContactPoints(bodyA=ep.tool_body, physicsClientId=ep.sim.client)
+        cps = [cp for cp in every if cp[2] == self.target]
+        self._others.update(self._names.get(cp[2], f"body{cp[2]}") for cp in every
+                            if cp[2] != self.target and cp[2] in self._names)
         total = float(sum(cp[9] for cp in cps))
         self._sums.append(total)
+        if not total > 0.0:
+            return
         self._impulse += total * ep.sim.physics.time_step
         if not total > self.load.max_force_n:
             return
@@ -176,9 +203,8 @@ class ToolLoadMonitor:
         self.load = ToolLoad(
             max_force_n=total, point=tuple(float(v) for v in point),
             force=tuple(float(v) for v in rot @ force), grasp_point=grasp,
-            contacts=len(cps),
-            bodies=tuple(sorted({self._names.get(cp[2], f"body{cp[2]}") for cp in cps})),
-            step=ep.sim.steps, steps=self._steps)
+            contacts=len(cps), bodies=(ep.target_name,), step=ep.sim.steps,
+            steps=self._steps)
 
 
 def contact_wrench(sim: Any, body: int, about: Any) -> tuple[tuple[float, float, float],

@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import atexit
 import json
+import logging
 import os
 import threading
 import time
@@ -33,11 +34,13 @@ from typing import Any, Iterator, Optional
 import rclpy  # noqa: F401  (the ros extra: the loader names it when missing)
 from control_msgs.action import FollowJointTrajectory  # noqa: F401  (make setup-ros)
 
-from creative_py.backends.ros.client import ArmClient, ArmUnavailable
+from creative_py.backends.ros.client import ArmClient, ArmUnavailable, discovery_warning
 from creative_py.backends.ros.episode import RosEpisode, SceneRefused, unsupported_skills
 from creative_py.backends.ros.motion import Kinematics, LearnerArm
 from creative_py.backends.ros.profile import RobotProfile, load_profile
 from creative_py.world_files import WorldFileError
+
+log = logging.getLogger(__name__)
 
 PROFILE_ENV = "CREATIVE_ROBOT_PROFILE"
 """The environment variable naming the robot profile (a name under ``robots/`` or a
@@ -172,12 +175,21 @@ def connection() -> Connection:
     ArmAbsent
         The arm did not answer within :data:`WAIT_ENV` seconds (naming the topic or
         action it waited for).
+    WorldFileError
+        ``ROS_SECURITY_ENABLE=true`` with a Fast DDS built without DDS Security (the
+        PyPI wheels'), in one line.
+
+    Warns (logging) when discovery reaches beyond the host without DDS Security
+    (:func:`~creative_py.backends.ros.client.discovery_warning`).
     """
     name = profile_name()
     conn = _CONNECTION.get(name)
     if conn is not None and conn.client is not None:
         return conn
     profile = load_profile(name)
+    warning = discovery_warning(os.environ)
+    if warning:
+        log.warning("%s", warning)
     try:
         wait = float(os.environ.get(WAIT_ENV) or 20.0)
     except ValueError:
@@ -188,6 +200,15 @@ def connection() -> Connection:
     except ArmUnavailable as exc:
         raise ArmAbsent(f"{profile.source}: {exc}: no arm answers (start the arm or the "
                         f"stand-in first, docs/real-robot.md)") from None
+    except RuntimeError as exc:  # rclpy's RCLError: the node could not be made
+        said = " ".join(str(exc).split())
+        if "SECURITY=ON" not in said:
+            raise
+        raise WorldFileError(
+            "ROS_SECURITY_ENABLE=true: this ROS 2's Fast DDS is built without DDS Security "
+            "(it said: 'Please compile Fast DDS using the -DSECURITY=ON CMake option'; the "
+            "PyPI wheels' is): run the learner with the lab's own ROS 2 install and SROS2, "
+            "or on an isolated robot network (docs/real-robot.md, Network safety)") from None
     _CONNECTION[name] = conn
     return conn
 

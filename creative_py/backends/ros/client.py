@@ -29,11 +29,39 @@ from __future__ import annotations
 import threading
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Optional, Sequence
+from typing import Any, Callable, Mapping, Optional, Sequence
 
 from creative_py.backends.ros.profile import RobotProfile
 from creative_py.backends.ros.trajectory import ERROR_NAMES
 from creative_py.simulator.types import BackendLost
+
+
+def discovery_warning(env: Mapping[str, str]) -> Optional[str]:
+    """Return a warning when ROS 2 discovery reaches beyond this host while DDS Security
+    is off (None otherwise): then any machine on the network, on the same domain id, can
+    see the arm's topics and send it goals.
+
+    Discovery reaches beyond the host unless ``ROS_AUTOMATIC_DISCOVERY_RANGE`` is
+    ``LOCALHOST`` or ``OFF`` (unset, ``SUBNET`` and ``SYSTEM_DEFAULT`` reach the subnet;
+    the deprecated ``ROS_LOCALHOST_ONLY=1`` counts as ``LOCALHOST`` when the range is
+    unset) and ``ROS_STATIC_PEERS`` names no peer. Security is on when
+    ``ROS_SECURITY_ENABLE`` is ``true`` (SROS2; docs/real-robot.md, "Network safety").
+    """
+    scope = env.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "").strip().upper()
+    if not scope and env.get("ROS_LOCALHOST_ONLY", "").strip() == "1":
+        scope = "LOCALHOST"
+    peers = env.get("ROS_STATIC_PEERS", "").strip()
+    if scope in ("LOCALHOST", "OFF") and not peers:
+        return None
+    if env.get("ROS_SECURITY_ENABLE", "").strip().lower() == "true":
+        return None
+    reach = (f"ROS_STATIC_PEERS={peers}" if scope in ("LOCALHOST", "OFF") else
+             f"ROS_AUTOMATIC_DISCOVERY_RANGE={scope or 'unset, so SUBNET'}")
+    return (f"ROS 2 discovery reaches beyond this host ({reach}) and DDS Security is off "
+            f"(ROS_SECURITY_ENABLE is not true): any machine on the network on domain "
+            f"{env.get('ROS_DOMAIN_ID', '0') or '0'} can see the arm's topics and send it "
+            f"goals; use the lab's ROS 2 with SROS2 or an isolated robot network, or set "
+            f"ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST (docs/real-robot.md, Network safety)")
 
 
 class ArmUnavailable(BackendLost):
@@ -190,17 +218,56 @@ class ArmClient:
         while p.use_sim_time and self.clock.msg is None:
             if time.monotonic() > end:
                 raise ArmUnavailable(f"no rosgraph_msgs/Clock on {p.clock_topic!r} within "
-                                     f"{timeout:g} s (the profile's [clock] use_sim_time)")
+                                     f"{timeout:g} s (the profile's [clock] use_sim_time); "
+                                     + self.published("rosgraph_msgs/msg/Clock"))
             time.sleep(0.02)
         while self.joint_state.msg is None:
             if time.monotonic() > end:
                 raise ArmUnavailable(f"no sensor_msgs/JointState on "
-                                     f"{self.profile.joint_states_topic!r} within {timeout:g} s")
+                                     f"{self.profile.joint_states_topic!r} within {timeout:g} s; "
+                                     + self.published("sensor_msgs/msg/JointState"))
             time.sleep(0.02)
-        for client, name in ((self.trajectory, self.profile.arm_action),
-                             (self.gripper, self.profile.gripper_action)):
+        for client, name, kind in (
+                (self.trajectory, self.profile.arm_action,
+                 "control_msgs/action/FollowJointTrajectory"),
+                (self.gripper, self.profile.gripper_action, "control_msgs/action/GripperCommand")):
             if not client.wait_for_server(timeout_sec=max(0.0, end - time.monotonic())):
-                raise ArmUnavailable(f"no action server {name!r} within {timeout:g} s")
+                raise ArmUnavailable(f"no action server {name!r} within {timeout:g} s; "
+                                     + self.served(kind))
+
+    def _others(self) -> list[tuple[str, str]]:
+        """Return the ROS graph's nodes other than this one, ``(name, namespace)``."""
+        me = (self.node.get_name(), self.node.get_namespace())
+        return [n for n in self.node.get_node_names_and_namespaces() if n != me]
+
+    def published(self, type_name: str) -> str:
+        """Return, in words, the topics on which another node of the ROS graph publishes
+        messages of ``type_name`` (``sensor_msgs/msg/JointState``) now: what the arm does
+        publish, for an error that a profile's topic name is wrong."""
+        topics = set()
+        for name, ns in self._others():
+            try:
+                found = self.node.get_publisher_names_and_types_by_node(name, ns)
+            except Exception:  # noqa: BLE001  (the node left the graph meanwhile)
+                continue
+            topics.update(t for t, types in found if type_name in types)
+        return (f"the ROS graph has {type_name} on {', '.join(sorted(topics))}" if topics
+                else f"no node of the ROS graph publishes {type_name}")
+
+    def served(self, type_name: str) -> str:
+        """Return, in words, the action servers of ``type_name``
+        (``control_msgs/action/GripperCommand``) other nodes of the ROS graph offer."""
+        from rclpy.action.graph import get_action_server_names_and_types_by_node
+
+        names = set()
+        for name, ns in self._others():
+            try:
+                found = get_action_server_names_and_types_by_node(self.node, name, ns)
+            except Exception:  # noqa: BLE001  (the node left the graph meanwhile)
+                continue
+            names.update(a for a, types in found if type_name in types)
+        return (f"the ROS graph serves {type_name} on {', '.join(sorted(names))}" if names
+                else f"no node of the ROS graph serves {type_name}")
 
     def now(self) -> float:
         """Return the time staleness and timeouts count (s): the simulated clock's last

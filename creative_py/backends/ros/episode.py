@@ -91,25 +91,29 @@ def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
                 working_point: Sequence[float] = (0.0, 0.0, 0.0)) -> Any:
     """Return the tool action's contact load (the pybullet backend's
     :class:`~creative_py.backends.pybullet.loads.ToolLoad`) from a wrist sensor's
-    samples ``(force, torque)`` (gripper frame, tared; torque about the gripper).
+    samples ``(force, torque)`` (gripper frame, tared; torque about the gripper, which
+    holds the tool at the grasp) at ``rate_hz``.
 
-    The force of a sample is its magnitude (the net force: where the pybullet backend
-    sums the contacts' normal forces every physics step, a sensor gives their vector
-    sum at its rate). A sensor gives the force's line of action, not the point on it:
+    The force of a sample is its magnitude (the net force: a sensor cannot tell the
+    target's contact from the others, where the pybullet backend counts the target's
+    alone). The robust force follows the rule of every backend
+    (:func:`creative_py.simulator.load.robust_force`): the 95th percentile of the force
+    averaged over each 0.1 s, over the windows with contact. The torque about the grasp
+    places the force: a sensor gives its line of action (``torque = r x force``), and
     the point is the peak sample's line's point nearest the tool's ``working_point``
     (tool frame; a hook's prong), in the tool frame through the grasp (the tool frame
-    in the gripper frame). The robust force is the 95th percentile over the samples
-    with contact.
+    in the gripper frame); the strength check's lever arm runs from the grasp to it.
     """
     import numpy as np
 
-    from creative_py.backends.pybullet.loads import ROBUST_PERCENTILE, ToolLoad
+    from creative_py.backends.pybullet.loads import ToolLoad
     from creative_py.backends.ros.standin import compose, invert
+    from creative_py.simulator.load import LOAD_WINDOW_S, robust_force, samples_per_window
 
     norms = [float(np.linalg.norm(f)) for f, _ in samples]
     contact = [n for n in norms if n > 1e-6]
     if not contact:
-        return ToolLoad(steps=len(samples))
+        return ToolLoad(steps=len(samples), window_s=LOAD_WINDOW_S)
     k = int(np.argmax(norms))
     f, t = np.asarray(samples[k][0]), np.asarray(samples[k][1])
     tool_in_gripper = (tuple(grasp[0]), tuple(grasp[1]))
@@ -120,11 +124,13 @@ def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
     point_g = on_line + float((work - on_line) @ unit) * unit
     point = compose(gripper_in_tool, (tuple(point_g), (0.0, 0.0, 0.0, 1.0)))[0]
     force = compose(((0.0, 0.0, 0.0), gripper_in_tool[1]), (tuple(f), (0.0, 0.0, 0.0, 1.0)))[0]
+    robust = robust_force([n if n > 1e-6 else 0.0 for n in norms],
+                          samples_per_window(rate_hz))
     return ToolLoad(max_force_n=norms[k], point=point, force=force,
                     grasp_point=gripper_in_tool[0], contacts=0, bodies=(), step=k,
-                    steps=len(samples),
-                    robust_force_n=float(np.percentile(contact, ROBUST_PERCENTILE)),
-                    contact_steps=len(contact), impulse_ns=sum(contact) / rate_hz)
+                    steps=len(samples), robust_force_n=robust,
+                    contact_steps=len(contact), impulse_ns=sum(contact) / rate_hz,
+                    window_s=LOAD_WINDOW_S)
 
 
 class RosRobot:
@@ -308,9 +314,14 @@ class RosEpisode(PybulletEpisode):
             if time.monotonic() > end:
                 late = [conn.profile.object_topic_of(n) for n in self.tracked
                         if conn.client.poses[n].count < counts[n] + 2]
-                raise ArmUnavailable(f"no fresh geometry_msgs/PoseStamped on "
-                                     f"{', '.join(late) or conn.profile.joint_states_topic!r}"
-                                     f" after the scene was set up")
+                if late:
+                    raise ArmUnavailable(
+                        f"no fresh geometry_msgs/PoseStamped on {', '.join(late)} after the "
+                        f"scene was set up; "
+                        + conn.client.published("geometry_msgs/msg/PoseStamped"))
+                raise ArmUnavailable(f"no fresh sensor_msgs/JointState on "
+                                     f"{conn.profile.joint_states_topic!r} after the scene "
+                                     "was set up")
             time.sleep(0.02)
         self.sync()
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}

@@ -10,7 +10,9 @@ It publishes, with the names of the robot profile (:mod:`.profile`):
   profile's rate;
 * ``geometry_msgs/WrenchStamped`` of a wrist force/torque sensor (the profile's
   ``[wrench]``): the contact force on the held tool and its torque about the gripper,
-  in the gripper frame, tared, with the joint states;
+  in the gripper frame, tared, with the joint states, each message the mean over the
+  physics steps since the last (a sensor's anti-aliasing filter: a one-step contact
+  pulse counts by its impulse, not by the step it fell on);
 * ``geometry_msgs/PoseStamped`` of each tracked object of the scene (the case's
   perceived objects, its context and the tool) on its own topic, in the world frame,
   as a motion-capture system publishes rigid bodies;
@@ -121,7 +123,8 @@ class SimArm:
         names = [n for n, _ in episode.perceived] + [episode.context_name, episode.tool]
         self.tracked = list(dict.fromkeys(names))
         self.closed = False
-        self.wrench: tuple = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
+        self.wrench: tuple = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0))  # the last step's
+        self._wrench_sum, self._wrench_steps = np.zeros(6), 0
         self.offset = 0.0  # s: the arm's time minus the episode's (scenes rebuilt before)
 
     def rebind(self, episode: Any) -> None:
@@ -148,7 +151,16 @@ class SimArm:
         self.ep.sim.step(1)
         if self.profile.wrench_topic:
             self.wrench = self.measure_wrench()
+            self._wrench_sum += np.concatenate(self.wrench)
+            self._wrench_steps += 1
         return self.time()
+
+    def take_wrench(self) -> tuple:
+        """Return the mean wrench (force, torque; gripper frame) over the physics steps
+        since the last call, what the sensor publishes now, and start the next mean."""
+        mean = self._wrench_sum / max(1, self._wrench_steps)
+        self._wrench_sum, self._wrench_steps = np.zeros(6), 0
+        return (tuple(float(v) for v in mean[:3]), tuple(float(v) for v in mean[3:]))
 
     def measure_wrench(self) -> tuple:
         """Return what a wrist force/torque sensor measures now, tared: the contact
@@ -542,8 +554,9 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
             if wrench_pub is not None:
                 w = WrenchStamped()
                 w.header.stamp, w.header.frame_id = msg.header.stamp, p.wrench_frame
-                (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = arm.wrench[0]
-                (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = arm.wrench[1]
+                force, torque = arm.take_wrench()
+                (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = force
+                (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = torque
                 wrench_pub.publish(w)
         prev_q, prev_t = q, now
         next_js = max(next_js + js_period, now)

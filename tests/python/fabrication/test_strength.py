@@ -312,3 +312,13 @@ def test_small_forces_still_have_safety_factors_and_the_limit_passes():
     # A safety factor exactly the required one passes.
     limit = check_strength(HOOK, half, strength_pa=2.0 * check.stress_pa)
     assert (limit.safety_factor, limit.verdict) == (2.0, "pass")
+
+
+def test_a_windowed_load_says_its_window_in_the_caveat():
+    loaded = {"max_force_n": 3.0, "robust_force_n": 0.0961, "point": [0.589, -0.03, 0.0],
+              "grasp_point": [0.04, 0.0, 0.0], "bodies": ["cube1"], "contact_steps": 60,
+              "window_s": 0.1}
+    check = check_strength(HOOK, loaded)
+    assert check.caveat.startswith(
+        "checked with 0.0961 N, the 95th percentile of the contact force averaged over "
+        "0.1 s windows (60 steps with contact); the one-step peak 3.0 N")

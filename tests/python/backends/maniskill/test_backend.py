@@ -43,6 +43,8 @@ def test_demonstration_succeeds_by_maniskills_evaluate(world):
     assert r.verdict["value"] < 0.6
     # the load on the tool while it pulled, read from SAPIEN's contacts
     assert r.max_tool_force_n > 0 and r.tool_load["contact_steps"] > 0
+    # the task's contact alone: the tool against the case's target (not the table)
+    assert r.tool_load["bodies"] == [m.target] and r.tool_load["window_s"] == 0.1
 
 
 def test_prong_in_front_of_the_cube_fails(world):

@@ -52,6 +52,8 @@ def test_demonstration_succeeds_by_maniskills_evaluate(world):
     assert 0 < r.steps <= world.max_steps
     assert r.verdict["value"] < world.zone_radius
     assert r.max_tool_force_n > 0 and r.tool_load["contact_steps"] > 0
+    # the task's contact alone: the tool against the case's target (not the table)
+    assert r.tool_load["bodies"] == [m.target] and r.tool_load["window_s"] == 0.1
 
 
 def test_peg_beside_the_cube_fails(world):

@@ -110,6 +110,12 @@ try:
         t = time.monotonic()
         out["check_absent"] = check_interface(load_profile(absent), [], 1.0, 2.0)
         out["check_absent_s"] = time.monotonic() - t
+        # a misspelt action name: the error lists the servers the arm does offer
+        misspelt = Path(tmp) / "misspelt.toml"
+        misspelt.write_text(Path(wall_profile.source).read_text().replace(
+            'action = "right_gripper_controller/gripper_cmd"',
+            'action = "right_gripper_controller/gripper_command"'))
+        out["check_misspelt"] = check_interface(load_profile(misspelt), [], 1.0, 2.0)
 
     # -- joint states: names and rate over one second
     n0 = client.joint_state.count

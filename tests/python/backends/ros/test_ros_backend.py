@@ -144,7 +144,10 @@ def test_a_wrist_sensors_samples_give_the_tool_load():
                ((-1.0, 0.0, 0.0), (0.0, 0.0, 0.05))]
     load = wrench_load(samples, grasp, 50.0, working_point=(0.4, 0.05, 0.0))
     assert load.max_force_n == 2.0 and load.steps == 3 and load.contact_steps == 2
-    assert load.robust_force_n == pytest.approx(1.95)
+    # the force averaged over 0.1 s (5 samples at 50 Hz): one window, 3 N / 3
+    assert load.robust_force_n == pytest.approx(1.0) and load.window_s == 0.1
+    # at 10 Hz each sample is a window: the 95th percentile of 2 N and 1 N
+    assert wrench_load(samples, grasp, 10.0).robust_force_n == pytest.approx(1.95)
     # the line's point nearest the working point, in the tool frame
     assert load.point == pytest.approx((0.4, 0.05, 0.0), abs=1e-9)
     assert load.grasp_point == pytest.approx((0.1, 0.0, 0.0))

@@ -203,8 +203,14 @@ def test_the_read_only_check_sees_the_interface_and_names_what_is_absent(session
     assert {n: o["frame"] for n, o in report["objects"].items()} == {
         n: profile.world_frame for n in session["interface"]["objects"]}
     assert all(o["rate_hz"] > 0 for o in report["objects"].values())  # 30 Hz nominal
-    assert session["check_absent"]["missing"] == ("no sensor_msgs/JointState on "
-                                                  "'absent/joint_states' within 2 s")
+    # a wrong topic or action name: the error lists what the arm does publish
+    assert session["check_absent"]["missing"] == (
+        "no sensor_msgs/JointState on 'absent/joint_states' within 2 s; the ROS graph has "
+        "sensor_msgs/msg/JointState on /joint_states")
+    assert session["check_misspelt"]["missing"] == (
+        "no action server 'right_gripper_controller/gripper_command' within 2 s; the ROS "
+        "graph serves control_msgs/action/GripperCommand on "
+        "/right_gripper_controller/gripper_cmd")
     assert session["check_absent_s"] < 8.0
 
 
@@ -251,9 +257,12 @@ def test_a_frozen_arm_gives_stale_joint_states_and_a_goal_that_ends_silent(sessi
 
 def test_an_absent_arm_names_the_topic_it_waited_for(session):
     absent = session["absent"]
-    assert absent["wall"]["message"] == "no sensor_msgs/JointState on 'joint_states' within 2 s"
-    assert absent["sim"]["message"] == ("no rosgraph_msgs/Clock on '/clock' within 2 s (the "
-                                        "profile's [clock] use_sim_time)")
+    assert absent["wall"]["message"] == (
+        "no sensor_msgs/JointState on 'joint_states' within 2 s; no node of the ROS graph "
+        "publishes sensor_msgs/msg/JointState")
+    assert absent["sim"]["message"] == (
+        "no rosgraph_msgs/Clock on '/clock' within 2 s (the profile's [clock] "
+        "use_sim_time); no node of the ROS graph publishes rosgraph_msgs/msg/Clock")
 
 
 def test_an_arm_killed_mid_goal_gives_an_invalid_motion_and_a_lost_arm(session):
