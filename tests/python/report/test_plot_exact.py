@@ -52,7 +52,7 @@ def test_the_plot_of_six_trials_exact(tmp_path, saved):
     png = plot_trials(TRIALS, tmp_path / "t.png", title="a title")
     assert png == tmp_path / "t.png" and png.stat().st_size > 1000
     (fig, kw), = saved
-    assert kw == {"dpi": 120}
+    assert kw == {"format": "png", "dpi": 120}   # drawn in memory, then written whole
     # 6 wide at least; 1.6 + 0.38 per tool + 0.045 per character of the longest label
     assert fig.get_size_inches() == pytest.approx([6.0, 1.6 + 0.38 * 3 + 0.045 * 21])
     ax, = fig.axes
