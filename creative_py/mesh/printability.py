@@ -173,7 +173,7 @@ def printability(spec: KindSpec, mesh: trimesh.Trimesh,
     bed = " x ".join(f"{v * MM_PER_M:.0f}" for v in settings.build_volume)
     reason = (f"the part is {size} mm and fits no flat or diagonal placement in the {bed} mm "
               "build volume; it is split into pieces joined by dowel pins, each printed on "
-              "its own (creative_py.mesh.split; the tool manifest's \"print\" entry)")
+              "its own (the pieces are listed with the tool's print figures)")
     return Printability(False, extent, None, None, reason)  # type: ignore[arg-type]
 
 
