@@ -16,6 +16,9 @@ CREATE ?= --demonstrate-creation
 # ROS_DOMAIN is the domain id of its private, loopback-only network namespace.
 BACKEND ?=
 ROS_DOMAIN ?= 42
+# make run ROBOT=panda: the case on another arm (a profile of robots/, docs/robots.md;
+# default: the case's robot).
+ROBOT ?=
 
 .PHONY: help setup setup-maniskill test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl bench-ros
 
@@ -150,17 +153,18 @@ test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs includ
 mutate-prolog: $(STAMP)  ## Run the hand-written mutants of the Prolog core; score in bench/results/prolog_mutants.json.
 	$(PY) tests/prolog/mutants/mutants.py
 
-run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros: over ROS 2).
+run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros: over ROS 2; ROBOT=<profile>).
 ifeq ($(BACKEND),ros)
 	@# The stand-in and the learner, two processes talking ROS 2 in a private network
 	@# namespace with only loopback (unshare -n where allowed, else -rn).
 	@prefix="unshare -n"; $$prefix true 2>/dev/null || prefix="unshare -rn"; \
 	$$prefix sh -c 'ip link set lo up && ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST \
 	  ROS_DOMAIN_ID=$(ROS_DOMAIN) exec $(PY) -m creative_py.backends.ros.launch \
-	  --case $(CASE) -- run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) --backend ros'
+	  --case $(CASE) $(if $(ROBOT),--profile $(ROBOT)) -- run $(CASE) --seed $(SEED) \
+	  --out $(OUT) $(CREATE) --backend ros $(if $(ROBOT),--robot $(ROBOT))'
 else
 	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) \
-	  $(if $(BACKEND),--backend $(BACKEND))
+	  $(if $(BACKEND),--backend $(BACKEND)) $(if $(ROBOT),--robot $(ROBOT))
 endif
 
 cases: $(STAMP)  ## List the cases (every worlds/*/case.toml).

@@ -1,10 +1,10 @@
 """The ``ros`` backend of the simulator boundary: a case run on an arm over ROS 2.
 
 Its functions are the :class:`creative_py.simulator.Backend` protocol. A case runs on it
-without editing the case: ``creative run hook --backend ros [--robot-profile PATH]``
+without editing the case: ``creative run hook --backend ros [--robot NAME|PATH]``
 (or ``make run CASE=hook BACKEND=ros``); the robot profile comes from the environment
-variable :data:`PROFILE_ENV` (the command line sets it; default ``baxter``, the
-stand-in's).
+variable :data:`PROFILE_ENV` (the command line sets it: ``--robot``, else the case's
+robot).
 
 * :func:`load_world`: the world files, read by the pybullet backend's reader (the
   learner knows the apparatus as its world files describe it; only the tracked
@@ -37,11 +37,12 @@ from creative_py.backends.ros.client import ArmClient, ArmUnavailable
 from creative_py.backends.ros.episode import RosEpisode, SceneRefused, unsupported_skills
 from creative_py.backends.ros.motion import Kinematics, LearnerArm
 from creative_py.backends.ros.profile import RobotProfile, load_profile
+from creative_py.robots import ROBOT_ENV
 from creative_py.world_files import WorldFileError
 
-PROFILE_ENV = "CREATIVE_ROBOT_PROFILE"
+PROFILE_ENV = ROBOT_ENV
 """The environment variable naming the robot profile (a name under ``robots/`` or a
-``.toml`` path); ``creative run --robot-profile`` sets it."""
+``.toml`` path); ``creative run --robot`` sets it."""
 
 WAIT_ENV = "CREATIVE_ROS_WAIT_S"
 """The environment variable of the seconds to wait for the arm at the start (20)."""
@@ -157,8 +158,13 @@ _CONNECTION: dict[str, Connection] = {}
 
 
 def profile_name() -> str:
-    """Return the robot profile the environment names (default ``baxter``)."""
-    return os.environ.get(PROFILE_ENV) or "baxter"
+    """Return the robot profile the environment names (a run sets it: ``--robot``, else
+    the case's robot)."""
+    name = os.environ.get(PROFILE_ENV)
+    if not name:
+        raise WorldFileError(f"environment variable {PROFILE_ENV}: no robot profile named "
+                             "(creative run --robot NAME, or a case's robot)")
+    return name
 
 
 def connection() -> Connection:

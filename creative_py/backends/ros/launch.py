@@ -32,12 +32,22 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     at = argv.index("--")
     ap = argparse.ArgumentParser(prog="python -m creative_py.backends.ros.launch")
     ap.add_argument("--case", required=True, help="the case the stand-in builds")
-    ap.add_argument("--profile", default="baxter", help="the stand-in's robot profile")
+    ap.add_argument("--profile", default=None,
+                    help="the stand-in's robot profile (default: the case's robot)")
     ap.add_argument("--realtime", default="1", help="the stand-in's --realtime")
     ap.add_argument("--ready-timeout", type=float, default=120.0,
                     help="s to wait for the stand-in's ready line")
     args = ap.parse_args(argv[:at])
     command = argv[at + 1:]
+    if args.profile is None:
+        from creative_py.case import get_case
+        from creative_py.world_files import WorldFileError
+
+        try:
+            args.profile = get_case(args.case).robot or ""
+        except (WorldFileError, KeyError) as exc:
+            print(f"creative_py.backends.ros.launch: {exc}", file=sys.stderr)
+            return 2
     standin = subprocess.Popen(
         [sys.executable, "-m", "creative_py.backends.ros.standin", "--case", args.case,
          "--profile", args.profile, "--realtime", args.realtime],

@@ -196,7 +196,7 @@ def test_the_default_options():
         "seed": 0, "phase": "all", "max_trials": None, "consecutive": 2, "eval_trials": 4,
         "create_eval_trials": 5, "video": "key", "gui": False, "strategy": "informative",
         "world_seed": None, "catalogue_first": None, "demonstrate_creation": False,
-        "prior": None, "backend": None, "robot_profile": None}
+        "prior": None, "backend": None, "robot": None}
 
 
 @pytest.mark.parametrize("strategy, first, tries", [
@@ -303,7 +303,7 @@ def test_read_run_json_without_run_json(tmp_path):
     ({"case": "hook", "options": {"seeds": 1, "zz": 2}},
      "field 'options.seeds' is not an option (backend, catalogue_first, consecutive, "
      "create_eval_trials, demonstrate_creation, eval_trials, gui, max_trials, phase, "
-     "prior, robot_profile, seed, strategy, video, world_seed)"),
+     "prior, robot, seed, strategy, video, world_seed)"),
     ({"case": "hook", "options": {"seed": -1}},
      "field 'options': option seed must be a whole number >= 0, got -1"),
     ({"case": "hook", "options": {}, "world": 3},
