@@ -91,7 +91,7 @@ def test_every_shipped_profile_builds_an_arm_that_reaches_its_home():
 def test_the_check_names_a_joint_the_urdf_lacks(tmp_path):
     from creative_py.backends.pybullet import check_profile
 
-    path = _write(tmp_path, PANDA.replace('"panda_joint7"]', '"panda_joint8"]', 1))
+    path = _write(tmp_path, PANDA.replace('"panda_joint7"]', '"panda_joint8"]'))
     with pytest.raises(WorldFileError, match=r"field 'kinematics.joints': 'panda_joint8' is "
                                              r"no moving joint of panda.urdf"):
         check_profile(load_profile(path))
@@ -142,3 +142,44 @@ def test_the_robots_command_fails_in_one_line_on_a_bad_profile(tmp_path):
     assert r.returncode == 2
     assert r.stdout.count("\n") == 1 and "FAILED" in r.stdout
     assert f"{path}: field 'kinematics.ee_link': 'hand' is no link of panda.urdf" in r.stdout
+
+
+@pytest.mark.sim
+def test_the_demonstration_trial_succeeds_on_the_panda():
+    """The hook world places the Panda by data ([robot.panda] of scene.toml); the same
+    demonstration trial the Baxter makes reaches the goal."""
+    import json
+
+    r = subprocess.run([sys.executable, "-m", "creative_py.cli", "trial", "hook", "--tool",
+                        "hook_a2", "--robot", "panda", "--json"], capture_output=True,
+                       text=True, timeout=900)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["outcome"] == "success"
+
+
+def test_a_placement_for_an_unknown_robot_is_one_line(tmp_path):
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import get_case, read_manifest
+
+    src = get_case("hook").folder
+    for f in src.iterdir():
+        (tmp_path / f.name).write_text(f.read_text())
+    scene = (tmp_path / "scene.toml").read_text().replace("[robot.panda]", "[robot.pandaa]")
+    (tmp_path / "scene.toml").write_text(scene)
+    with pytest.raises(WorldFileError, match=r"scene.toml: field 'robot.pandaa': names no "
+                                             r"robot profile"):
+        load_world(read_manifest(tmp_path))
+
+
+def test_a_world_places_the_arm_it_runs(monkeypatch):
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import get_case
+    from creative_py.robots import ROBOT_ENV
+
+    monkeypatch.delenv(ROBOT_ENV, raising=False)
+    baxter = load_world(get_case("hook")).scene.robot
+    assert baxter.profile.name == "baxter" and baxter.base is None
+    monkeypatch.setenv(ROBOT_ENV, "panda")
+    panda = load_world(get_case("hook")).scene.robot
+    assert panda.profile.name == "panda" and panda.base[0] == (0.35, -0.75, -0.2)
+    assert panda.start == baxter.start  # the start poses are the world's own

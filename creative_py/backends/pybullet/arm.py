@@ -458,10 +458,10 @@ class _Model:
                    or self.joint[n] not in self.movable]
         if missing:
             raise profile.error("kinematics.joints", f"{missing[0]!r} is no moving joint of "
-                                f"{urdf.name}")
+                                f"{profile.urdf_path.name}")
         if profile.ee_link not in self.link:
             raise profile.error("kinematics.ee_link", f"{profile.ee_link!r} is no link of "
-                                f"{urdf.name}")
+                                f"{profile.urdf_path.name}")
         self.arm = [self.joint[n] for n in profile.arm_joints]
         self.idle = [self.joint[n] for n in profile.idle if n in self.joint
                      and self.joint[n] in self.movable]
@@ -609,7 +609,7 @@ class Arm:
         missing = [n for n in hand.joints if n not in m.joint or m.joint[n] not in m.movable]
         if missing:
             raise self.profile.error("hand.joints", f"{missing[0]!r} is no moving joint of "
-                                     f"{self.urdf.name}")
+                                     f"{self.profile.urdf_path.name}")
         fingers = [m.joint[n] for n in hand.joints]
         m.reset(fingers, hand.open)
         pb.setJointMotorControlArray(m.body, fingers, pb.POSITION_CONTROL,

@@ -609,11 +609,11 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
 
     try:  # every input is checked before ROS or the physics start
         manifest = get_case(args.case)
-        profile = load_profile(args.profile or manifest.robot or "")
-        os.environ[ROBOT_ENV] = profile.source  # the scene's arm is the profile's
         if manifest.backend != "pybullet":
             raise WorldFileError(f"option --case: {args.case} runs in the {manifest.backend!r} "
                                  "backend; the stand-in builds pybullet scenes")
+        profile = load_profile(args.profile or manifest.robot or "")
+        os.environ[ROBOT_ENV] = profile.source  # the scene's arm is the profile's
         demo = manifest.demonstration
         variant = args.variant or demo.variant
         location = demo.location if args.location is None else args.location

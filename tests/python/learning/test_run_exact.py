@@ -584,7 +584,7 @@ def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
         run_case("hook", tmp_path, options, progress=stop, run_name="stopped")
     assert seen == [f"run folder {tmp_path / 'stopped'}",
                     "demonstration: the trainer shows the task with hook_a2 (loc 1)",
-                    run_json("hook", options, None, None),
+                    run_json("hook", replace(options, robot="baxter"), None, None),
                     "interrupted before the first trial: nothing was kept"]
     assert list(tmp_path.iterdir()) == []
 
