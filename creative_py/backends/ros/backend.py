@@ -235,6 +235,8 @@ def load_world(manifest: Any) -> Any:
     primitive this backend does not run, a bad profile, or an absent arm."""
     from creative_py.backends.pybullet import load_world as read_world
 
+    if not os.environ.get(PROFILE_ENV) and getattr(manifest, "robot", None):
+        os.environ[PROFILE_ENV] = manifest.robot  # no --robot: the case's robot
     world = read_world(manifest)
     world = replace(world, scene=replace(world.scene, video=None))
     bad = unsupported_skills(world)

@@ -88,7 +88,7 @@ try:
     from creative_py.backends.ros.profile import load_profile
 
     profile = load_profile(SIM_PROFILE)
-    wall_profile = load_profile()
+    wall_profile = load_profile("baxter")
     objects = list(info["objects"])
     client = ArmClient(profile, objects)
     client.wait_for_arm(30.0)
