@@ -66,6 +66,14 @@ def step_cost(robot: str) -> float | None:
     return float(m.group(1)) if m else None
 
 
+def write(out: Path, steps: dict, runs: dict) -> None:
+    """Write the record."""
+    out.write_text(json.dumps({
+        "bench": "robots_cases", "machine": f"{platform.node()} ({platform.machine()}), "
+        "shared 2-core", "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+        "step_us": steps, "runs": runs}, indent=1) + "\n")
+
+
 def main() -> int:
     """Run the pairs and write the record; return 1 if a run failed."""
     ap = argparse.ArgumentParser(description=__doc__,
@@ -74,6 +82,8 @@ def main() -> int:
     ap.add_argument("--cases", nargs="+", default=list(CASES))
     ap.add_argument("--out", type=Path, default=RESULTS, help="the JSON file to write")
     ap.add_argument("--keep", type=Path, help="keep the run folders under DIR")
+    ap.add_argument("--steps-only", action="store_true",
+                    help="measure the robots' step costs again, running no case")
     args = ap.parse_args()
     old = json.loads(args.out.read_text()) if args.out.exists() else {}
     runs, steps = dict(old.get("runs", {})), dict(old.get("step_us", {}))
@@ -81,7 +91,7 @@ def main() -> int:
     failed = []
     for robot in args.robots:
         steps[robot] = step_cost(robot)
-        for case in args.cases:
+        for case in [] if args.steps_only else args.cases:
             out = base / f"{robot}-{case}"
             shutil.rmtree(out, ignore_errors=True)
             argv = [str(CREATIVE), "run", case, "--robot", robot, "--seed", "0", "--out",
@@ -99,11 +109,8 @@ def main() -> int:
                 continue
             runs[f"{robot}-{case}"] = record(folders[-1], wall)
             print(f"{robot} {case}: {wall:.0f} s, {folders[-1]}", flush=True)
-            args.out.write_text(json.dumps({
-                "bench": "robots_cases", "machine": f"{platform.node()} "
-                f"({platform.machine()}), shared 2-core",
-                "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-                "step_us": steps, "runs": runs}, indent=1) + "\n")
+            write(args.out, steps, runs)
+    write(args.out, steps, runs)
     if args.keep is None:
         shutil.rmtree(base, ignore_errors=True)
     if failed:

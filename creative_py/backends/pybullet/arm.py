@@ -996,7 +996,7 @@ def check_profile(profile: RobotProfile | str) -> str:
     the end-effector link, the idle joints and the hand's fingers, checks that the home
     posture lies within the joint limits and that IK reaches the home posture's tool
     pose from mid-range (so the solver works on this arm), and measures the cost of a
-    physics step with the arm at rest.
+    physics step with the arm at rest (the best of three runs of 480 steps).
     """
     import time
 
@@ -1033,9 +1033,12 @@ def check_profile(profile: RobotProfile | str) -> str:
         if q is None:
             raise p.error("kinematics.home", "IK does not reach the home posture's tool pose "
                           "(check ee_link, the tool frame and the joints)")
-        t0 = time.perf_counter()
-        sim.step(480)
-        step_us = (time.perf_counter() - t0) / 480 * 1e6
+        best = math.inf  # the best of three 480-step runs (a shared machine is noisy)
+        for _ in range(3):
+            t0 = time.perf_counter()
+            sim.step(480)
+            best = min(best, time.perf_counter() - t0)
+        step_us = best / 480 * 1e6
         hand = ("no hand" if p.hand is None else
                 f"{len(p.hand.joints)} fingers" + (" gear-coupled" if p.hand.gear_ratio else ""))
         x, y, z = pose[0]
