@@ -94,14 +94,10 @@ def tool_frame(profile: RobotProfile) -> Pose | None:
     return tuple(pos), tuple(quat)
 
 
-def _package_dirs(profile: RobotProfile) -> dict[str, str]:
-    return dict(profile.packages)
-
-
 def _rewrite_packages(text: str, profile: RobotProfile) -> str:
     """Return the URDF text with every ``package://NAME/`` replaced by a folder: the
     profile's ``[packages]`` entry, else example-robot-data's share folder."""
-    dirs = _package_dirs(profile)
+    dirs = dict(profile.packages)
 
     def folder(m: re.Match) -> str:
         name = m.group(1)
@@ -144,16 +140,16 @@ def arm_urdf(profile: RobotProfile, visuals: bool = False, model: str = "full") 
         text = _rewrite_packages(text, profile)
         if not visuals or model == "arm":
             text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
-        root = ET.fromstring(text)
-        _root_inertial(root, text)
-        if model != "full":
+        if model == "full":  # the text as shipped, but for the root's inertial
+            text = _root_inertial_text(text)
+        else:
+            root = ET.fromstring(text)
+            _root_inertial(root)
             if model == "light":
                 _merge_idle(root, profile.idle)
             else:
                 _keep_chain(root, profile.ee_link)
-        text = ET.tostring(root, encoding="unicode") if model != "full" else text
-        if model == "full":
-            text = _root_inertial_text(text, root)
+            text = ET.tostring(root, encoding="unicode")
         tmp = out.with_suffix(f".{os.getpid()}.{id(text)}.tmp")
         tmp.write_text(text)
         tmp.replace(out)
@@ -169,7 +165,7 @@ _TINY_INERTIAL = ('<inertial><mass value="0.001"/><inertia ixx="1e-6" ixy="0" ix
                   'iyy="1e-6" iyz="0" izz="1e-6"/></inertial>')
 
 
-def _root_inertial(root: ET.Element, text: str) -> None:
+def _root_inertial(root: ET.Element) -> None:
     """Give a fixed root link without ``<inertial>`` a tiny one, so that pybullet does not
     print a warning on every load (its mass is irrelevant: it is fixed)."""
     name = _root_link(root)
@@ -178,7 +174,7 @@ def _root_inertial(root: ET.Element, text: str) -> None:
         link.append(ET.fromstring(_TINY_INERTIAL))
 
 
-def _root_inertial_text(text: str, root: ET.Element) -> str:
+def _root_inertial_text(text: str) -> str:
     """The same edit in the text of the full model (kept as shipped otherwise)."""
     name = _root_link(ET.fromstring(text))
     m = re.search(r'<link\s+name="%s"\s*>\s*</link>' % re.escape(name), text)
