@@ -1,4 +1,4 @@
-"""The robots x cases table: every pybullet case run whole on every robot profile named.
+"""The robots x cases table: every case with a robot run whole on every robot profile named.
 
 Each run is ``creative run CASE --robot ROBOT --seed 0 --strategy informative --video
 none --demonstrate-creation`` in its own process, one after the other (a tool is made
@@ -10,8 +10,8 @@ robots``' check). Writes ``bench/results/robots_cases.json`` (runs already recor
 other pairs are kept); ``bench/readme_figures.py`` puts the table into
 ``docs/results.md``.
 
-    .venv/bin/python bench/robots_cases.py [--robots baxter panda] [--cases hook wedge]
-                                           [--out FILE] [--keep DIR]
+    .venv/bin/python bench/robots_cases.py [--robots NAME ...] [--cases CASE ...]
+                                           [--out FILE] [--keep DIR] [--steps-only]
 """
 
 from __future__ import annotations
@@ -31,7 +31,6 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 RESULTS = HERE / "results" / "robots_cases.json"
 CREATIVE = Path(sys.executable).parent / "creative"
-CASES = ("hook", "wedge", "rake", "paddle_tube")
 
 
 def record(folder: Path, wall_s: float) -> dict:
@@ -79,12 +78,17 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--robots", nargs="+", default=["baxter", "panda"])
-    ap.add_argument("--cases", nargs="+", default=list(CASES))
+    ap.add_argument("--cases", nargs="+", default=None,
+                    help="case ids (default: every case that names a robot)")
     ap.add_argument("--out", type=Path, default=RESULTS, help="the JSON file to write")
     ap.add_argument("--keep", type=Path, help="keep the run folders under DIR")
     ap.add_argument("--steps-only", action="store_true",
                     help="measure the robots' step costs again, running no case")
     args = ap.parse_args()
+    if args.cases is None:
+        from creative_py.case import load_cases
+
+        args.cases = sorted(c for c, m in load_cases().items() if m.robot)
     old = json.loads(args.out.read_text()) if args.out.exists() else {}
     runs, steps = dict(old.get("runs", {})), dict(old.get("step_us", {}))
     base = args.keep or Path(tempfile.mkdtemp(prefix="robots-cases-"))
