@@ -183,3 +183,19 @@ def test_a_world_places_the_arm_it_runs(monkeypatch):
     panda = load_world(get_case("hook")).scene.robot
     assert panda.profile.name == "panda" and panda.base[0] == (0.35, -0.75, -0.2)
     assert panda.start == baxter.start  # the start poses are the world's own
+
+
+@pytest.mark.parametrize("key", ["robot", "robot_profile"])
+def test_a_resume_keeps_the_robot_run_json_recorded(tmp_path, key):
+    """run.json names the robot (``robot``; ``robot_profile`` before --robot existed),
+    and the options a resume reads back carry it."""
+    import json
+
+    from creative_py.learning.options import read_run_json, run_json_check
+
+    meta = {"case": "hook", "options": {"seed": 0, key: "panda"}, "world": None,
+            "drawn_world": None}
+    meta["check"] = run_json_check(meta)
+    (tmp_path / "run.json").write_text(json.dumps(meta))
+    case, options, _, _ = read_run_json(tmp_path)
+    assert (case, options.robot) == ("hook", "panda")
