@@ -199,3 +199,21 @@ def test_a_resume_keeps_the_robot_run_json_recorded(tmp_path, key):
     (tmp_path / "run.json").write_text(json.dumps(meta))
     case, options, _, _ = read_run_json(tmp_path)
     assert (case, options.robot) == ("hook", "panda")
+
+
+@pytest.mark.sim
+@pytest.mark.parametrize("axis, direction", [("+z", (0, 0, 1)), ("+x", (1, 0, 0)),
+                                             ("-y", (0, -1, 0))])
+def test_the_approach_axis_becomes_the_tool_frames_z(axis, direction):
+    """The attitudes turn the tool frame's +z: the profile's approach axis of the link."""
+    import dataclasses
+
+    import numpy as np
+    import pybullet as pb
+
+    from creative_py.backends.pybullet.arm import tool_frame
+
+    p = dataclasses.replace(load_profile("panda"), approach_axis=axis)
+    frame = tool_frame(p) or ((0, 0, 0), (0, 0, 0, 1))
+    z = np.array(pb.getMatrixFromQuaternion(frame[1])).reshape(3, 3)[:, 2]
+    assert z == pytest.approx(direction, abs=1e-9)

@@ -84,13 +84,14 @@ _APPROACH: dict[str, tuple[float, float, float]] = {
 
 def tool_frame(profile: RobotProfile) -> Pose | None:
     """Return the tool frame in the end-effector link's frame (+z out of the gripper),
-    or None where it is the link's own frame."""
-    pos, quat = pb.multiplyTransforms(profile.tool_xyz, pb.getQuaternionFromEuler(profile.tool_rpy),
-                                      (0, 0, 0),
-                                      pb.getQuaternionFromEuler(_APPROACH[profile.approach_axis]))
+    or None where it is the link's own frame (the pose is then never composed, so that
+    such an arm's numbers are exactly its link's)."""
     if profile.tool_xyz == (0.0, 0.0, 0.0) and profile.tool_rpy == (0.0, 0.0, 0.0) \
             and profile.approach_axis == "+z":
         return None
+    pos, quat = pb.multiplyTransforms(profile.tool_xyz,
+                                      pb.getQuaternionFromEuler(profile.tool_rpy), (0, 0, 0),
+                                      pb.getQuaternionFromEuler(_APPROACH[profile.approach_axis]))
     return tuple(pos), tuple(quat)
 
 
