@@ -771,6 +771,31 @@ def robots_cases() -> str:
     return "\n".join(rows)
 
 
+@block("robots-worlds")
+def robots_worlds() -> str:
+    """Cases over drawn worlds on each robot (robots_worlds.json): tool-use trials and
+    the learned models' evaluation per case and robot, and how many worlds agree."""
+    d = result("robots_worlds")
+    lines = [f"`{d['command']}`:", ""]
+    for key, s in d["summary"].items():
+        lines.append(f"- {key}: {s['worlds']} worlds ({s['crashed']} crashed), tool-use "
+                     f"trials median {med(s['use_trials_median'])} "
+                     f"[{s['use_trials_min']}-{s['use_trials_max']}], {s['converged']} "
+                     f"converged; evaluation {s['eval_successes']} of {s['eval_trials']} "
+                     "trials succeeded.")
+    for case in sorted({r["case"] for r in d["rows"]}):
+        by: dict[int, dict[str, Any]] = {}
+        for r in d["rows"]:
+            if r["case"] == case:
+                by.setdefault(r["world_seed"], {})[r["robot"]] = r
+        robots = {r["robot"] for r in d["rows"] if r["case"] == case}
+        same = [w for w, rs in sorted(by.items()) if len(rs) == len(robots)
+                and len({(r["use_trials"], r["eval_successes"]) for r in rs.values()}) == 1]
+        lines.append(f"- {case}: worlds with the same tool-use trials and evaluation on "
+                     f"every robot: {len(same)} of {len(by)}.")
+    return "\n".join(lines)
+
+
 # --- the worlds' outcome tables (sim_hook.json, sim_wedge.json, sim_rake.json) --------
 
 @block("hook-world-table")
