@@ -299,19 +299,15 @@ def _read_robot(rf: Fields, profile: Any) -> tuple[RobotSpec, dict[str, Any]]:
 
     known = set(profile_names())
     placed = [k for k, v in rf.data.items() if isinstance(v, dict) and k != "start"]
-    own: tuple[RobotSpec, dict[str, Any]] | None = None
     for name in placed:
         if name not in known:
             raise rf.error(name, f"names no robot profile of robots/ "
                            f"({', '.join(sorted(known))}) and no field of [robot]")
-        sub = rf.table(name)
-        got = _read_robot_fields(sub, rf, placement=True)
+    own = _read_robot_fields(rf, None, placement=False)  # [robot]'s own errors first
+    for name in placed:
+        got = _read_robot_fields(rf.table(name), rf, placement=True)
         if name == profile.name:
             own = got
-    if own is None:
-        own = _read_robot_fields(rf, None, placement=False)
-    else:
-        _read_robot_fields(rf, None, placement=False)
     spec, values = own
     return replace(spec, profile=profile), values
 
