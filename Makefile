@@ -20,6 +20,8 @@ CREATE ?= --demonstrate-creation
 # options and profile from DIR/run.json; otherwise give its CASE=).
 BACKEND ?=
 ROS_DOMAIN ?= 42
+# make run ROBOT=panda: the case on another arm (a profile of robots/, docs/robots.md;
+# default: the case's robot).
 ROBOT ?=
 PROFILE ?= $(ROBOT)
 RESUME ?=
@@ -190,7 +192,7 @@ test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs includ
 mutate-prolog: $(STAMP)  ## Run the hand-written mutants of the Prolog core; score in bench/results/prolog_mutants.json.
 	$(PY) tests/prolog/mutants/mutants.py
 
-run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; BACKEND=ros [PROFILE=<name>]: over ROS 2; RESUME=DIR: go on with a run).
+run: $(STAMP) $(if $(filter ros,$(BACKEND)),$(ROS_STAMP))  ## Any case end to end (CASE=<id>, see make cases; ROBOT=<profile>: another arm; BACKEND=ros: over ROS 2; RESUME=DIR: go on with a run).
 ifeq ($(BACKEND),ros)
 	@# The stand-in and the learner, two processes talking ROS 2 in a private network
 	@# namespace with only loopback (unshare -n where allowed, else -rn). The learner's
@@ -206,7 +208,7 @@ else ifneq ($(RESUME),)
 	$(VENV)/bin/creative run $(CASE) --resume $(RESUME)
 else
 	$(VENV)/bin/creative run $(CASE) --seed $(SEED) --out $(OUT) $(CREATE) \
-	  $(if $(BACKEND),--backend $(BACKEND))
+	  $(if $(BACKEND),--backend $(BACKEND)) $(if $(ROBOT),--robot $(ROBOT))
 endif
 
 cases: $(STAMP)  ## List the cases (every worlds/*/case.toml).

@@ -740,6 +740,65 @@ def hook_world_sweep() -> dict[str, Any]:
             "needed_redraw": w["needed_redraw"], "failed": w["failed"]}
 
 
+# --- robots x cases (robots_cases.json) -------------------------------------------------
+
+def _ok(outcomes: list[str]) -> str:
+    """``4/5`` successes of a list of outcomes."""
+    return f"{sum(o == 'success' for o in outcomes)}/{len(outcomes)}"
+
+
+@block("robots-cases")
+def robots_cases() -> str:
+    """Every pybullet case on every robot profile, seed 0 (robots_cases.json): tool-use
+    trials and their stop, the learned model's evaluation, the created tool (its trial,
+    its evaluation, its strength verdict), the run's wall time and the arm's step cost."""
+    d = result("robots_cases")
+    rows = ["| robot | case | tool-use trials | evaluation | created tool: trial, evaluation, "
+            "strength | wall time | step cost |", "|---|---|---|---|---|---|---|"]
+    for key in sorted(d["runs"], key=lambda k: (d["runs"][k].get("robot") or "", k)):
+        r = d["runs"][key]
+        robot, case = key.split("-", 1)
+        step = d["step_us"].get(robot)
+        step_cell = f"{step:.0f} us" if step else "-"
+        if "error" in r:
+            rows.append(f"| {robot} | {case} | failed: {r['error']} | | | | {step_cell} |")
+            continue
+        ev = r.get("eval") or {}
+        tools = r.get("created_tools") or []
+        made = "; ".join(f"{t['name']}: {t['trial_outcome']}, "
+                         f"{_ok(t.get('eval_outcomes') or [])}, {t.get('strength')}"
+                         for t in tools) or "none"
+        rows.append(f"| {robot} | {case} | {r['use_trials']} ({r['use_stop']}) | "
+                    f"{ev.get('successes')}/{ev.get('trials')} | {made} | "
+                    f"{r['wall_time_s']:.0f} s | {step_cell} |")
+    return "\n".join(rows)
+
+
+@block("robots-worlds")
+def robots_worlds() -> str:
+    """Cases over drawn worlds on each robot (robots_worlds.json): tool-use trials and
+    the learned models' evaluation per case and robot, and how many worlds agree."""
+    d = result("robots_worlds")
+    lines = [f"`{d['command']}`:", ""]
+    for key, s in d["summary"].items():
+        lines.append(f"- {key}: {s['worlds']} worlds ({s['crashed']} crashed), tool-use "
+                     f"trials median {med(s['use_trials_median'])} "
+                     f"[{s['use_trials_min']}-{s['use_trials_max']}], {s['converged']} "
+                     f"converged; evaluation {s['eval_successes']} of {s['eval_trials']} "
+                     "trials succeeded.")
+    for case in sorted({r["case"] for r in d["rows"]}):
+        by: dict[int, dict[str, Any]] = {}
+        for r in d["rows"]:
+            if r["case"] == case:
+                by.setdefault(r["world_seed"], {})[r["robot"]] = r
+        robots = {r["robot"] for r in d["rows"] if r["case"] == case}
+        same = [w for w, rs in sorted(by.items()) if len(rs) == len(robots)
+                and len({(r["use_trials"], r["eval_successes"]) for r in rs.values()}) == 1]
+        lines.append(f"- {case}: worlds with the same tool-use trials and evaluation on "
+                     f"every robot: {len(same)} of {len(by)}.")
+    return "\n".join(lines)
+
+
 # --- the worlds' outcome tables (sim_hook.json, sim_wedge.json, sim_rake.json) --------
 
 @block("hook-world-table")

@@ -1,7 +1,7 @@
 """Benchmark what a trial costs with the light robot against the heavy one, in one run.
 
 For each case (default: hook and wedge, the case ids of ``worlds/*/case.toml``) runs
-the same trials once per robot mode of :data:`creative_py.backends.pybullet.baxter.ROBOT_MODES`:
+the same trials once per robot mode of :data:`creative_py.backends.pybullet.arm.ROBOT_MODES`:
 ``heavy`` (the robot of before: every joint simulated, a kinematics client with the
 full model and a second URDF load per episode, the start posture's via solution
 searched per tool), ``exact`` (the full physics model, the rest light: results bit for

@@ -10,6 +10,8 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
 * ``backend`` (optional, default ``"pybullet"``): the simulator backend that builds
   and runs the case's world, a name of :data:`BACKENDS`
   (:func:`creative_py.simulator.backend_for`);
+* ``robot`` (optional): the case's default robot, a profile of ``robots/``
+  (:mod:`creative_py.robots`; ``--robot NAME`` runs another);
 * ``[roles]``: which ``objects.toml`` tables are the candidate tools, the target and
   the context object; ``goal``: the task's goal literals;
 * ``[[skill]]``: the innate skills in plan order, each bound to a simulator primitive,
@@ -44,9 +46,10 @@ import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import Any, Optional
 
 from creative_py.backends import BACKENDS, DEFAULT_BACKEND
+from creative_py.robots import profile_names
 from creative_py.world_files import WORLDS_ROOT, Fields, WorldFileError, load_toml
 
 MANIFEST = "case.toml"
@@ -155,6 +158,9 @@ class CaseManifest:
     the ontology's range (a 0.24 m "short" handle already reaches the cube)."""
     backend: str = DEFAULT_BACKEND
     """The simulator backend of the case's world (a name of :data:`BACKENDS`)."""
+    robot: Optional[str] = None
+    """The case's default robot: a profile of ``robots/`` (``--robot`` chooses another);
+    None for a backend that brings its own arm."""
 
     @property
     def harder_variant(self) -> str:
@@ -244,6 +250,10 @@ def read_manifest(folder: Path) -> CaseManifest:
     title = f.str("title")
     ontology = f.str("ontology")
     backend = f.str("backend", DEFAULT_BACKEND, choices=tuple(sorted(BACKENDS)))
+    robot = f.str("robot") if f.has("robot") else None
+    if robot is not None and robot not in profile_names():
+        raise f.error("robot", f"no robot profile {robot!r} in robots/; profiles: "
+                      f"{', '.join(profile_names())}")
     budget = f.int("trial_budget", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
     paper_trials = (f.int("paper_trials", minimum=TRIAL_BUDGET[0], maximum=TRIAL_BUDGET[1])
                     if f.has("paper_trials") else None)
@@ -263,7 +273,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), skills, pose_term, params,
                             variants, demo, jitters, paper_trials, bounds, value_bounds,
-                            backend)
+                            backend, robot)
     try:
         manifest.check_pose(demo.pose, "demonstration.pose")
     except ValueError as exc:

@@ -218,30 +218,65 @@ def _need_display(manifest=None) -> None:
         _fail(str(exc))
 
 
-def _backend_override(backend: Optional[str], robot_profile: Optional[str]) -> None:
+def _backend_override(backend: Optional[str], robot: Optional[str]) -> None:
     """Check ``--backend`` (a registered backend whose packages are installed) and
-    ``--robot-profile`` (only with ``--backend ros``), or fail in one line; set the
-    profile for the ros backend (its environment variable)."""
+    ``--robot`` (a robot profile that loads), or fail in one line; set the profile for
+    the backends (their environment variable)."""
+    from creative_py.robots import ROBOT_ENV, load_profile
     from creative_py.simulator.loader import BackendError, backend as load_backend
+    from creative_py.world_files import WorldFileError
 
     if backend is not None:
         try:
             load_backend(backend)
         except BackendError as exc:
             _fail(f"--backend {backend}: {exc}")
-    if robot_profile is not None:
-        if backend != "ros":
-            _fail("--robot-profile: only with --backend ros (the profile of the arm "
-                  "over ROS 2)")
-        if not robot_profile.strip():
-            _fail("--robot-profile must not be empty")
-        os.environ["CREATIVE_ROBOT_PROFILE"] = robot_profile
+    if robot is not None:
+        if not robot.strip():
+            _fail("--robot must not be empty")
+        try:
+            load_profile(robot)
+        except WorldFileError as exc:
+            _fail(f"--robot {robot}: {exc}")
+        os.environ[ROBOT_ENV] = robot
 
 
 _BACKEND_HELP = ("Run on this simulator backend instead of the case manifest's (ros: the "
                  "arm over ROS 2, docs/real-robot.md).")
-_PROFILE_HELP = ("With --backend ros: the robot profile, a name under robots/ or a .toml "
-                 "path (default baxter).")
+_PROFILE_HELP = ("The robot: a profile under robots/ (creative robots lists them) or a "
+                 ".toml path; default: the case's robot. --robot-profile is a synonym.")
+
+
+@app.command()
+def robots(
+    names: Optional[list[str]] = typer.Argument(None, help="Profiles to check: names under "
+                                                "robots/ or .toml paths (default: every "
+                                                "shipped profile)."),
+) -> None:
+    """List the robot profiles, each with a one-line check: the URDF loads, the joints
+    and links are found, the home posture is reachable (docs/robots.md).
+
+    Exit 2 if a profile fails its check (each failure is one line naming the file and
+    the field)."""
+    from creative_py.case import DEFAULT_BACKEND
+    from creative_py.robots import profile_names
+    from creative_py.simulator.loader import backend as load_backend
+    from creative_py.world_files import WorldFileError
+
+    physics = load_backend(DEFAULT_BACKEND)
+    specs = names or profile_names()
+    width = max(len(str(s)) for s in specs)
+    failed = 0
+    for spec in specs:
+        try:
+            with _stdout_to_stderr():
+                line = physics.check_profile(spec)
+        except (WorldFileError, FileNotFoundError) as exc:
+            failed += 1
+            line = f"FAILED: {exc}"
+        typer.echo(f"{str(spec):<{width}} {line}")
+    if failed:
+        raise typer.Exit(2)
 
 
 @app.command()
@@ -310,22 +345,22 @@ def trial(
     list_: bool = typer.Option(False, "--list", help="Print objects, locations, variants "
                                "and the default pose as JSON, and exit."),
     backend: Optional[str] = typer.Option(None, "--backend", help=_BACKEND_HELP),
-    robot_profile: Optional[str] = typer.Option(None, "--robot-profile", help=_PROFILE_HELP),
+    robot: Optional[str] = typer.Option(None, "--robot", "--robot-profile", help=_PROFILE_HELP),
 ) -> None:
     """Run one physical trial and report its outcome (success, failure, blocked,
     unreachable or invalid)."""
     variant = _name("--variant", variant)
     save_images, world = _path("--save-images", save_images, 64), _path("--world", world)
-    _backend_override(backend, robot_profile)
+    _backend_override(backend, robot)
     with _one_line_errors(), _stdout_to_stderr():
         lines = _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
-                       world, list_, backend)
+                       world, list_, backend, robot)
     for line in lines:
         typer.echo(line)
 
 
 def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui, world,
-           list_, backend=None) -> list[str]:
+           list_, backend=None, robot=None) -> list[str]:
     out: list[str] = []
     from creative_py.bridge import Engine
     from creative_py.learning.poses import pose_resolver
@@ -339,6 +374,15 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
         from dataclasses import replace
 
         m = replace(m, backend=backend)
+    from creative_py.robots import ROBOT_ENV
+
+    if robot is not None and m.robot is None:
+        _fail(f"--robot {robot}: the case {case} runs in the {m.backend!r} backend, which "
+              "brings its own arm")
+    if robot or m.robot:
+        os.environ[ROBOT_ENV] = robot or m.robot  # the backend builds this arm
+    else:
+        os.environ.pop(ROBOT_ENV, None)
     _check_counts(("--seed", seed, 0, SEED_MAX))
     if save_images is not None and save_images.exists() and not save_images.is_dir():
         _fail(f"--save-images {save_images}: not a folder")
@@ -416,6 +460,7 @@ def sweep(
     prior: Optional[str] = typer.Option(None, "--prior", help="A prior for every run (as "
                                         "creative run --prior); {world} and {seed} in it "
                                         "stand for each run's world seed and seed."),
+    robot: Optional[str] = typer.Option(None, "--robot", help=_PROFILE_HELP),
 ) -> None:
     """Run every combination of cases, strategies, seeds and world seeds on Ray and
     write sweep.csv and sweep.png.
@@ -464,8 +509,9 @@ def sweep(
                 _fail(f"--prior {given}: "
                       + ("the run folder has no model.pl" if given.is_dir()
                          else "no such run folder or model file"))
+    _backend_override(None, robot)
     opts = SweepOptions(phase=phase, max_trials=max_trials, eval_trials=eval_trials,
-                        video=video, prior=prior)
+                        video=video, prior=prior, robot=robot)
     try:
         with _one_line_errors():
             result = run_sweep(runs, out, opts, address=address, num_cpus=num_cpus,
@@ -523,7 +569,7 @@ def run(
                                         "run folder or model.pl) where the ontology maps "
                                         "its literals; test only the rest."),
     backend: Optional[str] = typer.Option(None, "--backend", help=_BACKEND_HELP),
-    robot_profile: Optional[str] = typer.Option(None, "--robot-profile", help=_PROFILE_HELP),
+    robot: Optional[str] = typer.Option(None, "--robot", "--robot-profile", help=_PROFILE_HELP),
 ) -> None:
     """Run a case end to end and write its run folder (trials, model, PDDL, tools, plot,
     video clips)."""
@@ -563,7 +609,7 @@ def run(
         typer.echo(str(folder.path))
         return
     _manifest(case, world)
-    _backend_override(backend, robot_profile)
+    _backend_override(backend, robot)
     _check_counts(("--seed", seed, 0, SEED_MAX), ("--max-trials", max_trials, 1, TRIALS_MAX),
                   ("--consecutive", consecutive, 1, TRIALS_MAX),
                   ("--eval-trials", eval_trials, 0, EVAL_TRIALS_MAX),
@@ -576,7 +622,7 @@ def run(
                           gui=gui, strategy=strategy, world_seed=world_seed,
                           catalogue_first=catalogue_first,
                           demonstrate_creation=demonstrate_creation, prior=prior,
-                          backend=backend, robot_profile=robot_profile)
+                          backend=backend, robot=robot)
     except UnknownStrategy as exc:
         _fail(f"--strategy: {exc}")
     except ValueError as exc:

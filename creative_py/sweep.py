@@ -88,6 +88,8 @@ class SweepOptions:
     eval_trials: int = 4
     create_eval_trials: int = 5
     video: str = "none"
+    robot: Optional[str] = None
+    """``--robot`` of every run (a robot profile); None: each case's robot."""
     prior: Optional[str] = None
     """``--prior`` of every run (transfer): a run folder or ``model.pl``, in which
     ``{world}`` and ``{seed}`` stand for the run's world seed and seed (each world its

@@ -1,7 +1,7 @@
 """The simulator backends: each subpackage is one physics behind the simulator boundary
 (:mod:`creative_py.simulator`), the only home of its simulator's libraries.
 
-``pybullet``   the reference: Baxter and a case's scene in pybullet
+``pybullet``   the reference: a robot profile's arm and a case's scene in pybullet
 ``maniskill``  ManiSkill3 on SAPIEN (optional: ``make setup-maniskill``)
 ``ros``        an arm over ROS 2, the pybullet stand-in or a lab's (optional:
                ``make setup-ros``; ``creative run CASE --backend ros``)

@@ -72,10 +72,10 @@ class RunOptions:
         A simulator backend (:data:`creative_py.backends.BACKENDS`) instead of the one
         the case's manifest names (``--backend ros``: the arm over ROS 2); None: the
         manifest's.
-    robot_profile : str or None
-        The robot profile of the ``ros`` backend (a name under ``robots/`` or a
-        ``.toml`` path; None: ``baxter``), passed to it in the environment variable
-        ``CREATIVE_ROBOT_PROFILE``.
+    robot : str or None
+        The robot profile (a name under ``robots/`` or a ``.toml`` path) the arm is
+        built from; None: the case's robot (a new run records the one it used).
+        Passed to the backend in the environment variable ``CREATIVE_ROBOT_PROFILE``.
     """
 
     seed: int = 0
@@ -92,14 +92,14 @@ class RunOptions:
     demonstrate_creation: bool = False
     prior: Optional[str] = None
     backend: Optional[str] = None
-    robot_profile: Optional[str] = None
+    robot: Optional[str] = None
 
     def recorded(self) -> dict[str, Any]:
         """The options by name as ``run.json`` and ``summary.json`` record them:
-        ``prior``, ``backend`` and ``robot_profile`` only when set (runs recorded
-        before they existed write back the same)."""
+        ``prior``, ``backend`` and ``robot`` only when set (runs recorded before they
+        existed write back the same)."""
         out = asdict(self)
-        for name in ("prior", "backend", "robot_profile"):
+        for name in ("prior", "backend", "robot"):
             if out[name] is None:
                 del out[name]
         return out
@@ -140,7 +140,7 @@ class RunOptions:
         if self.prior is not None and (not isinstance(self.prior, str) or not self.prior):
             raise ValueError(f"option prior must be a path (a run folder or model.pl), "
                              f"got {self.prior!r}")
-        for name in ("backend", "robot_profile"):
+        for name in ("backend", "robot"):
             value = getattr(self, name)
             if value is not None and (not isinstance(value, str) or not value):
                 raise ValueError(f"option {name} must be a name, got {value!r}")
@@ -206,6 +206,8 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     if not isinstance(opts, dict):
         raise ValueError(f"{meta_path}: field 'options' must be an object, got "
                          f"{type(opts).__name__}")
+    if "robot_profile" in opts and "robot" not in opts:  # recorded before --robot
+        opts = {("robot" if k == "robot_profile" else k): v for k, v in opts.items()}
     names = {f.name for f in fields(RunOptions)}
     unknown = sorted(set(opts) - names)
     if unknown:

@@ -34,6 +34,7 @@ from creative_py.records.folder import RunFolder, read_resume, resume_command, r
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
+from creative_py.robots import ROBOT_ENV, load_profile
 from creative_py.simulator import BackendLost, World, backend_for
 from creative_py.simulator.randomise import apply_drawn
 
@@ -111,6 +112,8 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
     t_start = time.perf_counter()
     engine, world, drawn = _checked_world(case, options, world_dir, drawn,
                                           resume[0].path / "run.json" if resume else None)
+    if options.robot is None and world.manifest.robot and resume is None:
+        options = replace(options, robot=world.manifest.robot)  # run.json names the arm
     if options.prior:
         load_prior(engine, case, options.prior)  # a bad --prior fails before the folder
     run, replay, lines, before, resumed = _open_folder(out, case, options, world_dir,
@@ -304,8 +307,15 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
                          f"not {case!r}")
     if options.backend is not None and options.backend != manifest.backend:
         manifest = replace(manifest, backend=options.backend)  # --backend: the case unedited
-    if options.robot_profile is not None:
-        os.environ["CREATIVE_ROBOT_PROFILE"] = options.robot_profile  # the ros backend's
+    robot = options.robot or manifest.robot
+    if options.robot is not None and manifest.robot is None:
+        raise ValueError(f"--robot {options.robot}: the case {case} runs in the "
+                         f"{manifest.backend!r} backend, which brings its own arm")
+    if robot:
+        load_profile(robot)  # a bad profile: one line naming its file and field
+        os.environ[ROBOT_ENV] = robot  # the backend builds this arm
+    else:
+        os.environ.pop(ROBOT_ENV, None)
     physics = backend_for(manifest)
     world = physics.load_world(manifest)
     engine = Engine.instance()

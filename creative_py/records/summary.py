@@ -583,11 +583,15 @@ class RunSummary(Part):
     @property
     def backend(self) -> Optional[str]:
         """The backend the run was driven through when its options chose one other than
-        the case's (``--backend ros``, with its robot profile when one was named), else
-        None."""
-        name = self.options.get("backend")
-        profile = self.options.get("robot_profile")
-        return f"{name} (robot profile {profile})" if name and profile else name
+        the case's (``--backend ros``), else None."""
+        return self.options.get("backend")
+
+    @property
+    def robot(self) -> Optional[str]:
+        """The robot profile the run's arm was built from (``--robot``, else the case's,
+        as ``run.json`` recorded it); None for a run recorded before robots were named
+        or on a backend with its own arm."""
+        return self.options.get("robot") or self.options.get("robot_profile")
 
     @property
     def budget(self) -> Any:

@@ -79,7 +79,8 @@ def headline(run: RunContents) -> Headline:
     first = [f"case {s.case}" if s.case is not None else "",
              f"strategy {strategy}" if strategy else "",
              f"seed {s.seed}" if s.seed is not None else "",
-             f"backend {s.backend}" if s.backend else ""]
+             f"backend {s.backend}" if s.backend else "",
+             f"robot {s.robot}" if s.robot else ""]
     if any(first):
         out.lines.append(", ".join(x for x in first if x).capitalize() + ".")
     if s.demonstration is not None and s.demonstration.tool:

@@ -140,7 +140,8 @@ def render_html(run: RunContents) -> str:
     subtitle = " · ".join(escape(x) for x in (
         f"case {s.case}" if s.case else "", f"seed {s.seed}" if s.seed is not None else "",
         f"phase {s.phase}" if s.phase is not None else "",
-        f"backend {s.backend}" if s.backend else "") if x)
+        f"backend {s.backend}" if s.backend else "",
+        f"robot {s.robot}" if s.robot else "") if x)
     warnings = ""
     state = state_text(run)
     if state:

@@ -206,7 +206,7 @@ def _tree_copy(tmp_path) -> Path:
 
     root = Path(__file__).resolve().parents[2]
     copy = tmp_path / "tree"
-    for folder in ("creative_py", "prolog", "ontology", "worlds"):
+    for folder in ("creative_py", "prolog", "ontology", "worlds", "robots"):
         shutil.copytree(root / folder, copy / folder,
                         ignore=shutil.ignore_patterns("__pycache__"))
     return copy

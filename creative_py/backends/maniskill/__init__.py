@@ -1,6 +1,6 @@
 """The ManiSkill3 backend: a ManiSkill tabletop task with a tool (the one a world's
 ``tasks.toml`` names: ``PullCubeTool-v1``, ``PokeCube-v1``) on SAPIEN's CPU backend, with
-ManiSkill's Panda, table and target, the case's tools built with ManiSkill's actor
+ManiSkill's own arm, table and target, the case's tools built with ManiSkill's actor
 builder in place of the task's own, and ManiSkill's ``evaluate()["success"]`` as the
 only goal verdict.
 

@@ -4,7 +4,7 @@ the verdict.
 A :class:`Recorder` rides along an episode (``open_episode(..., record=Recorder(camera))``).
 While the trial runs it only *reads* the physics: every ``1 / fps`` seconds of simulated
 time (control steps at ManiSkill's 20 Hz) it keeps ``env.get_state_dict()`` (the poses
-and velocities of the cube, the tool and the Panda's joints, copied tensors; about
+and velocities of the cube, the tool and the arm's joints, copied tensors; about
 0.3 ms). Nothing is rendered during the trial.
 
 After the verdict, :meth:`Recorder.render` sets each kept state back with
@@ -26,7 +26,7 @@ clip.
 The ``[video]`` table of a ManiSkill world's ``tasks.toml`` places the camera::
 
     [video]
-    eye = [0.25, -1.15, 0.95]     # world frame, metres (the Panda's base at x -0.615)
+    eye = [0.25, -1.15, 0.95]     # world frame, metres (the task's arm base at x -0.615)
     target = [-0.3, 0.0, 0.05]
     fov_deg = 55.0                # vertical field of view
     width = 320

@@ -32,7 +32,7 @@ def down_rotvec(yaw: float) -> np.ndarray:
 
 @dataclass
 class Driver:
-    """Moves the Panda's TCP in straight lines through ManiSkill's pose controller.
+    """Moves the arm's TCP in straight lines through ManiSkill's pose controller.
 
     Attributes
     ----------

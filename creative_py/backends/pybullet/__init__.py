@@ -28,7 +28,7 @@ Modules, from the data to the physics:
 ``primitives``  the skill primitives a manifest binds by name
 ``oracles``     the success oracles a world's ``tasks.toml`` configures
 ``episode``     one scene driven skill by skill (open_episode, Episode, tool_rests)
-``baxter``, ``bodies``, ``camera``, ``core``   the robot, rigid bodies, cameras, the client
+``arm``, ``bodies``, ``camera``, ``core``   the robot profile's arm, rigid bodies, cameras, the client
 """
 
 
@@ -53,6 +53,7 @@ def _import_pybullet_quietly() -> None:
 
 _import_pybullet_quietly()
 
+from creative_py.backends.pybullet.arm import check_profile
 from creative_py.backends.pybullet.core import display_reachable
 from creative_py.backends.pybullet.episode import Episode, open_episode, tool_rests
 from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
@@ -68,5 +69,5 @@ def recorder(camera: VideoSpec) -> Recorder:
 
 
 __all__ = ["Episode", "Fact", "Observation", "PoseTarget", "SKILL_STATUSES", "SkillOutcome",
-           "World", "display_reachable", "load_world", "open_episode", "recorder",
+           "World", "check_profile", "display_reachable", "load_world", "open_episode", "recorder",
            "tool_rests"]

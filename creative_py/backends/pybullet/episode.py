@@ -19,7 +19,7 @@ Every case is driven the same way, by the skill names of its manifest
 
 An episode builds the scene in a fresh :class:`~creative_py.backends.pybullet.core.Sim`: the bodies of
 ``scene.toml`` with the variant's and the location's values, the tool where its kind
-starts, Baxter at its start posture. A skill runs the primitive its manifest entry
+starts, the arm at its start posture. A skill runs the primitive its manifest entry
 binds (:mod:`creative_py.backends.pybullet.primitives`); the pose skill's world target comes from
 ``pose_target``, a :data:`PoseTarget` the caller gives (the engine's pose solution),
 applied to what the robot perceives at that moment. :meth:`Episode.verdict` is what
@@ -78,7 +78,7 @@ def open_episode(world: World, variant: str, location: int, tool: str, seed: int
         (:data:`PoseTarget`). None for an episode that puts no tool at a pose (only the
         scene's physics, perception, picking up); a pose skill then raises ValueError.
     robot : bool
-        Build Baxter (default); without it only by-hand placing and the scene's own
+        Build the world's robot (default); without it only by-hand placing and the scene's own
         physics run (for tests of the physics alone).
     record : Recorder or None
         Keep the scene's poses for a video clip (:mod:`creative_py.backends.pybullet.recorder`), from
@@ -159,7 +159,7 @@ class Episode:
 
     # ------------------------------------------------------------ scene building
     def _build(self) -> None:
-        from creative_py.backends.pybullet.baxter import Baxter, BaxterConfig
+        from creative_py.backends.pybullet.arm import Arm, ArmConfig, base_pose
 
         w = self.world
         for body in self.bodies.values():
@@ -176,16 +176,17 @@ class Episode:
         self.watch = [self.body_id(n) for n, _ in self.perceived]
         if self.with_robot:
             rs = w.scene.robot
-            self.robot = Baxter(self.sim, BaxterConfig(
+            base = None if rs.base is None else base_pose(rs.profile, *rs.base)
+            self.robot = Arm(self.sim, rs.profile, ArmConfig(
                 visuals=rs.visuals, speed=rs.speed, turn_speed=rs.turn_speed,
-                steps_per_waypoint=rs.steps_per_waypoint))
+                steps_per_waypoint=rs.steps_per_waypoint), base=base)
             self.robot.reset_posture(self._start_posture())
         self.run(w.scene.settle_time)
         # Where the tracked objects start (an oracle measures how far they moved).
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
 
     def _pose_of(self, table: dict[str, Any]):
-        from creative_py.backends.pybullet.baxter import GRIPPER_ATTITUDES
+        from creative_py.backends.pybullet.arm import GRIPPER_ATTITUDES
 
         pos = self.ns.evaluate(table["position"], "robot.start.position")
         angle = self.ns.evaluate(table["angle"], "robot.start.angle")

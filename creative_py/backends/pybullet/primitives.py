@@ -216,7 +216,7 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
 
 def _gripper_path(ep: Any, steps, pull_dx: float) -> list[Pose]:
     """Return the gripper poses of ``steps`` then the pull, rolls split as in the move."""
-    from creative_py.backends.pybullet.baxter import gripper_forward
+    from creative_py.backends.pybullet.arm import gripper_forward
 
     kind = ep.kind
     pos, quat = ep.robot.gripper_pose()

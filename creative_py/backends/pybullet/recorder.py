@@ -49,7 +49,7 @@ PROXY_RGBA = (0.55, 0.58, 0.62, 1.0)
 MIN_PROXY_SIZE = 0.005
 
 MESHES = False
-"""Whether collision meshes (Baxter's torso and pedestal) join the stand-in: off, as
+"""Whether collision meshes (a torso and pedestal, say) join the stand-in: off, as
 they render speckled and more than double the time of a frame."""
 """Collision shapes smaller than this (m) are left out of the stand-in."""
 

@@ -28,7 +28,7 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.mesh.spec import Box
-from creative_py.backends.pybullet.baxter import gripper_down, gripper_forward, quat_angle
+from creative_py.backends.pybullet.arm import gripper_down, gripper_forward, quat_angle
 from creative_py.backends.pybullet.bodies import Surface, frame_pose, load_tool_urdf, spawn_parts, spawn_spec
 from creative_py.backends.pybullet.core import Pose
 from creative_py.simulator.types import Fact, SkillOutcome
@@ -129,7 +129,7 @@ class ToolKind:
         """Move the gripper to ``pos`` (m) holding the tool at ``attitude`` (rad).
 
         ``guard`` is run after every guarded step of the motion; an outcome it returns
-        ends the move (:meth:`creative_py.backends.pybullet.baxter.Baxter.move_to`).
+        ends the move (:meth:`creative_py.backends.pybullet.arm.Arm.move_to`).
         """
         raise NotImplementedError
 

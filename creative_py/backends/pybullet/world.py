@@ -74,7 +74,8 @@ class CatalogueItem:
 
 @dataclass(frozen=True)
 class RobotSpec:
-    """Baxter's settings and start pose (raw numbers or expressions; see module doc)."""
+    """The arm's settings, start pose and placement in this scene (raw numbers or
+    expressions; see module doc), for the world's robot."""
 
     visuals: bool
     speed: float
@@ -83,6 +84,10 @@ class RobotSpec:
     start: dict[str, Any]
     via: dict[str, Any] | None
     keep: int
+    profile: Any = None
+    """The robot profile (:class:`creative_py.robots.RobotProfile`)."""
+    base: tuple | None = None
+    """``(position, rpy)`` of the arm's base in this scene; None: the profile's."""
 
 
 @dataclass(frozen=True)
@@ -277,19 +282,68 @@ FRICTION = (0.0, 10.0)
 """The bounds of a friction coefficient (``friction`` of objects.toml)."""
 
 
-def _read_robot(rf: Fields) -> RobotSpec:
-    """Read ``[robot]``: ``speed`` (m/s) within :data:`SPEED_M_S`, ``turn_speed`` (rad/s)
-    within :data:`TURN_SPEED_RAD_S`, ``steps_per_waypoint`` within
-    :data:`STEPS_PER_WAYPOINT`, ``[robot.start] keep`` within :data:`KEEP`; the start's
-    and the via pose's numbers are resolved by :func:`check_values` (each within
-    +-:data:`EXTENT_M`)."""
-    visuals = rf.bool("visuals", False)
-    speed = rf.float("speed", 0.10, minimum=SPEED_M_S[0], maximum=SPEED_M_S[1])
-    turn = rf.float("turn_speed", 1.0, minimum=TURN_SPEED_RAD_S[0],
+def _read_robot(rf: Fields, profile: Any) -> tuple[RobotSpec, dict[str, Any]]:
+    """Read ``[robot]`` for the robot ``profile``: ``speed`` (m/s) within
+    :data:`SPEED_M_S`, ``turn_speed`` (rad/s) within :data:`TURN_SPEED_RAD_S`,
+    ``steps_per_waypoint`` within :data:`STEPS_PER_WAYPOINT`, ``[robot.start] keep``
+    within :data:`KEEP`; the start's and the via pose's numbers are resolved by
+    :func:`check_values` (each within +-:data:`EXTENT_M`).
+
+    A sub-table named after a robot profile (``[robot.NAME]``) places the scene for that
+    arm: its fields replace ``[robot]``'s (``start`` whole), ``base`` (``position`` m,
+    ``rpy`` rad) puts the arm's base there and ``values`` replaces scene values. Every
+    such table is read (a typo in one is an error whichever arm runs); the one of
+    ``profile`` is applied. Returns the spec and the scene values it replaces.
+    """
+    from creative_py.robots import profile_names
+
+    known = set(profile_names())
+    placed = [k for k, v in rf.data.items() if isinstance(v, dict) and k != "start"]
+    for name in placed:
+        if name not in known:
+            raise rf.error(name, f"names no robot profile of robots/ "
+                           f"({', '.join(sorted(known))}) and no field of [robot]")
+    own = _read_robot_fields(rf, None, placement=False)  # [robot]'s own errors first
+    for name in placed:
+        got = _read_robot_fields(rf.table(name), rf, placement=True)
+        if name == profile.name:
+            own = got
+    spec, values = own
+    return replace(spec, profile=profile), values
+
+
+def _read_robot_fields(rf: Fields, parent: Fields | None,
+                       placement: bool) -> tuple[RobotSpec, dict[str, Any]]:
+    """Read one ``[robot]`` table (or a ``[robot.NAME]`` placement over ``parent``)."""
+    def pick(name: str, default: Any) -> Any:
+        if parent is not None and not rf.has(name):
+            return parent.data.get(name, default)
+        return default
+
+    visuals = rf.bool("visuals", pick("visuals", False))
+    speed = rf.float("speed", pick("speed", 0.10), minimum=SPEED_M_S[0], maximum=SPEED_M_S[1])
+    turn = rf.float("turn_speed", pick("turn_speed", 1.0), minimum=TURN_SPEED_RAD_S[0],
                     maximum=TURN_SPEED_RAD_S[1])
-    spw = rf.int("steps_per_waypoint", 4, minimum=STEPS_PER_WAYPOINT[0],
-                 maximum=STEPS_PER_WAYPOINT[1])
-    sf = rf.table("start")
+    spw = rf.int("steps_per_waypoint", pick("steps_per_waypoint", 4),
+                 minimum=STEPS_PER_WAYPOINT[0], maximum=STEPS_PER_WAYPOINT[1])
+    base = None
+    values: dict[str, Any] = {}
+    if placement:
+        if rf.has("base"):
+            bf = rf.table("base")
+            base = (bf.vec("position", 3, minimum=-EXTENT_M, maximum=EXTENT_M),
+                    bf.vec("rpy", 3, (0.0, 0.0, 0.0), minimum=-EXTENT_M, maximum=EXTENT_M))
+            bf.done()
+        if rf.has("values"):
+            vf = rf.table("values")
+            values = dict(vf.data)
+            for k in values:
+                vf.raw(k)
+            vf.done()
+    else:
+        for k in [k for k, v in rf.data.items() if isinstance(v, dict) and k != "start"]:
+            rf.raw(k)  # the placements, read by the caller
+    sf = rf.table("start") if (rf.has("start") or parent is None) else parent.table("start")
     start = {"position": sf.raw("position"),
              "gripper": sf.str("gripper", choices=("forward", "down")),
              "angle": sf.raw("angle", 0.0)}
@@ -303,10 +357,10 @@ def _read_robot(rf: Fields) -> RobotSpec:
         vf.done()
     sf.done()
     rf.done()
-    return RobotSpec(visuals, speed, turn, spw, start, via, keep)
+    return RobotSpec(visuals, speed, turn, spw, start, via, keep, base=base), values
 
 
-def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
+def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
     from creative_py.backends.pybullet.camera import cameras_from_tables
     from creative_py.backends.pybullet.recorder import VideoSpec
@@ -315,12 +369,17 @@ def _read_scene(path: Path, kinds: set[str]) -> SceneSpec:
 
     f = Fields(load_toml(path), path)
     settle = f.float("settle_time", minimum=SETTLE_TIME_S[0], maximum=SETTLE_TIME_S[1])
-    robot = _read_robot(f.table("robot"))
+    robot, placed_values = _read_robot(f.table("robot"), profile)
     vf = f.table("values", {})
     values = dict(vf.data)
     for k in values:
         vf.raw(k)
     vf.done()
+    for k in placed_values:
+        if k not in values:
+            raise WorldFileError(f"{path}: field 'robot.{profile.name}.values.{k}': names no "
+                                 f"value of [values]")
+    values.update(placed_values)
     bodies = read_bodies(f.tables("body"))
     tf = f.table("tool_start")
     tool_start: dict[str, Any] = {}
@@ -432,8 +491,23 @@ def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
     return out
 
 
+def world_robot(manifest: CaseManifest) -> Any:
+    """Return the robot profile of a run: the one the environment names
+    (:data:`creative_py.robots.ROBOT_ENV`, set by ``--robot``), else the case's."""
+    import os
+
+    from creative_py.robots import ROBOT_ENV, load_profile
+
+    name = os.environ.get(ROBOT_ENV) or manifest.robot
+    if not name:
+        raise WorldFileError(f"{manifest.folder / 'case.toml'}: field 'robot': missing (the "
+                             "pybullet backend needs the case's robot profile)")
+    return load_profile(name)
+
+
 def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
-    """Return the world of ``manifest`` read from ``world_dir`` (default: its folder).
+    """Return the world of ``manifest`` read from ``world_dir`` (default: its folder), for
+    the run's robot (:func:`world_robot`).
 
     Errors name the world file and the field (:class:`creative_py.world_files.WorldFileError`):
     a missing file or field, a wrong type, an unknown field (with a suggestion), an
@@ -450,7 +524,8 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
         af.done()
     pf.done()
     items = _read_catalogue(world_file(d, "objects.toml"), manifest.tools_table)
-    scene = _read_scene(world_file(d, "scene.toml"), {i.spec.HANDLING for i in items.values()})
+    scene = _read_scene(world_file(d, "scene.toml"), {i.spec.HANDLING for i in items.values()},
+                        world_robot(manifest))
     locations, oracle = _read_tasks(world_file(d, "tasks.toml"))
     world = World(manifest, d, {"rest": rest, "arm": arm}, scene, items, locations, oracle,
                   _read_skills(manifest))

@@ -13,7 +13,7 @@ profile (``robots/<name>.toml``, :mod:`profile`), so a lab remaps them without c
                 standard error codes (no ROS needed)
 ``limits``      the learner's bounds (joint speed, the gripper's workspace box), checked
                 before a goal is sent (no ROS needed)
-``standin``     the stand-in robot: the pybullet Baxter with a case's scene in its own
+``standin``     the stand-in robot: the pybullet arm of a profile with a case's scene in its own
                 process behind that interface (``python -m creative_py.backends.ros.standin``)
 ``client``      the learner's node: subscriptions, trajectory and gripper goals, timed
 ``motion``      the learner's side of a motion: straight gripper moves through the

@@ -1,10 +1,10 @@
 """The ``ros`` backend of the simulator boundary: a case run on an arm over ROS 2.
 
 Its functions are the :class:`creative_py.simulator.Backend` protocol. A case runs on it
-without editing the case: ``creative run hook --backend ros [--robot-profile PATH]``
+without editing the case: ``creative run hook --backend ros [--robot NAME|PATH]``
 (or ``make run CASE=hook BACKEND=ros``); the robot profile comes from the environment
-variable :data:`PROFILE_ENV` (the command line sets it; default ``baxter``, the
-stand-in's).
+variable :data:`PROFILE_ENV` (the command line sets it: ``--robot``, else the case's
+robot).
 
 * :func:`load_world`: the world files, read by the pybullet backend's reader (the
   learner knows the apparatus as its world files describe it; only the tracked
@@ -38,13 +38,14 @@ from creative_py.backends.ros.client import ArmClient, ArmUnavailable, discovery
 from creative_py.backends.ros.episode import RosEpisode, SceneRefused, unsupported_skills
 from creative_py.backends.ros.motion import Kinematics, LearnerArm
 from creative_py.backends.ros.profile import RobotProfile, load_profile
+from creative_py.robots import ROBOT_ENV
 from creative_py.world_files import WorldFileError
 
 log = logging.getLogger(__name__)
 
-PROFILE_ENV = "CREATIVE_ROBOT_PROFILE"
+PROFILE_ENV = ROBOT_ENV
 """The environment variable naming the robot profile (a name under ``robots/`` or a
-``.toml`` path); ``creative run --robot-profile`` sets it."""
+``.toml`` path); ``creative run --robot`` sets it."""
 
 WAIT_ENV = "CREATIVE_ROS_WAIT_S"
 """The environment variable of the seconds to wait for the arm at the start (20)."""
@@ -160,8 +161,13 @@ _CONNECTION: dict[str, Connection] = {}
 
 
 def profile_name() -> str:
-    """Return the robot profile the environment names (default ``baxter``)."""
-    return os.environ.get(PROFILE_ENV) or "baxter"
+    """Return the robot profile the environment names (a run sets it: ``--robot``, else
+    the case's robot)."""
+    name = os.environ.get(PROFILE_ENV)
+    if not name:
+        raise WorldFileError(f"environment variable {PROFILE_ENV}: no robot profile named "
+                             "(creative run --robot NAME, or a case's robot)")
+    return name
 
 
 def connection() -> Connection:
@@ -250,6 +256,8 @@ def load_world(manifest: Any) -> Any:
     primitive this backend does not run, a bad profile, or an absent arm."""
     from creative_py.backends.pybullet import load_world as read_world
 
+    if not os.environ.get(PROFILE_ENV) and getattr(manifest, "robot", None):
+        os.environ[PROFILE_ENV] = manifest.robot  # no --robot: the case's robot
     world = read_world(manifest)
     world = replace(world, scene=replace(world.scene, video=None))
     bad = unsupported_skills(world)

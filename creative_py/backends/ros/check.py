@@ -1,7 +1,7 @@
 """A read-only check of an arm's ROS 2 interface against a robot profile: it subscribes
 and looks for the action servers, and sends nothing (no goal, no gripper command).
 
-    python -m creative_py.backends.ros.check [--profile baxter|PATH.toml]
+    python -m creative_py.backends.ros.check --profile NAME|PATH.toml
         [--objects NAME,NAME] [--seconds S] [--timeout S]
 
 It waits at most ``--timeout`` s for the joint states and both action servers (a
@@ -74,7 +74,8 @@ def check(profile, objects: Sequence[str], seconds: float, timeout: float) -> di
 def main(argv: Optional[Sequence[str]] = None) -> int:
     """Run the check; return the exit code."""
     ap = argparse.ArgumentParser(prog=f"python -m {PROG}", description=__doc__.split("\n\n")[0])
-    ap.add_argument("--profile", default="baxter")
+    ap.add_argument("--profile", required=True, help="robot profile: a name under robots/ "
+                                                     "or a .toml path")
     ap.add_argument("--objects", default="", help="comma-separated object names")
     ap.add_argument("--seconds", type=float, default=2.0, help="how long to listen")
     ap.add_argument("--timeout", type=float, default=10.0, help="how long to wait for the arm")

@@ -48,7 +48,7 @@ import time
 import uuid
 from typing import Any, Callable, Optional, Sequence
 
-from creative_py.backends.pybullet.baxter import Unreachable, quat_angle, straight_line
+from creative_py.backends.pybullet.arm import Unreachable, quat_angle, straight_line
 from creative_py.backends.pybullet.episode import Episode as PybulletEpisode
 from creative_py.backends.ros.client import ArmUnavailable
 from creative_py.simulator.types import SkillOutcome
@@ -134,13 +134,13 @@ def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
 
 
 class RosRobot:
-    """The arm over ROS 2, shaped as the pybullet backend's Baxter is to a primitive.
+    """The arm over ROS 2, shaped as the pybullet backend's arm is to a primitive.
 
-    Kinematics on the learner's side (the twin's Baxter and its kinematics client, at
+    Kinematics on the learner's side (the twin's arm and its kinematics client, at
     the posture the joint states give); motions as trajectory goals
     (:class:`~creative_py.backends.ros.motion.LearnerArm`); the grasp as a gripper
     command. Attributes it does not define (``config``, ``model``, ``kin``,
-    ``light``, ``body``, ``urdf``) are the twin Baxter's.
+    ``light``, ``body``, ``urdf``) are the twin arm's.
     """
 
     def __init__(self, ep: "RosEpisode") -> None:
@@ -148,7 +148,7 @@ class RosRobot:
         self.conn = ep.conn
         self.arm = ep.conn.arm
         kin = ep.conn.kin
-        self._to_baxter, self._to_profile = kin._to_baxter, kin._to_profile
+        self._to_arm, self._to_profile = kin._to_arm, kin._to_profile
         self.held: Optional[int] = None
         self.grasp_constraint = None
 
@@ -157,10 +157,10 @@ class RosRobot:
 
     # ------------------------------------------------------------------ state
     def arm_q(self) -> list[float]:
-        """Return the right arm's joint positions (rad, Baxter's order) from the joint
+        """Return the arm's joint positions (rad, the profile's kinematics order) from the joint
         states (ArmUnavailable if stale)."""
         q = self.conn.client.arm_q()
-        return [q[i] for i in self._to_baxter]
+        return [q[i] for i in self._to_arm]
 
     def _profile_q(self, q: Sequence[float]) -> list[float]:
         return [float(q[i]) for i in self._to_profile]
@@ -197,7 +197,7 @@ class RosRobot:
 
     # ----------------------------------------------------------------- motion
     def _send(self, path: Sequence[Sequence[float]], duration: float) -> SkillOutcome:
-        """Send a joint path (Baxter's order), timed from where the arm is as it leaves."""
+        """Send a joint path (the kinematics order), timed from where the arm is as it leaves."""
         return self.arm.send_path([self._profile_q(q) for q in path], duration)
 
     def move_to(self, target, speed: Optional[float] = None, check: bool = True,
@@ -226,7 +226,7 @@ class RosRobot:
 
     def move_joints(self, q_goal: Sequence[float], joint_speed: float = 0.8,
                     check: bool = True, watch: Sequence[int] = ()) -> SkillOutcome:
-        """Move the arm in joint space to ``q_goal`` (rad, Baxter's order), easing in and
+        """Move the arm in joint space to ``q_goal`` (rad, the kinematics order), easing in and
         out (:meth:`LearnerArm.move_joints`), the fastest joint at most at
         ``joint_speed`` on average."""
         q0 = self.arm_q()

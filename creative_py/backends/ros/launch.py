@@ -5,8 +5,8 @@
     python -m creative_py.backends.ros.launch --resume runs/hook-20261206-101500-s0
 
 starts the stand-in (:mod:`creative_py.backends.ros.standin`) of the case with the robot
-profile (``--profile``, a name under ``robots/`` or a ``.toml`` path; default
-``baxter``) in its own process, waits for its ``standin ready`` line, runs ``creative
+profile (``--profile``, a name under ``robots/`` or a ``.toml`` path; default: the
+case's robot) in its own process, waits for its ``standin ready`` line, runs ``creative
 <args>`` (the learner, in a second process, with the same profile), then stops the
 stand-in; the exit code is the learner's. ``--resume DIR`` goes on with an interrupted
 or stopped run: the case and the profile come from the run's ``run.json`` (a
@@ -14,7 +14,7 @@ or stopped run: the case and the profile come from the run's ``run.json`` (a
 ``creative run CASE --resume DIR``. What ``make run CASE=<id> BACKEND=ros
 [PROFILE=<name>] [RESUME=DIR]`` runs, inside a private network namespace with only
 loopback (the Makefile's ``unshare``). A lab's arm needs none of this: run ``creative
-run CASE --backend ros --robot-profile mylab.toml`` where the arm's topics are.
+run CASE --backend ros --robot mylab.toml`` where the arm's topics are.
 
 The learner's hint on Ctrl-C or a lost arm says how to go on
 (:func:`creative_py.records.folder.resume_command`): this launcher tells it, in
@@ -28,7 +28,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import shlex
 import signal
 import subprocess
 import sys
@@ -43,16 +42,37 @@ class LaunchError(ValueError):
     """A bad command line or run folder (one line naming the option and the cause)."""
 
 
-def recorded_run(folder: Path) -> tuple[str, str]:
-    """Return the case and the robot profile (``baxter`` when none was given) that a run
-    folder's ``run.json`` records. Only what the stand-in needs is read here; the
-    learner's ``--resume`` checks the whole file.
+def case_robot(case: str) -> str:
+    """Return the robot the case names (its ``case.toml``'s ``robot``).
 
     Raises
     ------
     LaunchError
-        No ``run.json``, not a JSON object, or its ``case`` or ``options.robot_profile``
-        not text (naming the file).
+        The case is unknown or its manifest is malformed (naming the file).
+    """
+    from creative_py.case import get_case
+    from creative_py.world_files import WorldFileError
+
+    try:
+        robot = get_case(case).robot
+    except (WorldFileError, KeyError) as exc:
+        raise LaunchError(f"--case {case}: {exc}") from None
+    if not robot:
+        raise LaunchError(f"--case {case}: the case names no robot; give --profile")
+    return robot
+
+
+def recorded_run(folder: Path) -> tuple[str, str]:
+    """Return the case and the robot profile that a run folder's ``run.json`` records
+    (``options.robot``; ``options.robot_profile`` in runs recorded before ``--robot``;
+    else the case's robot). Only what the stand-in needs is read here; the learner's
+    ``--resume`` checks the whole file.
+
+    Raises
+    ------
+    LaunchError
+        No ``run.json``, not a JSON object, or its ``case`` or robot not text (naming
+        the file).
     """
     meta_path = folder / "run.json"
     if not meta_path.is_file():
@@ -63,10 +83,14 @@ def recorded_run(folder: Path) -> tuple[str, str]:
         raise LaunchError(f"--resume: {meta_path}: not JSON ({exc})") from None
     options = meta.get("options") if isinstance(meta, dict) else None
     case = meta.get("case") if isinstance(meta, dict) else None
-    profile = options.get("robot_profile", "baxter") if isinstance(options, dict) else None
-    if not (isinstance(case, str) and case and isinstance(profile, str) and profile):
-        raise LaunchError(f"--resume: {meta_path}: field 'case' or 'options.robot_profile' "
-                          "is missing or not text")
+    if not (isinstance(case, str) and case and isinstance(options, dict)):
+        raise LaunchError(f"--resume: {meta_path}: field 'case' or 'options' is missing "
+                          "or not of its type")
+    profile = options.get("robot", options.get("robot_profile"))
+    if profile is None:
+        profile = case_robot(case)
+    if not (isinstance(profile, str) and profile):
+        raise LaunchError(f"--resume: {meta_path}: field 'options.robot' is not text")
     return case, profile
 
 
@@ -87,7 +111,7 @@ def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
     ap.add_argument("--case", help="the case the stand-in builds (default: the "
                     "command's, or the resumed run's)")
     ap.add_argument("--profile", help="the robot profile of the stand-in and the learner "
-                    "(default: the resumed run's, else baxter)")
+                    "(default: the resumed run's, else the case's robot)")
     ap.add_argument("--resume", metavar="DIR", help="go on with this interrupted or "
                     "stopped run folder (its case and profile from its run.json)")
     ap.add_argument("--realtime", default="1", help="the stand-in's --realtime")
@@ -113,14 +137,13 @@ def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
     case = args.case or (command[1] if len(command) > 1 and command[0] == "run" else None)
     if case is None:
         raise LaunchError("--case: the case the stand-in builds is needed")
-    given = (command[command.index("--robot-profile") + 1]
-             if "--robot-profile" in command[:-1] else None)
+    given = next((command[i + 1] for i, word in enumerate(command[:-1])
+                  if word in ("--robot", "--robot-profile")), None)
     if given is not None and args.profile is not None and given != args.profile:
-        raise LaunchError(f"--profile {args.profile}: the command's --robot-profile is "
-                          f"{given!r}")
-    profile = args.profile or given or "baxter"
-    if command[:1] == ["run"] and given is None and profile != "baxter":
-        command = [*command, "--robot-profile", profile]  # run.json records it
+        raise LaunchError(f"--profile {args.profile}: the command's --robot is {given!r}")
+    profile = args.profile or given or case_robot(case)
+    if command[:1] == ["run"] and given is None:
+        command = [*command, "--robot", profile]  # run.json records it
     return args, case, profile, command
 
 
@@ -150,8 +173,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
               f"{standin.pid})", file=sys.stderr, flush=True)
         env = dict(os.environ, CREATIVE_ROBOT_PROFILE=profile)
         env.setdefault(RESUME_ENV, " ".join(
-            [PROG, *([] if profile == "baxter" else ["--profile", shlex.quote(profile)]),
-             "--resume", "{run}"]))
+            [PROG, "--resume", "{run}"]))  # the profile comes from its run.json
         learner = subprocess.Popen([sys.executable, "-m", "creative_py.cli", *command],
                                    env=env)
         while True:

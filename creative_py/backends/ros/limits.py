@@ -55,16 +55,13 @@ def check_points(profile: RobotProfile, start: Sequence[float],
 def urdf_forward(profile: RobotProfile) -> Forward:
     """Return the forward kinematics of the profile's URDF (the gripper's position).
 
-    Only ``urdf = "baxter"`` is supported yet: the pybullet backend's Baxter, in its
-    kinematics client (DIRECT, no scene).
+    The pybullet backend's arm of the profile, in its kinematics client (DIRECT, no
+    scene).
     """
-    if profile.urdf != "baxter":
-        raise NotImplementedError(f"{profile.source}: field 'urdf': only \"baxter\" has "
-                                  f"learner-side kinematics yet, got {profile.urdf!r}")
-    from creative_py.backends.pybullet.baxter import RIGHT_ARM, kinematics_model
+    from creative_py.backends.pybullet.arm import kinematics_model
 
-    model = kinematics_model()
-    index = [profile.joints.index(n) for n in RIGHT_ARM]
+    model = kinematics_model(profile)
+    index = [profile.joints.index(n) for n in profile.arm_joints]
 
     def forward(q: Sequence[float]) -> Sequence[float]:
         model.reset(model.arm, [q[i] for i in index])

@@ -5,8 +5,8 @@ kinematics on the learner's side:
 
 1. a target pose of the gripper is cut into waypoints along a straight line;
 2. each waypoint goes through IK from the robot's URDF, computed in the learner's own
-   process (for ``urdf = "baxter"``, the pybullet backend's Baxter in a DIRECT client
-   without the scene);
+   process (the pybullet backend's arm of the profile in a DIRECT client without the
+   scene);
 3. the waypoints are sent as one ``FollowJointTrajectory`` goal, timed so that no joint
    exceeds the profile's speed, after the learner's bounds (:mod:`.limits`) passed.
 
@@ -55,33 +55,31 @@ EASE_STEP = 0.05
 class Kinematics:
     """The robot's kinematics on the learner's side, from the profile's URDF (no scene).
 
-    Only ``urdf = "baxter"`` yet: a Baxter in a pybullet DIRECT client of its own.
-    Joint positions are in the profile's order.
+    The pybullet backend's arm of the profile, in a pybullet DIRECT client of its own.
+    Joint positions are in the profile's ``[arm]`` order.
     """
 
     def __init__(self, profile: RobotProfile) -> None:
-        if profile.urdf != "baxter":
-            raise NotImplementedError(f"{profile.source}: field 'urdf': only \"baxter\" has "
-                                      f"learner-side kinematics yet, got {profile.urdf!r}")
-        from creative_py.backends.pybullet.baxter import RIGHT_ARM, Baxter
+        from creative_py.backends.pybullet.arm import Arm
         from creative_py.backends.pybullet.core import Sim
         from creative_py.world_files import PhysicsSettings
 
         self.profile = profile
         self._sim = Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81)))
-        self._robot = Baxter(self._sim)
-        self._to_baxter = [profile.joints.index(n) for n in RIGHT_ARM]
-        self._to_profile = [RIGHT_ARM.index(n) for n in profile.joints]
+        self._robot = Arm(self._sim, profile)
+        arm = profile.arm_joints
+        self._to_arm = [profile.joints.index(n) for n in arm]
+        self._to_profile = [arm.index(n) for n in profile.joints]
         self.forward_position = urdf_forward(profile)
 
     def ik(self, target: Pose, seed: Sequence[float]) -> Optional[list[float]]:
         """Return joint positions putting the gripper at ``target``, from ``seed``."""
-        q = self._robot.solve_ik(target, seed=[seed[i] for i in self._to_baxter])
+        q = self._robot.solve_ik(target, seed=[seed[i] for i in self._to_arm])
         return None if q is None else [q[i] for i in self._to_profile]
 
     def forward(self, q: Sequence[float]) -> Pose:
         """Return the gripper's world pose at joint positions ``q``."""
-        self._robot.reset_posture([q[i] for i in self._to_baxter])
+        self._robot.reset_posture([q[i] for i in self._to_arm])
         return self._robot.gripper_pose()
 
     def close(self) -> None:
@@ -228,8 +226,8 @@ class LearnerArm:
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
         """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s, the
         orientation slerped (the waypoints of
-        :func:`creative_py.backends.pybullet.baxter.straight_line`, every ``step`` m)."""
-        from creative_py.backends.pybullet.baxter import Unreachable, straight_line
+        :func:`creative_py.backends.pybullet.arm.straight_line`, every ``step`` m)."""
+        from creative_py.backends.pybullet.arm import Unreachable, straight_line
 
         try:
             start = self.client.arm_q()

@@ -1,8 +1,8 @@
-"""The stand-in robot: the pybullet Baxter with a case's scene, in its own process, behind
+"""The stand-in robot: the pybullet arm of a robot profile with a case's scene, in its own process, behind
 exactly the ROS 2 interface a lab's arm offers.
 
     python -m creative_py.backends.ros.standin --case hook [--variant V] [--location N]
-        [--tool NAME] [--profile baxter|PATH.toml] [--seconds S] [--realtime F]
+        [--tool NAME] [--profile NAME|PATH.toml] [--seconds S] [--realtime F]
 
 It publishes, with the names of the robot profile (:mod:`.profile`):
 
@@ -62,12 +62,15 @@ from __future__ import annotations
 import argparse
 import json
 import math
+import os
 import signal
 import sys
 import threading
 import time
 from dataclasses import dataclass, field
 from typing import Any, Optional, Sequence
+
+from creative_py.robots import ROBOT_ENV
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -94,28 +97,27 @@ def invert(a: Pose) -> Pose:
 
 
 class SimArm:
-    """The pybullet Baxter of an open episode, seen as a lab's arm (no ROS here).
+    """The pybullet arm of an open episode, seen as a lab's arm (no ROS here).
 
     Parameters
     ----------
     episode : creative_py.backends.pybullet.Episode
         An episode opened with the robot.
     profile : RobotProfile
-        Its ``arm.joints`` must be the Baxter's right-arm joints (any order).
+        The profile the episode's arm was built from (its ``arm.joints`` in any order).
     grasp_reach : float
         How far (m) the gripper may be from where the tool's kind is held for a
         closing gripper to hold the tool.
     """
 
     def __init__(self, episode: Any, profile: RobotProfile, grasp_reach: float = 0.06) -> None:
-        from creative_py.backends.pybullet.baxter import RIGHT_ARM
-
         self.ep, self.profile, self.reach = episode, profile, grasp_reach
-        if sorted(profile.joints) != sorted(RIGHT_ARM):
-            raise WorldFileError(f"{profile.source}: field 'arm.joints': the stand-in's arm has "
-                                 f"the joints {list(RIGHT_ARM)}, got {list(profile.joints)}")
         self.robot = episode.robot
-        self.order = [RIGHT_ARM.index(n) for n in profile.joints]
+        arm = self.robot.profile.arm_joints
+        if sorted(profile.joints) != sorted(arm):
+            raise WorldFileError(f"{profile.source}: field 'arm.joints': the stand-in's arm has "
+                                 f"the joints {list(arm)}, got {list(profile.joints)}")
+        self.order = [arm.index(n) for n in profile.joints]
         m = self.robot.model
         self.lower = [float(m.arm_lower[i]) for i in self.order]
         self.upper = [float(m.arm_upper[i]) for i in self.order]
@@ -583,7 +585,7 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
 
 def _parser() -> argparse.ArgumentParser:
     ap = argparse.ArgumentParser(prog="python -m creative_py.backends.ros.standin",
-                                 description="The pybullet Baxter with a case's scene behind "
+                                 description="The pybullet arm of a robot profile with a case's scene behind "
                                              "a lab arm's ROS 2 interface.")
     ap.add_argument("--case", required=True, help="the case id (creative cases)")
     ap.add_argument("--variant", help="a variant of the case (default: the demonstration's)")
@@ -591,8 +593,8 @@ def _parser() -> argparse.ArgumentParser:
                                                  "demonstration's)")
     ap.add_argument("--tool", help="the catalogued tool in the scene (default: the "
                                    "demonstration's)")
-    ap.add_argument("--profile", default="baxter", help="robot profile: a name under robots/ "
-                                                        "or a .toml path (default baxter)")
+    ap.add_argument("--profile", default=None, help="robot profile: a name under robots/ "
+                                                     "or a .toml path (default: the case's robot)")
     ap.add_argument("--seconds", type=float, default=math.inf,
                     help="stop after this many seconds (default: run until stopped)")
     ap.add_argument("--realtime", type=float, default=1.0,
@@ -619,11 +621,12 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     from creative_py.case import get_case
 
     try:  # every input is checked before ROS or the physics start
-        profile = load_profile(args.profile)
         manifest = get_case(args.case)
         if manifest.backend != "pybullet":
             raise WorldFileError(f"option --case: {args.case} runs in the {manifest.backend!r} "
                                  "backend; the stand-in builds pybullet scenes")
+        profile = load_profile(args.profile or manifest.robot or "")
+        os.environ[ROBOT_ENV] = profile.source  # the scene's arm is the profile's
         demo = manifest.demonstration
         variant = args.variant or demo.variant
         location = demo.location if args.location is None else args.location

@@ -201,7 +201,7 @@ def test_the_default_options():
         "seed": 0, "phase": "all", "max_trials": None, "consecutive": 2, "eval_trials": 4,
         "create_eval_trials": 5, "video": "key", "gui": False, "strategy": "informative",
         "world_seed": None, "catalogue_first": None, "demonstrate_creation": False,
-        "prior": None, "backend": None, "robot_profile": None}
+        "prior": None, "backend": None, "robot": None}
 
 
 @pytest.mark.parametrize("strategy, first, tries", [
@@ -310,7 +310,7 @@ def test_read_run_json_without_run_json(tmp_path):
     ({"case": "hook", "options": {"seeds": 1, "zz": 2}},
      "field 'options.seeds' is not an option (backend, catalogue_first, consecutive, "
      "create_eval_trials, demonstrate_creation, eval_trials, gui, max_trials, phase, "
-     "prior, robot_profile, seed, strategy, video, world_seed)"),
+     "prior, robot, seed, strategy, video, world_seed)"),
     ({"case": "hook", "options": {"seed": -1}},
      "field 'options': option seed must be a whole number >= 0, got -1"),
     ({"case": "hook", "options": {}, "world": 3},
@@ -591,7 +591,7 @@ def test_a_run_stopped_before_its_first_trial_leaves_no_folder(tmp_path):
         run_case("hook", tmp_path, options, progress=stop, run_name="stopped")
     assert seen == [f"run folder {tmp_path / 'stopped'}",
                     "demonstration: the trainer shows the task with hook_a2 (loc 1)",
-                    run_json("hook", options, None, None),
+                    run_json("hook", replace(options, robot="baxter"), None, None),
                     "interrupted before the first trial: nothing was kept"]
     assert list(tmp_path.iterdir()) == []
 

@@ -182,7 +182,8 @@ def test_a_tool_made_after_a_catalogued_object_solved_the_task_is_a_demonstratio
 @pytest.mark.parametrize("options, first", [
     ({"strategy": "paper", "backend": "ros"}, "Case hook, strategy paper, seed 3, backend ros."),
     ({"backend": "ros", "robot_profile": "lab.toml"},
-     "Case hook, seed 3, backend ros (robot profile lab.toml)."),
+     "Case hook, seed 3, backend ros, robot lab.toml."),
+    ({"robot": "panda"}, "Case hook, seed 3, robot panda."),
     ({"strategy": "paper"}, "Case hook, strategy paper, seed 3."),
 ])
 def test_the_first_line_names_a_backend_the_options_chose(options, first):

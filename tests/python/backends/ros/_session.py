@@ -88,7 +88,7 @@ try:
     from creative_py.backends.ros.profile import load_profile
 
     profile = load_profile(SIM_PROFILE)
-    wall_profile = load_profile()
+    wall_profile = load_profile("baxter")
     objects = list(info["objects"])
     client = ArmClient(profile, objects)
     client.wait_for_arm(30.0)
@@ -175,11 +175,11 @@ try:
     client.trajectory.send_goal_async = counting
     too_fast = client.make_goal([(0.1, q1)])
     # the collision target below: the gripper 5 cm under the table top, pointing forward
-    from creative_py.backends.pybullet.baxter import Baxter, gripper_forward
+    from creative_py.backends.pybullet.arm import Arm, gripper_forward
     from creative_py.backends.pybullet.core import Sim
     from creative_py.world_files import PhysicsSettings
 
-    kin = Baxter(Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81))))
+    kin = Arm(Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81))), "baxter")
     kin.reset_posture(q0)  # profile order is the Baxter's right-arm order here
     below = kin.solve_ik(((0.75, -0.45, -0.25), gripper_forward(0.0)), seed=q0)
     out["below_table_target"] = below

@@ -48,8 +48,10 @@ def test_the_ros_backend_is_registered_with_its_extra():
      "pybullet, ros"),
     (["trial", "hook", "--tool", "hook_a2", "--backend", "nope"],
      "error: --backend nope: unknown simulator backend 'nope'"),
-    (["run", "hook", "--robot-profile", "baxter"],
-     "error: --robot-profile: only with --backend ros"),
+    (["run", "hook", "--robot", "nope"],
+     "error: --robot nope: "),
+    (["run", "hook", "--robot-profile", ""],
+     "error: --robot must not be empty"),
 ])
 def test_bad_backend_options_are_one_line_and_exit_2(args, message):
     r = creative(*args)
@@ -71,8 +73,8 @@ def test_a_run_records_the_backend_only_when_given():
     from creative_py.learning.options import RunOptions
 
     assert "backend" not in RunOptions().recorded()  # recorded runs write back the same
-    opts = RunOptions(backend="ros", robot_profile="baxter").recorded()
-    assert (opts["backend"], opts["robot_profile"]) == ("ros", "baxter")
+    opts = RunOptions(backend="ros", robot="baxter").recorded()
+    assert (opts["backend"], opts["robot"]) == ("ros", "baxter")
     with pytest.raises(ValueError, match="option backend must be a name"):
         RunOptions(backend="")
 

@@ -37,8 +37,9 @@ def test_a_lab_remaps_names_by_a_file(tmp_path):
     ("rate_hz = 50.0", "rate_hz = 0.0", "field 'joint_states.rate_hz': must be >= 1.0"),
     ('topic = "mocap/{name}/pose"', 'topic = "mocap/pose"', "field 'objects.topic': must contain {name}"),
     ("closed_position = 0.0", "closed_position = 0.05", "field 'gripper.closed_position': must be below"),
-    ("max_joint_speed = 0.8", "max_joint_speed = 0.8\nmax_speed = 1", "field 'limits.max_speed': unknown field"),
-    ('joints = ["right_s0",', 'joints = ["right_s0", "right_s0",', "field 'arm.joints': must be a list of distinct"),
+    ("max_joint_speed = 0.8      # rad/s, the fastest joint of any", "max_speed = 1\nmax_joint_speed = 0.8 #", "field 'limits.max_speed': unknown field"),
+    ('follow_joint_trajectory"\njoints = ["right_s0",', 'follow_joint_trajectory"\njoints = ["right_s0", "right_s0",', "field 'arm.joints': must be a list of distinct"),
+    ('follow_joint_trajectory"\njoints = ["right_s0",', 'follow_joint_trajectory"\njoints = ["right_sX",', "field 'arm.joints': must be the joints of kinematics.joints"),
     ("workspace_max = [1.4, 0.3, 0.6]", "workspace_max = [1.4, 0.3, -0.3]", "field 'limits.workspace_max': must exceed"),
     ('action = "right_arm_controller/follow_joint_trajectory"', 'action = "a b"', "field 'arm.action': must be a ROS name"),
 ])
@@ -52,8 +53,14 @@ def test_a_bad_field_is_named_in_one_line(tmp_path, old, new, message):
 
 
 def test_an_unknown_profile_lists_the_shipped_ones():
-    with pytest.raises(WorldFileError, match="shipped profiles: baxter"):
+    with pytest.raises(WorldFileError, match="shipped profiles: baxter, panda, ur5"):
         load_profile("nosuch")
+
+
+def test_a_profile_without_the_ros_tables_is_refused_for_ros(tmp_path):
+    path = _write(tmp_path, SHIPPED.split("\n[frames]")[0] + "\n")
+    with pytest.raises(WorldFileError, match=r"field 'arm': missing: the profile has no ROS 2"):
+        load_profile(path)
 
 
 def test_the_clock_table_is_optional_and_checked(tmp_path):

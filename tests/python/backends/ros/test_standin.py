@@ -91,7 +91,7 @@ def session() -> dict:
 def profile():
     from creative_py.backends.ros.profile import load_profile
 
-    return load_profile()
+    return load_profile("baxter")
 
 
 def test_the_traffic_stays_in_a_loopback_only_namespace(session):

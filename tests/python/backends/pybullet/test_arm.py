@@ -1,4 +1,5 @@
-"""The simulated Baxter: URDF rewriting, IK, guarded moves, the grasp."""
+"""The simulated arm of a robot profile: URDF rewriting, IK, guarded moves, the grasp
+(on the Baxter profile, whose figures the parity fixtures pin)."""
 
 import math
 
@@ -8,12 +9,23 @@ import pytest
 from creative_py.mesh.spec import Box
 
 from creative_py.kinds.hook_like import HookSpec
-from creative_py.backends.pybullet.baxter import Baxter, baxter_urdf
+from creative_py.backends.pybullet.arm import Arm, arm_urdf
 from creative_py.backends.pybullet.bodies import Surface, frame_pose, spawn_parts, spawn_spec
 from creative_py.backends.pybullet.core import Sim
-from creative_py.backends.pybullet.baxter import gripper_forward as gripper_orientation
+from creative_py.backends.pybullet.arm import gripper_forward as gripper_orientation
 from creative_py.backends.pybullet.tools import tool_in_gripper
+from creative_py.robots import load_profile
 from creative_py.world_files import PhysicsSettings
+
+BAXTER = load_profile("baxter")
+
+
+def Baxter(sim, **kw):
+    return Arm(sim, BAXTER, **kw)
+
+
+def baxter_urdf(visuals=False, model="full"):
+    return arm_urdf(BAXTER, visuals, model)
 
 pytestmark = pytest.mark.sim
 
@@ -97,7 +109,7 @@ def _movable(urdf) -> list[str]:
 def test_the_light_model_fixes_the_idle_joints_and_keeps_every_shape():
     import xml.etree.ElementTree as ET
 
-    from creative_py.backends.pybullet.baxter import IDLE_HOLD, RIGHT_ARM
+    IDLE_HOLD, RIGHT_ARM = BAXTER.idle, BAXTER.arm_joints
 
     full, light = baxter_urdf(model="full"), baxter_urdf(model="light")
     assert set(_movable(full)) - set(_movable(light)) == set(IDLE_HOLD)
@@ -128,7 +140,7 @@ def test_the_kinematics_client_outlives_a_robot_and_a_bad_mode_is_refused():
         a.close()
         b = Baxter(sim, mode="light")
         assert b.kin is a.kin and pb.isConnected(b.kin.client)
-        assert b.model.left == [] and len(b.model.movable) == 9
+        assert b.model.idle == [] and len(b.model.movable) == 9
         with pytest.raises(ValueError, match="CREATIVE_ROBOT"):
             Baxter(sim, mode="feather")
 
@@ -136,20 +148,20 @@ def test_the_kinematics_client_outlives_a_robot_and_a_bad_mode_is_refused():
 @pytest.mark.parametrize("mode, searches", [("light", 1), ("heavy", 2)])
 def test_the_via_posture_is_searched_once_per_target(monkeypatch, mode, searches):
     from creative_py.case import get_case
-    from creative_py.backends.pybullet import baxter, load_world, open_episode
+    from creative_py.backends.pybullet import arm, load_world, open_episode
 
     world = load_world(get_case("hook"))
     via = world.scene.robot.via
     assert via is not None
     calls = []
-    search = Baxter.solve_ik_global
+    search = Arm.solve_ik_global
 
     def counted(self, target, *args, **kw):
         calls.append(kw.get("keep", 6))
         return search(self, target, *args, **kw)
 
-    monkeypatch.setattr(Baxter, "solve_ik_global", counted)
-    monkeypatch.setattr(baxter, "ROBOT", mode)
+    monkeypatch.setattr(Arm, "solve_ik_global", counted)
+    monkeypatch.setattr(arm, "ROBOT", mode)
     # Two tools of different reach: two start poses, one via target.
     for tool in ("hook_a2", "hook_b2"):
         with open_episode(world, "standard", 1, tool, robot=True):
@@ -159,7 +171,7 @@ def test_the_via_posture_is_searched_once_per_target(monkeypatch, mode, searches
 
 
 def test_a_straight_line_is_solved_lazily_and_ends_where_the_arm_cannot_follow():
-    from creative_py.backends.pybullet.baxter import Unreachable, straight_line
+    from creative_py.backends.pybullet.arm import Unreachable, straight_line
 
     start, target = ((0.0, 0.0, 0.0), FORWARD), ((0.4, 0.0, 0.0), FORWARD)
     asked = []

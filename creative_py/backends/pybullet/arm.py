@@ -1,27 +1,29 @@
-"""The simulated Baxter: loading, right-arm IK, guarded position control, grasping.
+"""The simulated arm of a robot profile: loading, IK, guarded position control, grasping.
 
-The URDF comes from the ``example-robot-data`` package; its ``package://`` mesh paths
-are rewritten once into a cached copy (with or without ``<visual>`` elements). The
-base frame of the robot is the world frame (the floor is at z = -0.926 m).
+Everything the code knows of an arm comes from its profile (:mod:`creative_py.robots`,
+``robots/<name>.toml``): the URDF (example-robot-data's or a lab's; its
+``package://`` mesh paths are rewritten once into a cached copy, with or without
+``<visual>`` elements), the base pose, the arm's joints, the end-effector link and the
+tool frame on it, the home posture, the idle joints, the hand, the collision links and
+the IK settings. The tool frame's +z axis points out of the gripper (the profile's
+``approach_axis`` says which axis of its ``ee_link`` that is), so the attitudes below
+(:func:`gripper_forward`, :func:`gripper_down`) mean the same for every arm.
 
-IK is solved in a second DIRECT client holding a kinematics-only Baxter, so trying a
-target never disturbs the physics. The tool frame is the link ``right_gripper`` (the
-point between the finger tips; its +z axis points out of the gripper).
+IK is solved in a second DIRECT client holding a kinematics-only model, so trying a
+target never disturbs the physics.
 
 How heavy the robot is (:data:`ROBOT`): the ``light`` robot (the default) has in the
-physics a Baxter whose idle joints (left arm, head, left gripper) are fixed at the
-posture they are held in and whose idle links are merged into the link they hang from,
-so that a physics step simulates the 9 joints that act instead of 19 (less than half
-the CPU time per step). In every mode but ``heavy`` the kinematics client holds only
-the right arm's chain, is loaded once per process and kept for every robot after (an
-episode loads one URDF), and the start posture's via solution is searched once per
-target; IK answers are bit for bit those of the full model. Fewer joints change the
-rows of pybullet's constraint solver, and with them the rounding of the arm's motion
-(even fixing only the head, which cannot touch the arm, does): the ``light`` gripper's
-path differs from the full model's by about 0.01 mm, so a trial that is borderline for
-a guard (a gripper lag of 3.0 cm against the 3 cm limit) can end differently. The
-``exact`` mode keeps the full physics model and so the heavy robot's results bit for
-bit.
+physics a model whose idle joints (the profile's ``[idle]``: another arm, a head) are
+fixed at the posture they are held in and whose idle links are merged into the link
+they hang from, so that a physics step simulates only the joints that act. In every
+mode but ``heavy`` the kinematics client holds only the chain from the base to the
+end-effector link, is loaded once per process and profile and kept for every robot
+after (an episode loads one URDF), and the start posture's via solution is searched
+once per target; IK answers are bit for bit those of the full model. Fewer joints
+change the rows of pybullet's constraint solver, and with them the rounding of the
+arm's motion: the ``light`` gripper's path differs from the full model's by about
+0.01 mm, so a trial that is borderline for a guard can end differently. The ``exact``
+mode keeps the full physics model and so the heavy robot's results bit for bit.
 
 Moves are Cartesian straight lines sampled every ``steps_per_waypoint`` physics steps;
 each waypoint is an IK solution seeded from the previous one, sent as position targets
@@ -47,113 +49,141 @@ import numpy as np
 import pybullet as pb
 
 from creative_py.backends.pybullet.core import Point, Pose, Quat, Sim
+from creative_py.robots import RobotProfile, erd_share_dir, load_profile
 from creative_py.simulator.types import SkillOutcome, Verdict
 
 log = logging.getLogger(__name__)
 
-RIGHT_ARM = ("right_s0", "right_s1", "right_e0", "right_e1", "right_w0", "right_w1",
-             "right_w2")
-"""The seven joints of the right arm, shoulder to wrist."""
-
-LEFT_ARM = tuple(n.replace("right", "left") for n in RIGHT_ARM)
-
-TUCKED_LEFT = (0.6, -1.0, -0.3, 2.2, 0.0, 0.4, 0.0)
-"""Left-arm joint angles (rad) that keep the idle arm out of the workspace."""
-
-IDLE_HOLD: dict[str, float] = {**dict(zip(LEFT_ARM, TUCKED_LEFT)), "head_pan": 0.0,
-                               "l_gripper_l_finger_joint": 0.0,
-                               "l_gripper_r_finger_joint": 0.0}
-"""The idle joints (rad or m) and the values they are held at: the light robot fixes
-them there (the left arm tucked, the head straight, the left gripper closed)."""
-
 ROBOT_MODES = ("light", "exact", "heavy")
 """How heavy the robot is: ``light`` (idle joints fixed and merged in the physics, a
-shared kinematics client with the right arm's chain, the via solution cached),
+shared kinematics client with the arm's chain, the via solution cached),
 ``exact`` (the same but every joint simulated: results bit for bit the heavy ones),
-``heavy`` (the robot of before: every joint simulated, a kinematics client with the
-full model and a second URDF load per robot, no via cache)."""
+``heavy`` (every joint simulated, a kinematics client with the full model and a
+second URDF load per robot, no via cache)."""
 
 ROBOT_ENV = "CREATIVE_ROBOT"
 """Environment variable read at import into :data:`ROBOT` (one of :data:`ROBOT_MODES`)."""
 
 ROBOT: str = os.environ.get(ROBOT_ENV, "").strip() or "light"
-"""The mode of every :class:`Baxter` built without one (default ``light``); the
+"""The mode of every :class:`Arm` built without one (default ``light``); the
 per-trial CPU benchmark (``bench/robot_cost_bench.py``) sets it to run all three."""
 
-READY_RIGHT = (0.3, -0.6, 0.4, 1.6, -0.3, 0.6, 0.0)
-"""Right-arm joint angles (rad) of the start posture, gripper in front of the robot."""
-
-EE_LINK = "right_gripper"
-
-WORKSPACE_LINK_PREFIXES = ("right_lower_elbow", "right_upper_forearm", "right_lower_forearm",
-                           "right_wrist", "right_hand", "right_gripper", "r_gripper")
-"""Links that keep their collision shapes: the right arm from the elbow on."""
-
-def baxter_share_dir() -> Path:
-    """Return ``.../cmeel.prefix/share`` of the installed example-robot-data package."""
-    import site
-    import sys
-
-    for base in map(Path, [*site.getsitepackages(), *sys.path]):
-        share = base / "cmeel.prefix" / "share"
-        if (share / "example-robot-data" / "robots" / "baxter_description").is_dir():
-            return share
-    raise FileNotFoundError("the Baxter URDF needs the package example-robot-data "
-                            "(pip install --no-deps example-robot-data)")
-
-
-_URDF_EDITS = "v3: absolute meshes, base inertial, optional visuals, light and arm models"
+_URDF_EDITS = "v4: meshes, root inertial, optional visuals, light and arm models"
 """Changes with the edits below, so that a stale cached URDF is never reused."""
 
 URDF_MODELS = ("full", "light", "arm")
-"""The Baxter models :func:`baxter_urdf` writes: every joint; the idle joints of
-:data:`IDLE_HOLD` fixed and merged; the right arm's chain only (kinematics)."""
+"""The models :func:`arm_urdf` writes: every joint; the profile's idle joints fixed
+and merged; the chain from the base to the end-effector link only (kinematics)."""
+
+_APPROACH: dict[str, tuple[float, float, float]] = {
+    "+z": (0.0, 0.0, 0.0), "-z": (math.pi, 0.0, 0.0),
+    "+x": (0.0, math.pi / 2, 0.0), "-x": (0.0, -math.pi / 2, 0.0),
+    "+y": (-math.pi / 2, 0.0, 0.0), "-y": (math.pi / 2, 0.0, 0.0)}
+"""The rotation (rpy) that turns each approach axis of the tool frame into its +z."""
 
 
-def baxter_urdf(visuals: bool = False, model: str = "full") -> Path:
-    """Return a cached Baxter URDF with absolute mesh paths.
+def tool_frame(profile: RobotProfile) -> Pose | None:
+    """Return the tool frame in the end-effector link's frame (+z out of the gripper),
+    or None where it is the link's own frame (the pose is then never composed, so that
+    such an arm's numbers are exactly its link's)."""
+    if profile.tool_xyz == (0.0, 0.0, 0.0) and profile.tool_rpy == (0.0, 0.0, 0.0) \
+            and profile.approach_axis == "+z":
+        return None
+    pos, quat = pb.multiplyTransforms(profile.tool_xyz,
+                                      pb.getQuaternionFromEuler(profile.tool_rpy), (0, 0, 0),
+                                      pb.getQuaternionFromEuler(_APPROACH[profile.approach_axis]))
+    return tuple(pos), tuple(quat)
+
+
+def _rewrite_packages(text: str, profile: RobotProfile) -> str:
+    """Return the URDF text with every ``package://NAME/`` replaced by a folder: the
+    profile's ``[packages]`` entry, else example-robot-data's share folder."""
+    dirs = dict(profile.packages)
+
+    def folder(m: re.Match) -> str:
+        name = m.group(1)
+        if name in dirs:
+            return dirs[name].rstrip("/") + "/"
+        try:
+            return str(erd_share_dir()) + "/" + name + "/"
+        except FileNotFoundError:
+            raise FileNotFoundError(f"{profile.source}: field 'packages': the URDF needs "
+                                    f"package://{name}/, which no folder names") from None
+
+    return re.sub(r"package://([^/\"']+)/", folder, text)
+
+
+def arm_urdf(profile: RobotProfile, visuals: bool = False, model: str = "full") -> Path:
+    """Return a cached copy of the profile's URDF with absolute mesh paths.
 
     Parameters
     ----------
+    profile : RobotProfile
+        The arm.
     visuals : bool
         Keep the ``<visual>`` elements (slow to load); never for ``arm``.
     model : {"full", "light", "arm"}
-        ``full``: the robot as shipped. ``light``: the idle joints of
-        :data:`IDLE_HOLD` fixed at their values and every link below them merged
-        into the link the idle part hangs from (its shapes kept where the held
-        posture puts them, its mass dropped: those links hang from the fixed torso).
-        ``arm``: only the links from the base to ``right_gripper`` (kinematics).
+        ``full``: the robot as shipped. ``light``: the profile's idle joints fixed at
+        their values and every link below them merged into the link the idle part
+        hangs from (its shapes kept where the held posture puts them, its mass
+        dropped). ``arm``: only the links from the base to the end-effector link
+        (kinematics).
     """
     if model not in URDF_MODELS:
-        raise ValueError(f"Baxter model must be one of {', '.join(URDF_MODELS)}, "
-                         f"got {model!r}")
-    share = baxter_share_dir()
-    src = share / "example-robot-data" / "robots" / "baxter_description" / "urdf" / "baxter.urdf"
+        raise ValueError(f"URDF model must be one of {', '.join(URDF_MODELS)}, got {model!r}")
+    src = profile.urdf_path
     text = src.read_text()
-    key = hashlib.sha1((str(src) + text + str(visuals) + model + repr(sorted(IDLE_HOLD.items()))
+    key = hashlib.sha1((str(src) + text + str(visuals) + model + repr(sorted(profile.idle.items()))
+                        + profile.ee_link + repr(sorted(profile.packages.items()))
                         + _URDF_EDITS).encode()).hexdigest()[:12]
-    out = Path(tempfile.gettempdir()) / f"creative_py_baxter_{key}.urdf"
+    out = Path(tempfile.gettempdir()) / f"creative_py_{profile.name}_{key}.urdf"
     if not out.is_file():
-        text = text.replace("package://", str(share) + "/")
-        # The fixed base link has no inertial element; give it one so that pybullet
-        # does not print a warning on every load (its mass is irrelevant: it is fixed).
-        text = text.replace('<link name="base">\n  </link>',
-                            '<link name="base"><inertial><mass value="0.001"/><inertia '
-                            'ixx="1e-6" ixy="0" ixz="0" iyy="1e-6" iyz="0" izz="1e-6"/>'
-                            '</inertial></link>')
+        text = _rewrite_packages(text, profile)
         if not visuals or model == "arm":
             text = re.sub(r"<visual>.*?</visual>", "", text, flags=re.S)
-        if model != "full":
+        if model == "full":  # the text as shipped, but for the root's inertial
+            text = _root_inertial_text(text)
+        else:
             root = ET.fromstring(text)
+            _root_inertial(root)
             if model == "light":
-                _merge_idle(root, IDLE_HOLD)
+                _merge_idle(root, profile.idle)
             else:
-                _keep_chain(root, EE_LINK)
+                _keep_chain(root, profile.ee_link)
             text = ET.tostring(root, encoding="unicode")
         tmp = out.with_suffix(f".{os.getpid()}.{id(text)}.tmp")
         tmp.write_text(text)
         tmp.replace(out)
     return out
+
+
+def _root_link(root: ET.Element) -> str:
+    children = {j.find("child").get("link") for j in root.findall("joint")}
+    return next(e.get("name") for e in root.findall("link") if e.get("name") not in children)
+
+
+_TINY_INERTIAL = ('<inertial><mass value="0.001"/><inertia ixx="1e-6" ixy="0" ixz="0" '
+                  'iyy="1e-6" iyz="0" izz="1e-6"/></inertial>')
+
+
+def _root_inertial(root: ET.Element) -> None:
+    """Give a fixed root link without ``<inertial>`` a tiny one, so that pybullet does not
+    print a warning on every load (its mass is irrelevant: it is fixed)."""
+    name = _root_link(root)
+    link = next(e for e in root.findall("link") if e.get("name") == name)
+    if link.find("inertial") is None:
+        link.append(ET.fromstring(_TINY_INERTIAL))
+
+
+def _root_inertial_text(text: str) -> str:
+    """The same edit in the text of the full model (kept as shipped otherwise)."""
+    name = _root_link(ET.fromstring(text))
+    m = re.search(r'<link\s+name="%s"\s*>\s*</link>' % re.escape(name), text)
+    if m is None:
+        m = re.search(r'<link\s+name="%s"\s*/>' % re.escape(name), text)
+    if m is None:
+        return text
+    return text[:m.start()] + f'<link name="{name}">{_TINY_INERTIAL}</link>' + text[m.end():]
 
 
 def _floats(text: str) -> tuple[float, ...]:
@@ -230,7 +260,7 @@ def _merge_idle(root: ET.Element, hold: dict[str, float]) -> None:
     idle_children = {joints[n].find("child").get("link") for n in hold}
     for name in hold:
         if name not in joints:
-            raise ValueError(f"the Baxter URDF has no joint {name}")
+            raise ValueError(f"the URDF has no idle joint {name}")
     for name in hold:
         parent = joints[name].find("parent").get("link")
         if name not in merged and not _below_any(parent, idle_children, joints):
@@ -270,13 +300,13 @@ def _keep_chain(root: ET.Element, tip: str) -> None:
 
 
 @dataclass(frozen=True)
-class BaxterConfig:
-    """Settings of the robot model and its controller.
+class ArmConfig:
+    """Settings of the arm's controller (the profile holds the arm's own facts).
 
     Attributes
     ----------
     visuals : bool
-        Load the visual meshes (slow, 1.2 s) so cameras see the robot.
+        Load the visual meshes (slow) so cameras see the robot.
     speed : float
         Default Cartesian speed of the gripper, m/s.
     turn_speed : float
@@ -287,15 +317,6 @@ class BaxterConfig:
         Gripper lag (m) beyond which a move stops as ``blocked``.
     max_turn_error : float
         Gripper orientation lag (rad) beyond which a move stops as ``blocked``.
-    ik_position_tolerance : float
-        Position error (m) an IK solution must reach to count as reachable.
-    ik_orientation_tolerance : float
-        Orientation error (rad) an IK solution must reach.
-    ik_centring : float
-        Gain (per iteration) of the null-space drift of the joints towards the
-        middle of their ranges.
-    grasp_max_force : float
-        Maximum force of the fixed grasp constraint, N.
     settle_steps : int
         Most physics steps spent at the end of a move waiting for the arm to converge.
     max_body_speed : float
@@ -308,16 +329,12 @@ class BaxterConfig:
     steps_per_waypoint: int = 4
     max_tracking_error: float = 0.03
     max_turn_error: float = 0.3
-    ik_position_tolerance: float = 0.002
-    ik_orientation_tolerance: float = 0.02
-    ik_centring: float = 0.05
-    grasp_max_force: float = 500.0
     settle_steps: int = 120
     max_body_speed: float = 5.0
 
 
 GRIPPER_FORWARD: Quat = tuple(pb.getQuaternionFromEuler((0.0, math.pi / 2, 0.0)))
-"""Orientation of ``right_gripper`` pointing along +x world (its +z axis), roll 0."""
+"""Orientation of the tool frame pointing along +x world (its +z axis), roll 0."""
 
 
 def gripper_forward(roll: float) -> Quat:
@@ -407,20 +424,23 @@ class Unreachable(Exception):
 
 
 class _Model:
-    """A loaded Baxter in one client: joint tables and helpers."""
+    """A loaded arm in one client: joint tables and helpers."""
 
-    def __init__(self, client: int, urdf: Path) -> None:
+    def __init__(self, client: int, urdf: Path, profile: RobotProfile,
+                 base: Pose = ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))) -> None:
         self.client = client
-        self.body = pb.loadURDF(str(urdf), (0, 0, 0), (0, 0, 0, 1), useFixedBase=True,
+        self.profile = profile
+        self.body = pb.loadURDF(str(urdf), base[0], base[1], useFixedBase=True,
                                 physicsClientId=client)
         if self.body < 0:
-            raise RuntimeError(f"{urdf}: pybullet could not load the Baxter URDF")
+            raise RuntimeError(f"{urdf}: pybullet could not load the URDF of {profile.source}")
         self.joint: dict[str, int] = {}
         self.link: dict[str, int] = {}
         self.movable: list[int] = []
         self.lower: list[float] = []
         self.upper: list[float] = []
         self.effort: dict[int, float] = {}
+        self.base_link = pb.getBodyInfo(self.body, physicsClientId=client)[0].decode()
         for j in range(pb.getNumJoints(self.body, physicsClientId=client)):
             info = pb.getJointInfo(self.body, j, physicsClientId=client)
             name = info[1].decode()
@@ -431,14 +451,54 @@ class _Model:
                 self.lower.append(info[8])
                 self.upper.append(info[9])
                 self.effort[j] = info[10]
-        self.arm = [self.joint[n] for n in RIGHT_ARM]
-        self.left = [self.joint[n] for n in LEFT_ARM if n in self.joint
+        missing = [n for n in profile.arm_joints if n not in self.joint
+                   or self.joint[n] not in self.movable]
+        if missing:
+            raise profile.error("kinematics.joints", f"{missing[0]!r} is no moving joint of "
+                                f"{profile.urdf_path.name}")
+        if profile.ee_link not in self.link:
+            raise profile.error("kinematics.ee_link", f"{profile.ee_link!r} is no link of "
+                                f"{profile.urdf_path.name}")
+        self.arm = [self.joint[n] for n in profile.arm_joints]
+        self.idle = [self.joint[n] for n in profile.idle if n in self.joint
                      and self.joint[n] in self.movable]
-        """The left arm's joints, if it moves (none in the light robot)."""
-        self.ee = self.link[EE_LINK]
+        """The idle joints that move in this model (none in the light robot)."""
+        self.idle_q = [profile.idle[n] for n in profile.idle if n in self.joint
+                       and self.joint[n] in self.movable]
+        self.ee = self.link[profile.ee_link]
+        self.tool = tool_frame(profile)
+        self.base_rotation: np.ndarray | None = None
+        """The base's rotation matrix where it is turned: pybullet's Jacobians are in the
+        base's frame, IK's errors in the world's."""
+        if tuple(base[1]) != (0.0, 0.0, 0.0, 1.0):
+            self.base_rotation = np.array(pb.getMatrixFromQuaternion(base[1])).reshape(3, 3)
+        st = pb.getLinkState(self.body, self.ee, physicsClientId=client)
+        self.ee_com: Pose | None = None
+        """The end-effector link's centre-of-mass frame in its link frame, None where
+        they coincide (pybullet's Jacobians and constraints are taken there)."""
+        if tuple(st[2]) != (0.0, 0.0, 0.0) or tuple(st[3]) != (0.0, 0.0, 0.0, 1.0):
+            self.ee_com = (tuple(st[2]), tuple(st[3]))
+        self.jacobian_point: tuple[float, float, float] = (0.0, 0.0, 0.0)
+        """The tool frame's origin in the end-effector link's centre-of-mass frame."""
+        if self.tool is not None or self.ee_com is not None:
+            self.jacobian_point = self.in_ee_com(((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))[0]
         self.arm_in_movable = [self.movable.index(j) for j in self.arm]
-        self.arm_lower = np.array([self.lower[i] for i in self.arm_in_movable])
-        self.arm_upper = np.array([self.upper[i] for i in self.arm_in_movable])
+        lower = np.array([self.lower[i] for i in self.arm_in_movable])
+        upper = np.array([self.upper[i] for i in self.arm_in_movable])
+        # pybullet reports a continuous joint with lower > upper: no limits, no centring.
+        self.continuous = lower > upper
+        self.arm_lower = np.where(self.continuous, -np.inf, lower)
+        self.arm_upper = np.where(self.continuous, np.inf, upper)
+
+    def in_ee_com(self, pose: Pose) -> Pose:
+        """Return a pose given in the tool frame in the end-effector link's
+        centre-of-mass frame."""
+        tool = self.tool or ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+        com = self.ee_com or ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0))
+        inv = pb.invertTransform(com[0], com[1])
+        p, q = pb.multiplyTransforms(inv[0], inv[1], tool[0], tool[1])
+        p, q = pb.multiplyTransforms(p, q, pose[0], pose[1])
+        return tuple(p), tuple(q)
 
     def reset(self, joints: Sequence[int], q: Sequence[float]) -> None:
         pb.resetJointStatesMultiDof(self.body, list(joints), [[float(v)] for v in q],
@@ -446,108 +506,152 @@ class _Model:
                                     physicsClientId=self.client)
 
     def ee_pose(self) -> Pose:
+        """Return the world pose of the tool frame."""
         st = pb.getLinkState(self.body, self.ee, computeForwardKinematics=True,
                              physicsClientId=self.client)
-        return tuple(st[4]), tuple(st[5])
+        if self.tool is None:
+            return tuple(st[4]), tuple(st[5])
+        pos, quat = pb.multiplyTransforms(st[4], st[5], self.tool[0], self.tool[1])
+        return tuple(pos), tuple(quat)
 
     def arm_q(self) -> list[float]:
         return [pb.getJointState(self.body, j, physicsClientId=self.client)[0]
                 for j in self.arm]
 
 
-_KINEMATICS: list = []
-"""``[(pid, model)]``: this process's kinematics model (a fork loads its own)."""
+_KINEMATICS: dict = {}
+"""``(profile file, base pose) -> (pid, model)``: this process's kinematics models (a
+fork loads its own)."""
 
 
-def kinematics_model() -> _Model:
-    """Return this process's kinematics-only Baxter (the right arm's chain).
+def base_pose(profile: RobotProfile, position=None, rpy=None) -> Pose:
+    """Return the arm's base pose in the world: the profile's, or the given one."""
+    pos = tuple(float(v) for v in (profile.base_position if position is None else position))
+    ang = profile.base_rpy if rpy is None else rpy
+    return pos, tuple(pb.getQuaternionFromEuler(ang))
+
+
+def kinematics_model(profile: RobotProfile, base: Pose | None = None) -> _Model:
+    """Return this process's kinematics-only model of the profile's arm (its chain).
 
     It lives in its own DIRECT client, loaded on first use and kept for every robot
     after: IK resets the arm before each query, so no robot sees another's state.
     """
+    base = base_pose(profile) if base is None else base
+    key = (profile.source, str(profile.urdf_path), base)
     pid = os.getpid()
-    if _KINEMATICS and _KINEMATICS[0][0] == pid and pb.isConnected(_KINEMATICS[0][1].client):
-        return _KINEMATICS[0][1]
+    got = _KINEMATICS.get(key)
+    if got and got[0] == pid and pb.isConnected(got[1].client):
+        return got[1]
     client = pb.connect(pb.DIRECT)
     if client < 0:
         raise RuntimeError("pybullet: could not connect the kinematics client")
-    model = _Model(client, baxter_urdf(False, "arm"))
-    _KINEMATICS[:] = [(pid, model)]
+    model = _Model(client, arm_urdf(profile, False, "arm"), profile, base)
+    _KINEMATICS[key] = (pid, model)
     return model
 
 
-class Baxter:
-    """A Baxter robot in a :class:`Sim`, with a private kinematics client for IK.
+class Arm:
+    """The arm of a robot profile in a :class:`Sim`, with a kinematics client for IK.
 
     Parameters
     ----------
     sim : Sim
-        The physics client to load the robot into (base at the world origin).
-    config : BaxterConfig
+        The physics client to load the robot into.
+    profile : RobotProfile or str
+        The arm (a profile or its name).
+    config : ArmConfig
         Controller settings.
     mode : str or None
         One of :data:`ROBOT_MODES`; None takes :data:`ROBOT`.
+    base : Pose or None
+        The base link's world pose (a world's placement); None: the profile's.
     """
 
-    def __init__(self, sim: Sim, config: BaxterConfig = BaxterConfig(),
-                 mode: str | None = None) -> None:
+    def __init__(self, sim: Sim, profile: RobotProfile | str, config: ArmConfig = ArmConfig(),
+                 mode: str | None = None, base: Pose | None = None) -> None:
         self.sim = sim
+        self.profile = load_profile(profile) if isinstance(profile, str) else profile
         self.config = config
         self.mode = ROBOT if mode is None else mode
         if self.mode not in ROBOT_MODES:
             raise ValueError(f"robot mode (environment variable {ROBOT_ENV}) must be one of "
                              f"{', '.join(ROBOT_MODES)}, got {self.mode!r}")
+        self.base = base_pose(self.profile) if base is None else base
         self.light = self.mode != "heavy"
         """Shared kinematics client, cached via solution (every mode but ``heavy``)."""
-        self.urdf = baxter_urdf(config.visuals, "light" if self.mode == "light" else "full")
+        self.urdf = arm_urdf(self.profile, config.visuals,
+                             "light" if self.mode == "light" else "full")
         """The URDF file the robot was loaded from."""
-        self.model = _Model(sim.client, self.urdf)
+        self.model = _Model(sim.client, self.urdf, self.profile, self.base)
         self.body = self.model.body
         if self.light:
             self._kin_client = -1  # the shared one: not this robot's to close
-            self.kin = kinematics_model()
+            self.kin = kinematics_model(self.profile, self.base)
         else:
             self._kin_client = pb.connect(pb.DIRECT)
-            self.kin = _Model(self._kin_client, baxter_urdf(False))
+            self.kin = _Model(self._kin_client, arm_urdf(self.profile, False), self.profile,
+                              self.base)
         self.grasp_constraint: int | None = None
         self.held: int | None = None
-        self.reset_posture(READY_RIGHT)
+        self._hand()
+        self.reset_posture(self.profile.home)
         self._limit_collisions()
 
-    def _limit_collisions(self) -> None:
-        """Let only the links that can reach the workspace collide (a speed-up).
+    def _hand(self) -> None:
+        """Set a driven hand up: fingers open, held by motors, coupled by a gear."""
+        hand, m, c = self.profile.hand, self.model, self.sim.client
+        if hand is None or not hand.driven:
+            return
+        missing = [n for n in hand.joints if n not in m.joint or m.joint[n] not in m.movable]
+        if missing:
+            raise self.profile.error("hand.joints", f"{missing[0]!r} is no moving joint of "
+                                     f"{self.profile.urdf_path.name}")
+        fingers = [m.joint[n] for n in hand.joints]
+        m.reset(fingers, hand.open)
+        pb.setJointMotorControlArray(m.body, fingers, pb.POSITION_CONTROL,
+                                     targetPositions=list(hand.open),
+                                     forces=[hand.max_force] * len(fingers), physicsClientId=c)
+        if hand.gear_ratio is not None:
+            gear = pb.createConstraint(m.body, fingers[0], m.body, fingers[1], pb.JOINT_GEAR,
+                                       (1, 0, 0), (0, 0, 0), (0, 0, 0), physicsClientId=c)
+            pb.changeConstraint(gear, gearRatio=hand.gear_ratio, erp=0.1,
+                                maxForce=hand.max_force, physicsClientId=c)
 
-        The torso, head, pedestal, left arm and right shoulder cannot touch anything
-        on the table; their collision meshes only cost time in every step.
-        """
+    def _limit_collisions(self) -> None:
+        """Let only the profile's ``collision_links`` collide (a speed-up): the links
+        that cannot touch anything on the table only cost time in every step."""
         m = self.model
-        for name, link in [("base", -1), *m.link.items()]:
-            if not name.startswith(WORKSPACE_LINK_PREFIXES):
+        prefixes = self.profile.collision_links
+        if not prefixes:
+            return
+        for name, link in [(m.base_link, -1), *m.link.items()]:
+            if not name.startswith(prefixes):
                 pb.setCollisionFilterGroupMask(m.body, link, 0, 0, physicsClientId=m.client)
 
     # ------------------------------------------------------------------ state
-    def reset_posture(self, right_q: Sequence[float]) -> None:
-        """Teleport the right arm to ``right_q`` (rad) and tuck the left arm; hold them.
+    def reset_posture(self, arm_q: Sequence[float]) -> None:
+        """Teleport the arm to ``arm_q`` (rad) and the idle joints to their values; hold them.
 
-        The light robot's left arm is tucked for good (its joints are fixed).
+        The light robot's idle joints are held for good (they are fixed).
         """
         m = self.model
-        m.reset(m.arm, right_q)
-        if m.left:
-            m.reset(m.left, TUCKED_LEFT)
-        self._command(list(right_q))
-        if m.left:
-            pb.setJointMotorControlArray(m.body, m.left, pb.POSITION_CONTROL,
-                                         targetPositions=list(TUCKED_LEFT),
-                                         forces=[m.effort[j] for j in m.left],
+        m.reset(m.arm, arm_q)
+        if m.idle:
+            m.reset(m.idle, m.idle_q)
+        self._command(list(arm_q))
+        if m.idle:
+            pb.setJointMotorControlArray(m.body, m.idle, pb.POSITION_CONTROL,
+                                         targetPositions=list(m.idle_q),
+                                         forces=[m.effort[j] for j in m.idle],
                                          physicsClientId=self.sim.client)
 
     def arm_q(self) -> list[float]:
-        """Return the right-arm joint angles (rad)."""
+        """Return the arm's joint angles (rad)."""
         return self.model.arm_q()
 
     def gripper_pose(self) -> Pose:
-        """Return the world pose of ``right_gripper`` by forward kinematics (proprioception)."""
+        """Return the world pose of the tool frame by forward kinematics (proprioception)."""
         return self.model.ee_pose()
 
     def _command(self, q: Sequence[float]) -> None:
@@ -560,27 +664,30 @@ class Baxter:
     # --------------------------------------------------------------------- IK
     def solve_ik(self, target: Pose, seed: Sequence[float] | None = None,
                  max_iterations: int = 150) -> list[float] | None:
-        """Return right-arm joint angles (rad) putting ``right_gripper`` at ``target``.
+        """Return arm joint angles (rad) putting the tool frame at ``target``.
 
-        Damped least squares on the arm's 6 x 7 Jacobian (from pybullet, in the
+        Damped least squares on the arm's 6 x n Jacobian (from pybullet, in the
         kinematics client), started from ``seed`` (default: the current arm) and
         clamped to the joint limits. Returns None unless the position error ends
-        under ``ik_position_tolerance`` (m) and the orientation error under
-        ``ik_orientation_tolerance`` (rad): the target is then unreachable from
+        under the profile's ``ik.position_tolerance`` (m) and the orientation error
+        under ``ik.orientation_tolerance`` (rad): the target is then unreachable from
         this seed (out of reach, or a joint limit in the way).
         """
         k = self.kin
         q = np.array(seed if seed is not None else self.arm_q(), dtype=float)
         lo, hi = k.arm_lower, k.arm_upper
         q = np.clip(q, lo, hi)
-        mid = (lo + hi) / 2
+        # A continuous joint has no mid-range: its drift target is where it is.
+        mid = np.where(k.continuous, q, (lo + hi) / 2) if k.continuous.any() else (lo + hi) / 2
+        n = len(k.arm)
+        ik = self.profile.ik
         tpos = np.asarray(target[0], float)
         tquat = target[1]
         zeros = [0.0] * len(k.movable)
         full = [0.0] * len(k.movable)
         perr = oerr = math.inf
         damped = 1e-4 * np.eye(6)
-        eye7 = np.eye(7)
+        eye = np.eye(n)
         for _ in range(max_iterations):
             k.reset(k.arm, q)
             pos, quat = k.ee_pose()
@@ -591,22 +698,26 @@ class Baxter:
                 break
             for i, v in zip(k.arm_in_movable, q):
                 full[i] = float(v)
-            lin, ang = pb.calculateJacobian(k.body, k.ee, (0, 0, 0), full, zeros, zeros,
+            if k.continuous.any():
+                mid = np.where(k.continuous, q, mid)
+            lin, ang = pb.calculateJacobian(k.body, k.ee, k.jacobian_point, full, zeros, zeros,
                                             physicsClientId=k.client)
-            jac = np.vstack([np.asarray(lin)[:, k.arm_in_movable],
-                             np.asarray(ang)[:, k.arm_in_movable]])
+            lin, ang = np.asarray(lin)[:, k.arm_in_movable], np.asarray(ang)[:, k.arm_in_movable]
+            if k.base_rotation is not None:
+                lin, ang = k.base_rotation @ lin, k.base_rotation @ ang
+            jac = np.vstack([lin, ang])
             err = np.concatenate([e_pos, e_rot])
             # Joints pinned at a limit and pushed beyond it are taken out of the
             # Jacobian (an active set), so the others do the work instead of the
             # solver stalling against the clamp.
-            free = np.ones(7)
+            free = np.ones(n)
             for _ in range(3):
                 jf = jac * free
                 pinv = jf.T @ np.linalg.inv(jf @ jf.T + damped)
                 dq = pinv @ err
                 # Secondary task in the null space: drift towards mid-range, so that
                 # long Cartesian paths do not run the arm into a joint limit.
-                dq += (eye7 - pinv @ jf) @ (self.config.ik_centring * (mid - q) * free)
+                dq += (eye - pinv @ jf) @ (ik.centring * (mid - q) * free)
                 pinned = ((q <= lo + 1e-6) & (dq < 0)) | ((q >= hi - 1e-6) & (dq > 0))
                 if not np.any(pinned & (free > 0)):
                     break
@@ -615,21 +726,25 @@ class Baxter:
             if biggest > 0.2:
                 dq *= 0.2 / biggest
             q = np.clip(q + dq, lo, hi)
-        if perr > self.config.ik_position_tolerance or oerr > self.config.ik_orientation_tolerance:
+        if perr > ik.position_tolerance or oerr > ik.orientation_tolerance:
             return None
         return [float(v) for v in q]
 
-    def ik_candidates(self, target: Pose, keep: int = 6, restarts: int = 40,
+    def ik_candidates(self, target: Pose, keep: int = 6, restarts: int | None = None,
                       seeds: Sequence[Sequence[float]] = ()) -> list[list[float]]:
         """Return up to ``keep`` arm postures (rad) reaching ``target``.
 
-        Solves from ``seeds``, the ready posture, the current posture and ``restarts``
-        random postures of a fixed-seed generator (deterministic), in that order.
+        Solves from ``seeds``, the profile's home posture, the current posture and
+        ``restarts`` (default: the profile's ``ik.restarts``) random postures of a
+        fixed-seed generator (deterministic), in that order; a continuous joint's
+        random angle is drawn within +-pi.
         """
         k = self.kin
-        lo, hi = k.arm_lower, k.arm_upper
+        restarts = self.profile.ik.restarts if restarts is None else restarts
+        lo = np.where(k.continuous, -math.pi, k.arm_lower)
+        hi = np.where(k.continuous, math.pi, k.arm_upper)
         rng = np.random.default_rng(0)
-        tries = [*map(list, seeds), list(READY_RIGHT), self.arm_q()]
+        tries = [*map(list, seeds), list(self.profile.home), self.arm_q()]
         tries += [list(rng.uniform(lo, hi)) for _ in range(restarts)]
         found: list[list[float]] = []
         for seed in tries:
@@ -641,7 +756,7 @@ class Baxter:
                     break
         return found
 
-    def solve_ik_global(self, target: Pose, restarts: int = 40, keep: int = 6,
+    def solve_ik_global(self, target: Pose, restarts: int | None = None, keep: int = 6,
                         seeds: Sequence[Sequence[float]] = ()) -> list[float] | None:
         """Return an arm posture (rad) reaching ``target``, chosen among several.
 
@@ -652,10 +767,13 @@ class Baxter:
         found = self.ik_candidates(target, keep, restarts, seeds)
         if not found:
             return None
-        lo, hi = self.kin.arm_lower, self.kin.arm_upper
+        limited = ~self.kin.continuous  # a continuous joint has no limit to keep from
+        lo, hi = self.kin.arm_lower[limited], self.kin.arm_upper[limited]
+        if not limited.any():
+            return found[0]
 
         def margin(q: list[float]) -> float:
-            qa = np.array(q)
+            qa = np.array(q)[limited]
             return float(np.min(np.minimum(qa - lo, hi - qa) / (hi - lo)))
 
         return max(found, key=margin)
@@ -685,14 +803,16 @@ class Baxter:
             prev = target
         return q
 
-    def move_joints(self, q_goal: Sequence[float], joint_speed: float = 0.8,
+    def move_joints(self, q_goal: Sequence[float], joint_speed: float | None = None,
                     check: bool = True, watch: Sequence[int] = ()) -> SkillOutcome:
-        """Move the arm in joint space to ``q_goal`` (rad), fastest joint at ``joint_speed`` rad/s.
+        """Move the arm in joint space to ``q_goal`` (rad), fastest joint at ``joint_speed``
+        rad/s (default: the profile's ``kinematics.max_joint_speed``).
 
         The tracking guard compares the gripper with the forward kinematics of the
         commanded posture.
         """
         cfg = self.config
+        joint_speed = self.profile.joint_speed if joint_speed is None else joint_speed
         q0 = np.array(self.arm_q())
         q1 = np.array(q_goal, dtype=float)
         step = joint_speed * cfg.steps_per_waypoint * self.sim.physics.time_step
@@ -711,7 +831,7 @@ class Baxter:
                 break
         return SkillOutcome("ok")
 
-    def reach(self, target: Pose, joint_speed: float = 0.8,
+    def reach(self, target: Pose, joint_speed: float | None = None,
               watch: Sequence[int] = ()) -> SkillOutcome:
         """Go to ``target`` (gripper pose) through joint space: for moves in free space."""
         q = self.solve_ik_global(target)
@@ -730,7 +850,7 @@ class Baxter:
         Parameters
         ----------
         target : Pose
-            World pose of ``right_gripper``.
+            World pose of the tool frame.
         speed : float or None
             Cartesian speed, m/s (default ``config.speed``); the orientation turns at
             most at ``config.turn_speed`` rad/s.
@@ -825,9 +945,9 @@ class Baxter:
         """Fix ``body`` to the gripper so that its own frame sits at ``frame_in_gripper``.
 
         ``frame_in_gripper`` is the pose of the body's link frame (spec or URDF frame,
-        not its centre of mass) in the ``right_gripper`` frame. The constraint is
-        fixed, with ``grasp_max_force`` N; collisions between the body and every
-        robot link are switched off (the fingers are not simulated closing).
+        not its centre of mass) in the tool frame. The constraint is fixed, with the
+        profile's ``grasp.max_force`` N; collisions between the body and every robot
+        link are switched off (the fingers, if any, do not hold it).
         """
         c = self.sim.client
         for link in range(-1, pb.getNumJoints(self.body, physicsClientId=c)):
@@ -836,12 +956,16 @@ class Baxter:
         info = pb.getDynamicsInfo(body, -1, physicsClientId=c)
         # The child frame is given relative to the body's centre-of-mass frame.
         child_pos, child_quat = pb.invertTransform(info[3], info[4])
+        # The parent frame too: the tool frame in the end-effector link's
+        # centre-of-mass frame (an identity for an arm whose tool frame is its link's).
+        if self.model.tool is not None or self.model.ee_com is not None:
+            frame_in_gripper = self.model.in_ee_com(frame_in_gripper)
         self.grasp_constraint = pb.createConstraint(
             self.body, self.model.ee, body, -1, pb.JOINT_FIXED, (0, 0, 0),
             parentFramePosition=frame_in_gripper[0], childFramePosition=child_pos,
             parentFrameOrientation=frame_in_gripper[1], childFrameOrientation=child_quat,
             physicsClientId=c)
-        pb.changeConstraint(self.grasp_constraint, maxForce=self.config.grasp_max_force,
+        pb.changeConstraint(self.grasp_constraint, maxForce=self.profile.grasp_max_force,
                             physicsClientId=c)
         self.held = body
 
@@ -858,3 +982,66 @@ class Baxter:
         if self._kin_client >= 0:
             pb.disconnect(physicsClientId=self._kin_client)
             self._kin_client = -1
+
+
+def check_profile(profile: RobotProfile | str) -> str:
+    """Check that a robot profile builds a working arm; return one line saying what
+    was found (raise :class:`~creative_py.world_files.WorldFileError` naming the
+    profile's file and field otherwise).
+
+    Loads the URDF (the light and the kinematics models too), finds the arm's joints,
+    the end-effector link, the idle joints and the hand's fingers, checks that the home
+    posture lies within the joint limits and that IK reaches the home posture's tool
+    pose from mid-range (so the solver works on this arm), and measures the cost of a
+    physics step with the arm at rest (the best of three runs of 480 steps).
+    """
+    import time
+
+    from creative_py.world_files import PhysicsSettings, WorldFileError
+
+    p = load_profile(profile) if isinstance(profile, str) else profile
+    sim = Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81)))
+    try:
+        try:
+            full = _Model(sim.client, arm_urdf(p, False, "full"), p)
+            for name in p.idle:
+                if name not in full.joint:
+                    raise p.error("idle", f"{name!r} is no joint of {p.urdf_path.name}")
+            pb.removeBody(full.body, physicsClientId=sim.client)
+            arm = Arm(sim, p, mode="light")
+        except ValueError as exc:
+            if isinstance(exc, WorldFileError):
+                raise
+            raise p.error("urdf", str(exc)) from None
+        except (RuntimeError, pb.error) as exc:
+            raise p.error("urdf", f"pybullet cannot load {p.urdf_path}: {exc}") from None
+        k = arm.kin
+        home = np.array(p.home)
+        bad = [(n, v) for n, v, lo, hi in zip(p.arm_joints, home, k.arm_lower, k.arm_upper)
+               if not lo - 1e-9 <= v <= hi + 1e-9]
+        if bad:
+            raise p.error("kinematics.home", f"{bad[0][0]} = {bad[0][1]} lies outside the "
+                          "joint's limits")
+        pose = arm.gripper_pose()
+        mid = np.where(k.continuous, 0.0, (k.arm_lower + k.arm_upper) / 2)
+        q = arm.solve_ik(pose, seed=list(np.where(k.continuous, 0.0, mid)))
+        if q is None:
+            q = arm.solve_ik_global(pose)
+        if q is None:
+            raise p.error("kinematics.home", "IK does not reach the home posture's tool pose "
+                          "(check ee_link, the tool frame and the joints)")
+        best = math.inf  # the best of three 480-step runs (a shared machine is noisy)
+        for _ in range(3):
+            t0 = time.perf_counter()
+            sim.step(480)
+            best = min(best, time.perf_counter() - t0)
+        step_us = best / 480 * 1e6
+        hand = ("no hand" if p.hand is None else
+                f"{len(p.hand.joints)} fingers" + (" gear-coupled" if p.hand.gear_ratio else ""))
+        x, y, z = pose[0]
+        return (f"ok: {p.urdf_path.name} loads; {len(p.arm_joints)} arm joints"
+                + (f" ({int(k.continuous.sum())} continuous)" if k.continuous.any() else "")
+                + f", ee {p.ee_link}, {hand}, {len(p.idle)} idle joints; home reachable "
+                f"(tool at {x:.3f}, {y:.3f}, {z:.3f} m); {step_us:.0f} us per step")
+    finally:
+        sim.close()
