@@ -22,18 +22,22 @@ def _run_folder(tmp_path, name, case="hook", **options):
 
 
 def test_a_new_run_takes_the_case_from_its_command_and_records_its_profile():
+    # no profile given: the case's robot (worlds/hook_tube/case.toml names baxter); the
+    # learner's run.json records the profile, so that a resume keeps it
     args, case, profile, command = plan(["--", "run", "hook", "--backend", "ros"])
-    assert (case, profile, command) == ("hook", "baxter", ["run", "hook", "--backend", "ros"])
+    assert (case, profile, command) == ("hook", "baxter", ["run", "hook", "--backend", "ros",
+                                                           "--robot", "baxter"])
     _, case, profile, command = plan(["--profile", "mylab.toml", "--", "run", "hook"])
-    # the learner's run.json records the profile, so that a resume keeps it
     assert (case, profile, command) == ("hook", "mylab.toml",
-                                        ["run", "hook", "--robot-profile", "mylab.toml"])
+                                        ["run", "hook", "--robot", "mylab.toml"])
+    _, _, profile, command = plan(["--", "run", "hook", "--robot", "lab.toml"])
+    assert profile == "lab.toml" and command.count("--robot") == 1
     _, _, profile, command = plan(["--", "run", "hook", "--robot-profile", "lab.toml"])
-    assert profile == "lab.toml" and command.count("--robot-profile") == 1
+    assert profile == "lab.toml" and command.count("--robot") == 0
 
 
 def test_a_resume_takes_case_and_profile_from_the_runs_run_json(tmp_path):
-    folder = _run_folder(tmp_path, "hook-1", robot_profile="mylab.toml")
+    folder = _run_folder(tmp_path, "hook-1", robot="mylab.toml")
     _, case, profile, command = plan(["--resume", str(folder)])
     assert (case, profile, command) == ("hook", "mylab.toml",
                                         ["run", "hook", "--resume", str(folder)])
@@ -44,8 +48,8 @@ def test_a_resume_takes_case_and_profile_from_the_runs_run_json(tmp_path):
 @pytest.mark.parametrize("argv,message", [
     ([], "give the creative command after -- (or --resume DIR)"),
     (["--", "trial", "x"], "--case: the case the stand-in builds is needed"),
-    (["--profile", "a.toml", "--", "run", "hook", "--robot-profile", "b.toml"],
-     "--profile a.toml: the command's --robot-profile is 'b.toml'"),
+    (["--profile", "a.toml", "--", "run", "hook", "--robot", "b.toml"],
+     "--profile a.toml: the command's --robot is 'b.toml'"),
 ])
 def test_a_bad_command_line_is_one_line_and_exit_2(argv, message, capsys):
     with pytest.raises(LaunchError, match="^" + message.replace("(", r"\(").replace(")", r"\)")):
@@ -57,7 +61,7 @@ def test_a_bad_command_line_is_one_line_and_exit_2(argv, message, capsys):
 
 def test_a_resume_refuses_another_profile_a_command_or_a_folder_without_run_json(
         tmp_path, capsys):
-    folder = _run_folder(tmp_path, "hook-1", robot_profile="mylab.toml")
+    folder = _run_folder(tmp_path, "hook-1", robot="mylab.toml")
     with pytest.raises(LaunchError, match="recorded with the robot profile 'mylab.toml'"):
         plan(["--resume", str(folder), "--profile", "baxter"])
     with pytest.raises(LaunchError, match="give no creative command"):
@@ -70,8 +74,12 @@ def test_a_resume_refuses_another_profile_a_command_or_a_folder_without_run_json
     broken = tmp_path / "broken"
     broken.mkdir()
     (broken / "run.json").write_text('{"case": "hook", "options": {"robot_profile": 3}}')
-    with pytest.raises(LaunchError, match="field 'case' or 'options.robot_profile' is "
-                                          "missing or not text"):
+    with pytest.raises(LaunchError, match="field 'options.robot' is not text"):
+        plan(["--resume", str(broken)])
+    (broken / "run.json").write_text('{"case": "hook", "options": {"robot": "panda"}}')
+    assert plan(["--resume", str(broken)])[2] == "panda"
+    (broken / "run.json").write_text('{"case": 3, "options": {}}')
+    with pytest.raises(LaunchError, match="field 'case' or 'options' is missing"):
         plan(["--resume", str(broken)])
     (broken / "run.json").write_text("[1, 2")
     with pytest.raises(LaunchError, match=r"run.json: not JSON \("):
@@ -87,3 +95,9 @@ def test_the_resume_hint_is_the_launchers_command_when_one_started_the_learner(
     assert resume_command("hook", "runs/hook-1") == "make run BACKEND=ros RESUME=runs/hook-1"
     monkeypatch.setenv(RESUME_ENV, f"{PROG} --resume")
     assert resume_command("hook", "runs/h") == f"{PROG} --resume runs/h"
+
+
+def test_an_unknown_case_without_a_profile_is_one_line_naming_it(capsys):
+    assert main(["--", "run", "nosuchcase"]) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"{PROG}: --case nosuchcase: ") and err.count("\n") == 1
