@@ -27,9 +27,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from recording import add_output_options, output_path
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-RESULTS = HERE / "results" / "robots_cases.json"
+TRACKED = "robots_cases.json"
 CREATIVE = Path(sys.executable).parent / "creative"
 
 
@@ -65,8 +67,11 @@ def step_cost(robot: str) -> float | None:
     return float(m.group(1)) if m else None
 
 
-def write(out: Path, steps: dict, runs: dict) -> None:
-    """Write the record."""
+def write(out: Path | None, steps: dict, runs: dict) -> None:
+    """Write the record (nowhere without --out or --record)."""
+    if out is None:
+        return
+    out.parent.mkdir(parents=True, exist_ok=True)
     out.write_text(json.dumps({
         "bench": "robots_cases", "machine": f"{platform.node()} ({platform.machine()}), "
         "shared 2-core", "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
@@ -77,10 +82,12 @@ def main() -> int:
     """Run the pairs and write the record; return 1 if a run failed."""
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--robots", nargs="+", default=["baxter", "panda"])
+    ap.add_argument("--robots", nargs="+", default=["baxter", "panda"],
+                    help="robot profiles to run every case on (default: baxter panda)")
     ap.add_argument("--cases", nargs="+", default=None,
                     help="case ids (default: every case that names a robot)")
-    ap.add_argument("--out", type=Path, default=RESULTS, help="the JSON file to write")
+    add_output_options(ap, TRACKED, "the table's runs (JSON; runs of robots and cases "
+                       "not run again are kept from the file)")
     ap.add_argument("--keep", type=Path, help="keep the run folders under DIR")
     ap.add_argument("--steps-only", action="store_true",
                     help="measure the robots' step costs again, running no case")
@@ -89,7 +96,8 @@ def main() -> int:
         from creative_py.case import load_cases
 
         args.cases = sorted(c for c, m in load_cases().items() if m.robot)
-    old = json.loads(args.out.read_text()) if args.out.exists() else {}
+    target = output_path(args, TRACKED)
+    old = json.loads(target.read_text()) if target and target.exists() else {}
     runs, steps = dict(old.get("runs", {})), dict(old.get("step_us", {}))
     base = args.keep or Path(tempfile.mkdtemp(prefix="robots-cases-"))
     failed = []
@@ -109,12 +117,16 @@ def main() -> int:
                 failed.append(f"{robot}-{case}")
                 runs[f"{robot}-{case}"] = {"robot": robot, "error":
                                            (proc.stderr.strip().splitlines() or [""])[-1]}
-                print(f"{robot} {case}: exit {proc.returncode}", flush=True)
+                print(f"robot {robot}, case {case}: the run failed (exit "
+                      f"{proc.returncode})", flush=True)
                 continue
             runs[f"{robot}-{case}"] = record(folders[-1], wall)
-            print(f"{robot} {case}: {wall:.0f} s, {folders[-1]}", flush=True)
-            write(args.out, steps, runs)
-    write(args.out, steps, runs)
+            print(f"robot {robot}, case {case}: {wall:.0f} s of wall time, run folder "
+                  f"{folders[-1]}", flush=True)
+            write(target, steps, runs)
+    write(target, steps, runs)
+    print(f"figures written to {target}" if target else "figures not written (give --out "
+          f"FILE, or --record to update the tracked bench/results/{TRACKED})")
     if args.keep is None:
         shutil.rmtree(base, ignore_errors=True)
     if failed:

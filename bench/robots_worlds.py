@@ -27,9 +27,11 @@ import tempfile
 import time
 from pathlib import Path
 
+from recording import add_output_options, write_figures
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
-RESULTS = HERE / "results" / "robots_worlds.json"
+TRACKED = "robots_worlds.json"
 CREATIVE = Path(sys.executable).parent / "creative"
 
 
@@ -70,13 +72,18 @@ def main() -> int:
     """Run (or record) the sweeps and write the record."""
     ap = argparse.ArgumentParser(description=__doc__,
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
-    ap.add_argument("--cases", nargs="+", default=["hook", "wedge"])
-    ap.add_argument("--robots", nargs="+", default=["baxter", "panda"])
-    ap.add_argument("--world-seeds", default="0-9")
-    ap.add_argument("--out", type=Path, default=RESULTS)
-    ap.add_argument("--record", nargs="+", type=Path, help="sweep.csv files to record")
+    ap.add_argument("--cases", nargs="+", default=["hook", "wedge"],
+                    help="case ids to sweep (default: hook wedge)")
+    ap.add_argument("--robots", nargs="+", default=["baxter", "panda"],
+                    help="robot profiles to sweep each case on (default: baxter panda)")
+    ap.add_argument("--world-seeds", default="0-9",
+                    help="the drawn worlds, as creative sweep --world-seeds takes them "
+                         "(default: 0-9)")
+    ap.add_argument("--from-csv", nargs="+", type=Path, metavar="CSV",
+                    help="read these sweep.csv files instead of running the sweeps")
+    add_output_options(ap, TRACKED, "the rows and their summary (JSON)")
     args = ap.parse_args()
-    csvs = list(args.record or [])
+    csvs = list(args.from_csv or [])
     command = (f"creative sweep CASE --world-seeds {args.world_seeds} --phase use --serial "
                "--robot ROBOT")
     if not csvs:
@@ -90,11 +97,16 @@ def main() -> int:
                 csvs += sorted(out.glob("*/sweep.csv"))
     rows = [r for c in csvs for r in rows_of(c)]
     rows.sort(key=lambda r: (r["case"], r["robot"], r["world_seed"]))
-    args.out.write_text(json.dumps({
+    figures = {
         "bench": "robots_worlds", "command": command,
         "machine": f"{platform.node()} ({platform.machine()}), shared 2-core",
         "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
-        "summary": summary(rows), "rows": rows}, indent=1) + "\n")
+        "summary": summary(rows), "rows": rows}
+    for key, line in figures["summary"].items():
+        print(f"{key}: tool-use trials median {line['use_trials_median']}, converged in "
+              f"{line['converged']} worlds, evaluation {line['eval_successes']} of "
+              f"{line['eval_trials']}")
+    write_figures(args, TRACKED, figures)
     return 0
 
 

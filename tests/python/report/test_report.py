@@ -413,8 +413,9 @@ def test_the_terminal_report_starts_with_the_headline(real_run):
     out = _creative("report", str(real_run)).stdout
     summary = json.loads((real_run / "summary.json").read_text())
     first = out.splitlines()[0]
+    robot = summary["options"]["robot"]     # the run records the arm it used
     assert first == f"Case {summary['case']}, strategy {summary['options']['strategy']}, " \
-                    f"seed {summary['seed']}."
+                    f"seed {summary['seed']}, robot {robot}."
     assert f"Tool-use learning: {summary['use']['trials']} trials" in out
     assert "design_volume_mm3=" not in out and "{'" not in out
 
