@@ -766,7 +766,10 @@ def robots_cases() -> str:
         ev = r.get("eval") or {}
         tools = r.get("created_tools") or []
         made = "; ".join(f"{t['name']}: {t['trial_outcome']}, "
-                         f"{_ok(t.get('eval_outcomes') or [])}, {t.get('strength')}"
+                         + (f"{_ok(t['eval_outcomes'])}, " if t.get("eval_outcomes")
+                            else "not evaluated, ")
+                         + (t.get("strength") or "no strength check" + (
+                             "" if t["trial_outcome"] == "success" else " (its trial failed)"))
                          for t in tools) or "none"
         rows.append(f"| {robot} | {case} | {r['use_trials']} ({r['use_stop']}) | "
                     f"{ev.get('successes')}/{ev.get('trials')} | {made} | "
