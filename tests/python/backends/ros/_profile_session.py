@@ -46,7 +46,8 @@ try:
 
     os.environ[ROBOT_ENV] = str(SIM_PROFILE)  # the world placed for this arm
     manifest = get_case(CASE)
-    spec = load_world(manifest).item(manifest.demonstration.tool).spec
+    world = load_world(manifest)
+    spec = world.item(manifest.demonstration.tool).spec
 
     from creative_py.backends.ros.check import check as check_interface
     from creative_py.backends.ros.client import ArmClient
@@ -69,7 +70,9 @@ try:
     from creative_py.backends.pybullet.tools import tool_kind
     from creative_py.backends.ros.standin import compose, invert
 
-    kin = Kinematics(profile)
+    from creative_py.backends.ros.backend import world_base
+
+    kin = Kinematics(profile, world_base(world))  # the arm's base where the scene puts it
     arm = LearnerArm(client, kin)
     position, quat, _ = client.pose(spec.name)
     grip = compose((position, quat), invert(tool_kind(spec).initial_grasp(spec)))
@@ -80,6 +83,7 @@ try:
     held = client.grip(True)
     moves.append(arm.move_to(((x, y, z + 0.08), attitude), speed=0.1).status)
     time.sleep(0.3)
+    out["base"] = world_base(world)
     out["pick_up"] = {"moves": moves, "stalled": held.stalled,
                       "reached_goal": held.reached_goal, "tool_before": position,
                       "tool_after": client.pose(spec.name)[0],

@@ -45,6 +45,9 @@ def test_the_standin_serves_the_panda_under_franka_names(panda):
 
 def test_the_learner_picks_the_tool_up_with_the_panda_over_ros(panda):
     pick = panda["pick_up"]
+    # the learner's kinematics and bounds stand the arm where the scene places it (the
+    # hook_tube scene's [robot.panda] base), as the stand-in does
+    assert panda["base"][0] == pytest.approx([0.35, -0.75, -0.20])
     assert pick["moves"] == ["ok"] * 4 and pick["goals_sent"] == 4
     # the fingers stopped on the tool: stalled, the travel between open and closed
     assert pick["stalled"] is True and pick["reached_goal"] is False
