@@ -16,7 +16,7 @@ CREATE ?= --demonstrate-creation
 # make run BACKEND=ros: the case on the stand-in arm over ROS 2 (make setup-ros first);
 # ROS_DOMAIN is the domain id of its private, loopback-only network namespace. PROFILE
 # (or ROBOT) names the robot profile (robots/<name>.toml or a .toml path; default
-# baxter); RESUME=DIR goes on with an interrupted or stopped run (over ROS its case,
+# the case's robot); RESUME=DIR goes on with an interrupted or stopped run (over ROS its case,
 # options and profile from DIR/run.json; otherwise give its CASE=).
 BACKEND ?=
 ROS_DOMAIN ?= 42

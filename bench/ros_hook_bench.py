@@ -17,11 +17,14 @@ outcome, reason, the oracle's value and how far the cube moved, steps, the trial
 time), the learned model and what solved the harder task; for the ros run every
 trajectory goal's round trip (sent -> accepted, first feedback, result; the result
 minus the trajectory's planned duration) and the scene set-ups; the load (``uptime``)
-before and after. Then the trial-by-trial comparison. Writes
-``bench/results/ros_hook.json``.
+before and after. Then the trial-by-trial comparison: the same experiment (phase,
+tool, variant, location and the literal tested), the pose within :data:`POSE_TOLERANCE`,
+the same outcome. Writes ``bench/results/ros_hook.json`` (the case's robot, the Baxter)
+or, with ``--robot NAME``, ``bench/results/ros_hook_NAME.json``: both runs on that robot
+profile (``--robot NAME``; over ROS the stand-in serves the profile's interface).
 
     PYTHONPATH=. <venv with the ros extra>/bin/python bench/ros_hook_bench.py \
-        [--kinds default make] [--keep DIR]
+        [--robot panda] [--kinds default make] [--keep DIR]
 """
 
 from __future__ import annotations
@@ -45,15 +48,25 @@ HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
 TRACKED = "ros_hook.json"
 KINDS = {"default": [], "make": ["--demonstrate-creation"]}
+POSE_TOLERANCE = 0.002
+"""The largest difference of a pose parameter (m or rad) for two trials' poses to count
+as the same: the learner's IK and the arm's settling differ by a fraction of this."""
+
+
+def tracked(robot: str | None) -> str:
+    """Return the tracked results file of the runs on ``robot`` (None: the case's)."""
+    return TRACKED if robot is None else f"ros_hook_{robot}.json"
 
 
 def uptime() -> str:
     return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
 
 
-def run(kind: str, backend: str, out: Path) -> dict:
-    """Run one whole hook run; return its figures (folder, wall time, log tail)."""
-    args = ["run", "hook", "--seed", "0", "--out", str(out), "--video", "none", *KINDS[kind]]
+def run(kind: str, backend: str, out: Path, robot: str | None = None) -> dict:
+    """Run one whole hook run (on ``robot``, None: the case's); return its figures
+    (folder, wall time, log tail)."""
+    args = ["run", "hook", "--seed", "0", "--out", str(out), "--video", "none", *KINDS[kind],
+            *(["--robot", robot] if robot else [])]
     env = dict(os.environ, PYTHONPATH=str(ROOT))
     goal_log = out / "goals.json"
     if backend == "ros":
@@ -85,6 +98,7 @@ def trials(folder: Path) -> list[dict]:
         v = t.get("verdict") or {}
         out.append({"trial": t["trial"], "phase": t.get("phase"), "tool": t.get("tool"),
                     "variant": t.get("variant"), "location": t.get("location"),
+                    "tested": t.get("tested"),
                     "pose": t.get("pose"), "outcome": t.get("outcome"),
                     "reason": t.get("reason"), "value": v.get("value"),
                     "moved_m": (v.get("measures") or {}).get("moved_m"),
@@ -136,11 +150,14 @@ def goal_figures(log: dict) -> dict:
 def compare(direct: list[dict], ros: list[dict]) -> list[dict]:
     rows = []
     for d, r in zip(direct, ros):
-        same = all(d[k] == r[k] for k in ("phase", "tool", "variant", "location"))
+        same = all(d.get(k) == r.get(k)
+                   for k in ("phase", "tool", "variant", "location", "tested"))
         pose_diff = (max(abs(d["pose"][k] - r["pose"][k]) for k in d["pose"])
-                     if d["pose"] and r["pose"] else None)
+                     if d["pose"] and r["pose"] and set(d["pose"]) == set(r["pose"]) else None)
         rows.append({"trial": d["trial"], "same_experiment": same,
                      "same_pose": d["pose"] == r["pose"], "pose_diff": pose_diff,
+                     "pose_within": (d["pose"] == r["pose"] or pose_diff is not None
+                                     and pose_diff <= POSE_TOLERANCE),
                      "direct": d["outcome"], "ros": r["outcome"],
                      "same_outcome": d["outcome"] == r["outcome"],
                      "moved_m": [d["moved_m"], r["moved_m"]],
@@ -150,19 +167,20 @@ def compare(direct: list[dict], ros: list[dict]) -> list[dict]:
     return rows
 
 
-def inside(kinds: list[str], keep: str | None = None) -> dict:
+def inside(kinds: list[str], keep: str | None = None, robot: str | None = None) -> dict:
     links = sorted(name for _, name in socket.if_nameindex())
     if links != ["lo"]:
         raise SystemExit(f"not in a loopback-only namespace: {links}")
     result = {"bench": "bench/ros_hook_bench.py", "machine": f"{platform.machine()}, "
               f"{os.cpu_count()} cores (shared)", "recorded": time.strftime(
                   "%Y-%m-%d %H:%M UTC", time.gmtime()),
+              "robot": robot or "the case's", "pose_tolerance": POSE_TOLERANCE,
               "namespace_links": links, "runs": {}}
     tmp = Path(keep) if keep else Path(tempfile.mkdtemp(prefix="ros_hook_"))
     tmp.mkdir(parents=True, exist_ok=True)
     try:
         for kind in kinds:
-            runs = {b: run(kind, b, tmp / f"{kind}-{b}") for b in ("direct", "ros")}
+            runs = {b: run(kind, b, tmp / f"{kind}-{b}", robot) for b in ("direct", "ros")}
             t = {b: trials(r["folder"]) for b, r in runs.items()}
             s = {b: summary(r["folder"]) for b, r in runs.items()}
             entry = {}
@@ -176,6 +194,7 @@ def inside(kinds: list[str], keep: str | None = None) -> dict:
                 "trials": [len(t["direct"]), len(t["ros"])],
                 "same_experiments": sum(r["same_experiment"] for r in rows),
                 "same_poses": sum(r["same_pose"] for r in rows),
+                "poses_within_tolerance": sum(r["pose_within"] for r in rows),
                 "largest_pose_diff": max((r["pose_diff"] for r in rows
                                           if r["pose_diff"] is not None), default=None),
                 "same_outcomes": sum(r["same_outcome"] for r in rows),
@@ -195,20 +214,30 @@ def main() -> None:
                     help="which runs: default (the run as it is) and make (with "
                          "--demonstrate-creation, as make runs it); default both")
     ap.add_argument("--keep", metavar="DIR", help="keep the run folders under DIR (new)")
+    ap.add_argument("--robot", metavar="NAME", help="run both on this robot profile "
+                    "(robots/NAME.toml; default: the case's robot) and record to "
+                    "bench/results/ros_hook_NAME.json")
     ap.add_argument("--inside", action="store_true", help=argparse.SUPPRESS)
-    add_output_options(ap, TRACKED, "the comparison of the two runs (JSON)")
+    add_output_options(ap, "ros_hook.json (ros_hook_NAME.json with --robot)",
+                       "the comparison of the two runs (JSON)")
     args = ap.parse_args()
+    if args.robot and not (ROOT / "robots" / f"{args.robot}.toml").is_file():
+        print(f"{Path(__file__).name}: option --robot: no robot profile robots/"
+              f"{args.robot}.toml", file=sys.stderr)
+        sys.exit(2)
     if args.keep and Path(args.keep).exists():
         raise SystemExit(f"--keep {args.keep}: exists already; give a new folder")
     if args.inside:
-        result = inside(args.kinds, args.keep)
+        result = inside(args.kinds, args.keep, args.robot)
         for kind, e in result["runs"].items():
             c = e["comparison"]
             print(f"{kind}: trials {c['trials']}, same experiments {c['same_experiments']}, "
+                  f"poses within {POSE_TOLERANCE * 1000:g} mm {c['poses_within_tolerance']} "
+                  f"(largest difference {c['largest_pose_diff']}), "
                   f"same outcomes {c['same_outcomes']}, same model {c['same_model']}; wall "
                   f"time {e['direct']['wall_time_s']} s direct, {e['ros']['wall_time_s']} s "
                   f"over ROS; {e['ros']['round_trip']['goals']} trajectory goals sent")
-        write_figures(args, TRACKED, result)
+        write_figures(args, tracked(args.robot), result)
         return
     for prefix in (["unshare", "-n"], ["unshare", "-rn"]):
         ok = subprocess.run([*prefix, "true"], capture_output=True).returncode == 0
@@ -221,6 +250,7 @@ def main() -> None:
                ROS_DOMAIN_ID=str(150 + os.getpid() % 50), PYTHONPATH=str(ROOT))
     script = " ".join(["ip link set lo up && exec", sys.executable, str(Path(__file__).resolve()),
                        "--inside", "--kinds", *args.kinds,
+                       *(["--robot", args.robot] if args.robot else []),
                        *(["--out", str(Path(args.out).resolve())] if args.out else []),
                        *(["--record"] if args.record else []),
                        *(["--keep", str(Path(args.keep).resolve())] if args.keep else [])])

@@ -60,15 +60,15 @@ class Connection:
     the client (:class:`ArmClient`), the learner's kinematics and arm, and the
     trainer's request and answer topics."""
 
-    def __init__(self, profile: RobotProfile, wait: float) -> None:
+    def __init__(self, profile: RobotProfile, wait: float, base: Any = None) -> None:
         from std_msgs.msg import String
 
-        self.profile = profile
+        self.profile, self.base = profile, base
         self.client = ArmClient(profile, (), name="creative_learner")
         self.kin: Optional[Kinematics] = None
         try:
             self.client.wait_for_arm(wait)
-            self.kin = Kinematics(profile)
+            self.kin = Kinematics(profile, base)
         except BaseException:
             self.close()
             raise
@@ -157,7 +157,7 @@ class Connection:
             self.client = None
 
 
-_CONNECTION: dict[str, Connection] = {}
+_CONNECTION: dict[tuple, Connection] = {}
 
 
 def profile_name() -> str:
@@ -170,9 +170,21 @@ def profile_name() -> str:
     return name
 
 
-def connection() -> Connection:
+def world_base(world: Any) -> Any:
+    """Return the arm's base pose (position, quaternion) where ``world`` places it
+    (its scene's ``[robot.NAME] base``), or None for the profile's ``[base]``."""
+    rs = getattr(getattr(world, "scene", None), "robot", None)
+    if rs is None or rs.base is None:
+        return None
+    from creative_py.backends.pybullet.arm import base_pose
+
+    return base_pose(rs.profile, *rs.base)
+
+
+def connection(world: Any = None) -> Connection:
     """Return this process's connection to the arm of the profile the environment
-    names, made on first use.
+    names, made on first use; the learner's kinematics and bounds put the arm's base
+    where ``world`` places it (:func:`world_base`).
 
     Raises
     ------
@@ -189,7 +201,9 @@ def connection() -> Connection:
     (:func:`~creative_py.backends.ros.client.discovery_warning`).
     """
     name = profile_name()
-    conn = _CONNECTION.get(name)
+    base = world_base(world)
+    key = (name, base)
+    conn = _CONNECTION.get(key)
     if conn is not None and conn.client is not None:
         return conn
     profile = load_profile(name)
@@ -202,7 +216,7 @@ def connection() -> Connection:
         raise WorldFileError(f"environment variable {WAIT_ENV}: must be a number of "
                              f"seconds, got {os.environ[WAIT_ENV]!r}") from None
     try:
-        conn = Connection(profile, wait)
+        conn = Connection(profile, wait, base)
     except ArmUnavailable as exc:
         raise ArmAbsent(f"{profile.source}: {exc}: no arm answers (start the arm or the "
                         f"stand-in first, docs/real-robot.md)") from None
@@ -215,7 +229,7 @@ def connection() -> Connection:
             "(it said: 'Please compile Fast DDS using the -DSECURITY=ON CMake option'; the "
             "PyPI wheels' is): run the learner with the lab's own ROS 2 install and SROS2, "
             "or on an isolated robot network (docs/real-robot.md, Network safety)") from None
-    _CONNECTION[name] = conn
+    _CONNECTION[key] = conn
     return conn
 
 
@@ -229,7 +243,7 @@ def _close_connections() -> None:
     path = os.environ.get(GOAL_LOG_ENV)
     if path and _CONNECTION:
         data = {name: {"goals": conn.arm.log, "scene_s": conn.scene_s}
-                for name, conn in _CONNECTION.items()}
+                for (name, _), conn in _CONNECTION.items()}
         Path(path).write_text(json.dumps(data), encoding="utf-8")
     for conn in _CONNECTION.values():
         try:
@@ -263,7 +277,7 @@ def load_world(manifest: Any) -> Any:
     bad = unsupported_skills(world)
     if bad:
         raise WorldFileError(bad[0])
-    connection()
+    connection(world)
     return world
 
 
@@ -285,7 +299,7 @@ def open_episode(world: Any, variant: str, location: int, tool: str, seed: int =
         raise WorldFileError(f"{world.variation}: the ros backend runs the world as its files "
                              "say; a drawn world (--world-seed) is not one the trainer's "
                              "scene requests can set up")
-    conn = connection()
+    conn = connection(world)
     ep = RosEpisode(conn, world, variant, location, tool, seed, pose_target, robot=robot)
     try:
         ep.set_up()

@@ -52,15 +52,16 @@ def check_points(profile: RobotProfile, start: Sequence[float],
         prev_t, prev_q = t, q
 
 
-def urdf_forward(profile: RobotProfile) -> Forward:
-    """Return the forward kinematics of the profile's URDF (the gripper's position).
+def urdf_forward(profile: RobotProfile, base=None) -> Forward:
+    """Return the forward kinematics of the profile's URDF (the gripper's world position).
 
     The pybullet backend's arm of the profile, in its kinematics client (DIRECT, no
-    scene).
+    scene), its base at ``base`` (a world's placement: position, quaternion; None: the
+    profile's ``[base]``), so that the workspace box is checked in the world frame.
     """
     from creative_py.backends.pybullet.arm import kinematics_model
 
-    model = kinematics_model(profile)
+    model = kinematics_model(profile, base)
     index = [profile.joints.index(n) for n in profile.arm_joints]
 
     def forward(q: Sequence[float]) -> Sequence[float]:

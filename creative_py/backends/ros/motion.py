@@ -55,22 +55,24 @@ EASE_STEP = 0.05
 class Kinematics:
     """The robot's kinematics on the learner's side, from the profile's URDF (no scene).
 
-    The pybullet backend's arm of the profile, in a pybullet DIRECT client of its own.
-    Joint positions are in the profile's ``[arm]`` order.
+    The pybullet backend's arm of the profile, in a pybullet DIRECT client of its own,
+    its base at ``base`` (the world's placement of the arm, ``[robot.NAME] base`` of a
+    scene: position, quaternion; None: the profile's ``[base]``). Joint positions are
+    in the profile's ``[arm]`` order.
     """
 
-    def __init__(self, profile: RobotProfile) -> None:
+    def __init__(self, profile: RobotProfile, base=None) -> None:
         from creative_py.backends.pybullet.arm import Arm
         from creative_py.backends.pybullet.core import Sim
         from creative_py.world_files import PhysicsSettings
 
         self.profile = profile
         self._sim = Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81)))
-        self._robot = Arm(self._sim, profile)
+        self._robot = Arm(self._sim, profile, base=base)
         arm = profile.arm_joints
         self._to_arm = [profile.joints.index(n) for n in arm]
         self._to_profile = [arm.index(n) for n in profile.joints]
-        self.forward_position = urdf_forward(profile)
+        self.forward_position = urdf_forward(profile, base)
 
     def ik(self, target: Pose, seed: Sequence[float]) -> Optional[list[float]]:
         """Return joint positions putting the gripper at ``target``, from ``seed``."""

@@ -19,6 +19,20 @@ def test_the_shipped_profile_names_the_stand_ins_interface():
     assert p.max_joint_speed == 0.8 and p.workspace_min[2] == -0.19
 
 
+def test_the_panda_profile_has_the_names_of_a_franka_labs_ros2_set_up():
+    # franka_ros2 with arm_id panda: the arm's joint trajectory controller, the
+    # franka_gripper node's GripperCommand (one finger's travel: half the gap), the
+    # state broadcaster's estimated external wrench
+    p = load_profile("panda")
+    assert p.joints == tuple(f"panda_joint{i}" for i in range(1, 8))
+    assert p.arm_action == "panda_arm_controller/follow_joint_trajectory"
+    assert p.gripper_action == "panda_gripper/gripper_action"
+    assert (p.gripper_joint, p.gripper_open, p.gripper_closed) == ("panda_finger_joint1", 0.04, 0.0)
+    assert p.base_frame == "panda_link0" and p.joint_states_topic == "joint_states"
+    assert p.wrench_topic == "franka_robot_state_broadcaster/external_wrench_in_stiffness_frame"
+    assert p.wrench_frame == "panda_hand_tcp"
+
+
 def _write(tmp_path, text):
     path = tmp_path / "arm.toml"
     path.write_text(text)
