@@ -16,6 +16,7 @@ import sys
 import types
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
@@ -27,6 +28,10 @@ from creative_py.simulator import (Backend, BackendError, BackendUnavailable, Ep
                                    Observation, UnknownBackend, World, backend, backend_for,
                                    backend_packages)
 from creative_py.world_files import WorldFileError
+
+NAMES = ", ".join(sorted(BACKENDS))
+"""The registry's backends as the errors list them (a new backend changes no line)."""
+NOT_A_BACKEND = "no_such_backend"
 
 MANIFEST = """\
 id = "regcase"
@@ -156,17 +161,17 @@ def test_the_manifest_s_backend_runs_the_learning_loop_s_episodes(tmp_path, fake
 
 
 def test_an_unknown_backend_is_a_field_error_of_the_manifest(tmp_path):
-    folder = _folder(tmp_path, 'backend = "mujoco"')
+    folder = _folder(tmp_path, f'backend = "{NOT_A_BACKEND}"')
     with pytest.raises(WorldFileError) as caught:
         read_manifest(folder)
     assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': must be one of "
-                                 "maniskill, pybullet, ros, got 'mujoco'")
+                                 f"{NAMES}, got '{NOT_A_BACKEND}'")
     with pytest.raises(UnknownBackend) as caught:
-        backend("mujoco", folder / "case.toml")
+        backend(NOT_A_BACKEND, folder / "case.toml")
     assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': unknown simulator "
-                                 "backend 'mujoco'; backends: maniskill, pybullet, ros")
-    with pytest.raises(UnknownBackend, match="^unknown simulator backend 'mujoco'; "):
-        backend("mujoco")
+                                 f"backend '{NOT_A_BACKEND}'; backends: {NAMES}")
+    with pytest.raises(UnknownBackend, match=f"^unknown simulator backend '{NOT_A_BACKEND}'; "):
+        backend(NOT_A_BACKEND)
 
 
 def test_a_backend_that_is_not_installed_says_what_installs_it(tmp_path, monkeypatch):
@@ -201,11 +206,11 @@ def test_a_broken_import_inside_the_project_is_not_taken_for_a_missing_install(
 
 def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatch):
     runner = CliRunner()
-    folder = _folder(tmp_path, 'backend = "mujoco"')
+    folder = _folder(tmp_path, f'backend = "{NOT_A_BACKEND}"')
     result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
     assert result.exit_code == 2
     assert result.output.strip() == (f"error: {folder / 'case.toml'}: field 'backend': must "
-                                     "be one of maniskill, pybullet, ros, got 'mujoco'")
+                                     f"be one of {NAMES}, got '{NOT_A_BACKEND}'")
     monkeypatch.setitem(BACKENDS, "core_gone", BackendEntry("creative_test_gone_backend"))
     (folder / "case.toml").write_text(MANIFEST.format(backend='backend = "core_gone"'))
     result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
@@ -216,7 +221,23 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
 
 
 def test_the_backend_packages_are_the_registry_s():
-    assert backend_packages() == {"backends.pybullet", "backends.maniskill", "backends.ros"}
+    """One package per registry entry, named after the module the entry loads (the
+    layer table has a row for each; a new backend adds its entry and its row)."""
+    import creative_py.backends
+
+    folder = Path(creative_py.backends.__file__).parent
+    packages = {f"backends.{d.name}" for d in folder.iterdir() if (d / "__init__.py").is_file()}
+    assert backend_packages() == packages       # every backend folder is registered
+    assert {"backends.pybullet", "backends.maniskill", "backends.ros"} <= packages
+
+
+@pytest.mark.parametrize("name", sorted(BACKENDS))
+def test_every_registry_entry_names_a_backend_package_and_its_installer(name):
+    entry = BACKENDS[name]
+    assert name.isidentifier() and name == name.lower()
+    assert entry.module.startswith(f"creative_py.backends.{name}")
+    assert entry.setup.startswith("make setup")
+    assert (entry.extra == "") == (entry.setup == "make setup")
 
 
 def test_a_missing_maniskill_says_the_make_target_that_installs_it(monkeypatch):

@@ -220,3 +220,30 @@ def test_lengths_and_limits_read_as_words_with_one_unit():
     assert measure_words(slip) == "grasp slip 11.5 deg (needs <= 5.7 deg; the limit: grasp slip max)"
     # An older record without the numbers: its text, lengths in mm.
     assert measure_words({"text": "moved 1.1 cm"}) == "moved 11 mm"
+
+
+# -------------------------------------------------- what every field of the record must do
+# A new field (one typed line of records/trial.py) is checked by these; no line changes.
+_FIELDS = [f for f in __import__("dataclasses").fields(TrialRecord) if f.name != "extra"]
+
+
+def _wrong_value(f) -> object:
+    """A JSON value the field's type does not admit (a dict, or text for a dict field)."""
+    text = str(f.type)
+    return "not a mapping" if text.startswith(("dict", "Union[dict")) else {"not": 1}
+
+
+@pytest.mark.parametrize("f", _FIELDS, ids=lambda f: f.name)
+def test_every_field_is_checked_and_round_trips(f):
+    """The line of a field's own value reads back equal and writes back the same; a
+    value of the wrong type is refused naming the field."""
+    base = json.loads(EVAL_LINE)
+    record = TrialRecord.from_dict(base)
+    value = getattr(record, f.name)
+    assert TrialRecord.from_json(record.to_json()) == record
+    if value is not None:
+        assert json.loads(record.to_json())[f.name] == base[f.name]
+    with pytest.raises(ValueError, match=f"field '{f.name}'"):
+        TrialRecord.from_dict({**base, f.name: _wrong_value(f)})
+    if f.metadata.get("column"):
+        assert f.metadata["column"] in [h for h, _ in trial_columns()]
