@@ -7,7 +7,9 @@ it, :meth:`TrialRecord.from_json` reads and checks it (resume, the reports, vali
 replay), and the reports take their trial columns from its fields
 (:func:`trial_columns`). A new field is one typed line here (with a ``column`` in its
 metadata when the reports should show it) and the line that fills it; nothing else
-changes.
+changes. A field the physics measures is marked :func:`measured`: the trial loop gives
+it by name (``TrialResult.measures``), and it reaches the file, and comes back on a
+replay, with no line of the learning loop.
 
 The JSON keeps the keys and meaning of every ``trials.jsonl`` written so far: the
 fields in their order, an optional field (default None) left out while None, and the
@@ -41,6 +43,16 @@ REQUIRED_KEYS: tuple[str, ...] = ("trial", "phase", "variant", "location", "tool
 
 def _column(header: str) -> dict[str, str]:
     return {"column": header}
+
+
+def measured(**metadata: Any) -> dict[str, Any]:
+    """Return the metadata of a field the physics measures (with ``column`` and the
+    rest of ``metadata``): the trial loop gives its value by the field's name
+    (:attr:`creative_py.simulator.types.TrialResult.measures`), the learning loop records
+    it as it is, and a replayed trial gives it back from its record
+    (:func:`measured_fields`). Such a field is one typed line here, ``= field(default=None,
+    metadata=measured())``, plus the code that measures it; nothing between changes."""
+    return {"measured": True, **metadata}
 
 
 @dataclass(kw_only=True)
@@ -189,6 +201,12 @@ class TrialRecord:
         if key in _field_names(type(self)):
             return getattr(self, key)
         return self.extra.get(key, default)
+
+
+def measured_fields(record_type: type = TrialRecord) -> tuple[str, ...]:
+    """Return the fields of ``record_type`` that the physics measures and the trial
+    loop gives by name (their metadata is :func:`measured`'s)."""
+    return tuple(f.name for f in fields(record_type) if f.metadata.get("measured"))
 
 
 def as_record(trial: "TrialRecord | dict[str, Any]") -> TrialRecord:
@@ -388,5 +406,6 @@ def jsonable(value: Any) -> Any:
 
 
 __all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
-           "lengths_in_mm", "limit_words", "measure_words", "reason_text", "trial_columns",
+           "lengths_in_mm", "limit_words", "measure_words", "measured", "measured_fields",
+           "reason_text", "trial_columns",
            "verdict_lines", "verdict_words"]

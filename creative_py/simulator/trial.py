@@ -79,7 +79,10 @@ def run_trial(world: World, tool: str, variant: str, location: int,
         a guard's measure of a stopped motion; ``max_tool_force_n`` (N) and
         ``tool_load`` the episode's :meth:`~creative_py.simulator.Episode.measured_load`
         once the tool action started (0.0 and None before); ``wall_time_s`` the wall
-        time from opening the episode until the trial was judged.
+        time from opening the episode until the trial was judged. A further measure
+        goes in ``measures`` under the name of the trial record's field that keeps it
+        (a field marked ``measured`` in :mod:`creative_py.records.trial`): the record
+        and a replay carry it with no other line.
     """
     from creative_py.simulator.loader import backend_for
 

@@ -33,6 +33,7 @@ from creative_py.learning.tool_use import ToolUseLearner
 from creative_py.learning.trials import (PHASE_TAGS, TaskState, TrialRunner, pose_numbers,
                                          term_text)
 from creative_py.records.folder import RunFolder, read_resume
+from creative_py.records.trial import TrialRecord, measured
 from creative_py.backends.pybullet import load_world, recorder
 from creative_py.simulator import TrialResult
 from creative_py.simulator import trial as simulator_trial
@@ -470,3 +471,39 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     assert first.shape == (60 + draw.band, 320)
     assert int((np.abs(band.astype(int).mean(axis=2) - first[:draw.band]) > 100).sum()) == 0
 
+
+
+@dataclasses.dataclass(kw_only=True)
+class _WithLift(trials.TrialRecord):
+    """The trial record with one more field the physics measures, added as a maintainer
+    would: one typed line."""
+
+    lift_m: "float | None" = dataclasses.field(default=None, metadata=measured())
+
+
+def test_a_measured_field_reaches_the_file_and_comes_back_on_a_replay(hook, tmp_path,
+                                                                      monkeypatch):
+    """A field marked measured goes from the trial loop (TrialResult.measures) to the
+    record and the line of trials.jsonl, and a replay gives it back, with no line of the
+    learning loop naming it."""
+    real = simulator_trial.run_trial
+
+    def measuring(*args, **kwargs):         # the code that measures it
+        return dataclasses.replace(real(*args, **kwargs), measures={"lift_m": 0.0125})
+
+    monkeypatch.setattr(simulator_trial, "run_trial", measuring)
+    monkeypatch.setattr(trials, "TrialRecord", _WithLift)
+    run = RunFolder.create(tmp_path, "hook", 0, "run")
+    runner = _runner(hook, run=run)
+    task, exp = _first(hook, runner)
+    rec, _vs = runner.run(exp, "eval", 1, hook.vs0, task, 0.0, label=False)
+    assert isinstance(rec, _WithLift) and rec.lift_m == 0.0125
+    line = json.loads((run.path / "trials.jsonl").read_text().splitlines()[0])
+    assert line["lift_m"] == 0.0125
+    back = _WithLift.from_dict(line)
+    got = runner._replayed(back, "hook_a1", task, exp.args[3], "eval")
+    assert got.measures == {"lift_m": 0.0125}
+    # A measure the record has no field for is refused, naming it.
+    monkeypatch.setattr(trials, "TrialRecord", TrialRecord)
+    with pytest.raises(TypeError, match="lift_m"):
+        _runner(hook).run(exp, "eval", 1, hook.vs0, task, 0.0, label=False)
