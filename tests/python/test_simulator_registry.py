@@ -351,3 +351,49 @@ def test_every_installed_backend_s_world_and_episode_have_the_protocol_s_members
     manifest = next((m for _, m in cases if m.backend == name),
                     next(m for _, m in cases if m.backend == DEFAULT_BACKEND))
     assert signature_mismatches(World, module.load_world(manifest)) == []
+
+
+@pytest.mark.parametrize("name", sorted(BACKENDS))
+def test_every_installed_backend_reads_objects_toml_with_the_one_reader(name, tmp_path):
+    """A backend's world holds the shared CatalogueItem of ``read_catalogue``
+    (simulator/catalogue.py), and a table it cannot hold is refused on the ``kind``
+    field in the reader's one line."""
+    import shutil
+
+    from creative_py.case import load_cases
+    from creative_py.simulator.catalogue import CatalogueItem
+
+    try:
+        module = backend(name)
+    except BackendError as exc:
+        pytest.skip(str(exc))
+    cases = sorted(load_cases().items())
+    manifest = next((m for _, m in cases if m.backend == name), None)
+    if manifest is None:
+        pytest.skip(f"no shipped case runs on {name}")
+    world = module.load_world(manifest)
+    assert world.items and all(type(i) is CatalogueItem for i in world.items.values())
+    folder = tmp_path / "world"
+    shutil.copytree(manifest.folder, folder)
+    objects = folder / "objects.toml"
+    objects.write_text(objects.read_text() + f'\n[[{manifest.tools_table}]]\nname = "x1"\n'
+                       'kind = "not_a_kind"\nset = "s"\n')
+    with pytest.raises(WorldFileError, match=r"objects\.toml.*'kind'"):
+        module.load_world(manifest, folder)
+
+
+def test_the_one_reader_names_the_field_a_backend_cannot_hold(tmp_path):
+    from creative_py.simulator.catalogue import read_catalogue
+
+    path = tmp_path / "objects.toml"
+    path.write_text('[[tool]]\nname = "s1"\nkind = "stick"\nset = "a"\nhandle_length = 0.3\n'
+                    'friction = 0.7\n')
+    items = read_catalogue(path, "tool", lambda spec: None)
+    assert (items["s1"].set, items["s1"].friction, items["s1"].outside_ranges) == (
+        "a", 0.7, False)
+    with pytest.raises(WorldFileError) as caught:
+        read_catalogue(path, "tool", lambda spec: f"cannot hold a {spec.kind}")
+    assert str(caught.value) == f"{path}: field 'tool[0].kind': cannot hold a stick"
+    path.write_text('[[tool]]\nname = "s1"\nkind = "stick"\nset = "a"\nfriction = 11.0\n')
+    with pytest.raises(WorldFileError, match=r"field 'tool\[0\]\.friction': must be <= 10"):
+        read_catalogue(path, "tool", lambda spec: None)
