@@ -67,7 +67,7 @@ tool. It does not run trials, label outcomes or draw worlds: :mod:`.trial` and
    guard's :class:`Verdict` as ``stop``, ``out_of_time`` with the budget's,
    ``unreachable``, ``invalid``; how the motion
    ended, never the trial's outcome), ``observe``, ``verdict`` (the case's oracle
-   measured in the simulated state: a :class:`Verdict`), ``goal_reached``, ``truth``,
+   measured in the simulated state: a :class:`Verdict`), ``truth``,
    ``sim_time``, ``steps``, ``render_time_s``, ``measured_load``. Its recorders have
    those of :class:`ClipRecorder` (a recorder that sets the simulator's state back
    to render does so itself, after the verdict). Return the value types of

@@ -160,7 +160,7 @@ def test_a_door_not_yet_released_is_measured_at_its_open_angle():
         v = ep.verdict()
         assert not v.holds and v.detail == "not released"
         assert v.value == pytest.approx(math.degrees(0.7), abs=0.5)   # open_angle
-        assert ep.goal_reached() is False
+        assert ep.verdict().holds is False
 
 
 # ------------------------------------------------------------------ guards
