@@ -60,7 +60,7 @@ def bare_finger(sim, world, variant: str, location: int, tool: str) -> bool:
             settle = 6
         (d.set_gripper(CLOSED, 2) and d.move(behind + [0, 0, 0.08])
          and d.move(behind, settle=2) and d.move(end, settle=settle, step_m=0.02))
-        return ep.goal_reached()
+        return ep.verdict().holds
 
 
 def run_figures(run: Path, recs: list[dict]) -> dict:

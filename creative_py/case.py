@@ -48,7 +48,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Optional
 
-from creative_py.backends import BACKENDS, DEFAULT_BACKEND
+from creative_py.backend_registry import BACKENDS, DEFAULT_BACKEND
 from creative_py.robots import profile_names
 from creative_py.world_files import WORLDS_ROOT, Fields, WorldFileError, load_toml
 

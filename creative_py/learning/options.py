@@ -69,7 +69,7 @@ class RunOptions:
         the version space starts from, where the ontology maps its literals
         (:mod:`creative_py.learning.prior`); None: learn from the demonstration alone.
     backend : str or None
-        A simulator backend (:data:`creative_py.backends.BACKENDS`) instead of the one
+        A simulator backend (:data:`creative_py.backend_registry.BACKENDS`) instead of the one
         the case's manifest names (``--backend ros``: the arm over ROS 2); None: the
         manifest's.
     robot : str or None

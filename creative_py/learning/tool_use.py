@@ -33,6 +33,8 @@ from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.learning.prior import Prior
 from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
+from creative_py.simulator.trial import judge
+from creative_py.simulator.types import SkillOutcome
 
 if TYPE_CHECKING:
     from creative_py.simulator import PoseTarget, World
@@ -97,7 +99,9 @@ def run_demonstration(world: World, seed: int = 0, images_dir: Optional[Path] = 
 
     The tool, variant, location, skills and pose come from the manifest's
     ``[demonstration]``. Each step's facts are what the robot perceives (cameras) and
-    feels (arm proprioception). A demonstration that fails in the physics raises
+    feels (arm proprioception). It is judged as every trial is
+    (:func:`creative_py.simulator.trial.judge`: the episode's one oracle, the one
+    outcome rule); a demonstration whose outcome is not ``success`` raises
     :class:`DemonstrationFailed` naming the manifest, or for a drawn world
     (``--world-seed``) its world seed: there is nothing to learn from. ``record`` (a
     :class:`creative_py.simulator.ClipRecorder`) keeps its poses; ``verdict()`` is
@@ -118,24 +122,29 @@ def run_demonstration(world: World, seed: int = 0, images_dir: Optional[Path] = 
                                      seed=seed, images_dir=images_dir, gui=gui,
                                      record=record, pose_target=pose_target) as ep:
         before = tuple(ep.observe().facts)
+        status, acted = SkillOutcome("ok"), False
         for name in demo.steps:
             skill = m.skill(name)
-            res = ep.run_skill(name, pose=demo.pose if skill.pose else None)
+            acted = acted or skill.tool_action
+            status = ep.run_skill(name, pose=demo.pose if skill.pose else None)
             after = tuple(ep.observe().facts)
             steps.append(DemoStep(name, m.skill_args(skill, demo.tool), before, after,
-                                  res.status))
-            if res.status != "ok":
-                raise DemonstrationFailed(f"{where}: the trainer's skill {name} ended "
-                                          f"{res.status} in the physics: {res.reason}")
+                                  status.status))
+            if not status.ok:
+                break
             before = after
-        reached = ep.goal_reached()
-        if reached and verdict is not None:
+        # A trial's judgement (simulator/trial.py): the one oracle, the one outcome rule.
+        outcome, _reason, _oracle, _asked = judge(ep, status, acted)
+        if outcome == "success" and verdict is not None:
             verdict()  # the physics is done with
-    if not reached:
+    if outcome != "success" and not status.ok:
+        raise DemonstrationFailed(f"{where}: the trainer's skill {steps[-1].skill} ended "
+                                  f"{status.status} in the physics: {status.reason}")
+    if outcome != "success":
         raise DemonstrationFailed(f"{where}: {demo.tool} at location {demo.location} did "
                                   "not reach the goal in the physics: nothing to learn from")
     return Demonstration(demo.tool, demo.variant, demo.location, demo.pose, tuple(steps),
-                         reached)
+                         True)
 
 
 @dataclass

@@ -42,7 +42,7 @@ from creative_py.learning import interrupts
 from creative_py.learning.clips import ClipKeeper
 from creative_py.learning.poses import pose_resolver
 from creative_py.records.folder import RunFolder
-from creative_py.records.trial import TrialRecord, verdict_lines
+from creative_py.records.trial import TrialRecord, measured_fields, verdict_lines
 from creative_py.simulator.trial import plain_reason, task_facts
 from creative_py.simulator.types import BackendLost
 
@@ -216,7 +216,9 @@ class TrialRunner:
             max_tool_force_n=ex.tool_load["max_force_n"] if ex.tool_load else None,
             tool_load=ex.tool_load,
             # What the physics measured against its thresholds (sim/oracles.py).
-            verdict=ex.verdict)
+            verdict=ex.verdict,
+            # The record's other measured fields, by name (records/trial.py: measured).
+            **ex.measures)
         self.trials.append(rec)
         if self.run_folder:
             self.run_folder.append_trial(rec)
@@ -371,7 +373,9 @@ class TrialRunner:
             sim_time_s=float(record.sim_time_s), wall_time_s=float(record.wall_time_s),
             render_time_s=0.0, steps=0, max_tool_force_n=record.max_tool_force_n or 0.0,
             tool_load=record.tool_load, facts_before=tuple(tuple(f) for f in record.facts),
-            verdict=record.verdict)
+            verdict=record.verdict,
+            measures={n: getattr(record, n) for n in measured_fields(type(record))
+                      if getattr(record, n) is not None})
 
     def _pose_dict(self, pose: Term) -> dict[str, float]:
         m = self.manifest

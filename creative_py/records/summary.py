@@ -8,7 +8,8 @@ fields, never the file's keys. A new figure is one typed line in its part here a
 line that fills it.
 
 Every part is a frozen dataclass of typed fields (:class:`Part`): ``from_dict`` checks
-every field's type and names the field (``create.created_tools[0].print.filament_g``)
+every field's type (:mod:`creative_py.records.checking`, the one checker of
+the trial record too) and names the field (``create.created_tools[0].print.filament_g``)
 in its error, :meth:`RunSummary.read` the file too. The JSON keeps the keys of every
 ``summary.json`` written so far:
 
@@ -26,17 +27,17 @@ reports show what they can of a damaged file).
 from __future__ import annotations
 
 import json
-import types
-import typing
 from dataclasses import dataclass, field, fields
 from pathlib import Path
-from typing import Any, Callable, ClassVar, Optional, Sequence, Union
+from typing import Any, ClassVar, Optional, Sequence, Union
 
+from creative_py.records.checking import Checked, Warn
+from creative_py.records.checking import Dropped as _Dropped
+from creative_py.records.checking import hints as _hints
+from creative_py.records.checking import typed as _typed
+from creative_py.records.checking import wrong as _wrong
 from creative_py.records.folder import write_atomic
 from creative_py.records.trial import PHASES, TrialRecord, as_record, jsonable
-
-Warn = Optional[Callable[[str], None]]
-"""Receives one sentence per dropped field; None: a wrong field raises ValueError."""
 
 SUMMARY_NAME = "summary.json"
 """The summary's file name in the run folder."""
@@ -48,7 +49,7 @@ def _omit() -> Any:
 
 
 @dataclass(frozen=True, kw_only=True)
-class Part:
+class Part(Checked):
     """A typed part of ``summary.json``: the base of every part (see the module)."""
 
     extra: dict[str, Any] = field(default_factory=dict, compare=False, repr=False)
@@ -118,11 +119,6 @@ class Part:
                 out[name] = _plain(value)
         out.update({k: v for k, v in self.extra.items() if k not in out})
         return out
-
-
-class _Dropped(Exception):
-    """A required field was missing or of the wrong type and ``warn`` said so: the part
-    it belongs to is not shown."""
 
 
 def _default(f: Any) -> Any:
@@ -642,102 +638,6 @@ def as_summary(summary: "RunSummary | dict[str, Any]", warn: Warn = None) -> Run
     if isinstance(summary, RunSummary):
         return summary
     return RunSummary.from_dict(summary, warn=warn)
-
-
-# --------------------------------------------------------------------- checking
-_HINTS: dict[type, dict[str, Any]] = {}
-
-
-def _hints(cls: type) -> dict[str, Any]:
-    if cls not in _HINTS:
-        _HINTS[cls] = typing.get_type_hints(cls)
-    return _HINTS[cls]
-
-
-def _typed(value: Any, tp: Any, name: str, warn: Warn) -> Any:
-    """Return ``value`` checked against the type ``tp`` (a part read as its class, a
-    float written as ``"nan"`` or ``"inf"`` read back as a float); raise ValueError
-    naming field ``name``. With ``warn``, a list item or mapping value of the wrong type
-    is dropped and said."""
-    origin = typing.get_origin(tp)
-    if tp is Any:
-        return value
-    if isinstance(tp, type) and issubclass(tp, Part):
-        return tp.from_dict(value, name, warn)
-    if origin in (Union, types.UnionType):
-        options = typing.get_args(tp)
-        if value is None and type(None) in options:
-            return None
-        options = tuple(o for o in options if o is not type(None))
-        if len(options) == 1:  # Optional[X]: X's own error, naming the inner field
-            return _typed(value, options[0], name, warn)
-        for option in options:
-            try:
-                return _typed(value, option, name, warn)
-            except ValueError:
-                pass
-        raise _wrong(name, value, tp)
-    if tp is float:
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return value  # an int stays one: the file is written back as it was read
-        if isinstance(value, str) and value in ("nan", "inf", "-inf"):
-            return float(value)
-        raise _wrong(name, value, tp)
-    if tp is int:
-        if isinstance(value, int) and not isinstance(value, bool):
-            return value
-        raise _wrong(name, value, tp)
-    if tp in (str, bool):
-        if isinstance(value, tp):
-            return value
-        raise _wrong(name, value, tp)
-    if origin is list:
-        if not isinstance(value, list):
-            raise _wrong(name, value, tp)
-        (item,) = typing.get_args(tp) or (Any,)
-        out = []
-        for i, v in enumerate(value):
-            try:
-                out.append(_typed(v, item, f"{name}[{i}]", warn))
-            except _Dropped:
-                continue
-            except ValueError as exc:
-                if warn is None:
-                    raise
-                warn(f"{exc}; not shown")
-        return out
-    if origin is dict:
-        if not isinstance(value, dict):
-            raise _wrong(name, value, tp)
-        _key, item = typing.get_args(tp) or (Any, Any)
-        out_map = {}
-        for k, v in value.items():
-            try:
-                out_map[k] = _typed(v, item, f"{name}.{k}", warn)
-            except ValueError as exc:
-                if warn is None:
-                    raise
-                warn(f"{exc}; not shown")
-        return out_map
-    raise TypeError(f"field {name!r}: type {tp} is not one a summary can check")
-
-
-def _wrong(name: str, value: Any, tp: Any) -> ValueError:
-    what = f"field {name!r}: " if name else ""
-    if isinstance(tp, type) and issubclass(tp, Part):
-        return ValueError(f"{what}{value!r} is not a JSON object")
-    return ValueError(f"{what}{value!r} is not of type {_type_name(tp)}")
-
-
-def _type_name(tp: Any) -> str:
-    if typing.get_origin(tp) in (Union, types.UnionType):
-        return " or ".join(_type_name(t) for t in typing.get_args(tp)
-                           if t is not type(None))
-    if isinstance(tp, type) and issubclass(tp, Part):
-        return "object"
-    if typing.get_origin(tp) is not None:
-        return str(tp).replace("typing.", "")
-    return getattr(tp, "__name__", None) or str(tp).replace("typing.", "")
 
 
 __all__ = ["CatalogueEntry", "CreateSummary", "CreatedToolSummary", "Demonstration",

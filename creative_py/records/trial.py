@@ -1,12 +1,15 @@
 """One trial as a run records it: :class:`TrialRecord`, one line of ``trials.jsonl``.
 
-The record is the single owner of that line's format. The learning loop fills it
+The record is the single owner of that line's format; its fields are checked by the
+records' one type checker (:mod:`creative_py.records.checking`). The learning loop fills it
 (:class:`creative_py.learning.trials.TrialRunner`), :meth:`TrialRecord.to_json` writes
 it, :meth:`TrialRecord.from_json` reads and checks it (resume, the reports, validated
 replay), and the reports take their trial columns from its fields
 (:func:`trial_columns`). A new field is one typed line here (with a ``column`` in its
 metadata when the reports should show it) and the line that fills it; nothing else
-changes.
+changes. A field the physics measures is marked :func:`measured`: the trial loop gives
+it by name (``TrialResult.measures``), and it reaches the file, and comes back on a
+replay, with no line of the learning loop.
 
 The JSON keeps the keys and meaning of every ``trials.jsonl`` written so far: the
 fields in their order, an optional field (default None) left out while None, and the
@@ -19,10 +22,11 @@ from __future__ import annotations
 import json
 import math
 import re
-import types
 import typing
 from dataclasses import dataclass, field, fields
 from typing import Any, Callable, Union
+
+from creative_py.records.checking import hints, typed
 
 TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
 """Outcomes of a trial: ``success`` / ``failure`` (the goal was or was not reached),
@@ -39,6 +43,16 @@ REQUIRED_KEYS: tuple[str, ...] = ("trial", "phase", "variant", "location", "tool
 
 def _column(header: str) -> dict[str, str]:
     return {"column": header}
+
+
+def measured(**metadata: Any) -> dict[str, Any]:
+    """Return the metadata of a field the physics measures (with ``column`` and the
+    rest of ``metadata``): the trial loop gives its value by the field's name
+    (:attr:`creative_py.simulator.types.TrialResult.measures`), the learning loop records
+    it as it is, and a replayed trial gives it back from its record
+    (:func:`measured_fields`). Such a field is one typed line here, ``= field(default=None,
+    metadata=measured())``, plus the code that measures it; nothing between changes."""
+    return {"measured": True, **metadata}
 
 
 @dataclass(kw_only=True)
@@ -165,10 +179,10 @@ class TrialRecord:
         if missing:
             raise ValueError(f"lacks {', '.join(missing)} (field {missing[0]!r} is required)")
         known = {f.name for f in fields(cls)} - {"extra"}
-        hints = _hints(cls)
+        field_types = hints(cls)
         values = {}
         for name in known & data.keys():
-            values[name] = _typed(data[name], hints[name], name)
+            values[name] = typed(data[name], field_types[name], name)
         extra = {k: v for k, v in data.items() if k not in known}
         return cls(**values, extra=extra)
 
@@ -187,6 +201,12 @@ class TrialRecord:
         if key in _field_names(type(self)):
             return getattr(self, key)
         return self.extra.get(key, default)
+
+
+def measured_fields(record_type: type = TrialRecord) -> tuple[str, ...]:
+    """Return the fields of ``record_type`` that the physics measures and the trial
+    loop gives by name (their metadata is :func:`measured`'s)."""
+    return tuple(f.name for f in fields(record_type) if f.metadata.get("measured"))
 
 
 def as_record(trial: "TrialRecord | dict[str, Any]") -> TrialRecord:
@@ -354,81 +374,19 @@ def cell_text(value: Any) -> str:
 
 
 # --------------------------------------------------------------------- checking
-_HINTS: dict[type, dict[str, Any]] = {}
-
-
-def _hints(cls: type) -> dict[str, Any]:
-    if cls not in _HINTS:
-        _HINTS[cls] = typing.get_type_hints(cls)
-    return _HINTS[cls]
-
-
 def _field_names(cls: type) -> set[str]:
     return {f.name for f in fields(cls)} - {"extra"}
 
 
 def _validate(record: TrialRecord) -> None:
-    hints = _hints(type(record))
+    field_types = hints(type(record))
     for f in fields(record):
-        _typed(getattr(record, f.name), hints[f.name], f.name, convert=False)
+        typed(getattr(record, f.name), field_types[f.name], f.name, convert=False)
     if record.outcome not in TRIAL_OUTCOMES:
         raise ValueError(f"field 'outcome': {record.outcome!r} is not one of "
                          f"{', '.join(TRIAL_OUTCOMES)}")
     if record.phase not in PHASES:
         raise ValueError(f"field 'phase': {record.phase!r} is not one of {', '.join(PHASES)}")
-
-
-def _typed(value: Any, tp: Any, name: str, convert: bool = True) -> Any:
-    """Return ``value`` checked against the type ``tp`` (a float written as ``"nan"``
-    or ``"inf"`` read back as a float); raise ValueError naming field ``name``."""
-    origin = typing.get_origin(tp)
-    if tp is Any:
-        return value
-    if origin in (Union, types.UnionType):
-        for option in typing.get_args(tp):
-            try:
-                return _typed(value, option, name, convert)
-            except ValueError:
-                pass
-        raise _wrong(name, value, tp)
-    if tp is type(None):
-        if value is None:
-            return value
-        raise _wrong(name, value, tp)
-    if tp is float:
-        if isinstance(value, (int, float)) and not isinstance(value, bool):
-            return value  # an int stays one: the line is written back as it was read
-        if convert and isinstance(value, str) and value in ("nan", "inf", "-inf"):
-            return float(value)
-        raise _wrong(name, value, tp)
-    if tp is int:
-        if isinstance(value, int) and not isinstance(value, bool):
-            return value
-        raise _wrong(name, value, tp)
-    if tp in (str, bool):
-        if isinstance(value, tp):
-            return value
-        raise _wrong(name, value, tp)
-    if origin is list:
-        if not isinstance(value, list):
-            raise _wrong(name, value, tp)
-        (item,) = typing.get_args(tp) or (Any,)
-        return [_typed(v, item, name, convert) for v in value]
-    if origin is dict:
-        if not isinstance(value, dict):
-            raise _wrong(name, value, tp)
-        key, item = typing.get_args(tp) or (Any, Any)
-        return {_typed(k, key, name, convert): _typed(v, item, name, convert)
-                for k, v in value.items()}
-    raise TypeError(f"field {name!r}: type {tp} is not one a trial record can check")
-
-
-def _wrong(name: str, value: Any, tp: Any) -> ValueError:
-    return ValueError(f"field {name!r}: {value!r} is not of type {_type_name(tp)}")
-
-
-def _type_name(tp: Any) -> str:
-    return getattr(tp, "__name__", None) or str(tp).replace("typing.", "")
 
 
 def jsonable(value: Any) -> Any:
@@ -448,5 +406,6 @@ def jsonable(value: Any) -> Any:
 
 
 __all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
-           "lengths_in_mm", "limit_words", "measure_words", "reason_text", "trial_columns",
+           "lengths_in_mm", "limit_words", "measure_words", "measured", "measured_fields",
+           "reason_text", "trial_columns",
            "verdict_lines", "verdict_words"]

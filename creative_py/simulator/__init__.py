@@ -35,7 +35,7 @@ Modules:
                 values, the redraws) and ``apply_drawn``
 ``loader``      ``backend(name)``, ``backend_for(manifest)``: the manifest's
                 ``backend`` name to its module, imported on first use (the names:
-                :data:`creative_py.backends.BACKENDS`)
+                :data:`creative_py.backend_registry.BACKENDS`)
 
 Backends: ``pybullet`` (:mod:`creative_py.backends.pybullet`, the default and the reference) and
 ``maniskill`` (:mod:`creative_py.backends.maniskill`, ManiSkill3 on SAPIEN, installed with
@@ -67,7 +67,7 @@ tool. It does not run trials, label outcomes or draw worlds: :mod:`.trial` and
    guard's :class:`Verdict` as ``stop``, ``out_of_time`` with the budget's,
    ``unreachable``, ``invalid``; how the motion
    ended, never the trial's outcome), ``observe``, ``verdict`` (the case's oracle
-   measured in the simulated state: a :class:`Verdict`), ``goal_reached``, ``truth``,
+   measured in the simulated state: a :class:`Verdict`), ``truth``,
    ``sim_time``, ``steps``, ``render_time_s``, ``measured_load``. Its recorders have
    those of :class:`ClipRecorder` (a recorder that sets the simulator's state back
    to render does so itself, after the verdict). Return the value types of
@@ -80,7 +80,7 @@ tool. It does not run trials, label outcomes or draw worlds: :mod:`.trial` and
    ``held``, each object's catalogue facts exactly as its kind's ``catalogue_facts()``
    gives them), so the engine reads them as it reads the pybullet backend's.
 6. Register it: one line ``"<name>": BackendEntry("creative_py.backends.<name>",
-   extra=..., setup=...)`` in :data:`creative_py.backends.BACKENDS` (``extra``: the
+   extra=..., setup=...)`` in :data:`creative_py.backend_registry.BACKENDS` (``extra``: the
    ``pyproject.toml`` optional dependencies it needs; ``setup``: the make target that
    installs them, named in the error when they are missing). A case chooses it with ``backend = "<name>"`` in its ``case.toml``.
 7. Test it as ``tests/python/backends/pybullet/`` tests the pybullet one: a case's

@@ -1,14 +1,77 @@
 """What every backend's world does with its catalogue, written once.
 
-A backend's ``World`` (a frozen dataclass with ``items``: ``name -> entry``, each entry
-a dataclass with a ``spec``) subclasses :class:`CatalogueWorld` and gets the
-protocol's ``catalogue``, ``item``, ``with_spec`` and ``with_catalogue`` from it.
+:func:`read_catalogue` is the one reader of a world's ``objects.toml`` for every
+backend: each ``[[<table>]]`` a :class:`CatalogueItem` (the tool kind's spec, its set,
+friction and ``outside_ranges``), each error one line naming the file and the field; a
+backend says only which specs it can hold (``holds``). A backend's ``World`` (a frozen
+dataclass with ``items``: ``name -> CatalogueItem``) subclasses :class:`CatalogueWorld`
+and gets the protocol's ``catalogue``, ``item``, ``with_spec`` and ``with_catalogue``
+from it.
 """
 
 from __future__ import annotations
 
-from dataclasses import replace
-from typing import Any, Mapping, Sequence
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import Any, Callable, Mapping, Optional, Sequence
+
+from creative_py.kinds import spec_from_dict
+from creative_py.world_files import Fields, WorldFileError, load_toml
+
+FRICTION = (0.0, 10.0)
+"""Bounds of a catalogued object's friction coefficient."""
+
+
+@dataclass(frozen=True)
+class CatalogueItem:
+    """An available object: its spec (a tool kind's), set name, friction, mass (kg,
+    None: from its volume; the spec's own for a catalogued object) and, for a created
+    tool, the URDF file written for it."""
+
+    spec: Any
+    set: str
+    friction: float = 0.5
+    urdf: Optional[Path] = None
+    outside_ranges: bool = False
+    """Set by ``outside_ranges = true`` in objects.toml: the user knows a dimension lies
+    outside the ontology's qualitative ranges (a run refuses such an object otherwise)."""
+    mass: Optional[float] = None
+
+
+def read_catalogue(path: Path, table: str,
+                   holds: Callable[[Any], Optional[str]]) -> dict[str, CatalogueItem]:
+    """Return ``name -> CatalogueItem`` of the ``[[table]]`` tables of ``objects.toml``
+    at ``path``, in the file's order.
+
+    ``holds(spec)`` is the backend's word on a spec: None when it can hold it, else why
+    not (the error of the object's ``kind`` field). Raises WorldFileError naming the
+    file and the field: an unknown kind or a bad field of its spec, a friction outside
+    :data:`FRICTION`, a name used twice, no table at all.
+    """
+    f = Fields(load_toml(path), path)
+    items: dict[str, CatalogueItem] = {}
+    for tf in f.tables(table):
+        data = dict(tf.data)
+        obj_set = tf.str("set")
+        friction = tf.float("friction", 0.5, minimum=FRICTION[0], maximum=FRICTION[1])
+        outside = tf.bool("outside_ranges", False)
+        for k in ("set", "friction", "outside_ranges"):
+            data.pop(k, None)
+        try:
+            spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
+        except ValueError as exc:
+            raise WorldFileError(str(exc)) from None
+        why = holds(spec)
+        if why is not None:
+            raise tf.error("kind", why)
+        if spec.name in items:
+            raise tf.error("name", f"object name {spec.name!r} is used twice")
+        items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside,
+                                         mass=spec.mass)
+    f.done()
+    if not items:
+        raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")
+    return items
 
 
 class CatalogueWorld:

@@ -1,6 +1,6 @@
 """The backend loader: from a manifest's ``backend = "<name>"`` to the module.
 
-The names and modules are the registry :data:`creative_py.backends.BACKENDS` (beside
+The names and modules are the registry :data:`creative_py.backend_registry.BACKENDS` (beside
 the backends, importing none; the manifest reader refuses an unknown name); a backend's module is
 imported only when a case names it, so a machine without a backend's optional
 dependencies runs every other case.
@@ -12,7 +12,7 @@ import importlib
 from pathlib import Path
 from typing import TYPE_CHECKING, Optional, cast
 
-from creative_py.backends import BACKENDS, DEFAULT_BACKEND
+from creative_py.backend_registry import BACKENDS, DEFAULT_BACKEND
 from creative_py.world_files import WorldFileError
 
 if TYPE_CHECKING:
@@ -25,7 +25,7 @@ class BackendError(WorldFileError):
 
 
 class UnknownBackend(BackendError):
-    """No backend of that name is registered (:data:`creative_py.backends.BACKENDS`)."""
+    """No backend of that name is registered (:data:`creative_py.backend_registry.BACKENDS`)."""
 
 
 class BackendUnavailable(BackendError):
@@ -38,7 +38,7 @@ def backend(name: str = DEFAULT_BACKEND, where: Optional[Path | str] = None) -> 
     Parameters
     ----------
     name : str
-        A name of :data:`creative_py.backends.BACKENDS` (``pybullet``, ``maniskill``).
+        A name of :data:`creative_py.backend_registry.BACKENDS` (``pybullet``, ``maniskill``).
     where : Path or str or None
         The file that named it (a ``case.toml``), for the error messages.
 

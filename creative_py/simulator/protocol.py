@@ -216,10 +216,6 @@ class Episode(Protocol):
         holds (``holds``). Raise ValueError or ArithmeticError when the state has
         nothing finite to measure (a blow-up)."""
 
-    def goal_reached(self) -> bool:
-        """Return whether the world's success oracle judges the goal reached in the
-        simulated state now (the physics is the oracle; :meth:`verdict`'s ``holds``)."""
-
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
         """Return the ground truth ``name -> (x, y, z, yaw)`` (m, rad, world frame) of
         the tracked objects and the tool (its frame): the trial's final poses, for

@@ -126,8 +126,6 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueR
     tables = [dict(world.location_values(i)) for i in world.locations]
     _check_value_bounds(world, ranges)
     m = world.manifest
-    narrow = {f: (lo, hi) for f, lo, hi in m.catalogue_bounds}
-    by_value = {(f, v): (lo, hi) for f, v, lo, hi in m.catalogue_value_bounds}
     rng = np.random.default_rng(seed)
     catalogue = world.catalogue
     names = list(catalogue)
@@ -136,42 +134,70 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueR
     for name in names:
         if name == m.demonstration.tool:
             continue
-        spec = catalogue[name]
-        fields = spec.FACT_FIELDS
-        todo = []
-        for fact, (lo, hi, bounds, value) in sorted(ranges.get(name, {}).items()):
-            if fact not in fields:
-                continue
-            a, b = narrow.get(fields[fact], (lo, hi))
-            c, d = by_value.get((fields[fact], value), (a, b))
-            todo.append((fact, (max(lo, a, c), min(hi, b, d), bounds, (lo, hi, bounds))))
-        if not todo:
-            continue
-        for attempt in range(attempts):
-            values = {}
-            for fact, (lo, hi, bounds, own) in todo:
-                if lo > hi:
-                    raise ValueError(f"{m.folder / 'case.toml'}: "
-                                     f"[randomise.catalogue.{fields[fact]}] leaves {name} "
-                                     f"no number in its own range {list(own[:2])}")
-                x = round(float(rng.uniform(lo, hi)), 4)
-                while not (_inside(x, own) and lo <= x <= hi):
-                    x = round(float(rng.uniform(lo, hi)), 4)
-                values[fields[fact]] = x
-            drawn = spec.redrawn(values)
-            if keeps is None or keeps(name, drawn):
-                objects[name] = {f: getattr(drawn, f) for f in sorted(set(fields.values()))
-                                 if getattr(drawn, f) != getattr(spec, f)}
-                break
-        else:
-            raise ValueError(f"world seed {seed}: {name}: no draw in {attempts} attempts "
-                             f"keeps its qualitative values")
-    demo = m.demonstration
+        todo = _object_ranges(m, catalogue[name], ranges.get(name, {}))
+        if todo:
+            objects[name] = _draw_object(m, seed, name, catalogue[name], todo, rng, keeps,
+                                         attempts)
     locations = [_jittered(world, i, tables[i - 1], rng) for i in world.locations]
     drawn = {"seed": int(seed), "order": order, "objects": objects, "locations": locations,
              "redraws": 0}
     if demonstrates is None:
         return drawn
+    return _demonstrated(world, drawn, tables, rng, demonstrates, redraws)
+
+
+def _object_ranges(m: Any, spec: Any, facts: Mapping[str, ValueRange]) -> list[tuple]:
+    """Return ``(fact, (low, high, bounds, own range))`` of each number of a catalogued
+    object to draw, facts in name order: its own qualitative range narrowed by the
+    manifest's ``[randomise.catalogue]`` for the field and for the object's value."""
+    narrow = {f: (lo, hi) for f, lo, hi in m.catalogue_bounds}
+    by_value = {(f, v): (lo, hi) for f, v, lo, hi in m.catalogue_value_bounds}
+    fields = spec.FACT_FIELDS
+    todo = []
+    for fact, (lo, hi, bounds, value) in sorted(facts.items()):
+        if fact not in fields:
+            continue
+        a, b = narrow.get(fields[fact], (lo, hi))
+        c, d = by_value.get((fields[fact], value), (a, b))
+        todo.append((fact, (max(lo, a, c), min(hi, b, d), bounds, (lo, hi, bounds))))
+    return todo
+
+
+def _draw_object(m: Any, seed: int, name: str, spec: Any, todo: list[tuple],
+                 rng: np.random.Generator, keeps: Optional[Callable[[str, Any], bool]],
+                 attempts: int) -> dict[str, float]:
+    """Return the drawn numbers (``spec field -> value``, those that changed) of the
+    catalogued object ``name``: each inside its range of ``todo``, rounded to 0.1 mm,
+    drawn again until ``keeps`` accepts the object, at most ``attempts`` times."""
+    fields = spec.FACT_FIELDS
+    for _attempt in range(attempts):
+        values = {}
+        for fact, (lo, hi, bounds, own) in todo:
+            if lo > hi:
+                raise ValueError(f"{m.folder / 'case.toml'}: "
+                                 f"[randomise.catalogue.{fields[fact]}] leaves {name} "
+                                 f"no number in its own range {list(own[:2])}")
+            x = round(float(rng.uniform(lo, hi)), 4)
+            while not (_inside(x, own) and lo <= x <= hi):
+                x = round(float(rng.uniform(lo, hi)), 4)
+            values[fields[fact]] = x
+        drawn = spec.redrawn(values)
+        if keeps is None or keeps(name, drawn):
+            return {f: getattr(drawn, f) for f in sorted(set(fields.values()))
+                    if getattr(drawn, f) != getattr(spec, f)}
+    raise ValueError(f"world seed {seed}: {name}: no draw in {attempts} attempts "
+                     f"keeps its qualitative values")
+
+
+def _demonstrated(world: World, drawn: dict[str, Any], tables: list[dict[str, Any]],
+                  rng: np.random.Generator, demonstrates: Callable[[dict[str, Any]], bool],
+                  redraws: int) -> dict[str, Any]:
+    """Return ``drawn`` once ``demonstrates`` says the demonstration reaches the goal in
+    it, its location drawn again (``rng`` going on) at most ``redraws`` times; else
+    ValueError naming the world seed."""
+    m = world.manifest
+    demo = m.demonstration
+    locations = drawn["locations"]
     if not m.location_jitter:
         redraws = 0  # nothing to draw again
     for n in range(redraws + 1):
@@ -181,10 +207,10 @@ def draw_world(world: World, seed: int, ranges: Mapping[str, Mapping[str, ValueR
             locations[demo.location - 1] = _jittered(world, demo.location,
                                                      tables[demo.location - 1], rng)
             drawn["redraws"] = n + 1
-    raise ValueError(f"world seed {seed}: the demonstration ({demo.tool} at location "
-                     f"{demo.location}) failed in the physics in {redraws + 1} draws of "
-                     f"location {demo.location} (its [randomise.location] jitter of "
-                     f"{m.folder / 'case.toml'} may need narrowing)")
+    raise ValueError(f"world seed {drawn['seed']}: the demonstration ({demo.tool} at "
+                     f"location {demo.location}) failed in the physics in {redraws + 1} "
+                     f"draws of location {demo.location} (its [randomise.location] jitter "
+                     f"of {m.folder / 'case.toml'} may need narrowing)")
 
 
 def _jittered(world: World, location: int, table: Mapping[str, Any],

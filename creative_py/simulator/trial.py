@@ -15,6 +15,8 @@ ending means, what the result holds) is decided here, once, for every backend::
                   benchmark: ``by_hand``, ``timings``, no observation)
 ``trial_outcome`` what each way of ending a trial means: the one place (a motion
                   out of steps or time included)
+``judge``         the oracle asked and the outcome given: every trial's, the
+                  demonstration's too
 ``verdict_data``  a trial's measured verdict as JSON-ready data
 ``task_facts``    what the robot perceives of a task before acting, observed once per
                   task through the case's backend (the planner's and the size model's
@@ -79,7 +81,10 @@ def run_trial(world: World, tool: str, variant: str, location: int,
         a guard's measure of a stopped motion; ``max_tool_force_n`` (N) and
         ``tool_load`` the episode's :meth:`~creative_py.simulator.Episode.measured_load`
         once the tool action started (0.0 and None before); ``wall_time_s`` the wall
-        time from opening the episode until the trial was judged.
+        time from opening the episode until the trial was judged. A further measure
+        goes in ``measures`` under the name of the trial record's field that keeps it
+        (a field marked ``measured`` in :mod:`creative_py.records.trial`): the record
+        and a replay carry it with no other line.
     """
     from creative_py.simulator.loader import backend_for
 
@@ -159,21 +164,7 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
             timings[f"{skill.name}_s"] = time.perf_counter() - t0
         if not status.ok:
             break
-    # The oracle is asked when the goal can have been reached: every skill ran, or
-    # the tool acted until it was stopped or ran out of time (a physics blow-up leaves
-    # no state to ask).
-    asked = status.ok or (acted and status.status in STOPPED)
-    # The oracle measures every trial (the measure is reported); it decides only when
-    # asked. A blow-up may leave nothing finite to measure.
-    try:
-        oracle: Optional[Verdict] = ep.verdict()
-    except (ValueError, ArithmeticError) as exc:
-        if asked:
-            raise
-        log.debug("no oracle measure after %s: %s", status.status, exc)
-        oracle = None
-    reached = asked and oracle is not None and oracle.holds
-    outcome, reason = trial_outcome(status, acted, reached)
+    outcome, reason, oracle, asked = judge(ep, status, acted)
     if observe and outcome == "blocked":
         # What the robot sees where the motion stopped: the catalogue and the task's
         # facts still describe the trial (a planned example needs them).
@@ -187,6 +178,31 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
         outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
     return Played(outcome, reason, tuple(facts), final, truth, acted,
                   verdict_data(oracle, asked, status.stop))
+
+
+def judge(ep: Episode, status: SkillOutcome, acted: bool
+          ) -> tuple[str, str, Optional[Verdict], bool]:
+    """Return ``(outcome, reason, oracle, asked)`` of a trial whose last skill ended
+    ``status``: the episode's oracle measured (:meth:`Episode.verdict`, the one oracle
+    of every backend) and :func:`trial_outcome`'s judgement; the demonstration is
+    judged by the same rule (:func:`creative_py.learning.tool_use.run_demonstration`).
+
+    The oracle is asked when the goal can have been reached: every skill ran, or the
+    tool acted until it was stopped or ran out of time. It measures every trial (the
+    measure is reported) but decides only when asked; a physics blow-up may leave
+    nothing finite to measure (``oracle`` None; the error is raised when asked).
+    """
+    asked = status.ok or (acted and status.status in STOPPED)
+    try:
+        oracle: Optional[Verdict] = ep.verdict()
+    except (ValueError, ArithmeticError) as exc:
+        if asked:
+            raise
+        log.debug("no oracle measure after %s: %s", status.status, exc)
+        oracle = None
+    reached = asked and oracle is not None and oracle.holds
+    outcome, reason = trial_outcome(status, acted, reached)
+    return outcome, reason, oracle, asked
 
 
 def verdict_data(oracle: Optional[Verdict], asked: bool,

@@ -302,6 +302,11 @@ class TrialResult:
         (:func:`creative_py.simulator.trial.verdict_data`): the oracle's quantity, value,
         threshold, unit, relation and judgement (measured in every trial, ``asked``
         when the outcome rests on it) and, for a motion a guard stopped, ``stop``.
+    measures : dict
+        Further measures of the trial, each by the name of the trial record's field
+        that keeps it (a field marked ``measured`` in
+        :mod:`creative_py.records.trial`): the record takes them as they are (checked
+        by its type) and a replayed trial gives them back.
     """
 
     case: str
@@ -322,6 +327,7 @@ class TrialResult:
     tool_load: dict[str, Any] | None = None
     facts_before: tuple[Fact, ...] = ()
     verdict: dict[str, Any] | None = None
+    measures: dict[str, Any] = field(default_factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
         """Return the result as plain JSON-ready data (tuples become lists)."""

@@ -17,7 +17,12 @@ import pytest
 from creative_py.case import (CaseManifest, DemonstrationSpec, LocationJitter, PoseParam,
                               SkillBinding, Variant, broken_cases, case_index, get_case,
                               load_cases, manifest_of_folder, read_manifest)
+from creative_py.backends import BACKENDS
 from creative_py.world_files import WorldFileError
+
+BACKEND_NAMES = ", ".join(sorted(BACKENDS))
+"""The registry's backends as the manifest's error lists them (a new backend changes
+no line here)."""
 
 MINIMAL = """\
 id = "mini"
@@ -250,10 +255,10 @@ def _error(folder):
     ('dx = 0.05', 'dx = 0.5',
      "field 'demonstration.pose': demonstration.pose: dx must be within [-0.1, 0.2] m, "
      "got 0.5"),
-    ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "mujoco"\n',
-     "field 'backend': must be one of maniskill, pybullet, ros, got 'mujoco'"),
+    ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "no_such_backend"\n',
+     f"field 'backend': must be one of {BACKEND_NAMES}, got 'no_such_backend'"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = "PyBullet"\n',
-     "field 'backend': must be one of maniskill, pybullet, ros, got 'PyBullet' "
+     f"field 'backend': must be one of {BACKEND_NAMES}, got 'PyBullet' "
      "(did you mean 'pybullet'?)"),
     ('trial_budget = 3\n', 'trial_budget = 3\nbackend = 1\n',
      "field 'backend': must be a string, got 1"),

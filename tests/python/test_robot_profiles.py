@@ -17,8 +17,8 @@ PANDA = (ROBOTS_ROOT / "panda.toml").read_text()
 
 
 def test_three_arms_ship_with_different_grippers():
-    assert profile_names() == ["baxter", "panda", "ur5"]
-    b, p, u = (load_profile(n) for n in profile_names())
+    assert {"baxter", "panda", "ur5"} <= set(profile_names())
+    b, p, u = (load_profile(n) for n in ("baxter", "panda", "ur5"))
     assert len(b.arm_joints) == len(p.arm_joints) == 7 and len(u.arm_joints) == 6
     assert b.hand.driven is False and b.hand.gear_ratio is None
     assert p.hand.driven is True and p.hand.gear_ratio == -1.0 and p.hand.open == (0.04, 0.04)
@@ -27,6 +27,17 @@ def test_three_arms_ship_with_different_grippers():
     assert b.ee_link == "right_gripper" and p.ee_link == "panda_hand_tcp"
     assert set(b.idle) >= {"head_pan", "left_s0"} and p.idle == {} and u.idle == {}
     assert b.urdf_path.is_file() and p.urdf_path.name == "panda.urdf"
+
+
+@pytest.mark.parametrize("name", profile_names())
+def test_every_shipped_profile_reads_with_its_urdf(name):
+    """What every profile of robots/ must be (a new arm is checked here, no line
+    changes): read without error, its URDF on disk, its joints named, its home posture
+    one number per joint."""
+    profile = load_profile(name)
+    assert profile.urdf_path.is_file(), profile.urdf_path
+    assert profile.arm_joints and profile.ee_link
+    assert len(profile.home) == len(profile.arm_joints)
 
 
 def _write(tmp_path, text, name="arm.toml"):

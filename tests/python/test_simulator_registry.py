@@ -16,6 +16,7 @@ import sys
 import types
 from contextlib import contextmanager
 from dataclasses import dataclass, field
+from pathlib import Path
 
 import pytest
 from typer.testing import CliRunner
@@ -27,6 +28,10 @@ from creative_py.simulator import (Backend, BackendError, BackendUnavailable, Ep
                                    Observation, UnknownBackend, World, backend, backend_for,
                                    backend_packages)
 from creative_py.world_files import WorldFileError
+
+NAMES = ", ".join(sorted(BACKENDS))
+"""The registry's backends as the errors list them (a new backend changes no line)."""
+NOT_A_BACKEND = "no_such_backend"
 
 MANIFEST = """\
 id = "regcase"
@@ -156,17 +161,17 @@ def test_the_manifest_s_backend_runs_the_learning_loop_s_episodes(tmp_path, fake
 
 
 def test_an_unknown_backend_is_a_field_error_of_the_manifest(tmp_path):
-    folder = _folder(tmp_path, 'backend = "mujoco"')
+    folder = _folder(tmp_path, f'backend = "{NOT_A_BACKEND}"')
     with pytest.raises(WorldFileError) as caught:
         read_manifest(folder)
     assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': must be one of "
-                                 "maniskill, pybullet, ros, got 'mujoco'")
+                                 f"{NAMES}, got '{NOT_A_BACKEND}'")
     with pytest.raises(UnknownBackend) as caught:
-        backend("mujoco", folder / "case.toml")
+        backend(NOT_A_BACKEND, folder / "case.toml")
     assert str(caught.value) == (f"{folder / 'case.toml'}: field 'backend': unknown simulator "
-                                 "backend 'mujoco'; backends: maniskill, pybullet, ros")
-    with pytest.raises(UnknownBackend, match="^unknown simulator backend 'mujoco'; "):
-        backend("mujoco")
+                                 f"backend '{NOT_A_BACKEND}'; backends: {NAMES}")
+    with pytest.raises(UnknownBackend, match=f"^unknown simulator backend '{NOT_A_BACKEND}'; "):
+        backend(NOT_A_BACKEND)
 
 
 def test_a_backend_that_is_not_installed_says_what_installs_it(tmp_path, monkeypatch):
@@ -201,11 +206,11 @@ def test_a_broken_import_inside_the_project_is_not_taken_for_a_missing_install(
 
 def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatch):
     runner = CliRunner()
-    folder = _folder(tmp_path, 'backend = "mujoco"')
+    folder = _folder(tmp_path, f'backend = "{NOT_A_BACKEND}"')
     result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
     assert result.exit_code == 2
     assert result.output.strip() == (f"error: {folder / 'case.toml'}: field 'backend': must "
-                                     "be one of maniskill, pybullet, ros, got 'mujoco'")
+                                     f"be one of {NAMES}, got '{NOT_A_BACKEND}'")
     monkeypatch.setitem(BACKENDS, "core_gone", BackendEntry("creative_test_gone_backend"))
     (folder / "case.toml").write_text(MANIFEST.format(backend='backend = "core_gone"'))
     result = runner.invoke(app, ["trial", "regcase", "--world", str(folder), "--tool", "t"])
@@ -216,7 +221,23 @@ def test_the_command_line_refuses_a_bad_backend_in_one_line(tmp_path, monkeypatc
 
 
 def test_the_backend_packages_are_the_registry_s():
-    assert backend_packages() == {"backends.pybullet", "backends.maniskill", "backends.ros"}
+    """One package per registry entry, named after the module the entry loads (the
+    layer table has a row for each; a new backend adds its entry and its row)."""
+    import creative_py.backends
+
+    folder = Path(creative_py.backends.__file__).parent
+    packages = {f"backends.{d.name}" for d in folder.iterdir() if (d / "__init__.py").is_file()}
+    assert backend_packages() == packages       # every backend folder is registered
+    assert {"backends.pybullet", "backends.maniskill", "backends.ros"} <= packages
+
+
+@pytest.mark.parametrize("name", sorted(BACKENDS))
+def test_every_registry_entry_names_a_backend_package_and_its_installer(name):
+    entry = BACKENDS[name]
+    assert name.isidentifier() and name == name.lower()
+    assert entry.module.startswith(f"creative_py.backends.{name}")
+    assert entry.setup.startswith("make setup")
+    assert (entry.extra == "") == (entry.setup == "make setup")
 
 
 def test_a_missing_maniskill_says_the_make_target_that_installs_it(monkeypatch):
@@ -330,3 +351,49 @@ def test_every_installed_backend_s_world_and_episode_have_the_protocol_s_members
     manifest = next((m for _, m in cases if m.backend == name),
                     next(m for _, m in cases if m.backend == DEFAULT_BACKEND))
     assert signature_mismatches(World, module.load_world(manifest)) == []
+
+
+@pytest.mark.parametrize("name", sorted(BACKENDS))
+def test_every_installed_backend_reads_objects_toml_with_the_one_reader(name, tmp_path):
+    """A backend's world holds the shared CatalogueItem of ``read_catalogue``
+    (simulator/catalogue.py), and a table it cannot hold is refused on the ``kind``
+    field in the reader's one line."""
+    import shutil
+
+    from creative_py.case import load_cases
+    from creative_py.simulator.catalogue import CatalogueItem
+
+    try:
+        module = backend(name)
+    except BackendError as exc:
+        pytest.skip(str(exc))
+    cases = sorted(load_cases().items())
+    manifest = next((m for _, m in cases if m.backend == name), None)
+    if manifest is None:
+        pytest.skip(f"no shipped case runs on {name}")
+    world = module.load_world(manifest)
+    assert world.items and all(type(i) is CatalogueItem for i in world.items.values())
+    folder = tmp_path / "world"
+    shutil.copytree(manifest.folder, folder)
+    objects = folder / "objects.toml"
+    objects.write_text(objects.read_text() + f'\n[[{manifest.tools_table}]]\nname = "x1"\n'
+                       'kind = "not_a_kind"\nset = "s"\n')
+    with pytest.raises(WorldFileError, match=r"objects\.toml.*'kind'"):
+        module.load_world(manifest, folder)
+
+
+def test_the_one_reader_names_the_field_a_backend_cannot_hold(tmp_path):
+    from creative_py.simulator.catalogue import read_catalogue
+
+    path = tmp_path / "objects.toml"
+    path.write_text('[[tool]]\nname = "s1"\nkind = "stick"\nset = "a"\nhandle_length = 0.3\n'
+                    'friction = 0.7\n')
+    items = read_catalogue(path, "tool", lambda spec: None)
+    assert (items["s1"].set, items["s1"].friction, items["s1"].outside_ranges) == (
+        "a", 0.7, False)
+    with pytest.raises(WorldFileError) as caught:
+        read_catalogue(path, "tool", lambda spec: f"cannot hold a {spec.kind}")
+    assert str(caught.value) == f"{path}: field 'tool[0].kind': cannot hold a stick"
+    path.write_text('[[tool]]\nname = "s1"\nkind = "stick"\nset = "a"\nfriction = 11.0\n')
+    with pytest.raises(WorldFileError, match=r"field 'tool\[0\]\.friction': must be <= 10"):
+        read_catalogue(path, "tool", lambda spec: None)

@@ -128,9 +128,6 @@ class ScriptedEpisode:
             raise self.measure_error
         return Verdict("box1 x", 0.7, 0.6, "m", ">", self.holds, "limit")
 
-    def goal_reached(self):
-        return self.verdict().holds
-
     def truth(self):
         return dict(self._truth)
 
@@ -353,3 +350,30 @@ def test_a_verdict_line_never_reads_as_a_pass_that_failed():
     # judged met though the measure misses its threshold
     assert Verdict("box1 x", 0.5, 0.6, "m", ">", True, "limit").short_note() == (
         "judged met by limit")
+
+
+# ------------------------------------------------------------ the demonstration is a trial
+def test_the_protocol_has_one_oracle():
+    members = {n for n in vars(Episode) if not n.startswith("_")}
+    assert "verdict" in members and "goal_reached" not in members
+
+
+def test_the_demonstration_is_judged_by_the_trial_s_rule(backend):
+    """The demonstration asks the episode's one oracle (``verdict``) and judges by
+    ``trial_outcome``: a push stopped while the tool acted that leaves the goal
+    reached is a success, as in any trial; the goal not reached is refused."""
+    from creative_py.learning.tool_use import DemonstrationFailed, run_demonstration
+
+    backend.world.variation = ""
+    backend.episode = ScriptedEpisode(ends={"push": SkillOutcome("blocked", "push: slipped")})
+    demo = run_demonstration(backend.world, pose_target=len)
+    assert demo.goal_reached and [s.outcome for s in demo.steps] == ["ok", "ok", "blocked"]
+    assert ("verdict",) in backend.episode.log
+    backend.episode = ScriptedEpisode(holds=False)
+    with pytest.raises(DemonstrationFailed, match="did not reach the goal in the physics"):
+        run_demonstration(backend.world, pose_target=len)
+    backend.episode = ScriptedEpisode(
+        ends={"place": SkillOutcome("blocked", "place: gripper lagged", GUARD)})
+    with pytest.raises(DemonstrationFailed, match="the trainer's skill place ended blocked "
+                                                  "in the physics: place: gripper lagged"):
+        run_demonstration(backend.world, pose_target=len)

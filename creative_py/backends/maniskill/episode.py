@@ -350,10 +350,6 @@ class Episode:
                        detail=f"ManiSkill evaluate() success={success}", measures=measures,
                        note=note)
 
-    def goal_reached(self) -> bool:
-        """Return ManiSkill's ``evaluate()["success"]``."""
-        return bool(self.u.evaluate()["success"][0])
-
     def close(self) -> None:
         """Close ManiSkill's environment."""
         env = getattr(self, "env", None)

@@ -45,7 +45,7 @@ from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.backends.maniskill.recorder import VideoCamera, read_video
-from creative_py.simulator.catalogue import CatalogueWorld
+from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
 from creative_py.world_files import Fields, WorldFileError, load_toml, world_file
 
 VARIANT_VALUES = {"cube_dx": (0.0, 0.5)}
@@ -63,19 +63,6 @@ PRIMITIVES = {
 TCP in one control step, metres (of a grasp's approach and lift, of a placing's carry
 and lowering, of a pull or a push): fewer, longer steps fit a skill into the episode's
 step budget. An option ending in ``step_m`` must be above 0."""
-
-
-@dataclass(frozen=True)
-class CatalogueItem:
-    """An available object: its spec, set name, friction, mass (kg) and, for a created
-    tool, the URDF written beside it (the body is built from the spec's boxes)."""
-
-    spec: Any
-    set: str
-    friction: float = 0.5
-    mass: Optional[float] = None
-    urdf: Optional[Path] = None
-    outside_ranges: bool = False
 
 
 @dataclass(frozen=True)
@@ -184,7 +171,7 @@ class World(CatalogueWorld):
         if urdf is not None and not Path(urdf).is_file():
             raise FileNotFoundError(f"{urdf}: tool URDF not found")
         friction = next(iter(self.items.values())).friction
-        item = CatalogueItem(spec, "created", friction, None, None if urdf is None else Path(urdf))
+        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
         return replace(self, items={**self.items, spec.name: item})
 
     def listing(self) -> dict[str, Any]:
@@ -208,32 +195,11 @@ class World(CatalogueWorld):
 
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
-    from creative_py.mesh.spec import spec_from_dict
+    def holds(spec: Any) -> Optional[str]:
+        return (None if spec.HANDLING == "handle" else
+                f"the ManiSkill backend holds handled tools only, not a {spec.kind}")
 
-    f = Fields(load_toml(path), path)
-    items: dict[str, CatalogueItem] = {}
-    for tf in f.tables(table):
-        data = dict(tf.data)
-        obj_set = tf.str("set")
-        friction = tf.float("friction", 0.5, minimum=0.0, maximum=10.0)
-        outside = tf.bool("outside_ranges", False)
-        for k in ("set", "friction", "outside_ranges"):
-            data.pop(k, None)
-        try:
-            spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
-        except ValueError as exc:
-            raise WorldFileError(str(exc)) from None
-        if spec.HANDLING != "handle":
-            raise tf.error("kind", f"the ManiSkill backend holds handled tools only, not a "
-                                   f"{spec.kind}")
-        if spec.name in items:
-            raise tf.error("name", f"object name {spec.name!r} is used twice")
-        items[spec.name] = CatalogueItem(spec, obj_set, friction, spec.mass,
-                                         outside_ranges=outside)
-    f.done()
-    if not items:
-        raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")
-    return items
+    return read_catalogue(path, table, holds)
 
 
 def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> World:

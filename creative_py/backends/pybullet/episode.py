@@ -14,7 +14,7 @@ Every case is driven the same way, by the skill names of its manifest
         ep.run_skill("pick_up")                      # SkillOutcome
         ep.run_skill("position_tool", pose=(0.03, 0.0, 0.0))
         ep.run_skill("pull")
-        ep.goal_reached()                            # the physics oracle
+        ep.verdict().holds                           # the physics oracle
         ep.observe()                                 # Observation(facts, frames, truth)
 
 An episode builds the scene in a fresh :class:`~creative_py.backends.pybullet.core.Sim`: the bodies of
@@ -434,7 +434,7 @@ class Episode:
         for body in self.bodies.values():
             facts += body.facts(self.sim)
         fact = self.world.oracle.options.get("fact")
-        if fact and self.goal_reached():
+        if fact and self.verdict().holds:
             subject = self.world.oracle.oracle.subject
             facts.append((fact, self.object_name(self.world.oracle.options[subject])))
         for item in self.world.items.values():
@@ -464,10 +464,6 @@ class Episode:
         return {k: tuple(float(v) for v in p) for k, p in out.items()}
 
     # ------------------------------------------------------------------- oracle
-    def goal_reached(self) -> bool:
-        """Return whether the case's goal holds in the simulated state (the oracle)."""
-        return bool(self.verdict().holds)
-
     def verdict(self) -> Verdict:
         """Return the oracle's measured verdict on the simulated state: whether the goal
         holds, the quantity measured and the threshold it was judged by

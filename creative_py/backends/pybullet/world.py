@@ -48,28 +48,14 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any, Mapping, Sequence
+from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
-from creative_py.simulator.catalogue import CatalogueWorld
+from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
 from creative_py.world_files import (Fields, PhysicsSettings, WorldFileError, load_toml,
                                read_physics, world_file)
 
 _ROLES = ("tool", "target", "context")
-
-
-@dataclass(frozen=True)
-class CatalogueItem:
-    """An available object: its spec, set name, pybullet friction and (for a created
-    tool) the URDF file its body is loaded from."""
-
-    spec: Any
-    set: str
-    friction: float = 0.5
-    urdf: Path | None = None
-    outside_ranges: bool = False
-    """Set by ``outside_ranges = true`` in objects.toml: the user knows a dimension lies
-    outside the ontology's qualitative ranges (a run refuses such an object otherwise)."""
 
 
 @dataclass(frozen=True)
@@ -278,9 +264,6 @@ field), metres from the robot's base; angles are bounded by it too, in radians."
 SIGMA_M = (0.0, 0.1)
 """The bounds of ``[perception] depth_sigma_m``, metres."""
 
-FRICTION = (0.0, 10.0)
-"""The bounds of a friction coefficient (``friction`` of objects.toml)."""
-
 
 def _read_robot(rf: Fields, profile: Any) -> tuple[RobotSpec, dict[str, Any]]:
     """Read ``[robot]`` for the robot ``profile``: ``speed`` (m/s) within
@@ -413,33 +396,13 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
 
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
-    from creative_py.mesh.spec import spec_from_dict
     from creative_py.backends.pybullet.tools import HANDLINGS
 
-    f = Fields(load_toml(path), path)
-    items: dict[str, CatalogueItem] = {}
-    for tf in f.tables(table):
-        data = dict(tf.data)
-        obj_set = tf.str("set")
-        friction = tf.float("friction", 0.5, minimum=0.0, maximum=FRICTION[1])
-        outside = tf.bool("outside_ranges", False)
-        data.pop("set")
-        data.pop("friction", None)
-        data.pop("outside_ranges", None)
-        try:
-            spec = spec_from_dict(data, source=f"{path}: {tf.prefix}")
-        except ValueError as exc:
-            raise WorldFileError(str(exc)) from None
-        if spec.HANDLING not in HANDLINGS:
-            raise tf.error("kind", f"the simulator has no handling {spec.HANDLING!r} "
-                                   f"for a {spec.kind}")
-        if spec.name in items:
-            raise tf.error("name", f"object name {spec.name!r} is used twice")
-        items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside)
-    f.done()
-    if not items:
-        raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")
-    return items
+    def holds(spec: Any) -> Optional[str]:
+        return (None if spec.HANDLING in HANDLINGS else
+                f"the simulator has no handling {spec.HANDLING!r} for a {spec.kind}")
+
+    return read_catalogue(path, table, holds)
 
 
 def _read_tasks(path: Path):

@@ -109,3 +109,34 @@ def test_no_code_outside_the_kinds_names_a_spec_class():
             if pattern.search(code):
                 found.append(f"{path.relative_to(ROOT)}:{n}: {code}")
     assert found == []
+
+
+# -- what every kind must be (a new kind is checked here, no line of this file changes)
+_ABSTRACT = ("parts", "catalogue_facts", "feature_dimensions", "scad", "load_model")
+
+
+@pytest.mark.parametrize("name", kind_names())
+def test_every_kind_s_spec_keeps_the_contract(name):
+    """Each class a kind's ``CLASSES`` names is a frozen :class:`KindSpec` dataclass that
+    answers every question the mesh writers, the simulator and the strength check ask,
+    held by a registered handling, drawn on a known plane, its catalogue facts backed by
+    its own fields."""
+    import dataclasses
+
+    from creative_py.backends.pybullet.tools import HANDLINGS
+    from creative_py.kinds.parts import KindSpec
+
+    module = kind_module(name)
+    assert module.CLASSES, name
+    for cls, spec in module.CLASSES.items():
+        assert issubclass(spec, KindSpec) and dataclasses.is_dataclass(spec), (name, cls)
+        assert spec.__dataclass_params__.frozen, (name, cls)
+        for method in _ABSTRACT:
+            assert getattr(spec, method) is not getattr(KindSpec, method), (name, method)
+        assert spec.HANDLING in HANDLINGS, (name, spec.HANDLING)
+        assert spec.DRAWING_PLANE in ("top", "side"), (name, spec.DRAWING_PLANE)
+        assert len(spec.RGBA) == 4 and all(0.0 <= c <= 1.0 for c in spec.RGBA)
+        own = {f.name for f in dataclasses.fields(spec)}
+        assert {"name", "kind"} <= own
+        assert set(spec.FACT_FIELDS.values()) <= own, (name, spec.FACT_FIELDS)
+        assert callable(getattr(spec, "from_fields", None)), name

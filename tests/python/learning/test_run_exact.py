@@ -25,6 +25,7 @@ import pytest
 from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
 from creative_py.learning.clips import ClipKeeper
+from creative_py.learning.strategies import STRATEGIES
 from creative_py.learning.creation import CreatedTool, CreateResult
 from creative_py.learning.checks import (catalogue_ranges, check_catalogue, check_manifest,
                                          require_display)
@@ -241,8 +242,8 @@ def test_only_max_trials_and_world_seed_may_be_none(field):
      "option catalogue_first must be true, false or unset, got 0"),
     ("demonstrate_creation", None,
      "option demonstrate_creation must be true or false, got None"),
-    ("strategy", "greedy",
-     "unknown strategy 'greedy'; strategies: paper, informative, random"),
+    ("strategy", "not_a_strategy",
+     "unknown strategy 'not_a_strategy'; strategies: " + ", ".join(STRATEGIES)),
 ])
 def test_a_bad_option_is_refused_in_one_line(field, bad, message):
     with pytest.raises(ValueError) as err:

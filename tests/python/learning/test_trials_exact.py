@@ -33,6 +33,7 @@ from creative_py.learning.tool_use import ToolUseLearner
 from creative_py.learning.trials import (PHASE_TAGS, TaskState, TrialRunner, pose_numbers,
                                          term_text)
 from creative_py.records.folder import RunFolder, read_resume
+from creative_py.records.trial import TrialRecord, measured, measured_fields
 from creative_py.backends.pybullet import load_world, recorder
 from creative_py.simulator import TrialResult
 from creative_py.simulator import trial as simulator_trial
@@ -96,6 +97,14 @@ def _first(hook, runner):
 
 def _edited(hook, **changes):
     return dataclasses.replace(hook.records[0], **changes)
+
+
+def _as_recorded(rec, recorded):
+    """Return ``rec`` without the measured fields the recorded line lacks (a field the
+    physics measures that was added after the fixture was recorded: the physics run
+    again measures it, the old line has nothing to compare it with)."""
+    return dataclasses.replace(rec, **{n: None for n in measured_fields(type(rec))
+                                       if getattr(recorded, n, None) is None})
 
 
 def _replay_first(hook, record, phase="use", variant="standard", run=None, lines=None,
@@ -394,7 +403,8 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
     one = hook.records[0]
     hs, hg = runner.bounds(hook.vs0)
     assert vs is hook.vs0 and runner.trials == [rec] and runner.physical == 1
-    assert dataclasses.replace(rec, decision_time_s=0.0, wall_time_s=0.0) == (
+    assert dataclasses.replace(_as_recorded(rec, one), decision_time_s=0.0,
+                               wall_time_s=0.0) == (
         dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
     assert lines == [
@@ -439,10 +449,10 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     assert close_facts(rec2.facts, [tuple(f) for f in two.facts])
     assert {k: v for k, v in rec2.tool_load.items() if k in two.tool_load} == two.tool_load
     assert (rec2.tool_load["other_bodies"], rec2.tool_load["window_s"]) == ([], 0.1)
-    assert dataclasses.replace(rec2, decision_time_s=0.0, wall_time_s=0.0, facts=two.facts,
-                               tool_load=two.tool_load) == (
+    assert dataclasses.replace(_as_recorded(rec2, two), decision_time_s=0.0, wall_time_s=0.0,
+                               facts=two.facts, tool_load=two.tool_load) == (
         dataclasses.replace(two, decision_time_s=0.0, wall_time_s=0.0))
-    assert rec2.to_dict().keys() == two.to_dict().keys()
+    assert _as_recorded(rec2, two).to_dict().keys() == two.to_dict().keys()
     assert runner.bounds(vs) == (two.hs, two.hg)
     assert (run.path / "trials.jsonl").read_text() == one.to_json() + "\n" + rec2.to_json() + "\n"
     assert sorted(p.name for p in (run.path / "snapshots" / "use-002").iterdir()) == [
@@ -470,3 +480,39 @@ def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
     assert first.shape == (60 + draw.band, 320)
     assert int((np.abs(band.astype(int).mean(axis=2) - first[:draw.band]) > 100).sum()) == 0
 
+
+
+@dataclasses.dataclass(kw_only=True)
+class _WithLift(trials.TrialRecord):
+    """The trial record with one more field the physics measures, added as a maintainer
+    would: one typed line."""
+
+    lift_m: "float | None" = dataclasses.field(default=None, metadata=measured())
+
+
+def test_a_measured_field_reaches_the_file_and_comes_back_on_a_replay(hook, tmp_path,
+                                                                      monkeypatch):
+    """A field marked measured goes from the trial loop (TrialResult.measures) to the
+    record and the line of trials.jsonl, and a replay gives it back, with no line of the
+    learning loop naming it."""
+    real = simulator_trial.run_trial
+
+    def measuring(*args, **kwargs):         # the code that measures it
+        return dataclasses.replace(real(*args, **kwargs), measures={"lift_m": 0.0125})
+
+    monkeypatch.setattr(simulator_trial, "run_trial", measuring)
+    monkeypatch.setattr(trials, "TrialRecord", _WithLift)
+    run = RunFolder.create(tmp_path, "hook", 0, "run")
+    runner = _runner(hook, run=run)
+    task, exp = _first(hook, runner)
+    rec, _vs = runner.run(exp, "eval", 1, hook.vs0, task, 0.0, label=False)
+    assert isinstance(rec, _WithLift) and rec.lift_m == 0.0125
+    line = json.loads((run.path / "trials.jsonl").read_text().splitlines()[0])
+    assert line["lift_m"] == 0.0125
+    back = _WithLift.from_dict(line)
+    got = runner._replayed(back, "hook_a1", task, exp.args[3], "eval")
+    assert got.measures == {"lift_m": 0.0125}
+    # A measure the record has no field for is refused, naming it.
+    monkeypatch.setattr(trials, "TrialRecord", TrialRecord)
+    with pytest.raises(TypeError, match="lift_m"):
+        _runner(hook).run(exp, "eval", 1, hook.vs0, task, 0.0, label=False)

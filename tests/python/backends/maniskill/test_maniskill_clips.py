@@ -78,10 +78,10 @@ def test_rendering_after_the_verdict_changes_nothing_judged(world):
                       record=rec) as ep:
         for s in m.skills:
             assert ep.run_skill(s.name, m.demonstration.pose if s.pose else None).ok
-        truth, reached, facts = ep.truth(), ep.goal_reached(), ep.observe().facts
+        truth, reached, facts = ep.truth(), ep.verdict().holds, ep.observe().facts
         frames = rec.render()
         assert ep.truth() == truth
-        assert ep.goal_reached() == reached is True
+        assert ep.verdict().holds == reached is True
         # the robot base's pose comes back within 1e-9 m (SAPIEN sets the articulation's
         # root through its own float conversions); the cube and the tool exactly
         after = ep.observe().facts

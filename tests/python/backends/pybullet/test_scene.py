@@ -71,3 +71,40 @@ def test_a_shelf_is_a_passage_with_its_facts():
     assert shelf.inner_height == 0.05 and shelf.length == 0.3
     assert not math.isnan(shelf.floor_z)
     assert shelf.dynamic is False
+
+
+# ---------------------------------------------------------- what every body kind must do
+# A new body kind (one BODY_KINDS entry) is checked by this; no line of it changes.
+
+@pytest.mark.parametrize("kind", list(BODY_KINDS))
+def test_every_body_kind_builds_from_a_shipped_scene_and_gives_its_facts(kind):
+    """Each kind is a SceneBody with bounds for its numeric fields, is built by some
+    shipped world's scene.toml, and built there gives a pybullet body, facts about
+    itself and a finite centre."""
+    from creative_py.backends.pybullet import load_world
+    from creative_py.backends.pybullet.scene import SceneBody
+    from creative_py.case import load_cases
+
+    cls = BODY_KINDS[kind]
+    assert issubclass(cls, SceneBody) and cls.FIELDS
+    assert cls.build is not SceneBody.build
+    assert set(cls.BOUNDS) <= set(cls.FIELDS), (kind, set(cls.BOUNDS) - set(cls.FIELDS))
+    for _, manifest in sorted(load_cases().items()):
+        if manifest.backend != "pybullet":
+            continue
+        world = load_world(manifest)
+        tables = [t for t in world.scene.bodies if t.kind == kind]
+        if tables:
+            break
+    else:
+        pytest.fail(f"no shipped world's scene.toml has a body of kind {kind!r}")
+    demo = world.manifest.demonstration
+    ns = world.namespace(demo.variant, demo.location, demo.tool)
+    body = make_bodies(world.scene.bodies, ns)[tables[0].name]
+    assert isinstance(body, cls)
+    with Sim(PhysicsSettings()) as sim:
+        assert body.build(sim) >= 0
+        facts = body.facts(sim)
+        centre = body.centre(sim)
+    assert all(isinstance(f, tuple) and f[1] == body.name for f in facts), facts
+    assert len(centre) == 4 and all(math.isfinite(x) for x in centre)

@@ -20,6 +20,8 @@ from pathlib import Path
 
 import pytest
 
+from creative_py.backends import BACKENDS
+
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parents[3]
 
@@ -44,8 +46,8 @@ def test_the_ros_backend_is_registered_with_its_extra():
 
 @pytest.mark.parametrize("args,message", [
     (["run", "hook", "--backend", "nope"],
-     "error: --backend nope: unknown simulator backend 'nope'; backends: maniskill, "
-     "pybullet, ros"),
+     "error: --backend nope: unknown simulator backend 'nope'; backends: "
+     + ", ".join(sorted(BACKENDS))),
     (["trial", "hook", "--tool", "hook_a2", "--backend", "nope"],
      "error: --backend nope: unknown simulator backend 'nope'"),
     (["run", "hook", "--robot", "nope"],
