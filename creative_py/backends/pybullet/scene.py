@@ -47,6 +47,10 @@ Body kinds
     A ball (static when ``mass`` is 0) of ``radius``, frame at its centre. Rolling
     friction and damping are pybullet's defaults unless given (a ball on a table rolls
     on until something stops it).
+``zone``
+    A goal marked on the table: a disc of ``radius`` about (``x``, ``y``) at height ``z``,
+    seen by nothing that collides (a visual only, as the benchmark's goal markers).
+    Facts: ``reach_zone/4`` (its centre's x, y and its radius).
 ``scatter``
     ``count`` cubes of side ``size`` drawn at random in a rectangle of the table
     (``x_range``, ``y_range``), each centre farther than ``min_gap`` (Euclidean, in the
@@ -556,6 +560,37 @@ class SphereBody(SceneBody):
         return self.id
 
 
+class ZoneBody(SceneBody):
+    """A goal disc on the table: ``radius`` (m) about (``x``, ``y``), drawn at ``z``; it
+    does not collide. Facts: ``reach_zone(Name, X, Y, R)``."""
+
+    FIELDS = {"x": REQUIRED, "y": REQUIRED, "z": 0.0, "radius": REQUIRED,
+              "colour": (0.1, 0.8, 0.2, 0.5)}
+    BOUNDS = {"x": POSITION, "y": POSITION, "z": POSITION, "radius": SIZE,
+              "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        if self.radius <= 0:
+            raise ValueError(f"body {name}: radius must be positive, got {self.radius}")
+
+    def build(self, sim: Sim) -> int:
+        c = sim.client
+        vis = pb.createVisualShape(pb.GEOM_CYLINDER, radius=self.radius, length=0.001,
+                                   rgbaColor=tuple(self.colour), physicsClientId=c)
+        self.id = pb.createMultiBody(baseMass=0.0, baseCollisionShapeIndex=-1,
+                                     baseVisualShapeIndex=vis,
+                                     basePosition=(self.x, self.y, self.z),
+                                     physicsClientId=c)
+        return self.id
+
+    def centre(self, sim: Sim) -> tuple[float, float, float, float]:
+        return (self.x, self.y, self.z, 0.0)
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        return [("reach_zone", self.name, self.x, self.y, self.radius)]
+
+
 class ScatterBody(SceneBody):
     """``count`` cubes drawn at random without overlap in a rectangle of the table.
 
@@ -640,7 +675,7 @@ class ScatterBody(SceneBody):
 
 BODY_KINDS: dict[str, type[SceneBody]] = {"box": BoxBody, "tube": TubeBody, "shelf": ShelfBody,
                                           "door": DoorBody, "sphere": SphereBody,
-                                          "scatter": ScatterBody}
+                                          "zone": ZoneBody, "scatter": ScatterBody}
 """The body kinds a ``[[body]]`` table may name."""
 
 
