@@ -77,8 +77,8 @@ class PusherSpec(KindSpec):
     plate_width: float
     wing_length: float = 0.0
     wing_spread: float = 0.0
-    drop: float = 0.05
-    wall_height: float = 0.09
+    drop: float = 0.03
+    wall_height: float = 0.06
     wall: float = 0.01
     grip_offset: float = 0.04
     mass: float | None = 0.2
@@ -181,10 +181,10 @@ class PusherSpec(KindSpec):
     def quantities(self) -> dict[str, float]:
         """``reach`` (below the pole), ``length`` (the pole), ``width`` (the pole's),
         ``inner_half`` (half the room between parallel wings), ``mouth`` (the head's
-        mouth), ``wing_length``, m."""
+        mouth), ``wing_length``, ``wall_height``, m."""
         return {"reach": self.reach(), "length": self.pole_length, "width": self.pole_width,
                 "inner_half": self.plate_width / 2 - self.wall, "mouth": self.mouth_width(),
-                "wing_length": self.wing_length}
+                "wing_length": self.wing_length, "wall_height": self.wall_height}
 
     # ---------------------------------------------------------- manufacturing
     def feature_dimensions(self) -> dict[str, float]:

@@ -22,10 +22,11 @@ primitive            world target              what it does
 ``pull_along_axis``  -                         pull the held tool back along -x until its
                                                working point passes ``until_x``
 ``push_along_axis``  -                         push the held tool along +x by ``distance``
-``lower_at_pose``    ``tip(X, Y, Roll)``       carry the held tool over the table and lower
-                                               it until its working point is at (X, Y,
+``lower_at_pose``    ``tip(X, Y, Roll)``       carry the held tool over the table, lower it
+                                               ``approach`` off the place and slide it in
+                                               until its working point is at (X, Y,
                                                ``work_z``), turned to Roll (a pusher's head
-                                               around or behind what it will push)
+                                               round or behind what it will push)
 ``sweep``            -                         move the held tool along ``direction`` (in
                                                the table's plane) until its working point
                                                reaches ``until`` along it, slowing over the
@@ -397,24 +398,32 @@ def push_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOut
 def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
     """Lower the held tool onto the table with its working point at (X, Y, ``work_z``).
 
-    The tool is carried with its pole at ``travel_z`` to above the place, turned to
-    Roll there, then lowered straight down at ``speed`` (a pusher's head comes down
-    around a ball or behind a row of cubes from above; whatever it lands on is the
-    physics' business).
+    The tool's frame is carried at height ``travel_z``, first along x, then along y,
+    to where its working point is ``approach`` = (dx, dy) m off the place; there it is
+    turned to Roll, lowered straight down at ``speed`` and slid in at that height to
+    the place (with the default approach (0, 0), straight down onto it). A pusher's
+    head comes down behind a ball or a row of cubes and slides round the ball; what
+    it meets is the physics' business. The approach and the order of the carrying
+    let a world route the tool round what it must not touch and through where the arm
+    reaches.
     """
     _, x, y, roll = target
     spec, kind = ep.spec, ep.kind
     q = tool_orientation(spec, roll)
     off = pb.multiplyTransforms((0, 0, 0), q, prong_centre(spec), (0, 0, 0, 1))[0]
     low = (x - off[0], y - off[1], opts["work_z"] - off[2])
-    high = (low[0], low[1], opts["travel_z"])
+    ax, ay = (float(v) for v in opts["approach"])
+    side = (low[0] + ax, low[1] + ay)
+    high = opts["travel_z"]
     carried = kind.attitude(ep)
     here = ep.tool_pose()[0]
-    for origin, r, speed in (((here[0], here[1], opts["travel_z"]), carried,
-                              opts["free_speed"]),
-                             (high, carried, opts["free_speed"]),
-                             (high, roll, opts["free_speed"]),
-                             (low, roll, opts["speed"])):
+    steps = [((here[0], here[1], high), carried, opts["free_speed"]),
+             ((side[0], here[1], high), carried, opts["free_speed"]),
+             ((side[0], side[1], high), carried, opts["free_speed"]),
+             ((side[0], side[1], high), roll, opts["free_speed"]),
+             ((side[0], side[1], low[2]), roll, opts["speed"]),
+             (low, roll, opts["speed"])]
+    for origin, r, speed in steps:
         res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed)
         if not res.ok:
             return res
@@ -615,8 +624,10 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("push_along_axis", push_along_axis,
               {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
     Primitive("lower_at_pose", lower_at_pose,
-              {"travel_z": REQUIRED, "work_z": REQUIRED, "free_speed": 0.35, "speed": 0.10,
-               "perceive": True}, target="tip"),
+              {"travel_z": REQUIRED, "work_z": REQUIRED, "approach": (0.0, 0.0),
+               "free_speed": 0.35, "speed": 0.10,
+               "perceive": True}, target="tip",
+              bounds={"approach": (-2.0, 2.0, "m")}),
     Primitive("sweep", sweep,
               {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
                "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
