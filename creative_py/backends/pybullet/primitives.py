@@ -401,10 +401,12 @@ def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutco
     The tool's frame is carried at height ``travel_z``, first along x, then along y,
     to where its working point is ``approach`` = (dx, dy) m off the place; there it is
     turned to Roll, lowered straight down at ``speed`` and slid in at that height to
-    the place (with the default approach (0, 0), straight down onto it). A pusher's
-    head comes down behind a ball or a row of cubes and slides round the ball; what
-    it meets is the physics' business. The approach and the order of the carrying
-    let a world route the tool round what it must not touch and through where the arm
+    the place (with the default approach (0, 0), straight down onto it). With ``via``
+    = (dx, dy) it first goes at height ``carry_z`` (default ``travel_z``), along x,
+    then along y, to that offset from the place, and is raised to ``travel_z`` there.
+    A pusher's head comes down round a ball or behind a row of cubes; what it meets is
+    the physics' business. The via point, the approach and the order of the legs let
+    a world route the tool round what it must not touch and through where the arm
     reaches.
     """
     _, x, y, roll = target
@@ -417,12 +419,20 @@ def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutco
     high = opts["travel_z"]
     carried = kind.attitude(ep)
     here = ep.tool_pose()[0]
-    steps = [((here[0], here[1], high), carried, opts["free_speed"]),
-             ((side[0], here[1], high), carried, opts["free_speed"]),
-             ((side[0], side[1], high), carried, opts["free_speed"]),
-             ((side[0], side[1], high), roll, opts["free_speed"]),
-             ((side[0], side[1], low[2]), roll, opts["speed"]),
-             (low, roll, opts["speed"])]
+    fast = opts["free_speed"]
+    legs: list[tuple[float, float, float]] = []
+    if opts.get("via") is not None:
+        vx, vy = (float(v) for v in opts["via"])
+        carry = high if opts.get("carry_z") is None else opts["carry_z"]
+        via = (low[0] + vx, low[1] + vy)
+        legs += [(here[0], here[1], carry), (via[0], here[1], carry),
+                 (via[0], via[1], carry)]
+        here = (via[0], via[1], carry)
+    legs += [(here[0], here[1], high), (side[0], here[1], high), (side[0], side[1], high)]
+    steps = [(p, carried, fast) for p in legs]
+    steps += [((side[0], side[1], high), roll, fast),
+              ((side[0], side[1], low[2]), roll, opts["speed"]),
+              (low, roll, opts["speed"])]
     for origin, r, speed in steps:
         res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed)
         if not res.ok:
@@ -625,9 +635,9 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
               {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
     Primitive("lower_at_pose", lower_at_pose,
               {"travel_z": REQUIRED, "work_z": REQUIRED, "approach": (0.0, 0.0),
-               "free_speed": 0.35, "speed": 0.10,
+               "via": None, "carry_z": None, "free_speed": 0.35, "speed": 0.10,
                "perceive": True}, target="tip",
-              bounds={"approach": (-2.0, 2.0, "m")}),
+              bounds={"approach": (-2.0, 2.0, "m"), "via": (-2.0, 2.0, "m")}),
     Primitive("sweep", sweep,
               {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
                "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
