@@ -77,7 +77,7 @@ class PusherSpec(KindSpec):
     plate_width: float
     wing_length: float = 0.0
     wing_spread: float = 0.0
-    drop: float = 0.03
+    drop: float = 0.10
     wall_height: float = 0.06
     wall: float = 0.01
     grip_offset: float = 0.04

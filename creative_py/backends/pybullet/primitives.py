@@ -270,8 +270,14 @@ def _choose_posture(ep: Any, steps, pull_dx: float, speed: float) -> SkillOutcom
     carries the whole path is reached by lifting the tool clear, moving in joint
     space, and coming back down.
     """
+    return _posture_for_path(ep, _gripper_path(ep, steps, pull_dx), speed,
+                             "the insertion and the pull")
+
+
+def _posture_for_path(ep: Any, path: list[Pose], speed: float, what: str) -> SkillOutcome:
+    """Make sure the arm can follow the gripper poses ``path``; re-shape it if not (as
+    :func:`_choose_posture` says)."""
     rb = ep.robot
-    path = _gripper_path(ep, steps, pull_dx)
     if rb.dry_run(rb.arm_q(), path) is not None:
         return SkillOutcome("ok")
     here = rb.gripper_pose()
@@ -291,8 +297,8 @@ def _choose_posture(ep: Any, steps, pull_dx: float, speed: float) -> SkillOutcom
             if not res.ok:
                 return res
         return SkillOutcome("ok")
-    return SkillOutcome("unreachable", "no arm posture can carry the tool along the "
-                        "insertion and the pull (joint limits)")
+    return SkillOutcome("unreachable", f"no arm posture can carry the tool along {what} "
+                        "(joint limits)")
 
 
 # ----------------------------------------------------------------- place on floor
@@ -407,7 +413,9 @@ def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutco
     A pusher's head comes down round a ball or behind a row of cubes; what it meets is
     the physics' business. The via point, the approach and the order of the legs let
     a world route the tool round what it must not touch and through where the arm
-    reaches.
+    reaches. With ``posture_search`` (a handled tool's) the arm's posture for the whole
+    path is checked first and, if it would lose it, re-shaped as ``insert_at_pose``
+    does (:func:`_choose_posture`).
     """
     _, x, y, roll = target
     spec, kind = ep.spec, ep.kind
@@ -433,6 +441,14 @@ def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutco
     steps += [((side[0], side[1], high), roll, fast),
               ((side[0], side[1], low[2]), roll, opts["speed"]),
               (low, roll, opts["speed"])]
+    if opts["posture_search"]:
+        from creative_py.backends.pybullet.arm import gripper_forward
+
+        path = [(kind.gripper_for_tool(ep, origin, r), gripper_forward(r))
+                for origin, r, _ in steps]
+        res = _posture_for_path(ep, path, fast, "the carrying and the lowering")
+        if not res.ok:
+            return res
     for origin, r, speed in steps:
         res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed)
         if not res.ok:
@@ -636,6 +652,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("lower_at_pose", lower_at_pose,
               {"travel_z": REQUIRED, "work_z": REQUIRED, "approach": (0.0, 0.0),
                "via": None, "carry_z": None, "free_speed": 0.35, "speed": 0.10,
+               "posture_search": False,
                "perceive": True}, target="tip",
               bounds={"approach": (-2.0, 2.0, "m"), "via": (-2.0, 2.0, "m")}),
     Primitive("sweep", sweep,
