@@ -93,14 +93,15 @@ pose_target(clean_table, sweep_pose(Dx, Dy), Target, _G, tip(X, Y, 0.0)) :-
 
 %   A new pusher's mouth (the plate and both wings' spread) is wider than the field of
 %   cubes; its plate no wider than the goal takes across (within 0.16 m, L1, of the
-%   centre), so that what it gathers ends in the goal; each wing spreads at most twice
+%   centre), so that what it gathers ends in the goal, and no narrower than two rows of
+%   the cubes take (measured); each wing spreads at most twice
 %   its length (steeper, a cube meets it nearly square on and stops instead of sliding
 %   in).  The sweep bounds the pole and the wings: the arm follows it in a straight line
 %   with the hand 0.2-0.9 m in front of the base, the plate must run from 1 cm plus the
 %   wings behind the nearest cube (x = 0.485) to x = 1.07 (trials on the Panda).
 size_constraint(pusher, size(_, _, W, _),
                 [plate_width + 2 * wing_spread >= W + mouth_margin_m,
-                 plate_width =< max_plate_m,
+                 plate_width =< max_plate_m, plate_width >= min_plate_m,
                  wing_spread =< 2 * wing_length]).
 size_constraint(pusher, reach_zone(_, _, _, _),
                 [pole_length >= min_pole_m, pole_length =< max_pole_m,
@@ -108,7 +109,8 @@ size_constraint(pusher, reach_zone(_, _, _, _),
 
 size_parameter(mouth_margin_m, 0.04, 'the mouth wider than the field of cubes, m').
 size_parameter(max_plate_m, 0.24, 'the plate no wider than the goal takes across, m').
-size_parameter(min_pole_m, 0.24, 'a pole long enough for the plate to reach x = 1.07, m').
-size_parameter(max_pole_m, 0.26, 'a pole short enough for the plate to start behind the cubes, m').
-size_parameter(min_wing_m, 0.04, 'wings long enough to gather the cubes, m').
-size_parameter(max_wing_m, 0.06, 'wings short enough for the head to start behind the cubes, m').
+size_parameter(min_plate_m, 0.22, 'a plate wide enough to hold the eight cubes in two rows (0.20 m: one cube of eight left out), m').
+size_parameter(min_pole_m, 0.22, 'a pole long enough for the plate to reach x = 1.07, m').
+size_parameter(max_pole_m, 0.24, 'a pole short enough for the plate to start behind the cubes (and a head that splits into pieces the printer takes), m').
+size_parameter(min_wing_m, 0.06, 'wings long enough to gather the cubes, m').
+size_parameter(max_wing_m, 0.08, 'wings short enough for the head to start behind the cubes, m').

@@ -606,7 +606,7 @@ class ScatterBody(SceneBody):
     FIELDS = {"count": REQUIRED, "size": REQUIRED, "x_range": REQUIRED, "y_range": REQUIRED,
               "floor_z": REQUIRED, "min_gap": REQUIRED, "seed": REQUIRED, "tries": 100,
               "mass": 1.0, "friction": 0.5, "colour": (0.85, 0.8, 0.7, 1.0)}
-    BOUNDS = {"count": (1, 100, "cubes"), "size": SIZE, "x_range": POSITION,
+    BOUNDS = {"count": (1, 100, "(a count)"), "size": SIZE, "x_range": POSITION,
               "y_range": POSITION, "floor_z": POSITION, "min_gap": SIZE,
               "seed": (0, 1e9, "(a seed)"), "tries": (1, 10000, "draws"), "mass": MASS,
               "friction": FRICTION, "colour": COLOUR}

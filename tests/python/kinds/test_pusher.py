@@ -82,13 +82,15 @@ def test_the_clean_table_sizes_a_funnel_wider_than_the_field_of_cubes(engine):
                 Compound("pole_length", ("p", "short")), Compound("plate_width", ("p", "medium")),
                 Compound("wing_length", ("p", "short")), Compound("wing_spread", ("p", "flared"))]
     facts = [Compound("size", ("cubes", 0.40, 0.43, 0.03)),
+             Compound("reach_zone", ("goal1", 1.1, 0.0, 0.15)),
              Compound("max_tool_length", (0.8,)), Compound("min_wall_m", (0.0008,))]
     reply = engine.solve_size("clean_table", "pusher", literals, facts)
     assert reply.name == "dims"
     dims = {eq.args[0]: eq.args[1] for eq in reply.args[0]}
     assert dims["plate_width"] + 2 * dims["wing_spread"] >= 0.43 + 0.04 - 1e-9
-    assert 0.12 <= dims["plate_width"] <= 0.24
-    assert 0.01 <= dims["wing_length"] < 0.10 and 0.01 <= dims["wing_spread"] <= 0.30
+    assert 0.22 <= dims["plate_width"] <= 0.24 and 0.22 <= dims["pole_length"] <= 0.24
+    assert 0.06 <= dims["wing_length"] <= 0.08
+    assert dims["wing_spread"] <= 2 * dims["wing_length"] + 1e-9
     spec = spec_from_dict({"kind": "pusher", "name": "pusher_new1", "mass": None, **dims})
     assert spec.mouth_width() >= 0.47 - 1e-9
     narrow = [*literals[:3], Compound("plate_width", ("p", "narrow")),

@@ -6,8 +6,8 @@ circle; the verdict is the benchmark's reward (the mean over the cubes of 1 with
 L1, of (1.1, 0), else their progress). In the standard band (y within 0.08 m) the
 trainer's shallow U gathers all eight; at the benchmark's spread (y within 0.2 m) it
 leaves the cubes beside it, and a plate as wide as the spread pushes them straight on,
-some beyond the goal's reach across; a funnel (its wings spread 0.11 m each, the kind
-of tool creation makes) gathers them all.
+some beyond the goal's reach across; a funnel (its wings spread 0.13 m each: the
+sizes the case's size model gives a created pusher) gathers them all.
 """
 
 from functools import lru_cache
@@ -27,8 +27,8 @@ pytestmark = pytest.mark.sim
 @lru_cache(maxsize=None)
 def _world():
     world = load_world(get_case("clean_table"))
-    funnel = PusherSpec(name="funnel_new", pole_length=0.25, pole_width=0.014,
-                        plate_width=0.22, wing_length=0.05, wing_spread=0.11)
+    funnel = PusherSpec(name="funnel_new", pole_length=0.23, pole_width=0.021,
+                        plate_width=0.23, wing_length=0.07, wing_spread=0.13, mass=None)
     return world.with_tool(funnel)
 
 
