@@ -118,8 +118,11 @@ class PusherSpec(KindSpec):
         if self.wing_length > 0:
             wl, sp = self.wing_length, self.wing_spread
             for s in (1.0, -1.0):
+                # The tip ends in a face across z (t long), so that a printed piece
+                # cut from the head can stand on it flat.
                 corners = [(L - t, s * half), (L - t, s * (half - t)),
-                           (L + wl, s * (half + sp)), (L + wl, s * (half + sp - t))]
+                           (L + wl - t, s * (half + sp)), (L + wl, s * (half + sp)),
+                           (L + wl, s * (half + sp - t))]
                 verts = tuple((x, y, z) for x, z in corners for y in (y0, y1))
                 parts.append(Hull(verts, volume=H * t * (wl + t) * (1 + (sp / wl) ** 2) ** 0.5))
         return parts

@@ -69,3 +69,15 @@ def test_a_ball_is_a_sphere_of_its_radius_and_mass():
     assert info[0] == pytest.approx(1.0) and info[1] == pytest.approx(0.5)
     assert shape[2] == pb.GEOM_SPHERE and shape[3][0] == pytest.approx(0.08)
     assert ball.height == pytest.approx(0.16) and ball.dynamic
+
+
+def test_a_zone_is_a_goal_disc_that_nothing_touches():
+    zone = _bodies("zone", name="goal1", x=1.1, y=0.0, radius=0.15)["goal1"]
+    with Sim(PhysicsSettings()) as sim:
+        zone.build(sim)
+        assert pb.getCollisionShapeData(zone.id, -1, physicsClientId=sim.client) == ()
+        facts = zone.facts(sim)
+    assert facts == [("reach_zone", "goal1", 1.1, 0.0, 0.15)]
+    assert not zone.dynamic
+    with pytest.raises(WorldFileError, match="radius must be positive"):
+        _bodies("zone", name="goal1", x=1.1, y=0.0, radius=0.0)
