@@ -41,10 +41,11 @@ def _world():
 def test_the_physics_discriminates_the_heads(tool, variant, outcome, inside):
     result = run_trial(_world(), tool, variant, 1, pose_target=poses(_world()))
     assert result.outcome == outcome, result.reason
-    measures = result.verdict.measures
-    assert measures["objects"] == 8
-    assert measures["inside"] == inside
+    verdict = result.verdict
+    assert verdict["quantity"] == "reward"
+    assert verdict["measures"]["objects"] == 8
+    assert verdict["measures"]["inside"] == inside
     if outcome == "success":
-        assert result.verdict.value == pytest.approx(1.0)
+        assert verdict["value"] == pytest.approx(1.0)
     else:
-        assert result.verdict.value < 0.99
+        assert verdict["value"] < 0.99
