@@ -23,7 +23,7 @@ primitive            world target              what it does
                                                working point passes ``until_x``
 ``push_along_axis``  -                         push the held tool along +x by ``distance``
 ``lower_at_pose``    ``tip(X, Y, Roll)``       carry the held tool over the table, lower it
-                                               ``approach`` off the place and slide it in
+                                               ``slide_from`` off the place and slide it in
                                                until its working point is at (X, Y,
                                                ``work_z``), turned to Roll (a pusher's head
                                                round or behind what it will push)
@@ -405,13 +405,13 @@ def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutco
     """Lower the held tool onto the table with its working point at (X, Y, ``work_z``).
 
     The tool's frame is carried at height ``travel_z``, first along x, then along y,
-    to where its working point is ``approach`` = (dx, dy) m off the place; there it is
+    to where its working point is ``slide_from`` = (dx, dy) m off the place; there it is
     turned to Roll, lowered straight down at ``speed`` and slid in at that height to
-    the place (with the default approach (0, 0), straight down onto it). With ``via``
+    the place (without it, straight down onto it). With ``via``
     = (dx, dy) it first goes at height ``carry_z`` (default ``travel_z``), along x,
     then along y, to that offset from the place, and is raised to ``travel_z`` there.
     A pusher's head comes down round a ball or behind a row of cubes; what it meets is
-    the physics' business. The via point, the approach and the order of the legs let
+    the physics' business. The via point, the slide and the order of the legs let
     a world route the tool round what it must not touch and through where the arm
     reaches. With ``posture_search`` (a handled tool's) the arm's posture for the whole
     path is checked first and, if it would lose it, re-shaped as ``insert_at_pose``
@@ -422,7 +422,7 @@ def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutco
     q = tool_orientation(spec, roll)
     off = pb.multiplyTransforms((0, 0, 0), q, prong_centre(spec), (0, 0, 0, 1))[0]
     low = (x - off[0], y - off[1], opts["work_z"] - off[2])
-    ax, ay = (float(v) for v in opts["approach"])
+    ax, ay = (float(v) for v in (opts.get("slide_from") or (0.0, 0.0)))
     side = (low[0] + ax, low[1] + ay)
     high = opts["travel_z"]
     carried = kind.attitude(ep)
@@ -650,11 +650,11 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("push_along_axis", push_along_axis,
               {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
     Primitive("lower_at_pose", lower_at_pose,
-              {"travel_z": REQUIRED, "work_z": REQUIRED, "approach": (0.0, 0.0),
+              {"travel_z": REQUIRED, "work_z": REQUIRED, "slide_from": None,
                "via": None, "carry_z": None, "free_speed": 0.35, "speed": 0.10,
                "posture_search": False,
                "perceive": True}, target="tip",
-              bounds={"approach": (-2.0, 2.0, "m"), "via": (-2.0, 2.0, "m")}),
+),
     Primitive("sweep", sweep,
               {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
                "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
@@ -674,6 +674,7 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     "travel_z": _POSITION, "pull_to_x": _POSITION, "until_x": _POSITION,
     "lift_to": _POSITION, "carry_z": _POSITION, "retreat": _POSITION,
     "work_z": _POSITION, "direction": (-1.0, 1.0, "(a unit vector)"),
+    "slide_from": (-2.0, 2.0, "m"), "via": (-2.0, 2.0, "m"), "until": _POSITION,
     # how far
     "approach": (0.0, 1.0, "m"), "clearance": (0.0, 1.0, "m"),
     "carry_height": (0.0, 1.0, "m"), "release_height": (0.0, 1.0, "m"),
