@@ -71,3 +71,22 @@ def test_a_shelf_is_a_passage_with_its_facts():
     assert shelf.inner_height == 0.05 and shelf.length == 0.3
     assert not math.isnan(shelf.floor_z)
     assert shelf.dynamic is False
+
+
+def test_a_lane_has_no_walls_and_reports_its_passage_and_goal():
+    import pybullet as pb
+
+    lane = BODY_KINDS["lane"]("lane1", {"mouth_x": 0.95, "axis_y": 0.0, "floor_z": 0.0,
+                                        "length": 0.25, "inner_width": 0.3,
+                                        "inner_height": 0.3, "goal_x": 0.6, "mark": 0.07,
+                                        "colour": (0.2, 0.8, 0.2, 0.5)})
+    assert lane.facts(None) == [("lane_start", "lane1", 0.95, 0.0, 0.15),
+                                ("lane_length_m", "lane1", 0.25),
+                                ("lane_room_m", "lane1", 0.3, 0.3),
+                                ("lane_goal", "lane1", 0.6, 0.0)]
+    with Sim(PhysicsSettings()) as sim:
+        body = lane.build(sim)
+        assert pb.getCollisionShapeData(body, -1, physicsClientId=sim.client) == ()
+        assert lane.centre(sim)[:2] == (0.6, 0.0)
+    with pytest.raises(ValueError, match="length must be positive"):
+        BODY_KINDS["lane"]("lane1", {**lane.v, "length": 0.0})
