@@ -42,6 +42,9 @@ def test_the_physics_discriminates_the_heads(tool, variant, outcome, inside):
     result = run_trial(_world(), tool, variant, 1, pose_target=poses(_world()))
     assert result.outcome == outcome, result.reason
     verdict = result.verdict
+    # the load on the tool is its contacts with every cube (the target's bodies)
+    assert result.max_tool_force_n > 1.0
+    assert result.tool_load["bodies"] == ["cubes"]
     assert verdict["quantity"] == "reward"
     assert verdict["measures"]["objects"] == 8
     assert verdict["measures"]["inside"] == inside
