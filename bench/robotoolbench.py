@@ -16,6 +16,9 @@ task). Per task it records, over the worlds:
   evaluation) and the wall time;
 - which tool solved it: learned (the model's catalogued tool), catalogue (another
   catalogued object) or created, with its dimensions;
+- for a case whose run cannot start because its trainer's demonstration fails the
+  benchmark's done() (MoveBall, whose best state scores 0.884), one row with the
+  reward of the demonstrated tool on the benchmark's task and a note saying so;
 
 beside the published figures of VLMgineer, the robotics expert and the bare gripper
 (the project page's figure, read in pixels: +-0.01) and the rollouts each used.
@@ -167,15 +170,51 @@ def task_summary(task: str, rows: list[dict]) -> dict:
             "published": PUBLISHED.get(task)}
 
 
-def run_worlds(case: str, seeds: list[int], base: Path) -> list[Path]:
-    """Run the case once per world seed; return the run folders."""
-    out = []
+def run_worlds(case: str, seeds: list[int], base: Path) -> tuple[list[Path], list[int]]:
+    """Run the case once per world seed; return the run folders and the world seeds
+    whose run ended before a summary (the trainer's demonstration failed its verdict)."""
+    out, stopped = [], []
     for w in seeds:
         parent = base / f"{case}-w{w}"
         subprocess.run([str(CREATIVE), "run", case, "--seed", "0", "--world-seed", str(w),
                         "--video", "none", "--out", str(parent)], cwd=ROOT, check=False)
-        out += sorted(p.parent for p in parent.glob("*/summary.json"))
-    return out
+        done = sorted(p.parent for p in parent.glob("*/summary.json"))
+        out += done
+        if not done:
+            stopped.append(w)
+    return out, stopped
+
+
+def demonstration_row(case: str, world_seed: int) -> dict:
+    """Return the row of a case whose run could not start: the trainer's tool and pose
+    tried once on the benchmark's task (the harder variant, its first location).
+
+    A task whose done() no state reaches (MoveBall: a ball at rest scores 0.884 at
+    most) fails its demonstration's verdict, so nothing is learned; the reward the
+    demonstrated tool reaches on the benchmark's task is still the figure to compare.
+    """
+    from creative_py.case import get_case
+
+    m = get_case(case)
+    t0 = time.monotonic()
+    proc = subprocess.run([str(CREATIVE), "trial", case, "--tool", m.demonstration.tool,
+                           "--variant", m.harder_variant, "--json"], cwd=ROOT,
+                          capture_output=True, text=True, check=False)
+    wall = round(time.monotonic() - t0, 1)
+    reward = None
+    if proc.returncode == 0 and proc.stdout.strip():
+        verdict = json.loads(proc.stdout.strip().splitlines()[-1]).get("verdict") or {}
+        if verdict.get("quantity") == "reward":
+            reward = verdict.get("value")
+    return {"case": case, "world_seed": world_seed, "run_dir": None, "reward": reward,
+            "success": reward is not None and reward > DONE,
+            "trials": {"demonstration": 1, "experiments": 0, "creation": 0,
+                       "evaluation": 0},
+            "trials_on_task": 1, "wall_time_s": wall, "solved_by": None, "tool": None,
+            "tool_kind": None, "tool_dimensions": {},
+            "note": (f"the demonstration fails done() (reward > {DONE}): nothing to learn; "
+                     f"the reward is {m.demonstration.tool}'s at the demonstrated pose on "
+                     "the benchmark's task")}
 
 
 def seeds_of(text: str) -> list[int]:
@@ -206,12 +245,17 @@ def main() -> int:
               f"{', '.join(tasks) or 'none'})", file=sys.stderr)
         return 2
     start = time.monotonic()
+    extra = []
     if args.from_runs:
         dirs = list(args.from_runs)
     else:
         base = Path(tempfile.mkdtemp(prefix="robotoolbench-"))
-        dirs = [d for c in cases for d in run_worlds(c, seeds_of(args.world_seeds), base)]
-    rows = sorted((world_row(d) for d in dirs),
+        dirs = []
+        for c in cases:
+            done, stopped = run_worlds(c, seeds_of(args.world_seeds), base)
+            dirs += done
+            extra += [demonstration_row(c, w) for w in stopped[:1]]
+    rows = sorted([*(world_row(d) for d in dirs), *extra],
                   key=lambda r: (r["case"], r["world_seed"] or 0))
     by_task = {}
     for case in cases:

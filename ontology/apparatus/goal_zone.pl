@@ -1,9 +1,12 @@
 /*  The goal zone: a cube (the task's target) lying on a table outside a goal region, a
     disc on the table, and the task of moving the cube into the disc with a held tool
     (ManiSkill3's tabletop tasks: the disc about the robot base of PullCubeTool-v1, the
-    goal disc beyond the cube of PokeCube-v1).  Written once for every case that uses
-    it (ontology/cases/pull_cube_tool.pl, ontology/cases/poke_cube.pl), each naming it
-    by a fact case_apparatus(Case, goal_zone).
+    goal disc beyond the cube of PokeCube-v1; RoboToolBench's MoveBall and CleanTable on
+    pybullet, where a zone body reports the disc and the target is a ball or a field of
+    cubes).  Written once for every case that uses it (ontology/cases/pull_cube_tool.pl,
+    ontology/cases/poke_cube.pl, ontology/cases/move_ball.pl,
+    ontology/cases/clean_table.pl), each naming it by a fact case_apparatus(Case,
+    goal_zone).
 
     Plain Prolog data loaded by knowledge:load_ontology/1 into its own module,
     apparatus_goal_zone (apparatus/1 below names it), which sees the shared files only;

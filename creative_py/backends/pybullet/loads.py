@@ -150,6 +150,10 @@ class ToolLoadMonitor:
         self._impulse = 0.0
         self._names = {b.id: name for name, b in ep.bodies.items()}
         self.target = ep.body_id(ep.target_name)
+        # A target made of bodies of its own (a scatter's cubes) is all of them.
+        members = getattr(ep.bodies.get(ep.target_name), "members", None)
+        self.targets = {self.target} | ({b.id for b in members().values()}
+                                        if callable(members) else set())
         self._others: set[str] = set()
 
     def start(self) -> None:
@@ -174,9 +178,9 @@ class ToolLoadMonitor:
         self._steps += 1
         ep = self.ep
         every = pb.getContactPoints(bodyA=ep.tool_body, physicsClientId=ep.sim.client)
-        cps = [cp for cp in every if cp[2] == self.target]
+        cps = [cp for cp in every if cp[2] in self.targets]
         self._others.update(self._names.get(cp[2], f"body{cp[2]}") for cp in every
-                            if cp[2] != self.target and cp[2] in self._names)
+                            if cp[2] not in self.targets and cp[2] in self._names)
         total = float(sum(cp[9] for cp in cps))
         self._sums.append(total)
         if not total > 0.0:

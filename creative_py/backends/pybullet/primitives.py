@@ -22,6 +22,16 @@ primitive            world target              what it does
 ``pull_along_axis``  -                         pull the held tool back along -x until its
                                                working point passes ``until_x``
 ``push_along_axis``  -                         push the held tool along +x by ``distance``
+``lower_at_pose``    ``tip(X, Y, Roll)``       carry the held tool over the table, lower it
+                                               ``slide_from`` off the place and slide it in
+                                               until its working point is at (X, Y,
+                                               ``work_z``), turned to Roll (a pusher's head
+                                               round or behind what it will push)
+``sweep``            -                         move the held tool along ``direction`` (in
+                                               the table's plane) until its working point
+                                               reaches ``until`` along it, slowing over the
+                                               last ``ramp`` metres, then wait until what
+                                               it pushed is at rest
 ``release_joint``    -                         release the target's held joint: its closer
                                                acts for ``duration`` s (recorded for the
                                                oracle)
@@ -260,8 +270,14 @@ def _choose_posture(ep: Any, steps, pull_dx: float, speed: float) -> SkillOutcom
     carries the whole path is reached by lifting the tool clear, moving in joint
     space, and coming back down.
     """
+    return _posture_for_path(ep, _gripper_path(ep, steps, pull_dx), speed,
+                             "the insertion and the pull")
+
+
+def _posture_for_path(ep: Any, path: list[Pose], speed: float, what: str) -> SkillOutcome:
+    """Make sure the arm can follow the gripper poses ``path``; re-shape it if not (as
+    :func:`_choose_posture` says)."""
     rb = ep.robot
-    path = _gripper_path(ep, steps, pull_dx)
     if rb.dry_run(rb.arm_q(), path) is not None:
         return SkillOutcome("ok")
     here = rb.gripper_pose()
@@ -281,8 +297,8 @@ def _choose_posture(ep: Any, steps, pull_dx: float, speed: float) -> SkillOutcom
             if not res.ok:
                 return res
         return SkillOutcome("ok")
-    return SkillOutcome("unreachable", "no arm posture can carry the tool along the "
-                        "insertion and the pull (joint limits)")
+    return SkillOutcome("unreachable", f"no arm posture can carry the tool along {what} "
+                        "(joint limits)")
 
 
 # ----------------------------------------------------------------- place on floor
@@ -382,6 +398,136 @@ def push_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOut
         return res
     ep.sim.step(int(opts["settle_steps"]))
     return SkillOutcome("ok")
+
+
+# ------------------------------------------------------- lower a tool onto the table
+def lower_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Lower the held tool onto the table with its working point at (X, Y, ``work_z``).
+
+    The tool's frame is carried at height ``travel_z``, first along x, then along y,
+    to where its working point is ``slide_from`` = (dx, dy) m off the place; there it is
+    turned to Roll, lowered straight down at ``speed`` and slid in at that height to
+    the place (without it, straight down onto it). With ``via``
+    = (dx, dy) it first goes at height ``carry_z`` (default ``travel_z``), along x,
+    then along y, to that offset from the place, and is raised to ``travel_z`` there.
+    A pusher's head comes down round a ball or behind a row of cubes; what it meets is
+    the physics' business. The via point, the slide and the order of the legs let
+    a world route the tool round what it must not touch and through where the arm
+    reaches. With ``posture_search`` (a handled tool's) the arm's posture for the whole
+    path is checked first and, if it would lose it, re-shaped as ``insert_at_pose``
+    does (:func:`_choose_posture`).
+    """
+    _, x, y, roll = target
+    spec, kind = ep.spec, ep.kind
+    q = tool_orientation(spec, roll)
+    off = pb.multiplyTransforms((0, 0, 0), q, prong_centre(spec), (0, 0, 0, 1))[0]
+    low = (x - off[0], y - off[1], opts["work_z"] - off[2])
+    ax, ay = (float(v) for v in (opts.get("slide_from") or (0.0, 0.0)))
+    side = (low[0] + ax, low[1] + ay)
+    high = opts["travel_z"]
+    carried = kind.attitude(ep)
+    here = ep.tool_pose()[0]
+    fast = opts["free_speed"]
+    legs: list[tuple[float, float, float]] = []
+    if opts.get("via") is not None:
+        vx, vy = (float(v) for v in opts["via"])
+        carry = high if opts.get("carry_z") is None else opts["carry_z"]
+        via = (low[0] + vx, low[1] + vy)
+        legs += [(here[0], here[1], carry), (via[0], here[1], carry),
+                 (via[0], via[1], carry)]
+        here = (via[0], via[1], carry)
+    legs += [(here[0], here[1], high), (side[0], here[1], high), (side[0], side[1], high)]
+    steps = [(p, carried, fast) for p in legs]
+    steps += [((side[0], side[1], high), roll, fast),
+              ((side[0], side[1], low[2]), roll, opts["speed"]),
+              (low, roll, opts["speed"])]
+    if opts["posture_search"]:
+        from creative_py.backends.pybullet.arm import gripper_forward
+
+        path = [(kind.gripper_for_tool(ep, origin, r), gripper_forward(r))
+                for origin, r, _ in steps]
+        res = _posture_for_path(ep, path, fast, "the carrying and the lowering")
+        if not res.ok:
+            return res
+    for origin, r, speed in steps:
+        res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed)
+        if not res.ok:
+            return res
+    ep.state["attitude"] = roll
+    return SkillOutcome("ok")
+
+
+# ------------------------------------------------------------ sweep across the table
+def sweep(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
+    """Move the held tool along ``direction`` until its working point reaches ``until``.
+
+    ``direction`` is a unit vector (x, y) in the table's plane; ``until`` is where the
+    working point stops, measured along it (the dot product of its (x, y) with the
+    direction, m). The tool keeps its height and attitude and moves at ``speed``, the
+    last ``ramp`` metres in ``ramp_pieces`` moves whose speeds fall evenly to
+    ``end_speed`` (a ball pushed ahead rolls on at the speed it was pushed: slowing
+    down lets the tool's walls take it back). Then the physics runs ``settle_steps``
+    steps and, with ``rest_speed`` above 0, further steps until every dynamic body of
+    the scene moves slower than ``rest_speed`` m/s, for at most ``settle_time`` s. With
+    ``lift`` above 0 the tool is then raised straight up by that much.
+    """
+    if not ep.held:
+        return SkillOutcome("blocked", "no tool is held")
+    dx, dy = (float(v) for v in opts["direction"])
+    norm = math.hypot(dx, dy)
+    if norm < 1e-9:
+        return SkillOutcome("invalid", "the sweep's direction is zero")
+    dx, dy = dx / norm, dy / norm
+    wp = ep.kind.working_point(ep)
+    travel = float(opts["until"]) - (wp[0] * dx + wp[1] * dy)
+    attitude = ep.state.get("attitude", None)
+    if attitude is None:
+        attitude = ep.kind.attitude(ep)
+    g, _ = ep.robot.gripper_pose()
+    ramp = min(max(float(opts["ramp"]), 0.0), max(travel, 0.0))
+    pieces = max(1, int(opts["ramp_pieces"])) if ramp > 0 else 0
+    plan = [(travel - ramp, float(opts["speed"]))]
+    for i in range(1, pieces + 1):
+        t = i / pieces
+        speed = opts["speed"] + t * (opts["end_speed"] - opts["speed"])
+        plan.append((travel - ramp + t * ramp, max(float(speed), 1e-3)))
+    for dist, speed in plan:
+        if dist <= 0:
+            continue
+        goal = (g[0] + dx * dist, g[1] + dy * dist, g[2])
+        res = ep.kind.move(ep, goal, attitude, speed)
+        if not res.ok:
+            return res
+    ep.sim.step(int(opts["settle_steps"]))
+    if opts["rest_speed"] > 0:
+        moving = _moving_bodies(ep)
+        n = int(round(opts["settle_time"] / ep.sim.physics.time_step))
+        for _ in range(max(n, 0)):
+            if all(_speed_of(ep, b) < opts["rest_speed"] for b in moving):
+                break
+            ep.sim.step()
+    for body in ep.watch:
+        why = ep.sim.blow_up(body)
+        if why:
+            return SkillOutcome("invalid", why)
+    if opts["lift"] > 0:
+        g, _ = ep.robot.gripper_pose()
+        res = ep.kind.move(ep, (g[0], g[1], g[2] + opts["lift"]), attitude,
+                           opts["speed"])
+        if not res.ok:
+            return res
+    return SkillOutcome("ok")
+
+
+def _moving_bodies(ep: Any) -> list[int]:
+    """Return the scene's dynamic bodies (what a push can set moving)."""
+    return [b.id for b in ep.bodies.values() if getattr(b, "dynamic", False) and b.id >= 0]
+
+
+def _speed_of(ep: Any, body: int) -> float:
+    """Return a body's linear speed, m/s."""
+    v, _ = pb.getBaseVelocity(body, physicsClientId=ep.sim.client)
+    return math.sqrt(v[0] ** 2 + v[1] ** 2 + v[2] ** 2)
 
 
 # ------------------------------------------------------------------ release a joint
@@ -503,6 +649,16 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
               {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60, **SLIP_OPTIONS}),
     Primitive("push_along_axis", push_along_axis,
               {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
+    Primitive("lower_at_pose", lower_at_pose,
+              {"travel_z": REQUIRED, "work_z": REQUIRED, "slide_from": None,
+               "via": None, "carry_z": None, "free_speed": 0.35, "speed": 0.10,
+               "posture_search": False,
+               "perceive": True}, target="tip",
+),
+    Primitive("sweep", sweep,
+              {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
+               "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
+               "settle_time": 2.0, "lift": 0.0}),
     Primitive("release_joint", release_joint,
               {"duration": 4.0, "contact_distance": 0.0005, "park_robot": True}),
 )}
@@ -517,12 +673,16 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     # where things are: coordinates in the world frame (a list: each of its numbers)
     "travel_z": _POSITION, "pull_to_x": _POSITION, "until_x": _POSITION,
     "lift_to": _POSITION, "carry_z": _POSITION, "retreat": _POSITION,
+    "work_z": _POSITION, "direction": (-1.0, 1.0, "(a unit vector)"),
+    "slide_from": (-2.0, 2.0, "m"), "via": (-2.0, 2.0, "m"), "until": _POSITION,
     # how far
     "approach": (0.0, 1.0, "m"), "clearance": (0.0, 1.0, "m"),
     "carry_height": (0.0, 1.0, "m"), "release_height": (0.0, 1.0, "m"),
     "distance": (-2.0, 2.0, "m"), "contact_distance": (-0.1, 0.1, "m"),
+    "ramp": (0.0, 2.0, "m"), "lift": (0.0, 1.0, "m"), "ramp_pieces": (1, 100, "steps"),
     # how fast
-    "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED,
+    "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED, "end_speed": _SPEED,
+    "rest_speed": (0.0, 1.0, "m/s"),
     # angles
     "gripper_yaw": _ANGLE, "hold_angle": _ANGLE,
     # how long: what a hang would come from

@@ -48,6 +48,22 @@ Body kinds
     open table, or the passage between walls built of boxes, and a flat goal mark at
     ``goal_x``. Facts: ``lane_start/4``, ``lane_length_m/2``, ``lane_room_m/3``,
     ``lane_goal/3``.
+``sphere``
+    A ball (static when ``mass`` is 0) of ``radius``, frame at its centre. Rolling
+    friction and damping are pybullet's defaults unless given (a ball on a table rolls
+    on until something stops it).
+``zone``
+    A goal marked on the table: a disc of ``radius`` about (``x``, ``y``) at height ``z``,
+    seen by nothing that collides (a visual only, as the benchmark's goal markers).
+    Facts: ``reach_zone/4`` (its centre's x, y and its radius).
+``scatter``
+    ``count`` cubes of side ``size`` drawn at random in a rectangle of the table
+    (``x_range``, ``y_range``), each centre farther than ``min_gap`` (Euclidean, in the
+    plane) from every other, by rejection sampling from ``seed`` (a location's value
+    that the world sampler may jitter: a new seed, a new drawing). The cubes are boxes
+    of their own, named ``<name>1`` ... ``<name><count>`` (an oracle lists them by
+    name); the scatter builds nothing itself and reports the rectangle its cubes lie
+    in now as ``pose/5`` and ``size/4`` of its own name (the field a tool sweeps).
 
 Every number of a body has bounds (each kind's ``BOUNDS``), checked in every variant
 and location when the world loads: coordinates within +-10 m and dimensions 0-10 m of
@@ -508,6 +524,160 @@ class DoorBody(SceneBody):
                 ("door_gap_m", self.name, self.bottom_gap)]
 
 
+class SphereBody(SceneBody):
+    """A ball of ``radius`` (m), frame at its centre ``position``; static if mass 0.
+
+    ``rolling_friction``, ``linear_damping`` and ``angular_damping`` are pybullet's
+    (defaults: none, 0.04, 0.04), so that a world states what its ball does once pushed.
+    """
+
+    FIELDS = {"radius": REQUIRED, "position": REQUIRED, "mass": 0.0, "friction": 0.5,
+              "rolling_friction": 0.0, "linear_damping": 0.04, "angular_damping": 0.04,
+              "colour": (0.9, 0.1, 0.1, 1.0)}
+    BOUNDS = {"radius": SIZE, "position": POSITION, "mass": MASS, "friction": FRICTION,
+              "rolling_friction": FRICTION, "linear_damping": (0.0, 1.0, "(pybullet's)"),
+              "angular_damping": (0.0, 1.0, "(pybullet's)"), "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        if self.radius <= 0:
+            raise ValueError(f"body {name}: radius must be positive, got {self.radius}")
+        if len(self.position) != 3:
+            raise ValueError(f"body {name}: position must have 3 numbers (x, y, z)")
+        self.dynamic = self.mass > 0
+
+    @property
+    def height(self) -> float:
+        return 2 * self.radius
+
+    def build(self, sim: Sim) -> int:
+        c = sim.client
+        col = pb.createCollisionShape(pb.GEOM_SPHERE, radius=self.radius, physicsClientId=c)
+        vis = pb.createVisualShape(pb.GEOM_SPHERE, radius=self.radius,
+                                   rgbaColor=tuple(self.colour), physicsClientId=c)
+        self.id = pb.createMultiBody(baseMass=self.mass, baseCollisionShapeIndex=col,
+                                     baseVisualShapeIndex=vis,
+                                     basePosition=tuple(self.position), physicsClientId=c)
+        pb.changeDynamics(self.id, -1, lateralFriction=self.friction,
+                          rollingFriction=self.rolling_friction,
+                          linearDamping=self.linear_damping,
+                          angularDamping=self.angular_damping, physicsClientId=c)
+        return self.id
+
+
+class ZoneBody(SceneBody):
+    """A goal disc on the table: ``radius`` (m) about (``x``, ``y``), drawn at ``z``; it
+    does not collide. Facts: ``reach_zone(Name, X, Y, R)``."""
+
+    FIELDS = {"x": REQUIRED, "y": REQUIRED, "z": 0.0, "radius": REQUIRED,
+              "colour": (0.1, 0.8, 0.2, 0.5)}
+    BOUNDS = {"x": POSITION, "y": POSITION, "z": POSITION, "radius": SIZE,
+              "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        if self.radius <= 0:
+            raise ValueError(f"body {name}: radius must be positive, got {self.radius}")
+
+    def build(self, sim: Sim) -> int:
+        c = sim.client
+        vis = pb.createVisualShape(pb.GEOM_CYLINDER, radius=self.radius, length=0.001,
+                                   rgbaColor=tuple(self.colour), physicsClientId=c)
+        self.id = pb.createMultiBody(baseMass=0.0, baseCollisionShapeIndex=-1,
+                                     baseVisualShapeIndex=vis,
+                                     basePosition=(self.x, self.y, self.z),
+                                     physicsClientId=c)
+        return self.id
+
+    def centre(self, sim: Sim) -> tuple[float, float, float, float]:
+        return (self.x, self.y, self.z, 0.0)
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        return [("reach_zone", self.name, self.x, self.y, self.radius)]
+
+
+class ScatterBody(SceneBody):
+    """``count`` cubes drawn at random without overlap in a rectangle of the table.
+
+    Each cube's centre is drawn uniformly in ``x_range`` x ``y_range`` (m) and kept if
+    it lies farther than ``min_gap`` (m, in the plane) from every cube kept before; a
+    cube gets at most ``tries`` draws (a drawing that cannot be finished is an error
+    naming the body). The generator is :func:`numpy.random.default_rng` of ``seed``
+    (rounded to a whole number): the same seed, the same cubes. The cubes (``size`` m,
+    ``mass`` kg each, ``friction``) rest on ``floor_z`` and are boxes of their own
+    (:meth:`members`), named ``<name>1`` ...; the scatter itself builds nothing.
+    """
+
+    FIELDS = {"count": REQUIRED, "size": REQUIRED, "x_range": REQUIRED, "y_range": REQUIRED,
+              "floor_z": REQUIRED, "min_gap": REQUIRED, "seed": REQUIRED, "tries": 100,
+              "mass": 1.0, "friction": 0.5, "colour": (0.85, 0.8, 0.7, 1.0)}
+    BOUNDS = {"count": (1, 100, "(a count)"), "size": SIZE, "x_range": POSITION,
+              "y_range": POSITION, "floor_z": POSITION, "min_gap": SIZE,
+              "seed": (0, 1e9, "(a seed)"), "tries": (1, 10000, "draws"), "mass": MASS,
+              "friction": FRICTION, "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        for f in ("x_range", "y_range"):
+            r = self.v[f]
+            if len(r) != 2 or not r[0] < r[1]:
+                raise ValueError(f"body {name}: {f} must be [low, high] with low < high")
+        if self.size <= 0 or int(self.count) != self.count:
+            raise ValueError(f"body {name}: count must be a whole number and size positive")
+        self.centres = self._draw()
+        self._members = {f"{name}{i + 1}": BoxBody(f"{name}{i + 1}", {
+            "size": (self.size,) * 3, "position": (x, y, self.floor_z), "top_z": None,
+            "yaw": 0.0, "mass": self.mass, "friction": self.friction,
+            "colour": tuple(self.colour), "frame": "bottom"})
+            for i, (x, y) in enumerate(self.centres)}
+
+    def _draw(self) -> list[tuple[float, float]]:
+        """Return the cubes' centres (x, y), drawn as the class docstring says."""
+        import numpy as np
+
+        rng = np.random.default_rng(int(round(self.seed)))
+        kept: list[tuple[float, float]] = []
+        for i in range(int(self.count)):
+            for _ in range(int(self.tries)):
+                x = float(rng.uniform(*self.x_range))
+                y = float(rng.uniform(*self.y_range))
+                if all(math.dist((x, y), c) > self.min_gap for c in kept):
+                    kept.append((x, y))
+                    break
+            else:
+                raise ValueError(f"body {self.name}: cube {i + 1} found no place "
+                                 f"{self.min_gap:g} m from the others in {int(self.tries)} "
+                                 f"draws (seed {int(round(self.seed))})")
+        return kept
+
+    def members(self) -> dict[str, SceneBody]:
+        """Return the cubes, ``name -> box body``, in the order they were drawn."""
+        return dict(self._members)
+
+    def build(self, sim: Sim) -> int:
+        return -1  # the cubes are built as bodies of their own
+
+    def extent(self, sim: Sim) -> tuple[float, float, float, float]:
+        """Return where the cubes' centres lie now: (x_min, x_max, y_min, y_max), m."""
+        pts = [m.centre(sim) for m in self._members.values()]
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        return min(xs), max(xs), min(ys), max(ys)
+
+    def centre(self, sim: Sim) -> tuple[float, float, float, float]:
+        x0, x1, y0, y1 = self.extent(sim)
+        return ((x0 + x1) / 2, (y0 + y1) / 2, self.floor_z + self.size / 2, 0.0)
+
+    @property
+    def height(self) -> float:
+        return self.size
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        x0, x1, y0, y1 = self.extent(sim)
+        s = self.size
+        return [("pose", self.name, (x0 + x1) / 2, (y0 + y1) / 2, self.floor_z + s / 2, 0.0),
+                ("size", self.name, x1 - x0 + s, y1 - y0 + s, s)]
+
+
 class LaneBody(SceneBody):
     """An open lane along +x on a surface: the room a tool works in, with no walls.
 
@@ -560,7 +730,9 @@ class LaneBody(SceneBody):
 
 
 BODY_KINDS: dict[str, type[SceneBody]] = {"box": BoxBody, "tube": TubeBody, "shelf": ShelfBody,
-                                          "door": DoorBody, "lane": LaneBody}
+                                          "door": DoorBody, "lane": LaneBody,
+                                          "sphere": SphereBody, "zone": ZoneBody,
+                                          "scatter": ScatterBody}
 """The body kinds a ``[[body]]`` table may name."""
 
 
@@ -607,4 +779,10 @@ def make_bodies(tables: tuple[BodyTable, ...], ns: Namespace) -> dict[str, Scene
             bodies[t.name] = BODY_KINDS[t.kind](t.name, values)
         except (ValueError, TypeError) as exc:
             raise WorldFileError(f"{t.where}: {exc}") from None
+        members = getattr(bodies[t.name], "members", None)
+        for member, body in (members() if callable(members) else {}).items():
+            if member in bodies or any(o.name == member for o in tables):
+                raise WorldFileError(f"{t.where}: its member {member!r} has the name of "
+                                     "another body")
+            bodies[member] = body
     return bodies

@@ -24,7 +24,11 @@ from creative_py.backends.pybullet.tools import catalogue_facts
 from creative_py.simulator.randomise import apply_drawn
 
 # The pybullet cases: drawn worlds are that backend's (the ManiSkill backend draws none).
-CASES = sorted(c for c, m in load_cases().items() if m.backend == "pybullet")
+# move_ball's demonstration cannot pass the benchmark's done() (a ball at rest scores
+# 0.884 at most), so no drawn world keeps it: test_no_world_is_drawn_where_the_... below.
+UNDRAWABLE = ("move_ball",)
+CASES = sorted(c for c, m in load_cases().items()
+               if m.backend == "pybullet" and c not in UNDRAWABLE)
 
 pytestmark = pytest.mark.sim
 
@@ -48,6 +52,13 @@ def _drawn(engine, case, seed):
         _DRAWS[(case, seed)] = draw_catalogue_world(engine, load_world(load_cases()[case]),
                                                     seed)
     return _DRAWS[(case, seed)]
+
+
+@pytest.mark.parametrize("case", UNDRAWABLE)
+def test_no_world_is_drawn_where_the_demonstration_cannot_reach_the_goal(engine, case):
+    with pytest.raises(ValueError, match="world seed 0: the demonstration .* failed in the "
+                                         "physics"):
+        draw_catalogue_world(engine, load_world(load_cases()[case]), 0)
 
 
 @pytest.mark.parametrize("case", CASES)
