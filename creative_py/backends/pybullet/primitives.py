@@ -150,11 +150,15 @@ def slip_guard(ep: Any, opts: Mapping[str, Any]) -> Callable[[], SkillOutcome | 
 def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
     """Insert the held hook-like tool into the context's passage, prong centre at (X, Y).
 
-    The context is a body with a passage along +x (a ``tube``, or the space under a
-    ``shelf``: its ``mouth_x``, ``axis_y``, ``floor_z``, ``inner_width`` and
+    The context is a body with a passage along +x (a ``tube``, the space under a
+    ``shelf``, the room above a ``standing_shelf`` or between ``bookends``: its
+    ``mouth_x``, ``axis_y``, ``passage_floor_z``, ``inner_width`` and
     ``inner_height``). The gripper carries the tool above it to in front of its mouth and turns it
     so the prong is flat: at the requested roll if that is flat, otherwise towards the
-    side of the handle with more room. With ``posture_search`` it first tries the rest
+    side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or -pi/2;
+    0, the default, chooses by the room) if the manifest sets one: an arm whose wrist
+    turns only one way from the pose's roll (the Panda's last joint at the height of a
+    tall shelf) carries the prong flat on that side. With ``posture_search`` it first tries the rest
     of the motion (insertion, turning, the pull back to ``pull_to_x``) in the
     kinematics client and, if the arm would meet a joint limit, re-shapes it in free
     space. It then lowers the tool to ``clearance`` above the target (its perceived
@@ -178,6 +182,8 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     travel = opts["travel_z"]
     if abs(roll) >= math.pi / 4 or not spec.has_head:
         flat = roll
+    elif opts["flat_roll"]:
+        flat = opts["flat_roll"]
     else:
         room_left = tb.axis_y + tb.inner_width / 2 - y_goal
         room_right = y_goal - (tb.axis_y - tb.inner_width / 2)
@@ -195,8 +201,9 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
              ((pre_origin_x, y_goal, travel), flat, opts["free_speed"]),
              ((pre_origin_x, y_goal, z_insert), flat, opts["free_speed"]),
              ((goal_origin_x, y_goal, z_insert), flat, opts["speed"])]
-    z_down = min(max(z_insert, tb.floor_z + prong_reach(spec) + 0.004),
-                 tb.floor_z + tb.inner_height - half_t - 0.002)
+    floor = tb.passage_floor_z
+    z_down = min(max(z_insert, floor + prong_reach(spec) + 0.004),
+                 floor + tb.inner_height - half_t - 0.002)
     steps.append(((goal_origin_x, y_goal, z_down), flat, opts["speed"]))
     steps.append(((goal_origin_x, y_goal, z_down), roll, opts["speed"]))
     pull_dx = min(0.0, opts["pull_to_x"] - x_goal)
@@ -492,7 +499,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("insert_at_pose", insert_at_pose,
               {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
                "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
-               **SLIP_OPTIONS},
+               "flat_roll": 0.0, **SLIP_OPTIONS},
               target="tip",
               bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
     Primitive("place_on_floor", place_on_floor,
@@ -524,7 +531,7 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     # how fast
     "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED,
     # angles
-    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE,
+    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE, "flat_roll": _ANGLE,
     # how long: what a hang would come from
     "settle_time": (0.0, 10.0, "s"), "duration": (0.0, 60.0, "s"),
     "settle_steps": (0, 10000, "steps"),
