@@ -158,7 +158,10 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or -pi/2;
     0, the default, chooses by the room) if the manifest sets one: an arm whose wrist
     turns only one way from the pose's roll (the Panda's last joint at the height of a
-    tall shelf) carries the prong flat on that side. With ``posture_search`` it first tries the rest
+    tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
+    open at the top: the room above a shelf's top or a row of books) the tool is
+    lowered at the goal's x instead of in front of the mouth, so that an arm of short
+    reach need not hold the whole tool in front of the passage. With ``posture_search`` it first tries the rest
     of the motion (insertion, turning, the pull back to ``pull_to_x``) in the
     kinematics client and, if the arm would meet a joint limit, re-shapes it in free
     space. It then lowers the tool to ``clearance`` above the target (its perceived
@@ -195,7 +198,9 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     tip_off = pb.multiplyTransforms((0, 0, 0), q_flat, tip_local, (0, 0, 0, 1))[0]
     goal_origin_x = x_goal - tip_off[0]
     far_x = max(spec.handle_length, tip_local[0] + spec.head_width)
-    pre_origin_x = tb.mouth_x - 0.03 - far_x
+    # Lowered into the passage in front of its mouth, or, with from_above (a passage
+    # open at the top), straight down at the goal.
+    pre_origin_x = goal_origin_x if opts["from_above"] else tb.mouth_x - 0.03 - far_x
     carried = kind.attitude(ep)
     steps = [((pre_origin_x, y_goal, travel), carried, opts["free_speed"]),
              ((pre_origin_x, y_goal, travel), flat, opts["free_speed"]),
@@ -499,7 +504,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("insert_at_pose", insert_at_pose,
               {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
                "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
-               "flat_roll": 0.0, **SLIP_OPTIONS},
+               "flat_roll": 0.0, "from_above": False, **SLIP_OPTIONS},
               target="tip",
               bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
     Primitive("place_on_floor", place_on_floor,

@@ -54,7 +54,7 @@ Body kinds
     Two L-shaped bookends (a base plate under the books, an upright beside them) facing
     each other across a row of books; the room above the books between the uprights is
     a passage along +x from the books' front (for a tool carried over a book). Facts:
-    ``bookends_front/4``, ``bookends_room_m/3``.
+    ``bookends_front/4``, ``bookends_room_m/4``.
 
 Every number of a body has bounds (each kind's ``BOUNDS``), checked in every variant
 and location when the world loads: coordinates within +-10 m and dimensions 0-10 m of
@@ -665,25 +665,26 @@ class BookendsBody(SceneBody):
     m thick, on ``floor_z``) under the row's end and an upright (``thickness`` m, from
     the plate up to ``height``) outside it; ``left_y`` and ``right_y`` are the inner
     faces of the uprights (left < right), ``centre_x`` the row's middle along x. The
-    room above the plates between the uprights is a passage along +x from the row's
-    front (``mouth_x``; ``floor_z`` of the passage is the plates' top): a tool is
-    carried over the books in it. Facts: ``bookends_front/4`` (the front's x, the
-    middle's y, the plates' top z), ``bookends_room_m/3`` (the room between the
-    uprights, their height above the plates, the depth along x).
+    room above the plates between the uprights, ``room`` m high (above the books,
+    whatever the uprights' height), is a passage along +x from the row's front
+    (``mouth_x``; the passage's floor is the plates' top): a tool is carried over the
+    books in it. Facts: ``bookends_front/4`` (the front's x, the
+    middle's y, the plates' top z), ``bookends_room_m/4`` (the room between the
+    uprights, its height above the plates, the depth along x).
     """
 
     FIELDS = {"centre_x": REQUIRED, "left_y": REQUIRED, "right_y": REQUIRED,
               "floor_z": REQUIRED, "depth": REQUIRED, "height": REQUIRED,
               "plate": REQUIRED, "plate_width": REQUIRED, "thickness": REQUIRED,
-              "friction": 0.5, "colour": (0.35, 0.35, 0.4, 1.0)}
+              "room": REQUIRED, "friction": 0.5, "colour": (0.35, 0.35, 0.4, 1.0)}
     BOUNDS = {"centre_x": POSITION, "left_y": POSITION, "right_y": POSITION,
               "floor_z": POSITION, "depth": SIZE, "height": SIZE, "plate": SIZE,
-              "plate_width": SIZE, "thickness": SIZE, "friction": FRICTION,
+              "plate_width": SIZE, "thickness": SIZE, "room": SIZE, "friction": FRICTION,
               "colour": COLOUR}
 
     def __init__(self, name: str, values: Mapping[str, Any]) -> None:
         super().__init__(name, values)
-        for f in ("depth", "height", "plate", "plate_width", "thickness"):
+        for f in ("depth", "height", "plate", "plate_width", "thickness", "room"):
             if self.v[f] <= 0:
                 raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
         if self.right_y <= self.left_y:
@@ -706,8 +707,8 @@ class BookendsBody(SceneBody):
 
     @property
     def inner_height(self) -> float:
-        """Return the uprights' height above the plates, metres."""
-        return self.v["height"] - self.plate
+        """Return the room's height above the plates (``room``), metres."""
+        return self.room
 
     @property
     def passage_floor_z(self) -> float:
