@@ -161,6 +161,9 @@ class CaseManifest:
     robot: Optional[str] = None
     """The case's default robot: a profile of ``robots/`` (``--robot`` chooses another);
     None for a backend that brings its own arm."""
+    benchmark: Optional[str] = None
+    """The published benchmark the case re-expresses (``robotoolbench``), by which a
+    bench gathers its cases; None for the project's own."""
 
     @property
     def harder_variant(self) -> str:
@@ -251,6 +254,9 @@ def read_manifest(folder: Path) -> CaseManifest:
     ontology = f.str("ontology")
     backend = f.str("backend", DEFAULT_BACKEND, choices=tuple(sorted(BACKENDS)))
     robot = f.str("robot") if f.has("robot") else None
+    benchmark = f.str("benchmark") if f.has("benchmark") else None
+    if benchmark is not None and not _ID.match(benchmark):
+        raise f.error("benchmark", f"must be a lower-case word, got {benchmark!r}")
     if robot is not None and robot not in profile_names():
         raise f.error("robot", f"no robot profile {robot!r} in robots/; profiles: "
                       f"{', '.join(profile_names())}")
@@ -273,7 +279,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), skills, pose_term, params,
                             variants, demo, jitters, paper_trials, bounds, value_bounds,
-                            backend, robot)
+                            backend, robot, benchmark)
     try:
         manifest.check_pose(demo.pose, "demonstration.pose")
     except ValueError as exc:

@@ -110,10 +110,11 @@ class Verdict:
     def text(self) -> str:
         """Return the verdict in words, e.g. ``door1 angle 12.5 deg (needs >= 20 deg);
         closed 0.3 deg after touching the tool (needs < 2 deg)``."""
+        unit = f" {self.unit}" if self.unit else ""  # a reward has none
         value = ("unmeasured" if self.value is None
-                 else f"{_num(self.value, self.unit)} {self.unit}")
+                 else f"{_num(self.value, self.unit)}{unit}")
         limit = ("" if self.threshold is None
-                 else f"{_num(self.threshold, self.unit)} {self.unit}")
+                 else f"{_num(self.threshold, self.unit)}{unit}")
         src = f", {self.threshold_name}" if self.threshold_name else ""
         text = f"{self.quantity} {value} (needs {self.relation} {limit}{src})"
         return f"{text}; {self.detail}" if self.detail else text
@@ -121,8 +122,9 @@ class Verdict:
     def brief(self) -> str:
         """Return the main measure on one short line (a clip caption's), e.g.
         ``door1 angle 12.3 deg, needs >= 20.0``."""
+        unit = f" {self.unit}" if self.unit else ""
         value = ("unmeasured" if self.value is None
-                 else f"{_num(self.value, self.unit)} {self.unit}")
+                 else f"{_num(self.value, self.unit)}{unit}")
         limit = "" if self.threshold is None else _num(self.threshold, self.unit)
         return f"{self.quantity} {value}, needs {self.relation} {limit}"
 

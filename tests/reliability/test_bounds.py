@@ -140,7 +140,7 @@ def test_every_option_of_every_primitive_and_oracle_has_bounds():
                 assert lo <= default <= hi, (p.name, name, default)
     for o in ORACLES.values():
         for name in o.options:
-            assert name in ORACLE_BOUNDS or name in {o.subject, "axis", "fact"}, (o.name, name)
+            assert name in ORACLE_BOUNDS or name in {o.subject, *o.words}, (o.name, name)
     assert all(math.isfinite(lo) and math.isfinite(hi)
                for lo, hi, _ in [*OPTION_BOUNDS.values(), *ORACLE_BOUNDS.values()])
 

@@ -184,6 +184,9 @@ class Episode:
         self.run(w.scene.settle_time)
         # Where the tracked objects start (an oracle measures how far they moved).
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
+        # And every movable body's (a reward counting bodies nobody tracks reads them).
+        self.body_starts = {n: b.centre(self.sim) for n, b in self.bodies.items()
+                            if b.dynamic}
 
     def _pose_of(self, table: dict[str, Any]):
         from creative_py.backends.pybullet.arm import GRIPPER_ATTITUDES
@@ -451,6 +454,11 @@ class Episode:
                                            (0, 0, 0, 1))[0]
             return (*centre, yaw_of(quat))
         return self.bodies[name].centre(self.sim)
+
+    def linear_velocity(self, name: str) -> tuple[float, float, float]:
+        """Return the true linear velocity of an object's base (m/s, world frame)."""
+        v, _ = pb.getBaseVelocity(self.body_id(name), physicsClientId=self.sim.client)
+        return tuple(float(c) for c in v)
 
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
         """Return ground-truth ``name -> (x, y, z, yaw)`` of the tracked objects and the

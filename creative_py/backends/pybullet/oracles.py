@@ -24,6 +24,17 @@ measured and the threshold it judged it by (the cube's centre against the mouth 
 far the cube moved; the door's angle against the held limit and how far it closed after
 touching the tool). An oracle may also name a ``fact`` that the observation reports
 (with the object's name) while the goal holds.
+
+The shaped-reward kinds (``goal_distance``, ``axis_progress``, ``in_box_or_distance``,
+``displacement_neighbours``, ``fraction_within``; RoboToolBench's rewards, the formulas
+in :mod:`creative_py.backends.pybullet.rewards`) measure a reward in [0, 1] and judge
+it by ``reward > threshold`` (0.99 by default, the benchmark's ``done()``)::
+
+    [oracle]                      # BringCube: 1 - |p - goal|_1 / |start - goal|_1
+    kind = "goal_distance"
+    object = "target"
+    goal = [0.6, 0.0, 0.035]
+    start = [1.0, 0.0, 0.035]
 """
 
 from __future__ import annotations
@@ -33,6 +44,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
+from creative_py.backends.pybullet import rewards
+from creative_py.backends.pybullet.rewards import l1, terms_json
 from creative_py.simulator.types import Verdict
 
 log = logging.getLogger(__name__)
@@ -44,13 +57,15 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 class OracleKind:
     """A registered oracle: ``judge(episode, options) -> Verdict``, its options
     (``name -> default``, None for required), the option naming the object it judges
-    (``subject``) and the option holding its threshold (``threshold``)."""
+    (``subject``), the option holding its threshold (``threshold``) and the options
+    that are words, not numbers (``words``: names, axes; the subject is one)."""
 
     name: str
     judge: Callable[[Any, Mapping[str, Any]], Verdict]
     options: Mapping[str, Any]
     subject: str
     threshold: str = ""
+    words: tuple[str, ...] = ("axis", "fact")
 
     def holds(self, ep: Any, opts: Mapping[str, Any]) -> bool:
         """Return whether the goal holds (the verdict's judgement)."""
@@ -127,6 +142,133 @@ def joint_held(ep: Any, opts: Mapping[str, Any]) -> Verdict:
                    measures=measures, note=note)
 
 
+# ------------------------------------------------------------------ shaped rewards
+# RoboToolBench's rewards (creative_py/backends/pybullet/rewards.py has the formulas):
+# the verdict's quantity is the reward in [0, 1], judged by ``reward > threshold`` (the
+# benchmark's done(): 0.99); the formula's terms are its measures.
+
+def _point(value: Any, option: str) -> tuple[float, ...]:
+    """Return an option's point (a tuple of numbers), or raise ValueError naming it."""
+    if not isinstance(value, tuple) or not value \
+            or not all(isinstance(v, float) for v in value):
+        raise ValueError(f"oracle option {option!r} must be a list of numbers (m), got "
+                         f"{value!r}")
+    return value
+
+
+def _names(ep: Any, value: Any, option: str) -> list[str]:
+    """Return the objects a list option names (roles or names)."""
+    if isinstance(value, str):
+        value = [value]
+    if not isinstance(value, (list, tuple)) or not value \
+            or not all(isinstance(v, str) for v in value):
+        raise ValueError(f"oracle option {option!r} must be a list of object names, got "
+                         f"{value!r}")
+    return [ep.object_name(v) for v in value]
+
+
+def _start(ep: Any, name: str) -> tuple[float, ...]:
+    """Return where an object's centre was when the trial began (after the settling)."""
+    start = ep.start_centres.get(name)
+    if start is None:
+        start = getattr(ep, "body_starts", {}).get(name)
+    if start is None:
+        raise ValueError(f"no start position recorded for {name!r}")
+    return tuple(float(v) for v in start[:3])
+
+
+def _centre(ep: Any, name: str) -> tuple[float, float, float]:
+    return tuple(float(v) for v in ep.true_centre(name)[:3])
+
+
+def _speed(ep: Any, name: str) -> float:
+    """Return the object's linear speed (m/s) after the last physics step.
+
+    pybullet integrates semi-implicitly (the position moves by the new velocity times
+    the step), so this is the last step's displacement over the step, the speed the
+    benchmark's MoveBall env measures by differencing its positions."""
+    return float(math.sqrt(sum(c * c for c in ep.linear_velocity(name))))
+
+
+def _reward_verdict(name: str, reward: float, terms: Mapping[str, Any],
+                    threshold: float, words: str) -> Verdict:
+    holds = bool(reward > threshold)
+    return Verdict("reward", float(reward), float(threshold), "", ">", holds,
+                   detail=f"{name}: {words}", measures=terms_json(terms), note=words)
+
+
+def goal_distance(ep: Any, opts: Mapping[str, Any]) -> Verdict:
+    """Judge ``max(0, 1 - |p - goal|_1 / scale - speed_weight * |v|)`` of ``object``.
+
+    ``scale`` 0 (the default) is the L1 distance from ``start`` to ``goal``, as the
+    benchmark's envs normalise it."""
+    name = ep.object_name(opts["object"])
+    goal, start = _point(opts["goal"], "goal"), _point(opts["start"], "start")
+    scale = float(opts["scale"]) or l1(start, goal)
+    weight = float(opts["speed_weight"])
+    speed = _speed(ep, name) if weight else 0.0
+    p = _centre(ep, name)[:len(goal)]
+    reward, terms = rewards.goal_distance(p, goal, scale, speed, weight)
+    words = f"{terms['distance_l1_m'] * 1000:.1f} mm (L1) from the goal"
+    if weight:
+        words += f", moving at {speed:.3f} m/s"
+    return _reward_verdict(name, reward, terms, opts["threshold"], words)
+
+
+def axis_progress(ep: Any, opts: Mapping[str, Any]) -> Verdict:
+    """Judge the best over ``axes`` of ``clip(1 - (p - near) / (start - near))``."""
+    name = ep.object_name(opts["object"])
+    axes = opts["axes"]
+    if isinstance(axes, str):
+        axes = [axes]
+    if not isinstance(axes, (list, tuple)) or not all(a in _AXES for a in axes):
+        raise ValueError(f"oracle option 'axes' must list x, y or z, got {axes!r}")
+    reward, terms = rewards.axis_progress(_centre(ep, name), _point(opts["start"], "start"),
+                                          _point(opts["near"], "near"),
+                                          [_AXES[a] for a in axes])
+    words = ", ".join(f"{k[-1]} {v:.3f}" for k, v in terms.items())
+    return _reward_verdict(name, reward, terms, opts["threshold"], words)
+
+
+def in_box_or_distance(ep: Any, opts: Mapping[str, Any]) -> Verdict:
+    """Judge 1 inside the box ``box_min``-``box_max``, else the L1 progress to its
+    centre from ``start`` plus ``bonus`` below ``bonus_below_z``."""
+    name = ep.object_name(opts["object"])
+    reward, terms = rewards.in_box_or_distance(
+        _centre(ep, name), _point(opts["start"], "start"), _point(opts["box_min"], "box_min"),
+        _point(opts["box_max"], "box_max"), float(opts["bonus"]),
+        float(opts["bonus_below_z"]))
+    words = ("in the box" if terms["in_box"] else
+             f"{terms['distance_l1_m'] * 100:.1f} cm (L1) from the box's centre"
+             + (", below the bonus height" if terms["below_bonus_z"] else ""))
+    return _reward_verdict(name, reward, terms, opts["threshold"], words)
+
+
+def displacement_neighbours(ep: Any, opts: Mapping[str, Any]) -> Verdict:
+    """Judge ``object``'s displacement against ``success_distance`` with the penalty
+    ``exp(-sum of the neighbours' displacements)``."""
+    name = ep.object_name(opts["object"])
+    others = _names(ep, opts["neighbours"], "neighbours")
+    reward, terms = rewards.displacement_with_neighbours(
+        _centre(ep, name), _start(ep, name),
+        [(_centre(ep, n), _start(ep, n)) for n in others], float(opts["success_distance"]))
+    words = (f"moved {terms['moved_m'] * 100:.1f} cm, the others "
+             f"{terms['neighbours_moved_m'] * 100:.1f} cm")
+    return _reward_verdict(name, reward, terms, opts["threshold"], words)
+
+
+def fraction_within(ep: Any, opts: Mapping[str, Any]) -> Verdict:
+    """Judge the mean over ``objects`` of 1 within ``within`` (L1) of ``centre``, else
+    their L1 progress towards it from where each started."""
+    names = _names(ep, opts["objects"], "objects")
+    centre = _point(opts["centre"], "centre")
+    reward, terms = rewards.fraction_within([_centre(ep, n) for n in names],
+                                            [_start(ep, n) for n in names], centre,
+                                            float(opts["within"]))
+    words = f"{terms['inside']} of {terms['objects']} in the goal"
+    return _reward_verdict("objects", reward, terms, opts["threshold"], words)
+
+
 ORACLES: dict[str, OracleKind] = {o.name: o for o in (
     OracleKind("below", below, {"object": None, "axis": None, "limit": None, "fact": ""},
                "object", "limit"),
@@ -135,12 +277,44 @@ ORACLES: dict[str, OracleKind] = {o.name: o for o in (
     OracleKind("joint_held", joint_held,
                {"body": None, "max_close_deg": None, "min_open_deg": None, "fact": ""},
                "body", "min_open_deg"),
+    OracleKind("goal_distance", goal_distance,
+               {"object": None, "goal": None, "start": None, "scale": 0.0,
+                "speed_weight": 0.0, "threshold": 0.99, "fact": ""},
+               "object", "threshold"),
+    OracleKind("axis_progress", axis_progress,
+               {"object": None, "axes": None, "start": None, "near": None,
+                "threshold": 0.99, "fact": ""},
+               "object", "threshold", words=("axes", "fact")),
+    OracleKind("in_box_or_distance", in_box_or_distance,
+               {"object": None, "box_min": None, "box_max": None, "start": None,
+                "bonus": 0.0, "bonus_below_z": -10.0, "threshold": 0.99, "fact": ""},
+               "object", "threshold"),
+    OracleKind("displacement_neighbours", displacement_neighbours,
+               {"object": None, "neighbours": None, "success_distance": None,
+                "threshold": 0.99, "fact": ""},
+               "object", "threshold", words=("neighbours", "fact")),
+    OracleKind("fraction_within", fraction_within,
+               {"objects": None, "centre": None, "within": None, "threshold": 0.99},
+               "objects", "threshold", words=()),
 )}
 """The oracle kinds a world's ``[oracle]`` table may name."""
 
 
 OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     "limit": (-10.0, 10.0, "m"),
+    "goal": (-10.0, 10.0, "m"),
+    "start": (-10.0, 10.0, "m"),
+    "near": (-10.0, 10.0, "m"),
+    "box_min": (-10.0, 10.0, "m"),
+    "box_max": (-10.0, 10.0, "m"),
+    "centre": (-10.0, 10.0, "m"),
+    "scale": (0.0, 10.0, "m"),
+    "within": (0.0, 10.0, "m"),
+    "success_distance": (0.0001, 10.0, "m"),
+    "bonus_below_z": (-10.0, 10.0, "m"),
+    "bonus": (0.0, 1.0, "(a reward)"),
+    "speed_weight": (0.0, 100.0, "s/m"),
+    "threshold": (0.0, 1.0, "(a reward)"),
     "max_close_deg": (0.0, 180.0, "deg"),
     "min_open_deg": (0.0, 180.0, "deg"),
 }

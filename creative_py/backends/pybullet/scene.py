@@ -276,6 +276,13 @@ class SceneBody:
         """Return the body's height if known (perception uses it), metres."""
         return None
 
+    @property
+    def passage_floor_z(self) -> float:
+        """Return the z of the floor of the body's passage along +x, metres: its
+        ``floor_z`` (a tube's inner floor, the base under a shelf's plate, a lane's
+        surface) unless the kind says otherwise (the top of a standing shelf)."""
+        return self.floor_z
+
 
 class BoxBody(SceneBody):
     """A box: ``size`` (m), frame at its ``centre`` or ``bottom`` face, static if mass 0.
@@ -350,11 +357,6 @@ class TubeBody(SceneBody):
             if self.v[f] <= 0:
                 raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
 
-    @property
-    def passage_floor_z(self) -> float:
-        """Return the z of the passage's floor (the inner floor), metres."""
-        return self.floor_z
-
     def build(self, sim: Sim) -> int:
         L, W, H, k = self.length, self.inner_width, self.inner_height, self.wall
         walls = [BoxPart((L / 2, 0, -k / 2), (L, W + 2 * k, k)),                 # floor
@@ -409,11 +411,6 @@ class ShelfBody(SceneBody):
     def wall(self) -> float:
         """Return the plate's thickness, metres."""
         return self.board
-
-    @property
-    def passage_floor_z(self) -> float:
-        """Return the z of the passage's floor (the base under the plate), metres."""
-        return self.floor_z
 
     def build(self, sim: Sim) -> int:
         D, W, H, k, g = self.depth, self.inner_width, self.inner_height, self.board, self.leg
@@ -524,6 +521,57 @@ class DoorBody(SceneBody):
                 ("door_closed_heading", self.name, self.closed_heading),
                 ("door_angle", self.name, self.angle(sim)),
                 ("door_gap_m", self.name, self.bottom_gap)]
+
+
+class LaneBody(SceneBody):
+    """An open lane along +x on a surface: the room a tool works in, with no walls.
+
+    Nothing collides: the lane only says where the work happens, like a tube's or a
+    shelf's passage (frame at its near end ``mouth_x``, on its axis ``axis_y``, on the
+    surface ``floor_z``; ``length`` along +x, ``inner_width`` across, ``inner_height``
+    the room above the surface), and where the target should end, ``goal_x`` on the
+    axis, drawn as a flat square mark of side ``mark`` m (visual only). Facts:
+    ``lane_start/4`` (near end's x, the axis's y, mid-room z), ``lane_length_m/2``,
+    ``lane_room_m/3`` (width, height), ``lane_goal/3`` (the goal's x, y).
+    """
+
+    FIELDS = {"mouth_x": REQUIRED, "axis_y": REQUIRED, "floor_z": REQUIRED,
+              "length": REQUIRED, "inner_width": REQUIRED, "inner_height": REQUIRED,
+              "goal_x": REQUIRED, "mark": 0.07, "colour": (0.2, 0.8, 0.2, 0.5)}
+    BOUNDS = {"mouth_x": POSITION, "axis_y": POSITION, "floor_z": POSITION,
+              "length": SIZE, "inner_width": SIZE, "inner_height": SIZE,
+              "goal_x": POSITION, "mark": SIZE, "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        for f in ("length", "inner_width", "inner_height", "mark"):
+            if self.v[f] <= 0:
+                raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
+
+    @property
+    def wall(self) -> float:
+        """Return the thickness above the room (none: the lane is open), metres."""
+        return 0.0
+
+    def build(self, sim: Sim) -> int:
+        c = sim.client
+        half = (self.mark / 2, self.mark / 2, 0.0005)
+        vis = pb.createVisualShape(pb.GEOM_BOX, halfExtents=half,
+                                   rgbaColor=tuple(self.colour), physicsClientId=c)
+        self.id = pb.createMultiBody(0.0, -1, vis, (self.goal_x, self.axis_y,
+                                                    self.floor_z + 0.0005),
+                                     physicsClientId=c)
+        return self.id
+
+    def centre(self, sim: Sim) -> tuple[float, float, float, float]:
+        return (self.goal_x, self.axis_y, self.floor_z, 0.0)
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        return [("lane_start", self.name, self.mouth_x, self.axis_y,
+                 self.floor_z + self.inner_height / 2),
+                ("lane_length_m", self.name, self.length),
+                ("lane_room_m", self.name, self.inner_width, self.inner_height),
+                ("lane_goal", self.name, self.goal_x, self.axis_y)]
 
 
 class StandingShelfBody(SceneBody):
@@ -733,7 +781,8 @@ class BookendsBody(SceneBody):
 
 
 BODY_KINDS: dict[str, type[SceneBody]] = {"box": BoxBody, "tube": TubeBody, "shelf": ShelfBody,
-                                          "door": DoorBody, "standing_shelf": StandingShelfBody,
+                                          "door": DoorBody, "lane": LaneBody,
+                                          "standing_shelf": StandingShelfBody,
                                           "open_box": OpenBoxBody, "bookends": BookendsBody}
 """The body kinds a ``[[body]]`` table may name."""
 

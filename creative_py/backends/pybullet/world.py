@@ -641,7 +641,7 @@ def oracle_words(world: World) -> set[str]:
     from creative_py.backends.pybullet.oracles import ORACLES
 
     o = ORACLES[world.oracle.kind]
-    return {o.subject, "axis", "fact"}
+    return {o.subject, *o.words}
 
 
 def resolve_start(world: World, ns) -> dict[str, Any]:
