@@ -120,18 +120,19 @@ spatial_definition(high_object, hook_flat(tool), over_pose(_, _, Roll), [Roll =<
 spatial_meaning(high_object, hook_down(tool), working_part_down(tool)).
 
 pose_domain(high_object, over_pose(Dx, Dy, Roll),
-            [Dx >= -0.40, Dx =< 0.40, Dy >= -0.20, Dy =< 0.20,
+            [Dx >= -0.40, Dx =< 0.40, Dy >= -dy_room, Dy =< dy_room,
              Roll >= -pi/2, Roll =< pi/2]).
 
 geometry_default(high_object, cube_half, 0.025, 'half the cube extent along x (5 cm)').
 geometry_default(high_object, prong_half, 0.006, 'half the prong thickness along the handle').
 geometry_default(high_object, clearance, 0.005, 'clearance between prong and cube').
-geometry_default(high_object, dy_room, 0.20, 'lateral bound of any pose').
-geometry_default(high_object, dx_max, 0.19, 'back edge minus the cube centre, minus half the prong').
+geometry_default(high_object, dy_room, 0.10, 'lateral bound of any pose').
+geometry_default(high_object, deep_m, 0.035, 'how far behind the cube''s back the prong may go: deeper asks the arm to reach further than it can at the top''s height').
+geometry_default(high_object, dx_max, 0.066, 'the deepest prong centre behind the cube''s centre').
 geometry_default(high_object, dx_min, -0.09, 'front edge minus the cube centre, plus half the prong').
+geometry_default(high_object, hand_reach_x, 0.64, 'the farthest x the Panda carries a forward-pointing gripper at the shelf top''s height (measured: 0.66 m; kept on the generous side, so that a pose is called unreachable only where the physics cannot reach it)').
 geometry_default(high_object, reach_loss, 0.04, 'handle length behind the gripper: the grip offset').
 geometry_default(high_object, dx_reach, 1.0, 'deepest prong centre the held tool reaches, minus the cube centre (1 m, no bound, when its handle is not known)').
-geometry_default(high_object, hand_reach_x, 0.64, 'the farthest x the Panda carries a forward-pointing gripper at the shelf top''s height (measured: 0.66 m; kept on the generous side, so that a pose is called unreachable only where the physics cannot reach it)').
 
 %   The cube's extent along x from its perceived size and heading.
 geometry_value(high_object, cube_half, _, Target, _, V) :-
@@ -151,8 +152,10 @@ geometry_value(high_object, dx_max, _, Target, G, V) :-
     shelf_top(S, FX, _, _),
     shelf_top_depth_m(S, D),
     pose(Target, X, _, _, _),
+    memberchk(cube_half=CH, G),
     memberchk(prong_half=PH, G),
-    V is FX + D - X - PH.
+    memberchk(deep_m=Deep, G),
+    V is min(FX + D - X - PH, CH + PH + Deep).
 geometry_value(high_object, dx_min, _, Target, G, V) :-
     nonvar(Target),
     shelf_top(_, FX, _, _),
