@@ -122,9 +122,10 @@ geometry_default(one_book, book_half, 0.14, 'half the book extent along x').
 geometry_default(one_book, prong_half, 0.006, 'half the prong thickness along the handle').
 geometry_default(one_book, clearance, 0.005, 'clearance between prong and book').
 geometry_default(one_book, dy_room, 0.10, 'lateral bound of any pose').
-geometry_default(one_book, dx_max, 0.24, 'the row''s back plus 0.1 m, minus the book centre').
+geometry_default(one_book, deep_m, 0.015, 'how far behind the book''s back the prong may go: deeper puts the hand among the books').
+geometry_default(one_book, dx_max, 0.161, 'the deepest prong centre behind the book''s centre').
 geometry_default(one_book, dx_min, -0.14, 'the row''s front minus the book centre').
-geometry_default(one_book, reach_loss, 0.06, 'handle length the held tool cannot put beyond the row''s front: the grip offset and the hand kept in front of the books').
+geometry_default(one_book, reach_loss, 0.045, 'handle length the held tool cannot put beyond the row''s front: the grip offset and the hand kept in front of the books (measured: the gripper at most 5 mm past the front)').
 geometry_default(one_book, dx_reach, 1.0, 'deepest prong centre the held tool reaches, minus the book centre (1 m, no bound, when its handle is not known)').
 
 %   The book's extent along x from its perceived size and heading.
@@ -140,12 +141,15 @@ geometry_value(one_book, prong_half, Tool, _, _, V) :-
     ;   handle_width_m(Tool, W)
     ),
     V is W / 2.
-geometry_value(one_book, dx_max, _, Target, _, V) :-
+geometry_value(one_book, dx_max, _, Target, G, V) :-
     nonvar(Target),
     bookends_front(E, FX, _, _),
     bookends_room_m(E, _, _, D),
     pose(Target, X, _, _, _),
-    V is FX + D + 0.10 - X.
+    memberchk(book_half=BH, G),
+    memberchk(prong_half=PH, G),
+    memberchk(deep_m=Deep, G),
+    V is min(FX + D + 0.10 - X, BH + PH + Deep).
 geometry_value(one_book, dx_min, _, Target, _, V) :-
     nonvar(Target),
     bookends_front(_, FX, _, _),
@@ -185,9 +189,20 @@ pose_target(one_book, book_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
                  *     SIZING A NEW TOOL        *
                  *******************************/
 
-%   The handle reaches over the row's depth with the hand in front of it.
-size_constraint(hook, bookends_room_m(_, _, _, D), [handle_length >= D + book_reach_margin_m]).
-size_constraint(stick, bookends_room_m(_, _, _, D), [handle_length >= D + book_reach_margin_m]).
+%   The handle reaches over the row's depth with the hand in front of it, and no
+%   further: a longer handle puts the hand so near the Panda's base at the books'
+%   height that the arm cannot follow the pull.  Measured in the benchmark's row (0.28
+%   m deep), prong 1.6 cm behind the book: handles of 0.30 and 0.32 m put the hand
+%   among the books (reward 0.965, 0.981: the neighbours moved 35 and 19 mm), 0.34 m
+%   pulls the book out alone (0.9995), 0.36 and 0.42 m find no arm posture.
+size_constraint(hook, bookends_room_m(_, _, _, D),
+                [handle_length >= D + book_reach_margin_m,
+                 handle_length =< D + book_reach_margin_m + book_reach_room_m]).
+size_constraint(stick, bookends_room_m(_, _, _, D),
+                [handle_length >= D + book_reach_margin_m,
+                 handle_length =< D + book_reach_margin_m + book_reach_room_m]).
 
-size_parameter(book_reach_margin_m, 0.12,
-               'handle length beyond the row''s depth: the grip offset, the hand kept in front of the books, the prong behind them').
+size_parameter(book_reach_margin_m, 0.06,
+               'handle length beyond the row''s depth: the grip offset and the prong behind the book, the hand in front of the books').
+size_parameter(book_reach_room_m, 0.01,
+               'how much longer the handle may be: the arm must still follow the pull towards its base').

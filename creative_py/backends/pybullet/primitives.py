@@ -161,7 +161,9 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
     open at the top: the room above a shelf's top or a row of books) the tool is
     lowered at the goal's x instead of in front of the mouth, so that an arm of short
-    reach need not hold the whole tool in front of the passage. With ``posture_search`` it first tries the rest
+    reach need not hold the whole tool in front of the passage; with ``keep_roll`` as
+    well the tool is carried and lowered at the pose's roll, not turned flat first (a
+    prong lowered behind the target needs no flat phase, and the wrist no turn). With ``posture_search`` it first tries the rest
     of the motion (insertion, turning, the pull back to ``pull_to_x``) in the
     kinematics client and, if the arm would meet a joint limit, re-shapes it in free
     space. It then lowers the tool to ``clearance`` above the target (its perceived
@@ -183,7 +185,7 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     tb = ep.context_body
     spec, kind = ep.spec, ep.kind
     travel = opts["travel_z"]
-    if abs(roll) >= math.pi / 4 or not spec.has_head:
+    if abs(roll) >= math.pi / 4 or not spec.has_head or opts["keep_roll"]:
         flat = roll
     elif opts["flat_roll"]:
         flat = opts["flat_roll"]
@@ -504,7 +506,8 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("insert_at_pose", insert_at_pose,
               {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
                "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
-               "flat_roll": 0.0, "from_above": False, **SLIP_OPTIONS},
+               "flat_roll": 0.0, "from_above": False, "keep_roll": False,
+               **SLIP_OPTIONS},
               target="tip",
               bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
     Primitive("place_on_floor", place_on_floor,
