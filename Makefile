@@ -26,7 +26,7 @@ ROBOT ?=
 PROFILE ?= $(ROBOT)
 RESUME ?=
 
-.PHONY: help setup setup-maniskill test-narrow test-maniskill bench-maniskill bench-maniskill-poke setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl bench-ros
+.PHONY: help setup setup-maniskill test-narrow test-maniskill bench-maniskill bench-maniskill-poke bench-robotoolbench setup-ros test-ros test test-prolog test-python test-all mutate-prolog run cases hook wedge rake repl bench readme-figures mutate clean bench-rl bench-ros
 
 help:  ## List the targets.
 	@grep -E '^[a-z-]+:.*## ' $(MAKEFILE_LIST) | sed 's/:.*## /\t/' | expand -t 14
@@ -99,6 +99,12 @@ bench-maniskill: $(MS_STAMP)  ## Learn pull_cube_tool in ManiSkill and evaluate 
 	run=$$($(VENV)/bin/creative run pull_cube_tool --seed 0 --out $(OUT) --video none | tail -1) && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --run $$run --record && \
 	  $(PY) bench/maniskill_bench.py pull_cube_tool --out bench/results/maniskill_demonstration.json
+
+# RoboToolBench's tasks (every case whose manifest names it), each run whole over 5
+# drawn worlds beside the benchmark's published figures (bench/results/robotoolbench.json,
+# docs/results.md).
+bench-robotoolbench: $(STAMP)  ## Run RoboToolBench's tasks over 5 drawn worlds each beside its published figures.
+	nice -n 5 $(PY) bench/robotoolbench.py --world-seeds 0-4 --record && $(PY) bench/readme_figures.py
 
 # The second ManiSkill task: a learning run of poke_cube, then its learned model on 50
 # fresh ManiSkill seeds (bench/results/maniskill_poke.json).

@@ -802,6 +802,45 @@ def robots_worlds() -> str:
     return "\n".join(lines)
 
 
+@block("robotoolbench")
+def robotoolbench() -> str:
+    """RoboToolBench's tasks over drawn worlds beside the published figures
+    (robotoolbench.json): per task the reward mean and best, successes, trials, wall
+    time and the solving tool; VLMgineer's, the robotics expert's and the bare
+    gripper's mean / best and the rollouts each used."""
+    d = result("robotoolbench")
+
+    def pair(p: Any) -> str:
+        return "n/a" if not p else f"{p[0]:.2f} / {p[1]:.2f}"
+
+    rows = ["| task (case) | reward mean / best | successes | trials: demo + experiments + "
+            "creation + evaluation | wall time | tool that solved it | VLMgineer | "
+            "robotics expert | gripper |",
+            "|---|---|---|---|---|---|---|---|---|"]
+    for task, t in d["tasks"].items():
+        tr = t["trials"]
+        tools = []
+        for w in d["worlds"]:
+            if w["case"] == t["case"] and w["tool"]:
+                dims = ", ".join(f"{k} {v * 1000:.0f} mm" for k, v in
+                                 sorted(w["tool_dimensions"].items()))
+                tools.append(f"{w['tool']} ({w['tool_kind']}: {dims})")
+        tool_cell = "; ".join(dict.fromkeys(tools)) or "none reached 0.99"
+        pub = t["published"] or {}
+        rows.append(f"| {task} (`{t['case']}`) | {t['reward_mean']:.3f} / "
+                    f"{t['reward_best']:.3f} | {t['successes']} of {t['worlds']} | "
+                    f"{tr['demonstration']} + {tr['experiments']} + {tr['creation']} + "
+                    f"{tr['evaluation']} = {t['trials_total']} | {t['wall_time_s']:.0f} s | "
+                    f"{tool_cell} | {pair(pub.get('vlmgineer'))} | {pair(pub.get('expert'))} | "
+                    f"{pair(pub.get('gripper'))} |")
+    rollouts = d["rollouts"]
+    rows += ["", f"`{d['command']}`, recorded {d['recorded']}. Rollouts behind the published "
+             f"figures (5 runs each): VLMgineer {rollouts['vlmgineer']}; the robotics expert "
+             f"{rollouts['expert']}; the gripper {rollouts['gripper']}. Source: "
+             f"{d['published_source']}."]
+    return "\n".join(rows)
+
+
 # --- the worlds' outcome tables (sim_hook.json, sim_wedge.json, sim_rake.json) --------
 
 @block("hook-world-table")

@@ -162,8 +162,11 @@ class CaseManifest:
     """The case's default robot: a profile of ``robots/`` (``--robot`` chooses another);
     None for a backend that brings its own arm."""
     benchmark: Optional[str] = None
-    """The published benchmark the case re-expresses (``robotoolbench``), by which a
-    bench gathers its cases; None for the project's own."""
+    """The published benchmark the case re-expresses (``[benchmark] name``, e.g.
+    ``robotoolbench``), by which a bench gathers its cases; None for the project's own."""
+    benchmark_task: Optional[str] = None
+    """The benchmark's name of the task (``[benchmark] task``, e.g. ``BringCube``), by
+    which a bench finds its published figures."""
 
     @property
     def harder_variant(self) -> str:
@@ -254,9 +257,13 @@ def read_manifest(folder: Path) -> CaseManifest:
     ontology = f.str("ontology")
     backend = f.str("backend", DEFAULT_BACKEND, choices=tuple(sorted(BACKENDS)))
     robot = f.str("robot") if f.has("robot") else None
-    benchmark = f.str("benchmark") if f.has("benchmark") else None
-    if benchmark is not None and not _ID.match(benchmark):
-        raise f.error("benchmark", f"must be a lower-case word, got {benchmark!r}")
+    benchmark = benchmark_task = None
+    if f.has("benchmark"):
+        bf = f.table("benchmark")
+        benchmark, benchmark_task = bf.str("name"), bf.str("task")
+        if not _ID.match(benchmark):
+            raise bf.error("name", f"must be a lower-case word, got {benchmark!r}")
+        bf.done()
     if robot is not None and robot not in profile_names():
         raise f.error("robot", f"no robot profile {robot!r} in robots/; profiles: "
                       f"{', '.join(profile_names())}")
@@ -279,7 +286,7 @@ def read_manifest(folder: Path) -> CaseManifest:
     manifest = CaseManifest(cid, title, folder, ontology, budget, tools_table, target,
                             context, tuple(goal), skills, pose_term, params,
                             variants, demo, jitters, paper_trials, bounds, value_bounds,
-                            backend, robot, benchmark)
+                            backend, robot, benchmark, benchmark_task)
     try:
         manifest.check_pose(demo.pose, "demonstration.pose")
     except ValueError as exc:

@@ -95,6 +95,8 @@ tool_in_use(bring_cube, Tool) :-
     tool's roll about its handle (0 = prong down, +-pi/2 = flat).  Behind: the prong
     clears the cube (half its extent along x, half the prong, 5 mm).
 */
+spatial_definition(bring_cube, on_lane(tool, context), bring_pose(Dx, Dy, _),
+                   [Dx =< dx_max, Dx >= dx_min, Dy =< dy_max, Dy >= dy_min]).
 spatial_definition(bring_cube, behind(tool, target), bring_pose(Dx, _, _),
                    [Dx >= box_half + prong_half + clearance, Dx =< dx_max]).
 spatial_definition(bring_cube, in_front(tool, target), bring_pose(Dx, _, _),
@@ -119,6 +121,10 @@ geometry_default(bring_cube, lane_length, 0.30, 'lane length').
 geometry_default(bring_cube, dy_room, 0.10, 'lateral bound of any pose').
 geometry_default(bring_cube, dx_max, 0.19, 'lane end minus the cube centre, minus half the prong').
 geometry_default(bring_cube, dx_min, -0.09, 'lane start minus the cube centre, plus half the prong').
+geometry_default(bring_cube, handle_half, 0.005, 'half the handle width').
+geometry_default(bring_cube, wall_clearance, 0.003, 'room kept between the handle and the lane''s side').
+geometry_default(bring_cube, dy_max, 0.05, 'largest Dy keeping the handle inside the lane').
+geometry_default(bring_cube, dy_min, -0.05, 'smallest Dy keeping the handle inside the lane').
 geometry_default(bring_cube, arm_reach_x, 0.80, 'farthest x the Panda puts the butt end of a held tool low over the table: a 0.26 m handle reached 1.05 m (measured, see reach_definition)').
 geometry_default(bring_cube, dx_reach, 1.0, 'farthest prong centre the held tool reaches, minus the cube centre (1 m, no bound, when its handle is not known)').
 
@@ -149,6 +155,27 @@ geometry_value(bring_cube, dx_min, _, Target, G, V) :-
     pose(Target, X, _, _, _),
     memberchk(prong_half=PH, G),
     V is SX - X + PH.
+
+geometry_value(bring_cube, handle_half, Tool, _, _, V) :-
+    nonvar(Tool),
+    handle_width_m(Tool, W),
+    V is W / 2.
+geometry_value(bring_cube, dy_max, _, Target, G, V) :-
+    nonvar(Target),
+    lane_start(L, _, LY, _),
+    lane_room_m(L, W, _),
+    pose(Target, _, Y, _, _),
+    memberchk(handle_half=HH, G),
+    memberchk(wall_clearance=C, G),
+    V is LY - Y + W / 2 - HH - C.
+geometry_value(bring_cube, dy_min, _, Target, G, V) :-
+    nonvar(Target),
+    lane_start(L, _, LY, _),
+    lane_room_m(L, W, _),
+    pose(Target, _, Y, _, _),
+    memberchk(handle_half=HH, G),
+    memberchk(wall_clearance=C, G),
+    V is LY - Y - W / 2 + HH + C.
 
 %   How far the held tool reaches (reach_definition/3, read only before a tool is
 %   tried in a harder task): the prong's centre at most the handle's length beyond
@@ -181,10 +208,16 @@ pose_target(bring_cube, bring_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
                  *     SIZING A NEW TOOL        *
                  *******************************/
 
-%   The handle reaches from where the arm holds it to behind a cube at the lane's far
-%   side of its start (lane_start is 0.10 m in front of the cube).
-size_constraint(hook, lane_start(_, X, _, _), [handle_length >= X + lane_reach_margin_m]).
-size_constraint(stick, lane_start(_, X, _, _), [handle_length >= X + lane_reach_margin_m]).
+%   The handle reaches from where the arm holds it to behind a cube 0.05 m past the
+%   lane's start, and is no longer than the arm carries back to the goal.
+size_constraint(hook, lane_start(_, X, _, _),
+                [handle_length >= X + lane_reach_margin_m,
+                 handle_length =< X + lane_carry_margin_m]).
+size_constraint(stick, lane_start(_, X, _, _),
+                [handle_length >= X + lane_reach_margin_m,
+                 handle_length =< X + lane_carry_margin_m]).
 
 size_parameter(lane_reach_margin_m, -0.68,
                'handle length beyond the lane start''s x: the cube 0.05 m past it, the prong 0.05 m behind the cube, less the arm''s reach of 0.80 m, plus 0.02 m').
+size_parameter(lane_carry_margin_m, -0.61,
+               'longest handle beyond the lane start''s x that the arm carries back to the goal: 0.34 m at the benchmark''s cube (0.26-0.40 m measured, 0.36-0.40 m sometimes found no posture, 0.45 m never)').

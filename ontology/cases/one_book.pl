@@ -202,6 +202,12 @@ size_constraint(stick, bookends_room_m(_, _, _, D),
                 [handle_length >= D + book_reach_margin_m,
                  handle_length =< D + book_reach_margin_m + book_reach_room_m]).
 
+%   A thick handle rides higher over the book, and the hand with it: a 21 mm handle
+%   (0.345 m) found no arm posture where 9-10 mm ones pull the book out.
+size_constraint(hook, bookends_room_m(_, _, _, _), [handle_width =< book_handle_max_m]).
+size_constraint(stick, bookends_room_m(_, _, _, _), [handle_width =< book_handle_max_m]).
+
+size_parameter(book_handle_max_m, 0.012, 'the thickest handle the hand can ride over the books with').
 size_parameter(book_reach_margin_m, 0.06,
                'handle length beyond the row''s depth: the grip offset and the prong behind the book, the hand in front of the books').
 size_parameter(book_reach_room_m, 0.01,

@@ -77,6 +77,25 @@ def test_a_bad_manifest_names_its_file_and_field(tmp_path, old, new, message):
     assert str(folder / "case.toml") in str(err.value)
 
 
+@pytest.mark.parametrize("old, new, message", [
+    ('name = "robotoolbench"', 'name = "RoboToolBench"',
+     r"field 'benchmark.name': must be a lower-case word"),
+    ('task = "BringCube"', 'tsk = "BringCube"', r"field 'benchmark.task': missing"),
+])
+def test_a_bad_benchmark_table_names_its_field(tmp_path, old, new, message):
+    folder = _copy(tmp_path, "bring_cube")
+    _edit(folder, old, new)
+    with pytest.raises(WorldFileError, match=message) as err:
+        read_manifest(folder)
+    assert str(folder / "case.toml") in str(err.value)
+
+
+def test_a_case_names_the_benchmark_and_task_it_re_expresses():
+    assert (get_case("bring_cube").benchmark, get_case("bring_cube").benchmark_task) == (
+        "robotoolbench", "BringCube")
+    assert (get_case("hook").benchmark, get_case("hook").benchmark_task) == (None, None)
+
+
 def test_two_folders_with_one_id_are_refused(tmp_path):
     _copy(tmp_path, "hook_tube")
     shutil.copytree(WORLDS_ROOT / "hook_tube", tmp_path / "another")

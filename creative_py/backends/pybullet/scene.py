@@ -43,6 +43,11 @@ Body kinds
     at ``open_angle`` and swings it for the arm) and a closer (``closing_torque``,
     applied once the door is released). Facts: ``hinge/3``, ``door_width_m/2``,
     ``door_closed_heading/2``, ``door_angle/2``, ``door_gap_m/2``.
+``lane``
+    An open passage along +x with no walls (nothing collides): where a tool works on an
+    open table, or the passage between walls built of boxes, and a flat goal mark at
+    ``goal_x``. Facts: ``lane_start/4``, ``lane_length_m/2``, ``lane_room_m/3``,
+    ``lane_goal/3``.
 ``standing_shelf``
     A tall shelf standing on the floor: a top plate on four round posts and two base
     runners; the room above its top is a passage along +x from its front edge (for a

@@ -156,3 +156,22 @@ def test_bookends_carry_the_row_and_give_a_room_above_it():
 def test_a_body_of_the_new_kinds_that_cannot_be_built_is_named(kind, fields, message):
     with pytest.raises(WorldFileError, match=rf"s\.toml: body\[0\]: body thing: {message}"):
         _build(kind, **_defaults(kind), **fields)
+
+
+def test_a_lane_has_no_walls_and_reports_its_passage_and_goal():
+    import pybullet as pb
+
+    lane = BODY_KINDS["lane"]("lane1", {"mouth_x": 0.95, "axis_y": 0.0, "floor_z": 0.0,
+                                        "length": 0.25, "inner_width": 0.3,
+                                        "inner_height": 0.3, "goal_x": 0.6, "mark": 0.07,
+                                        "colour": (0.2, 0.8, 0.2, 0.5)})
+    assert lane.facts(None) == [("lane_start", "lane1", 0.95, 0.0, 0.15),
+                                ("lane_length_m", "lane1", 0.25),
+                                ("lane_room_m", "lane1", 0.3, 0.3),
+                                ("lane_goal", "lane1", 0.6, 0.0)]
+    with Sim(PhysicsSettings()) as sim:
+        body = lane.build(sim)
+        assert pb.getCollisionShapeData(body, -1, physicsClientId=sim.client) == ()
+        assert lane.centre(sim)[:2] == (0.6, 0.0)
+    with pytest.raises(ValueError, match="length must be positive"):
+        BODY_KINDS["lane"]("lane1", {**lane.v, "length": 0.0})
