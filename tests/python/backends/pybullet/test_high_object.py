@@ -47,9 +47,9 @@ def test_the_physics_discriminates_the_tools_by_the_benchmarks_reward(
     assert result.outcome == outcome, result.reason
     assert why in result.reason
     verdict = result.verdict
-    assert verdict.quantity == "reward"
-    assert verdict.value == pytest.approx(reward, abs=1e-6)
-    assert verdict.holds is (reward > 0.99)
+    assert verdict["quantity"] == "reward"
+    assert verdict["value"] == pytest.approx(reward, abs=1e-6)
+    assert verdict["holds"] is (reward > 0.99)
 
 
 def test_a_slow_pull_drops_the_cube_between_the_box_and_the_shelf():
