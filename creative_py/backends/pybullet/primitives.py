@@ -153,22 +153,23 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     The context is a body with a passage along +x (a ``tube``, the space under a
     ``shelf``, the room above a ``standing_shelf`` or between ``bookends``: its
     ``mouth_x``, ``axis_y``, ``passage_floor_z``, ``inner_width`` and
-    ``inner_height``). The gripper carries the tool above it to in front of its mouth and turns it
-    so the prong is flat: at the requested roll if that is flat, otherwise towards the
-    side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or -pi/2;
-    0, the default, chooses by the room) if the manifest sets one: an arm whose wrist
-    turns only one way from the pose's roll (the Panda's last joint at the height of a
-    tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
+    ``inner_height``). The gripper carries the tool above it to in front of its mouth
+    and turns it so the prong is flat: at the requested roll if that is flat, otherwise
+    towards the side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or
+    -pi/2; 0, the default, chooses by the room) if the manifest sets one: an arm whose
+    wrist turns only one way from the pose's roll (a 7-joint arm's last joint at the
+    height of a tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
     open at the top: the room above a shelf's top or a row of books) the tool is
     lowered at the goal's x instead of in front of the mouth, so that an arm of short
-    reach need not hold the whole tool in front of the passage; with ``keep_roll`` as
-    well the tool is carried and lowered at the pose's roll, not turned flat first (a
-    prong lowered behind the target needs no flat phase, and the wrist no turn). With ``posture_search`` it first tries the rest
-    of the motion (insertion, turning, the pull back to ``pull_to_x``) in the
-    kinematics client and, if the arm would meet a joint limit, re-shapes it in free
-    space. It then lowers the tool to ``clearance`` above the target (its perceived
-    top), inserts it along +x until the prong is at X, raises the handle if needed so
-    that the lowered prong clears the tube's floor, and turns the tool to Roll.
+    reach need not hold the whole tool in front of the passage. With ``keep_roll`` the
+    tool is carried and lowered at the pose's roll, not turned flat first (a prong
+    lowered from above behind the target needs no flat phase, and the wrist no turn).
+    With ``posture_search`` it first tries the rest of the motion (insertion, turning,
+    the pull back to ``pull_to_x``) in the kinematics client and, if the arm would meet
+    a joint limit, re-shapes it in free space. It then lowers the tool to
+    ``clearance`` above the target (its perceived top), inserts it along +x until the
+    prong is at X, raises the handle if needed so that the lowered prong clears the
+    passage's floor, and turns the tool to Roll.
 
     ``clearance`` is the height of the handle's underside above the target's perceived
     top during the insertion (m). A negative value puts the underside that far below
