@@ -117,10 +117,10 @@ pose_domain(bring_cube, bring_pose(Dx, Dy, Roll),
 geometry_default(bring_cube, box_half, 0.035, 'half the cube extent along x (7 cm)').
 geometry_default(bring_cube, prong_half, 0.006, 'half the prong thickness along the handle').
 geometry_default(bring_cube, clearance, 0.005, 'clearance between prong and cube').
-geometry_default(bring_cube, lane_length, 0.30, 'lane length').
+geometry_default(bring_cube, lane_length, 0.12, 'lane length').
 geometry_default(bring_cube, dy_room, 0.10, 'lateral bound of any pose').
-geometry_default(bring_cube, dx_max, 0.19, 'lane end minus the cube centre, minus half the prong').
-geometry_default(bring_cube, dx_min, -0.09, 'lane start minus the cube centre, plus half the prong').
+geometry_default(bring_cube, dx_max, 0.064, 'lane end minus the cube centre, minus half the prong').
+geometry_default(bring_cube, dx_min, -0.044, 'lane start minus the cube centre, plus half the prong').
 geometry_default(bring_cube, handle_half, 0.005, 'half the handle width').
 geometry_default(bring_cube, wall_clearance, 0.003, 'room kept between the handle and the lane''s side').
 geometry_default(bring_cube, dy_max, 0.05, 'largest Dy keeping the handle inside the lane').
