@@ -22,7 +22,8 @@ Modules, from the data to the physics:
 
 ``types``       the boundary's value types, re-exported (:mod:`creative_py.simulator.types`)
 ``world``       a world folder read for a manifest (World, load_world)
-``scene``       ``[[body]]`` tables and scene expressions; body kinds (box, tube, shelf, door, lane)
+``scene``       ``[[body]]`` tables and scene expressions; body kinds (box, tube, shelf,
+                door, lane, standing_shelf, open_box, bookends)
 ``tools``       tool kinds (hook-like, block): start, grasp, motion, proprioception,
                 catalogue facts
 ``primitives``  the skill primitives a manifest binds by name

@@ -160,16 +160,26 @@ def slip_guard(ep: Any, opts: Mapping[str, Any]) -> Callable[[], SkillOutcome | 
 def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
     """Insert the held hook-like tool into the context's passage, prong centre at (X, Y).
 
-    The context is a body with a passage along +x (a ``tube``, or the space under a
-    ``shelf``: its ``mouth_x``, ``axis_y``, ``floor_z``, ``inner_width`` and
-    ``inner_height``). The gripper carries the tool above it to in front of its mouth and turns it
-    so the prong is flat: at the requested roll if that is flat, otherwise towards the
-    side of the handle with more room. With ``posture_search`` it first tries the rest
-    of the motion (insertion, turning, the pull back to ``pull_to_x``) in the
-    kinematics client and, if the arm would meet a joint limit, re-shapes it in free
-    space. It then lowers the tool to ``clearance`` above the target (its perceived
-    top), inserts it along +x until the prong is at X, raises the handle if needed so
-    that the lowered prong clears the tube's floor, and turns the tool to Roll.
+    The context is a body with a passage along +x (a ``tube``, the space under a
+    ``shelf``, the room above a ``standing_shelf`` or between ``bookends``: its
+    ``mouth_x``, ``axis_y``, ``passage_floor_z``, ``inner_width`` and
+    ``inner_height``). The gripper carries the tool above it to in front of its mouth
+    and turns it so the prong is flat: at the requested roll if that is flat, otherwise
+    towards the side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or
+    -pi/2; 0, the default, chooses by the room) if the manifest sets one: an arm whose
+    wrist turns only one way from the pose's roll (a 7-joint arm's last joint at the
+    height of a tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
+    open at the top: the room above a shelf's top or a row of books) the tool is
+    lowered at the goal's x instead of in front of the mouth, so that an arm of short
+    reach need not hold the whole tool in front of the passage. With ``keep_roll`` the
+    tool is carried and lowered at the pose's roll, not turned flat first (a prong
+    lowered from above behind the target needs no flat phase, and the wrist no turn).
+    With ``posture_search`` it first tries the rest of the motion (insertion, turning,
+    the pull back to ``pull_to_x``) in the kinematics client and, if the arm would meet
+    a joint limit, re-shapes it in free space. It then lowers the tool to
+    ``clearance`` above the target (its perceived top), inserts it along +x until the
+    prong is at X, raises the handle if needed so that the lowered prong clears the
+    passage's floor, and turns the tool to Roll.
 
     ``clearance`` is the height of the handle's underside above the target's perceived
     top during the insertion (m). A negative value puts the underside that far below
@@ -186,8 +196,10 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     tb = ep.context_body
     spec, kind = ep.spec, ep.kind
     travel = opts["travel_z"]
-    if abs(roll) >= math.pi / 4 or not spec.has_head:
+    if abs(roll) >= math.pi / 4 or not spec.has_head or opts["keep_roll"]:
         flat = roll
+    elif opts["flat_roll"]:
+        flat = opts["flat_roll"]
     else:
         room_left = tb.axis_y + tb.inner_width / 2 - y_goal
         room_right = y_goal - (tb.axis_y - tb.inner_width / 2)
@@ -199,14 +211,17 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     tip_off = pb.multiplyTransforms((0, 0, 0), q_flat, tip_local, (0, 0, 0, 1))[0]
     goal_origin_x = x_goal - tip_off[0]
     far_x = max(spec.handle_length, tip_local[0] + spec.head_width)
-    pre_origin_x = tb.mouth_x - 0.03 - far_x
+    # Lowered into the passage in front of its mouth, or, with from_above (a passage
+    # open at the top), straight down at the goal.
+    pre_origin_x = goal_origin_x if opts["from_above"] else tb.mouth_x - 0.03 - far_x
     carried = kind.attitude(ep)
     steps = [((pre_origin_x, y_goal, travel), carried, opts["free_speed"]),
              ((pre_origin_x, y_goal, travel), flat, opts["free_speed"]),
              ((pre_origin_x, y_goal, z_insert), flat, opts["free_speed"]),
              ((goal_origin_x, y_goal, z_insert), flat, opts["speed"])]
-    z_down = min(max(z_insert, tb.floor_z + prong_reach(spec) + 0.004),
-                 tb.floor_z + tb.inner_height - half_t - 0.002)
+    floor = tb.passage_floor_z
+    z_down = min(max(z_insert, floor + prong_reach(spec) + 0.004),
+                 floor + tb.inner_height - half_t - 0.002)
     steps.append(((goal_origin_x, y_goal, z_down), flat, opts["speed"]))
     steps.append(((goal_origin_x, y_goal, z_down), roll, opts["speed"]))
     pull_dx = min(0.0, opts["pull_to_x"] - x_goal)
@@ -638,6 +653,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("insert_at_pose", insert_at_pose,
               {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
                "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
+               "flat_roll": 0.0, "from_above": False, "keep_roll": False,
                **SLIP_OPTIONS},
               target="tip",
               bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
@@ -684,7 +700,7 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED, "end_speed": _SPEED,
     "rest_speed": (0.0, 1.0, "m/s"),
     # angles
-    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE,
+    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE, "flat_roll": _ANGLE,
     # how long: what a hang would come from
     "settle_time": (0.0, 10.0, "s"), "duration": (0.0, 60.0, "s"),
     "settle_steps": (0, 10000, "steps"),

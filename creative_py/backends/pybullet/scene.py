@@ -64,6 +64,18 @@ Body kinds
     of their own, named ``<name>1`` ... ``<name><count>`` (an oracle lists them by
     name); the scatter builds nothing itself and reports the rectangle its cubes lie
     in now as ``pose/5`` and ``size/4`` of its own name (the field a tool sweeps).
+``standing_shelf``
+    A tall shelf standing on the floor: a top plate on four round posts and two base
+    runners; the room above its top is a passage along +x from its front edge (for a
+    tool carried over what lies on it). Facts: ``shelf_top/4``, ``shelf_top_depth_m/2``.
+``open_box``
+    A fixed box open at the top: a floor panel and four walls. Facts: ``open_box_rim/4``,
+    ``open_box_inner_m/5``.
+``bookends``
+    Two L-shaped bookends (a base plate under the books, an upright beside them) facing
+    each other across a row of books; the room above the books between the uprights is
+    a passage along +x from the books' front (for a tool carried over a book). Facts:
+    ``bookends_front/4``, ``bookends_room_m/4``.
 
 Every number of a body has bounds (each kind's ``BOUNDS``), checked in every variant
 and location when the world loads: coordinates within +-10 m and dimensions 0-10 m of
@@ -81,6 +93,7 @@ from typing import Any, Callable, Mapping
 
 import pybullet as pb
 
+from creative_py.kinds.parts import Cylinder as CylinderPart
 from creative_py.mesh.spec import Box as BoxPart
 from creative_py.backends.pybullet.bodies import Surface, frame_pose, spawn_parts, yaw_of
 from creative_py.backends.pybullet.core import Sim
@@ -283,6 +296,13 @@ class SceneBody:
     def height(self) -> float | None:
         """Return the body's height if known (perception uses it), metres."""
         return None
+
+    @property
+    def passage_floor_z(self) -> float:
+        """Return the z of the floor of the body's passage along +x, metres: its
+        ``floor_z`` (a tube's inner floor, the base under a shelf's plate, a lane's
+        surface) unless the kind says otherwise (the top of a standing shelf)."""
+        return self.floor_z
 
 
 class BoxBody(SceneBody):
@@ -729,10 +749,218 @@ class LaneBody(SceneBody):
                 ("lane_goal", self.name, self.goal_x, self.axis_y)]
 
 
+class StandingShelfBody(SceneBody):
+    """A tall shelf on the floor: a top plate on four round posts and two base runners.
+
+    The plate (``depth`` m along x, ``width`` m along y, ``board`` m thick) has its top
+    face at ``top_z`` and its front edge (the robot's side) at ``front_x``, centred on
+    ``axis_y``. The posts (``post_radius``) stand ``post_inset`` m inside the plate's
+    front and back edges and ``post_side_inset`` m inside its sides, from ``floor_z`` up
+    to the plate; the runners (``runner_width`` along x, ``runner_height`` high) join
+    the posts' feet along y. The room above the top, ``room`` m high, is a passage
+    along +x like a tube's (frame at the front edge, on the axis, on the top face):
+    ``mouth_x``, ``floor_z`` of the passage and ``inner_width``, ``inner_height`` are
+    those of that room. Facts: ``shelf_top/4`` (front edge's x, the axis's y, the top's
+    z), ``shelf_top_depth_m/2``.
+    """
+
+    FIELDS = {"front_x": REQUIRED, "axis_y": REQUIRED, "top_z": REQUIRED,
+              "floor_z": REQUIRED, "depth": REQUIRED, "width": REQUIRED,
+              "board": REQUIRED, "post_radius": REQUIRED, "post_inset": REQUIRED,
+              "post_side_inset": REQUIRED, "runner_width": REQUIRED,
+              "runner_height": REQUIRED, "room": 0.30, "friction": 0.5,
+              "colour": (0.8, 0.8, 0.8, 1.0)}
+    BOUNDS = {"front_x": POSITION, "axis_y": POSITION, "top_z": POSITION,
+              "floor_z": POSITION, "depth": SIZE, "width": SIZE, "board": SIZE,
+              "post_radius": SIZE, "post_inset": SIZE, "post_side_inset": SIZE,
+              "runner_width": SIZE, "runner_height": SIZE, "room": SIZE,
+              "friction": FRICTION, "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        for f in ("depth", "width", "board", "post_radius", "room"):
+            if self.v[f] <= 0:
+                raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
+        if self.top_z - self.board <= self.floor_z:
+            raise ValueError(f"body {name}: top_z must lie more than board above floor_z")
+
+    # The passage above the top, as insert_at_pose reads a context.
+    @property
+    def mouth_x(self) -> float:
+        """Return the front edge's x, metres."""
+        return self.front_x
+
+    @property
+    def length(self) -> float:
+        """Return the passage's length along +x (the plate's depth), metres."""
+        return self.depth
+
+    @property
+    def inner_width(self) -> float:
+        """Return the passage's width (the plate's), metres."""
+        return self.width
+
+    @property
+    def inner_height(self) -> float:
+        """Return the room above the top, metres."""
+        return self.room
+
+    @property
+    def passage_floor_z(self) -> float:
+        """Return the top face's z, metres."""
+        return self.top_z
+
+    def build(self, sim: Sim) -> int:
+        D, W, k = self.depth, self.width, self.board
+        leg_h = self.top_z - k - self.floor_z
+        parts: list = [BoxPart((D / 2, 0.0, -k / 2), (D, W, k))]                 # plate
+        for x in (self.post_inset, D - self.post_inset):
+            for y in (W / 2 - self.post_side_inset, -W / 2 + self.post_side_inset):
+                parts.append(CylinderPart((x, y, -k - leg_h / 2), self.post_radius, leg_h))
+            parts.append(BoxPart((x, 0.0, -k - leg_h + self.runner_height / 2),
+                                 (self.runner_width, W, self.runner_height)))    # runner
+        self.id = spawn_parts(sim, parts, ((self.front_x, self.axis_y, self.top_z),
+                                           (0, 0, 0, 1)), 0.0,
+                              Surface(self.friction, tuple(self.colour)))
+        return self.id
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        return [("shelf_top", self.name, self.front_x, self.axis_y, self.top_z),
+                ("shelf_top_depth_m", self.name, self.depth)]
+
+
+class OpenBoxBody(SceneBody):
+    """A fixed box open at the top: a floor panel and four walls, ``wall`` m thick.
+
+    ``position`` is the (x, y) of its middle, ``floor_z`` the underside of its floor
+    panel, ``size`` its outer extent (x, y, height). Facts: ``open_box_rim/4`` (the
+    centre's x, y and the rim's z), ``open_box_inner_m/5`` (inner x and y extent, the
+    floor's top z, the rim's z).
+    """
+
+    FIELDS = {"position": REQUIRED, "floor_z": REQUIRED, "size": REQUIRED,
+              "wall": REQUIRED, "friction": 0.5, "colour": (0.96, 0.87, 0.70, 1.0)}
+    BOUNDS = {"position": POSITION, "floor_z": POSITION, "size": SIZE, "wall": SIZE,
+              "friction": FRICTION, "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        if len(self.position) != 2 or len(self.size) != 3 or min(self.size) <= 0:
+            raise ValueError(f"body {name}: position must be (x, y), size three positive "
+                             "numbers (m)")
+        if not 0 < 2 * self.wall < min(self.size[:2]) or self.wall >= self.size[2]:
+            raise ValueError(f"body {name}: wall must be positive and thinner than the box")
+
+    @property
+    def height(self) -> float:
+        return self.size[2]
+
+    @property
+    def top(self) -> float:
+        """Return the rim's z, metres."""
+        return self.floor_z + self.size[2]
+
+    def build(self, sim: Sim) -> int:
+        X, Y, H = self.size
+        k = self.wall
+        parts = [BoxPart((0.0, 0.0, k / 2), (X, Y, k)),                          # floor
+                 BoxPart((0.0, Y / 2 - k / 2, H / 2), (X, k, H)),                # +y wall
+                 BoxPart((0.0, -Y / 2 + k / 2, H / 2), (X, k, H)),               # -y wall
+                 BoxPart((X / 2 - k / 2, 0.0, H / 2), (k, Y, H)),                # +x wall
+                 BoxPart((-X / 2 + k / 2, 0.0, H / 2), (k, Y, H))]               # -x wall
+        self.id = spawn_parts(sim, parts, ((self.position[0], self.position[1], self.floor_z),
+                                           (0, 0, 0, 1)), 0.0,
+                              Surface(self.friction, tuple(self.colour)))
+        return self.id
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        X, Y, _ = self.size
+        k = self.wall
+        return [("open_box_rim", self.name, self.position[0], self.position[1], self.top),
+                ("open_box_inner_m", self.name, X - 2 * k, Y - 2 * k, self.floor_z + k,
+                 self.top)]
+
+
+class BookendsBody(SceneBody):
+    """Two fixed L-shaped bookends facing each other across a row of books.
+
+    Each is a base plate (``depth`` m along x, ``plate_width`` m along y, ``plate``
+    m thick, on ``floor_z``) under the row's end and an upright (``thickness`` m, from
+    the plate up to ``height``) outside it; ``left_y`` and ``right_y`` are the inner
+    faces of the uprights (left < right), ``centre_x`` the row's middle along x. The
+    room above the plates between the uprights, ``room`` m high (above the books,
+    whatever the uprights' height), is a passage along +x from the row's front
+    (``mouth_x``; the passage's floor is the plates' top): a tool is carried over the
+    books in it. Facts: ``bookends_front/4`` (the front's x, the
+    middle's y, the plates' top z), ``bookends_room_m/4`` (the room between the
+    uprights, its height above the plates, the depth along x).
+    """
+
+    FIELDS = {"centre_x": REQUIRED, "left_y": REQUIRED, "right_y": REQUIRED,
+              "floor_z": REQUIRED, "depth": REQUIRED, "height": REQUIRED,
+              "plate": REQUIRED, "plate_width": REQUIRED, "thickness": REQUIRED,
+              "room": REQUIRED, "friction": 0.5, "colour": (0.35, 0.35, 0.4, 1.0)}
+    BOUNDS = {"centre_x": POSITION, "left_y": POSITION, "right_y": POSITION,
+              "floor_z": POSITION, "depth": SIZE, "height": SIZE, "plate": SIZE,
+              "plate_width": SIZE, "thickness": SIZE, "room": SIZE, "friction": FRICTION,
+              "colour": COLOUR}
+
+    def __init__(self, name: str, values: Mapping[str, Any]) -> None:
+        super().__init__(name, values)
+        for f in ("depth", "height", "plate", "plate_width", "thickness", "room"):
+            if self.v[f] <= 0:
+                raise ValueError(f"body {name}: {f} must be positive, got {self.v[f]}")
+        if self.right_y <= self.left_y:
+            raise ValueError(f"body {name}: right_y must be greater than left_y")
+
+    @property
+    def mouth_x(self) -> float:
+        """Return the row's front (its smallest x), metres."""
+        return self.centre_x - self.depth / 2
+
+    @property
+    def axis_y(self) -> float:
+        """Return the middle between the uprights, metres."""
+        return (self.left_y + self.right_y) / 2
+
+    @property
+    def inner_width(self) -> float:
+        """Return the room between the uprights, metres."""
+        return self.right_y - self.left_y
+
+    @property
+    def inner_height(self) -> float:
+        """Return the room's height above the plates (``room``), metres."""
+        return self.room
+
+    @property
+    def passage_floor_z(self) -> float:
+        """Return the plates' top z, metres."""
+        return self.floor_z + self.plate
+
+    def build(self, sim: Sim) -> int:
+        D, H, p, w, t = self.depth, self.v["height"], self.plate, self.plate_width, self.thickness
+        parts = []
+        for face, side in ((self.left_y, 1.0), (self.right_y, -1.0)):
+            parts.append(BoxPart((0.0, face + side * (w / 2 - t), p / 2), (D, w, p)))
+            parts.append(BoxPart((0.0, face - side * t / 2, H / 2), (D, t, H)))
+        self.id = spawn_parts(sim, parts, ((self.centre_x, 0.0, self.floor_z), (0, 0, 0, 1)),
+                              0.0, Surface(self.friction, tuple(self.colour)))
+        return self.id
+
+    def facts(self, sim: Sim) -> list[tuple]:
+        return [("bookends_front", self.name, self.mouth_x, self.axis_y,
+                 self.passage_floor_z),
+                ("bookends_room_m", self.name, self.inner_width, self.inner_height,
+                 self.depth)]
+
+
 BODY_KINDS: dict[str, type[SceneBody]] = {"box": BoxBody, "tube": TubeBody, "shelf": ShelfBody,
                                           "door": DoorBody, "lane": LaneBody,
                                           "sphere": SphereBody, "zone": ZoneBody,
-                                          "scatter": ScatterBody}
+                                          "scatter": ScatterBody,
+                                          "standing_shelf": StandingShelfBody,
+                                          "open_box": OpenBoxBody, "bookends": BookendsBody}
 """The body kinds a ``[[body]]`` table may name."""
 
 
