@@ -799,6 +799,15 @@ def robots_worlds() -> str:
                 and len({(r["use_trials"], r["eval_successes"]) for r in rs.values()}) == 1]
         lines.append(f"- {case}: worlds with the same tool-use trials and evaluation on "
                      f"every robot: {len(same)} of {len(by)}.")
+        short = []
+        for w, rs in sorted(by.items()):
+            if any(r["eval_successes"] < r["eval_trials"] for r in rs.values()):
+                each = ", ".join(f"{n} {rs[n]['eval_successes']}/{rs[n]['eval_trials']}"
+                                 for n in sorted(rs))
+                short.append(f"world {w} ({each})")
+        if short:
+            lines.append(f"- {case}: worlds where an evaluation trial failed: "
+                         + "; ".join(short) + ".")
     return "\n".join(lines)
 
 

@@ -7,7 +7,7 @@ and the learned model's evaluation. Writes ``bench/results/robots_worlds.json``;
 ``bench/readme_figures.py`` puts the summary into ``docs/results.md``.
 
     .venv/bin/python bench/robots_worlds.py [--cases hook wedge] [--robots NAME ...]
-                                            [--world-seeds 0-9] [--out FILE]
+                                            [--world-seeds 0-19] [--out FILE]
                                             [--record CSV ...]
 
 ``--record`` records finished sweeps' ``sweep.csv`` files again, running nothing
@@ -76,9 +76,9 @@ def main() -> int:
                     help="case ids to sweep (default: hook wedge)")
     ap.add_argument("--robots", nargs="+", default=["baxter", "panda"],
                     help="robot profiles to sweep each case on (default: baxter panda)")
-    ap.add_argument("--world-seeds", default="0-9",
+    ap.add_argument("--world-seeds", default="0-19",
                     help="the drawn worlds, as creative sweep --world-seeds takes them "
-                         "(default: 0-9)")
+                         "(default: 0-19)")
     ap.add_argument("--from-csv", nargs="+", type=Path, metavar="CSV",
                     help="read these sweep.csv files instead of running the sweeps")
     add_output_options(ap, TRACKED, "the rows and their summary (JSON)")

@@ -24,8 +24,8 @@ A profile is the one place an arm's facts live, for every backend (docs/robots.m
 ``[hand]`` (optional)
     The gripper's finger ``joints``, their ``open`` and ``closed`` values, ``max_force``
     (N), ``gear_ratio`` (couples the fingers: pybullet ignores a URDF ``<mimic>``) and
-    ``driven`` (held open by motors; false leaves them to the physics). No table: the
-    arm has no actuated gripper.
+    ``driven`` (motors hold them open, and closed over a held tool; false leaves them
+    to the physics). No table: the arm has no actuated gripper.
 ``[grasp]``
     How a tool is held: ``mode = "constraint"`` (a fixed constraint between the tool
     frame and the tool, ``max_force`` N; the fingers, if any, do not hold it).

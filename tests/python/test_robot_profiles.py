@@ -168,6 +168,81 @@ def test_the_demonstration_trial_succeeds_on_the_panda():
     assert json.loads(r.stdout)["outcome"] == "success"
 
 
+@pytest.mark.sim
+def test_the_panda_pulls_the_cube_out_with_the_short_prong_hook_as_the_baxter_does():
+    """The Baxter's seed-0 hook run pulls the cube out with hook_a3 at this pose; so does
+    the Panda. With its fingers held open around the tool, the Panda's finger struck the
+    tube's mouth and riser (blocked)."""
+    import json
+
+    r = subprocess.run([sys.executable, "-m", "creative_py.cli", "trial", "hook", "--tool",
+                        "hook_a3", "--pose", "0.0375,0,0", "--seed", "5", "--robot",
+                        "panda", "--json"], capture_output=True, text=True, timeout=900)
+    assert r.returncode == 0, r.stderr
+    assert json.loads(r.stdout)["outcome"] == "success"
+
+
+@pytest.mark.sim
+def test_the_panda_pulls_the_cube_through_the_long_tube_with_a_created_hook(monkeypatch):
+    """The Panda's created hook of the seed-0 run (a 0.6 m handle) pulls the cube out of
+    the long tube in the evaluations it failed at 8 physics steps per IK waypoint (the
+    arm shook the tool sideways and walked the cube off the prong); the hook world's
+    [robot.panda] moves the Panda with one step per waypoint."""
+    from creative_py.bridge import Engine
+    from creative_py.case import get_case
+    from creative_py.kinds import spec_from_dict
+    from creative_py.learning.poses import pose_resolver
+    from creative_py.robots import ROBOT_ENV
+    from creative_py.simulator import backend_for
+    from creative_py.simulator.trial import run_trial
+
+    monkeypatch.setenv(ROBOT_ENV, "panda")
+    m = get_case("hook")
+    spec = spec_from_dict({"kind": "hook", "name": "hook_new1", "handle_length": 0.6,
+                           "handle_width": 0.009, "hook_length": 0.0375, "hook_width": 0.014,
+                           "hook_side": "right", "hook_angle_deg": 90, "grip_offset": 0.04,
+                           "mass": None})
+    world = backend_for(m).load_world(m).with_tool(spec)
+    poses = pose_resolver(Engine.instance(), m)
+    for location, seed, dx in ((1, 17, 0.0377), (4, 16, 0.0326)):
+        r = run_trial(world, "hook_new1", "long_tube", location, (dx, 0.0, 0.0), seed,
+                      pose_target=poses)
+        assert r.outcome == "success", (location, seed, r.verdict)
+
+
+@pytest.mark.sim
+def test_a_driven_hand_closes_over_a_held_tool_and_opens_at_release():
+    """The Panda's fingers (a driven hand) stay open while free, close to ``closed``
+    over a held tool (held open, they stuck out 4 cm around it and struck a tube's
+    mouth) and open again at release."""
+    import pybullet as pb
+
+    from creative_py.backends.pybullet.arm import Arm
+    from creative_py.backends.pybullet.core import Sim
+    from creative_py.world_files import PhysicsSettings
+
+    with Sim(PhysicsSettings()) as sim:
+        arm = Arm(sim, "panda")
+        hand = arm.profile.hand
+        box = pb.createMultiBody(0.05, pb.createCollisionShape(
+            pb.GEOM_BOX, halfExtents=(0.1, 0.005, 0.005), physicsClientId=sim.client),
+            basePosition=arm.gripper_pose()[0], physicsClientId=sim.client)
+
+        def fingers():
+            return [pb.getJointState(arm.body, j, physicsClientId=sim.client)[0]
+                    for j in arm.fingers]
+
+        sim.step(60)
+        assert fingers() == pytest.approx(list(hand.open), abs=1e-3)
+        arm.grasp(box, ((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))
+        sim.step(120)
+        assert fingers() == pytest.approx(list(hand.closed), abs=1e-3)
+        arm.release()
+        sim.step(120)
+        assert fingers() == pytest.approx(list(hand.open), abs=1e-3)
+        arm.close()
+
+
 def test_a_placement_for_an_unknown_robot_is_one_line(tmp_path):
     from creative_py.backends.pybullet import load_world
     from creative_py.case import get_case, read_manifest

@@ -594,6 +594,8 @@ class Arm:
                               self.base)
         self.grasp_constraint: int | None = None
         self.held: int | None = None
+        self.fingers: list[int] = []
+        """A driven hand's finger joints (none without one)."""
         self._hand()
         self.reset_posture(self.profile.home)
         self._limit_collisions()
@@ -609,14 +611,21 @@ class Arm:
                                      f"{self.profile.urdf_path.name}")
         fingers = [m.joint[n] for n in hand.joints]
         m.reset(fingers, hand.open)
-        pb.setJointMotorControlArray(m.body, fingers, pb.POSITION_CONTROL,
-                                     targetPositions=list(hand.open),
-                                     forces=[hand.max_force] * len(fingers), physicsClientId=c)
+        self.fingers = fingers
+        self._fingers_to(hand.open)
         if hand.gear_ratio is not None:
             gear = pb.createConstraint(m.body, fingers[0], m.body, fingers[1], pb.JOINT_GEAR,
                                        (1, 0, 0), (0, 0, 0), (0, 0, 0), physicsClientId=c)
             pb.changeConstraint(gear, gearRatio=hand.gear_ratio, erp=0.1,
                                 maxForce=hand.max_force, physicsClientId=c)
+
+    def _fingers_to(self, values: Sequence[float]) -> None:
+        """Drive a driven hand's fingers to ``values`` (the profile's ``open`` or
+        ``closed``), with the hand's ``max_force``."""
+        pb.setJointMotorControlArray(self.body, self.fingers, pb.POSITION_CONTROL,
+                                     targetPositions=list(values),
+                                     forces=[self.profile.hand.max_force] * len(self.fingers),
+                                     physicsClientId=self.sim.client)
 
     def _limit_collisions(self) -> None:
         """Let only the profile's ``collision_links`` collide (a speed-up): the links
@@ -947,7 +956,10 @@ class Arm:
         ``frame_in_gripper`` is the pose of the body's link frame (spec or URDF frame,
         not its centre of mass) in the tool frame. The constraint is fixed, with the
         profile's ``grasp.max_force`` N; collisions between the body and every robot
-        link are switched off (the fingers, if any, do not hold it).
+        link are switched off (the fingers, if any, do not hold it). A driven hand
+        closes its fingers over the body (to the profile's ``hand.closed``) as a hand
+        holding it would: held open, a wide gripper's fingers stick out around the
+        tool and strike what the tool passes close to (a tube's mouth).
         """
         c = self.sim.client
         for link in range(-1, pb.getNumJoints(self.body, physicsClientId=c)):
@@ -968,13 +980,17 @@ class Arm:
         pb.changeConstraint(self.grasp_constraint, maxForce=self.profile.grasp_max_force,
                             physicsClientId=c)
         self.held = body
+        if self.fingers:
+            self._fingers_to(self.profile.hand.closed)
 
     def release(self) -> None:
-        """Remove the grasp constraint, if any."""
+        """Remove the grasp constraint, if any, and open a driven hand's fingers."""
         if self.grasp_constraint is not None:
             pb.removeConstraint(self.grasp_constraint, physicsClientId=self.sim.client)
         self.grasp_constraint = None
         self.held = None
+        if self.fingers:
+            self._fingers_to(self.profile.hand.open)
 
     def close(self) -> None:
         """Disconnect the heavy robot's kinematics client (the physics client belongs
