@@ -133,6 +133,7 @@ api_op(pose_target(Case, Tool, Facts, Pose), World, pose_world(Case, Tool, Facts
 api_op(case_info(Case), Info, case_info(Case, Info)).
 api_op(tool_vocabulary(Case), Classes, tool_vocabulary(Case, Classes)).
 api_op(size_context_facts, Indicators, size_context_facts(Indicators)).
+api_op(size_context_facts(Case), Indicators, size_context_facts(Case, Indicators)).
 api_op(catalogue_predicates(Case), Indicators, catalogue_predicates(Case, Indicators)).
 api_op(case_missing_hooks(Case), Missing, case_missing_hooks(Case, Missing)).
 api_op(catalogue_ranges(Case, Facts), Ranges, catalogue_ranges(Case, Facts, Ranges)).

@@ -13,6 +13,7 @@
             case_info/2,              % +Case, -Info
             tool_vocabulary/2,        % +Case, -Classes
             size_context_facts/1,     % -Indicators
+            size_context_facts/2,     % +Case, -Indicators
             catalogue_predicates/2,   % +Case, -Indicators
             case_missing_hooks/2,     % +Case, -Indicators
             catalogue_ranges/3        % +Case, +Facts, -Ranges
@@ -382,6 +383,26 @@ size_context_facts(Indicators) :-
     findall(N/A, ( ontology_holds(size_constraint(_, Fact, _)), functor(Fact, N, A) ),
             Is0),
     findall(N/1, ontology_holds(size_parameter(N, _, _)), Is1),
+    append(Is0, Is1, Is),
+    list_to_set(Is, Indicators).
+
+%!  size_context_facts(+Case, -Indicators:list) is det.
+%
+%   Indicators are the Name/Arity of the task facts the size model of Case reads (its
+%   own size_constraint/3 and size_parameter/3, its kind's and the shared ones), in the
+%   order the ontology declares them: of what the robot perceives of the case's scene,
+%   the facts that size its tools (another case's size model may read a fact this
+%   scene also reports, a cube's size/4, which this case's does not).
+%
+%   ==
+%   ?- size_context_facts(wedge, Fs), memberchk(door_gap_m/2, Fs).
+%   true.
+%   ==
+size_context_facts(Case, Indicators) :-
+    must_be_case(Case),
+    findall(N/A, ( case_knowledge(Case, size_constraint(_, Fact, _)), functor(Fact, N, A) ),
+            Is0),
+    findall(N/1, case_knowledge(Case, size_parameter(N, _, _)), Is1),
     append(Is0, Is1, Is),
     list_to_set(Is, Indicators).
 

@@ -625,9 +625,12 @@ class Engine:
         (the ontology's vocabulary for describing a catalogued object)."""
         return self._must("catalogue_predicates", case)
 
-    def size_context_facts(self) -> list:
-        """Return the ``Name/Arity`` terms of the task facts the size model reads."""
-        return self._must("size_context_facts")
+    def size_context_facts(self, case: str | None = None) -> list:
+        """Return the ``Name/Arity`` terms of the task facts the size model reads: of
+        ``case``'s size model, or of any case's (None)."""
+        if case is None:
+            return self._must("size_context_facts")
+        return self._must("size_context_facts", case)
 
     def learn_from_demonstration(self, case: str, steps: Sequence[Term]) -> tuple[Term, Term, Term]:
         """Return ``(matched, new_models, example)`` learned from the demonstration's

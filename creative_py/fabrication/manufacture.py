@@ -52,10 +52,11 @@ log = logging.getLogger(__name__)
 PLACEHOLDER_TOOL = "new_tool"
 """The tool atom of the literals :func:`parse_spec` returns (renamed by :func:`size_tool`)."""
 
-def context_facts(engine: Engine) -> dict[str, int]:
+def context_facts(engine: Engine, case: Optional[str] = None) -> dict[str, int]:
     """Return ``name -> arity`` of the task facts the size model reads (the ontology's
-    ``size_constraint/3`` and ``size_parameter/3``, e.g. ``tube_length_m/2``)."""
-    return {str(i.args[0]): int(i.args[1]) for i in engine.size_context_facts()}
+    ``size_constraint/3`` and ``size_parameter/3``, e.g. ``tube_length_m/2``): of
+    ``case``'s size model, or of any case's (None)."""
+    return {str(i.args[0]): int(i.args[1]) for i in engine.size_context_facts(case)}
 
 _ATOM = re.compile(r"[a-z][a-zA-Z0-9_]*\Z")
 
@@ -386,7 +387,7 @@ def default_context(case: str, variant: Optional[str] = None, *,
         raise ValueError(exc.args[0]) from None
     world = backend_for(manifest).load_world(manifest)
     facts = task_facts(world, variant, world.locations[0])
-    known = context_facts(Engine.instance())
+    known = context_facts(Engine.instance(), manifest.id)
     return [fact_term(f) for f in facts if known.get(f[0]) == len(f) - 1]
 
 

@@ -34,13 +34,14 @@ from creative_py.records.folder import RunFolder, read_resume, resume_command, r
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
-from creative_py.robots import ROBOT_ENV, load_profile
+from creative_py.robots import ROBOT_ENV, keeps_robot_choice, load_profile
 from creative_py.simulator import BackendLost, World, backend_for
 from creative_py.simulator.randomise import apply_drawn
 
 log = logging.getLogger(__name__)
 
 
+@keeps_robot_choice
 def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
     """Resume a run that was interrupted (killed, out of power) and return its folder.
 
@@ -80,6 +81,7 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
         folder.release()
 
 
+@keeps_robot_choice
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
              progress: Optional[Callable[[str], None]] = None,
              world_dir: Optional[Path] = None, run_name: Optional[str] = None,

@@ -77,6 +77,14 @@ test(size_context_facts_come_from_the_size_model) :-
     size_context_facts(Fs),
     assertion(subset([tube_length_m/2, door_gap_m/2, max_tool_length/1, min_wall_m/1], Fs)).
 
+test(size_context_facts_of_one_case_are_its_own_size_model_s) :-
+    size_context_facts(hook, Hook),
+    assertion(subset([tube_length_m/2, max_tool_length/1], Hook)),
+    assertion(\+ memberchk(door_gap_m/2, Hook)),
+    size_context_facts(wedge, Wedge),
+    assertion(memberchk(door_gap_m/2, Wedge)),
+    assertion(\+ memberchk(tube_length_m/2, Wedge)).
+
 test(catalogue_predicates_of_the_case_s_tool_class,
      Is == [object_kind/2, block_shape/2, block_length_m/2, block_width_m/2,
             block_height_m/2]) :-

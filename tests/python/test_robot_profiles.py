@@ -303,3 +303,53 @@ def test_the_approach_axis_becomes_the_tool_frames_z(axis, direction):
     frame = tool_frame(p) or ((0, 0, 0), (0, 0, 0, 1))
     z = np.array(pb.getMatrixFromQuaternion(frame[1])).reshape(3, 3)[:, 2]
     assert z == pytest.approx(direction, abs=1e-9)
+
+
+# ------------------------------------------------- a run's robot does not outlive it
+def test_a_command_leaves_no_robot_choice_behind(monkeypatch):
+    """`creative trial --robot panda` sets the profile for the backends; in-process (a
+    test, a notebook) the next world loaded reads its own case's robot again."""
+    import os
+
+    from typer.testing import CliRunner
+
+    from creative_py.cli import app
+    from creative_py.robots import ROBOT_ENV
+
+    monkeypatch.delenv(ROBOT_ENV, raising=False)
+    result = CliRunner().invoke(app, ["trial", "hook", "--robot", "panda", "--list"])
+    assert result.exit_code == 0, result.output
+    assert ROBOT_ENV not in os.environ
+    monkeypatch.setenv(ROBOT_ENV, "ur5")
+    CliRunner().invoke(app, ["trial", "hook", "--robot", "panda", "--list"])
+    assert os.environ[ROBOT_ENV] == "ur5"
+
+
+def test_a_run_gives_the_robot_choice_back():
+    """run_case and resume_run set the profile for the run and give the environment
+    back its value when they end, by a return or an error."""
+    import os
+
+    from creative_py.learning.run import resume_run, run_case
+    from creative_py.robots import ROBOT_ENV, keeps_robot_choice
+
+    assert run_case.__wrapped__ and resume_run.__wrapped__
+
+    @keeps_robot_choice
+    def chooses(name, fail=False):
+        os.environ[ROBOT_ENV] = name
+        if fail:
+            raise RuntimeError(name)
+        return name
+
+    saved = os.environ.pop(ROBOT_ENV, None)
+    try:
+        assert chooses("panda") == "panda" and ROBOT_ENV not in os.environ
+        os.environ[ROBOT_ENV] = "baxter"
+        with pytest.raises(RuntimeError):
+            chooses("panda", fail=True)
+        assert os.environ[ROBOT_ENV] == "baxter"
+    finally:
+        os.environ.pop(ROBOT_ENV, None)
+        if saved is not None:
+            os.environ[ROBOT_ENV] = saved

@@ -32,8 +32,14 @@ def test_a_missing_world_file_is_named(tmp_path):
         load_world(manifest, tmp_path)
 
 
+# MoveBall's demonstration cannot pass the benchmark's done(): its formula gives a ball
+# at rest at most 0.884 (docs/robotoolbench.md); the test holds it to failing.
+_CAPPED = pytest.mark.xfail(strict=True, reason="the reward of a ball at rest is at most 0.884")
+
+
 @pytest.mark.sim
-@pytest.mark.parametrize("case", CASES)
+@pytest.mark.parametrize("case", [pytest.param(c, marks=_CAPPED) if c == "move_ball" else c
+                                  for c in CASES])
 def test_the_demonstration_succeeds_through_the_manifest_skills(case):
     manifest = load_cases()[case]
     world = load_world(manifest)
