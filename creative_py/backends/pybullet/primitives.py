@@ -20,7 +20,8 @@ primitive            world target              what it does
 ``place_on_floor``   ``place(X, Y, Heading)``  put the held tool down on the context's top
                                                face, the target's holder swinging it clear
 ``pull_along_axis``  -                         pull the held tool back along -x until its
-                                               working point passes ``until_x``
+                                               working point passes ``until_x``, with a
+                                               sideways draw of ``lateral`` m first
 ``push_along_axis``  -                         push the held tool along +x by ``distance``
 ``lower_at_pose``    ``tip(X, Y, Roll)``       carry the held tool over the table, lower it
                                                ``slide_from`` off the place and slide it in
@@ -375,10 +376,16 @@ def _swing(ep: Any, holder, angle: float | None) -> None:
 
 # ------------------------------------------------------------ pull / push on an axis
 def pull_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutcome:
-    """Pull the held tool straight back along -x until its working point is at ``until_x``.
+    """Pull the held tool back along -x until its working point is at ``until_x``.
 
     The tool keeps the attitude the pose skill gave it; afterwards the physics runs
     ``settle_steps`` more steps so that what was pulled comes to rest.
+
+    With ``lateral`` (m, default 0: a straight pull) the pull starts with a sideways
+    draw across the passage's axis: the tool moves by ``lateral`` along +y (negative:
+    -y) while it moves back ``lateral_over`` metres along -x (0: sideways only; at most
+    the whole pull), and then straight back along -x to ``until_x``. It draws what the
+    tool holds past an obstacle in front of it (a wall's end) before pulling it out.
     """
     if not ep.held:
         return SkillOutcome("blocked", "no tool is held")
@@ -387,8 +394,17 @@ def pull_along_axis(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOut
     attitude = ep.state.get("attitude", None)
     if attitude is None:
         attitude = ep.kind.attitude(ep)
+    guard = slip_guard(ep, opts)
+    lateral = opts["lateral"]
+    if lateral:
+        over = max(min(dx, 0.0), -opts["lateral_over"])
+        res = ep.kind.move(ep, (g_pos[0] + over, g_pos[1] + lateral, g_pos[2]), attitude,
+                           opts["speed"], guard)
+        if not res.ok:
+            return res
+        g_pos = (g_pos[0], g_pos[1] + lateral, g_pos[2])
     res = ep.kind.move(ep, (g_pos[0] + min(dx, 0.0), g_pos[1], g_pos[2]), attitude,
-                       opts["speed"], slip_guard(ep, opts))
+                       opts["speed"], guard)
     if not res.ok:
         return res
     ep.sim.step(int(opts["settle_steps"]))
@@ -662,7 +678,9 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
                "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
                "settle_time": 0.25, "by_hand": False, "perceive": False}, target="place"),
     Primitive("pull_along_axis", pull_along_axis,
-              {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60, **SLIP_OPTIONS}),
+              {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60, "lateral": 0.0,
+               "lateral_over": 0.0, **SLIP_OPTIONS},
+              bounds={"lateral": (-0.5, 0.5, "m"), "lateral_over": (0.0, 2.0, "m")}),
     Primitive("push_along_axis", push_along_axis,
               {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
     Primitive("lower_at_pose", lower_at_pose,
