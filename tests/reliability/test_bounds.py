@@ -134,15 +134,17 @@ def test_every_option_of_every_primitive_and_oracle_has_bounds():
     flags = option_flags()
     for p in PRIMITIVES.values():
         for name, default in p.options.items():
-            assert name in flags or name in OPTION_BOUNDS, (p.name, name)
-            if default is not None and name in OPTION_BOUNDS:
-                lo, hi, _unit = OPTION_BOUNDS[name]
+            own = p.bounds.get(name) or OPTION_BOUNDS.get(name)   # its own bounds first
+            assert name in flags or own, (p.name, name)
+            if default is not None and own:
+                lo, hi, _unit = own
                 assert lo <= default <= hi, (p.name, name, default)
     for o in ORACLES.values():
         for name in o.options:
             assert name in ORACLE_BOUNDS or name in {o.subject, *o.words}, (o.name, name)
+    own = [b for p in PRIMITIVES.values() for b in p.bounds.values()]
     assert all(math.isfinite(lo) and math.isfinite(hi)
-               for lo, hi, _ in [*OPTION_BOUNDS.values(), *ORACLE_BOUNDS.values()])
+               for lo, hi, _ in [*OPTION_BOUNDS.values(), *ORACLE_BOUNDS.values(), *own])
 
 
 # ------------------------------------------------------------------- the command line
