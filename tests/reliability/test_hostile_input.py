@@ -288,6 +288,10 @@ def test_a_trial_line_and_the_count_of_kept_trials_agree_under_ctrl_c(tmp_path,
         sum(range(1000))                          # bytecode on which Python handles it
 
     monkeypatch.setattr(folder.os, "fsync", fsync_then_ctrl_c)
+    # Python's own SIGINT handler, not blocked, whatever an earlier test in this worker
+    # left (in one fresh clone's CI the signal never reached the test).
+    handler = signal.signal(signal.SIGINT, signal.default_int_handler)
+    mask = signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGINT})
     # Another thread, as a run has (the progress line's): a signal sent to the process
     # may be taken by any thread that does not block it, so blocking it in this one
     # would not hold it back.
@@ -302,6 +306,8 @@ def test_a_trial_line_and_the_count_of_kept_trials_agree_under_ctrl_c(tmp_path,
     finally:
         done.set()
         other.join()
+        signal.pthread_sigmask(signal.SIG_SETMASK, mask)
+        signal.signal(signal.SIGINT, handler)
     run.release()
     lines = (run.path / "trials.jsonl").read_text().splitlines()
     assert len(lines) == len(run.trials) == 1
