@@ -81,7 +81,7 @@ def _imports(path: Path) -> set[str]:
 
 
 def test_the_kinds_package_is_pure():
-    allowed = {"__future__", "dataclasses", "math", "typing", "importlib", "functools",
+    allowed = {"__future__", "dataclasses", "itertools", "math", "typing", "importlib", "functools",
                "pathlib", "types", "creative_py.kinds", "creative_py.kinds.parts"}
     for path in sorted((ROOT / "creative_py" / "kinds").glob("*.py")):
         assert _imports(path) <= allowed, (path.name, _imports(path) - allowed)
