@@ -377,3 +377,22 @@ def test_the_demonstration_is_judged_by_the_trial_s_rule(backend):
     with pytest.raises(DemonstrationFailed, match="the trainer's skill place ended blocked "
                                                   "in the physics: place: gripper lagged"):
         run_demonstration(backend.world, pose_target=len)
+
+
+def test_the_demonstration_is_played_by_the_trial_s_loop(backend):
+    """The demonstration runs the trial's skill loop (``play_trial``): its steps in
+    order with the robot observing before and after each, the oracle asked once, and a
+    non-finite true pose making it ``invalid``, refused with the reason, as any trial."""
+    from creative_py.learning.tool_use import DemonstrationFailed, run_demonstration
+
+    backend.world.variation = ""
+    backend.episode = ScriptedEpisode()
+    demo = run_demonstration(backend.world, pose_target=len)
+    assert [e[0] for e in backend.episode.log] == [
+        "observe", "run_skill", "observe", "run_skill", "observe", "run_skill", "observe",
+        "verdict", "closed"]
+    assert [s.facts_before for s in demo.steps[1:]] == [s.facts_after for s in demo.steps[:-1]]
+    backend.episode = ScriptedEpisode(truth={"box1": (float("nan"), 0.0, 0.8, 0.0)})
+    with pytest.raises(DemonstrationFailed, match="did not reach the goal in the physics: "
+                                                  "non-finite pose of box1"):
+        run_demonstration(backend.world, pose_target=len)
