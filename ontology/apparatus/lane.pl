@@ -96,7 +96,9 @@ tool_in_use(_, Tool) :-
 /*  A lane case's pose term is Name(Dx, Dy, Roll) (metres, metres, radians), its name
     the case's (bring_pose, dislodge_pose): the prong's centre minus the cube's centre
     along the lane (+x) and across it (+y, the handle axis), and the tool's roll about
-    its handle (0 = prong down, +-pi/2 = flat).
+    its handle (0 = prong down, +-pi/2 = flat); the cases' relative_pose/5 and
+    pose_target/5 compute them with ontology/world.pl's tip_relative_pose/5 and
+    tip_pose_target/5.
 
     The geometry parameters, in the order the cases list them: box_half, prong_half,
     clearance, lane_length, dy_room, dx_max, dx_min, handle_half, wall_clearance,
@@ -112,9 +114,7 @@ tool_in_use(_, Tool) :-
 %   perceived size and heading.
 geometry_value(_, box_half, _, Target, _, V) :-
     nonvar(Target),
-    size(Target, Sx, Sy, _),
-    pose(Target, _, _, _, Yaw),
-    V is (Sx * abs(cos(Yaw)) + Sy * abs(sin(Yaw))) / 2.
+    half_extent_x(Target, V).
 geometry_value(_, prong_half, Tool, _, _, V) :-
     nonvar(Tool),
     (   hook_width_m(Tool, W)
@@ -171,20 +171,3 @@ geometry_value(_, dx_reach, Tool, Target, G, V) :-
     pose(Target, X, _, _, _),
     memberchk(arm_reach_x=R, G),
     V is R + Len - X.
-
-%   lane_relative_pose(+Tool, +Target, -Dx, -Dy, -Roll), proved on the state: the held
-%   tool's pose numbers relative to the cube, from the tip's position and the roll
-%   (proprioception) and the cube's pose (camera).
-lane_relative_pose(Tool, Target, Dx, Dy, Roll) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, X, Y, _, _),
-    Dx is TX - X,
-    Dy is TY - Y.
-
-%   lane_pose_target(+Dx, +Dy, +Target, -X, -Y), proved on the state: where the pose
-%   numbers put the prong's centre in the world (its height is the skill's choice).
-lane_pose_target(Dx, Dy, Target, X, Y) :-
-    pose(Target, BX, BY, _, _),
-    X is BX + Dx,
-    Y is BY + Dy.

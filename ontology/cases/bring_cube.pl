@@ -92,14 +92,14 @@ reach_definition(bring_cube, bring_pose(Dx, _Dy, _Roll), [Dx =< dx_reach]).
 %   dx_reach come from the facts by the lane's geometry_value/6 rules
 %   (ontology/apparatus/lane.pl).
 
-%   The held tool's pose relative to the cube (the lane's lane_relative_pose/5:
-%   proprioception and camera).
+%   The held tool's pose relative to the cube (proprioception and camera:
+%   ontology/world.pl's tip_relative_pose/5).
 relative_pose(bring_cube, Tool, Target, _, bring_pose(Dx, Dy, Roll)) :-
-    lane_relative_pose(Tool, Target, Dx, Dy, Roll).
+    tip_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 %   Where a pose puts the prong's centre (x, y) and the roll.
 pose_target(bring_cube, bring_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
-    lane_pose_target(Dx, Dy, Target, X, Y).
+    tip_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *
