@@ -238,7 +238,7 @@ class Episode(Protocol):
         """Return the contact load on the tool during the last tool action (the skill
         with ``tool_action = true``): the largest sum of the normal forces of its
         contacts over one step, newtons, and where and how it acted as JSON-ready data
-        (:meth:`creative_py.backends.pybullet.loads.ToolLoad.to_dict`'s fields:
+        (:meth:`creative_py.simulator.load.ToolLoad.to_dict`'s fields:
         ``max_force_n``, ``point`` and ``force`` in the tool frame, ``grasp_point``,
         ``bodies``, ``robust_force_n``, ...; None when none was measured). Asked only
         once the tool action started."""
