@@ -254,7 +254,10 @@ class Backend(Protocol):
     def load_world(self, manifest: CaseManifest) -> World:
         """Read the manifest's world folder and return its :class:`World`, every value
         of every variant and location checked; raise
-        :class:`creative_py.world_files.WorldFileError` naming the file and the field."""
+        :class:`creative_py.world_files.WorldFileError` naming the file and the field.
+        A backend that builds an arm of a robot profile builds ``manifest.robot``'s (a
+        run's manifest carries ``--robot``'s there): the choice travels in no other
+        way."""
 
     def open_episode(self, world: World, variant: str, location: int, tool: str,
                      seed: int = 0, gui: bool = False, images_dir: Optional[Path] = None,
