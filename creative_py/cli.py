@@ -61,9 +61,6 @@ def main(ctx: typer.Context,
          debug: bool = typer.Option(False, "--debug", help="Show the traceback of an "
                                     "error instead of its one-line message.")) -> None:
     """CREATIVE in Python and Prolog (Wicaksono & Sammut, IJECE 2020)."""
-    from creative_py.robots import robot_choice_kept
-
-    ctx.with_resource(robot_choice_kept())  # --robot holds for this command alone
     _DEBUG["on"] = debug
     logging.basicConfig(level=logging.INFO if verbose else logging.WARNING,
                         format="%(levelname)s %(name)s: %(message)s")
@@ -224,9 +221,8 @@ def _need_display(manifest=None) -> None:
 
 def _backend_override(backend: Optional[str], robot: Optional[str]) -> None:
     """Check ``--backend`` (a registered backend whose packages are installed) and
-    ``--robot`` (a robot profile that loads), or fail in one line; set the profile for
-    the backends (their environment variable)."""
-    from creative_py.robots import ROBOT_ENV, load_profile
+    ``--robot`` (a robot profile that loads), or fail in one line."""
+    from creative_py.robots import load_profile
     from creative_py.simulator.loader import BackendError, backend as load_backend
     from creative_py.world_files import WorldFileError
 
@@ -242,7 +238,6 @@ def _backend_override(backend: Optional[str], robot: Optional[str]) -> None:
             load_profile(robot)
         except WorldFileError as exc:
             _fail(f"--robot {robot}: {exc}")
-        os.environ[ROBOT_ENV] = robot
 
 
 _BACKEND_HELP = ("Run on this simulator backend instead of the case manifest's (ros: the "
@@ -378,15 +373,13 @@ def _trial(case, tool, location, variant, pose, seed, as_json, save_images, gui,
         from dataclasses import replace
 
         m = replace(m, backend=backend)
-    from creative_py.robots import ROBOT_ENV
-
     if robot is not None and m.robot is None:
         _fail(f"--robot {robot}: the case {case} runs in the {m.backend!r} backend, which "
               "brings its own arm")
-    if robot or m.robot:
-        os.environ[ROBOT_ENV] = robot or m.robot  # the backend builds this arm
-    else:
-        os.environ.pop(ROBOT_ENV, None)
+    if robot is not None:
+        from dataclasses import replace
+
+        m = replace(m, robot=robot)  # the backend builds this arm
     _check_counts(("--seed", seed, 0, SEED_MAX))
     if save_images is not None and save_images.exists() and not save_images.is_dir():
         _fail(f"--save-images {save_images}: not a folder")

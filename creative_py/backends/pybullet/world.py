@@ -455,13 +455,11 @@ def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
 
 
 def world_robot(manifest: CaseManifest) -> Any:
-    """Return the robot profile of a run: the one the environment names
-    (:data:`creative_py.robots.ROBOT_ENV`, set by ``--robot``), else the case's."""
-    import os
+    """Return the robot profile of a run: the manifest's ``robot`` (the case's, or
+    ``--robot``'s in a run's manifest)."""
+    from creative_py.robots import load_profile
 
-    from creative_py.robots import ROBOT_ENV, load_profile
-
-    name = os.environ.get(ROBOT_ENV) or manifest.robot
+    name = manifest.robot
     if not name:
         raise WorldFileError(f"{manifest.folder / 'case.toml'}: field 'robot': missing (the "
                              "pybullet backend needs the case's robot profile)")

@@ -33,12 +33,13 @@ TMP = Path(tempfile.mkdtemp(prefix="lost-run-"))
 SIM_PROFILE = TMP / "baxter-sim.toml"
 SIM_PROFILE.write_text((ROOT / "robots" / "baxter.toml").read_text()
                        .replace("use_sim_time = false", "use_sim_time = true"))
-RUN = ["run", "hook", "--seed", "0", "--phase", "use", "--video", "none"]
+RUN = ["run", "hook", "--seed", "0", "--phase", "use", "--video", "none",
+       "--robot", str(SIM_PROFILE)]  # run.json records it: the resume keeps it
 KEPT = 2  # trials recorded before the kill
 INTO = 4.0  # seconds into the next trial (its scene set up, its first skills running)
 
 out: dict = {"namespace_links": sorted(name for _, name in socket.if_nameindex())}
-env = dict(os.environ, CREATIVE_ROBOT_PROFILE=str(SIM_PROFILE), CREATIVE_ROS_WAIT_S="60")
+env = dict(os.environ, CREATIVE_ROS_WAIT_S="60")
 
 
 def start_standin() -> subprocess.Popen:

@@ -96,12 +96,12 @@ def test_a_primitive_the_ros_backend_lacks_is_named_with_the_case_file():
 
 
 def test_the_stand_in_sets_up_the_scene_a_request_asks_for():
-    from creative_py.backends.pybullet import load_world
+    from creative_py.backends.pybullet import load_world, open_episode
     from creative_py.backends.ros.trainer import SceneKeeper, scene_request
     from creative_py.case import get_case
 
     world = load_world(get_case("hook"))
-    keeper = SceneKeeper(world)
+    keeper = SceneKeeper(world, open_episode)
     try:
         rid, error, ep = keeper.apply(scene_request("a1", "hook", "long_tube", 3, "hook_a4"))
         assert (rid, error) == ("a1", None)
