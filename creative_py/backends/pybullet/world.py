@@ -168,12 +168,8 @@ class World(CatalogueWorld):
         """
         from creative_py.backends.pybullet.tools import tool_kind
 
-        tool_kind(spec)
-        if urdf is not None and not Path(urdf).is_file():
-            raise FileNotFoundError(f"{urdf}: tool URDF not found")
-        friction = next(iter(self.items.values())).friction
-        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
-        return replace(self, items={**self.items, spec.name: item})
+        tool_kind(spec)  # a kind this backend holds
+        return super().with_tool(spec, urdf)
 
     def listing(self) -> dict[str, Any]:
         """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created
