@@ -68,6 +68,7 @@ from creative_py.backends.pybullet.core import Pose
 from creative_py.simulator.types import SkillOutcome, Verdict
 from creative_py.backends.pybullet.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
                                    roll_of, tool_orientation)
+from creative_py.world_files import OptionError, shown
 
 
 log = logging.getLogger(__name__)
@@ -79,15 +80,18 @@ REQUIRED = None
 @dataclass(frozen=True)
 class Primitive:
     """A registered primitive: its function, its options (``name -> default``), the
-    name of the world target it takes (``""`` for none), and the bounds of those of its
+    name of the world target it takes (``""`` for none), the bounds of those of its
     options whose meaning is its own (``name -> (low, high, unit)``, before
-    :data:`OPTION_BOUNDS`, :func:`option_bound`)."""
+    :data:`OPTION_BOUNDS`, :func:`option_bound`), and ``check(options)``, which raises
+    :class:`~creative_py.world_files.OptionError` for resolved options it cannot run
+    with beyond their bounds and lengths (:func:`check_options`)."""
 
     name: str
     run: Callable[[Any, Mapping[str, Any], tuple], SkillOutcome]
     options: Mapping[str, Any]
     target: str = ""
     bounds: Mapping[str, tuple[float, float, str]] = field(default_factory=dict)
+    check: Callable[[Mapping[str, Any]], None] = lambda opts: None
 
     def needs_held_tool(self, opts: Mapping[str, Any]) -> bool:
         """Return whether the primitive moves a held tool (checked before perceiving)."""
@@ -664,6 +668,11 @@ tube's 7 cm, the shelf's 4 cm of room) and is lower than that, so a lower value 
 put the handle under the target, which is nonsense."""
 
 
+def _check_sweep(opts: Mapping[str, Any]) -> None:
+    if math.hypot(*opts["direction"]) < 1e-9:
+        raise OptionError("direction", f"must not be zero, got {shown(opts['direction'])}")
+
+
 PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("grasp", grasp, _kind_grasp_options()),
     Primitive("insert_at_pose", insert_at_pose,
@@ -692,7 +701,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("sweep", sweep,
               {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
                "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
-               "settle_time": 2.0, "lift": 0.0}),
+               "settle_time": 2.0, "lift": 0.0}, check=_check_sweep),
     Primitive("release_joint", release_joint,
               {"duration": 4.0, "contact_distance": 0.0005, "park_robot": True}),
 )}
@@ -733,6 +742,31 @@ option whose default is true or false (``posture_search``, ``perceive``, ``by_ha
 ``park_robot``) must be true or false. The loader checks every skill's options in
 every variant and location (:func:`creative_py.backends.pybullet.world.check_values`), so that no
 number of ``case.toml`` makes a motion or a wait run without end."""
+
+
+VECTOR_OPTIONS: dict[str, int] = {"direction": 2, "via": 2, "slide_from": 2, "retreat": 3}
+"""The options that are lists of numbers, by name, and how many numbers each holds
+(``direction``, ``via``, ``slide_from``: x, y in the table's plane; ``retreat``: a
+point x, y, z); every other numeric option is one number."""
+
+
+def check_options(primitive_name: str, opts: Mapping[str, Any]) -> None:
+    """Raise :class:`~creative_py.world_files.OptionError` unless the resolved options
+    of the primitive named ``primitive_name`` have their shapes (a list of
+    :data:`VECTOR_OPTIONS`'s length, else one number; an unset optional list is None)
+    and pass its own check (:attr:`Primitive.check`). Bounds are checked apart
+    (:func:`option_bound`)."""
+    p = PRIMITIVES[primitive_name]
+    flags = option_flags()
+    for k, v in opts.items():
+        if k in flags or v is None:  # None: an optional option left unset
+            continue
+        n = VECTOR_OPTIONS.get(k)
+        if n is not None and not (isinstance(v, tuple) and len(v) == n):
+            raise OptionError(k, f"must be a list of {n} numbers, got {shown(v)}")
+        if n is None and isinstance(v, tuple):
+            raise OptionError(k, f"must be a number, got a list {shown(v)}")
+    p.check(opts)
 
 
 def option_bound(primitive_name: str, option: str) -> tuple[float, float, str] | None:
