@@ -442,6 +442,14 @@ WORLD_OPTIONS = [
      "field 'skill[2].options.ramp': must be a number, got a list [0.1, 0.2]"),
     ("wedge_door", "case.toml", "retreat = [0.45, -0.75, 0.10]", "retreat = [0.45, -0.75]",
      "field 'skill[1].options.retreat': must be a list of 3 numbers, got [0.45, -0.75]"),
+    # documented as +-pi/2 or 0, bounded by +-2 pi: 0.3 carried the prong neither flat
+    # nor down
+    ("high_object", "case.toml", "flat_roll = 1.5707963267948966", "flat_roll = 0.3",
+     "field 'skill[1].options.flat_roll': must be -pi/2, 0 (chosen by the room) or pi/2 "
+     "(the prong carried flat), got 0.3 rad"),
+    ("high_object", "case.toml", "flat_roll = 1.5707963267948966", "flat_roll = 4.71238898",
+     "field 'skill[1].options.flat_roll': must be -pi/2, 0 (chosen by the room) or pi/2 "
+     "(the prong carried flat), got 4.71239 rad"),
 ]
 
 

@@ -171,7 +171,8 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     ``inner_height``). The gripper carries the tool above it to in front of its mouth
     and turns it so the prong is flat: at the requested roll if that is flat, otherwise
     towards the side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or
-    -pi/2; 0, the default, chooses by the room) if the manifest sets one: an arm whose
+    -pi/2; 0, the default, chooses by the room; :data:`FLAT_ROLLS`, nothing else) if the
+    manifest sets one: an arm whose
     wrist turns only one way from the pose's roll (a 7-joint arm's last joint at the
     height of a tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
     open at the top: the room above a shelf's top or a row of books) the tool is
@@ -668,6 +669,22 @@ tube's 7 cm, the shelf's 4 cm of room) and is lower than that, so a lower value 
 put the handle under the target, which is nonsense."""
 
 
+FLAT_ROLLS = (-math.pi / 2, 0.0, math.pi / 2)
+"""The values of ``insert_at_pose``'s ``flat_roll`` (rad): the prong flat towards -y or
++y, or 0, chosen by the room (a roll between would carry it neither flat nor down)."""
+
+FLAT_ROLL_TOLERANCE = 1e-6
+"""How far (rad) a ``flat_roll`` may lie from one of :data:`FLAT_ROLLS` (the digits of
+pi / 2 a file writes)."""
+
+
+def _check_insert(opts: Mapping[str, Any]) -> None:
+    roll = opts["flat_roll"]
+    if not any(abs(roll - r) <= FLAT_ROLL_TOLERANCE for r in FLAT_ROLLS):
+        raise OptionError("flat_roll", f"must be -pi/2, 0 (chosen by the room) or pi/2 "
+                          f"(the prong carried flat), got {roll:g} rad")
+
+
 def _check_sweep(opts: Mapping[str, Any]) -> None:
     if math.hypot(*opts["direction"]) < 1e-9:
         raise OptionError("direction", f"must not be zero, got {shown(opts['direction'])}")
@@ -681,7 +698,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
                "flat_roll": 0.0, "from_above": False, "keep_roll": False,
                **SLIP_OPTIONS},
               target="tip",
-              bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
+              bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}, check=_check_insert),
     Primitive("place_on_floor", place_on_floor,
               {"hold_angle": REQUIRED, "carry_height": 0.10, "release_height": 0.003,
                "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
