@@ -46,7 +46,7 @@ from typing import Any, Callable, Mapping
 
 from creative_py.backends.pybullet import rewards
 from creative_py.backends.pybullet.rewards import l1, terms_json
-from creative_py.simulator.types import Verdict
+from creative_py.simulator.types import NonFiniteState, Verdict
 from creative_py.world_files import OptionError, did_you_mean, shown
 
 log = logging.getLogger(__name__)
@@ -203,6 +203,15 @@ def _names(ep: Any, value: Any, option: str) -> list[str]:
     return [ep.object_name(v) for v in value]
 
 
+def _finite(values: Any, name: str, what: str) -> tuple[float, ...]:
+    """Return ``values`` as floats; raise :class:`NonFiniteState` (a ValueError: the
+    trial is ``invalid``) if one is not finite."""
+    out = tuple(float(v) for v in values)
+    if not all(math.isfinite(v) for v in out):
+        raise NonFiniteState(f"non-finite {what} of {name}: {out}")
+    return out
+
+
 def _start(ep: Any, name: str) -> tuple[float, ...]:
     """Return where an object's centre was when the trial began (after the settling)."""
     start = ep.start_centres.get(name)
@@ -210,11 +219,12 @@ def _start(ep: Any, name: str) -> tuple[float, ...]:
         start = getattr(ep, "body_starts", {}).get(name)
     if start is None:
         raise ValueError(f"no start position recorded for {name!r}")
-    return tuple(float(v) for v in start[:3])
+    return _finite(start[:3], name, "start")
 
 
 def _centre(ep: Any, name: str) -> tuple[float, float, float]:
-    return tuple(float(v) for v in ep.true_centre(name)[:3])
+    """Return an object's true centre (m); :class:`NonFiniteState` after a blow-up."""
+    return _finite(ep.true_centre(name)[:3], name, "pose")
 
 
 def _speed(ep: Any, name: str) -> float:
@@ -223,7 +233,8 @@ def _speed(ep: Any, name: str) -> float:
     pybullet integrates semi-implicitly (the position moves by the new velocity times
     the step), so this is the last step's displacement over the step, the speed the
     benchmark's MoveBall env measures by differencing its positions."""
-    return float(math.sqrt(sum(c * c for c in ep.linear_velocity(name))))
+    return float(math.sqrt(sum(c * c for c in _finite(ep.linear_velocity(name), name,
+                                                          "velocity"))))
 
 
 def _reward_verdict(name: str, reward: float, terms: Mapping[str, Any],
