@@ -27,7 +27,7 @@ touching the tool). An oracle may also name a ``fact`` that the observation repo
 
 The shaped-reward kinds (``goal_distance``, ``axis_progress``, ``in_box_or_distance``,
 ``displacement_neighbours``, ``fraction_within``; RoboToolBench's rewards, the formulas
-in :mod:`creative_py.backends.pybullet.rewards`) measure a reward in [0, 1] and judge
+in :mod:`creative_py.simulator.rewards`) measure a reward in [0, 1] and judge
 it by ``reward > threshold`` (0.99 by default, the benchmark's ``done()``)::
 
     [oracle]                      # BringCube: 1 - |p - goal|_1 / |start - goal|_1
@@ -44,8 +44,8 @@ import math
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
-from creative_py.backends.pybullet import rewards
-from creative_py.backends.pybullet.rewards import l1, terms_json
+from creative_py.simulator import rewards
+from creative_py.simulator.rewards import l1, terms_json
 from creative_py.simulator.types import NonFiniteState, Verdict
 from creative_py.world_files import OptionError, did_you_mean, shown
 
@@ -179,7 +179,7 @@ def joint_held(ep: Any, opts: Mapping[str, Any]) -> Verdict:
 
 
 # ------------------------------------------------------------------ shaped rewards
-# RoboToolBench's rewards (creative_py/backends/pybullet/rewards.py has the formulas):
+# RoboToolBench's rewards (creative_py/simulator/rewards.py has the formulas):
 # the verdict's quantity is the reward in [0, 1], judged by ``reward > threshold`` (the
 # benchmark's done(): 0.99); the formula's terms are its measures.
 

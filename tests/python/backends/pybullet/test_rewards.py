@@ -12,7 +12,7 @@ import math
 
 import pytest
 
-from creative_py.backends.pybullet import rewards
+from creative_py.simulator import rewards
 from creative_py.backends.pybullet.oracles import ORACLES, OPTION_BOUNDS
 
 TOL = 1e-9

@@ -8,7 +8,9 @@ docs/robotoolbench.md says which task uses which). Each function returns the rew
 its terms by name (JSON-ready numbers), the terms a report shows and a test checks.
 
 Positions are in metres in the world frame, speeds in m/s. No physics here: the oracle
-reads the positions from the episode and hands them over.
+reads the positions from the episode and hands them over. The formulas sit above the
+backend boundary, beside the tool load's rule (:mod:`creative_py.simulator.load`), so
+that every backend's oracle scores a task alike.
 """
 
 from __future__ import annotations
