@@ -178,6 +178,11 @@ def test_clean_table_reward_is_the_mean_of_each_cubes_progress_into_the_circle()
     r, _ = rewards.fraction_within([(1.1, 0.0, 0.015)] * 8, [(0.6, 0.1, 0.015)] * 8,
                                    CIRCLE, WITHIN)
     assert r == 1.0
+    # A cube that started at the centre (d0 = 0) and was pushed out: 0, the formula's
+    # limit (it was a ZeroDivisionError, which ended the run), beside one inside: 0.5.
+    r, t = rewards.fraction_within([(1.5, 0.0, 0.015), (1.1, 0.0, 0.015)],
+                                   [(1.1, 0.0, 0.015), (0.6, 0.0, 0.015)], CIRCLE, WITHIN)
+    assert (r, t["each"]) == (0.5, [0.0, 1.0])
 
 
 # ------------------------------------------------------------------ as oracle kinds
