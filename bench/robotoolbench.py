@@ -86,12 +86,28 @@ ROLLOUTS = {
 """What each published figure cost in simulated rollouts, per run of 5."""
 
 
-def benchmark_cases() -> dict[str, str]:
-    """Return ``case id -> the benchmark's task`` for every case the benchmark marks."""
+def benchmark_cases(root: Path | None = None) -> dict[str, str]:
+    """Return ``case id -> the benchmark's task`` for every case the benchmark marks
+    (the cases of ``root``, default ``worlds/``); raise ValueError naming the case file
+    whose ``[benchmark] task`` is no task of :data:`PUBLISHED` (its figures would be
+    missing from the table)."""
+    import difflib
+
     from creative_py.case import load_cases
 
-    return {cid: m.benchmark_task for cid, m in sorted(load_cases().items())
-            if m.benchmark == BENCHMARK}
+    tasks = {}
+    for cid, m in sorted(load_cases(root).items()):
+        if m.benchmark != BENCHMARK:
+            continue
+        if m.benchmark_task not in PUBLISHED:
+            close = difflib.get_close_matches(m.benchmark_task, list(PUBLISHED), n=1)
+            raise ValueError(
+                f"{m.folder / 'case.toml'}: field 'benchmark.task': "
+                f"{m.benchmark_task!r} is no RoboToolBench task"
+                + (f" (did you mean {close[0]!r}?)" if close else "")
+                + f"; tasks: {', '.join(PUBLISHED)}")
+        tasks[cid] = m.benchmark_task
+    return tasks
 
 
 def _sizes(fields: dict) -> dict:
@@ -264,7 +280,11 @@ def main() -> int:
                     help="record these finished run folders instead of running")
     add_output_options(ap, TRACKED, "the per-task figures (JSON)")
     args = ap.parse_args()
-    tasks = benchmark_cases()
+    try:
+        tasks = benchmark_cases()
+    except ValueError as exc:  # a world file's error (WorldFileError is one)
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     cases = args.cases or list(tasks)
     unknown = [c for c in cases if c not in tasks]
     if unknown:

@@ -214,7 +214,10 @@ class Episode(Protocol):
         """Return what the case's oracle measures in the simulated state now: the
         quantity, its value and threshold in the world's units, and whether the goal
         holds (``holds``). Raise ValueError or ArithmeticError when the state has
-        nothing finite to measure (a blow-up)."""
+        nothing finite to measure (a blow-up):
+        :class:`~creative_py.simulator.types.NonFiniteState` (a ValueError) for a
+        non-finite number read from the state, which makes the trial ``invalid`` where
+        the oracle is asked (:func:`creative_py.simulator.trial.judge`)."""
 
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
         """Return the ground truth ``name -> (x, y, z, yaw)`` (m, rad, world frame) of

@@ -35,8 +35,8 @@ import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, NamedTuple, Optional, Sequence
 
-from creative_py.simulator.types import (BackendLost, Fact, Observation, PoseTarget,
-                                         SkillOutcome, TrialResult, Verdict)
+from creative_py.simulator.types import (BackendLost, Fact, NonFiniteState, Observation,
+                                         PoseTarget, SkillOutcome, TrialResult, Verdict)
 
 if TYPE_CHECKING:
     from creative_py.case import CaseManifest, SkillBinding
@@ -196,15 +196,19 @@ def judge(ep: Episode, status: SkillOutcome, acted: bool
     The oracle is asked when the goal can have been reached: every skill ran, or the
     tool acted until it was stopped or ran out of time. It measures every trial (the
     measure is reported) but decides only when asked; a physics blow-up may leave
-    nothing finite to measure (``oracle`` None; the error is raised when asked).
+    nothing finite to measure (``oracle`` None): asked, a :class:`NonFiniteState` (a
+    body the oracle reads thrown to NaN, tracked by the cameras or not) makes the trial
+    ``invalid``, any other error is raised.
     """
     asked = status.ok or (acted and status.status in STOPPED)
     try:
         oracle: Optional[Verdict] = ep.verdict()
     except (ValueError, ArithmeticError) as exc:
-        if asked:
+        if asked and not isinstance(exc, NonFiniteState):
             raise
         log.debug("no oracle measure after %s: %s", status.status, exc)
+        if asked:
+            return "invalid", str(exc), None, asked
         oracle = None
     reached = asked and oracle is not None and oracle.holds
     outcome, reason = trial_outcome(status, acted, reached)

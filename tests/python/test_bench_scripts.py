@@ -122,3 +122,30 @@ def test_the_robotoolbench_row_counts_every_demonstration_and_the_whole_tool(tmp
     assert row["trials"]["demonstration"] == 4 and row["tool_kind"] == "catalogued"
     dims = row["tool_dimensions"]
     assert dims["handle_length"] == 0.31 and "hook_length" in dims
+
+
+def test_robotoolbench_refuses_a_task_it_has_no_published_figures_for(tmp_path, monkeypatch,
+                                                                      capsys):
+    """A misspelled ``[benchmark] task`` showed "n/a" in the table, silently."""
+    import shutil
+
+    import robotoolbench
+
+    from creative_py.world_files import WORLDS_ROOT
+
+    shutil.copytree(WORLDS_ROOT / "bring_cube", tmp_path / "bring_cube")
+    case = tmp_path / "bring_cube" / "case.toml"
+    case.write_text(case.read_text().replace('task = "BringCube"', 'task = "BringCub"'))
+    message = (f"{case}: field 'benchmark.task': 'BringCub' is no RoboToolBench task (did "
+               f"you mean 'BringCube'?); tasks: {', '.join(robotoolbench.PUBLISHED)}")
+    with pytest.raises(ValueError) as info:
+        robotoolbench.benchmark_cases(tmp_path)
+    assert str(info.value) == message
+    real = robotoolbench.benchmark_cases
+    monkeypatch.setattr(robotoolbench, "benchmark_cases", lambda: real(tmp_path))
+    monkeypatch.setattr(sys, "argv", ["robotoolbench.py", "--out", str(tmp_path / "o.json")])
+    assert robotoolbench.main() == 2
+    out, err = capsys.readouterr()
+    assert (out, err) == ("", f"error: {message}\n")
+    assert not (tmp_path / "o.json").exists()
+    assert set(real().values()) <= set(robotoolbench.PUBLISHED)    # the shipped cases

@@ -26,6 +26,7 @@ from creative_py.case import read_manifest
 from creative_py.records.trial import verdict_lines
 from creative_py.simulator import TRIAL_OUTCOMES, Episode, Observation, SkillOutcome, Verdict
 from creative_py.simulator.trial import play_trial, run_trial, trial_outcome
+from creative_py.simulator.types import NonFiniteState
 
 MANIFEST = """\
 id = "loopcase"
@@ -259,6 +260,18 @@ def test_an_unreachable_skill_with_nothing_to_measure_is_its_status(backend):
     backend.episode = ScriptedEpisode(measure_error=ArithmeticError("nan"))
     with pytest.raises(ArithmeticError):
         run_trial(backend.world, "stick1", "easy", 1)
+
+
+def test_an_oracle_that_meets_a_non_finite_state_makes_the_trial_invalid(backend):
+    """A body only the oracle reads (nobody tracks it, no motion watches it) thrown to
+    NaN: the oracle raises NonFiniteState and the trial is invalid, not a crash of the
+    run or a failure the learner would label."""
+    backend.episode = ScriptedEpisode(
+        measure_error=NonFiniteState("non-finite pose of cubes3: (nan, 0.1, 0.015)"))
+    result = run_trial(backend.world, "stick1", "easy", 1)
+    assert (result.outcome, result.reason) == (
+        "invalid", "non-finite pose of cubes3: (nan, 0.1, 0.015)")
+    assert result.verdict is None
 
 
 def test_a_non_finite_true_pose_makes_the_trial_invalid(backend):

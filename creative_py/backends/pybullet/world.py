@@ -52,8 +52,8 @@ from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
-from creative_py.world_files import (Fields, PhysicsSettings, WorldFileError, load_toml,
-                               read_physics, world_file)
+from creative_py.world_files import (Fields, OptionError, PhysicsSettings, WorldFileError,
+                                     load_toml, read_physics, world_file)
 
 _ROLES = ("tool", "target", "context")
 
@@ -515,7 +515,12 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
     (:func:`creative_py.backends.pybullet.primitives.option_bound`: the primitive's own
     bound, else :data:`~creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
-    (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`).
+    (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`). Beyond bounds, what
+    would fail or mean nothing mid-run: the skills' options by their primitive
+    (:func:`creative_py.backends.pybullet.primitives.check_options`: a list's length, a
+    zero direction), the oracle's by its kind against the scene's objects and roles
+    (:func:`creative_py.backends.pybullet.oracles.check_options`: names that resolve,
+    vector lengths, axes, box order, non-zero scales).
     """
     from creative_py.backends.pybullet import oracles, primitives
     from creative_py.backends.pybullet.scene import make_bodies
@@ -555,13 +560,31 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
             elif (bound := primitives.option_bound(s.primitive, k)) is not None:
                 check_bound(v, bound, where,
                             episode if isinstance(s.options[k], str) else "")
+        try:
+            primitives.check_options(s.primitive, opts)
+        except OptionError as exc:
+            raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{exc.option}': "
+                                 f"{exc.cause}{_context(s.options.get(exc.option), episode)}"
+                                 ) from None
     words = oracle_words(world)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
+    tasks_file = world.directory / "tasks.toml"
     for k, v in opts.items():
         if k not in words and k in oracles.OPTION_BOUNDS:
-            check_bound(v, oracles.OPTION_BOUNDS[k],
-                        f"{world.directory / 'tasks.toml'}: field 'oracle.{k}'",
+            check_bound(v, oracles.OPTION_BOUNDS[k], f"{tasks_file}: field 'oracle.{k}'",
                         episode if isinstance(world.oracle.options[k], str) else "")
+    manifest = world.manifest
+    started = {object_name(manifest, p.name, tool) for p in world.scene.perceived}
+    started |= {n for n, b in bodies.items() if getattr(b, "dynamic", False)}
+    names = oracles.SceneNames({r: object_name(manifest, r, tool) for r in _ROLES},
+                               frozenset({*bodies, tool}), frozenset(started))
+    try:
+        oracles.check_options(world.oracle.kind, opts, names)
+    except OptionError as exc:
+        raise WorldFileError(f"{tasks_file}: field 'oracle.{exc.option}': {exc.cause}"
+                             + ("" if exc.option in words else
+                                _context(world.oracle.options.get(exc.option), episode))
+                             ) from None
     for p in world.scene.perceived:
         if p.support_z is not None:
             ns.evaluate(p.support_z, f"perception.object {p.name} support_z")
@@ -571,6 +594,14 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
         if name not in bodies:
             raise WorldFileError(f"{world.directory / 'scene.toml'}: the {role} "
                                  f"{name!r} of case.toml is not a [[body]] of the scene")
+
+
+def _context(raw: Any, episode: str) -> str:
+    """Return ``episode`` if the option as written, ``raw``, holds a scene expression
+    (its number may differ by variant and location), else ""."""
+    def expr(v: Any) -> bool:
+        return isinstance(v, str) or (isinstance(v, (list, tuple)) and any(map(expr, v)))
+    return episode if expr(raw) else ""
 
 
 def check_bound(value: Any, bound: tuple[float, float, str], where: str,
