@@ -102,6 +102,8 @@ class OracleKind:
     threshold: str = ""
     words: tuple[str, ...] = ("axis", "fact")
     check: Callable[[Mapping[str, Any], SceneNames], None] = lambda opts, names: None
+    velocity: Callable[[Mapping[str, Any]], bool] = lambda opts: False
+    """Whether the judge reads an object's velocity with these options."""
 
     def holds(self, ep: Any, opts: Mapping[str, Any]) -> bool:
         """Return whether the goal holds (the verdict's judgement)."""
@@ -435,6 +437,22 @@ def check_options(kind: str, opts: Mapping[str, Any], names: SceneNames) -> None
     ORACLES[kind].check(opts, names)
 
 
+def objects_read(kind: str, opts: Mapping[str, Any], names: SceneNames) -> list[str]:
+    """Return the objects the oracle ``kind`` reads with the resolved ``opts`` in a
+    scene of ``names``, in order: those its check resolves (a backend that follows only
+    some objects' poses refuses the others, :mod:`creative_py.backends.ros`)."""
+    seen: list[str] = []
+
+    class _Seen(SceneNames):
+        def resolve(self, option: str, word: Any, started: bool = False) -> str:
+            name = SceneNames.resolve(self, option, word, started)
+            seen.append(name)
+            return name
+
+    ORACLES[kind].check(opts, _Seen(names.roles, names.objects, names.started))
+    return list(dict.fromkeys(seen))
+
+
 ORACLES: dict[str, OracleKind] = {o.name: o for o in (
     OracleKind("below", below, {"object": None, "axis": None, "limit": None, "fact": ""},
                "object", "limit", check=_check_position),
@@ -446,7 +464,8 @@ ORACLES: dict[str, OracleKind] = {o.name: o for o in (
     OracleKind("goal_distance", goal_distance,
                {"object": None, "goal": None, "start": None, "scale": 0.0,
                 "speed_weight": 0.0, "threshold": 0.99, "fact": ""},
-               "object", "threshold", check=_check_goal_distance),
+               "object", "threshold", check=_check_goal_distance,
+               velocity=lambda opts: float(opts["speed_weight"]) > 0.0),
     OracleKind("axis_progress", axis_progress,
                {"object": None, "axes": None, "start": None, "near": None,
                 "threshold": 0.99, "fact": ""},

@@ -506,6 +506,32 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
     return world
 
 
+def _scene_names(world: World, bodies: dict[str, Any], tool: str) -> Any:
+    """Return what an oracle's options may name in an episode with ``bodies`` and
+    ``tool`` (:class:`creative_py.backends.pybullet.oracles.SceneNames`)."""
+    from creative_py.backends.pybullet import oracles
+
+    manifest = world.manifest
+    started = {object_name(manifest, p.name, tool) for p in world.scene.perceived}
+    started |= {n for n, b in bodies.items() if getattr(b, "dynamic", False)}
+    return oracles.SceneNames({r: object_name(manifest, r, tool) for r in _ROLES},
+                              frozenset({*bodies, tool}), frozenset(started))
+
+
+def oracle_reads(world: World, variant: str, location: int, tool: str
+                 ) -> tuple[list[str], bool]:
+    """Return the objects the world's oracle reads in an episode of ``variant``,
+    ``location`` and ``tool`` (in order), and whether it reads a velocity."""
+    from creative_py.backends.pybullet import oracles
+    from creative_py.backends.pybullet.scene import make_bodies
+
+    ns = world.namespace(variant, location, tool)
+    opts = resolve_options(world.oracle.options, ns, "oracle", words=oracle_words(world))
+    names = _scene_names(world, make_bodies(world.scene.bodies, ns), tool)
+    kind = world.oracle.oracle
+    return oracles.objects_read(world.oracle.kind, opts, names), kind.velocity(opts)
+
+
 def check_values(world: World, variant: str, location: int, tool: str) -> None:
     """Resolve every scene value of one episode; raise :class:`WorldFileError` if one
     fails or lies outside its bounds.
@@ -573,11 +599,7 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
         if k not in words and k in oracles.OPTION_BOUNDS:
             check_bound(v, oracles.OPTION_BOUNDS[k], f"{tasks_file}: field 'oracle.{k}'",
                         episode if isinstance(world.oracle.options[k], str) else "")
-    manifest = world.manifest
-    started = {object_name(manifest, p.name, tool) for p in world.scene.perceived}
-    started |= {n for n, b in bodies.items() if getattr(b, "dynamic", False)}
-    names = oracles.SceneNames({r: object_name(manifest, r, tool) for r in _ROLES},
-                               frozenset({*bodies, tool}), frozenset(started))
+    names = _scene_names(world, bodies, tool)
     try:
         oracles.check_options(world.oracle.kind, opts, names)
     except OptionError as exc:

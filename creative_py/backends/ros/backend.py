@@ -35,7 +35,8 @@ import rclpy  # noqa: F401  (the ros extra: the loader names it when missing)
 from control_msgs.action import FollowJointTrajectory  # noqa: F401  (make setup-ros)
 
 from creative_py.backends.ros.client import ArmClient, ArmUnavailable, discovery_warning
-from creative_py.backends.ros.episode import RosEpisode, SceneRefused, unsupported_skills
+from creative_py.backends.ros.episode import (RosEpisode, SceneRefused, unjudged_oracle,
+                                             unsupported_skills)
 from creative_py.backends.ros.motion import Kinematics, LearnerArm
 from creative_py.backends.ros.profile import RobotProfile, load_profile
 from creative_py.world_files import WorldFileError
@@ -262,14 +263,14 @@ atexit.register(_close_connections)
 def load_world(manifest: Any) -> Any:
     """Return the case's world as its files describe it for the manifest's robot, without
     a clip camera; connect to the arm (:func:`connection`). Raise WorldFileError for a
-    case that binds a primitive this backend does not run, a bad profile, or an absent
-    arm."""
+    case that binds a primitive this backend does not run, an oracle that reads an
+    object it does not follow (or a velocity), a bad profile, or an absent arm."""
     from creative_py.backends.ros.twin import read_world
 
     profile_name(manifest)  # no robot: one line naming the case file
     world = read_world(manifest)
     world = replace(world, scene=replace(world.scene, video=None))
-    bad = unsupported_skills(world)
+    bad = unsupported_skills(world) or unjudged_oracle(world)
     if bad:
         raise WorldFileError(bad[0])
     connection(world)

@@ -88,6 +88,28 @@ def unsupported_skills(world: Any) -> list[str]:
             for s in m.skills if world.skills[s.name].primitive not in PRIMITIVES]
 
 
+def unjudged_oracle(world: Any) -> list[str]:
+    """Return one line per reason this backend cannot judge the world's oracle as the
+    pybullet backend does: the learner follows the poses of the perceived objects, the
+    context and the tool alone (its twin's other bodies stay where the scene put them)
+    and measures no velocity. Checked for the demonstration's variant, location and
+    tool; each line names ``tasks.toml`` and the field."""
+    from creative_py.backends.ros.twin import object_name, oracle_reads
+
+    m, demo = world.manifest, world.manifest.demonstration
+    where = f"{world.directory / 'tasks.toml'}: field 'oracle'"
+    reads, velocity = oracle_reads(world, demo.variant, demo.location, demo.tool)
+    followed = {object_name(m, p.name, demo.tool) for p in world.scene.perceived}
+    followed |= {m.context, demo.tool}
+    out = [f"{where}: the {world.oracle.kind} oracle reads {name}, whose pose the ros "
+           f"backend does not follow (it follows {', '.join(sorted(followed))})"
+           for name in reads if name not in followed]
+    if velocity:
+        out.append(f"{where}: the {world.oracle.kind} oracle weighs a velocity "
+                   "(speed_weight > 0), which the ros backend does not measure")
+    return out
+
+
 def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
                 working_point: Sequence[float] = (0.0, 0.0, 0.0)) -> Any:
     """Return the tool action's contact load (a

@@ -37,10 +37,11 @@ from creative_py.backends.pybullet.arm import Arm, base_pose, kinematics_model
 from creative_py.backends.pybullet.bodies import local_extents, set_frame_pose
 from creative_py.backends.pybullet.core import Sim
 from creative_py.backends.pybullet.episode import Episode as TwinEpisode
+from creative_py.backends.pybullet.world import object_name, oracle_reads
 from creative_py.world_files import PhysicsSettings
 
 __all__ = ["TwinEpisode", "base_pose", "kinematics_arm", "kinematics_model", "local_extents",
-           "read_world", "set_frame_pose", "tool_rests"]
+           "object_name", "oracle_reads", "read_world", "set_frame_pose", "tool_rests"]
 
 
 def read_world(manifest: Any) -> Any:
