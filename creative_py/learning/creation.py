@@ -38,7 +38,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable, Optional
 
-from creative_py.bridge import Compound, Engine, Term, readable
+from creative_py.bridge import Compound, Engine, Term, lettered, readable
 from creative_py.learning.trials import TaskState, TrialRecord, TrialRunner, term_text
 from creative_py.records.summary import print_summary
 from creative_py.report.contents import readable_term
@@ -49,6 +49,61 @@ log = logging.getLogger(__name__)
 NOT_AS_PLANNED = ("blocked", "unreachable", "invalid")
 """Outcomes of a trial whose motion did not happen as planned: a creation trial that
 ends so is run once more (:meth:`ToolCreator._once_more`)."""
+
+
+def exhausted_words(skipped: Term) -> str:
+    """Return why no candidate of ``creation:next_tool/6``'s ``exhausted(Skipped)`` was
+    made, in words: the candidates with the same reason together, each reason once.
+
+    ``Skipped`` lists ``Instance-Reason``: ``tried`` (made before) or
+    ``infeasible(Conflict)``, the size model's minimal conflict of spec literals and
+    task facts. Each candidate's tool is ``A``; the facts the size model reads are
+    lengths and positions, so their numbers (metres) are written in millimetres::
+
+        plate_width(A, wide) and plate_width(A, narrow) cannot be sized, as
+        wing_spread(A, none) and size(cubes, 293.3 mm, 401.4 mm, 30 mm) cannot hold
+        together; wing_spread(A, flared) was made before
+    """
+    if not skipped:
+        return "no candidate"
+    reasons: dict[str, list[str]] = {}
+    for item in skipped:
+        if not (isinstance(item, Compound) and item.name == "-" and len(item.args) == 2):
+            reasons.setdefault(readable(item), [])
+            continue
+        instance, reason = lettered(item).args
+        if reason == "tried":
+            why = "made before"
+        elif (isinstance(reason, Compound) and reason.name == "infeasible"
+              and isinstance(reason.args[0], list)):
+            conflict = [_words(c) for c in reason.args[0]]
+            why = ("cannot be sized, as " + _and(conflict) + " cannot hold together"
+                   if conflict else "cannot be sized in this task")
+        else:
+            why = "skipped: " + _words(reason)
+        reasons.setdefault(why, []).append(_words(instance))
+    out = []
+    for why, names in reasons.items():
+        if why == "made before":
+            why = ("was " if len(names) == 1 else "were ") + why
+        out.append(f"{_and(names)} {why}" if names else why)
+    return "; ".join(out)
+
+
+def _words(term: Term) -> str:
+    """A lettered literal for people: its floats (metres) in mm."""
+    if isinstance(term, float):
+        return f"{term * 1000:.1f}".rstrip("0").rstrip(".") + " mm"
+    if isinstance(term, Compound):
+        return f"{term.name}({', '.join(_words(a) for a in term.args)})"
+    if isinstance(term, list):
+        return "[" + ", ".join(_words(a) for a in term) + "]"
+    return readable(term)
+
+
+def _and(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
 @dataclass
@@ -85,6 +140,10 @@ class CreateResult:
     trials: list[TrialRecord]
     wall_time_s: float
     exhausted: Optional[str] = None
+    """Why no literal was left to generalise: ``creation:next_tool/6``'s skipped
+    candidates as Prolog text (:func:`~creative_py.bridge.readable`)."""
+    exhausted_words: Optional[str] = None
+    """The same in words and millimetres (:func:`exhausted_words`), for people."""
     replaced: Optional[Term] = None
     instance: Optional[Term] = None
     predicted: Optional[dict[str, Any]] = None
@@ -176,12 +235,12 @@ class ToolCreator:
         solved_by = "catalogue" if by_catalogue else None
         created: list[CreatedTool] = []
         tried: list[Term] = []
-        exhausted = None
+        exhausted = words = None
         while len(created) < self.max_tools:
             reply = self.engine.next_tool(self.case, vs, tried, runner.task_facts(task))
             if reply.name == "exhausted":
-                exhausted = readable(reply.args[0])
-                runner.progress(f"no literal left to generalise: {exhausted}")
+                exhausted, words = readable(reply.args[0]), exhausted_words(reply.args[0])
+                runner.progress(f"no literal left to generalise: {words}")
                 break
             replaced, _general, instance, _struct, _dims = reply.args
             tried.append(instance)
@@ -196,7 +255,7 @@ class ToolCreator:
                                     solved_by=solved_by or "created")
         return CreateResult(variant, not by_catalogue, created, None, vs,
                             runner.trials[start:], time.perf_counter() - t0, exhausted,
-                            predicted=predicted, catalogue=catalogue, solved_by=solved_by)
+                            exhausted_words=words, predicted=predicted, catalogue=catalogue, solved_by=solved_by)
 
     def _make_and_try(self, reply: Compound, created: list[CreatedTool], n: int,
                       vs: Term, task: TaskState) -> tuple[Any, CreatedTool, int]:

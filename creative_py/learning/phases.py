@@ -159,6 +159,7 @@ def creation_summary(res: CreateResult, run_dir: Path,
         success=res.success.name if res.success else None,
         eval=res.success.eval_outcomes if res.success else [],
         exhausted=res.exhausted,
+        exhausted_words=res.exhausted_words,
         # What solved the harder task: learned (TC trial 1), catalogue (an available
         # object the generalised model admits, tried before manufacturing), created or
         # None; the catalogued objects tried (or skipped), best first, with why.

@@ -468,6 +468,9 @@ class CreateSummary(Part):
     eval: list[str] = field(default_factory=list)
     """The outcomes of that tool's evaluation."""
     exhausted: Optional[str] = None
+    """Why no literal was left to generalise, as Prolog text (``Instance-Reason``)."""
+    exhausted_words: Optional[str] = _omit()
+    """The same in words, lengths in millimetres (absent from older summaries)."""
     solved_by: Optional[str] = None
     """``learned`` (TC trial 1), ``catalogue``, ``created`` or None."""
     catalogue: list[CatalogueEntry] = field(default_factory=list)

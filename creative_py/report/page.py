@@ -309,7 +309,9 @@ def _tools_section(run: RunContents) -> str:
             bits.append("catalogued objects considered first: " + ", ".join(
                 f"{escape(str(c.tool))} ({escape(str(c.outcome))})"
                 for c in create.catalogue))
-        if create.exhausted:
+        if create.exhausted_words:
+            bits.append(f"no literal left to generalise: {escape(create.exhausted_words)}")
+        elif create.exhausted:  # an older summary: the term only
             bits.append("no literal left to generalise (what was tried of each: "
                         f"<code>{escape(create.exhausted)}</code>)")
         intro = f"<p>{'; '.join(bits)}.</p>"
