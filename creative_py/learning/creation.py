@@ -25,6 +25,8 @@ none succeeds, or, with ``demonstrate``, afterwards as a demonstration of Algori
     failure -> tried += [Instance]; next instance, next property, until none is left
     blocked, unreachable, invalid -> the same tool once more (the motion, not the design,
     failed), then as a failure
+    no pose (the learned model's pose cannot hold for it) -> no trial (``no_pose``),
+    as a failure
 
 Which property is generalised first and which value is tried first is Prolog's choice
 (prolog/creation.pl explains the order).
@@ -106,6 +108,18 @@ def _and(items: list[str]) -> str:
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
 
 
+def no_pose_words(plan: Term) -> str:
+    """Return why ``plan_use`` gave a created tool no pose, in words: its answer
+    ``no_experiment(infeasible_pose(Conflict))`` (the learned model's spatial literals
+    that cannot hold together for the tool in the task) or another reason term."""
+    reason = plan.args[0] if isinstance(plan, Compound) and plan.args else plan
+    if (isinstance(reason, Compound) and reason.name == "infeasible_pose"
+            and isinstance(reason.args[0], list) and reason.args[0]):
+        return (f"no pose of the learned model holds for it: "
+                f"{_and([_words(c) for c in lettered(reason.args[0])])} cannot hold together")
+    return f"the learned model gives it no pose: {readable(plan)}"
+
+
 @dataclass
 class CreatedTool:
     """A tool the robot designed, sized and manufactured."""
@@ -126,6 +140,9 @@ class CreatedTool:
     union's volume check; totals."""
     strength: dict[str, Any] = field(default_factory=dict)
     """The strength check of its successful trial (:mod:`creative_py.fabrication.strength`)."""
+    reason: str = ""
+    """Why it was not tried (its ``trial_outcome`` ``no_pose``: the learned model's pose
+    cannot hold for it in the task), in words; empty when it was."""
 
 
 @dataclass
@@ -255,14 +272,16 @@ class ToolCreator:
                                     solved_by=solved_by or "created")
         return CreateResult(variant, not by_catalogue, created, None, vs,
                             runner.trials[start:], time.perf_counter() - t0, exhausted,
-                            exhausted_words=words, predicted=predicted, catalogue=catalogue, solved_by=solved_by)
+                            exhausted_words=words, predicted=predicted, catalogue=catalogue,
+                            solved_by=solved_by)
 
     def _make_and_try(self, reply: Compound, created: list[CreatedTool], n: int,
                       vs: Term, task: TaskState) -> tuple[Any, CreatedTool, int]:
         """Manufacture the candidate ``reply`` (``create/5`` of ``next_tool``), try it in
-        the physics (once more when the motion, not the design, failed) and, after a
-        success, check it against the load the physics measured; return its spec, its
-        record (appended to ``created``) and the creation trials so far."""
+        the physics (once more when the motion, not the design, failed; not at all when
+        the learned pose cannot hold for it: ``no_pose``) and, after a success, check it
+        against the load the physics measured; return its spec, its record (appended to
+        ``created``) and the creation trials so far."""
         runner = self.runner
         replaced, general, instance, struct, dims = reply.args
         spec, values, files, mass, printed = self._manufacture(len(created) + 1, struct, dims)
@@ -274,7 +293,14 @@ class ToolCreator:
         runner.progress(f"created {ct.name}: " + " -> ".join(
             readable_term(x) for x in (ct.replaced, ct.general, ct.instance))
             + f"; {dims_text(ct.dims)}")
-        rec, n = self._once_more(lambda k: self._trial_with(spec, k, vs, task), n, ct.name)
+        use = self._use_of(spec, vs, task)
+        if use.name != "exploit":
+            # Sized, but the learned model's pose cannot hold for it here: no trial; the
+            # next candidate is made (its instance is in ``tried``).
+            ct.trial_outcome, ct.reason = "no_pose", no_pose_words(use)
+            runner.progress(f"{ct.name}: not tried: {ct.reason}")
+            return spec, ct, n
+        rec, n = self._once_more(lambda k: self._trial_with(use, k, vs, task), n, ct.name)
         ct.trial_outcome = rec.outcome
         if rec.outcome == "success":
             # The physics measured the load; a tool too weak for it is thickened (tried
@@ -415,9 +441,15 @@ class ToolCreator:
                 f"{ct.name}: safety factor {check.safety_factor:.2f} < "
                 f"{check.required_safety_factor:g} under {check.force_n:.2f} N; thickened "
                 f"into {thick.name} {ct2.dims}")
-            rec, n = self._once_more(lambda k: self._trial_with(thick, k, vs, task), n)
-            ct2.trial_outcome = rec.outcome
+            use = self._use_of(thick, vs, task)
             spec, ct = thick, ct2
+            if use.name != "exploit":
+                ct2.trial_outcome, ct2.reason = "no_pose", no_pose_words(use)
+                check = replace(check, verdict="rejected",
+                                reason=f"{thick.name} was not tried: {ct2.reason}")
+                break
+            rec, n = self._once_more(lambda k: self._trial_with(use, k, vs, task), n)
+            ct2.trial_outcome = rec.outcome
             check = check_strength(thick, rec.tool_load, trial=rec.trial,
                                    safety_factor=sf, thickened_from=check.tool)
             if rec.outcome != "success":
@@ -508,19 +540,22 @@ class ToolCreator:
         self.runner.world = self.runner.world.with_tool(spec, files.get("urdf"))
         return spec, values, files, mass, printed
 
-    def _trial_with(self, spec: Any, n: int, vs: Term, task: TaskState) -> TrialRecord:
-        """Test a created tool at the pose the learned model asks for.
+    def _use_of(self, spec: Any, vs: Term, task: TaskState) -> Compound:
+        """Return the learned model's plan for a created tool in ``task``: ``exploit/4``
+        (its pose) or ``no_experiment(Why)`` when the pose cannot hold for it
+        (``plan_use`` with the tool fixed)."""
+        return self.engine.plan_use(self.case, vs, self.runner.task_facts(task),
+                                    [Compound("tool", (spec.name,))])
+
+    def _trial_with(self, use: Compound, n: int, vs: Term, task: TaskState) -> TrialRecord:
+        """Test a created tool at the pose the learned model asks for (``use``, an
+        ``exploit/4`` plan of :meth:`_use_of`) as creation trial ``n``.
 
         The outcome is not added to the tool-use version space: the created tool differs
         from the learned model in the replaced literal by design, and the harder task is
         a different concept. A success gives the harder task's model instead
         (:func:`created_models` in ``prolog/model_file.pl``).
         """
-        use = self.engine.plan_use(self.case, vs, self.runner.task_facts(task),
-                                   [Compound("tool", (spec.name,))])
-        if use.name != "exploit":
-            raise RuntimeError(f"{self.case}: no pose for the created tool {spec.name}: "
-                               f"{term_text(use)}")
         rec, _ = self.runner.run(use, "create", n, vs, task, 0.0, label=False)
         return rec
 
@@ -529,8 +564,10 @@ class ToolCreator:
         out = []
         for i in range(1, self.eval_trials + 1):
             task.next_location()
-            use = self.engine.plan_use(self.case, vs, self.runner.task_facts(task),
-                                       [Compound("tool", (spec.name,))])
+            use = self._use_of(spec, vs, task)
+            if use.name != "exploit":  # no pose at this location: as the learned model's
+                out.append("no_plan")  # evaluation records it (phases._evaluate)
+                continue
             rec, _ = self.runner.run(use, "eval", i, vs, task, 0.0, label=False)
             out.append(rec.outcome)
         return out

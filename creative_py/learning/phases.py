@@ -184,7 +184,8 @@ def _created_tool(c: Any, run_dir: Path) -> CreatedToolSummary:
                if isinstance(c.files, dict) else c.files),
         trial_outcome=c.trial_outcome, eval_outcomes=list(c.eval_outcomes),
         mass_kg=c.mass_kg, print=PrintSummary.from_dict(c.print, f"{where}.print"),
-        strength=StrengthSummary.from_dict(c.strength, f"{where}.strength"))
+        strength=StrengthSummary.from_dict(c.strength, f"{where}.strength"),
+        reason=c.reason or None)
 
 
 def _relative(run_dir: Path, name: Any) -> Any:

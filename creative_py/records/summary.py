@@ -443,10 +443,13 @@ class CreatedToolSummary(Part):
     files: Optional[dict[str, Any]] = None
     """Its files by kind (``urdf``, ``stl``, ...), relative to the run folder."""
     trial_outcome: Optional[str] = None
+    """``no_pose`` when it was not tried (``reason`` says why)."""
     eval_outcomes: list[str] = field(default_factory=list)
     mass_kg: Optional[float] = None
     print: Optional[PrintSummary] = None
     strength: Optional[StrengthSummary] = None
+    reason: Optional[str] = _omit()
+    """Why it was not tried, in words (absent when it was)."""
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -332,7 +332,8 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
         head.append("<p>" + " &rarr; ".join(
             f"<code>{escape(readable_term(_or(x, '')))}</code>"
             for x in (c.replaced, c.general, c.instance)) + "</p>")
-        outcomes = [f"creation trial {_outcome(_or(c.trial_outcome, '?'))}"]
+        outcomes = [f"creation trial {_outcome(_or(c.trial_outcome, '?'))}"
+                    + (f" ({escape(c.reason)})" if c.reason else "")]
         if c.eval_outcomes:
             outcomes.append("evaluation " + " ".join(_outcome(o) for o in c.eval_outcomes))
         head.append(f"<p>{'; '.join(outcomes)}</p>")

@@ -260,6 +260,77 @@ def test_no_literal_left_in_words_and_millimetres(engine):
     assert exhausted_words([]) == "no candidate"
 
 
+class NoPoseFor:
+    """The real engine, but ``plan_use`` with the tool fixed to ``tool`` answers as
+    Prolog did for DislodgeCube's first created tool (a stick sized 18 mm wide, whose
+    learned pose could not hold: ``no_experiment(infeasible_pose(...))``)."""
+
+    def __init__(self, engine, tool, after=0):
+        self.engine, self.tool, self.after = engine, tool, after  # real answers first
+
+    def __getattr__(self, name):
+        return getattr(self.engine, name)
+
+    def plan_use(self, case, vs, facts, options=()):
+        if [str(o) for o in options] == [f"tool({self.tool})"]:
+            self.after -= 1
+        if [str(o) for o in options] == [f"tool({self.tool})"] and self.after < 0:
+            return self.engine.parse(f"no_experiment(infeasible_pose([behind({self.tool},"
+                                     f"cube1),in_tube({self.tool},tube1)]))")
+        return self.engine.plan_use(case, vs, facts, options)
+
+
+NO_POSE = ("no pose of the learned model holds for it: behind({0}, cube1) and "
+           "in_tube({0}, tube1) cannot hold together")
+LEFT = ("handle_length(A, long) was made before; handle_length(A, short) cannot be sized, "
+        "as handle_length(A, short) and tube_length_m(tube1, 450 mm) cannot hold together; "
+        "stick(A), handle_width(A, thick), hook_angle(A, acute) and hook_angle(A, obtuse) "
+        "cannot be sized, as handle_length(A, medium) and tube_length_m(tube1, 450 mm) "
+        "cannot hold together")
+
+
+def test_a_created_tool_without_a_pose_is_not_tried_and_the_next_is_made(engine, world, vs):
+    """No traceback (it was RuntimeError 'no pose for the created tool'): the tool is
+    recorded ``no_pose`` with why, no trial is run, and creation goes on to the next
+    candidate (here none is left)."""
+    runner, lines, _ = _runner(engine, world, "hook_s0")
+    creator = ToolCreator(runner)
+    creator.engine = NoPoseFor(engine, "hook_new1")
+    res = creator.create(vs, "long_tube")
+    why = NO_POSE.format("hook_new1")
+    assert [(c.name, c.trial_outcome, c.reason) for c in res.created] == [
+        ("hook_new1", "no_pose", why)]
+    assert (res.success, res.solved_by, res.trials, runner.calls) == (None, None, [], [])
+    assert res.exhausted_words == LEFT
+    assert lines == [PREDICTED, MAKE_1, CREATED_1, f"hook_new1: not tried: {why}",
+                     f"no literal left to generalise: {LEFT}"]
+    tool = creation_summary(res, Path(".")).to_dict()["created_tools"][0]
+    assert (tool["trial_outcome"], tool["reason"]) == ("no_pose", why)
+
+
+def test_an_evaluation_trial_without_a_pose_is_no_plan(engine, world, vs):
+    runner, lines, records = _runner(engine, world, "hook_s0")
+    creator = ToolCreator(runner, eval_trials=5)
+    creator.engine = NoPoseFor(engine, "hook_new1", after=1)  # its creation trial runs
+    res = creator.create(vs, "long_tube")
+    assert (res.success.name, res.success.eval_outcomes) == ("hook_new1", ["no_plan"] * 5)
+    assert runner.calls == [("create", 1, 0.0, False)]
+
+
+def test_a_thickened_tool_without_a_pose_is_rejected(engine, world, vs):
+    runner, lines, records = _runner(engine, world, "hook_sf15_s0")
+    creator = ToolCreator(runner, safety_factor=15.0)
+    creator.engine = NoPoseFor(engine, "hook_new2")
+    res = creator.create(vs, "long_tube")
+    why = NO_POSE.format("hook_new2")
+    assert [(c.name, c.trial_outcome, c.reason) for c in res.created] == [
+        ("hook_new1", "success", ""), ("hook_new2", "no_pose", why)]
+    assert res.created[1].strength["verdict"] == "rejected"
+    assert (res.success, res.trials) == (None, records[LEARNED:LEARNED + 1])
+    assert lines[-2:] == [f"hook_new2: rejected: hook_new2 was not tried: {why}",
+                          f"no literal left to generalise: {LEFT}"]
+
+
 def test_the_kind_of_a_new_tool_is_its_class_literal(engine, world):
     from creative_py.kinds import spec_classes
 
