@@ -33,6 +33,7 @@ from creative_py.bridge.terms import (
     encode,
     fact_term,
     is_ground,
+    lettered,
     readable,
     variables,
 )
@@ -42,5 +43,5 @@ __all__ = [
     "EngineStateError", "LoadMessage", "LoadReport", "PlString", "PrologError",
     "readable", "PrologFailed", "PrologFileNotFoundError", "PrologLoadError", "PrologSyntaxError",
     "Term", "Var", "WrongThreadError", "clause", "clause_parts", "conj", "conj_to_list",
-    "decode", "encode", "is_ground", "variables",
+    "decode", "encode", "is_ground", "lettered", "variables",
 ]

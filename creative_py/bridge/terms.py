@@ -380,9 +380,14 @@ def readable(value: Any) -> str:
     ValueError, TypeError
         As :func:`encode`.
     """
+    return _encode(lettered(value), _READABLE_INFIX, _TOP_PRIORITY)
+
+
+def lettered(value: Any) -> Any:
+    """Return ``value`` with every named variable renamed ``A``, ``B``, ... ``Z``,
+    ``A1``, ... in order of first appearance (as :func:`readable` writes them)."""
     names = {v.name: Var(_letter(i)) for i, v in enumerate(variables(value))}
-    lettered = map_variables(value, lambda v: names.get(v.name, v))
-    return _encode(lettered, _READABLE_INFIX, _TOP_PRIORITY)
+    return map_variables(value, lambda v: names.get(v.name, v))
 
 
 def _letter(index: int) -> str:

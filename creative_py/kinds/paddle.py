@@ -18,15 +18,13 @@ blade is shorter and no thinner, so the shaft governs).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
 
-from creative_py.kinds.parts import (MIN_SAFETY_FACTOR, PLA_STRENGTH, Box, Fact, KindSpec,
-                                     Part, check_mass, check_name, check_positive,
-                                     square_handle_load)
+from creative_py.kinds.parts import (Box, Fact, Part, SquareBarTool, check_mass, check_name,
+                                     check_positive)
 
 
 @dataclass(frozen=True)
-class PaddleSpec(KindSpec):
+class PaddleSpec(SquareBarTool):
     """A paddle: a square shaft with a flat blade across its far end.
 
     Parameters
@@ -48,7 +46,7 @@ class PaddleSpec(KindSpec):
         Mass in kg; None means PLA density times volume (every created tool).
     """
 
-    HANDLING = "handle"
+    BAR = ("shaft_length", "shaft_width")
     FACT_FIELDS = {"shaft_length_m": "shaft_length", "shaft_width_m": "shaft_width",
                    "blade_width_m": "blade_width", "blade_length_m": "blade_length"}
     RGBA = (0.25, 0.65, 0.35, 1.0)
@@ -83,37 +81,15 @@ class PaddleSpec(KindSpec):
     def parts(self) -> list[Part]:
         """Return the shaft box (the whole length) and the blade box at its end."""
         w, L, b = self.shaft_width, self.shaft_length, self.blade_length
-        shaft = Box((L / 2, 0.0, 0.0), (L, w, w))
         blade = Box((L - b / 2, 0.0, 0.0), (b, self.blade_width, w))
-        return [shaft, blade]
+        return [self.bar(), blade]
 
     def volume(self) -> float:
         """Return the solid volume, m^3 (the shaft inside the blade counted once)."""
         w = self.shaft_width
         return self.shaft_length * w * w + self.blade_length * (self.blade_width - w) * w
 
-    # ---------------------------------------- how the simulator holds it ("handle")
-    @property
-    def handle_length(self) -> float:
-        """Return the length of what the simulator holds as a handle: the shaft, m."""
-        return self.shaft_length
-
-    @property
-    def handle_width(self) -> float:
-        """Return the side of the held shaft's section, m."""
-        return self.shaft_width
-
-    @property
-    def grip_point(self) -> tuple[float, float, float]:
-        """Return the grip point in the tool frame, metres."""
-        return (self.grip_offset, 0.0, 0.0)
-
-    roll_side = 1.0
-    """Roll is measured from the blade's +y half (it is symmetric)."""
-
-    has_head = True
-    """The blade stands out sideways at the shaft's end."""
-
+    # ------------------- how the simulator holds it (by the shaft: SquareBarTool)
     @property
     def head_width(self) -> float:
         """Return the blade's extent along the shaft, metres."""
@@ -157,8 +133,7 @@ class PaddleSpec(KindSpec):
             f"blade_length = {mm(self.blade_length)};  // the blade along the shaft [mm]",
             "",
             "union() {",
-            "    translate([0, -shaft_width / 2, -shaft_width / 2])",
-            "        cube([shaft_length, shaft_width, shaft_width]);",
+            *self.bar_scad(),
             "    translate([shaft_length - blade_length, -blade_width / 2, -shaft_width / 2])",
             "        cube([blade_length, blade_width, shaft_width]);",
             "}",
@@ -167,15 +142,6 @@ class PaddleSpec(KindSpec):
     def caption_extra(self) -> str:
         """Return the blade's size in words."""
         return f", blade {self.blade_width * 1e3:.1f} mm across"
-
-    # ---------------------------------------------------------------- strength
-    def load_model(self, force_n: float, point: tuple | None, grasp: tuple | None, *,
-                   strength_pa: float = PLA_STRENGTH,
-                   safety_factor: float = MIN_SAFETY_FACTOR) -> dict[str, Any]:
-        """Return the cantilever model of the square shaft from the grasp to the
-        contact (:func:`creative_py.kinds.parts.square_handle_load`)."""
-        return square_handle_load(force_n, point, grasp or self.grip_point,
-                                  self.shaft_width, strength_pa, safety_factor)
 
 
 CLASSES = {"paddle": PaddleSpec}

@@ -174,6 +174,67 @@ class KindSpec:
         raise NotImplementedError
 
 
+class SquareBarTool(KindSpec):
+    """A kind held by a square bar along +x from its butt end, with its head at the far
+    end (a paddle's shaft, a pusher's pole): what the simulator's ``"handle"`` handling
+    and the strength check ask of it, from the bar alone.
+
+    Tool frame: the bar runs from the butt end at the origin along +x for its length,
+    centred on the x axis, its square section's side its width. A kind names the two
+    fields in :attr:`BAR` and has a ``grip_offset`` field (the grip point's distance from
+    the butt end along +x, metres).
+    """
+
+    HANDLING = "handle"
+    BAR: tuple[str, str] = ("", "")
+    """The fields of the bar's length and of its section's side (metres)."""
+
+    grip_offset: float
+
+    roll_side = 1.0
+    """Roll is measured from the tool frame's +y (the head's side, or either: a symmetric
+    head)."""
+
+    has_head = True
+    """The head stands out sideways at the bar's far end."""
+
+    @property
+    def handle_length(self) -> float:
+        """Return the length of what the simulator holds as a handle: the bar, m."""
+        return getattr(self, self.BAR[0])
+
+    @property
+    def handle_width(self) -> float:
+        """Return the side of the held bar's section, m."""
+        return getattr(self, self.BAR[1])
+
+    @property
+    def grip_point(self) -> tuple[float, float, float]:
+        """Return the grip point in the tool frame, metres."""
+        return (self.grip_offset, 0.0, 0.0)
+
+    def bar(self) -> Box:
+        """Return the bar as a part: its whole length, centred on the x axis."""
+        length, width = self.handle_length, self.handle_width
+        return Box((length / 2, 0.0, 0.0), (length, width, width))
+
+    def bar_scad(self) -> list[str]:
+        """Return the OpenSCAD lines of the bar (inside the model's ``union()``), in the
+        variables named after :attr:`BAR`."""
+        length, width = self.BAR
+        return [f"    translate([0, -{width} / 2, -{width} / 2])",
+                f"        cube([{length}, {width}, {width}]);"]
+
+    def load_model(self, force_n: float, point: tuple | None, grasp: tuple | None, *,
+                   strength_pa: float = PLA_STRENGTH,
+                   safety_factor: float = MIN_SAFETY_FACTOR) -> dict[str, Any]:
+        """Return the cantilever model of the square bar from the grasp to the contact
+        (:func:`square_handle_load`; the head is shorter and no thinner, so the bar
+        governs)."""
+        return square_handle_load(force_n, point, grasp or self.grip_point,
+                                  self.handle_width, strength_pa, safety_factor)
+
+
 # ------------------------------------------------------------------ beam formulas
 def cantilever_stress(force_n: float, lever_arm_m: float, width_m: float,
                       height_m: float) -> float:

@@ -27,15 +27,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from itertools import combinations
-from typing import Any
 
-from creative_py.kinds.parts import (MIN_SAFETY_FACTOR, PLA_STRENGTH, Box, Fact, Hull,
-                                     KindSpec, Part, check_mass, check_name,
-                                     check_positive, square_handle_load)
+from creative_py.kinds.parts import (Box, Fact, Hull, Part, SquareBarTool, check_mass,
+                                     check_name, check_positive)
 
 
 @dataclass(frozen=True)
-class PusherSpec(KindSpec):
+class PusherSpec(SquareBarTool):
     """A pusher: a square pole with a walled head hung below its far end.
 
     Parameters
@@ -65,7 +63,7 @@ class PusherSpec(KindSpec):
         Mass in kg; None means PLA density times volume (every created tool).
     """
 
-    HANDLING = "handle"
+    BAR = ("pole_length", "pole_width")
     FACT_FIELDS = {"pole_length_m": "pole_length", "pole_width_m": "pole_width",
                    "plate_width_m": "plate_width", "wing_length_m": "wing_length",
                    "wing_spread_m": "wing_spread"}
@@ -112,7 +110,7 @@ class PusherSpec(KindSpec):
         y0, y1 = self.drop, self.drop + H
         half = self.plate_width / 2
         parts: list[Part] = [
-            Box((L / 2, 0.0, 0.0), (L, w, w)),
+            self.bar(),
             Box((L - w / 2, (y0 + w / 2) / 2, 0.0), (w, y0 + w / 2, w)),
             Box((L - t / 2, (y0 + y1) / 2, 0.0), (t, H, self.plate_width)),
         ]
@@ -146,28 +144,7 @@ class PusherSpec(KindSpec):
             prisms.append((y0, y1, _convex([(x, z) for x, y, z in part.vertices if y == y0])))
         return prisms
 
-    # ---------------------------------------- how the simulator holds it ("handle")
-    @property
-    def handle_length(self) -> float:
-        """Return the length of what the simulator holds as a handle: the pole, m."""
-        return self.pole_length
-
-    @property
-    def handle_width(self) -> float:
-        """Return the side of the held pole's section, m."""
-        return self.pole_width
-
-    @property
-    def grip_point(self) -> tuple[float, float, float]:
-        """Return the grip point in the tool frame, metres."""
-        return (self.grip_offset, 0.0, 0.0)
-
-    roll_side = 1.0
-    """Roll is measured from +y, the side the head hangs on."""
-
-    has_head = True
-    """The head hangs below the pole's end."""
-
+    # -------------------- how the simulator holds it (by the pole: SquareBarTool)
     @property
     def head_width(self) -> float:
         """Return the head's extent back from the pole's end along the pole, metres
@@ -230,8 +207,7 @@ class PusherSpec(KindSpec):
             f"wall = {mm(self.wall)};  // the walls' thickness [mm]",
             "",
             "union() {",
-            "    translate([0, -pole_width / 2, -pole_width / 2])",
-            "        cube([pole_length, pole_width, pole_width]);",
+            *self.bar_scad(),
             "    translate([pole_length - pole_width, 0, -pole_width / 2])",
             "        cube([pole_width, drop + pole_width / 2, pole_width]);",
             "    translate([pole_length - wall, drop, -plate_width / 2])",
@@ -253,15 +229,6 @@ class PusherSpec(KindSpec):
     def caption_extra(self) -> str:
         """Return the head's mouth in words."""
         return f", head mouth {self.mouth_width() * 1e3:.0f} mm"
-
-    # ---------------------------------------------------------------- strength
-    def load_model(self, force_n: float, point: tuple | None, grasp: tuple | None, *,
-                   strength_pa: float = PLA_STRENGTH,
-                   safety_factor: float = MIN_SAFETY_FACTOR) -> dict[str, Any]:
-        """Return the cantilever model of the square pole from the grasp to the
-        contact (:func:`creative_py.kinds.parts.square_handle_load`)."""
-        return square_handle_load(force_n, point, grasp or self.grip_point,
-                                  self.pole_width, strength_pa, safety_factor)
 
 
 CLASSES = {"pusher": PusherSpec}

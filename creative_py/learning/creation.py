@@ -25,6 +25,8 @@ none succeeds, or, with ``demonstrate``, afterwards as a demonstration of Algori
     failure -> tried += [Instance]; next instance, next property, until none is left
     blocked, unreachable, invalid -> the same tool once more (the motion, not the design,
     failed), then as a failure
+    no pose (the learned model's pose cannot hold for it) -> no trial (``no_pose``),
+    as a failure
 
 Which property is generalised first and which value is tried first is Prolog's choice
 (prolog/creation.pl explains the order).
@@ -38,7 +40,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Callable, Optional
 
-from creative_py.bridge import Compound, Engine, Term, readable
+from creative_py.bridge import Compound, Engine, Term, lettered, readable
 from creative_py.learning.trials import TaskState, TrialRecord, TrialRunner, term_text
 from creative_py.records.summary import print_summary
 from creative_py.report.contents import readable_term
@@ -49,6 +51,73 @@ log = logging.getLogger(__name__)
 NOT_AS_PLANNED = ("blocked", "unreachable", "invalid")
 """Outcomes of a trial whose motion did not happen as planned: a creation trial that
 ends so is run once more (:meth:`ToolCreator._once_more`)."""
+
+
+def exhausted_words(skipped: Term) -> str:
+    """Return why no candidate of ``creation:next_tool/6``'s ``exhausted(Skipped)`` was
+    made, in words: the candidates with the same reason together, each reason once.
+
+    ``Skipped`` lists ``Instance-Reason``: ``tried`` (made before) or
+    ``infeasible(Conflict)``, the size model's minimal conflict of spec literals and
+    task facts. Each candidate's tool is ``A``; the facts the size model reads are
+    lengths and positions, so their numbers (metres) are written in millimetres::
+
+        plate_width(A, wide) and plate_width(A, narrow) cannot be sized, as
+        wing_spread(A, none) and size(cubes, 293.3 mm, 401.4 mm, 30 mm) cannot hold
+        together; wing_spread(A, flared) was made before
+    """
+    if not skipped:
+        return "no candidate"
+    reasons: dict[str, list[str]] = {}
+    for item in skipped:
+        if not (isinstance(item, Compound) and item.name == "-" and len(item.args) == 2):
+            reasons.setdefault(readable(item), [])
+            continue
+        instance, reason = lettered(item).args
+        if reason == "tried":
+            why = "made before"
+        elif (isinstance(reason, Compound) and reason.name == "infeasible"
+              and isinstance(reason.args[0], list)):
+            conflict = [_words(c) for c in reason.args[0]]
+            why = ("cannot be sized, as " + _and(conflict) + " cannot hold together"
+                   if conflict else "cannot be sized in this task")
+        else:
+            why = "skipped: " + _words(reason)
+        reasons.setdefault(why, []).append(_words(instance))
+    out = []
+    for why, names in reasons.items():
+        if why == "made before":
+            why = ("was " if len(names) == 1 else "were ") + why
+        out.append(f"{_and(names)} {why}" if names else why)
+    return "; ".join(out)
+
+
+def _words(term: Term) -> str:
+    """A lettered literal for people: its floats (metres) in mm."""
+    if isinstance(term, float):
+        return f"{term * 1000:.1f}".rstrip("0").rstrip(".") + " mm"
+    if isinstance(term, Compound):
+        return f"{term.name}({', '.join(_words(a) for a in term.args)})"
+    if isinstance(term, list):
+        return "[" + ", ".join(_words(a) for a in term) + "]"
+    return readable(term)
+
+
+def _and(items: list[str]) -> str:
+    """``a``, ``a and b``, ``a, b and c``."""
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def no_pose_words(plan: Term) -> str:
+    """Return why ``plan_use`` gave a created tool no pose, in words: its answer
+    ``no_experiment(infeasible_pose(Conflict))`` (the learned model's spatial literals
+    that cannot hold together for the tool in the task) or another reason term."""
+    reason = plan.args[0] if isinstance(plan, Compound) and plan.args else plan
+    if (isinstance(reason, Compound) and reason.name == "infeasible_pose"
+            and isinstance(reason.args[0], list) and reason.args[0]):
+        return (f"no pose of the learned model holds for it: "
+                f"{_and([_words(c) for c in lettered(reason.args[0])])} cannot hold together")
+    return f"the learned model gives it no pose: {readable(plan)}"
 
 
 @dataclass
@@ -71,6 +140,9 @@ class CreatedTool:
     union's volume check; totals."""
     strength: dict[str, Any] = field(default_factory=dict)
     """The strength check of its successful trial (:mod:`creative_py.fabrication.strength`)."""
+    reason: str = ""
+    """Why it was not tried (its ``trial_outcome`` ``no_pose``: the learned model's pose
+    cannot hold for it in the task), in words; empty when it was."""
 
 
 @dataclass
@@ -85,6 +157,10 @@ class CreateResult:
     trials: list[TrialRecord]
     wall_time_s: float
     exhausted: Optional[str] = None
+    """Why no literal was left to generalise: ``creation:next_tool/6``'s skipped
+    candidates as Prolog text (:func:`~creative_py.bridge.readable`)."""
+    exhausted_words: Optional[str] = None
+    """The same in words and millimetres (:func:`exhausted_words`), for people."""
     replaced: Optional[Term] = None
     instance: Optional[Term] = None
     predicted: Optional[dict[str, Any]] = None
@@ -176,12 +252,12 @@ class ToolCreator:
         solved_by = "catalogue" if by_catalogue else None
         created: list[CreatedTool] = []
         tried: list[Term] = []
-        exhausted = None
+        exhausted = words = None
         while len(created) < self.max_tools:
             reply = self.engine.next_tool(self.case, vs, tried, runner.task_facts(task))
             if reply.name == "exhausted":
-                exhausted = readable(reply.args[0])
-                runner.progress(f"no literal left to generalise: {exhausted}")
+                exhausted, words = readable(reply.args[0]), exhausted_words(reply.args[0])
+                runner.progress(f"no literal left to generalise: {words}")
                 break
             replaced, _general, instance, _struct, _dims = reply.args
             tried.append(instance)
@@ -196,14 +272,16 @@ class ToolCreator:
                                     solved_by=solved_by or "created")
         return CreateResult(variant, not by_catalogue, created, None, vs,
                             runner.trials[start:], time.perf_counter() - t0, exhausted,
-                            predicted=predicted, catalogue=catalogue, solved_by=solved_by)
+                            exhausted_words=words, predicted=predicted, catalogue=catalogue,
+                            solved_by=solved_by)
 
     def _make_and_try(self, reply: Compound, created: list[CreatedTool], n: int,
                       vs: Term, task: TaskState) -> tuple[Any, CreatedTool, int]:
         """Manufacture the candidate ``reply`` (``create/5`` of ``next_tool``), try it in
-        the physics (once more when the motion, not the design, failed) and, after a
-        success, check it against the load the physics measured; return its spec, its
-        record (appended to ``created``) and the creation trials so far."""
+        the physics (once more when the motion, not the design, failed; not at all when
+        the learned pose cannot hold for it: ``no_pose``) and, after a success, check it
+        against the load the physics measured; return its spec, its record (appended to
+        ``created``) and the creation trials so far."""
         runner = self.runner
         replaced, general, instance, struct, dims = reply.args
         spec, values, files, mass, printed = self._manufacture(len(created) + 1, struct, dims)
@@ -215,7 +293,14 @@ class ToolCreator:
         runner.progress(f"created {ct.name}: " + " -> ".join(
             readable_term(x) for x in (ct.replaced, ct.general, ct.instance))
             + f"; {dims_text(ct.dims)}")
-        rec, n = self._once_more(lambda k: self._trial_with(spec, k, vs, task), n, ct.name)
+        use = self._use_of(spec, vs, task)
+        if use.name != "exploit":
+            # Sized, but the learned model's pose cannot hold for it here: no trial; the
+            # next candidate is made (its instance is in ``tried``).
+            ct.trial_outcome, ct.reason = "no_pose", no_pose_words(use)
+            runner.progress(f"{ct.name}: not tried: {ct.reason}")
+            return spec, ct, n
+        rec, n = self._once_more(lambda k: self._trial_with(use, k, vs, task), n, ct.name)
         ct.trial_outcome = rec.outcome
         if rec.outcome == "success":
             # The physics measured the load; a tool too weak for it is thickened (tried
@@ -356,9 +441,15 @@ class ToolCreator:
                 f"{ct.name}: safety factor {check.safety_factor:.2f} < "
                 f"{check.required_safety_factor:g} under {check.force_n:.2f} N; thickened "
                 f"into {thick.name} {ct2.dims}")
-            rec, n = self._once_more(lambda k: self._trial_with(thick, k, vs, task), n)
-            ct2.trial_outcome = rec.outcome
+            use = self._use_of(thick, vs, task)
             spec, ct = thick, ct2
+            if use.name != "exploit":
+                ct2.trial_outcome, ct2.reason = "no_pose", no_pose_words(use)
+                check = replace(check, verdict="rejected",
+                                reason=f"{thick.name} was not tried: {ct2.reason}")
+                break
+            rec, n = self._once_more(lambda k: self._trial_with(use, k, vs, task), n)
+            ct2.trial_outcome = rec.outcome
             check = check_strength(thick, rec.tool_load, trial=rec.trial,
                                    safety_factor=sf, thickened_from=check.tool)
             if rec.outcome != "success":
@@ -449,19 +540,22 @@ class ToolCreator:
         self.runner.world = self.runner.world.with_tool(spec, files.get("urdf"))
         return spec, values, files, mass, printed
 
-    def _trial_with(self, spec: Any, n: int, vs: Term, task: TaskState) -> TrialRecord:
-        """Test a created tool at the pose the learned model asks for.
+    def _use_of(self, spec: Any, vs: Term, task: TaskState) -> Compound:
+        """Return the learned model's plan for a created tool in ``task``: ``exploit/4``
+        (its pose) or ``no_experiment(Why)`` when the pose cannot hold for it
+        (``plan_use`` with the tool fixed)."""
+        return self.engine.plan_use(self.case, vs, self.runner.task_facts(task),
+                                    [Compound("tool", (spec.name,))])
+
+    def _trial_with(self, use: Compound, n: int, vs: Term, task: TaskState) -> TrialRecord:
+        """Test a created tool at the pose the learned model asks for (``use``, an
+        ``exploit/4`` plan of :meth:`_use_of`) as creation trial ``n``.
 
         The outcome is not added to the tool-use version space: the created tool differs
         from the learned model in the replaced literal by design, and the harder task is
         a different concept. A success gives the harder task's model instead
         (:func:`created_models` in ``prolog/model_file.pl``).
         """
-        use = self.engine.plan_use(self.case, vs, self.runner.task_facts(task),
-                                   [Compound("tool", (spec.name,))])
-        if use.name != "exploit":
-            raise RuntimeError(f"{self.case}: no pose for the created tool {spec.name}: "
-                               f"{term_text(use)}")
         rec, _ = self.runner.run(use, "create", n, vs, task, 0.0, label=False)
         return rec
 
@@ -470,8 +564,10 @@ class ToolCreator:
         out = []
         for i in range(1, self.eval_trials + 1):
             task.next_location()
-            use = self.engine.plan_use(self.case, vs, self.runner.task_facts(task),
-                                       [Compound("tool", (spec.name,))])
+            use = self._use_of(spec, vs, task)
+            if use.name != "exploit":  # no pose at this location: as the learned model's
+                out.append("no_plan")  # evaluation records it (phases._evaluate)
+                continue
             rec, _ = self.runner.run(use, "eval", i, vs, task, 0.0, label=False)
             out.append(rec.outcome)
         return out

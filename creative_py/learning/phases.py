@@ -159,6 +159,7 @@ def creation_summary(res: CreateResult, run_dir: Path,
         success=res.success.name if res.success else None,
         eval=res.success.eval_outcomes if res.success else [],
         exhausted=res.exhausted,
+        exhausted_words=res.exhausted_words,
         # What solved the harder task: learned (TC trial 1), catalogue (an available
         # object the generalised model admits, tried before manufacturing), created or
         # None; the catalogued objects tried (or skipped), best first, with why.
@@ -183,7 +184,8 @@ def _created_tool(c: Any, run_dir: Path) -> CreatedToolSummary:
                if isinstance(c.files, dict) else c.files),
         trial_outcome=c.trial_outcome, eval_outcomes=list(c.eval_outcomes),
         mass_kg=c.mass_kg, print=PrintSummary.from_dict(c.print, f"{where}.print"),
-        strength=StrengthSummary.from_dict(c.strength, f"{where}.strength"))
+        strength=StrengthSummary.from_dict(c.strength, f"{where}.strength"),
+        reason=c.reason or None)
 
 
 def _relative(run_dir: Path, name: Any) -> Any:

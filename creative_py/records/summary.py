@@ -443,10 +443,13 @@ class CreatedToolSummary(Part):
     files: Optional[dict[str, Any]] = None
     """Its files by kind (``urdf``, ``stl``, ...), relative to the run folder."""
     trial_outcome: Optional[str] = None
+    """``no_pose`` when it was not tried (``reason`` says why)."""
     eval_outcomes: list[str] = field(default_factory=list)
     mass_kg: Optional[float] = None
     print: Optional[PrintSummary] = None
     strength: Optional[StrengthSummary] = None
+    reason: Optional[str] = _omit()
+    """Why it was not tried, in words (absent when it was)."""
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -468,6 +471,9 @@ class CreateSummary(Part):
     eval: list[str] = field(default_factory=list)
     """The outcomes of that tool's evaluation."""
     exhausted: Optional[str] = None
+    """Why no literal was left to generalise, as Prolog text (``Instance-Reason``)."""
+    exhausted_words: Optional[str] = _omit()
+    """The same in words, lengths in millimetres (absent from older summaries)."""
     solved_by: Optional[str] = None
     """``learned`` (TC trial 1), ``catalogue``, ``created`` or None."""
     catalogue: list[CatalogueEntry] = field(default_factory=list)

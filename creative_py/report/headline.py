@@ -193,8 +193,9 @@ def _creation_line(create: CreateSummary) -> str:
     elif solved:
         bits.append(f"solved by {solved}")
     elif create.needed is not False:
-        bits.append("not solved" + (f": no literal left to generalise ({create.exhausted})"
-                                    if create.exhausted else ""))
+        why = create.exhausted_words or create.exhausted  # an older summary: the term
+        bits.append("not solved" + (f": no literal left to generalise ({why})"
+                                    if why else ""))
     done, total = _successes(create.eval)
     if total:
         bits.append(f"the created tool's evaluation: {done} of {total} trials succeeded")

@@ -309,7 +309,9 @@ def _tools_section(run: RunContents) -> str:
             bits.append("catalogued objects considered first: " + ", ".join(
                 f"{escape(str(c.tool))} ({escape(str(c.outcome))})"
                 for c in create.catalogue))
-        if create.exhausted:
+        if create.exhausted_words:
+            bits.append(f"no literal left to generalise: {escape(create.exhausted_words)}")
+        elif create.exhausted:  # an older summary: the term only
             bits.append("no literal left to generalise (what was tried of each: "
                         f"<code>{escape(create.exhausted)}</code>)")
         intro = f"<p>{'; '.join(bits)}.</p>"
@@ -330,7 +332,8 @@ def _tool_card(root: Path, tool: ToolEntry) -> str:
         head.append("<p>" + " &rarr; ".join(
             f"<code>{escape(readable_term(_or(x, '')))}</code>"
             for x in (c.replaced, c.general, c.instance)) + "</p>")
-        outcomes = [f"creation trial {_outcome(_or(c.trial_outcome, '?'))}"]
+        outcomes = [f"creation trial {_outcome(_or(c.trial_outcome, '?'))}"
+                    + (f" ({escape(c.reason)})" if c.reason else "")]
         if c.eval_outcomes:
             outcomes.append("evaluation " + " ".join(_outcome(o) for o in c.eval_outcomes))
         head.append(f"<p>{'; '.join(outcomes)}</p>")

@@ -9,6 +9,7 @@ import sys
 
 import pytest
 
+from creative_py.backends.ros.profile import load_profile as load_ros_profile
 from creative_py.robots import ROBOTS_ROOT, load_profile, profile_names
 from creative_py.world_files import WorldFileError
 
@@ -46,24 +47,42 @@ def _write(tmp_path, text, name="arm.toml"):
     return path
 
 
-@pytest.mark.parametrize("old,new,message", [
-    ('ee_link = "panda_hand_tcp"', 'ee_lnk = "panda_hand_tcp"', "field 'kinematics.ee_link': missing (is 'ee_lnk' a typo for it?)"),
-    ("home = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]", "home = [0.0, -0.785]", "field 'kinematics.home': must be a list of 7 numbers"),
-    ('approach_axis = "+z"', 'approach_axis = "z"', "field 'kinematics.approach_axis': must be one of"),
-    ("gear_ratio = -1.0", "gear_ratio = 0", "field 'hand.gear_ratio': must be a non-zero number"),
-    ("open = [0.04, 0.04]", "open = [0.04]", "field 'hand.open': must be a list of 2 numbers"),
-    ('urdf = "example-robot-data:panda_description/urdf/panda.urdf"', 'urdf = "example-robot-data:nope.urdf"', "field 'urdf': no URDF file"),
-    ('urdf = "example-robot-data:panda_description/urdf/panda.urdf"', 'urdf = "missing/arm.urdf"', "field 'urdf': no URDF file"),
-    ('mode = "constraint"', 'mode = "fingers"', "field 'grasp.mode': must be one of constraint"),
-    ("restarts = 40", "restarts = -1", "field 'ik.restarts': must be >= 0"),
-    ("[idle]", "[idle]\npanda_joint1 = 0.0", "field 'idle': names an arm joint: 'panda_joint1'"),
-    ("position = [0.0, 0.0, 0.0]", "position = [0.0, 0.0, 0.0]\nyaw = 1", "field 'base.yaw': unknown field"),
-])
-def test_a_bad_field_is_one_line_naming_file_and_field(tmp_path, old, new, message):
-    assert old in PANDA
-    path = _write(tmp_path, PANDA.replace(old, new, 1))
+BAD = [
+    # The one reader (creative_py/robots.py): the arm's model, kinematics, hand, grasp, IK.
+    (PANDA, load_profile, 'ee_link = "panda_hand_tcp"', 'ee_lnk = "panda_hand_tcp"', "field 'kinematics.ee_link': missing (is 'ee_lnk' a typo for it?)"),
+    (PANDA, load_profile, "home = [0.0, -0.785, 0.0, -2.356, 0.0, 1.571, 0.785]", "home = [0.0, -0.785]", "field 'kinematics.home': must be a list of 7 numbers"),
+    (PANDA, load_profile, 'approach_axis = "+z"', 'approach_axis = "z"', "field 'kinematics.approach_axis': must be one of"),
+    (PANDA, load_profile, "gear_ratio = -1.0", "gear_ratio = 0", "field 'hand.gear_ratio': must be a non-zero number"),
+    (PANDA, load_profile, "open = [0.04, 0.04]", "open = [0.04]", "field 'hand.open': must be a list of 2 numbers"),
+    (PANDA, load_profile, 'urdf = "example-robot-data:panda_description/urdf/panda.urdf"', 'urdf = "example-robot-data:nope.urdf"', "field 'urdf': no URDF file"),
+    (PANDA, load_profile, 'urdf = "example-robot-data:panda_description/urdf/panda.urdf"', 'urdf = "missing/arm.urdf"', "field 'urdf': no URDF file"),
+    (PANDA, load_profile, 'mode = "constraint"', 'mode = "fingers"', "field 'grasp.mode': must be one of constraint"),
+    (PANDA, load_profile, "restarts = 40", "restarts = -1", "field 'ik.restarts': must be >= 0"),
+    (PANDA, load_profile, "[idle]", "[idle]\npanda_joint1 = 0.0", "field 'idle': names an arm joint: 'panda_joint1'"),
+    (PANDA, load_profile, "position = [0.0, 0.0, 0.0]", "position = [0.0, 0.0, 0.0]\nyaw = 1", "field 'base.yaw': unknown field"),
+    # The same reader through the ROS backend's (creative_py/backends/ros/profile.py):
+    # the ROS 2 interface's names, rates and limits.
+    (BAXTER, load_ros_profile, "rate_hz = 50.0", "rate_hz = 0.0", "field 'joint_states.rate_hz': must be >= 1.0"),
+    (BAXTER, load_ros_profile, 'topic = "mocap/{name}/pose"', 'topic = "mocap/pose"', "field 'objects.topic': must contain {name}"),
+    (BAXTER, load_ros_profile, "closed_position = 0.0", "closed_position = 0.05", "field 'gripper.closed_position': must be below"),
+    (BAXTER, load_ros_profile, "max_joint_speed = 0.8      # rad/s, the fastest joint of any", "max_speed = 1\nmax_joint_speed = 0.8 #", "field 'limits.max_speed': unknown field"),
+    (BAXTER, load_ros_profile, 'follow_joint_trajectory"\njoints = ["right_s0",', 'follow_joint_trajectory"\njoints = ["right_s0", "right_s0",', "field 'arm.joints': must be a list of distinct"),
+    (BAXTER, load_ros_profile, 'follow_joint_trajectory"\njoints = ["right_s0",', 'follow_joint_trajectory"\njoints = ["right_sX",', "field 'arm.joints': must be the joints of kinematics.joints"),
+    (BAXTER, load_ros_profile, "workspace_max = [1.4, 0.3, 0.6]", "workspace_max = [1.4, 0.3, -0.3]", "field 'limits.workspace_max': must exceed"),
+    (BAXTER, load_ros_profile, 'action = "right_arm_controller/follow_joint_trajectory"', 'action = "a b"', "field 'arm.action': must be a ROS name"),
+]
+"""The bad profiles: (the shipped profile's text, the reader, the text replaced, what
+replaces it, the message)."""
+
+
+@pytest.mark.parametrize("shipped, read, old, new, message", BAD,
+                         ids=[m.split("'")[1] for *_, m in BAD])
+def test_a_bad_field_is_one_line_naming_file_and_field(tmp_path, shipped, read, old, new,
+                                                      message):
+    assert old in shipped
+    path = _write(tmp_path, shipped.replace(old, new, 1))
     with pytest.raises(WorldFileError) as info:
-        load_profile(path)
+        read(path)
     text = str(info.value)
     assert text.startswith(f"{path}: ") and message in text and "\n" not in text
 

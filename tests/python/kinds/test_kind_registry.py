@@ -170,3 +170,28 @@ def test_every_kind_s_volume_is_its_solid_s(name):
     for spec in specs:
         assert spec.volume() == pytest.approx(tool_mesh(spec).volume, rel=STL_VOLUME_RTOL), \
             spec.name
+
+
+@pytest.mark.parametrize("data, bar", [
+    ({"kind": "paddle", "name": "p1", "shaft_length": 0.3, "shaft_width": 0.01,
+      "blade_width": 0.05, "blade_length": 0.02, "grip_offset": 0.05},
+     ("shaft_length", "shaft_width")),
+    ({"kind": "pusher", "name": "p2", "pole_length": 0.25, "pole_width": 0.014,
+      "plate_width": 0.22, "grip_offset": 0.05}, ("pole_length", "pole_width"))])
+def test_a_square_bar_tool_is_held_and_loaded_by_its_bar(data, bar):
+    """The paddle's shaft and the pusher's pole are one helper's square bar
+    (``parts.SquareBarTool``): its handle, grip, first part, OpenSCAD lines and load."""
+    from creative_py.kinds.parts import Box, SquareBarTool, square_handle_load
+
+    spec = spec_from_dict(data)
+    length, width = data[bar[0]], data[bar[1]]
+    assert isinstance(spec, SquareBarTool) and spec.HANDLING == "handle"
+    assert (spec.handle_length, spec.handle_width, spec.grip_point) == (
+        length, width, (0.05, 0.0, 0.0))
+    assert spec.parts()[0] == Box((length / 2, 0.0, 0.0), (length, width, width))
+    source = spec.scad(lambda m: f"{m * 1000:g}", 32)[2]
+    assert source[source.index("union() {") + 1:][:2] == [
+        f"    translate([0, -{bar[1]} / 2, -{bar[1]} / 2])",
+        f"        cube([{bar[0]}, {bar[1]}, {bar[1]}]);"]
+    assert spec.load_model(2.0, (0.2, 0.0, 0.0), None) == square_handle_load(
+        2.0, (0.2, 0.0, 0.0), (0.05, 0.0, 0.0), width)

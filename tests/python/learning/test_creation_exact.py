@@ -29,7 +29,7 @@ import pytest
 
 from creative_py.bridge import Compound, Engine
 from creative_py.case import get_case
-from creative_py.learning.creation import CreateResult, ToolCreator
+from creative_py.learning.creation import CreateResult, ToolCreator, exhausted_words
 from creative_py.learning.phases import creation_summary
 from creative_py.records.summary import print_summary
 from creative_py.learning.trials import TrialRunner
@@ -226,12 +226,109 @@ def test_a_tool_that_cannot_be_made_strong_enough_is_rejected(engine, world, vs,
     # Prolog text, the engine's variables lettered: never the Python repr of the terms.
     assert exhausted.startswith("[handle_length(A,long)-tried,handle_length(B,short)-"
                                 "infeasible([handle_length(B,short),tube_length_m(tube1,")
+    # For people: in words, the candidates with one reason together, lengths in mm.
+    words = ("handle_length(A, long) was made before; handle_length(A, short) cannot be "
+             "sized, as handle_length(A, short) and tube_length_m(tube1, 450 mm) cannot "
+             "hold together; stick(A), handle_width(A, thick), hook_angle(A, acute) and "
+             "hook_angle(A, obtuse) cannot be sized, as handle_length(A, medium) and "
+             "tube_length_m(tube1, 450 mm) cannot hold together")
+    assert (res.exhausted, res.exhausted_words) == (exhausted, words)
     assert (res.success, res.replaced, res.instance, res.solved_by) == (None, None, None, None)
     assert lines == [PREDICTED, MAKE_1, CREATED_1, _tc(1, "hook_new1"),
                      "hook_new1: rejected: its handle would need to be at least 39.1 mm "
                      "wide for a safety factor of 1000 under 0.91 N at 549 mm, and the size "
                      "model cannot give that: min_handle_width_m(0.0391) cannot hold "
-                     "together", f"no literal left to generalise: {exhausted}"]
+                     "together", f"no literal left to generalise: {words}"]
+
+
+def test_no_literal_left_in_words_and_millimetres(engine):
+    """CleanTable's exhausted answer (RoboToolBench world 0, seed 0): the floats the
+    perception gave (metres, 16 digits) read as millimetres, each conflict once."""
+    skipped = engine.parse(
+        "[plate_width(_G0,wide)-infeasible([wing_spread(_G0,none),size(cubes,"
+        "0.29331216096878054,0.4013691383600235,0.03)]),plate_width(_G1,narrow)-"
+        "infeasible([wing_spread(_G1,none),size(cubes,0.29331216096878054,"
+        "0.4013691383600235,0.03)]),wing_spread(_G2,flared)-tried,"
+        "wing_spread(_G3,none)-tried,pole_length(_G4,long)-odd(0.5)]")
+    assert exhausted_words(skipped) == (
+        "plate_width(A, wide) and plate_width(A, narrow) cannot be sized, as "
+        "wing_spread(A, none) and size(cubes, 293.3 mm, 401.4 mm, 30 mm) cannot hold "
+        "together; wing_spread(A, flared) and wing_spread(A, none) were made before; "
+        "pole_length(A, long) skipped: odd(500 mm)")
+    assert exhausted_words(engine.parse("[hook(_G0)-infeasible([])]")) == (
+        "hook(A) cannot be sized in this task")
+    assert exhausted_words([]) == "no candidate"
+
+
+class NoPoseFor:
+    """The real engine, but ``plan_use`` with the tool fixed to ``tool`` answers as
+    Prolog did for DislodgeCube's first created tool (a stick sized 18 mm wide, whose
+    learned pose could not hold: ``no_experiment(infeasible_pose(...))``)."""
+
+    def __init__(self, engine, tool, after=0):
+        self.engine, self.tool, self.after = engine, tool, after  # real answers first
+
+    def __getattr__(self, name):
+        return getattr(self.engine, name)
+
+    def plan_use(self, case, vs, facts, options=()):
+        if [str(o) for o in options] == [f"tool({self.tool})"]:
+            self.after -= 1
+        if [str(o) for o in options] == [f"tool({self.tool})"] and self.after < 0:
+            return self.engine.parse(f"no_experiment(infeasible_pose([behind({self.tool},"
+                                     f"cube1),in_tube({self.tool},tube1)]))")
+        return self.engine.plan_use(case, vs, facts, options)
+
+
+NO_POSE = ("no pose of the learned model holds for it: behind({0}, cube1) and "
+           "in_tube({0}, tube1) cannot hold together")
+LEFT = ("handle_length(A, long) was made before; handle_length(A, short) cannot be sized, "
+        "as handle_length(A, short) and tube_length_m(tube1, 450 mm) cannot hold together; "
+        "stick(A), handle_width(A, thick), hook_angle(A, acute) and hook_angle(A, obtuse) "
+        "cannot be sized, as handle_length(A, medium) and tube_length_m(tube1, 450 mm) "
+        "cannot hold together")
+
+
+def test_a_created_tool_without_a_pose_is_not_tried_and_the_next_is_made(engine, world, vs):
+    """No traceback (it was RuntimeError 'no pose for the created tool'): the tool is
+    recorded ``no_pose`` with why, no trial is run, and creation goes on to the next
+    candidate (here none is left)."""
+    runner, lines, _ = _runner(engine, world, "hook_s0")
+    creator = ToolCreator(runner)
+    creator.engine = NoPoseFor(engine, "hook_new1")
+    res = creator.create(vs, "long_tube")
+    why = NO_POSE.format("hook_new1")
+    assert [(c.name, c.trial_outcome, c.reason) for c in res.created] == [
+        ("hook_new1", "no_pose", why)]
+    assert (res.success, res.solved_by, res.trials, runner.calls) == (None, None, [], [])
+    assert res.exhausted_words == LEFT
+    assert lines == [PREDICTED, MAKE_1, CREATED_1, f"hook_new1: not tried: {why}",
+                     f"no literal left to generalise: {LEFT}"]
+    tool = creation_summary(res, Path(".")).to_dict()["created_tools"][0]
+    assert (tool["trial_outcome"], tool["reason"]) == ("no_pose", why)
+
+
+def test_an_evaluation_trial_without_a_pose_is_no_plan(engine, world, vs):
+    runner, lines, records = _runner(engine, world, "hook_s0")
+    creator = ToolCreator(runner, eval_trials=5)
+    creator.engine = NoPoseFor(engine, "hook_new1", after=1)  # its creation trial runs
+    res = creator.create(vs, "long_tube")
+    assert (res.success.name, res.success.eval_outcomes) == ("hook_new1", ["no_plan"] * 5)
+    assert runner.calls == [("create", 1, 0.0, False)]
+
+
+def test_a_thickened_tool_without_a_pose_is_rejected(engine, world, vs):
+    runner, lines, records = _runner(engine, world, "hook_sf15_s0")
+    creator = ToolCreator(runner, safety_factor=15.0)
+    creator.engine = NoPoseFor(engine, "hook_new2")
+    res = creator.create(vs, "long_tube")
+    why = NO_POSE.format("hook_new2")
+    assert [(c.name, c.trial_outcome, c.reason) for c in res.created] == [
+        ("hook_new1", "success", ""), ("hook_new2", "no_pose", why)]
+    assert res.created[1].strength["verdict"] == "rejected"
+    assert (res.success, res.trials) == (None, records[LEARNED:LEARNED + 1])
+    assert lines[-2:] == [f"hook_new2: rejected: hook_new2 was not tried: {why}",
+                          f"no literal left to generalise: {LEFT}"]
 
 
 def test_the_kind_of_a_new_tool_is_its_class_literal(engine, world):

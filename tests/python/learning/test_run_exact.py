@@ -389,6 +389,11 @@ def _created(run: Path, name: str, print_: dict) -> CreatedTool:
                        trial_outcome="failure", print=print_)
 
 
+def _tried(tool: CreatedTool) -> dict:
+    """A tried tool's summary entry: no ``reason`` (only a tool not tried has one)."""
+    return {k: v for k, v in asdict(tool).items() if k != "reason"}
+
+
 def test_creation_summary_of_a_catalogue_object_that_solved_the_task(tmp_path):
     """The summary's sums and counts: trials of the create phase only, the failed ones,
     the catalogued objects tried and the one that succeeded."""
@@ -397,7 +402,8 @@ def test_creation_summary_of_a_catalogue_object_that_solved_the_task(tmp_path):
                                                     {"slice_wall_time_s": 0.2212}, {}],
                                          "wall_time_s": 1.004})
     b = _created(tmp_path, "hook_new2", {"pieces": [{"slice_wall_time_s": 1.0}]})
-    c = replace(_created(tmp_path, "hook_new3", {}), files=None)
+    c = replace(_created(tmp_path, "hook_new3", {}), files=None, trial_outcome="no_pose",
+                reason="no pose of the learned model holds for it")
     catalogue = [{"tool": "hook_a4", "trial": None, "outcome": "predicted_unreachable"},
                  {"tool": "hook_b4", "trial": 11, "outcome": "failure"},
                  {"tool": "stick_b5", "trial": 12, "outcome": "success"},
@@ -414,8 +420,8 @@ def test_creation_summary_of_a_catalogue_object_that_solved_the_task(tmp_path):
         "variant": "long_tube", "needed": True, "predicted": {"feasible": None},
         "predicted_failure_skipped": False, "trials": 1, "failed_trials": 0,
         "created_tools": [
-            {**asdict(a), "files": {"stl": "tools/hook_new1.stl", "gone": None}},
-            {**asdict(b), "files": {"stl": "tools/hook_new2.stl", "gone": None}},
+            {**_tried(a), "files": {"stl": "tools/hook_new1.stl", "gone": None}},
+            {**_tried(b), "files": {"stl": "tools/hook_new2.stl", "gone": None}},
             asdict(c)],
         "slice_wall_time_s": 1.34, "print_wall_time_s": 1.0,
         "success": None, "eval": [], "exhausted": "no tool left", "solved_by": "catalogue",

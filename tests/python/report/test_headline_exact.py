@@ -113,6 +113,10 @@ def test_the_short_forms_when_keys_are_missing():
     ({"exhausted": "no candidate left", "predicted": {"feasible": True, "tool": "t"}},
      "Tool creation on the harder task ?: not solved: no literal left to generalise "
      "(no candidate left).", None),
+    ({"exhausted": "[a(A)-infeasible([b(0.25)])]",
+      "exhausted_words": "a(A) cannot be sized, as b(250 mm) cannot hold together"},
+     "Tool creation on the harder task ?: not solved: no literal left to generalise "
+     "(a(A) cannot be sized, as b(250 mm) cannot hold together).", None),
     ({"needed": False, "variant": "w"}, "Tool creation on the harder task w.", None),
     ({"needed": True}, "Tool creation on the harder task ?: not solved.", None),
 ])

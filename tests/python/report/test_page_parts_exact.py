@@ -183,6 +183,21 @@ def test_each_way_a_creation_is_solved(tmp_path):
         "<p>harder task: <b>v</b>; solved by oracle.</p>" + none)
 
 
+def test_no_literal_left_reads_as_words_and_an_older_summary_as_its_term(tmp_path):
+    def intro(create: dict) -> str:
+        return _tools_section(_run(tmp_path, {"create": create}))
+
+    term = "[size_a(A,wide)-infeasible([size(c,0.25)])]"
+    assert intro({"variant": "v", "exhausted": term,
+                  "exhausted_words": "size_a(A, wide) cannot be sized, as size(c, 250 mm) "
+                                     "cannot hold together"}).split("<p class")[0] == (
+        "<p>harder task: <b>v</b>; no literal left to generalise: size_a(A, wide) cannot "
+        "be sized, as size(c, 250 mm) cannot hold together.</p>")
+    assert intro({"variant": "v", "exhausted": term}).split("<p class")[0] == (
+        "<p>harder task: <b>v</b>; no literal left to generalise (what was tried of "
+        f"each: <code>{term}</code>).</p>")
+
+
 def test_a_run_without_readable_trials(tmp_path):
     assert _trials_section(_run(tmp_path)) == (
         '<p class="none">No trials.png in this run folder.</p>'

@@ -9,6 +9,8 @@ within a few centimetres of the goal; a head too narrow for the ball lands on it
 straight blade leaves the arm nowhere to reach.
 """
 
+import subprocess
+import sys
 from functools import lru_cache
 
 import pytest
@@ -49,3 +51,21 @@ def test_the_physics_discriminates_the_heads(tool, outcome, why):
     result = run_trial(_world(), tool, "standard", 1, pose_target=poses(_world()))
     assert result.outcome == outcome, result.reason
     assert why in result.reason + str(result.verdict)
+
+
+def test_a_run_stops_at_the_failed_demonstration_with_exit_2_and_one_line(tmp_path):
+    """``creative run move_ball``: the demonstration cannot pass done(), so nothing is
+    learned; the run ends as docs/new-case.md says (exit 2, one line naming the
+    demonstration) and leaves no run folder. (The options would make a run that went
+    on past the demonstration end after one trial, with exit 0.)"""
+    proc = subprocess.run(
+        [sys.executable, "-m", "creative_py.cli", "run", "move_ball", "--phase", "use",
+         "--max-trials", "1", "--eval-trials", "0", "--video", "none",
+         "--out", str(tmp_path)], capture_output=True, text=True, timeout=300)
+    errors = [line for line in proc.stderr.splitlines() if line.startswith("error: ")]
+    assert (proc.returncode, len(errors)) == (2, 1), proc.stderr
+    assert errors[0].endswith("worlds/move_ball/case.toml: field 'demonstration': cage_a1 "
+                              "at location 1 did not reach the goal in the physics: "
+                              "nothing to learn from")
+    assert "Traceback" not in proc.stderr
+    assert list(tmp_path.iterdir()) == []

@@ -47,23 +47,8 @@ def test_a_lab_remaps_names_by_a_file(tmp_path):
     assert p.object_topic_of("thing") == "mocap/Thing_01/pose"
 
 
-@pytest.mark.parametrize("old,new,message", [
-    ("rate_hz = 50.0", "rate_hz = 0.0", "field 'joint_states.rate_hz': must be >= 1.0"),
-    ('topic = "mocap/{name}/pose"', 'topic = "mocap/pose"', "field 'objects.topic': must contain {name}"),
-    ("closed_position = 0.0", "closed_position = 0.05", "field 'gripper.closed_position': must be below"),
-    ("max_joint_speed = 0.8      # rad/s, the fastest joint of any", "max_speed = 1\nmax_joint_speed = 0.8 #", "field 'limits.max_speed': unknown field"),
-    ('follow_joint_trajectory"\njoints = ["right_s0",', 'follow_joint_trajectory"\njoints = ["right_s0", "right_s0",', "field 'arm.joints': must be a list of distinct"),
-    ('follow_joint_trajectory"\njoints = ["right_s0",', 'follow_joint_trajectory"\njoints = ["right_sX",', "field 'arm.joints': must be the joints of kinematics.joints"),
-    ("workspace_max = [1.4, 0.3, 0.6]", "workspace_max = [1.4, 0.3, -0.3]", "field 'limits.workspace_max': must exceed"),
-    ('action = "right_arm_controller/follow_joint_trajectory"', 'action = "a b"', "field 'arm.action': must be a ROS name"),
-])
-def test_a_bad_field_is_named_in_one_line(tmp_path, old, new, message):
-    assert old in SHIPPED
-    path = _write(tmp_path, SHIPPED.replace(old, new, 1))
-    with pytest.raises(WorldFileError) as info:
-        load_profile(path)
-    text = str(info.value)
-    assert text.startswith(f"{path}: ") and message in text and "\n" not in text
+# The ROS tables' bad fields are rows of the one table of bad profiles, read by this
+# reader: tests/python/test_robot_profiles.py, test_a_bad_field_is_one_line_naming_file_and_field.
 
 
 def test_an_unknown_profile_lists_the_shipped_ones():
