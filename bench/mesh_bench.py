@@ -1,6 +1,7 @@
 """Benchmark the manufacturing path per tool kind and record it in bench/results/mesh.json.
 
-For each kind: the time to build the manifold3d solid and its mass properties, to write
+For the first catalogued tool of each class of each tool kind in the shipped worlds'
+``objects.toml``: the time to build the manifold3d solid and its mass properties, to write
 the URDF, SDF, OpenSCAD and STL files (no picture), to draw the picture, and to check the
 files (OpenSCAD rendering included); medians over --repeats runs, milliseconds.
 
@@ -22,22 +23,50 @@ from pathlib import Path
 import trimesh
 from recording import add_output_options, write_figures
 
+from creative_py.case import read_manifest
+from creative_py.kinds import kind_of
+from creative_py.kinds.block import BlockSpec
 from creative_py.mesh.check import check_tool_files
 from creative_py.mesh.export import write_tool_files
+from creative_py.mesh.printability import check_min_feature
 from creative_py.mesh.solid import mass_properties, tool_mesh
-from creative_py.kinds.block import BlockSpec
-from creative_py.kinds.hook_like import HookSpec
+from creative_py.simulator.catalogue import read_catalogue
 
-KINDS = {
-    "hook_right": HookSpec("hook_right", 0.3, hook_side="right"),
-    "hook_left": HookSpec("hook_left", 0.3, hook_side="left"),
-    "hook_angled": HookSpec("hook_angled", 0.3, hook_side="right", hook_angle_deg=60.0),
-    "hook_long_oversize": HookSpec("hook_long_oversize", 0.55),
-    "stick": HookSpec("stick", 0.3, hook_side="none", hook_length=0.0),
-    "prism": BlockSpec("prism", "triangular_prism", 0.15, 0.05, 0.03),
-    "box": BlockSpec("box", "box", 0.04, 0.05, 0.03),
-    "cylinder": BlockSpec("cylinder", "cylinder", 0.04, 0.04, 0.05),
-}
+ROOT = Path(__file__).resolve().parents[1]
+
+
+CREATED = {"block/block/triangular_prism": BlockSpec("wedge_new", "triangular_prism", 0.15, 0.05,
+                                                   0.03, tip_height=0.001, mass=None)}
+"""A created tool of a class whose catalogued tools no printer takes: a wedge blunted as
+the engine sizes one (its tip at least two nozzle widths high)."""
+
+
+def catalogue_specs() -> tuple[dict[str, object], dict[str, str]]:
+    """Return ``kind/class/name -> spec``, the first printable catalogued tool of each
+    class (and block shape) of each tool kind in the shipped worlds' ``objects.toml``
+    (the worlds in name order), so that every registered kind, a new one too, is
+    measured as its worlds ship it; and ``kind/class -> why`` for a class none of whose
+    catalogued tools a printer takes (the catalogue's wedges end in a sharp edge)."""
+    out: dict[str, object] = {}
+    refused: dict[str, str] = {}
+    for folder in sorted(p.parent for p in ROOT.glob("worlds/*/case.toml")):
+        table = read_manifest(folder).tools_table
+        for item in read_catalogue(folder / "objects.toml", table, lambda spec: None).values():
+            spec = item.spec
+            key = "/".join(k for k in (kind_of(spec), spec.kind, getattr(spec, "shape", "")) if k)
+            if any(label.startswith(key + " (") for label in out):
+                continue
+            try:
+                check_min_feature(spec)
+            except ValueError as exc:
+                refused.setdefault(key, str(exc))
+                continue
+            refused.pop(key, None)
+            out[f"{key} ({spec.name})"] = spec
+    for key in refused:
+        if key in CREATED:
+            out[f"{key} ({CREATED[key].name}, created)"] = CREATED[key]
+    return out, refused
 
 
 def _ms(fn) -> tuple[float, object]:
@@ -82,8 +111,9 @@ def main() -> None:
     args = parser.parse_args()
     logging.basicConfig(level=logging.ERROR)
     with tempfile.TemporaryDirectory(prefix="mesh_bench_") as tmp:
-        results = {kind: bench_kind(spec, args.repeats, Path(tmp) / kind)
-                   for kind, spec in KINDS.items()}
+        specs, refused = catalogue_specs()
+        results = {label: bench_kind(spec, args.repeats, Path(tmp) / f"tool{i}")
+                   for i, (label, spec) in enumerate(specs.items())}
     record = {
         "benchmark": "mesh: spec -> URDF, SDF, OpenSCAD, STL, PNG; check with OpenSCAD",
         "units": "milliseconds (medians); relative errors are fractions",
@@ -93,6 +123,7 @@ def main() -> None:
                        for p in ("manifold3d", "trimesh", "matplotlib")}},
         "date_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime()),
         "kinds": results,
+        "not_printable": refused,
     }
     width = max(map(len, results))
     print(f"median milliseconds of each step, {args.repeats} runs:")
@@ -101,6 +132,8 @@ def main() -> None:
         print(f"{kind:{width}}  {r['solid_and_mass_ms']:5.1f}  {r['write_urdf_sdf_scad_stl_ms']:5.1f}"
               f"  {r['picture_ms']:7.1f}  {r['check_ms']:5.1f}  {r['openscad_render_ms']:8.1f}"
               f"  {r['check_ok']}")
+    for key, why in refused.items():
+        print(f"{key}: no catalogued tool is printable ({why})")
     write_figures(args, "mesh.json", record, indent=2)
 
 

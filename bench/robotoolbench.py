@@ -86,12 +86,28 @@ ROLLOUTS = {
 """What each published figure cost in simulated rollouts, per run of 5."""
 
 
-def benchmark_cases() -> dict[str, str]:
-    """Return ``case id -> the benchmark's task`` for every case the benchmark marks."""
+def benchmark_cases(root: Path | None = None) -> dict[str, str]:
+    """Return ``case id -> the benchmark's task`` for every case the benchmark marks
+    (the cases of ``root``, default ``worlds/``); raise ValueError naming the case file
+    whose ``[benchmark] task`` is no task of :data:`PUBLISHED` (its figures would be
+    missing from the table)."""
+    import difflib
+
     from creative_py.case import load_cases
 
-    return {cid: m.benchmark_task for cid, m in sorted(load_cases().items())
-            if m.benchmark == BENCHMARK}
+    tasks = {}
+    for cid, m in sorted(load_cases(root).items()):
+        if m.benchmark != BENCHMARK:
+            continue
+        if m.benchmark_task not in PUBLISHED:
+            close = difflib.get_close_matches(m.benchmark_task, list(PUBLISHED), n=1)
+            raise ValueError(
+                f"{m.folder / 'case.toml'}: field 'benchmark.task': "
+                f"{m.benchmark_task!r} is no RoboToolBench task"
+                + (f" (did you mean {close[0]!r}?)" if close else "")
+                + f"; tasks: {', '.join(PUBLISHED)}")
+        tasks[cid] = m.benchmark_task
+    return tasks
 
 
 def _sizes(fields: dict) -> dict:
@@ -109,16 +125,17 @@ def _tool_dimensions(summary: dict, tool: str | None) -> dict:
     for t in (summary.get("create") or {}).get("created_tools") or ():
         if isinstance(t, dict) and t.get("name") == tool:
             return _sizes(t.get("dims") or {})
-    drawn = summary.get("drawn_world") or {}
-    objects = drawn.get("objects") if isinstance(drawn, dict) else None
-    if isinstance(objects, dict) and isinstance(objects.get(tool), dict):
-        return _sizes(objects[tool])
     from creative_py.case import load_cases
     from creative_py.simulator.loader import backend_for
 
     manifest = load_cases()[summary["case"]]
     world = backend_for(manifest).load_world(manifest)
-    return _sizes(world.item(tool).spec.feature_dimensions())
+    dims = _sizes(world.item(tool).spec.feature_dimensions())
+    drawn = summary.get("drawn_world") or {}
+    objects = drawn.get("objects") if isinstance(drawn, dict) else None
+    if isinstance(objects, dict) and isinstance(objects.get(tool), dict):
+        dims.update(_sizes(objects[tool]))  # a drawn world holds the fields it redrew
+    return dims
 
 
 def world_row(run_dir: Path) -> dict:
@@ -145,12 +162,23 @@ def world_row(run_dir: Path) -> dict:
     return {"case": summary["case"], "world_seed": summary.get("world_seed"),
             "run_dir": str(run_dir), "reward": reward,
             "success": reward is not None and reward > DONE,
-            "trials": {"demonstration": 1, "experiments": by_phase["use"],
+            "trials": {"demonstration": _demonstrations(summary),
+                       "experiments": by_phase["use"],
                        "creation": by_phase["create"], "evaluation": by_phase["eval"]},
             "trials_on_task": len(on_task),
             "wall_time_s": (summary.get("wall_time_s") or {}).get("total"),
             "solved_by": solved_by, "tool": tool, "tool_kind": kind,
             "tool_dimensions": _tool_dimensions(summary, tool)}
+
+
+def _demonstrations(summary: dict) -> int:
+    """Return how many times the run played the trainer's demonstration: once, and in
+    a drawn world once more for each draw of the demonstration's location checked
+    against the goal (the last one the run keeps) before the run's own."""
+    drawn = summary.get("drawn_world")
+    if not isinstance(drawn, dict):
+        return 1
+    return int(drawn.get("redraws") or 0) + 2
 
 
 def task_summary(task: str, rows: list[dict]) -> dict:
@@ -160,7 +188,11 @@ def task_summary(task: str, rows: list[dict]) -> dict:
               for k in ("demonstration", "experiments", "creation", "evaluation")}
     walls = [r["wall_time_s"] for r in rows if r["wall_time_s"] is not None]
     tools = sorted({f"{r['tool']} ({r['tool_kind']})" for r in rows if r["tool"]})
-    return {"case": rows[0]["case"] if rows else None, "worlds": len(rows),
+    stopped = sorted(w for r in rows for w in r.get("stopped_worlds") or ())
+    return {"case": rows[0]["case"] if rows else None,
+            "worlds": len(rows) - sum(1 for r in rows if r.get("stopped_worlds"))
+            + len(stopped),
+            "stopped_at_demonstration": stopped,
             "reward_mean": round(statistics.mean(rewards), 4) if rewards else None,
             "reward_best": round(max(rewards), 4) if rewards else None,
             "successes": sum(r["success"] for r in rows),
@@ -170,19 +202,30 @@ def task_summary(task: str, rows: list[dict]) -> dict:
             "published": PUBLISHED.get(task)}
 
 
-def run_worlds(case: str, seeds: list[int], base: Path) -> tuple[list[Path], list[int]]:
-    """Run the case once per world seed; return the run folders and the world seeds
-    whose run ended before a summary (the trainer's demonstration failed its verdict)."""
-    out, stopped = [], []
+def run_worlds(case: str, seeds: list[int], base: Path
+               ) -> tuple[list[Path], list[int], list[dict]]:
+    """Run the case once per world seed; return the run folders, the world seeds whose
+    run stopped at the trainer's demonstration (exit 2, its error line naming the
+    demonstration: it failed its verdict, nothing to learn), and the runs that failed
+    otherwise (world seed, exit code, the end of the standard error)."""
+    out, stopped, failed = [], [], []
     for w in seeds:
         parent = base / f"{case}-w{w}"
-        subprocess.run([str(CREATIVE), "run", case, "--seed", "0", "--world-seed", str(w),
-                        "--video", "none", "--out", str(parent)], cwd=ROOT, check=False)
+        proc = subprocess.run([str(CREATIVE), "run", case, "--seed", "0", "--world-seed",
+                               str(w), "--video", "none", "--out", str(parent)], cwd=ROOT,
+                              check=False, stderr=subprocess.PIPE, text=True)
+        sys.stderr.write(proc.stderr)
         done = sorted(p.parent for p in parent.glob("*/summary.json"))
         out += done
-        if not done:
+        last = (proc.stderr.strip().splitlines() or [""])[-1]
+        if done and proc.returncode == 0:
+            continue
+        if not done and proc.returncode == 2 and "demonstration" in last:
             stopped.append(w)
-    return out, stopped
+        else:
+            failed.append({"case": case, "world_seed": w, "exit_code": proc.returncode,
+                           "stderr_end": proc.stderr.strip().splitlines()[-5:]})
+    return out, stopped, failed
 
 
 def demonstration_row(case: str, world_seed: int) -> dict:
@@ -237,7 +280,11 @@ def main() -> int:
                     help="record these finished run folders instead of running")
     add_output_options(ap, TRACKED, "the per-task figures (JSON)")
     args = ap.parse_args()
-    tasks = benchmark_cases()
+    try:
+        tasks = benchmark_cases()
+    except ValueError as exc:  # a world file's error (WorldFileError is one)
+        print(f"error: {exc}", file=sys.stderr)
+        return 2
     cases = args.cases or list(tasks)
     unknown = [c for c in cases if c not in tasks]
     if unknown:
@@ -245,16 +292,21 @@ def main() -> int:
               f"{', '.join(tasks) or 'none'})", file=sys.stderr)
         return 2
     start = time.monotonic()
-    extra = []
+    extra: list[dict] = []
+    failed: list[dict] = []
     if args.from_runs:
         dirs = list(args.from_runs)
     else:
         base = Path(tempfile.mkdtemp(prefix="robotoolbench-"))
         dirs = []
         for c in cases:
-            done, stopped = run_worlds(c, seeds_of(args.world_seeds), base)
+            done, stopped, bad = run_worlds(c, seeds_of(args.world_seeds), base)
             dirs += done
-            extra += [demonstration_row(c, w) for w in stopped[:1]]
+            failed += bad
+            if stopped:  # `creative trial` takes no world seed: one row for them all
+                row = demonstration_row(c, stopped[0])
+                row["stopped_worlds"] = stopped
+                extra.append(row)
     rows = sorted([*(world_row(d) for d in dirs), *extra],
                   key=lambda r: (r["case"], r["world_seed"] or 0))
     by_task = {}
@@ -270,15 +322,18 @@ def main() -> int:
         "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
         "bench_wall_time_s": round(time.monotonic() - start, 1),
         "done_threshold": DONE, "published_source": SOURCE, "rollouts": ROLLOUTS,
-        "tasks": by_task, "worlds": rows}
+        "tasks": by_task, "worlds": rows, "failed_runs": failed}
     for task, t in by_task.items():
         pub = t["published"] or {}
         print(f"{task} ({t['case']}): reward mean {t['reward_mean']} best {t['reward_best']}, "
               f"{t['successes']} of {t['worlds']} worlds, {t['trials_total']} trials, "
               f"{t['wall_time_s']} s; VLMgineer {pub.get('vlmgineer')}, expert "
               f"{pub.get('expert')}, gripper {pub.get('gripper')}")
+    for f in failed:
+        print(f"{f['case']} world {f['world_seed']}: the run failed (exit {f['exit_code']}): "
+              f"{(f['stderr_end'] or [''])[-1]}", file=sys.stderr)
     write_figures(args, TRACKED, figures)
-    return 0
+    return 1 if failed else 0
 
 
 if __name__ == "__main__":

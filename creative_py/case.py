@@ -159,8 +159,10 @@ class CaseManifest:
     backend: str = DEFAULT_BACKEND
     """The simulator backend of the case's world (a name of :data:`BACKENDS`)."""
     robot: Optional[str] = None
-    """The case's default robot: a profile of ``robots/`` (``--robot`` chooses another);
-    None for a backend that brings its own arm."""
+    """The robot the backend builds: the case's default, a profile of ``robots/``; a
+    run's manifest carries ``--robot``'s instead (a name or a ``.toml`` path: the backend
+    reads it from here, the one way the choice travels); None for a backend that brings
+    its own arm."""
     benchmark: Optional[str] = None
     """The published benchmark the case re-expresses (``[benchmark] name``, e.g.
     ``robotoolbench``), by which a bench gathers its cases; None for the project's own."""

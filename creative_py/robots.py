@@ -41,20 +41,14 @@ interface. Every error names the file and the field (:class:`WorldFileError`).
 
 from __future__ import annotations
 
-import functools
 import math
-import os
 import site
 import sys
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Callable, Iterator, Optional, ParamSpec, TypeVar
+from typing import Optional
 
 from creative_py.world_files import Fields, WorldFileError, load_toml
-
-P = ParamSpec("P")
-R = TypeVar("R")
 
 ROBOTS_ROOT = Path(__file__).resolve().parents[1] / "robots"
 """The folder holding the shipped robot profiles (``robots/<name>.toml``)."""
@@ -63,37 +57,6 @@ ERD_PREFIX = "example-robot-data:"
 """A ``urdf`` starting so names a file under example-robot-data's ``robots/`` folder."""
 
 APPROACH_AXES = ("+x", "-x", "+y", "-y", "+z", "-z")
-
-ROBOT_ENV = "CREATIVE_ROBOT_PROFILE"
-"""The environment variable naming the run's robot profile (a name under ``robots/``
-or a ``.toml`` path); ``creative run --robot`` sets it for the backends."""
-
-
-@contextmanager
-def robot_choice_kept() -> Iterator[None]:
-    """Give :data:`ROBOT_ENV` back its value (or its absence) when the block ends.
-
-    A run or a command sets it for the backends it drives; in-process (a notebook, a
-    test, the API called twice) the next world loaded after it must read its own
-    case's robot, not the last run's.
-    """
-    saved = os.environ.get(ROBOT_ENV)
-    try:
-        yield
-    finally:
-        if saved is None:
-            os.environ.pop(ROBOT_ENV, None)
-        else:
-            os.environ[ROBOT_ENV] = saved
-
-
-def keeps_robot_choice(fn: Callable[P, R]) -> Callable[P, R]:
-    """Decorate ``fn`` to run inside :func:`robot_choice_kept`."""
-    @functools.wraps(fn)
-    def call(*args: P.args, **kwargs: P.kwargs) -> R:
-        with robot_choice_kept():
-            return fn(*args, **kwargs)
-    return call
 
 
 @dataclass(frozen=True)

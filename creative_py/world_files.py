@@ -33,6 +33,27 @@ class WorldFileError(ValueError):
     """A world file is missing, unreadable, or has a missing, mistyped or unknown field."""
 
 
+class OptionError(ValueError):
+    """An option of a table (a skill's ``options``, the ``[oracle]``) that cannot work:
+    the option's name and the cause. The loader turns it into a
+    :class:`WorldFileError` naming the file and the field."""
+
+    def __init__(self, option: str, cause: str) -> None:
+        super().__init__(f"{option}: {cause}")
+        self.option = option
+        self.cause = cause
+
+
+def shown(value: Any) -> str:
+    """Return ``value`` as an error line shows it: a number by ``%g``, a list or tuple
+    in brackets, anything else by its repr (``[0.9, 'x']``)."""
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(shown(v) for v in value) + "]"
+    if isinstance(value, float):
+        return f"{value:g}"
+    return repr(value)
+
+
 _MISSING = object()
 
 
@@ -148,7 +169,7 @@ class Fields:
             raise self.error(name, f"must be a string, got {value!r}")
         if choices is not None and value not in choices:
             raise self.error(name, f"must be one of {', '.join(choices)}, got {value!r}"
-                             + _did_you_mean(value, choices))
+                             + did_you_mean(value, choices))
         return value
 
     def vec(self, name: str, n: int, default: Any = _MISSING, *,
@@ -185,11 +206,12 @@ class Fields:
         unknown = sorted(set(self.data) - self._used)
         if unknown:
             name = unknown[0]
-            raise self.error(name, "unknown field" + _did_you_mean(name, sorted(self._used))
+            raise self.error(name, "unknown field" + did_you_mean(name, sorted(self._used))
                              + f"; known fields: {', '.join(sorted(self._used))}")
 
 
-def _did_you_mean(word: str, options) -> str:
+def did_you_mean(word: str, options) -> str:
+    """Return `` (did you mean 'X'?)`` for the option closest to ``word``, or ``""``."""
     close = difflib.get_close_matches(word, list(options), n=1, cutoff=0.6)
     return f" (did you mean {close[0]!r}?)" if close else ""
 

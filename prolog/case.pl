@@ -380,11 +380,7 @@ property_values_(Case, P, Values) :-
 %   true.
 %   ==
 size_context_facts(Indicators) :-
-    findall(N/A, ( ontology_holds(size_constraint(_, Fact, _)), functor(Fact, N, A) ),
-            Is0),
-    findall(N/1, ontology_holds(size_parameter(N, _, _)), Is1),
-    append(Is0, Is1, Is),
-    list_to_set(Is, Indicators).
+    size_context_indicators(ontology_holds, Indicators).
 
 %!  size_context_facts(+Case, -Indicators:list) is det.
 %
@@ -400,9 +396,13 @@ size_context_facts(Indicators) :-
 %   ==
 size_context_facts(Case, Indicators) :-
     must_be_case(Case),
-    findall(N/A, ( case_knowledge(Case, size_constraint(_, Fact, _)), functor(Fact, N, A) ),
-            Is0),
-    findall(N/1, case_knowledge(Case, size_parameter(N, _, _)), Is1),
+    size_context_indicators(case_knowledge(Case), Indicators).
+
+%   size_context_indicators(:Holds, -Indicators): the facts of the size_constraint/3
+%   and size_parameter/3 clauses that call(Holds, Clause) proves, in order, once each.
+size_context_indicators(Holds, Indicators) :-
+    findall(N/A, ( call(Holds, size_constraint(_, Fact, _)), functor(Fact, N, A) ), Is0),
+    findall(N/1, call(Holds, size_parameter(N, _, _)), Is1),
     append(Is0, Is1, Is),
     list_to_set(Is, Indicators).
 

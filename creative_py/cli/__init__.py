@@ -58,9 +58,6 @@ def main(ctx: typer.Context,
          debug: bool = typer.Option(False, "--debug", help="Show the traceback of an "
                                     "error instead of its one-line message.")) -> None:
     """CREATIVE in Python and Prolog (Wicaksono & Sammut, IJECE 2020)."""
-    from creative_py.robots import robot_choice_kept
-
-    ctx.with_resource(robot_choice_kept())  # --robot holds for this command alone
     _DEBUG["on"] = debug
     logging.basicConfig(level=logging.INFO if verbose else logging.WARNING,
                         format="%(levelname)s %(name)s: %(message)s")

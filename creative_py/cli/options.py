@@ -138,9 +138,8 @@ def need_display(manifest=None) -> None:
 
 def backend_override(backend: Optional[str], robot: Optional[str]) -> None:
     """Check ``--backend`` (a registered backend whose packages are installed) and
-    ``--robot`` (a robot profile that loads), or fail in one line; set the profile for
-    the backends (their environment variable)."""
-    from creative_py.robots import ROBOT_ENV, load_profile
+    ``--robot`` (a robot profile that loads), or fail in one line."""
+    from creative_py.robots import load_profile
     from creative_py.simulator.loader import BackendError, backend as load_backend
     from creative_py.world_files import WorldFileError
 
@@ -156,7 +155,6 @@ def backend_override(backend: Optional[str], robot: Optional[str]) -> None:
             load_profile(robot)
         except WorldFileError as exc:
             fail(f"--robot {robot}: {exc}")
-        os.environ[ROBOT_ENV] = robot
 
 
 def case_manifest(case: str, world: Optional[Path]):

@@ -4,7 +4,6 @@ measured (or the case's objects, locations, variants and default pose with ``--l
 from __future__ import annotations
 
 import json
-import os
 from pathlib import Path
 from typing import Optional
 
@@ -81,10 +80,8 @@ def _trial_lines(case, tool, location, variant, pose, seed, as_json, save_images
 
 def _trial_manifest(case: str, world: Optional[Path], backend: Optional[str],
                     robot: Optional[str]):
-    """Return the manifest of ``case`` on ``--backend`` (if given), with the arm its
-    backend builds (``--robot`` or the case's) set for the backend, or fail in one line."""
-    from creative_py.robots import ROBOT_ENV
-
+    """Return the manifest of ``case`` on ``--backend`` (if given) with the arm its
+    backend builds (``--robot``, if given), or fail in one line."""
     m = case_manifest(case, world)
     if backend is not None and backend != m.backend:
         from dataclasses import replace
@@ -93,10 +90,10 @@ def _trial_manifest(case: str, world: Optional[Path], backend: Optional[str],
     if robot is not None and m.robot is None:
         fail(f"--robot {robot}: the case {case} runs in the {m.backend!r} backend, which "
              "brings its own arm")
-    if robot or m.robot:
-        os.environ[ROBOT_ENV] = robot or m.robot  # the backend builds this arm
-    else:
-        os.environ.pop(ROBOT_ENV, None)
+    if robot is not None:
+        from dataclasses import replace
+
+        m = replace(m, robot=robot)  # the backend builds this arm
     return m
 
 

@@ -212,7 +212,7 @@ def check_strength(spec: KindSpec, load: Optional[dict[str, Any]], *,
     spec : KindSpec
         The tool; its kind gives the load model (:meth:`KindSpec.load_model`).
     load : dict or None
-        The trial's ``tool_load`` (:meth:`creative_py.backends.pybullet.loads.ToolLoad.to_dict`):
+        The trial's ``tool_load`` (:meth:`creative_py.simulator.load.ToolLoad.to_dict`):
         ``robust_force_n`` (the force checked; ``max_force_n`` for a load recorded
         before it existed), ``max_force_n`` (the peak, kept beside it), ``point`` and
         ``grasp_point`` in the tool frame (the lever arm runs from the grasp to the

@@ -26,6 +26,7 @@ square-handle model).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from itertools import combinations
 from typing import Any
 
 from creative_py.kinds.parts import (MIN_SAFETY_FACTOR, PLA_STRENGTH, Box, Fact, Hull,
@@ -124,12 +125,26 @@ class PusherSpec(KindSpec):
                            (L + wl - t, s * (half + sp)), (L + wl, s * (half + sp)),
                            (L + wl, s * (half + sp - t))]
                 verts = tuple((x, y, z) for x, z in corners for y in (y0, y1))
-                parts.append(Hull(verts, volume=H * t * (wl + t) * (1 + (sp / wl) ** 2) ** 0.5))
+                parts.append(Hull(verts, volume=H * _area(_convex(corners))))
         return parts
 
     def volume(self) -> float:
-        """Return the solid volume, m^3 (the neck inside the pole counted once)."""
-        return sum(p.volume for p in self.parts()) - self.pole_width ** 3 / 2
+        """Return the solid volume, m^3, each overlap counted once: every part is an
+        upright prism (its section in x-z over a span of y), so the volume is the
+        integral over y of the area of the union of the sections there."""
+        return _union_volume(self._prisms())
+
+    def _prisms(self) -> list[tuple[float, float, list[tuple[float, float]]]]:
+        """Return the parts as ``(y_low, y_high, section)``, the section a convex
+        polygon in (x, z), counter-clockwise."""
+        L, w, t, H = self.pole_length, self.pole_width, self.wall, self.wall_height
+        y0, y1, half = self.drop, self.drop + self.wall_height, self.plate_width / 2
+        prisms = [(-w / 2, w / 2, _rect(0.0, L, -w / 2, w / 2)),
+                  (0.0, y0 + w / 2, _rect(L - w, L, -w / 2, w / 2)),
+                  (y0, y1, _rect(L - t, L, -half, half))]
+        for part in self.parts()[3:]:  # the wings
+            prisms.append((y0, y1, _convex([(x, z) for x, y, z in part.vertices if y == y0])))
+        return prisms
 
     # ---------------------------------------- how the simulator holds it ("handle")
     @property
@@ -191,10 +206,13 @@ class PusherSpec(KindSpec):
 
     # ---------------------------------------------------------- manufacturing
     def feature_dimensions(self) -> dict[str, float]:
-        """Return the pole's, the head's and the wings' dimensions, metres."""
-        return {f: getattr(self, f)
-                for f in ("pole_length", "pole_width", "plate_width", "wing_length",
-                          "wing_spread", "drop", "wall_height", "wall")}
+        """Return the pole's, the head's and the wings' dimensions, metres: the wings'
+        length only where there are wings, and never ``wing_spread``, which places the
+        wings (0: parallel) and is no feature of the print."""
+        fields = ("pole_length", "pole_width", "plate_width", "drop", "wall_height", "wall")
+        if self.wing_length > 0:
+            fields += ("wing_length",)
+        return {f: getattr(self, f) for f in fields}
 
     def scad(self, mm, segments: int) -> tuple[str, str, list[str]]:
         """Return the OpenSCAD model (millimetres): pole, neck, base plate and wings."""
@@ -224,6 +242,7 @@ class PusherSpec(KindSpec):
                 "    for (s = [1, -1])",
                 "        hull() for (p = [[pole_length - wall, s * plate_width / 2],",
                 "                         [pole_length - wall, s * (plate_width / 2 - wall)],",
+                "                         [pole_length + wing_length - wall, s * (plate_width / 2 + wing_spread)],",
                 "                         [pole_length + wing_length, s * (plate_width / 2 + wing_spread)],",
                 "                         [pole_length + wing_length, s * (plate_width / 2 + wing_spread - wall)]])",
                 "            translate([p[0], drop, p[1]]) cube([0.01, wall_height, 0.01]);",
@@ -247,3 +266,83 @@ class PusherSpec(KindSpec):
 
 CLASSES = {"pusher": PusherSpec}
 """The ontology class of this kind's tools and its spec class."""
+
+
+# ------------------------------------------------ the volume of a union of prisms
+Point = tuple[float, float]
+
+
+def _rect(x0: float, x1: float, z0: float, z1: float) -> list[Point]:
+    """Return the rectangle ``[x0, x1] x [z0, z1]``, counter-clockwise."""
+    return [(x0, z0), (x1, z0), (x1, z1), (x0, z1)]
+
+
+def _cross(o: Point, a: Point, b: Point) -> float:
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+def _convex(points: list[Point]) -> list[Point]:
+    """Return the convex hull of ``points``, counter-clockwise (Andrew's monotone chain)."""
+    pts = sorted(set(points))
+    if len(pts) < 3:
+        return pts
+    lower: list[Point] = []
+    upper: list[Point] = []
+    for p in pts:
+        while len(lower) >= 2 and _cross(lower[-2], lower[-1], p) <= 0:
+            lower.pop()
+        lower.append(p)
+    for p in reversed(pts):
+        while len(upper) >= 2 and _cross(upper[-2], upper[-1], p) <= 0:
+            upper.pop()
+        upper.append(p)
+    return lower[:-1] + upper[:-1]
+
+
+def _area(poly: list[Point]) -> float:
+    """Return the area of a simple polygon (the shoelace formula)."""
+    n = len(poly)
+    return abs(sum(poly[i][0] * poly[(i + 1) % n][1] - poly[(i + 1) % n][0] * poly[i][1]
+                   for i in range(n))) / 2 if n >= 3 else 0.0
+
+
+def _clip(subject: list[Point], clip: list[Point]) -> list[Point]:
+    """Return the intersection of two convex counter-clockwise polygons
+    (Sutherland-Hodgman)."""
+    out = subject
+    for i in range(len(clip)):
+        a, b = clip[i], clip[(i + 1) % len(clip)]
+        inp, out = out, []
+        for j in range(len(inp)):
+            p, q = inp[j], inp[(j + 1) % len(inp)]
+            p_in, q_in = _cross(a, b, p) >= 0, _cross(a, b, q) >= 0
+            if p_in:
+                out.append(p)
+            if p_in != q_in:
+                dp, dq = _cross(a, b, p), _cross(a, b, q)
+                f = dp / (dp - dq)
+                out.append((p[0] + f * (q[0] - p[0]), p[1] + f * (q[1] - p[1])))
+        if not out:
+            return []
+    return out
+
+
+def _union_volume(prisms: list[tuple[float, float, list[Point]]]) -> float:
+    """Return the volume of a union of upright prisms with convex sections: over each
+    span of y where the same prisms stand, the span times the area of the union of
+    their sections (inclusion-exclusion over the sections' intersections)."""
+    levels = sorted({y for lo, hi, _ in prisms for y in (lo, hi)})
+    total = 0.0
+    for lo, hi in zip(levels, levels[1:]):
+        here = [sec for a, b, sec in prisms if a <= lo and hi <= b]
+        area = 0.0
+        for k in range(1, len(here) + 1):
+            for group in combinations(here, k):
+                common = group[0]
+                for sec in group[1:]:
+                    common = _clip(common, sec)
+                    if not common:
+                        break
+                area += (-1) ** (k + 1) * _area(common)
+        total += (hi - lo) * area
+    return total

@@ -75,7 +75,7 @@ class RunOptions:
     robot : str or None
         The robot profile (a name under ``robots/`` or a ``.toml`` path) the arm is
         built from; None: the case's robot (a new run records the one it used).
-        Passed to the backend in the environment variable ``CREATIVE_ROBOT_PROFILE``.
+        The run's manifest carries it to the backend (``CaseManifest.robot``).
     """
 
     seed: int = 0

@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import json
 import logging
-import os
 import shutil
 import time
 from dataclasses import replace
@@ -34,14 +33,13 @@ from creative_py.records.folder import RunFolder, read_resume, resume_command, r
 from creative_py.records.summary import (Resumed, RunSummary, TrialCounts, VideoEntry,
                                          WallTimes)
 from creative_py.report import write_reports
-from creative_py.robots import ROBOT_ENV, keeps_robot_choice, load_profile
+from creative_py.robots import load_profile
 from creative_py.simulator import BackendLost, World, backend_for
 from creative_py.simulator.randomise import apply_drawn
 
 log = logging.getLogger(__name__)
 
 
-@keeps_robot_choice
 def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) -> RunFolder:
     """Resume a run that was interrupted (killed, out of power) and return its folder.
 
@@ -81,7 +79,6 @@ def resume_run(run_dir: Path, progress: Optional[Callable[[str], None]] = None) 
         folder.release()
 
 
-@keeps_robot_choice
 def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptions(),
              progress: Optional[Callable[[str], None]] = None,
              world_dir: Optional[Path] = None, run_name: Optional[str] = None,
@@ -334,9 +331,8 @@ def _checked_world(case: str, options: RunOptions, world_dir: Optional[Path],
                          f"{manifest.backend!r} backend, which brings its own arm")
     if robot:
         load_profile(robot)  # a bad profile: one line naming its file and field
-        os.environ[ROBOT_ENV] = robot  # the backend builds this arm
-    else:
-        os.environ.pop(ROBOT_ENV, None)
+    if options.robot is not None:
+        manifest = replace(manifest, robot=options.robot)  # --robot: the arm the backend builds
     physics = backend_for(manifest)
     world = physics.load_world(manifest)
     engine = Engine.instance()

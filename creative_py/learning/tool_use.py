@@ -33,11 +33,12 @@ from creative_py.bridge import Compound, Engine, Term, fact_term
 from creative_py.learning.prior import Prior
 from creative_py.learning.strategies import Strategy, strategy_named
 from creative_py.learning.trials import TrialRecord, TrialRunner
-from creative_py.simulator.trial import judge
+from creative_py.simulator.trial import play_trial
 from creative_py.simulator.types import SkillOutcome
 
 if TYPE_CHECKING:
     from creative_py.simulator import PoseTarget, World
+    from creative_py.case import SkillBinding
 
 
 @dataclass(frozen=True)
@@ -99,9 +100,10 @@ def run_demonstration(world: World, seed: int = 0, images_dir: Optional[Path] = 
 
     The tool, variant, location, skills and pose come from the manifest's
     ``[demonstration]``. Each step's facts are what the robot perceives (cameras) and
-    feels (arm proprioception). It is judged as every trial is
-    (:func:`creative_py.simulator.trial.judge`: the episode's one oracle, the one
-    outcome rule); a demonstration whose outcome is not ``success`` raises
+    feels (arm proprioception). It is played and judged as every trial is
+    (:func:`creative_py.simulator.trial.play_trial`: the same skill loop, the
+    episode's one oracle, the one outcome rule, a non-finite pose ``invalid``); a
+    demonstration whose outcome is not ``success`` raises
     :class:`DemonstrationFailed` naming the manifest, or for a drawn world
     (``--world-seed``) its world seed: there is nothing to learn from. ``record`` (a
     :class:`creative_py.simulator.ClipRecorder`) keeps its poses; ``verdict()`` is
@@ -121,28 +123,32 @@ def run_demonstration(world: World, seed: int = 0, images_dir: Optional[Path] = 
     with backend_for(m).open_episode(world, demo.variant, demo.location, demo.tool,
                                      seed=seed, images_dir=images_dir, gui=gui,
                                      record=record, pose_target=pose_target) as ep:
-        before = tuple(ep.observe().facts)
-        status, acted = SkillOutcome("ok"), False
-        for name in demo.steps:
-            skill = m.skill(name)
-            acted = acted or skill.tool_action
-            status = ep.run_skill(name, pose=demo.pose if skill.pose else None)
-            after = tuple(ep.observe().facts)
-            steps.append(DemoStep(name, m.skill_args(skill, demo.tool), before, after,
-                                  status.status))
-            if not status.ok:
-                break
-            before = after
-        # A trial's judgement (simulator/trial.py): the one oracle, the one outcome rule.
-        outcome, _reason, _oracle, _asked = judge(ep, status, acted)
-        if outcome == "success" and verdict is not None:
+        seen = [tuple(ep.observe().facts)]
+        last = SkillOutcome("ok")
+
+        def observed(skill: SkillBinding, status: SkillOutcome) -> None:
+            nonlocal last
+            last = status
+            seen.append(tuple(ep.observe().facts))
+            steps.append(DemoStep(skill.name, m.skill_args(skill, demo.tool), seen[-2],
+                                  seen[-1], status.status))
+
+        # A trial like any other (simulator/trial.py): the same skill loop, oracle and
+        # outcome rule, the robot observing after every skill instead of before the
+        # tool action only.
+        played = play_trial(ep, m, demo.pose, observe=False,
+                            skills=tuple(m.skill(name) for name in demo.steps),
+                            after_skill=observed)
+        if played.outcome == "success" and verdict is not None:
             verdict()  # the physics is done with
-    if outcome != "success" and not status.ok:
+    if played.outcome != "success" and not last.ok:
         raise DemonstrationFailed(f"{where}: the trainer's skill {steps[-1].skill} ended "
-                                  f"{status.status} in the physics: {status.reason}")
-    if outcome != "success":
+                                  f"{last.status} in the physics: {last.reason}")
+    if played.outcome != "success":
+        why = (f": {played.reason}" if played.outcome == "invalid" else
+               ": nothing to learn from")
         raise DemonstrationFailed(f"{where}: {demo.tool} at location {demo.location} did "
-                                  "not reach the goal in the physics: nothing to learn from")
+                                  f"not reach the goal in the physics{why}")
     return Demonstration(demo.tool, demo.variant, demo.location, demo.pose, tuple(steps),
                          True)
 

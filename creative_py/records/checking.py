@@ -3,7 +3,8 @@ the field's annotation, for the trial record (:mod:`creative_py.records.trial`) 
 every part of the summary (:mod:`creative_py.records.summary`).
 
 A record is a dataclass whose annotations say what its JSON holds (``int``, ``float``,
-``str``, ``bool``, ``list[X]``, ``dict[str, X]``, ``Union[...]``/``Optional[X]``,
+``str``, ``bool``, ``list[X]``, ``dict[str, X]`` (its keys checked too: JSON keeps
+only text keys, so an int key would read back as another record), ``Union[...]``/``Optional[X]``,
 ``Any``, or a :class:`Checked` part read by its own ``from_dict``). :func:`typed` returns
 the value checked, or raises ValueError naming the field by its place in the file
 (``facts[1]``, ``create.created_tools[0].print.filament_g``); a float written as
@@ -134,14 +135,19 @@ def _typed_list(value: Any, tp: Any, name: str, warn: Warn, convert: bool) -> li
 
 
 def _typed_dict(value: Any, tp: Any, name: str, warn: Warn, convert: bool) -> dict:
-    """Return the mapping ``value`` with each value checked against ``tp``'s value type;
-    with ``warn``, a wrong value is dropped and said."""
+    """Return the mapping ``value`` with each key checked against ``tp``'s key type and
+    each value against its value type; with ``warn``, a wrong entry is dropped and said."""
     if not isinstance(value, dict):
         raise wrong(name, value, tp)
-    _key, item = typing.get_args(tp) or (Any, Any)
+    key, item = typing.get_args(tp) or (Any, Any)
     out_map = {}
     for k, v in value.items():
         try:
+            try:  # a key JSON cannot keep (an int is written back as its text)
+                typed(k, key, name, None, False)
+            except ValueError:
+                raise ValueError(f"field {name!r}: key {k!r} is not of type "
+                                 f"{type_name(key)}") from None
             out_map[k] = typed(v, item, f"{name}.{k}", warn, convert)
         except ValueError as exc:
             if warn is None:

@@ -33,6 +33,10 @@ Modules:
 ``randomise``   randomised worlds (``--world-seed``), once for every backend:
                 ``draw_world`` (the seeded draws of catalogue numbers and location
                 values, the redraws) and ``apply_drawn``
+``load``        the tool load's rule (``robust_force``) and its record (``ToolLoad``),
+                once for every backend
+``paths``       the gripper's straight path (``straight_line``, ``Unreachable``), for
+                every backend that moves an arm by IK
 ``loader``      ``backend(name)``, ``backend_for(manifest)``: the manifest's
                 ``backend`` name to its module, imported on first use (the names:
                 :data:`creative_py.backend_registry.BACKENDS`)

@@ -90,6 +90,17 @@ class CatalogueWorld:
             raise KeyError(f"unknown tool {name!r}; available tools: {', '.join(self.items)}")
         return self.items[name]
 
+    def with_tool(self, spec: Any, urdf: Optional[Path] = None):
+        """Return this world with one more available object, a created tool: ``spec``
+        (its kind's), its ``urdf`` (written by :mod:`creative_py.mesh`, checked to
+        exist) and the friction of the catalogue's first object (the same printed
+        material). A backend that holds only some kinds checks ``spec`` first."""
+        if urdf is not None and not Path(urdf).is_file():
+            raise FileNotFoundError(f"{urdf}: tool URDF not found")
+        friction = next(iter(self.items.values())).friction
+        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
+        return replace(self, items={**self.items, spec.name: item})
+
     def with_spec(self, name: str, spec: Any):
         """Return this world with the available object ``name`` given ``spec`` (a drawn
         one), its place in the catalogue and its other fields kept."""

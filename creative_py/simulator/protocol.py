@@ -214,7 +214,10 @@ class Episode(Protocol):
         """Return what the case's oracle measures in the simulated state now: the
         quantity, its value and threshold in the world's units, and whether the goal
         holds (``holds``). Raise ValueError or ArithmeticError when the state has
-        nothing finite to measure (a blow-up)."""
+        nothing finite to measure (a blow-up):
+        :class:`~creative_py.simulator.types.NonFiniteState` (a ValueError) for a
+        non-finite number read from the state, which makes the trial ``invalid`` where
+        the oracle is asked (:func:`creative_py.simulator.trial.judge`)."""
 
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
         """Return the ground truth ``name -> (x, y, z, yaw)`` (m, rad, world frame) of
@@ -238,7 +241,7 @@ class Episode(Protocol):
         """Return the contact load on the tool during the last tool action (the skill
         with ``tool_action = true``): the largest sum of the normal forces of its
         contacts over one step, newtons, and where and how it acted as JSON-ready data
-        (:meth:`creative_py.backends.pybullet.loads.ToolLoad.to_dict`'s fields:
+        (:meth:`creative_py.simulator.load.ToolLoad.to_dict`'s fields:
         ``max_force_n``, ``point`` and ``force`` in the tool frame, ``grasp_point``,
         ``bodies``, ``robust_force_n``, ...; None when none was measured). Asked only
         once the tool action started."""
@@ -254,7 +257,10 @@ class Backend(Protocol):
     def load_world(self, manifest: CaseManifest) -> World:
         """Read the manifest's world folder and return its :class:`World`, every value
         of every variant and location checked; raise
-        :class:`creative_py.world_files.WorldFileError` naming the file and the field."""
+        :class:`creative_py.world_files.WorldFileError` naming the file and the field.
+        A backend that builds an arm of a robot profile builds ``manifest.robot``'s (a
+        run's manifest carries ``--robot``'s there): the choice travels in no other
+        way."""
 
     def open_episode(self, world: World, variant: str, location: int, tool: str,
                      seed: int = 0, gui: bool = False, images_dir: Optional[Path] = None,

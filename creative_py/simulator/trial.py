@@ -15,8 +15,7 @@ ending means, what the result holds) is decided here, once, for every backend::
                   benchmark: ``by_hand``, ``timings``, no observation)
 ``trial_outcome`` what each way of ending a trial means: the one place (a motion
                   out of steps or time included)
-``judge``         the oracle asked and the outcome given: every trial's, the
-                  demonstration's too
+``judge``         the oracle asked and the outcome given
 ``verdict_data``  a trial's measured verdict as JSON-ready data
 ``task_facts``    what the robot perceives of a task before acting, observed once per
                   task through the case's backend (the planner's and the size model's
@@ -34,13 +33,13 @@ import logging
 import math
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NamedTuple, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Callable, NamedTuple, Optional, Sequence
 
-from creative_py.simulator.types import (BackendLost, Fact, Observation, PoseTarget,
-                                         SkillOutcome, TrialResult, Verdict)
+from creative_py.simulator.types import (BackendLost, Fact, NonFiniteState, Observation,
+                                         PoseTarget, SkillOutcome, TrialResult, Verdict)
 
 if TYPE_CHECKING:
-    from creative_py.case import CaseManifest
+    from creative_py.case import CaseManifest, SkillBinding
     from creative_py.simulator.protocol import (ClipRecorder, Episode, VerdictCallback,
                                                 World)
 
@@ -131,22 +130,28 @@ class Played(NamedTuple):
 
 def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
                observe: bool = True, by_hand: bool = False,
-               timings: Optional[dict[str, float]] = None) -> Played:
+               timings: Optional[dict[str, float]] = None,
+               skills: Optional[Sequence[SkillBinding]] = None,
+               after_skill: Optional[Callable[[SkillBinding, SkillOutcome], None]] = None
+               ) -> Played:
     """Run the manifest's skills in order in an open episode and judge the trial.
 
     The body of :func:`run_trial`, for a caller that opens the episode itself (the
-    simulator benchmark). Before the tool action the robot observes (the state the
-    action model's precondition speaks of); a blocked motion is observed where it
-    stopped, a trial whose skills all ran at its end. ``observe=False`` takes no
-    observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
+    simulator benchmark, the demonstration). Before the tool action the robot observes
+    (the state the action model's precondition speaks of); a blocked motion is observed
+    where it stopped, a trial whose skills all ran at its end. ``observe=False`` takes
+    no observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
     the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
-    skipped). ``timings`` receives each skill's wall time (s) as ``<skill>_s``. The
-    outcome is :func:`trial_outcome`'s, or ``invalid`` when a true pose is not finite.
+    skipped). ``timings`` receives each skill's wall time (s) as ``<skill>_s``.
+    ``skills`` are the skills to run (default: the manifest's; the demonstration's
+    ``steps``), and ``after_skill(skill, status)`` is called after each has run (the
+    demonstration observes there). The outcome is :func:`trial_outcome`'s, or
+    ``invalid`` when a true pose is not finite.
     """
     facts: tuple[Fact, ...] = ()
     final: Optional[Observation] = None
     acted, status = False, SkillOutcome("ok")
-    for skill in manifest.skills:
+    for skill in manifest.skills if skills is None else skills:
         if by_hand and not (skill.pose or skill.tool_action):
             continue  # the trainer places the tool: no grasp, no carrying
         if skill.tool_action:
@@ -162,6 +167,8 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
             raise
         if timings is not None:
             timings[f"{skill.name}_s"] = time.perf_counter() - t0
+        if after_skill is not None:
+            after_skill(skill, status)
         if not status.ok:
             break
     outcome, reason, oracle, asked = judge(ep, status, acted)
@@ -184,21 +191,24 @@ def judge(ep: Episode, status: SkillOutcome, acted: bool
           ) -> tuple[str, str, Optional[Verdict], bool]:
     """Return ``(outcome, reason, oracle, asked)`` of a trial whose last skill ended
     ``status``: the episode's oracle measured (:meth:`Episode.verdict`, the one oracle
-    of every backend) and :func:`trial_outcome`'s judgement; the demonstration is
-    judged by the same rule (:func:`creative_py.learning.tool_use.run_demonstration`).
+    of every backend) and :func:`trial_outcome`'s judgement.
 
     The oracle is asked when the goal can have been reached: every skill ran, or the
     tool acted until it was stopped or ran out of time. It measures every trial (the
     measure is reported) but decides only when asked; a physics blow-up may leave
-    nothing finite to measure (``oracle`` None; the error is raised when asked).
+    nothing finite to measure (``oracle`` None): asked, a :class:`NonFiniteState` (a
+    body the oracle reads thrown to NaN, tracked by the cameras or not) makes the trial
+    ``invalid``, any other error is raised.
     """
     asked = status.ok or (acted and status.status in STOPPED)
     try:
         oracle: Optional[Verdict] = ep.verdict()
     except (ValueError, ArithmeticError) as exc:
-        if asked:
+        if asked and not isinstance(exc, NonFiniteState):
             raise
         log.debug("no oracle measure after %s: %s", status.status, exc)
+        if asked:
+            return "invalid", str(exc), None, asked
         oracle = None
     reached = asked and oracle is not None and oracle.holds
     outcome, reason = trial_outcome(status, acted, reached)

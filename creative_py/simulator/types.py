@@ -198,6 +198,13 @@ class BackendLost(RuntimeError):
     trial: Optional[dict] = None
 
 
+class NonFiniteState(ValueError):
+    """A measure met a non-finite number in the simulated state (a physics blow-up: a
+    body thrown to NaN or infinity). An episode's ``verdict`` raises it; the trial is
+    then ``invalid`` (:func:`creative_py.simulator.trial.judge`), not a failure the
+    learner would label. The message names the object (``non-finite pose of cubes3``)."""
+
+
 @dataclass(frozen=True)
 class SkillOutcome:
     """How a skill or a single arm motion ended: ``status`` and why.

@@ -177,23 +177,6 @@ tube_dx_reach(Tool, Target, HandleLength, TipHalf, Loss, V) :-
     pose(Target, CX, _, _, _),
     V is MX + HandleLength - Loss - TipHalf - CX.
 
-%   tube_relative_pose(+Tool, +Target, -Dx, -Dy, -Roll), proved on the state: the held
-%   tool's pose numbers relative to the cube, from the tip's position and the roll
-%   (proprioception) and the cube's pose (camera).
-tube_relative_pose(Tool, Target, Dx, Dy, Roll) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, CX, CY, _, _),
-    Dx is TX - CX,
-    Dy is TY - CY.
-
-%   tube_pose_target(+Dx, +Dy, +Target, -X, -Y), proved on the state: where the pose
-%   numbers put the tip's centre in the world (its height is the skill's choice).
-tube_pose_target(Dx, Dy, Target, X, Y) :-
-    pose(Target, CX, CY, _, _),
-    X is CX + Dx,
-    Y is CY + Dy.
-
                  /*******************************
                  *     SIZING A NEW TOOL        *
                  *******************************/

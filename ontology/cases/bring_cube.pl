@@ -19,51 +19,19 @@ case_tool_class(bring_cube, hook_like).
 
 task_roles(bring_cube, cube1, lane1).
 case_goal(bring_cube, [at_goal(cube1, lane1)]).
-case_extra_objects(bring_cube, []).
-case_skills(bring_cube, [pick_up, position_tool, pull]).
 
-%   position_tool(T, B, L): move the held tool over the cube to a pose relative to it;
-%   pull(T, B, L): draw it back along -x towards the goal.
-innate_skill(bring_cube, position_tool,
-             action_model(position_tool, [T-tool, B-target, L-site],
-                          [holding(T), on_lane(B, L)],
-                          [spatial_of(T)],
-                          [spatial_of(T)])).
-innate_skill(bring_cube, pull,
-             action_model(pull, [T-tool, _B-target, L-site],
-                          [holding(T)],
-                          [],
-                          [on_lane(T, L), spatial_of(T)])).
+%   The lane, its perception, its task literal on_lane/2, the skills that work in it
+%   (position_tool, pull) and its geometry rules are the lane's, written once in
+%   ontology/apparatus/lane.pl and shared with the dislodge_cube case.
+case_apparatus(bring_cube, lane).
 
 learned_action_names(bring_cube, [name(pull, at_goal, pull_to_goal)]).
-tool_acts_when(bring_cube, held).
-
-%   The tool is always used on the lane, never tested by placing it elsewhere.
-untestable_literals(bring_cube, [on_lane(_, _)]).
 
                  /*******************************
                  *     STATE                    *
                  *******************************/
 
-primitive_predicate(lane_start/4).
-primitive_predicate(lane_length_m/2).
-primitive_predicate(lane_room_m/3).
-primitive_predicate(lane_goal/3).
-
-task_predicate(bring_cube, on_lane/2).
 task_predicate(bring_cube, at_goal/2).
-
-%   on_lane(?Object, ?Lane): an uncatalogued object (the cube) on the lane.
-on_lane(B, L) :-
-    lane_start(L, SX, SY, SZ),
-    lane_length_m(L, D),
-    lane_room_m(L, W, H),
-    pose(B, X, Y, Z, _),
-    \+ object_kind(B, _),
-    X >= SX,
-    X =< SX + D,
-    abs(Y - SY) =< W / 2,
-    abs(Z - SZ) =< H / 2.
 
 %   at_goal(?Object, ?Lane): its centre within goal_tolerance_m (L1, in the plane) of
 %   the goal: the benchmark's done() asks under 4 mm of L1 error.
@@ -72,19 +40,6 @@ at_goal(B, L) :-
     pose(B, X, Y, _, _),
     \+ object_kind(B, _),
     abs(X - GX) + abs(Y - GY) =< 0.004.
-
-%   tool_in_use(?Case, ?Tool), proved on the state: a held tool whose tip is in the
-%   lane's room has spatial literals.
-tool_in_use(bring_cube, Tool) :-
-    held(Tool),
-    lane_start(L, SX, SY, SZ),
-    lane_length_m(L, D),
-    lane_room_m(L, W, H),
-    tip_position(Tool, X, Y, Z),
-    X >= SX,
-    X =< SX + D,
-    abs(Y - SY) =< W / 2,
-    abs(Z - SZ) =< H / 2.
 
                  /*******************************
                  *     POSE                     *
@@ -128,81 +83,23 @@ geometry_default(bring_cube, dy_min, -0.05, 'smallest Dy keeping the handle insi
 geometry_default(bring_cube, arm_reach_x, 0.80, 'farthest x the Panda puts the butt end of a held tool low over the table: a 0.26 m handle reached 1.05 m (measured, see reach_definition)').
 geometry_default(bring_cube, dx_reach, 1.0, 'farthest prong centre the held tool reaches, minus the cube centre (1 m, no bound, when its handle is not known)').
 
-geometry_value(bring_cube, box_half, _, Target, _, V) :-
-    nonvar(Target),
-    size(Target, Sx, Sy, _),
-    pose(Target, _, _, _, Yaw),
-    V is (Sx * abs(cos(Yaw)) + Sy * abs(sin(Yaw))) / 2.
-geometry_value(bring_cube, prong_half, Tool, _, _, V) :-
-    nonvar(Tool),
-    (   hook_width_m(Tool, W)
-    ->  true
-    ;   handle_width_m(Tool, W)
-    ),
-    V is W / 2.
-geometry_value(bring_cube, lane_length, _, _, _, D) :-
-    lane_length_m(_, D).
-geometry_value(bring_cube, dx_max, _, Target, G, V) :-
-    nonvar(Target),
-    lane_start(L, SX, _, _),
-    lane_length_m(L, D),
-    pose(Target, X, _, _, _),
-    memberchk(prong_half=PH, G),
-    V is SX + D - X - PH.
-geometry_value(bring_cube, dx_min, _, Target, G, V) :-
-    nonvar(Target),
-    lane_start(_, SX, _, _),
-    pose(Target, X, _, _, _),
-    memberchk(prong_half=PH, G),
-    V is SX - X + PH.
-
-geometry_value(bring_cube, handle_half, Tool, _, _, V) :-
-    nonvar(Tool),
-    handle_width_m(Tool, W),
-    V is W / 2.
-geometry_value(bring_cube, dy_max, _, Target, G, V) :-
-    nonvar(Target),
-    lane_start(L, _, LY, _),
-    lane_room_m(L, W, _),
-    pose(Target, _, Y, _, _),
-    memberchk(handle_half=HH, G),
-    memberchk(wall_clearance=C, G),
-    V is LY - Y + W / 2 - HH - C.
-geometry_value(bring_cube, dy_min, _, Target, G, V) :-
-    nonvar(Target),
-    lane_start(L, _, LY, _),
-    lane_room_m(L, W, _),
-    pose(Target, _, Y, _, _),
-    memberchk(handle_half=HH, G),
-    memberchk(wall_clearance=C, G),
-    V is LY - Y - W / 2 + HH + C.
-
 %   How far the held tool reaches (reach_definition/3, read only before a tool is
 %   tried in a harder task): the prong's centre at most the handle's length beyond
 %   arm_reach_x.
 reach_definition(bring_cube, bring_pose(Dx, _Dy, _Roll), [Dx =< dx_reach]).
 
-geometry_value(bring_cube, dx_reach, Tool, Target, G, V) :-
-    nonvar(Tool),
-    nonvar(Target),
-    handle_length_m(Tool, Len),
-    pose(Target, X, _, _, _),
-    memberchk(arm_reach_x=R, G),
-    V is R + Len - X.
+%   box_half, prong_half, lane_length, dx_max, dx_min, handle_half, dy_max, dy_min and
+%   dx_reach come from the facts by the lane's geometry_value/6 rules
+%   (ontology/apparatus/lane.pl).
 
-%   The held tool's pose relative to the cube (proprioception and camera).
+%   The held tool's pose relative to the cube (proprioception and camera:
+%   ontology/world.pl's tip_relative_pose/5).
 relative_pose(bring_cube, Tool, Target, _, bring_pose(Dx, Dy, Roll)) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, X, Y, _, _),
-    Dx is TX - X,
-    Dy is TY - Y.
+    tip_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 %   Where a pose puts the prong's centre (x, y) and the roll.
 pose_target(bring_cube, bring_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
-    pose(Target, BX, BY, _, _),
-    X is BX + Dx,
-    Y is BY + Dy.
+    tip_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *

@@ -137,16 +137,10 @@ geometry_default(high_object, dx_reach, 1.0, 'deepest prong centre the held tool
 %   The cube's extent along x from its perceived size and heading.
 geometry_value(high_object, cube_half, _, Target, _, V) :-
     nonvar(Target),
-    size(Target, Sx, Sy, _),
-    pose(Target, _, _, _, Yaw),
-    V is (Sx * abs(cos(Yaw)) + Sy * abs(sin(Yaw))) / 2.
+    half_extent_x(Target, V).
 geometry_value(high_object, prong_half, Tool, _, _, V) :-
     nonvar(Tool),
-    (   hook_width_m(Tool, W)
-    ->  true
-    ;   handle_width_m(Tool, W)
-    ),
-    V is W / 2.
+    prong_half_m(Tool, V).
 geometry_value(high_object, dx_max, _, Target, G, V) :-
     nonvar(Target),
     shelf_top(S, FX, _, _),
@@ -183,17 +177,11 @@ geometry_value(high_object, dx_reach, Tool, Target, G, V) :-
 
 %   The held tool's pose relative to the cube (proprioception and camera).
 relative_pose(high_object, Tool, Target, _, over_pose(Dx, Dy, Roll)) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, X, Y, _, _),
-    Dx is TX - X,
-    Dy is TY - Y.
+    tip_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 %   Where a pose puts the prong's centre (x, y) and the roll.
 pose_target(high_object, over_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
-    pose(Target, BX, BY, _, _),
-    X is BX + Dx,
-    Y is BY + Dy.
+    tip_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *

@@ -103,11 +103,7 @@ geometry_default(hook, dx_reach, 1.0, 'deepest prong centre the held tool reache
 %   far end, relative to the cube.
 geometry_value(hook, prong_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
-    (   hook_width_m(Tool, W)
-    ->  true
-    ;   handle_width_m(Tool, W)
-    ),
-    V is W / 2.
+    prong_half_m(Tool, V).
 geometry_value(hook, handle_half, Tool, _Target, _G, V) :-
     nonvar(Tool),
     handle_width_m(Tool, W),
@@ -147,16 +143,16 @@ geometry_value(hook, dx_reach, Tool, Target, G, V) :-
     tube_dx_reach(Tool, Target, L, PH, Loss, V).
 
 %   relative_pose(?Case, ?Tool, ?Target, +Geometry, -Pose), proved on the state: the
-%   held tool's pose relative to the cube (the tube's tube_relative_pose/5: the tip's
-%   position and the roll against the cube's pose).
+%   held tool's pose relative to the cube (ontology/world.pl's tip_relative_pose/5: the
+%   tip's position and the roll against the cube's pose).
 relative_pose(hook, Tool, Target, _G, hook_pose(Dx, Dy, Roll)) :-
-    tube_relative_pose(Tool, Target, Dx, Dy, Roll).
+    tip_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 %   pose_target(?Case, +Pose, ?Target, +Geometry, -World), proved on the state: where
 %   the pose puts the tool in the world, tip(X, Y, Roll): the prong centre's world X
 %   and Y (its height is the skill's choice) and the roll.
 pose_target(hook, hook_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
-    tube_pose_target(Dx, Dy, Target, X, Y).
+    tip_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *

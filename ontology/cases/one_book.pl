@@ -131,16 +131,10 @@ geometry_default(one_book, dx_reach, 1.0, 'deepest prong centre the held tool re
 %   The book's extent along x from its perceived size and heading.
 geometry_value(one_book, book_half, _, Target, _, V) :-
     nonvar(Target),
-    size(Target, Sx, Sy, _),
-    pose(Target, _, _, _, Yaw),
-    V is (Sx * abs(cos(Yaw)) + Sy * abs(sin(Yaw))) / 2.
+    half_extent_x(Target, V).
 geometry_value(one_book, prong_half, Tool, _, _, V) :-
     nonvar(Tool),
-    (   hook_width_m(Tool, W)
-    ->  true
-    ;   handle_width_m(Tool, W)
-    ),
-    V is W / 2.
+    prong_half_m(Tool, V).
 geometry_value(one_book, dx_max, _, Target, G, V) :-
     nonvar(Target),
     bookends_front(E, FX, _, _),
@@ -173,17 +167,11 @@ geometry_value(one_book, dx_reach, Tool, Target, G, V) :-
 
 %   The held tool's pose relative to the book (proprioception and camera).
 relative_pose(one_book, Tool, Target, _, book_pose(Dx, Dy, Roll)) :-
-    tip_position(Tool, TX, TY, _),
-    tool_roll(Tool, Roll),
-    pose(Target, X, Y, _, _),
-    Dx is TX - X,
-    Dy is TY - Y.
+    tip_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 %   Where a pose puts the prong's centre (x, y) and the roll.
 pose_target(one_book, book_pose(Dx, Dy, Roll), Target, _, tip(X, Y, Roll)) :-
-    pose(Target, BX, BY, _, _),
-    X is BX + Dx,
-    Y is BY + Dy.
+    tip_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *

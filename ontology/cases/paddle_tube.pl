@@ -110,12 +110,13 @@ geometry_value(paddle_tube, dx_reach, Tool, Target, G, V) :-
     tube_dx_reach(Tool, Target, L, BH, Loss, V).
 
 %   relative_pose/5, pose_target/5, proved on the state: the blade's centre and the
-%   roll against the cube's pose (the tube's rules).
+%   roll against the cube's pose (ontology/world.pl's tip_relative_pose/5,
+%   tip_pose_target/5).
 relative_pose(paddle_tube, Tool, Target, _G, paddle_pose(Dx, Dy, Roll)) :-
-    tube_relative_pose(Tool, Target, Dx, Dy, Roll).
+    tip_relative_pose(Tool, Target, Dx, Dy, Roll).
 
 pose_target(paddle_tube, paddle_pose(Dx, Dy, Roll), Target, _G, tip(X, Y, Roll)) :-
-    tube_pose_target(Dx, Dy, Target, X, Y).
+    tip_pose_target(Dx, Dy, Target, X, Y).
 
                  /*******************************
                  *     SIZING A NEW TOOL        *

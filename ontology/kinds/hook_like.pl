@@ -119,6 +119,17 @@ hook_angle(T, Value) :-
 side_value(left).
 side_value(right).
 
+%   prong_half_m(+Tool, -Half), proved on the state: half the prong's thickness along
+%   the handle, from the catalogue's hook_width_m/2, or, for a tool that has no such
+%   fact, its handle_width_m/2: the prong_half geometry parameter of the hook-like
+%   cases.
+prong_half_m(Tool, Half) :-
+    (   hook_width_m(Tool, W)
+    ->  true
+    ;   handle_width_m(Tool, W)
+    ),
+    Half is W / 2.
+
 %   new_tool_kind(?Class, +Structural, -Kind): a new tool with the structural literals
 %   Structural is sized (geometry_clp:solve_size/5) as a Kind: a stick when they say
 %   so, else a hook.

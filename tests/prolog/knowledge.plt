@@ -147,17 +147,17 @@ test(apparatus_is_its_own_module_seen_by_its_cases, [setup(load_default_ontology
 
 %   A case that does not name the apparatus cannot call its helpers; one that does can.
 test(case_calls_apparatus_only_when_it_names_it,
-     [ setup(( write_temp_ontology_("case(peek_ap).\nlooks(X) :- tube_relative_pose(X, c, _, _, _).\n", F),
-               write_temp_ontology_("case(uses_ap).\ncase_apparatus(uses_ap, tube).\nlooks(X) :- tube_relative_pose(X, c, _, _, _).\n", G) )),
+     [ setup(( write_temp_ontology_("case(peek_ap).\nlooks(X) :- tube_dx_max(c, X, _).\n", F),
+               write_temp_ontology_("case(uses_ap).\ncase_apparatus(uses_ap, tube).\nlooks(X) :- tube_dx_max(c, X, _).\n", G) )),
        cleanup(( delete_file(F), delete_file(G), kb_reset_all, load_default_ontology )) ]) :-
     load_default_ontology,
     catch(load_ontology(F), E, true),
-    assertion(E = error(existence_error(procedure, tube_relative_pose/5), file(F, 2, _, _))),
+    assertion(E = error(existence_error(procedure, tube_dx_max/3), file(F, 2, _, _))),
     load_ontology(G),
     kb_module_scope(case_uses_ap, Scope),
     assertion(Scope == [case_uses_ap, apparatus_tube, kb]),
-    assertion(kb_module_prove(case_uses_ap, looks(t),
-                              [tip_position(t, 1.0, 0.0, 0.0), tool_roll(t, 0.0),
+    assertion(kb_module_prove(case_uses_ap, looks(0.005),
+                              [tube_mouth(tube1, 0.6, 0.0, 0.0), tube_length_m(tube1, 0.3),
                                pose(c, 0.9, 0.0, 0.0, 0.0)])).
 
 %   A kind's root class need not be named like its kind (file): a case naming the class

@@ -100,3 +100,52 @@ def test_maniskill_bench_help_explains_every_argument():
                    "--record"):
         assert option in proc.stdout
     assert "bench/results/maniskill.json" in proc.stdout
+
+
+def test_the_robotoolbench_row_counts_every_demonstration_and_the_whole_tool(tmp_path):
+    """A drawn world's run plays the demonstration once per checked draw and once for
+    itself (redraws + 2), and a catalogued tool's dimensions are its catalogue's with
+    the drawn fields over them (the drawn world keeps only what it redrew)."""
+    import robotoolbench
+
+    run = tmp_path / "run"
+    run.mkdir()
+    summary = {"case": "bring_cube", "world_seed": 3,
+               "drawn_world": {"seed": 3, "redraws": 2,
+                               "objects": {"hook_a1": {"handle_length": 0.31}}},
+               "trials": {"use": {"trials": 6}}, "create": {"variant": "benchmark"}}
+    (run / "summary.json").write_text(json.dumps(summary))
+    trial = {"variant": "benchmark", "tool": "hook_a1",
+             "verdict": {"quantity": "reward", "value": 0.995}}
+    (run / "trials.jsonl").write_text(json.dumps(trial) + "\n")
+    row = robotoolbench.world_row(run)
+    assert row["trials"]["demonstration"] == 4 and row["tool_kind"] == "catalogued"
+    dims = row["tool_dimensions"]
+    assert dims["handle_length"] == 0.31 and "hook_length" in dims
+
+
+def test_robotoolbench_refuses_a_task_it_has_no_published_figures_for(tmp_path, monkeypatch,
+                                                                      capsys):
+    """A misspelled ``[benchmark] task`` showed "n/a" in the table, silently."""
+    import shutil
+
+    import robotoolbench
+
+    from creative_py.world_files import WORLDS_ROOT
+
+    shutil.copytree(WORLDS_ROOT / "bring_cube", tmp_path / "bring_cube")
+    case = tmp_path / "bring_cube" / "case.toml"
+    case.write_text(case.read_text().replace('task = "BringCube"', 'task = "BringCub"'))
+    message = (f"{case}: field 'benchmark.task': 'BringCub' is no RoboToolBench task (did "
+               f"you mean 'BringCube'?); tasks: {', '.join(robotoolbench.PUBLISHED)}")
+    with pytest.raises(ValueError) as info:
+        robotoolbench.benchmark_cases(tmp_path)
+    assert str(info.value) == message
+    real = robotoolbench.benchmark_cases
+    monkeypatch.setattr(robotoolbench, "benchmark_cases", lambda: real(tmp_path))
+    monkeypatch.setattr(sys, "argv", ["robotoolbench.py", "--out", str(tmp_path / "o.json")])
+    assert robotoolbench.main() == 2
+    out, err = capsys.readouterr()
+    assert (out, err) == ("", f"error: {message}\n")
+    assert not (tmp_path / "o.json").exists()
+    assert set(real().values()) <= set(robotoolbench.PUBLISHED)    # the shipped cases

@@ -183,7 +183,7 @@ def test_the_panda_pulls_the_cube_out_with_the_short_prong_hook_as_the_baxter_do
 
 
 @pytest.mark.sim
-def test_the_panda_pulls_the_cube_through_the_long_tube_with_a_created_hook(monkeypatch):
+def test_the_panda_pulls_the_cube_through_the_long_tube_with_a_created_hook():
     """The Panda's created hook of the seed-0 run (a 0.6 m handle) pulls the cube out of
     the long tube in the evaluations it failed at 8 physics steps per IK waypoint (the
     arm shook the tool sideways and walked the cube off the prong); the hook world's
@@ -191,13 +191,13 @@ def test_the_panda_pulls_the_cube_through_the_long_tube_with_a_created_hook(monk
     from creative_py.bridge import Engine
     from creative_py.case import get_case
     from creative_py.kinds import spec_from_dict
+    from dataclasses import replace
+
     from creative_py.learning.poses import pose_resolver
-    from creative_py.robots import ROBOT_ENV
     from creative_py.simulator import backend_for
     from creative_py.simulator.trial import run_trial
 
-    monkeypatch.setenv(ROBOT_ENV, "panda")
-    m = get_case("hook")
+    m = replace(get_case("hook"), robot="panda")  # what --robot panda makes of the case
     spec = spec_from_dict({"kind": "hook", "name": "hook_new1", "handle_length": 0.6,
                            "handle_width": 0.009, "hook_length": 0.0375, "hook_width": 0.014,
                            "hook_side": "right", "hook_angle_deg": 90, "grip_offset": 0.04,
@@ -257,16 +257,15 @@ def test_a_placement_for_an_unknown_robot_is_one_line(tmp_path):
         load_world(read_manifest(tmp_path))
 
 
-def test_a_world_places_the_arm_it_runs(monkeypatch):
+def test_a_world_places_the_arm_it_runs():
+    from dataclasses import replace
+
     from creative_py.backends.pybullet import load_world
     from creative_py.case import get_case
-    from creative_py.robots import ROBOT_ENV
 
-    monkeypatch.delenv(ROBOT_ENV, raising=False)
     baxter = load_world(get_case("hook")).scene.robot
     assert baxter.profile.name == "baxter" and baxter.base is None
-    monkeypatch.setenv(ROBOT_ENV, "panda")
-    panda = load_world(get_case("hook")).scene.robot
+    panda = load_world(replace(get_case("hook"), robot="panda")).scene.robot
     assert panda.profile.name == "panda" and panda.base[0] == (0.35, -0.75, -0.2)
     assert panda.start == baxter.start  # the start poses are the world's own
 
@@ -306,50 +305,56 @@ def test_the_approach_axis_becomes_the_tool_frames_z(axis, direction):
 
 
 # ------------------------------------------------- a run's robot does not outlive it
-def test_a_command_leaves_no_robot_choice_behind(monkeypatch):
-    """`creative trial --robot panda` sets the profile for the backends; in-process (a
-    test, a notebook) the next world loaded reads its own case's robot again."""
-    import os
+def _loads_worlds_for(monkeypatch) -> list:
+    """Spy on the pybullet backend's load_world: return the list of the robot profile
+    name of each world it loads."""
+    import creative_py.backends.pybullet as pybullet_backend
 
+    loaded, real = [], pybullet_backend.load_world
+
+    def spy(manifest, *args, **kwargs):
+        world = real(manifest, *args, **kwargs)
+        loaded.append(world.scene.robot.profile.name)
+        return world
+
+    monkeypatch.setattr(pybullet_backend, "load_world", spy)
+    return loaded
+
+
+def test_a_command_passes_its_robot_to_the_backend_and_no_further(monkeypatch):
+    """`creative trial --robot panda` builds the Panda's world; in-process (a test, a
+    notebook) the next command and the next world loaded read their own case's robot
+    (the choice travels in the command's manifest, nowhere else)."""
     from typer.testing import CliRunner
 
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import get_case
     from creative_py.cli import app
-    from creative_py.robots import ROBOT_ENV
 
-    monkeypatch.delenv(ROBOT_ENV, raising=False)
+    loaded = _loads_worlds_for(monkeypatch)
     result = CliRunner().invoke(app, ["trial", "hook", "--robot", "panda", "--list"])
     assert result.exit_code == 0, result.output
-    assert ROBOT_ENV not in os.environ
-    monkeypatch.setenv(ROBOT_ENV, "ur5")
-    CliRunner().invoke(app, ["trial", "hook", "--robot", "panda", "--list"])
-    assert os.environ[ROBOT_ENV] == "ur5"
+    result = CliRunner().invoke(app, ["trial", "hook", "--list"])
+    assert result.exit_code == 0, result.output
+    assert loaded == ["panda", "baxter"]
+    assert load_world(get_case("hook")).scene.robot.profile.name == "baxter"
 
 
-def test_a_run_gives_the_robot_choice_back():
-    """run_case and resume_run set the profile for the run and give the environment
-    back its value when they end, by a return or an error."""
-    import os
+def test_a_run_builds_its_robot_and_the_next_world_its_own():
+    """A Baxter run's world, then a Panda run's, then the case's world in the same
+    process: each gets its own arm (--robot is the run's manifest's robot, which
+    load_world reads; nothing of a run outlives it)."""
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import get_case
+    from creative_py.learning.options import RunOptions
+    from creative_py.learning.run import _checked_world
 
-    from creative_py.learning.run import resume_run, run_case
-    from creative_py.robots import ROBOT_ENV, keeps_robot_choice
+    def run_arm(**options) -> tuple[str, str]:
+        _, world, _ = _checked_world("hook", RunOptions(phase="use", **options), None, None)
+        return world.manifest.robot, world.scene.robot.profile.name
 
-    assert run_case.__wrapped__ and resume_run.__wrapped__
-
-    @keeps_robot_choice
-    def chooses(name, fail=False):
-        os.environ[ROBOT_ENV] = name
-        if fail:
-            raise RuntimeError(name)
-        return name
-
-    saved = os.environ.pop(ROBOT_ENV, None)
-    try:
-        assert chooses("panda") == "panda" and ROBOT_ENV not in os.environ
-        os.environ[ROBOT_ENV] = "baxter"
-        with pytest.raises(RuntimeError):
-            chooses("panda", fail=True)
-        assert os.environ[ROBOT_ENV] == "baxter"
-    finally:
-        os.environ.pop(ROBOT_ENV, None)
-        if saved is not None:
-            os.environ[ROBOT_ENV] = saved
+    assert run_arm() == ("baxter", "baxter")
+    assert run_arm(robot="panda") == ("panda", "panda")
+    assert load_world(get_case("hook")).scene.robot.profile.name == "baxter"
+    assert get_case("hook").robot == "baxter"
+    assert run_arm() == ("baxter", "baxter")

@@ -26,6 +26,7 @@ from creative_py.case import read_manifest
 from creative_py.records.trial import verdict_lines
 from creative_py.simulator import TRIAL_OUTCOMES, Episode, Observation, SkillOutcome, Verdict
 from creative_py.simulator.trial import play_trial, run_trial, trial_outcome
+from creative_py.simulator.types import NonFiniteState
 
 MANIFEST = """\
 id = "loopcase"
@@ -261,6 +262,18 @@ def test_an_unreachable_skill_with_nothing_to_measure_is_its_status(backend):
         run_trial(backend.world, "stick1", "easy", 1)
 
 
+def test_an_oracle_that_meets_a_non_finite_state_makes_the_trial_invalid(backend):
+    """A body only the oracle reads (nobody tracks it, no motion watches it) thrown to
+    NaN: the oracle raises NonFiniteState and the trial is invalid, not a crash of the
+    run or a failure the learner would label."""
+    backend.episode = ScriptedEpisode(
+        measure_error=NonFiniteState("non-finite pose of cubes3: (nan, 0.1, 0.015)"))
+    result = run_trial(backend.world, "stick1", "easy", 1)
+    assert (result.outcome, result.reason) == (
+        "invalid", "non-finite pose of cubes3: (nan, 0.1, 0.015)")
+    assert result.verdict is None
+
+
 def test_a_non_finite_true_pose_makes_the_trial_invalid(backend):
     backend.episode = ScriptedEpisode(truth={"box1": (math.nan, 0.0, 0.8, 0.0)})
     result = run_trial(backend.world, "stick1", "easy", 1)
@@ -376,4 +389,23 @@ def test_the_demonstration_is_judged_by_the_trial_s_rule(backend):
         ends={"place": SkillOutcome("blocked", "place: gripper lagged", GUARD)})
     with pytest.raises(DemonstrationFailed, match="the trainer's skill place ended blocked "
                                                   "in the physics: place: gripper lagged"):
+        run_demonstration(backend.world, pose_target=len)
+
+
+def test_the_demonstration_is_played_by_the_trial_s_loop(backend):
+    """The demonstration runs the trial's skill loop (``play_trial``): its steps in
+    order with the robot observing before and after each, the oracle asked once, and a
+    non-finite true pose making it ``invalid``, refused with the reason, as any trial."""
+    from creative_py.learning.tool_use import DemonstrationFailed, run_demonstration
+
+    backend.world.variation = ""
+    backend.episode = ScriptedEpisode()
+    demo = run_demonstration(backend.world, pose_target=len)
+    assert [e[0] for e in backend.episode.log] == [
+        "observe", "run_skill", "observe", "run_skill", "observe", "run_skill", "observe",
+        "verdict", "closed"]
+    assert [s.facts_before for s in demo.steps[1:]] == [s.facts_after for s in demo.steps[:-1]]
+    backend.episode = ScriptedEpisode(truth={"box1": (float("nan"), 0.0, 0.8, 0.0)})
+    with pytest.raises(DemonstrationFailed, match="did not reach the goal in the physics: "
+                                                  "non-finite pose of box1"):
         run_demonstration(backend.world, pose_target=len)

@@ -380,3 +380,105 @@ def test_a_long_spec_is_shown_by_its_start_and_end(tmp_path):
     assert line.startswith("error: hook spec 'handle_length=((((") and len(line) < 400, line
     assert "handle_length cannot be '((((" in line
     assert not (tmp_path / "t").exists()
+
+
+# ---------------------------------------------------------------- options beyond bounds
+
+# (world folder, file, text, replacement, the error after "<file>: ") : each loaded
+# without complaint (its numbers within bounds) and failed mid-run, with a traceback
+# (KeyError, ValueError, ZeroDivisionError) or a line naming no file; or was taken
+# silently (a box whose corners are swapped).
+WORLD_OPTIONS = [
+    ("bring_cube", "tasks.toml", "goal = [0.6, 0.0, 0.035]", "goal = [0.6, 0.0]",
+     "field 'oracle.start': must be a list of 2 numbers (m), as many as 'goal', got "
+     "[1, 0, 0.035]"),
+    ("bring_cube", "tasks.toml", "goal = [0.6, 0.0, 0.035]", "goal = [1.0, 0.0, 0.035]",
+     "field 'oracle.start': equals 'goal', so the reward's scale |start - goal|_1 is 0 "
+     "(move them apart or set 'scale')"),
+    ("clean_table", "tasks.toml", '"cubes8"]', '"cubes8", "cubes9"]',
+     "field 'oracle.objects': 'cubes9' is no object of the scene (did you mean 'cubes'?); "
+     "objects: cubes, cubes1, cubes2, cubes3, cubes4, cubes5, cubes6, cubes7, cubes8, "
+     "goal1, rake_c1, table1"),
+    ("clean_table", "tasks.toml", '"cubes8"]', '"cubes8", "goal1"]',
+     "field 'oracle.objects': 'goal1': the episode records no start of it (it is neither "
+     "perceived nor a movable body)"),
+    ("clean_table", "tasks.toml", "centre = [1.1, 0.0]", "centre = [1.1, 0.0, 0.0, 0.0]",
+     "field 'oracle.centre': must be a list of 1 or 2 or 3 numbers (m), got "
+     "[1.1, 0, 0, 0]"),
+    ("one_book", "tasks.toml", '["book1",', '["bok1",',
+     "field 'oracle.neighbours': 'bok1' is no object of the scene (did you mean "
+     "'book1'?); objects: book1, book2, book3, book4, book5, bookends1, hook_a1, table1"),
+    ("one_book", "tasks.toml", '["book1",', '["book3",',
+     "field 'oracle.neighbours': names the object itself ('book3')"),
+    ("high_object", "tasks.toml", 'box_min = ["box_x - 0.175", -0.585, 0.0225]',
+     'box_min = ["box_x + 0.3", -0.585, 0.0225]',
+     "field 'oracle.box_min': along x (0.85) must lie below 'box_max' (0.725) (variant "
+     "standard, location 1)"),
+    ("high_object", "tasks.toml", 'start = ["shelf_front + 0.10", 0.0, 0.925]',
+     'start = ["box_x", 0.0, 0.08625]',
+     "field 'oracle.start': lies at the box's centre, so the reward's scale "
+     "|start - centre|_1 is 0 (variant standard, location 1)"),
+    ("dislodge_cube", "tasks.toml", 'axes = ["x", "y"]', 'axes = ["x", "w"]',
+     "field 'oracle.axes': must be x, y or z, got 'w'"),
+    ("dislodge_cube", "tasks.toml", 'near = ["pipe_x - 0.2", 0.01]', 'near = ["pipe_x - 0.2"]',
+     "field 'oracle.near': must be a list of 2 numbers (m), one per axis of 'axes', got "
+     "[0.9] (variant standard, location 1)"),
+    ("hook_tube", "tasks.toml", 'axis = "x"', 'axis = "X"',
+     "field 'oracle.axis': must be x, y or z, got 'X'"),
+    ("hook_tube", "tasks.toml", 'limit = "tube1.mouth_x"', "limit = [0.5, 0.6]",
+     "field 'oracle.limit': must be a number, got a list [0.5, 0.6]"),
+    ("wedge_door", "tasks.toml", 'body = "target"', 'body = "door2"',
+     "field 'oracle.body': 'door2' is no object of the scene (did you mean 'door1'?); "
+     "objects: door1, floor1, ground1, wedge_a2"),
+    ("clean_table", "case.toml", "direction = [1.0, 0.0]", "direction = [1.0]",
+     "field 'skill[2].options.direction': must be a list of 2 numbers, got [1]"),
+    ("clean_table", "case.toml", "direction = [1.0, 0.0]", "direction = [0.0, 0.0]",
+     "field 'skill[2].options.direction': must not be zero, got [0, 0]"),
+    ("clean_table", "case.toml", "via = [0.16, 0.0]", "via = [0.16, 0.0, 0.3]",
+     "field 'skill[1].options.via': must be a list of 2 numbers, got [0.16, 0, 0.3]"),
+    ("clean_table", "case.toml", "via = [0.16, 0.0]", "via = [0.16, 0.0], slide_from = [0.1]",
+     "field 'skill[1].options.slide_from': must be a list of 2 numbers, got [0.1]"),
+    ("clean_table", "case.toml", "ramp = 0.10,", "ramp = [0.10, 0.2],",
+     "field 'skill[2].options.ramp': must be a number, got a list [0.1, 0.2]"),
+    ("wedge_door", "case.toml", "retreat = [0.45, -0.75, 0.10]", "retreat = [0.45, -0.75]",
+     "field 'skill[1].options.retreat': must be a list of 3 numbers, got [0.45, -0.75]"),
+    # documented as +-pi/2 or 0, bounded by +-2 pi: 0.3 carried the prong neither flat
+    # nor down
+    ("high_object", "case.toml", "flat_roll = 1.5707963267948966", "flat_roll = 0.3",
+     "field 'skill[1].options.flat_roll': must be -pi/2, 0 (chosen by the room) or pi/2 "
+     "(the prong carried flat), got 0.3 rad"),
+    ("high_object", "case.toml", "flat_roll = 1.5707963267948966", "flat_roll = 4.71238898",
+     "field 'skill[1].options.flat_roll': must be -pi/2, 0 (chosen by the room) or pi/2 "
+     "(the prong carried flat), got 4.71239 rad"),
+]
+
+
+@pytest.mark.parametrize("folder, file, old, new, message", WORLD_OPTIONS,
+                         ids=[f"{c[0]} {c[3][:40]}" for c in WORLD_OPTIONS])
+def test_an_option_that_cannot_work_is_refused_when_the_world_loads(
+        tmp_path, folder, file, old, new, message):
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import manifest_of_folder
+    from creative_py.world_files import WorldFileError
+
+    world = tmp_path / folder
+    shutil.copytree(WORLDS_ROOT / folder, world)
+    text = (world / file).read_text()
+    assert old in text, old
+    (world / file).write_text(text.replace(old, new, 1))
+    with pytest.raises(WorldFileError) as info:
+        load_world(manifest_of_folder(world), world)
+    assert str(info.value) == f"{world / file}: {message}"
+
+
+@pytest.mark.parametrize("row", [WORLD_OPTIONS[2], WORLD_OPTIONS[16]],
+                         ids=["an oracle's object", "a skill's list"])
+def test_an_option_that_cannot_work_stops_the_trial_command_in_one_line(tmp_path, row):
+    """Before: a KeyError traceback (the oracle's) and a ValueError traceback (the
+    skill's), after the physics had run."""
+    folder, file, old, new, message = row
+    world = tmp_path / folder
+    shutil.copytree(WORLDS_ROOT / folder, world)
+    (world / file).write_text((world / file).read_text().replace(old, new, 1))
+    proc = creative("trial", "clean_table", "--world", str(world), "--tool", "rake_c1")
+    assert refused(proc) == f"error: {world / file}: {message}"

@@ -96,7 +96,7 @@ class LoadMonitor:
                          "step": ep.steps}
 
     def result(self) -> Optional[dict[str, Any]]:
-        """Return the load as JSON-ready data (the pybullet ``ToolLoad.to_dict`` fields),
+        """Return the load as JSON-ready data (``creative_py.simulator.load.ToolLoad.to_dict``'s fields),
         with zeros when the tool touched nothing."""
         contact = [s for s in self.samples if s > 0]
         best = self.best or {"max_force_n": 0.0, "point": None, "force": None,

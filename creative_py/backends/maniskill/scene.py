@@ -39,7 +39,7 @@ and the field.
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Optional, Sequence
 
@@ -163,16 +163,6 @@ class World(CatalogueWorld):
     def with_locations(self, tables: Sequence[Mapping[str, Any]], variation: str) -> "World":
         """Refuse as :meth:`location_values` (ValueError)."""
         raise self._no_drawn_worlds()
-
-    def with_tool(self, spec: Any, urdf: Optional[Path] = None) -> "World":
-        """Return this world with one more available object, a created tool: its body
-        built from ``spec``'s boxes (the URDF, checked to exist, is kept for the record),
-        the friction of the catalogue's first object, mass from the spec."""
-        if urdf is not None and not Path(urdf).is_file():
-            raise FileNotFoundError(f"{urdf}: tool URDF not found")
-        friction = next(iter(self.items.values())).friction
-        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
-        return replace(self, items={**self.items, spec.name: item})
 
     def listing(self) -> dict[str, Any]:
         """Return JSON-ready data: objects, locations (seeds), variants, pose, demonstration."""

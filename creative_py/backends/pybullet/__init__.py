@@ -22,10 +22,11 @@ Modules, from the data to the physics:
 
 ``types``       the boundary's value types, re-exported (:mod:`creative_py.simulator.types`)
 ``world``       a world folder read for a manifest (World, load_world)
-``scene``       ``[[body]]`` tables and scene expressions; body kinds (box, tube, shelf,
-                door, lane, standing_shelf, open_box, bookends)
-``tools``       tool kinds (hook-like, block): start, grasp, motion, proprioception,
-                catalogue facts
+``scene``       ``[[body]]`` tables and scene expressions; the body kinds of
+                ``BODY_KINDS`` (box, tube, shelf, door, lane, sphere, zone, scatter,
+                standing_shelf, open_box, bookends)
+``tools``       how a tool kind is held (by a handle, from the top): start, grasp,
+                motion, proprioception, catalogue facts
 ``primitives``  the skill primitives a manifest binds by name
 ``oracles``     the success oracles a world's ``tasks.toml`` configures
 ``episode``     one scene driven skill by skill (open_episode, Episode, tool_rests)

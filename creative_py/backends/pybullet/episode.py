@@ -103,7 +103,7 @@ class Episode:
     ``watch`` (bodies whose blow-up ends a motion), ``state`` (what a skill leaves for
     the next, e.g. the tool's attitude) and ``records`` (what an oracle reads).
     ``render_time_s`` is the wall time the cameras' frames took (s), ``tool_load`` the
-    :class:`~creative_py.backends.pybullet.loads.ToolLoad` of the last tool action.
+    :class:`~creative_py.simulator.load.ToolLoad` of the last tool action.
     """
 
     render_time_s: float = 0.0
@@ -501,7 +501,7 @@ class Episode:
     def measured_load(self) -> tuple[float, dict[str, Any] | None]:
         """Return the contact load on the tool during the last tool action: the largest
         summed normal force over one physics step (N) and the load as data
-        (:meth:`~creative_py.backends.pybullet.loads.ToolLoad.to_dict`)."""
+        (:meth:`~creative_py.simulator.load.ToolLoad.to_dict`)."""
         return self.tool_load.max_force_n, self.tool_load.to_dict()
 
     def close(self) -> None:

@@ -28,104 +28,18 @@ Units: newtons, metres, seconds, the tool frame unless a name says ``world``.
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass
-from typing import Any, Optional
+from dataclasses import asdict
+from typing import Any
 
 import numpy as np
 import pybullet as pb
 
 from creative_py.backends.pybullet.bodies import frame_pose
-from creative_py.simulator.load import (LOAD_WINDOW_S, ROBUST_PERCENTILE, robust_force,
-                                        samples_per_window)
+from creative_py.simulator.load import (LOAD_WINDOW_S, ROBUST_PERCENTILE, ToolLoad,
+                                        robust_force, samples_per_window)
 
 __all__ = ["LOAD_WINDOW_S", "ROBUST_PERCENTILE", "ToolLoad", "ToolLoadMonitor",
            "contact_wrench"]
-
-
-@dataclass(frozen=True)
-class ToolLoad:
-    """The task's contact load on a tool during its action (the tool against the
-    case's target).
-
-    Attributes
-    ----------
-    max_force_n : float
-        The largest sum over one physics step of the normal forces of the tool's
-        contacts with the target, newtons (0.0 when the tool did not touch it).
-    point : tuple of float or None
-        Where it acted: the contacts' centroid weighted by normal force, tool frame,
-        metres (None without contact).
-    force : tuple of float or None
-        The summed contact force vector of that step (normal and friction), tool frame,
-        newtons.
-    grasp_point : tuple of float or None
-        The gripper frame's origin in the tool frame at that step, metres (None when the
-        tool was not held: a placed block).
-    contacts : int
-        Contact points of that step.
-    bodies : tuple of str
-        The names of the bodies whose contacts are the load (the target; empty
-        without contact).
-    step : int
-        The physics step (of the episode) at which it happened.
-    steps : int
-        The physics steps watched (the length of the tool action).
-    robust_force_n : float
-        The :data:`ROBUST_PERCENTILE` th percentile of the summed normal force
-        averaged over each :data:`LOAD_WINDOW_S` of the action, over the windows with
-        contact, newtons (0.0 without contact): the force the strength check uses,
-        the peak being a contact spike.
-    contact_steps : int
-        The steps (or sensor samples) with contact.
-    impulse_ns : float
-        The summed normal force integrated over the action, newton seconds.
-    other_bodies : tuple of str
-        What else the tool touched during the action, not counted in the load, sorted.
-    window_s : float
-        The window the robust force averages over, seconds (0.0 for a load recorded
-        before windows: its robust force is the per-step percentile).
-    """
-
-    max_force_n: float = 0.0
-    point: Optional[tuple[float, float, float]] = None
-    force: Optional[tuple[float, float, float]] = None
-    grasp_point: Optional[tuple[float, float, float]] = None
-    contacts: int = 0
-    bodies: tuple[str, ...] = ()
-    step: int = 0
-    steps: int = 0
-    robust_force_n: float = 0.0
-    contact_steps: int = 0
-    impulse_ns: float = 0.0
-    other_bodies: tuple[str, ...] = ()
-    window_s: float = 0.0
-
-    def to_dict(self) -> dict[str, Any]:
-        """Return the load as JSON-ready data (tuples become lists, floats rounded)."""
-        d = asdict(self)
-        for k in ("point", "force", "grasp_point"):
-            if d[k] is not None:
-                d[k] = [round(float(v), 6) for v in d[k]]
-        for k in ("max_force_n", "robust_force_n", "impulse_ns"):
-            d[k] = round(float(d[k]), 6)
-        d["bodies"] = list(d["bodies"])
-        d["other_bodies"] = list(d["other_bodies"])
-        return d
-
-    @classmethod
-    def from_dict(cls, data: Optional[dict[str, Any]]) -> "ToolLoad":
-        """Return the load :meth:`to_dict` wrote (an empty load for None)."""
-        if not data:
-            return cls()
-        def vec(v):
-            return None if v is None else tuple(float(x) for x in v)
-        return cls(float(data.get("max_force_n", 0.0)), vec(data.get("point")),
-                   vec(data.get("force")), vec(data.get("grasp_point")),
-                   int(data.get("contacts", 0)), tuple(data.get("bodies", ())),
-                   int(data.get("step", 0)), int(data.get("steps", 0)),
-                   float(data.get("robust_force_n", data.get("max_force_n", 0.0))),
-                   int(data.get("contact_steps", 0)), float(data.get("impulse_ns", 0.0)),
-                   tuple(data.get("other_bodies", ())), float(data.get("window_s", 0.0)))
 
 
 class ToolLoadMonitor:

@@ -27,7 +27,7 @@ touching the tool). An oracle may also name a ``fact`` that the observation repo
 
 The shaped-reward kinds (``goal_distance``, ``axis_progress``, ``in_box_or_distance``,
 ``displacement_neighbours``, ``fraction_within``; RoboToolBench's rewards, the formulas
-in :mod:`creative_py.backends.pybullet.rewards`) measure a reward in [0, 1] and judge
+in :mod:`creative_py.simulator.rewards`) measure a reward in [0, 1] and judge
 it by ``reward > threshold`` (0.99 by default, the benchmark's ``done()``)::
 
     [oracle]                      # BringCube: 1 - |p - goal|_1 / |start - goal|_1
@@ -44,9 +44,10 @@ import math
 from dataclasses import dataclass
 from typing import Any, Callable, Mapping
 
-from creative_py.backends.pybullet import rewards
-from creative_py.backends.pybullet.rewards import l1, terms_json
-from creative_py.simulator.types import Verdict
+from creative_py.simulator import rewards
+from creative_py.simulator.rewards import l1, terms_json
+from creative_py.simulator.types import NonFiniteState, Verdict
+from creative_py.world_files import OptionError, did_you_mean, shown
 
 log = logging.getLogger(__name__)
 
@@ -54,11 +55,45 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 
 
 @dataclass(frozen=True)
+class SceneNames:
+    """What an oracle's options may name in one episode of a world, for the loader's
+    check (:func:`check_options`): the roles (``role -> object``), every object of the
+    scene (its bodies, a scatter's members, the tool) and those whose start the episode
+    records (the perceived objects and the movable bodies: what a reward counting
+    displacements can read)."""
+
+    roles: Mapping[str, str]
+    objects: frozenset[str]
+    started: frozenset[str]
+
+    def resolve(self, option: str, word: Any, started: bool = False) -> str:
+        """Return the object ``word`` (a role or a name) denotes; raise
+        :class:`OptionError` naming ``option`` if it denotes none (or, with
+        ``started``, one whose start is not recorded)."""
+        if not isinstance(word, str) or not word:
+            raise OptionError(option, f"must name an object (a role: "
+                              f"{', '.join(self.roles)}; or a body of scene.toml), got "
+                              f"{word!r}")
+        name = self.roles.get(word, word)
+        if name not in self.objects:
+            raise OptionError(option, f"{word!r} is no object of the scene"
+                              + did_you_mean(word, [*self.roles, *sorted(self.objects)])
+                              + f"; objects: {', '.join(sorted(self.objects))}")
+        if started and name not in self.started:
+            raise OptionError(option, f"{word!r}: the episode records no start of it (it "
+                              "is neither perceived nor a movable body)")
+        return name
+
+
+@dataclass(frozen=True)
 class OracleKind:
     """A registered oracle: ``judge(episode, options) -> Verdict``, its options
     (``name -> default``, None for required), the option naming the object it judges
-    (``subject``), the option holding its threshold (``threshold``) and the options
-    that are words, not numbers (``words``: names, axes; the subject is one)."""
+    (``subject``), the option holding its threshold (``threshold``), the options
+    that are words, not numbers (``words``: names, axes; the subject is one), and
+    ``check(options, names)``, which raises :class:`OptionError` for options that
+    cannot be judged (run by the loader with the options resolved,
+    :func:`check_options`)."""
 
     name: str
     judge: Callable[[Any, Mapping[str, Any]], Verdict]
@@ -66,6 +101,9 @@ class OracleKind:
     subject: str
     threshold: str = ""
     words: tuple[str, ...] = ("axis", "fact")
+    check: Callable[[Mapping[str, Any], SceneNames], None] = lambda opts, names: None
+    velocity: Callable[[Mapping[str, Any]], bool] = lambda opts: False
+    """Whether the judge reads an object's velocity with these options."""
 
     def holds(self, ep: Any, opts: Mapping[str, Any]) -> bool:
         """Return whether the goal holds (the verdict's judgement)."""
@@ -143,7 +181,7 @@ def joint_held(ep: Any, opts: Mapping[str, Any]) -> Verdict:
 
 
 # ------------------------------------------------------------------ shaped rewards
-# RoboToolBench's rewards (creative_py/backends/pybullet/rewards.py has the formulas):
+# RoboToolBench's rewards (creative_py/simulator/rewards.py has the formulas):
 # the verdict's quantity is the reward in [0, 1], judged by ``reward > threshold`` (the
 # benchmark's done(): 0.99); the formula's terms are its measures.
 
@@ -167,6 +205,15 @@ def _names(ep: Any, value: Any, option: str) -> list[str]:
     return [ep.object_name(v) for v in value]
 
 
+def _finite(values: Any, name: str, what: str) -> tuple[float, ...]:
+    """Return ``values`` as floats; raise :class:`NonFiniteState` (a ValueError: the
+    trial is ``invalid``) if one is not finite."""
+    out = tuple(float(v) for v in values)
+    if not all(math.isfinite(v) for v in out):
+        raise NonFiniteState(f"non-finite {what} of {name}: {out}")
+    return out
+
+
 def _start(ep: Any, name: str) -> tuple[float, ...]:
     """Return where an object's centre was when the trial began (after the settling)."""
     start = ep.start_centres.get(name)
@@ -174,11 +221,12 @@ def _start(ep: Any, name: str) -> tuple[float, ...]:
         start = getattr(ep, "body_starts", {}).get(name)
     if start is None:
         raise ValueError(f"no start position recorded for {name!r}")
-    return tuple(float(v) for v in start[:3])
+    return _finite(start[:3], name, "start")
 
 
 def _centre(ep: Any, name: str) -> tuple[float, float, float]:
-    return tuple(float(v) for v in ep.true_centre(name)[:3])
+    """Return an object's true centre (m); :class:`NonFiniteState` after a blow-up."""
+    return _finite(ep.true_centre(name)[:3], name, "pose")
 
 
 def _speed(ep: Any, name: str) -> float:
@@ -187,7 +235,8 @@ def _speed(ep: Any, name: str) -> float:
     pybullet integrates semi-implicitly (the position moves by the new velocity times
     the step), so this is the last step's displacement over the step, the speed the
     benchmark's MoveBall env measures by differencing its positions."""
-    return float(math.sqrt(sum(c * c for c in ep.linear_velocity(name))))
+    return float(math.sqrt(sum(c * c for c in _finite(ep.linear_velocity(name), name,
+                                                          "velocity"))))
 
 
 def _reward_verdict(name: str, reward: float, terms: Mapping[str, Any],
@@ -269,33 +318,170 @@ def fraction_within(ep: Any, opts: Mapping[str, Any]) -> Verdict:
     return _reward_verdict("objects", reward, terms, opts["threshold"], words)
 
 
+# ------------------------------------------------------------------ load-time checks
+# Each kind's check of its resolved options against the scene (the loader runs it for
+# every variant and location, :func:`creative_py.backends.pybullet.world.check_values`):
+# what its judge would otherwise fail on mid-run, or measure without meaning.
+
+def _vector(opts: Mapping[str, Any], option: str, lengths: tuple[int, ...],
+            why: str = "") -> tuple:
+    """Return the option's numbers; raise unless it has one of ``lengths`` numbers."""
+    value = opts[option]
+    if not isinstance(value, tuple) or len(value) not in lengths \
+            or not all(isinstance(v, float) for v in value):
+        want = " or ".join(str(n) for n in lengths)
+        raise OptionError(option, f"must be a list of {want} numbers (m){why}, got "
+                          f"{shown(value)}")
+    return value
+
+
+def _scalars(opts: Mapping[str, Any], names: tuple[str, ...]) -> None:
+    for option in names:
+        if isinstance(opts.get(option), tuple):
+            raise OptionError(option, f"must be a number, got a list {shown(opts[option])}")
+
+
+def _axis(option: str, word: Any) -> int:
+    if word not in _AXES:
+        raise OptionError(option, f"must be x, y or z, got {word!r}")
+    return _AXES[word]
+
+
+def _check_position(opts: Mapping[str, Any], names: SceneNames) -> None:
+    names.resolve("object", opts["object"])
+    _axis("axis", opts["axis"])
+    _scalars(opts, ("limit",))
+
+
+def _check_joint_held(opts: Mapping[str, Any], names: SceneNames) -> None:
+    names.resolve("body", opts["body"])
+    _scalars(opts, ("max_close_deg", "min_open_deg"))
+
+
+def _check_goal_distance(opts: Mapping[str, Any], names: SceneNames) -> None:
+    names.resolve("object", opts["object"])
+    _scalars(opts, ("scale", "speed_weight", "threshold"))
+    goal = _vector(opts, "goal", (1, 2, 3))
+    start = _vector(opts, "start", (len(goal),), ", as many as 'goal'")
+    if not opts["scale"] and l1(start, goal) == 0:
+        raise OptionError("start", "equals 'goal', so the reward's scale |start - goal|_1 "
+                          "is 0 (move them apart or set 'scale')")
+
+
+def _check_axis_progress(opts: Mapping[str, Any], names: SceneNames) -> None:
+    names.resolve("object", opts["object"])
+    _scalars(opts, ("threshold",))
+    axes = opts["axes"]
+    if isinstance(axes, str):
+        axes = [axes]
+    if not isinstance(axes, (list, tuple)) or not axes:
+        raise OptionError("axes", f"must list x, y or z, got {axes!r}")
+    for a in axes:
+        _axis("axes", a)
+    if len(set(axes)) != len(axes):
+        raise OptionError("axes", f"names an axis twice: {list(axes)}")
+    start = _vector(opts, "start", (len(axes),), ", one per axis of 'axes'")
+    near = _vector(opts, "near", (len(axes),), ", one per axis of 'axes'")
+    for a, s, n in zip(axes, start, near):
+        if s == n:
+            raise OptionError("near", f"along {a} equals 'start' ({s:g}), so that axis' "
+                              "progress has no scale")
+
+
+def _check_in_box(opts: Mapping[str, Any], names: SceneNames) -> None:
+    names.resolve("object", opts["object"])
+    _scalars(opts, ("bonus", "bonus_below_z", "threshold"))
+    lo, hi = _vector(opts, "box_min", (3,)), _vector(opts, "box_max", (3,))
+    for axis, a, b in zip("xyz", lo, hi):
+        if not a < b:
+            raise OptionError("box_min", f"along {axis} ({a:g}) must lie below "
+                              f"'box_max' ({b:g})")
+    start = _vector(opts, "start", (3,))
+    centre = [(a + b) / 2 for a, b in zip(lo, hi)]
+    if l1(start, centre) == 0:
+        raise OptionError("start", "lies at the box's centre, so the reward's scale "
+                          "|start - centre|_1 is 0")
+
+
+def _check_displacement(opts: Mapping[str, Any], names: SceneNames) -> None:
+    subject = names.resolve("object", opts["object"], started=True)
+    _scalars(opts, ("success_distance", "threshold"))
+    others = _name_list(opts, "neighbours", names)
+    if subject in others:
+        raise OptionError("neighbours", f"names the object itself ({subject!r})")
+
+
+def _check_fraction_within(opts: Mapping[str, Any], names: SceneNames) -> None:
+    _name_list(opts, "objects", names)
+    _scalars(opts, ("within", "threshold"))
+    _vector(opts, "centre", (1, 2, 3))
+
+
+def _name_list(opts: Mapping[str, Any], option: str, names: SceneNames) -> list[str]:
+    """Return the objects a list option names, each resolved once, with a start."""
+    value = opts[option]
+    if isinstance(value, str):
+        value = [value]
+    if not isinstance(value, (list, tuple)) or not value:
+        raise OptionError(option, f"must be a list of object names, got {value!r}")
+    out = [names.resolve(option, v, started=True) for v in value]
+    if len(set(out)) != len(out):
+        raise OptionError(option, f"names an object twice: {shown(value)}")
+    return out
+
+
+def check_options(kind: str, opts: Mapping[str, Any], names: SceneNames) -> None:
+    """Raise :class:`OptionError` unless the oracle ``kind``'s resolved options can be
+    judged in a scene of ``names`` (vector lengths, axes, box order, non-zero scales,
+    names that resolve)."""
+    ORACLES[kind].check(opts, names)
+
+
+def objects_read(kind: str, opts: Mapping[str, Any], names: SceneNames) -> list[str]:
+    """Return the objects the oracle ``kind`` reads with the resolved ``opts`` in a
+    scene of ``names``, in order: those its check resolves (a backend that follows only
+    some objects' poses refuses the others, :mod:`creative_py.backends.ros`)."""
+    seen: list[str] = []
+
+    class _Seen(SceneNames):
+        def resolve(self, option: str, word: Any, started: bool = False) -> str:
+            name = SceneNames.resolve(self, option, word, started)
+            seen.append(name)
+            return name
+
+    ORACLES[kind].check(opts, _Seen(names.roles, names.objects, names.started))
+    return list(dict.fromkeys(seen))
+
+
 ORACLES: dict[str, OracleKind] = {o.name: o for o in (
     OracleKind("below", below, {"object": None, "axis": None, "limit": None, "fact": ""},
-               "object", "limit"),
+               "object", "limit", check=_check_position),
     OracleKind("above", above, {"object": None, "axis": None, "limit": None, "fact": ""},
-               "object", "limit"),
+               "object", "limit", check=_check_position),
     OracleKind("joint_held", joint_held,
                {"body": None, "max_close_deg": None, "min_open_deg": None, "fact": ""},
-               "body", "min_open_deg"),
+               "body", "min_open_deg", check=_check_joint_held),
     OracleKind("goal_distance", goal_distance,
                {"object": None, "goal": None, "start": None, "scale": 0.0,
                 "speed_weight": 0.0, "threshold": 0.99, "fact": ""},
-               "object", "threshold"),
+               "object", "threshold", check=_check_goal_distance,
+               velocity=lambda opts: float(opts["speed_weight"]) > 0.0),
     OracleKind("axis_progress", axis_progress,
                {"object": None, "axes": None, "start": None, "near": None,
                 "threshold": 0.99, "fact": ""},
-               "object", "threshold", words=("axes", "fact")),
+               "object", "threshold", words=("axes", "fact"), check=_check_axis_progress),
     OracleKind("in_box_or_distance", in_box_or_distance,
                {"object": None, "box_min": None, "box_max": None, "start": None,
                 "bonus": 0.0, "bonus_below_z": -10.0, "threshold": 0.99, "fact": ""},
-               "object", "threshold"),
+               "object", "threshold", check=_check_in_box),
     OracleKind("displacement_neighbours", displacement_neighbours,
                {"object": None, "neighbours": None, "success_distance": None,
                 "threshold": 0.99, "fact": ""},
-               "object", "threshold", words=("neighbours", "fact")),
+               "object", "threshold", words=("neighbours", "fact"),
+               check=_check_displacement),
     OracleKind("fraction_within", fraction_within,
                {"objects": None, "centre": None, "within": None, "threshold": 0.99},
-               "objects", "threshold", words=()),
+               "objects", "threshold", words=(), check=_check_fraction_within),
 )}
 """The oracle kinds a world's ``[oracle]`` table may name."""
 

@@ -68,6 +68,7 @@ from creative_py.backends.pybullet.core import Pose
 from creative_py.simulator.types import SkillOutcome, Verdict
 from creative_py.backends.pybullet.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
                                    roll_of, tool_orientation)
+from creative_py.world_files import OptionError, shown
 
 
 log = logging.getLogger(__name__)
@@ -79,15 +80,18 @@ REQUIRED = None
 @dataclass(frozen=True)
 class Primitive:
     """A registered primitive: its function, its options (``name -> default``), the
-    name of the world target it takes (``""`` for none), and the bounds of those of its
+    name of the world target it takes (``""`` for none), the bounds of those of its
     options whose meaning is its own (``name -> (low, high, unit)``, before
-    :data:`OPTION_BOUNDS`, :func:`option_bound`)."""
+    :data:`OPTION_BOUNDS`, :func:`option_bound`), and ``check(options)``, which raises
+    :class:`~creative_py.world_files.OptionError` for resolved options it cannot run
+    with beyond their bounds and lengths (:func:`check_options`)."""
 
     name: str
     run: Callable[[Any, Mapping[str, Any], tuple], SkillOutcome]
     options: Mapping[str, Any]
     target: str = ""
     bounds: Mapping[str, tuple[float, float, str]] = field(default_factory=dict)
+    check: Callable[[Mapping[str, Any]], None] = lambda opts: None
 
     def needs_held_tool(self, opts: Mapping[str, Any]) -> bool:
         """Return whether the primitive moves a held tool (checked before perceiving)."""
@@ -167,7 +171,8 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     ``inner_height``). The gripper carries the tool above it to in front of its mouth
     and turns it so the prong is flat: at the requested roll if that is flat, otherwise
     towards the side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or
-    -pi/2; 0, the default, chooses by the room) if the manifest sets one: an arm whose
+    -pi/2; 0, the default, chooses by the room; :data:`FLAT_ROLLS`, nothing else) if the
+    manifest sets one: an arm whose
     wrist turns only one way from the pose's roll (a 7-joint arm's last joint at the
     height of a tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
     open at the top: the room above a shelf's top or a row of books) the tool is
@@ -664,6 +669,27 @@ tube's 7 cm, the shelf's 4 cm of room) and is lower than that, so a lower value 
 put the handle under the target, which is nonsense."""
 
 
+FLAT_ROLLS = (-math.pi / 2, 0.0, math.pi / 2)
+"""The values of ``insert_at_pose``'s ``flat_roll`` (rad): the prong flat towards -y or
++y, or 0, chosen by the room (a roll between would carry it neither flat nor down)."""
+
+FLAT_ROLL_TOLERANCE = 1e-6
+"""How far (rad) a ``flat_roll`` may lie from one of :data:`FLAT_ROLLS` (the digits of
+pi / 2 a file writes)."""
+
+
+def _check_insert(opts: Mapping[str, Any]) -> None:
+    roll = opts["flat_roll"]
+    if not any(abs(roll - r) <= FLAT_ROLL_TOLERANCE for r in FLAT_ROLLS):
+        raise OptionError("flat_roll", f"must be -pi/2, 0 (chosen by the room) or pi/2 "
+                          f"(the prong carried flat), got {roll:g} rad")
+
+
+def _check_sweep(opts: Mapping[str, Any]) -> None:
+    if math.hypot(*opts["direction"]) < 1e-9:
+        raise OptionError("direction", f"must not be zero, got {shown(opts['direction'])}")
+
+
 PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("grasp", grasp, _kind_grasp_options()),
     Primitive("insert_at_pose", insert_at_pose,
@@ -672,7 +698,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
                "flat_roll": 0.0, "from_above": False, "keep_roll": False,
                **SLIP_OPTIONS},
               target="tip",
-              bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}),
+              bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}, check=_check_insert),
     Primitive("place_on_floor", place_on_floor,
               {"hold_angle": REQUIRED, "carry_height": 0.10, "release_height": 0.003,
                "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
@@ -692,7 +718,7 @@ PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
     Primitive("sweep", sweep,
               {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
                "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
-               "settle_time": 2.0, "lift": 0.0}),
+               "settle_time": 2.0, "lift": 0.0}, check=_check_sweep),
     Primitive("release_joint", release_joint,
               {"duration": 4.0, "contact_distance": 0.0005, "park_robot": True}),
 )}
@@ -733,6 +759,31 @@ option whose default is true or false (``posture_search``, ``perceive``, ``by_ha
 ``park_robot``) must be true or false. The loader checks every skill's options in
 every variant and location (:func:`creative_py.backends.pybullet.world.check_values`), so that no
 number of ``case.toml`` makes a motion or a wait run without end."""
+
+
+VECTOR_OPTIONS: dict[str, int] = {"direction": 2, "via": 2, "slide_from": 2, "retreat": 3}
+"""The options that are lists of numbers, by name, and how many numbers each holds
+(``direction``, ``via``, ``slide_from``: x, y in the table's plane; ``retreat``: a
+point x, y, z); every other numeric option is one number."""
+
+
+def check_options(primitive_name: str, opts: Mapping[str, Any]) -> None:
+    """Raise :class:`~creative_py.world_files.OptionError` unless the resolved options
+    of the primitive named ``primitive_name`` have their shapes (a list of
+    :data:`VECTOR_OPTIONS`'s length, else one number; an unset optional list is None)
+    and pass its own check (:attr:`Primitive.check`). Bounds are checked apart
+    (:func:`option_bound`)."""
+    p = PRIMITIVES[primitive_name]
+    flags = option_flags()
+    for k, v in opts.items():
+        if k in flags or v is None:  # None: an optional option left unset
+            continue
+        n = VECTOR_OPTIONS.get(k)
+        if n is not None and not (isinstance(v, tuple) and len(v) == n):
+            raise OptionError(k, f"must be a list of {n} numbers, got {shown(v)}")
+        if n is None and isinstance(v, tuple):
+            raise OptionError(k, f"must be a number, got a list {shown(v)}")
+    p.check(opts)
 
 
 def option_bound(primitive_name: str, option: str) -> tuple[float, float, str] | None:

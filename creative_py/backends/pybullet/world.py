@@ -52,8 +52,8 @@ from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
-from creative_py.world_files import (Fields, PhysicsSettings, WorldFileError, load_toml,
-                               read_physics, world_file)
+from creative_py.world_files import (Fields, OptionError, PhysicsSettings, WorldFileError,
+                                     load_toml, read_physics, world_file)
 
 _ROLES = ("tool", "target", "context")
 
@@ -168,12 +168,8 @@ class World(CatalogueWorld):
         """
         from creative_py.backends.pybullet.tools import tool_kind
 
-        tool_kind(spec)
-        if urdf is not None and not Path(urdf).is_file():
-            raise FileNotFoundError(f"{urdf}: tool URDF not found")
-        friction = next(iter(self.items.values())).friction
-        item = CatalogueItem(spec, "created", friction, None if urdf is None else Path(urdf))
-        return replace(self, items={**self.items, spec.name: item})
+        tool_kind(spec)  # a kind this backend holds
+        return super().with_tool(spec, urdf)
 
     def listing(self) -> dict[str, Any]:
         """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created
@@ -455,13 +451,11 @@ def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
 
 
 def world_robot(manifest: CaseManifest) -> Any:
-    """Return the robot profile of a run: the one the environment names
-    (:data:`creative_py.robots.ROBOT_ENV`, set by ``--robot``), else the case's."""
-    import os
+    """Return the robot profile of a run: the manifest's ``robot`` (the case's, or
+    ``--robot``'s in a run's manifest)."""
+    from creative_py.robots import load_profile
 
-    from creative_py.robots import ROBOT_ENV, load_profile
-
-    name = os.environ.get(ROBOT_ENV) or manifest.robot
+    name = manifest.robot
     if not name:
         raise WorldFileError(f"{manifest.folder / 'case.toml'}: field 'robot': missing (the "
                              "pybullet backend needs the case's robot profile)")
@@ -512,6 +506,32 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
     return world
 
 
+def _scene_names(world: World, bodies: dict[str, Any], tool: str) -> Any:
+    """Return what an oracle's options may name in an episode with ``bodies`` and
+    ``tool`` (:class:`creative_py.backends.pybullet.oracles.SceneNames`)."""
+    from creative_py.backends.pybullet import oracles
+
+    manifest = world.manifest
+    started = {object_name(manifest, p.name, tool) for p in world.scene.perceived}
+    started |= {n for n, b in bodies.items() if getattr(b, "dynamic", False)}
+    return oracles.SceneNames({r: object_name(manifest, r, tool) for r in _ROLES},
+                              frozenset({*bodies, tool}), frozenset(started))
+
+
+def oracle_reads(world: World, variant: str, location: int, tool: str
+                 ) -> tuple[list[str], bool]:
+    """Return the objects the world's oracle reads in an episode of ``variant``,
+    ``location`` and ``tool`` (in order), and whether it reads a velocity."""
+    from creative_py.backends.pybullet import oracles
+    from creative_py.backends.pybullet.scene import make_bodies
+
+    ns = world.namespace(variant, location, tool)
+    opts = resolve_options(world.oracle.options, ns, "oracle", words=oracle_words(world))
+    names = _scene_names(world, make_bodies(world.scene.bodies, ns), tool)
+    kind = world.oracle.oracle
+    return oracles.objects_read(world.oracle.kind, opts, names), kind.velocity(opts)
+
+
 def check_values(world: World, variant: str, location: int, tool: str) -> None:
     """Resolve every scene value of one episode; raise :class:`WorldFileError` if one
     fails or lies outside its bounds.
@@ -521,7 +541,12 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
     (:func:`creative_py.backends.pybullet.primitives.option_bound`: the primitive's own
     bound, else :data:`~creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
-    (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`).
+    (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`). Beyond bounds, what
+    would fail or mean nothing mid-run: the skills' options by their primitive
+    (:func:`creative_py.backends.pybullet.primitives.check_options`: a list's length, a
+    zero direction), the oracle's by its kind against the scene's objects and roles
+    (:func:`creative_py.backends.pybullet.oracles.check_options`: names that resolve,
+    vector lengths, axes, box order, non-zero scales).
     """
     from creative_py.backends.pybullet import oracles, primitives
     from creative_py.backends.pybullet.scene import make_bodies
@@ -561,13 +586,27 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
             elif (bound := primitives.option_bound(s.primitive, k)) is not None:
                 check_bound(v, bound, where,
                             episode if isinstance(s.options[k], str) else "")
+        try:
+            primitives.check_options(s.primitive, opts)
+        except OptionError as exc:
+            raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{exc.option}': "
+                                 f"{exc.cause}{_context(s.options.get(exc.option), episode)}"
+                                 ) from None
     words = oracle_words(world)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
+    tasks_file = world.directory / "tasks.toml"
     for k, v in opts.items():
         if k not in words and k in oracles.OPTION_BOUNDS:
-            check_bound(v, oracles.OPTION_BOUNDS[k],
-                        f"{world.directory / 'tasks.toml'}: field 'oracle.{k}'",
+            check_bound(v, oracles.OPTION_BOUNDS[k], f"{tasks_file}: field 'oracle.{k}'",
                         episode if isinstance(world.oracle.options[k], str) else "")
+    names = _scene_names(world, bodies, tool)
+    try:
+        oracles.check_options(world.oracle.kind, opts, names)
+    except OptionError as exc:
+        raise WorldFileError(f"{tasks_file}: field 'oracle.{exc.option}': {exc.cause}"
+                             + ("" if exc.option in words else
+                                _context(world.oracle.options.get(exc.option), episode))
+                             ) from None
     for p in world.scene.perceived:
         if p.support_z is not None:
             ns.evaluate(p.support_z, f"perception.object {p.name} support_z")
@@ -577,6 +616,14 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
         if name not in bodies:
             raise WorldFileError(f"{world.directory / 'scene.toml'}: the {role} "
                                  f"{name!r} of case.toml is not a [[body]] of the scene")
+
+
+def _context(raw: Any, episode: str) -> str:
+    """Return ``episode`` if the option as written, ``raw``, holds a scene expression
+    (its number may differ by variant and location), else ""."""
+    def expr(v: Any) -> bool:
+        return isinstance(v, str) or (isinstance(v, (list, tuple)) and any(map(expr, v)))
+    return episode if expr(raw) else ""
 
 
 def check_bound(value: Any, bound: tuple[float, float, str], where: str,

@@ -14,19 +14,25 @@ profile (``robots/<name>.toml``, :mod:`profile`), so a lab remaps them without c
 ``limits``      the learner's bounds (joint speed, the gripper's workspace box), checked
                 before a goal is sent (no ROS needed)
 ``standin``     the stand-in robot: the pybullet arm of a profile with a case's scene in its own
-                process behind that interface (``python -m creative_py.backends.ros.standin``)
+                process behind that interface (``python -m creative_py.backends.ros.standin
+                --profile NAME|PATH``); with ``twin``, the one module here that imports
+                the pybullet backend
 ``client``      the learner's node: subscriptions, trajectory and gripper goals, timed
 ``motion``      the learner's side of a motion: straight gripper moves through the
                 learner's IK (from the robot's URDF, no scene) sent as bounded trajectory
                 goals (LearnerArm), each goal's timings logged
 ``trainer``     who sets each episode's scene up: the scene request and answer
                 (std_msgs/String JSON), the stand-in's side (SceneKeeper)
+``twin``        the learner's model of the arm and its scene: the pybullet backend's
+                world, episode and kinematics, in DIRECT clients whose physics never
+                runs (the one learner module that imports the pybullet backend)
 ``episode``     the backend's episode (RosEpisode): a learner-side pybullet twin of
                 the world files whose tracked objects follow the pose topics, the
                 hook-like primitives as trajectory and gripper goals (RosRobot), the
                 facts and the oracle measured from the topics
 ``backend``     the ``ros`` backend of the simulator boundary (load_world,
-                open_episode, ...: ``creative run CASE --backend ros``); imports rclpy
+                open_episode, ...: ``creative run CASE --backend ros``; the arm of the
+                manifest's robot profile); imports rclpy
 ``launch``      the stand-in and a ``creative`` command, two processes
                 (``make run CASE=hook BACKEND=ros``)
 ``check``       a read-only check of an arm's interface against a profile

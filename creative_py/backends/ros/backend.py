@@ -2,15 +2,15 @@
 
 Its functions are the :class:`creative_py.simulator.Backend` protocol. A case runs on it
 without editing the case: ``creative run hook --backend ros [--robot NAME|PATH]``
-(or ``make run CASE=hook BACKEND=ros``); the robot profile comes from the environment
-variable :data:`PROFILE_ENV` (the command line sets it: ``--robot``, else the case's
-robot).
+(or ``make run CASE=hook BACKEND=ros``); the robot profile is the manifest's ``robot``
+(the case's, or ``--robot``'s in a run's manifest).
 
-* :func:`load_world`: the world files, read by the pybullet backend's reader (the
-  learner knows the apparatus as its world files describe it; only the tracked
-  objects' poses come from the topics), without a clip camera (no clips of a real
-  arm). It connects to the arm once per process (:func:`connection`) and refuses a
-  case that binds a primitive this backend does not run, both in one line.
+* :func:`load_world`: the world files, read for the learner's twin of the scene
+  (:mod:`.twin`: the learner knows the apparatus as its world files describe it; only
+  the tracked objects' poses come from the topics), without a clip camera (no clips of
+  a real arm). It connects to the arm of the manifest's profile once per process
+  (:func:`connection`) and refuses a case that binds a primitive this backend does not
+  run, both in one line.
 * :func:`open_episode`: asks the trainer for the scene (:mod:`.trainer`) and yields a
   :class:`~creative_py.backends.ros.episode.RosEpisode`.
 
@@ -35,17 +35,13 @@ import rclpy  # noqa: F401  (the ros extra: the loader names it when missing)
 from control_msgs.action import FollowJointTrajectory  # noqa: F401  (make setup-ros)
 
 from creative_py.backends.ros.client import ArmClient, ArmUnavailable, discovery_warning
-from creative_py.backends.ros.episode import RosEpisode, SceneRefused, unsupported_skills
+from creative_py.backends.ros.episode import (RosEpisode, SceneRefused, unjudged_oracle,
+                                             unsupported_skills)
 from creative_py.backends.ros.motion import Kinematics, LearnerArm
 from creative_py.backends.ros.profile import RobotProfile, load_profile
-from creative_py.robots import ROBOT_ENV
 from creative_py.world_files import WorldFileError
 
 log = logging.getLogger(__name__)
-
-PROFILE_ENV = ROBOT_ENV
-"""The environment variable naming the robot profile (a name under ``robots/`` or a
-``.toml`` path); ``creative run --robot`` sets it."""
 
 WAIT_ENV = "CREATIVE_ROS_WAIT_S"
 """The environment variable of the seconds to wait for the arm at the start (20)."""
@@ -160,14 +156,14 @@ class Connection:
 _CONNECTION: dict[tuple, Connection] = {}
 
 
-def profile_name() -> str:
-    """Return the robot profile the environment names (a run sets it: ``--robot``, else
-    the case's robot)."""
-    name = os.environ.get(PROFILE_ENV)
-    if not name:
-        raise WorldFileError(f"environment variable {PROFILE_ENV}: no robot profile named "
-                             "(creative run --robot NAME, or a case's robot)")
-    return name
+def profile_name(manifest: Any) -> str:
+    """Return the robot profile ``manifest`` names (a name under ``robots/`` or a
+    ``.toml`` path: the case's robot, or ``--robot``'s in a run's manifest)."""
+    m = manifest
+    if not m.robot:
+        raise WorldFileError(f"{m.folder / 'case.toml'}: field 'robot': missing (the ros "
+                             "backend drives the arm of a robot profile: --robot NAME|PATH)")
+    return m.robot
 
 
 def world_base(world: Any) -> Any:
@@ -176,15 +172,15 @@ def world_base(world: Any) -> Any:
     rs = getattr(getattr(world, "scene", None), "robot", None)
     if rs is None or rs.base is None:
         return None
-    from creative_py.backends.pybullet.arm import base_pose
+    from creative_py.backends.ros.twin import base_pose
 
     return base_pose(rs.profile, *rs.base)
 
 
-def connection(world: Any = None) -> Connection:
-    """Return this process's connection to the arm of the profile the environment
-    names, made on first use; the learner's kinematics and bounds put the arm's base
-    where ``world`` places it (:func:`world_base`).
+def connection(world: Any) -> Connection:
+    """Return this process's connection to the arm of the profile ``world``'s manifest
+    names (:func:`profile_name`), made on first use; the learner's kinematics and bounds
+    put the arm's base where ``world`` places it (:func:`world_base`).
 
     Raises
     ------
@@ -200,7 +196,7 @@ def connection(world: Any = None) -> Connection:
     Warns (logging) when discovery reaches beyond the host without DDS Security
     (:func:`~creative_py.backends.ros.client.discovery_warning`).
     """
-    name = profile_name()
+    name = profile_name(world.manifest)
     base = world_base(world)
     key = (name, base)
     conn = _CONNECTION.get(key)
@@ -265,16 +261,16 @@ atexit.register(_close_connections)
 
 # ------------------------------------------------------------------ the protocol
 def load_world(manifest: Any) -> Any:
-    """Return the case's world as its files describe it, without a clip camera; connect
-    to the arm (:func:`connection`). Raise WorldFileError for a case that binds a
-    primitive this backend does not run, a bad profile, or an absent arm."""
-    from creative_py.backends.pybullet import load_world as read_world
+    """Return the case's world as its files describe it for the manifest's robot, without
+    a clip camera; connect to the arm (:func:`connection`). Raise WorldFileError for a
+    case that binds a primitive this backend does not run, an oracle that reads an
+    object it does not follow (or a velocity), a bad profile, or an absent arm."""
+    from creative_py.backends.ros.twin import read_world
 
-    if not os.environ.get(PROFILE_ENV) and getattr(manifest, "robot", None):
-        os.environ[PROFILE_ENV] = manifest.robot  # no --robot: the case's robot
+    profile_name(manifest)  # no robot: one line naming the case file
     world = read_world(manifest)
     world = replace(world, scene=replace(world.scene, video=None))
-    bad = unsupported_skills(world)
+    bad = unsupported_skills(world) or unjudged_oracle(world)
     if bad:
         raise WorldFileError(bad[0])
     connection(world)
@@ -311,8 +307,8 @@ def open_episode(world: Any, variant: str, location: int, tool: str, seed: int =
 def tool_rests(world: Any, tool: str) -> bool:
     """Return whether the tool rests where the world puts it, as the world files'
     physics says (the learner's model: a drawn world is checked before a person sets
-    it up; the pybullet backend's answer)."""
-    from creative_py.backends.pybullet import tool_rests as model_rests
+    it up; the twin's answer, :mod:`.twin`)."""
+    from creative_py.backends.ros.twin import tool_rests as model_rests
 
     return model_rests(world, tool)
 

@@ -1,9 +1,9 @@
 """The ROS 2 backend's episode: a case's skills run on an arm over ROS 2, the case's facts
 and oracle measured from the pose topics.
 
-The learner keeps a *twin* of the scene: the pybullet backend's episode of the same
-world files (variant, location, tool), built in a DIRECT client of the learner's own
-process, whose physics never runs once built. Before anything reads it, the tracked
+The learner keeps a *twin* of the scene (:mod:`.twin`): the pybullet backend's episode
+of the same world files (variant, location, tool), built in a DIRECT client of the
+learner's own process, whose physics never runs once built. Before anything reads it, the tracked
 objects (the case's perceived objects, its context and the tool) are put where the
 motion-capture topics (``geometry_msgs/PoseStamped``) last said, and the twin's arm
 where the joint states say. So the pybullet backend's code runs unchanged on what the
@@ -48,9 +48,10 @@ import time
 import uuid
 from typing import Any, Callable, Optional, Sequence
 
-from creative_py.backends.pybullet.arm import Unreachable, quat_angle, straight_line
-from creative_py.backends.pybullet.episode import Episode as PybulletEpisode
 from creative_py.backends.ros.client import ArmUnavailable
+from creative_py.backends.ros.twin import TwinEpisode, local_extents, set_frame_pose
+from creative_py.simulator.load import ToolLoad
+from creative_py.simulator.paths import Unreachable, quat_angle, straight_line
 from creative_py.simulator.types import SkillOutcome
 from creative_py.world_files import WorldFileError
 
@@ -87,10 +88,32 @@ def unsupported_skills(world: Any) -> list[str]:
             for s in m.skills if world.skills[s.name].primitive not in PRIMITIVES]
 
 
+def unjudged_oracle(world: Any) -> list[str]:
+    """Return one line per reason this backend cannot judge the world's oracle as the
+    pybullet backend does: the learner follows the poses of the perceived objects, the
+    context and the tool alone (its twin's other bodies stay where the scene put them)
+    and measures no velocity. Checked for the demonstration's variant, location and
+    tool; each line names ``tasks.toml`` and the field."""
+    from creative_py.backends.ros.twin import object_name, oracle_reads
+
+    m, demo = world.manifest, world.manifest.demonstration
+    where = f"{world.directory / 'tasks.toml'}: field 'oracle'"
+    reads, velocity = oracle_reads(world, demo.variant, demo.location, demo.tool)
+    followed = {object_name(m, p.name, demo.tool) for p in world.scene.perceived}
+    followed |= {m.context, demo.tool}
+    out = [f"{where}: the {world.oracle.kind} oracle reads {name}, whose pose the ros "
+           f"backend does not follow (it follows {', '.join(sorted(followed))})"
+           for name in reads if name not in followed]
+    if velocity:
+        out.append(f"{where}: the {world.oracle.kind} oracle weighs a velocity "
+                   "(speed_weight > 0), which the ros backend does not measure")
+    return out
+
+
 def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
                 working_point: Sequence[float] = (0.0, 0.0, 0.0)) -> Any:
-    """Return the tool action's contact load (the pybullet backend's
-    :class:`~creative_py.backends.pybullet.loads.ToolLoad`) from a wrist sensor's
+    """Return the tool action's contact load (a
+    :class:`~creative_py.simulator.load.ToolLoad`, every backend's) from a wrist sensor's
     samples ``(force, torque)`` (gripper frame, tared; torque about the gripper, which
     holds the tool at the grasp) at ``rate_hz``.
 
@@ -106,7 +129,6 @@ def wrench_load(samples: Sequence[tuple], grasp: Any, rate_hz: float,
     """
     import numpy as np
 
-    from creative_py.backends.pybullet.loads import ToolLoad
     from creative_py.backends.ros.standin import compose, invert
     from creative_py.simulator.load import LOAD_WINDOW_S, robust_force, samples_per_window
 
@@ -265,7 +287,7 @@ class RosRobot:
         self.twin.close()
 
 
-class RosEpisode(PybulletEpisode):
+class RosEpisode(TwinEpisode):
     """One scene of a case on the arm over ROS 2 (see the module docstring).
 
     Built as the pybullet backend's episode of the same world files (the twin), then
@@ -337,8 +359,6 @@ class RosEpisode(PybulletEpisode):
     def sync(self) -> None:
         """Put the twin's tracked objects where the pose topics last said, and its arm
         where the joint states say."""
-        from creative_py.backends.pybullet.bodies import set_frame_pose
-
         client = self.conn.client
         for name in self.tracked:
             pose = client.pose(name)
@@ -393,8 +413,6 @@ class RosEpisode(PybulletEpisode):
     def _extent(self, name: str) -> tuple[float, float, float]:
         """Return the object's box extents (m) in its own frame, from the world files'
         geometry (the twin's body, turned to the identity for a moment)."""
-        from creative_py.backends.pybullet.bodies import local_extents
-
         if name not in self._extents:
             self._extents[name] = local_extents(self.sim, self.body_id(name))
         return self._extents[name]

@@ -7,7 +7,8 @@
 starts the stand-in (:mod:`creative_py.backends.ros.standin`) of the case with the robot
 profile (``--profile``, a name under ``robots/`` or a ``.toml`` path; default: the
 case's robot) in its own process, waits for its ``standin ready`` line, runs ``creative
-<args>`` (the learner, in a second process, with the same profile), then stops the
+<args>`` (the learner, in a second process, with the same profile: ``--robot``, added
+to a ``run`` or ``trial`` command that names none), then stops the
 stand-in; the exit code is the learner's. ``--resume DIR`` goes on with an interrupted
 or stopped run: the case and the profile come from the run's ``run.json`` (a
 ``--profile`` that differs from the recorded one is refused), and the learner runs
@@ -142,8 +143,8 @@ def plan(argv: Sequence[str]) -> tuple[argparse.Namespace, str, str, list[str]]:
     if given is not None and args.profile is not None and given != args.profile:
         raise LaunchError(f"--profile {args.profile}: the command's --robot is {given!r}")
     profile = args.profile or given or case_robot(case)
-    if command[:1] == ["run"] and given is None:
-        command = [*command, "--robot", profile]  # run.json records it
+    if command[:1] in (["run"], ["trial"]) and given is None:
+        command = [*command, "--robot", profile]  # the learner's arm; run.json records it
     return args, case, profile, command
 
 
@@ -171,7 +172,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             return 2
         print(f"the stand-in is ready after {time.monotonic() - t0:.1f} s (pid "
               f"{standin.pid})", file=sys.stderr, flush=True)
-        env = dict(os.environ, CREATIVE_ROBOT_PROFILE=profile)
+        env = dict(os.environ)
         env.setdefault(RESUME_ENV, " ".join(
             [PROG, "--resume", "{run}"]))  # the profile comes from its run.json
         learner = subprocess.Popen([sys.executable, "-m", "creative_py.cli", *command],

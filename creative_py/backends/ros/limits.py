@@ -59,7 +59,7 @@ def urdf_forward(profile: RobotProfile, base=None) -> Forward:
     scene), its base at ``base`` (a world's placement: position, quaternion; None: the
     profile's ``[base]``), so that the workspace box is checked in the world frame.
     """
-    from creative_py.backends.pybullet.arm import kinematics_model
+    from creative_py.backends.ros.twin import kinematics_model
 
     model = kinematics_model(profile, base)
     index = [profile.joints.index(n) for n in profile.arm_joints]

@@ -41,6 +41,7 @@ from creative_py.backends.ros.client import ArmClient, ArmUnavailable
 from creative_py.backends.ros.limits import OutOfBounds, goal_checker, urdf_forward
 from creative_py.backends.ros.profile import RobotProfile
 from creative_py.backends.ros.trajectory import GOAL_TOLERANCE_VIOLATED
+from creative_py.simulator.paths import Unreachable, straight_line
 from creative_py.simulator.types import SkillOutcome, Verdict
 
 Pose = tuple[tuple[float, float, float], tuple[float, float, float, float]]
@@ -55,20 +56,18 @@ EASE_STEP = 0.05
 class Kinematics:
     """The robot's kinematics on the learner's side, from the profile's URDF (no scene).
 
-    The pybullet backend's arm of the profile, in a pybullet DIRECT client of its own,
+    The pybullet backend's arm of the profile, in a pybullet DIRECT client of its own
+    (:func:`creative_py.backends.ros.twin.kinematics_arm`),
     its base at ``base`` (the world's placement of the arm, ``[robot.NAME] base`` of a
     scene: position, quaternion; None: the profile's ``[base]``). Joint positions are
     in the profile's ``[arm]`` order.
     """
 
     def __init__(self, profile: RobotProfile, base=None) -> None:
-        from creative_py.backends.pybullet.arm import Arm
-        from creative_py.backends.pybullet.core import Sim
-        from creative_py.world_files import PhysicsSettings
+        from creative_py.backends.ros.twin import kinematics_arm
 
         self.profile = profile
-        self._sim = Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81)))
-        self._robot = Arm(self._sim, profile, base=base)
+        self._sim, self._robot = kinematics_arm(profile, base)
         arm = profile.arm_joints
         self._to_arm = [profile.joints.index(n) for n in arm]
         self._to_profile = [arm.index(n) for n in profile.joints]
@@ -228,8 +227,7 @@ class LearnerArm:
     def move_to(self, target: Pose, speed: float = 0.1) -> SkillOutcome:
         """Move the gripper in a straight line to ``target`` at most at ``speed`` m/s, the
         orientation slerped (the waypoints of
-        :func:`creative_py.backends.pybullet.arm.straight_line`, every ``step`` m)."""
-        from creative_py.backends.pybullet.arm import Unreachable, straight_line
+        :func:`creative_py.simulator.paths.straight_line`, every ``step`` m)."""
 
         try:
             start = self.client.arm_q()

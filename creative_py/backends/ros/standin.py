@@ -62,15 +62,12 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import signal
 import sys
 import threading
 import time
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any, Optional, Sequence
-
-from creative_py.robots import ROBOT_ENV
 
 import numpy as np
 from scipy.spatial.transform import Rotation
@@ -617,7 +614,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     if not args.seconds > 0:
         print(f"{prog}: option --seconds: must be > 0, got {args.seconds}", file=sys.stderr)
         return 2
-    from creative_py.backends.pybullet import load_world
+    from creative_py.backends.pybullet import load_world, open_episode
     from creative_py.case import get_case
 
     try:  # every input is checked before ROS or the physics start
@@ -626,7 +623,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
             raise WorldFileError(f"option --case: {args.case} runs in the {manifest.backend!r} "
                                  "backend; the stand-in builds pybullet scenes")
         profile = load_profile(args.profile or manifest.robot or "")
-        os.environ[ROBOT_ENV] = profile.source  # the scene's arm is the profile's
+        manifest = replace(manifest, robot=profile.source)  # the scene's arm is the profile's
         demo = manifest.demonstration
         variant = args.variant or demo.variant
         location = demo.location if args.location is None else args.location
@@ -653,7 +650,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return 2
     from creative_py.backends.ros.trainer import SceneKeeper
 
-    scenes = SceneKeeper(world)
+    scenes = SceneKeeper(world, open_episode)
     try:
         ep = scenes.open(variant, location, tool)
         arm = SimArm(ep, profile, args.grasp_reach)

@@ -68,22 +68,25 @@ class SceneKeeper:
     ----------
     world : creative_py.backends.pybullet.World
         The case's world as its files say (created tools are added per request).
+    open_episode : callable
+        The backend that builds a scene, ``open_episode(world, variant, location, tool)``
+        (a context manager yielding the episode): the stand-in gives the pybullet
+        backend's (:func:`creative_py.backends.pybullet.open_episode`).
     """
 
-    def __init__(self, world: Any) -> None:
+    def __init__(self, world: Any, open_episode: Any) -> None:
         self.world = world
+        self._open_episode = open_episode
         self.requests: "queue.Queue[str]" = queue.Queue()
         self._stack: Optional[ExitStack] = None
         self.episode: Any = None
 
     def open(self, variant: str, location: int, tool: str, world: Any = None) -> Any:
         """Build the scene (closing the one before); return its episode."""
-        from creative_py.backends.pybullet import open_episode
-
         w = self.world if world is None else world
         stack = ExitStack()
         try:
-            episode = stack.enter_context(open_episode(w, variant, location, tool))
+            episode = stack.enter_context(self._open_episode(w, variant, location, tool))
         except BaseException:
             stack.close()
             raise

@@ -114,3 +114,20 @@ def test_the_simulator_holds_it_by_the_pole_like_a_handle():
     assert FUNNEL.head_width == pytest.approx(0.014)  # the pedestal stops short of the neck
     q = FUNNEL.quantities()
     assert q["inner_half"] == pytest.approx(0.10) and q["wall_height"] == pytest.approx(0.06)
+
+
+@pytest.mark.parametrize("wings", [{"wing_length": 0.05, "wing_spread": 0.0},
+                                   {"wing_length": 0.0, "wing_spread": 0.0},
+                                   {"wing_length": 0.05, "wing_spread": 0.11}],
+                         ids=["parallel wings (a U)", "no wings (a blade)", "a funnel"])
+def test_a_pusher_is_printable_and_its_volume_is_its_solid_s(tmp_path, wings):
+    # The wings' spread places them (0: parallel) and is no printed feature; a blade has
+    # no wings to print. Both are pushers the size model may ask for (wing_spread none).
+    # The check holds the STL's volume to the spec's (what a created tool's mass is
+    # made from) within 0.1 %: the wings overlap the base plate, counted once.
+    from creative_py.mesh.check import check_tool_files
+    from creative_py.mesh.export import write_tool_files
+
+    spec = PusherSpec("u_a1", 0.25, 0.014, 0.22, mass=None, **wings)
+    report = check_tool_files(write_tool_files(spec, tmp_path / "u_a1", picture=False))
+    assert report.ok, report

@@ -248,3 +248,14 @@ def test_every_field_is_checked_and_round_trips(f):
         TrialRecord.from_dict({**base, f.name: _wrong_value(f)})
     if f.metadata.get("column"):
         assert f.metadata["column"] in [h for h, _ in trial_columns()]
+
+
+def test_a_key_json_cannot_keep_is_refused_before_it_is_written():
+    """``pose={0: 0.03}`` was written as ``{"0": 0.03}`` and read back as another record;
+    the keys are checked as the values are (as the trial record's first checker did)."""
+    with pytest.raises(ValueError, match=re.escape("field 'pose': key 0 is not of type str")):
+        TrialRecord(trial=1, phase="use", variant="v", location=1, tool="t",
+                    outcome="success", pose={0: 0.03})
+    record = TrialRecord(trial=1, phase="use", variant="v", location=1, tool="t",
+                         outcome="success", pose={"dx": 0.03})
+    assert TrialRecord.from_json(record.to_json()) == record

@@ -197,3 +197,25 @@ def test_a_jammed_tool_is_stopped_by_its_grasp_slip_against_the_limit():
     assert stop["quantity"] == "grasp slip"
     assert stop["value"] > stop["threshold"] > 0
     assert stop["threshold_name"].startswith("grasp_slip_max_")
+
+
+# ------------------------------------------------------------------ a blow-up
+@pytest.mark.sim
+def test_a_blown_up_body_only_the_oracle_reads_makes_the_trial_invalid():
+    """CleanTable perceives nothing (no motion watches its cubes): one cube thrown to
+    NaN gave the mean of the other seven's rewards, a failure the learner labels."""
+    import pybullet as pb
+
+    from creative_py.simulator.trial import judge
+    from creative_py.simulator.types import SkillOutcome
+
+    world = load_world(get_case("clean_table"))
+    demo = world.manifest.demonstration
+    with open_episode(world, demo.variant, demo.location, demo.tool, robot=False) as ep:
+        assert ep.watch == [] and ep.verdict().value < 0.99
+        cube = ep.bodies["cubes3"].id
+        pb.resetBasePositionAndOrientation(cube, (math.nan, 0.0, 0.015), (0, 0, 0, 1),
+                                           physicsClientId=ep.sim.client)
+        outcome, reason, oracle, asked = judge(ep, SkillOutcome("ok"), acted=True)
+    assert (outcome, oracle, asked) == ("invalid", None, True)
+    assert reason.startswith("non-finite pose of cubes3: (nan, "), reason

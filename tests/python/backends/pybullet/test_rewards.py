@@ -12,7 +12,7 @@ import math
 
 import pytest
 
-from creative_py.backends.pybullet import rewards
+from creative_py.simulator import rewards
 from creative_py.backends.pybullet.oracles import ORACLES, OPTION_BOUNDS
 
 TOL = 1e-9
@@ -178,6 +178,11 @@ def test_clean_table_reward_is_the_mean_of_each_cubes_progress_into_the_circle()
     r, _ = rewards.fraction_within([(1.1, 0.0, 0.015)] * 8, [(0.6, 0.1, 0.015)] * 8,
                                    CIRCLE, WITHIN)
     assert r == 1.0
+    # A cube that started at the centre (d0 = 0) and was pushed out: 0, the formula's
+    # limit (it was a ZeroDivisionError, which ended the run), beside one inside: 0.5.
+    r, t = rewards.fraction_within([(1.5, 0.0, 0.015), (1.1, 0.0, 0.015)],
+                                   [(1.1, 0.0, 0.015), (0.6, 0.0, 0.015)], CIRCLE, WITHIN)
+    assert (r, t["each"]) == (0.5, [0.0, 1.0])
 
 
 # ------------------------------------------------------------------ as oracle kinds
@@ -267,3 +272,45 @@ def test_every_reward_option_with_a_number_has_bounds():
         for name in o.options:
             if name not in o.words and name != o.subject:
                 assert name in OPTION_BOUNDS, (kind, name)
+
+
+# ------------------------------------------------------------------ a blow-up
+NAN = float("nan")
+
+
+@pytest.mark.parametrize("kind, ep, given", [
+    # one cube thrown to NaN: the mean of the others' rewards was 0.5, a learned failure
+    ("fraction_within", _Episode({"c1": (NAN, 0.0, 0.015), "c2": (1.1, 0.0, 0.015)},
+                                 {"c1": (0.6, 0.0, 0.015), "c2": (0.6, 0.0, 0.015)}),
+     {"objects": ["c1", "c2"], "centre": list(CIRCLE), "within": WITHIN}),
+    # a neighbour at NaN: the reward was 0.0
+    ("displacement_neighbours",
+     _Episode({"book3": (0.4, 0.0, 0.1), "book2": (0.6, NAN, 0.1)},
+              {"book3": BOOK3, "book2": (0.6, -0.04, 0.1)}, tracked=("book3",)),
+     {"object": "book3", "neighbours": ["book2"], "success_distance": BOOK_S}),
+    # a start that was already not finite
+    ("displacement_neighbours",
+     _Episode({"book3": (0.4, 0.0, 0.1), "book2": (0.6, -0.04, 0.1)},
+              {"book3": BOOK3, "book2": (0.6, math.inf, 0.1)}, tracked=("book3",)),
+     {"object": "book3", "neighbours": ["book2"], "success_distance": BOOK_S}),
+    ("goal_distance", _Episode({"cube1": (NAN, 0.0, 0.035)}, {}),
+     {"object": "target", "goal": list(BRING_GOAL), "start": list(BRING_START)}),
+    # the speed penalty's velocity
+    ("goal_distance", _Episode({"cube1": (0.6, -0.3, 0.08)}, {}, velocity=(NAN, 0.0, 0.0)),
+     {"object": "target", "goal": list(BALL_GOAL), "start": list(BALL_START),
+      "speed_weight": 1.0}),
+    ("axis_progress", _Episode({"cube1": (1.24, NAN, 0.05)}, {}),
+     {"object": "target", "axes": ["x", "y"], "start": [1.24, 0.15], "near": [0.9, 0.01]}),
+    ("in_box_or_distance", _Episode({"cube1": (0.8, 0.1, NAN)}, {}),
+     {"object": "target", "box_min": list(BOX_MIN), "box_max": list(BOX_MAX),
+      "start": list(HIGH_START), "bonus": 0.2, "bonus_below_z": 0.85}),
+], ids=["fraction_within", "neighbour", "start", "goal_distance", "velocity",
+        "axis_progress", "in_box"])
+def test_a_non_finite_state_is_no_reward_but_a_blow_up(kind, ep, given):
+    """The protocol's rule: a state with nothing finite to measure raises (the trial is
+    invalid), never a finite reward the learner would take for a failure."""
+    from creative_py.simulator.types import NonFiniteState
+
+    with pytest.raises(NonFiniteState, match="non-finite (pose|start|velocity) of "):
+        ORACLES[kind].judge(ep, _opts(kind, **given))
+    assert issubclass(NonFiniteState, ValueError)

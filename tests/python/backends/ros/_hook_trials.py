@@ -46,7 +46,8 @@ try:
         out["absent"] = str(exc)
     out["absent_s"] = time.monotonic() - t
     os.environ["CREATIVE_ROS_WAIT_S"] = "60"
-    os.environ["CREATIVE_ROBOT_PROFILE"] = str(SIM_PROFILE)  # the absent arm: the shipped one
+    # the absent arm was the case's (the shipped profile); this one is --robot's
+    manifest = replace(manifest, robot=str(SIM_PROFILE))
 
     standin = subprocess.Popen([sys.executable, "-m", "creative_py.backends.ros.standin",
                                 "--case", "hook", "--seconds", "600", "--profile", str(SIM_PROFILE)],
@@ -73,7 +74,7 @@ try:
                        "facts": [list(f) for f in r.facts_before if f[0] in ("pose", "held")],
                        "true_final": r.true_final, "tool_load": r.tool_load})
     out["trials"] = trials
-    conn = ros.connection()
+    conn = ros.connection(world)
     out["scene_s"] = conn.scene_s
     # a scene the trainer refuses: an unknown tool of a created tool's request
     from creative_py.backends.ros.trainer import scene_request

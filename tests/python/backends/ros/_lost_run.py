@@ -7,7 +7,8 @@ private network namespace by test_ros_backend.py (never in the host's).
    the third trial in ``stopped.json`` as not as planned;
 2. a new stand-in, then ``creative run hook --resume <folder>``: it replays the two
    trials, runs the lost one again and the rest;
-3. the same run in one process with the pybullet backend, to compare the trials.
+3. the same run in one process with the pybullet backend, to compare the trials (run
+   beside the first two from the start).
 
 Prints what it saw as JSON on its last line.
 
@@ -33,12 +34,13 @@ TMP = Path(tempfile.mkdtemp(prefix="lost-run-"))
 SIM_PROFILE = TMP / "baxter-sim.toml"
 SIM_PROFILE.write_text((ROOT / "robots" / "baxter.toml").read_text()
                        .replace("use_sim_time = false", "use_sim_time = true"))
-RUN = ["run", "hook", "--seed", "0", "--phase", "use", "--video", "none"]
+RUN = ["run", "hook", "--seed", "0", "--phase", "use", "--video", "none",
+       "--robot", str(SIM_PROFILE)]  # run.json records it: the resume keeps it
 KEPT = 2  # trials recorded before the kill
 INTO = 4.0  # seconds into the next trial (its scene set up, its first skills running)
 
 out: dict = {"namespace_links": sorted(name for _, name in socket.if_nameindex())}
-env = dict(os.environ, CREATIVE_ROBOT_PROFILE=str(SIM_PROFILE), CREATIVE_ROS_WAIT_S="60")
+env = dict(os.environ, CREATIVE_ROS_WAIT_S="60")
 
 
 def start_standin() -> subprocess.Popen:
@@ -73,7 +75,11 @@ def trials(folder: Path) -> list[dict]:
 
 
 standins: list[subprocess.Popen] = []
+direct = None
 try:
+    # the same run in one process (pybullet), to compare: beside the ROS run, which
+    # waits on the stand-in much of its time
+    direct = creative("direct", *RUN, "--out", str(TMP / "direct"), backend=False)
     standins.append(start_standin())
     learner = creative("lost", *RUN, "--out", str(TMP / "ros"))
     t0, folder = time.monotonic(), None
@@ -109,8 +115,6 @@ try:
     out["resumed_trials"] = trials(folder)
     summary = json.loads((folder / "summary.json").read_text())
     out["resumed"] = summary.get("resumed")
-    # the same run in one process (pybullet), to compare
-    direct = creative("direct", *RUN, "--out", str(TMP / "direct"), backend=False)
     out["direct_rc"], _ = ended(direct, "direct", 300)
     out["direct_trials"] = trials(next((TMP / "direct").glob("hook-*")))
 except BaseException as exc:  # noqa: BLE001 - reported to the test as JSON
@@ -118,7 +122,7 @@ except BaseException as exc:  # noqa: BLE001 - reported to the test as JSON
 
     out["error"] = f"{type(exc).__name__}: {exc}\n{traceback.format_exc()}"
 finally:
-    for p in standins:
+    for p in standins + ([direct] if direct is not None else []):
         if p.poll() is None:
             p.terminate()
             try:

@@ -39,13 +39,12 @@ try:
         raise SystemExit(f"the stand-in did not start: {line!r}")
     info = json.loads(line[len("standin ready "):])
     out["interface"] = info
+    from dataclasses import replace
+
     from creative_py.backends.pybullet import load_world
     from creative_py.case import get_case
-    from creative_py.robots import ROBOT_ENV
-    import os
 
-    os.environ[ROBOT_ENV] = str(SIM_PROFILE)  # the world placed for this arm
-    manifest = get_case(CASE)
+    manifest = replace(get_case(CASE), robot=str(SIM_PROFILE))  # the world placed for this arm
     world = load_world(manifest)
     spec = world.item(manifest.demonstration.tool).spec
 

@@ -36,6 +36,14 @@ def test_a_new_run_takes_the_case_from_its_command_and_records_its_profile():
     assert profile == "lab.toml" and command.count("--robot") == 0
 
 
+def test_the_learner_gets_the_stand_ins_profile_on_its_command_line():
+    # the profile travels as --robot (no environment variable): a trial too
+    _, case, profile, command = plan(["--case", "hook", "--profile", "lab.toml", "--",
+                                      "trial", "hook", "--backend", "ros"])
+    assert command == ["trial", "hook", "--backend", "ros", "--robot", "lab.toml"]
+    assert plan(["--case", "hook", "--", "cases"])[3] == ["cases"]
+
+
 def test_a_resume_takes_case_and_profile_from_the_runs_run_json(tmp_path):
     folder = _run_folder(tmp_path, "hook-1", robot="mylab.toml")
     _, case, profile, command = plan(["--resume", str(folder)])

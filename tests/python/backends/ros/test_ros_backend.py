@@ -95,13 +95,34 @@ def test_a_primitive_the_ros_backend_lacks_is_named_with_the_case_file():
         assert "/case.toml: skill '" in line and "which the ros backend does not run" in line
 
 
-def test_the_stand_in_sets_up_the_scene_a_request_asks_for():
+def test_an_oracle_the_ros_backend_cannot_judge_is_named_with_the_tasks_file():
+    """The learner follows the poses of the perceived objects, the context and the tool
+    alone: an oracle reading another object (OneBook's neighbours) or a velocity
+    (MoveBall's speed) would be judged on the twin's still bodies, so the world is
+    refused when it loads, naming tasks.toml's oracle; the hook's is judged."""
     from creative_py.backends.pybullet import load_world
+    from creative_py.backends.ros.episode import unjudged_oracle
+    from creative_py.case import get_case
+
+    assert unjudged_oracle(load_world(get_case("hook"))) == []
+    book = unjudged_oracle(load_world(get_case("one_book")))
+    assert [line.split(" reads ")[1].split(",")[0] for line in book] == [
+        "book1", "book2", "book4", "book5"]
+    assert book[0].endswith("worlds/one_book/tasks.toml: field 'oracle': the "
+                            "displacement_neighbours oracle reads book1, whose pose the ros "
+                            "backend does not follow (it follows book3, bookends1, hook_a1)")
+    ball = unjudged_oracle(load_world(get_case("move_ball")))
+    assert ball[-1].endswith("the goal_distance oracle weighs a velocity (speed_weight > 0), "
+                             "which the ros backend does not measure")
+
+
+def test_the_stand_in_sets_up_the_scene_a_request_asks_for():
+    from creative_py.backends.pybullet import load_world, open_episode
     from creative_py.backends.ros.trainer import SceneKeeper, scene_request
     from creative_py.case import get_case
 
     world = load_world(get_case("hook"))
-    keeper = SceneKeeper(world)
+    keeper = SceneKeeper(world, open_episode)
     try:
         rid, error, ep = keeper.apply(scene_request("a1", "hook", "long_tube", 3, "hook_a4"))
         assert (rid, error) == ("a1", None)

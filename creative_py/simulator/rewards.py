@@ -8,7 +8,9 @@ docs/robotoolbench.md says which task uses which). Each function returns the rew
 its terms by name (JSON-ready numbers), the terms a report shows and a test checks.
 
 Positions are in metres in the world frame, speeds in m/s. No physics here: the oracle
-reads the positions from the episode and hands them over.
+reads the positions from the episode and hands them over. The formulas sit above the
+backend boundary, beside the tool load's rule (:mod:`creative_py.simulator.load`), so
+that every backend's oracle scores a task alike.
 """
 
 from __future__ import annotations
@@ -120,7 +122,8 @@ def fraction_within(positions: Sequence[Point], starts: Sequence[Point], centre:
     ``centre``) of ``centre``, else ``clip(1 - d / d0)``, ``d0`` its start's distance.
 
     Only the first ``len(centre)`` coordinates count (CleanTable: x, y, within 0.16 of
-    the goal circle's centre).
+    the goal circle's centre). An object that started at the centre and left the goal
+    scores 0 (the limit of the formula as ``d0`` goes to 0).
     """
     if not positions or len(positions) != len(starts):
         raise ValueError("one start per object is needed, and at least one object")
@@ -131,6 +134,8 @@ def fraction_within(positions: Sequence[Point], starts: Sequence[Point], centre:
         if d <= within:
             each.append(1.0)
             inside_count += 1
+        elif d0 == 0:  # it started at the centre and left: 1 - d / d0 tends to -inf
+            each.append(0.0)
         else:
             each.append(clip01(1.0 - d / d0))
     return float(sum(each) / len(each)), {"inside": inside_count, "objects": len(each),
