@@ -228,6 +228,24 @@ def load_profile(spec: str | Path) -> RobotProfile:
     path = profile_path(spec)
     f = Fields(load_toml(path), path)
     out: dict = {"source": str(path)}
+    out.update(_read_identity(f, path))
+    out.update(_read_base(f))
+    out.update(_read_kinematics(f))
+    joints = out["arm_joints"]
+    out.update(_read_idle(f, joints))
+    if f.has("hand"):
+        out["hand"] = _read_hand(f, joints, out["idle"])
+    out.update(_read_grasp_and_ik(f))
+    if f.has("arm"):
+        out.update(_read_ros(f, joints))
+    f.done()
+    return RobotProfile(**out)
+
+
+def _read_identity(f: Fields, path: Path) -> dict:
+    """Read the profile's name, description, URDF (resolved against ``path``) and ROS
+    package folders."""
+    out: dict = {}
     name = f.str("name")
     if not name or not name.replace("_", "").replace("-", "").isalnum():
         raise f.error("name", f"must be a name of letters, digits, - and _, got {name!r}")
@@ -242,12 +260,22 @@ def load_profile(spec: str | Path) -> RobotProfile:
         raise f.error("packages", f"must be a table of package name = folder, got {packages!r}")
     out["packages"] = {k: str((path.parent / Path(v).expanduser()).resolve())
                        for k, v in packages.items()}
+    return out
 
+
+def _read_base(f: Fields) -> dict:
+    """Read the ``[base]`` table: the arm's base position (m) and roll, pitch, yaw (rad)."""
     b = f.table("base", {})
-    out["base_position"] = b.vec("position", 3, (0.0, 0.0, 0.0), minimum=-10.0, maximum=10.0)
-    out["base_rpy"] = b.vec("rpy", 3, (0.0, 0.0, 0.0), minimum=-7.0, maximum=7.0)
+    out = {"base_position": b.vec("position", 3, (0.0, 0.0, 0.0), minimum=-10.0, maximum=10.0),
+           "base_rpy": b.vec("rpy", 3, (0.0, 0.0, 0.0), minimum=-7.0, maximum=7.0)}
     b.done()
+    return out
 
+
+def _read_kinematics(f: Fields) -> dict:
+    """Read the ``[kinematics]`` table: the arm's joints, end-effector link and tool
+    offset, approach axis, home posture, joint speed and collision links."""
+    out: dict = {}
     k = f.table("kinematics")
     joints = _names(k, "joints")
     out["arm_joints"] = joints
@@ -261,7 +289,11 @@ def load_profile(spec: str | Path) -> RobotProfile:
     out["joint_speed"] = k.float("max_joint_speed", 0.8, minimum=0.01, maximum=10.0)
     out["collision_links"] = _names(k, "collision_links", [], empty=True)
     k.done()
+    return out
 
+
+def _read_idle(f: Fields, joints: tuple[str, ...]) -> dict:
+    """Read the ``idle`` table: where the joints that are not the arm's stay (rad or m)."""
     idle = f.raw("idle", {})
     if not isinstance(idle, dict) or not all(
             isinstance(v, (int, float)) and not isinstance(v, bool) and math.isfinite(v)
@@ -269,30 +301,39 @@ def load_profile(spec: str | Path) -> RobotProfile:
         raise f.error("idle", f"must be a table of joint name = value (rad or m), got {idle!r}")
     if set(idle) & set(joints):
         raise f.error("idle", f"names an arm joint: {sorted(set(idle) & set(joints))[0]!r}")
-    out["idle"] = {n: float(v) for n, v in idle.items()}
+    return {"idle": {n: float(v) for n, v in idle.items()}}
 
-    if f.has("hand"):
-        h = f.table("hand")
-        fingers = _names(h, "joints")
-        opened = h.vec("open", len(fingers), minimum=-7.0, maximum=7.0)
-        closed = h.vec("closed", len(fingers), minimum=-7.0, maximum=7.0)
-        ratio = h.raw("gear_ratio", None)
-        if ratio is not None and (isinstance(ratio, bool) or not isinstance(ratio, (int, float))
-                                  or ratio == 0 or not math.isfinite(ratio)):
-            raise h.error("gear_ratio", f"must be a non-zero number, got {ratio!r}")
-        if ratio is not None and len(fingers) != 2:
-            raise h.error("gear_ratio", "couples two finger joints; the hand names "
-                          f"{len(fingers)}")
-        out["hand"] = HandSpec(fingers, opened, closed,
-                               h.float("max_force", 20.0, minimum=0.0, maximum=1e4),
-                               None if ratio is None else float(ratio),
-                               h.bool("driven", True))
-        h.done()
-        if set(fingers) & (set(joints) | set(idle)):
-            raise f.error("hand.joints", "names an arm or idle joint")
+
+def _read_hand(f: Fields, joints: tuple[str, ...], idle: dict[str, float]) -> HandSpec:
+    """Read the ``[hand]`` table: the finger joints (none of the arm's or idle ones),
+    their open and closed positions, force, gear ratio and whether they are driven."""
+    h = f.table("hand")
+    fingers = _names(h, "joints")
+    opened = h.vec("open", len(fingers), minimum=-7.0, maximum=7.0)
+    closed = h.vec("closed", len(fingers), minimum=-7.0, maximum=7.0)
+    ratio = h.raw("gear_ratio", None)
+    if ratio is not None and (isinstance(ratio, bool) or not isinstance(ratio, (int, float))
+                              or ratio == 0 or not math.isfinite(ratio)):
+        raise h.error("gear_ratio", f"must be a non-zero number, got {ratio!r}")
+    if ratio is not None and len(fingers) != 2:
+        raise h.error("gear_ratio", "couples two finger joints; the hand names "
+                      f"{len(fingers)}")
+    hand = HandSpec(fingers, opened, closed,
+                    h.float("max_force", 20.0, minimum=0.0, maximum=1e4),
+                    None if ratio is None else float(ratio),
+                    h.bool("driven", True))
+    h.done()
+    if set(fingers) & (set(joints) | set(idle)):
+        raise f.error("hand.joints", "names an arm or idle joint")
+    return hand
+
+
+def _read_grasp_and_ik(f: Fields) -> dict:
+    """Read the ``[grasp]`` table (how a tool is held, the hold's force, N) and the
+    ``[ik]`` table (the IK's tolerances, centring and restarts)."""
     g = f.table("grasp", {})
-    out["grasp_mode"] = g.str("mode", "constraint", choices=("constraint",))
-    out["grasp_max_force"] = g.float("max_force", 500.0, minimum=1.0, maximum=1e5)
+    out = {"grasp_mode": g.str("mode", "constraint", choices=("constraint",)),
+           "grasp_max_force": g.float("max_force", 500.0, minimum=1.0, maximum=1e5)}
     g.done()
     ik = f.table("ik", {})
     out["ik"] = IkSpec(ik.float("position_tolerance", 0.002, minimum=1e-6, maximum=0.05),
@@ -300,16 +341,25 @@ def load_profile(spec: str | Path) -> RobotProfile:
                        ik.float("centring", 0.05, minimum=0.0, maximum=1.0),
                        ik.int("restarts", 40, minimum=0, maximum=1000))
     ik.done()
-
-    if f.has("arm"):
-        out.update(_read_ros(f, joints))
-    f.done()
-    return RobotProfile(**out)
+    return out
 
 
 def _read_ros(f: Fields, arm_joints: tuple[str, ...]) -> dict:
     """Read the ROS 2 interface tables into the profile's ROS fields."""
     out: dict = {"has_ros": True}
+    out.update(_read_ros_frames(f))
+    out.update(_read_ros_arm(f, arm_joints))
+    out.update(_read_ros_gripper(f))
+    out.update(_read_ros_objects(f))
+    out.update(_read_ros_limits(f))
+    out.update(_read_ros_optional(f))
+    return out
+
+
+def _read_ros_frames(f: Fields) -> dict:
+    """Read ``[frames]`` (the world and base frames) and ``[joint_states]`` (the topic,
+    its rate, Hz, and when it is stale, s)."""
+    out: dict = {}
     fr = f.table("frames")
     out["world_frame"], out["base_frame"] = _ros_name(fr, "world"), _ros_name(fr, "base")
     fr.done()
@@ -318,6 +368,13 @@ def _read_ros(f: Fields, arm_joints: tuple[str, ...]) -> dict:
     out["joint_states_rate_hz"] = js.float("rate_hz", minimum=1.0, maximum=1000.0)
     out["stale_after_s"] = js.float("stale_after_s", minimum=0.01, maximum=10.0)
     js.done()
+    return out
+
+
+def _read_ros_arm(f: Fields, arm_joints: tuple[str, ...]) -> dict:
+    """Read ``[arm]``: the trajectory action, its joints (those of
+    ``kinematics.joints``, in any order) and its tolerances (rad, s)."""
+    out: dict = {}
     arm = f.table("arm")
     out["arm_action"] = _ros_name(arm, "action")
     joints = arm.raw("joints")
@@ -332,6 +389,13 @@ def _read_ros(f: Fields, arm_joints: tuple[str, ...]) -> dict:
     out["goal_tolerance"] = arm.float("goal_tolerance", minimum=1e-5, maximum=3.2)
     out["goal_time_tolerance"] = arm.float("goal_time_tolerance", minimum=0.0, maximum=60.0)
     arm.done()
+    return out
+
+
+def _read_ros_gripper(f: Fields) -> dict:
+    """Read ``[gripper]``: its action and joint, its open and closed positions (closed
+    below open) and its effort."""
+    out: dict = {}
     g = f.table("gripper")
     out["gripper_action"], out["gripper_joint"] = _ros_name(g, "action"), _ros_name(g, "joint")
     out["gripper_open"] = g.float("open_position", minimum=0.0, maximum=1.0)
@@ -341,6 +405,13 @@ def _read_ros(f: Fields, arm_joints: tuple[str, ...]) -> dict:
         raise g.error("closed_position", f"must be below open_position "
                       f"({out['gripper_open']}), got {out['gripper_closed']}")
     g.done()
+    return out
+
+
+def _read_ros_objects(f: Fields) -> dict:
+    """Read ``[objects]``: the motion-capture topic (one per object, ``{name}`` in
+    it), its rate (Hz) and the objects' mocap names."""
+    out: dict = {}
     o = f.table("objects")
     topic = _ros_name(o, "topic")
     if "{name}" not in topic:
@@ -352,6 +423,13 @@ def _read_ros(f: Fields, arm_joints: tuple[str, ...]) -> dict:
         raise o.error("names", f"must be a table of object name = mocap name, got {names!r}")
     out["object_names"] = dict(names)
     o.done()
+    return out
+
+
+def _read_ros_limits(f: Fields) -> dict:
+    """Read ``[limits]``: the joint speed (rad/s) and the workspace box (m), its
+    maximum above its minimum on every axis."""
+    out: dict = {}
     lim = f.table("limits")
     out["max_joint_speed"] = lim.float("max_joint_speed", minimum=1e-3, maximum=10.0)
     lo = lim.vec("workspace_min", 3, minimum=-10.0, maximum=10.0)
@@ -361,6 +439,13 @@ def _read_ros(f: Fields, arm_joints: tuple[str, ...]) -> dict:
                         f"axis, got {list(hi)}")
     out["workspace_min"], out["workspace_max"] = lo, hi
     lim.done()
+    return out
+
+
+def _read_ros_optional(f: Fields) -> dict:
+    """Read the optional tables: ``[clock]`` (a simulated arm's clock), ``[trainer]``
+    (the topics and timeout of a trainer) and ``[wrench]`` (a force-torque topic)."""
+    out: dict = {}
     c = f.table("clock", {})  # optional: a simulated arm's clock (rosgraph_msgs/Clock)
     out["use_sim_time"] = c.bool("use_sim_time", False)
     out["clock_topic"] = _ros_name(c, "topic") if c.has("topic") else "/clock"

@@ -418,20 +418,32 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         _write_csv(folder / "sweep.csv", result.rows)
         raise SweepStopped(signum, folder, len(result.rows), total) from None
     result.wall_time_s = round(time.perf_counter() - t0, 2)
-    order = {spec: i for i, spec in enumerate(runs)}
-    result.rows.sort(key=lambda r: order.get(RunSpec(
-        r["case"], r["strategy"], int(r["seed"]),
-        None if r["world_seed"] == "" else int(r["world_seed"])), 0))
+    _sort_as_planned(result.rows, runs)
     _write_csv(folder / "sweep.csv", result.rows)
     plot_sweep(result.rows, folder / "sweep.png")
-    (folder / "sweep.json").write_text(json.dumps({
+    ray = None if serial else {"address": address, "num_cpus": num_cpus,
+                               "fresh_workers": fresh_workers}
+    _write_sweep_json(folder / "sweep.json", runs, options, ray, serial, result)
+    return result
+
+
+def _sort_as_planned(rows: list[dict[str, Any]], runs: Sequence[RunSpec]) -> None:
+    """Sort the rows of finished runs (in the order they finished) as ``runs`` plans them."""
+    order = {spec: i for i, spec in enumerate(runs)}
+    rows.sort(key=lambda r: order.get(RunSpec(
+        r["case"], r["strategy"], int(r["seed"]),
+        None if r["world_seed"] == "" else int(r["world_seed"])), 0))
+
+
+def _write_sweep_json(path: Path, runs: Sequence[RunSpec], options: SweepOptions,
+                      ray: Optional[dict[str, Any]], serial: bool, result: SweepResult) -> None:
+    """Write ``sweep.json``: the planned runs, the options, how they ran (Ray's settings,
+    or serial), the wall time (s) and the counts of runs that ended and that crashed."""
+    path.write_text(json.dumps({
         "runs": [asdict(r) for r in runs], "options": asdict(options),
-        "ray": None if serial else {"address": address, "num_cpus": num_cpus,
-                                    "fresh_workers": fresh_workers},
-        "serial": serial, "wall_time_s": result.wall_time_s,
+        "ray": ray, "serial": serial, "wall_time_s": result.wall_time_s,
         "ok": sum(r["status"] == "ok" for r in result.rows),
         "crashed": sum(r["status"] != "ok" for r in result.rows)}, indent=1) + "\n")
-    return result
 
 
 RAY_START_ATTEMPTS = 3
@@ -556,50 +568,27 @@ def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from creative_py.case import get_case
-
     cases = list(dict.fromkeys(r["case"] for r in rows))
     strategies = list(dict.fromkeys(r["strategy"] for r in rows))
     fig, ax = plt.subplots(figsize=(max(5.0, 1.1 * len(cases) * len(strategies) + 2), 4.2))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     positions, labels, data = [], [], []
     x = 0.0
-    marked_paper = marked_bound = False
+    marked = {"paper": False, "bound": False}
     for ci, case in enumerate(cases):
         start = x
         for si, strategy in enumerate(strategies):
             group = [r for r in rows if r["case"] == case and r["strategy"] == strategy]
-            ok = [float(r["trials_to_learn"]) for r in group
-                  if r["status"] == "ok" and r["trials_to_learn"] not in ("", None)]
-            crashed = len(group) - len(ok)
-            ev = [(int(r["eval_successes"]), int(r["eval_trials"])) for r in group
-                  if r["status"] == "ok" and str(r.get("eval_trials", "")) not in ("", "0")]
-            model = (f"\nmodel {sum(a for a, _ in ev)}/{sum(b for _, b in ev)}" if ev else "")
+            label, ok = _sweep_group(case, strategy, group)
             positions.append(x)
-            labels.append(f"{case}\n{strategy}{model}"
-                          + (f"\n({crashed} crashed)" if crashed else ""))
+            labels.append(label)
             data.append(ok)
             if ok:
                 jitter = [x + 0.12 * math.sin(7.3 * i) for i in range(len(ok))]
                 ax.scatter(jitter, ok, s=14, color=colours[si % len(colours)], alpha=0.8,
                            zorder=5)
             x += 1.0
-        end = x - 1.0
-        try:
-            paper = get_case(case).paper_trials
-        except KeyError:
-            paper = None
-        if paper is not None:
-            ax.hlines(paper, start - 0.4, end + 0.4, colors="tab:red", linewidth=2,
-                      label=None if marked_paper else "paper's count", zorder=4)
-            marked_paper = True
-        bounds = [float(r["info_bound_trials"]) for r in rows
-                  if r["case"] == case and r.get("info_bound_trials") not in ("", None)]
-        if bounds:
-            ax.hlines(statistics.median(bounds), start - 0.4, end + 0.4, colors="tab:green",
-                      linestyles="dashed", linewidth=2,
-                      label=None if marked_bound else "ceil(log2 N0) bound", zorder=4)
-            marked_bound = True
+        _mark_case(ax, case, rows, start, x - 1.0, marked)
         x += 0.6 if ci < len(cases) - 1 else 0.0
     nonempty = [(p, d) for p, d in zip(positions, data) if d]
     if nonempty:
@@ -608,20 +597,12 @@ def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
     ax.set_xticks(positions)
     ax.set_xticklabels(labels, fontsize=8)
     ax.set_ylabel("tool-use trials to learn")
-    tops = [v for d in data for v in d] + [1.0]
-    tops += [float(r["info_bound_trials"]) for r in rows
-             if r.get("info_bound_trials") not in ("", None)]
-    for case in cases:
-        try:
-            tops.append(float(get_case(case).paper_trials or 0))
-        except KeyError:
-            pass
-    ax.set_ylim(0, max(tops) * 1.15 + 1)
+    ax.set_ylim(0, _highest_mark(rows, data, cases) * 1.15 + 1)
     n = len(rows)
     worlds = len({r["world_seed"] for r in rows})
     ax.set_title(f"CREATIVE-py sweep: {n} run{'s' if n != 1 else ''} over {worlds} "
                  f"world{'s' if worlds != 1 else ''}", fontsize=10)
-    if not marked_bound:
+    if not marked["bound"]:
         ax.plot([], [], " ", label="log2 bound: not in these runs' summaries")
     ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.18), ncol=2,
               frameon=False)
@@ -630,3 +611,58 @@ def plot_sweep(rows: Sequence[dict[str, Any]], path: Path) -> Path:
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return Path(path)
+
+
+def _sweep_group(case: str, strategy: str,
+                 group: Sequence[dict[str, Any]]) -> tuple[str, list[float]]:
+    """Return the label of one case and strategy's runs (with its learned models'
+    evaluation and its crashed runs) and the trials to learn of its runs that ended."""
+    ok = [float(r["trials_to_learn"]) for r in group
+          if r["status"] == "ok" and r["trials_to_learn"] not in ("", None)]
+    crashed = len(group) - len(ok)
+    ev = [(int(r["eval_successes"]), int(r["eval_trials"])) for r in group
+          if r["status"] == "ok" and str(r.get("eval_trials", "")) not in ("", "0")]
+    model = (f"\nmodel {sum(a for a, _ in ev)}/{sum(b for _, b in ev)}" if ev else "")
+    return (f"{case}\n{strategy}{model}" + (f"\n({crashed} crashed)" if crashed else ""),
+            ok)
+
+
+def _mark_case(ax, case: str, rows: Sequence[dict[str, Any]], start: float, end: float,
+               marked: dict[str, bool]) -> None:
+    """Draw over the groups of ``case`` (x from ``start`` to ``end``) the paper's count
+    and the median information bound, where known; label each kind of mark once
+    (``marked`` says which are labelled already)."""
+    from creative_py.case import get_case
+
+    try:
+        paper = get_case(case).paper_trials
+    except KeyError:
+        paper = None
+    if paper is not None:
+        ax.hlines(paper, start - 0.4, end + 0.4, colors="tab:red", linewidth=2,
+                  label=None if marked["paper"] else "paper's count", zorder=4)
+        marked["paper"] = True
+    bounds = [float(r["info_bound_trials"]) for r in rows
+              if r["case"] == case and r.get("info_bound_trials") not in ("", None)]
+    if bounds:
+        ax.hlines(statistics.median(bounds), start - 0.4, end + 0.4, colors="tab:green",
+                  linestyles="dashed", linewidth=2,
+                  label=None if marked["bound"] else "ceil(log2 N0) bound", zorder=4)
+        marked["bound"] = True
+
+
+def _highest_mark(rows: Sequence[dict[str, Any]], data: list[list[float]],
+                  cases: list[str]) -> float:
+    """Return the highest number the plot shows (at least 1): a run's trials, a bound,
+    a paper's count."""
+    from creative_py.case import get_case
+
+    tops = [v for d in data for v in d] + [1.0]
+    tops += [float(r["info_bound_trials"]) for r in rows
+             if r.get("info_bound_trials") not in ("", None)]
+    for case in cases:
+        try:
+            tops.append(float(get_case(case).paper_trials or 0))
+        except KeyError:
+            pass
+    return max(tops)

@@ -243,18 +243,9 @@ def check_strength(spec: KindSpec, load: Optional[dict[str, Any]], *,
     if load is not None and check.stress_pa > 0 and force > 0:
         peak_stress = check.stress_pa * peak / force  # every model is linear in F
         peak_sf = strength_pa / peak_stress if peak_stress > 0 else None
-    window = 0.0 if load is None else float(load.get("window_s") or 0.0)
-    what = (f"the 95th percentile of the contact force averaged over {window:g} s windows "
-            f"({load.get('contact_steps', 0)} steps with contact)" if window > 0 else
-            f"the 95th percentile of the per-step contact force over "
-            f"{load.get('contact_steps', 0) if load else 0} steps with contact")
-    shown = f"{force:.3g}" if window > 0 else f"{force:.1f}"  # windowed: a few 0.1 N
-    caveat = "" if load is None else (
-        f"checked with {shown} N, {what}; the one-step peak "
-        f"{peak:.1f} N (a contact spike, sensitive to the time step) would give a safety "
-        f"factor of {'-' if peak_sf is None else f'{peak_sf:.1f}'}")
     check = replace(check, peak_force_n=peak if load is not None else None,
-                    peak_safety_factor=peak_sf, caveat=caveat)
+                    peak_safety_factor=peak_sf,
+                    caveat="" if load is None else _load_caveat(load, force, peak, peak_sf))
     if load is None:
         verdict = "unmeasured"
     elif check.safety_factor is None or check.safety_factor >= safety_factor:
@@ -262,6 +253,22 @@ def check_strength(spec: KindSpec, load: Optional[dict[str, Any]], *,
     else:
         verdict = "fail"
     return replace(check, verdict=verdict)
+
+
+def _load_caveat(load: dict[str, Any], force: float, peak: float,
+                 peak_sf: Optional[float]) -> str:
+    """Return what the check's ``force`` (N) is, from the trial's ``load`` (windowed or
+    per step, over how many steps with contact), and the safety factor the one-step
+    ``peak`` (N) would give."""
+    window = float(load.get("window_s") or 0.0)
+    what = (f"the 95th percentile of the contact force averaged over {window:g} s windows "
+            f"({load.get('contact_steps', 0)} steps with contact)" if window > 0 else
+            f"the 95th percentile of the per-step contact force over "
+            f"{load.get('contact_steps', 0) if load else 0} steps with contact")
+    shown = f"{force:.3g}" if window > 0 else f"{force:.1f}"  # windowed: a few 0.1 N
+    return (f"checked with {shown} N, {what}; the one-step peak "
+            f"{peak:.1f} N (a contact spike, sensitive to the time step) would give a safety "
+            f"factor of {'-' if peak_sf is None else f'{peak_sf:.1f}'}")
 
 
 def thickening_fact(check: StrengthCheck) -> Compound:

@@ -190,6 +190,23 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
     meta_path = Path(run_dir) / "run.json"
     if not meta_path.is_file():
         raise ValueError(f"{run_dir}: not a resumable run folder (no run.json)")
+    meta = _run_json_object(meta_path)
+    options = _recorded_options(meta_path, meta["options"])
+    world = meta.get("world")
+    if world is not None and not isinstance(world, str):
+        raise ValueError(f"{meta_path}: field 'world' must be a folder or null, got "
+                         f"{world!r}")
+    drawn = meta.get("drawn_world")
+    if drawn is not None and not isinstance(drawn, dict):
+        raise ValueError(f"{meta_path}: field 'drawn_world' must be an object or null, "
+                         f"got {type(drawn).__name__}")
+    _check_unedited(meta_path, meta)
+    return meta["case"], options, Path(world) if world else None, drawn
+
+
+def _run_json_object(meta_path: Path) -> dict[str, Any]:
+    """Return ``run.json`` read: a JSON object with its ``case`` (text) and ``options``;
+    raise ValueError naming the file and what is wrong."""
     try:
         meta = json.loads(meta_path.read_text(encoding="utf-8"))
     except (json.JSONDecodeError, UnicodeDecodeError) as exc:
@@ -202,7 +219,12 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
             raise ValueError(f"{meta_path}: field {key!r} is missing")
     if not isinstance(meta["case"], str):
         raise ValueError(f"{meta_path}: field 'case' must be text, got {meta['case']!r}")
-    opts = meta["options"]
+    return meta
+
+
+def _recorded_options(meta_path: Path, opts: Any) -> RunOptions:
+    """Return the run's options from ``run.json``'s ``options`` (an older run's defaults
+    where it has none; no GUI); raise ValueError naming the field that is wrong."""
     if not isinstance(opts, dict):
         raise ValueError(f"{meta_path}: field 'options' must be an object, got "
                          f"{type(opts).__name__}")
@@ -214,18 +236,15 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
         raise ValueError(f"{meta_path}: field 'options.{unknown[0]}' is not an option "
                          f"({', '.join(sorted(names))})")
     try:
-        options = RunOptions(**{"strategy": "paper", "catalogue_first": False,
-                                **opts, "gui": False})
+        return RunOptions(**{"strategy": "paper", "catalogue_first": False,
+                             **opts, "gui": False})
     except ValueError as exc:
         raise ValueError(f"{meta_path}: field 'options': {exc}") from None
-    world = meta.get("world")
-    if world is not None and not isinstance(world, str):
-        raise ValueError(f"{meta_path}: field 'world' must be a folder or null, got "
-                         f"{world!r}")
-    drawn = meta.get("drawn_world")
-    if drawn is not None and not isinstance(drawn, dict):
-        raise ValueError(f"{meta_path}: field 'drawn_world' must be an object or null, "
-                         f"got {type(drawn).__name__}")
+
+
+def _check_unedited(meta_path: Path, meta: dict[str, Any]) -> None:
+    """Raise ValueError unless ``run.json`` has its ``check`` and it matches the fields
+    (:func:`run_json_check`): the file was not edited after the run began."""
     # Every run.json is written with its check (run_json), so a missing one was taken
     # out: without it an edited seed resumed and mixed two seeds' trials.
     if "check" not in meta:
@@ -236,4 +255,3 @@ def read_run_json(run_dir: Path) -> tuple[str, RunOptions, Optional[Path],
         raise ValueError(f"{meta_path}: field 'check' does not match the case, options, "
                          "world and drawn world: run.json was changed after the run began; "
                          "the run cannot be resumed (start a new run for other options)")
-    return meta["case"], options, Path(world) if world else None, drawn

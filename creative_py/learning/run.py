@@ -122,46 +122,65 @@ def run_case(case: str, out: Path = Path("runs"), options: RunOptions = RunOptio
         runner = _trial_runner(engine, world, run, options, say, replay, lines)
         clips = runner.clips
         wall: dict[str, float] = {}
-        parts: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
-                                 "options": options.recorded(), "world_seed": options.world_seed,
-                                 "drawn_world": drawn,
-                                 **phases.case_facts(world.manifest, options)}
-        use, learned = phases.learn_to_use(runner, options, wall, say)
-        parts.update(learned)
-        parts.update(phases.plan_and_evaluate(runner, use, options, wall, say))
-        if options.phase in ("create", "all"):
-            parts["create"], check = phases.create(runner, use, options, wall, say)
-            if check is not None:
-                parts["pddl"] = replace(parts["pddl"], create=check)
+        parts = _run_phases(runner, case, options, drawn, world.manifest, wall, say)
         runner.end_replay()  # a resume with nothing left to run: the replay was checked
         _finish(runner, clips, parts, wall, t_start, say,
                 before if resume is not None and runner.physical == 0 else None, resumed)
         (run.path / STOPPED).unlink(missing_ok=True)  # a resumed run went on to its end
     except BaseException as exc:
-        interrupted = isinstance(exc, KeyboardInterrupt)
-        lost = isinstance(exc, BackendLost)
-        if (interrupted or lost) and clips is not None:
-            _finish_clips(clips, say)
-        # Nothing learned yet (the demonstration failed, the run was interrupted before
-        # its first trial): leave no empty folder behind. (A run killed outright leaves
-        # run.json: --resume starts it again from there.)
-        if not run.trials and resume is None:
-            run.release()
-            shutil.rmtree(run.path, ignore_errors=True)
-            if interrupted:
-                say("interrupted before the first trial: nothing was kept")
-            elif lost:
-                say(f"the backend was lost before the first trial ({exc}): nothing was kept")
-        elif interrupted:
-            say(f"interrupted after {len(run.trials)} trial(s); to go on: "
-                f"{resume_command(case, run.path)}")
-        elif lost:
-            exc.resume_command = _stopped(run, case, exc, say)
+        _stopped_early(exc, run, case, clips, resume is not None, say)
         raise
     finally:
         if resume is None:
             run.release()  # a resumed folder's lock is resume_run's
     return run
+
+
+def _run_phases(runner: TrialRunner, case: str, options: RunOptions,
+                drawn: Optional[dict[str, Any]], manifest, wall: dict[str, float],
+                say: Callable[[str], None]) -> dict[str, Any]:
+    """Run the run's phases (tool-use learning, the plan and the evaluation, tool
+    creation when ``options.phase`` asks for it) and return the parts of its summary;
+    ``wall`` receives each phase's wall time (s)."""
+    parts: dict[str, Any] = {"case": case, "seed": options.seed, "phase": options.phase,
+                             "options": options.recorded(), "world_seed": options.world_seed,
+                             "drawn_world": drawn,
+                             **phases.case_facts(manifest, options)}
+    use, learned = phases.learn_to_use(runner, options, wall, say)
+    parts.update(learned)
+    parts.update(phases.plan_and_evaluate(runner, use, options, wall, say))
+    if options.phase in ("create", "all"):
+        parts["create"], check = phases.create(runner, use, options, wall, say)
+        if check is not None:
+            parts["pddl"] = replace(parts["pddl"], create=check)
+    return parts
+
+
+def _stopped_early(exc: BaseException, run: RunFolder, case: str,
+                   clips: Optional[ClipKeeper], resumed: bool,
+                   say: Callable[[str], None]) -> None:
+    """Leave the run folder as a run stopped by ``exc`` should: the clips kept so far
+    (Ctrl-C, a lost backend), no empty folder of a new run, how to go on said (Ctrl-C)
+    or written in it (a lost backend: ``exc.resume_command``)."""
+    interrupted = isinstance(exc, KeyboardInterrupt)
+    lost = isinstance(exc, BackendLost)
+    if (interrupted or lost) and clips is not None:
+        _finish_clips(clips, say)
+    # Nothing learned yet (the demonstration failed, the run was interrupted before
+    # its first trial): leave no empty folder behind. (A run killed outright leaves
+    # run.json: --resume starts it again from there.)
+    if not run.trials and not resumed:
+        run.release()
+        shutil.rmtree(run.path, ignore_errors=True)
+        if interrupted:
+            say("interrupted before the first trial: nothing was kept")
+        elif lost:
+            say(f"the backend was lost before the first trial ({exc}): nothing was kept")
+    elif interrupted:
+        say(f"interrupted after {len(run.trials)} trial(s); to go on: "
+            f"{resume_command(case, run.path)}")
+    elif lost:
+        exc.resume_command = _stopped(run, case, exc, say)
 
 
 STOPPED = "stopped.json"

@@ -254,25 +254,8 @@ class ToolUseLearner:
         runner, opts = self.runner, self.options
         strategy = strategy_named(opts.strategy)
         models, example, demo_tool = self.observe_demonstration()
-        taken: list[Term] = []
-        if self.prior is not None:
-            taken = list(self.engine.prior_literals(self.case, self.prior.term, example))
-            vs = self.engine.vs_init_prior(self.case, example, taken)
-            runner.progress(f"prior from case {self.prior.case} ({self.prior.source}): "
-                            f"{len(taken)} literal(s) predicted necessary, open until the "
-                            "physics settles them: "
-                            + (", ".join(str(t) for t in taken) or "none"))
-        else:
-            vs = self.engine.vs_init(example)
-        dropped: list[tuple[str, int]] = []
+        vs, taken, dropped = self._initial_space(example)
         events: list[tuple[str, str, int]] = []
-        if self.prior is not None:
-            # The demonstration is the first trial the prior can be wrong about: a
-            # literal it violates is contradicted there (trial 0) and not taken.
-            for lit in self.engine.prior_contradicted(self.case, self.prior.term, example):
-                dropped.append((str(lit), 0))
-                runner.progress(f"the demonstration contradicted the prior: {lit} "
-                                "not taken, learned afresh")
         n0, exact0 = self.engine.vs_count(vs)
         runner.progress(f"demonstration with {demo_tool}: new model {_model_names(models)}; "
                         f"{n0} hypotheses{'' if exact0 else ' at most'}")
@@ -320,6 +303,31 @@ class ToolUseLearner:
                          self.prior, tuple(str(t) for t in taken), tuple(dropped),
                          tuple((lit, i) for kind, lit, i in events if kind == "settled"),
                          tuple((lit, i) for kind, lit, i in events if kind == "confirmed"))
+
+    def _initial_space(self, example: Term) -> tuple[Term, list[Term], list[tuple[str, int]]]:
+        """Return the version space the demonstration ``example`` starts (from the prior,
+        when there is one), the prior's literals taken (open until the physics settles
+        them) and those the demonstration contradicts (at trial 0)."""
+        runner = self.runner
+        taken: list[Term] = []
+        if self.prior is not None:
+            taken = list(self.engine.prior_literals(self.case, self.prior.term, example))
+            vs = self.engine.vs_init_prior(self.case, example, taken)
+            runner.progress(f"prior from case {self.prior.case} ({self.prior.source}): "
+                            f"{len(taken)} literal(s) predicted necessary, open until the "
+                            "physics settles them: "
+                            + (", ".join(str(t) for t in taken) or "none"))
+        else:
+            vs = self.engine.vs_init(example)
+        dropped: list[tuple[str, int]] = []
+        if self.prior is not None:
+            # The demonstration is the first trial the prior can be wrong about: a
+            # literal it violates is contradicted there (trial 0) and not taken.
+            for lit in self.engine.prior_contradicted(self.case, self.prior.term, example):
+                dropped.append((str(lit), 0))
+                runner.progress(f"the demonstration contradicted the prior: {lit} "
+                                "not taken, learned afresh")
+        return vs, taken, dropped
 
     def _note_prior(self, vs: Term, i: int, events: list[tuple[str, str, int]],
                     dropped: list[tuple[str, int]]) -> None:

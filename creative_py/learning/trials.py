@@ -82,6 +82,18 @@ def pose_numbers(pose: Term) -> tuple[float, ...]:
     return tuple(float(a) for a in pose.args)
 
 
+def _trial_line(n: int, phase: str, tool: str, location: int, ex, tested: list[str]) -> str:
+    """Return trial ``n``'s progress line: its number, phase, tool, location, outcome,
+    tested literals and why it did not go as planned (when it did not)."""
+    # One trial number everywhere (terminal, tables, plot, clips, report): the run's
+    # own, n of trials.jsonl (the demonstration is 0); a phase's count repeats
+    # (the created tool's evaluation starts at 1 again).
+    return (f"#{n:<3} {PHASE_TAGS[phase]:<4} {tool:<14} "
+            f"loc {location}  {ex.outcome:<11} tested {', '.join(tested) or '-'}"
+            # how the trial did not go as planned, as the table and the clip say it
+            + ("" if plain_reason(ex.reason) else f"  because {ex.reason}"))
+
+
 class TrialRunner:
     """Runs planned experiments of one case in the physics and keeps their records.
 
@@ -179,21 +191,9 @@ class TrialRunner:
             ex = self._physical(n, phase, phase_trial, str(tool), tested_l, task, pose)
         td = time.perf_counter()
         if label:
-            try:
-                vs = self._label(vs, exp, ex, task)
-            except (TypeError, ValueError, PrologError, PrologFailed) as exc:
-                if not replayed:
-                    raise
-                raise ValueError(f"{self._where(n)}: field 'facts' does not label "
-                                 f"({exc}); the run cannot be resumed") from None
+            vs = self._label_trial(n, vs, exp, ex, task, replayed)
         hs, hg = self.bounds(vs)
-        # One trial number everywhere (terminal, tables, plot, clips, report): the run's
-        # own, n of trials.jsonl (the demonstration is 0); a phase's count repeats
-        # (the created tool's evaluation starts at 1 again).
-        line = (f"#{n:<3} {PHASE_TAGS[phase]:<4} {str(tool):<14} "
-                f"loc {task.location}  {ex.outcome:<11} tested {', '.join(tested_l) or '-'}"
-                # how the trial did not go as planned, as the table and the clip say it
-                + ("" if plain_reason(ex.reason) else f"  because {ex.reason}"))
+        line = _trial_line(n, phase, str(tool), task.location, ex, tested_l)
         if replayed:
             rec = self._checked_replay(n, hs, hg)
             self.progress(line + "  (replayed)")
@@ -225,6 +225,19 @@ class TrialRunner:
         measured = "; ".join(verdict_lines(ex.verdict))
         self.progress(line + (f"  [{measured}]" if measured else ""))
         return rec, vs
+
+    def _label_trial(self, n: int, vs: Term, exp: Term, ex, task: TaskState,
+                     replayed: bool) -> Term:
+        """Return the version space ``vs`` after labelling trial ``n`` (its experiment
+        ``exp``, its episode ``ex``); a replayed trial that does not label is a resume
+        refused (ValueError naming the line of trials.jsonl)."""
+        try:
+            return self._label(vs, exp, ex, task)
+        except (TypeError, ValueError, PrologError, PrologFailed) as exc:
+            if not replayed:
+                raise
+            raise ValueError(f"{self._where(n)}: field 'facts' does not label "
+                             f"({exc}); the run cannot be resumed") from None
 
     def _planned(self, exp: Term) -> tuple[str, Term, list[str], list[Term], Term]:
         """Return what an ``experiment/6`` or ``exploit/4`` term plans: its kind, the

@@ -262,6 +262,23 @@ def check_tool_files(files: ToolFiles | Path | str, *, openscad: bool = True,
 
     stl = _load_mm_mesh(files.stl)
     expected_volume = spec_volume(spec)
+    stl_volume, stl_err, shells = _stl_against_spec(files, stl, expected_volume, problems)
+    urdf_mass, sdf_mass, inertia_problems = _descriptions_against_spec(files, problems)
+    report = dict(name=spec.name, stl_watertight=bool(stl.is_watertight), stl_shells=shells,
+                  stl_volume=stl_volume, spec_volume=expected_volume,
+                  stl_volume_rel_err=stl_err, urdf_mass=urdf_mass, sdf_mass=sdf_mass,
+                  inertia_valid=not inertia_problems,
+                  fits_build_volume=files.fits_build_volume)
+    if openscad and files.scad.is_file():
+        report.update(_scad_against_stl(files, stl, stl_volume, openscad_program, problems))
+    return ToolCheck(**report, problems=tuple(problems))
+
+
+def _stl_against_spec(files: ToolFiles, stl, expected_volume: float,
+                      problems: list[str]) -> tuple[float, float, int]:
+    """Return the STL's volume (m^3), its relative error against the spec's and its
+    shell count; append to ``problems`` what is wrong (not watertight, not one shell,
+    a volume off by more than :data:`STL_VOLUME_RTOL`)."""
     stl_volume = float(stl.volume) / MM3_PER_M3
     stl_err = abs(stl_volume - expected_volume) / expected_volume
     shells = int(stl.body_count)
@@ -272,8 +289,14 @@ def check_tool_files(files: ToolFiles | Path | str, *, openscad: bool = True,
     if stl_err > STL_VOLUME_RTOL:
         problems.append(f"{files.stl}: volume {stl_volume:.6g} m^3 differs from spec_volume "
                         f"{expected_volume:.6g} m^3 by {stl_err:.2%}")
+    return stl_volume, stl_err, shells
 
-    mass = spec_mass(spec)
+
+def _descriptions_against_spec(files: ToolFiles, problems: list[str]):
+    """Return the URDF's and the SDF's mass (kg; None if unreadable) and the URDF's
+    inertia problems; append to ``problems`` what is wrong (an unreadable file, a mass
+    off the spec's by more than :data:`MASS_RTOL`, a bad inertia, a missing mesh)."""
+    mass = spec_mass(files.spec)
     urdf_mass = sdf_mass = None
     inertia_problems = ["not read"]
     meshes: list[str] = []
@@ -296,31 +319,31 @@ def check_tool_files(files: ToolFiles | Path | str, *, openscad: bool = True,
     for name in meshes:
         if not (name and (files.directory / name).is_file()):
             problems.append(f"mesh {name!r} referenced by URDF/SDF is missing")
+    return urdf_mass, sdf_mass, inertia_problems
 
-    report = dict(name=spec.name, stl_watertight=bool(stl.is_watertight), stl_shells=shells,
-                  stl_volume=stl_volume, spec_volume=expected_volume,
-                  stl_volume_rel_err=stl_err, urdf_mass=urdf_mass, sdf_mass=sdf_mass,
-                  inertia_valid=not inertia_problems,
-                  fits_build_volume=files.fits_build_volume)
-    if openscad and files.scad.is_file():
-        with tempfile.TemporaryDirectory(prefix="creative_scad_") as tmp:
-            out = Path(tmp) / "scad.stl"
-            try:
-                seconds = render_scad(files.scad, out, openscad=openscad_program)
-            except (FileNotFoundError, RuntimeError, subprocess.TimeoutExpired) as exc:
-                problems.append(str(exc))
-            else:
-                scad_mesh = _load_mm_mesh(out)
-                scad_volume = float(scad_mesh.volume) / MM3_PER_M3
-                scad_err = abs(scad_volume - stl_volume) / stl_volume
-                a, b = _manifold(stl), _manifold(scad_mesh)
-                mismatch = ((a - b).volume() + (b - a).volume()) / MM3_PER_M3 / stl_volume
-                report.update(scad_volume=scad_volume, scad_volume_rel_err=scad_err,
-                              scad_mismatch_rel=mismatch, scad_seconds=seconds)
-                if scad_err > SCAD_VOLUME_RTOL:
-                    problems.append(f"{files.scad}: OpenSCAD volume {scad_volume:.6g} m^3 "
-                                    f"differs from the STL's by {scad_err:.2%}")
-                if mismatch > SCAD_MISMATCH_RTOL:
-                    problems.append(f"{files.scad}: OpenSCAD solid and STL differ by "
-                                    f"{mismatch:.2%} of the volume (wrong shape or place)")
-    return ToolCheck(**report, problems=tuple(problems))
+
+def _scad_against_stl(files: ToolFiles, stl, stl_volume: float, program: str,
+                      problems: list[str]) -> dict:
+    """Render the tool's .scad with OpenSCAD ``program`` and return its volume (m^3),
+    its relative error and mismatch against the STL, and the render's seconds (empty
+    if it did not render); append to ``problems`` what is wrong."""
+    with tempfile.TemporaryDirectory(prefix="creative_scad_") as tmp:
+        out = Path(tmp) / "scad.stl"
+        try:
+            seconds = render_scad(files.scad, out, openscad=program)
+        except (FileNotFoundError, RuntimeError, subprocess.TimeoutExpired) as exc:
+            problems.append(str(exc))
+            return {}
+        scad_mesh = _load_mm_mesh(out)
+        scad_volume = float(scad_mesh.volume) / MM3_PER_M3
+        scad_err = abs(scad_volume - stl_volume) / stl_volume
+        a, b = _manifold(stl), _manifold(scad_mesh)
+        mismatch = ((a - b).volume() + (b - a).volume()) / MM3_PER_M3 / stl_volume
+        if scad_err > SCAD_VOLUME_RTOL:
+            problems.append(f"{files.scad}: OpenSCAD volume {scad_volume:.6g} m^3 "
+                            f"differs from the STL's by {scad_err:.2%}")
+        if mismatch > SCAD_MISMATCH_RTOL:
+            problems.append(f"{files.scad}: OpenSCAD solid and STL differ by "
+                            f"{mismatch:.2%} of the volume (wrong shape or place)")
+        return dict(scad_volume=scad_volume, scad_volume_rel_err=scad_err,
+                    scad_mismatch_rel=mismatch, scad_seconds=seconds)

@@ -148,8 +148,6 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings | No
     exe = require_slicer()
     if not profile.is_file():
         raise SliceError(f"{profile}: slicer profile not found")
-    bx, by, bz = (v * MM_PER_M for v in settings.build_volume)
-    nozzle = settings.nozzle_diameter * MM_PER_M
     with tempfile.TemporaryDirectory(prefix="creative-slicer-") as datadir:
         # A private data folder: the slicer reads and writes no user configuration. The
         # piece is sliced there under its own name, with a fixed environment: the
@@ -163,11 +161,7 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings | No
         except OSError as exc:
             raise SliceError(f"{stl}: cannot be read ({exc.strerror or exc})") from None
         out = work / gcode.name
-        cmd = [exe, "--loglevel", "1", "--datadir", datadir, "--load", str(profile),
-               "--bed-shape", f"0x0,{bx:g}x0,{bx:g}x{by:g},0x{by:g}",
-               "--max-print-height", f"{bz:g}", "--nozzle-diameter", f"{nozzle:g}",
-               "--filament-density", f"{PLA_DENSITY / 1000:g}",
-               "--dont-arrange", "--export-gcode", "--output", out.name, stl.name]
+        cmd = _slicer_command(exe, datadir, profile, settings, out.name, stl.name)
         start = time.perf_counter()
         try:
             done = subprocess.run(cmd, capture_output=True, text=True,
@@ -187,6 +181,20 @@ def slice_piece(stl: Path | str, gcode: Path | str, settings: PrintSettings | No
         raise SliceError(f"{stl.name}: the slicer rejected the piece (exit code "
                          f"{done.returncode}): {message or 'no G-code written'}")
     return _read_gcode(stl.name, gcode, settings, wall)
+
+
+def _slicer_command(exe: str, datadir: str, profile: Path, settings: PrintSettings,
+                    output: str, stl: str) -> list[str]:
+    """Return the slicer's command line: its private ``datadir``, the ``profile``, the
+    printer's bed, height and nozzle (mm) and PLA's density (g/cm^3), the piece ``stl``
+    sliced where it lies to G-code ``output`` (names in the working folder)."""
+    bx, by, bz = (v * MM_PER_M for v in settings.build_volume)
+    nozzle = settings.nozzle_diameter * MM_PER_M
+    return [exe, "--loglevel", "1", "--datadir", datadir, "--load", str(profile),
+            "--bed-shape", f"0x0,{bx:g}x0,{bx:g}x{by:g},0x{by:g}",
+            "--max-print-height", f"{bz:g}", "--nozzle-diameter", f"{nozzle:g}",
+            "--filament-density", f"{PLA_DENSITY / 1000:g}",
+            "--dont-arrange", "--export-gcode", "--output", output, stl]
 
 
 _ADDR_NO_RANDOMIZE = 0x0040000

@@ -199,24 +199,7 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
                          f"got {trim!r}")
     out: dict[str, ObjectEstimate] = {}
     for name, bid in bodies.items():
-        chunks, heights_f, tilts, cams = [], [], [], []
-        for frame in frames:
-            mask = body_mask(frame.seg, int(bid))
-            n = int(mask.sum())
-            if n < config.min_pixels_per_camera:
-                continue
-            rows, cols = np.nonzero(mask)
-            pts = unproject_pixels(frame, rows, cols)
-            chunks.append(pts)
-            rays = pts - camera_position(frame)
-            tilts.append(np.hypot(rays[:, 0], rays[:, 1]) / np.linalg.norm(rays, axis=1))
-            if smooth:
-                filtered = unproject_pixels(frame, rows, cols,
-                                            masked_median_depth(frame.depth, mask))
-                heights_f.append(filtered[:, 2])
-            else:
-                heights_f.append(pts[:, 2])
-            cams.append(frame.name)
+        chunks, heights_f, tilts, cams = _body_points(frames, int(bid), smooth, config)
         n_pts = sum(len(c) for c in chunks)
         if n_pts < config.min_points:
             log.info("object %s not seen (%d points)", name, n_pts)
@@ -229,10 +212,36 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
         steep = tilt <= config.footprint_max_tilt
         if sigma_z > 0.0 and steep.sum() >= config.min_points:
             footprint = steep
-        est = _estimate_one(name, pts, z, footprint, steep, tuple(cams), support_z.get(name),
+        est = _estimate_one(name, pts, z, footprint, steep, cams, support_z.get(name),
                             heights.get(name), trim, sigma_z, config)
         out[name] = est
     return out
+
+
+def _body_points(frames: Sequence[Frame], bid: int, smooth: bool, cfg: EstimatorConfig):
+    """Return, from each camera that sees body ``bid`` with at least
+    ``cfg.min_pixels_per_camera`` pixels, its points (N x 3, world frame, metres), their
+    heights (median-filtered if ``smooth``) and the tilt of each point's ray from
+    vertical (the sine), as three lists of arrays, and the cameras' names."""
+    chunks, heights_f, tilts, cams = [], [], [], []
+    for frame in frames:
+        mask = body_mask(frame.seg, bid)
+        n = int(mask.sum())
+        if n < cfg.min_pixels_per_camera:
+            continue
+        rows, cols = np.nonzero(mask)
+        pts = unproject_pixels(frame, rows, cols)
+        chunks.append(pts)
+        rays = pts - camera_position(frame)
+        tilts.append(np.hypot(rays[:, 0], rays[:, 1]) / np.linalg.norm(rays, axis=1))
+        if smooth:
+            filtered = unproject_pixels(frame, rows, cols,
+                                        masked_median_depth(frame.depth, mask))
+            heights_f.append(filtered[:, 2])
+        else:
+            heights_f.append(pts[:, 2])
+        cams.append(frame.name)
+    return chunks, heights_f, tilts, tuple(cams)
 
 
 def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, footprint: np.ndarray,
@@ -249,6 +258,38 @@ def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, footprint: np.ndarr
     # The top surface along both footprint axes: its rise (a slope) and its highest part.
     profiles = [_profile(xy_all, z, theta + k * math.pi / 2, cfg) for k in (0, 1)]
     rises = [rise for rise, _ in profiles]
+    top, bottom = _top_bottom(z, profiles, support, height, trim, sigma_z)
+    dz = max(top - bottom, 0.0)
+    ext = _extents(xy, theta, trim)
+    du, dv = ext[1] - ext[0], ext[3] - ext[2]
+    # Which footprint axis, if any, does the top slope along?
+    k_slope = int(np.argmax([abs(r) for r in rises]))
+    sloped = abs(rises[k_slope]) >= max(cfg.slope_rise_fraction * dz, cfg.slope_rise_min_m)
+    square = max(du, dv) - min(du, dv) <= cfg.square_tolerance * max(du, dv)
+    if sloped:
+        symmetry = "none"
+        from_above = xy_all[steep] if steep.sum() >= 8 else xy
+        yaw = _sloped_yaw(from_above, theta, rises[k_slope], k_slope, square)
+    else:
+        band = z_fp >= top - max(cfg.top_band_fraction * dz, 3.0 * sigma_z, 1e-6)
+        yaw, symmetry = _level_yaw(xy, band, theta, du, dv, square, cfg)
+    ext = _extents(xy, yaw, trim)
+    c_u, c_v = (ext[0] + ext[1]) / 2, (ext[2] + ext[3]) / 2
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    x = c_u * cy - c_v * sy
+    y = c_u * sy + c_v * cy
+    dx = ext[1] - ext[0]
+    dy = ext[3] - ext[2]
+    return ObjectEstimate(name=name, x=float(x), y=float(y), z=float((top + bottom) / 2),
+                          yaw=float(yaw), size=(float(dx), float(dy), float(dz)),
+                          n_points=int(len(pts)), cameras=cams, symmetry=symmetry)
+
+
+def _top_bottom(z: np.ndarray, profiles: list[tuple[float, float]], support: float | None,
+                height: float | None, trim: float, sigma_z: float) -> tuple[float, float]:
+    """Return the object's top and bottom heights (world z, metres): the top from the
+    heights ``z`` (or, with noisy heights, the highest bin of the top's ``profiles``), the
+    bottom from its support, its known height or the heights, in that order."""
     if sigma_z > 0.0:
         # With noisy heights the maximum is an outlier; a high quantile of the whole
         # object would cut a wedge's top: take the highest bin's quantile instead.
@@ -261,49 +302,40 @@ def _estimate_one(name: str, pts: np.ndarray, z: np.ndarray, footprint: np.ndarr
         bottom = top - float(height)
     else:
         bottom = _quantile(z, trim)
-    dz = max(top - bottom, 0.0)
-    ext = _extents(xy, theta, trim)
-    du, dv = ext[1] - ext[0], ext[3] - ext[2]
-    # Which footprint axis, if any, does the top slope along?
-    k_slope = int(np.argmax([abs(r) for r in rises]))
-    sloped = abs(rises[k_slope]) >= max(cfg.slope_rise_fraction * dz, cfg.slope_rise_min_m)
-    square = max(du, dv) - min(du, dv) <= cfg.square_tolerance * max(du, dv)
-    if sloped:
-        symmetry = "none"
-        if square:
-            # A square footprint leaves the least-area heading loose (a 5 cm wedge is
-            # 9 pixels across from 1.4 m): refine it with the angular moment of the
-            # points seen from above, which cover the footprint evenly.
-            from_above = xy_all[steep] if steep.sum() >= 8 else xy
-            fine = _square_heading(from_above, theta)
-            theta += _wrap(fine - theta, math.pi / 4)
-        yaw = theta + k_slope * math.pi / 2
-        if rises[k_slope] > 0:  # the top rises towards +axis: the tip (low end) is behind
-            yaw += math.pi
-        yaw = _wrap(yaw, math.pi)
-    else:
-        if square:
-            if _fill_ratio(xy, du * dv) < cfg.round_fill:
-                symmetry, yaw = "round", 0.0
-            else:
-                symmetry = "half_pi"
-                band = z_fp >= top - max(cfg.top_band_fraction * dz, 3.0 * sigma_z, 1e-6)
-                yaw = _square_heading(xy[band], theta)
-                yaw = _wrap(yaw, math.pi / 4)
-        else:
-            symmetry = "pi"
-            yaw = theta if du >= dv else theta + math.pi / 2
-            yaw = _wrap(yaw, math.pi / 2)
-    ext = _extents(xy, yaw, trim)
-    c_u, c_v = (ext[0] + ext[1]) / 2, (ext[2] + ext[3]) / 2
-    cy, sy = math.cos(yaw), math.sin(yaw)
-    x = c_u * cy - c_v * sy
-    y = c_u * sy + c_v * cy
-    dx = ext[1] - ext[0]
-    dy = ext[3] - ext[2]
-    return ObjectEstimate(name=name, x=float(x), y=float(y), z=float((top + bottom) / 2),
-                          yaw=float(yaw), size=(float(dx), float(dy), float(dz)),
-                          n_points=int(len(pts)), cameras=cams, symmetry=symmetry)
+    return top, bottom
+
+
+def _sloped_yaw(from_above: np.ndarray, theta: float, rise: float, k_slope: int,
+                square: bool) -> float:
+    """Return the yaw (radians) of an object whose top slopes along footprint axis
+    ``k_slope`` of heading ``theta`` by ``rise``: its tip (the low end) ahead. A square
+    footprint's heading is refined from the points seen from above (x, y)."""
+    if square:
+        # A square footprint leaves the least-area heading loose (a 5 cm wedge is
+        # 9 pixels across from 1.4 m): refine it with the angular moment of the
+        # points seen from above, which cover the footprint evenly.
+        fine = _square_heading(from_above, theta)
+        theta += _wrap(fine - theta, math.pi / 4)
+    yaw = theta + k_slope * math.pi / 2
+    if rise > 0:  # the top rises towards +axis: the tip (low end) is behind
+        yaw += math.pi
+    return _wrap(yaw, math.pi)
+
+
+def _level_yaw(xy: np.ndarray, band: np.ndarray, theta: float, du: float, dv: float,
+               square: bool, cfg: EstimatorConfig) -> tuple[float, str]:
+    """Return the yaw (radians) and symmetry of an object with a level top, from its
+    footprint points ``xy`` (those of its top face marked by ``band``), the least-area
+    heading ``theta`` and the footprint's sides ``du``, ``dv`` (metres): a round one has
+    yaw 0, a square one its top face's heading (modulo pi/2), another its long side's
+    (modulo pi)."""
+    if square:
+        if _fill_ratio(xy, du * dv) < cfg.round_fill:
+            return 0.0, "round"
+        yaw = _square_heading(xy[band], theta)
+        return _wrap(yaw, math.pi / 4), "half_pi"
+    yaw = theta if du >= dv else theta + math.pi / 2
+    return _wrap(yaw, math.pi / 2), "pi"
 
 
 def _quantile(values: np.ndarray, q: float) -> float:

@@ -61,18 +61,41 @@ def typed(value: Any, tp: Any, name: str, warn: Warn = None, convert: bool = Tru
     if isinstance(tp, type) and issubclass(tp, Checked):
         return tp.from_dict(value, name, warn)
     if origin in (Union, types.UnionType):
-        options = typing.get_args(tp)
-        if value is None and type(None) in options:
-            return None
-        options = tuple(o for o in options if o is not type(None))
-        if len(options) == 1:  # Optional[X]: X's own error, naming the inner field
-            return typed(value, options[0], name, warn, convert)
-        for option in options:
-            try:
-                return typed(value, option, name, warn, convert)
-            except ValueError:
-                pass
-        raise wrong(name, value, tp)
+        return _typed_union(value, tp, name, warn, convert)
+    if tp in _SCALARS:
+        return _typed_scalar(value, tp, name, convert)
+    if origin is list:
+        return _typed_list(value, tp, name, warn, convert)
+    if origin is dict:
+        return _typed_dict(value, tp, name, warn, convert)
+    raise TypeError(f"field {name!r}: type {tp} is not one a record can check")
+
+
+_SCALARS = (type(None), float, int, str, bool)
+"""The plain types :func:`_typed_scalar` checks."""
+
+
+def _typed_union(value: Any, tp: Any, name: str, warn: Warn, convert: bool) -> Any:
+    """Return ``value`` checked against the first of union ``tp``'s types it is (None
+    first, if allowed); an ``Optional[X]`` raises X's own error."""
+    options = typing.get_args(tp)
+    if value is None and type(None) in options:
+        return None
+    options = tuple(o for o in options if o is not type(None))
+    if len(options) == 1:  # Optional[X]: X's own error, naming the inner field
+        return typed(value, options[0], name, warn, convert)
+    for option in options:
+        try:
+            return typed(value, option, name, warn, convert)
+        except ValueError:
+            pass
+    raise wrong(name, value, tp)
+
+
+def _typed_scalar(value: Any, tp: type, name: str, convert: bool) -> Any:
+    """Return ``value`` if it is of the plain type ``tp`` (None, float, int, str, bool;
+    a bool is no number, an int is a float; with ``convert``, ``"nan"``, ``"inf"`` and
+    ``"-inf"`` are floats)."""
     if tp is type(None):
         if value is None:
             return value
@@ -87,44 +110,50 @@ def typed(value: Any, tp: Any, name: str, warn: Warn = None, convert: bool = Tru
         if isinstance(value, int) and not isinstance(value, bool):
             return value
         raise wrong(name, value, tp)
-    if tp in (str, bool):
-        if isinstance(value, tp):
-            return value
+    if isinstance(value, tp):
+        return value
+    raise wrong(name, value, tp)
+
+
+def _typed_list(value: Any, tp: Any, name: str, warn: Warn, convert: bool) -> list:
+    """Return the list ``value`` with each item checked against ``tp``'s item type; with
+    ``warn``, a wrong item is dropped and said."""
+    if not isinstance(value, list):
         raise wrong(name, value, tp)
-    if origin is list:
-        if not isinstance(value, list):
-            raise wrong(name, value, tp)
-        (item,) = typing.get_args(tp) or (Any,)
-        out = []
-        for i, v in enumerate(value):
-            try:
-                out.append(typed(v, item, f"{name}[{i}]", warn, convert))
-            except Dropped:
-                continue
-            except ValueError as exc:
-                if warn is None:
-                    raise
-                warn(f"{exc}; not shown")
-        return out
-    if origin is dict:
-        if not isinstance(value, dict):
-            raise wrong(name, value, tp)
-        key, item = typing.get_args(tp) or (Any, Any)
-        out_map = {}
-        for k, v in value.items():
-            try:
-                try:  # a key JSON cannot keep (an int is written back as its text)
-                    typed(k, key, name, None, False)
-                except ValueError:
-                    raise ValueError(f"field {name!r}: key {k!r} is not of type "
-                                     f"{type_name(key)}") from None
-                out_map[k] = typed(v, item, f"{name}.{k}", warn, convert)
-            except ValueError as exc:
-                if warn is None:
-                    raise
-                warn(f"{exc}; not shown")
-        return out_map
-    raise TypeError(f"field {name!r}: type {tp} is not one a record can check")
+    (item,) = typing.get_args(tp) or (Any,)
+    out = []
+    for i, v in enumerate(value):
+        try:
+            out.append(typed(v, item, f"{name}[{i}]", warn, convert))
+        except Dropped:
+            continue
+        except ValueError as exc:
+            if warn is None:
+                raise
+            warn(f"{exc}; not shown")
+    return out
+
+
+def _typed_dict(value: Any, tp: Any, name: str, warn: Warn, convert: bool) -> dict:
+    """Return the mapping ``value`` with each key checked against ``tp``'s key type and
+    each value against its value type; with ``warn``, a wrong entry is dropped and said."""
+    if not isinstance(value, dict):
+        raise wrong(name, value, tp)
+    key, item = typing.get_args(tp) or (Any, Any)
+    out_map = {}
+    for k, v in value.items():
+        try:
+            try:  # a key JSON cannot keep (an int is written back as its text)
+                typed(k, key, name, None, False)
+            except ValueError:
+                raise ValueError(f"field {name!r}: key {k!r} is not of type "
+                                 f"{type_name(key)}") from None
+            out_map[k] = typed(v, item, f"{name}.{k}", warn, convert)
+        except ValueError as exc:
+            if warn is None:
+                raise
+            warn(f"{exc}; not shown")
+    return out_map
 
 
 def wrong(name: str, value: Any, tp: Any) -> ValueError:

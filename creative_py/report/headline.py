@@ -72,9 +72,19 @@ def _successes(outcomes: list[str]) -> tuple[int, int]:
 
 def headline(run: RunContents) -> Headline:
     """Return the headline of a run folder's contents (empty parts are left out)."""
-    s = run.summary
     out = Headline()
-    use, create, ev = s.use, s.create, s.eval
+    _add_who(run, out)
+    _add_use(run, out)
+    _add_eval(run, out)
+    _add_create(run, out)
+    _add_resumed(run, out)
+    _add_wall_time(run, out)
+    return out
+
+
+def _add_who(run: RunContents, out: Headline) -> None:
+    """Add the run's case, strategy, seed, backend and robot, and its demonstration."""
+    s = run.summary
     strategy = s.strategy
     first = [f"case {s.case}" if s.case is not None else "",
              f"strategy {strategy}" if strategy else "",
@@ -85,85 +95,115 @@ def headline(run: RunContents) -> Headline:
         out.lines.append(", ".join(x for x in first if x).capitalize() + ".")
     if s.demonstration is not None and s.demonstration.tool:
         out.lines.append(f"One demonstration, with {s.demonstration.tool}.")
-    if use is not None and use.trials is not None:
-        n = use.trials
-        ok = sum(1 for t in run.trials if t.get("phase") == "use"
-                 and t.get("outcome") == "success")
-        budget = f" of a budget of {run.budget}" if run.budget else ""
-        text = f"Tool-use learning: {n} trials{budget} ({ok} succeeded)"
-        if use.stop:
-            text += f"; stopped because {STOP_TEXT.get(use.stop, use.stop)}"
-        if use.converged and use.trials_to_converge:
-            text += f"; converged after {use.trials_to_converge} trials"
-        if run.paper_trials:
-            text += f"; the paper's robot used {run.paper_trials}"
-        out.lines.append(text + ".")
-        if use.prior is not None:
-            pr = use.prior
-            out.lines.append(f"Started from case {pr.case}'s learned model: "
-                             f"{len(pr.taken)} literal(s) predicted necessary; "
-                             f"{len(pr.settled)} settled by a success (untested: the "
-                             f"stop is certified relative to them), {len(pr.confirmed)} "
-                             f"made necessary by the physics, {len(pr.dropped)} "
-                             "contradicted by the physics (dropped, learned afresh).")
-        out.figures.append(Figure("use.trials", n, f"{n}" + (f" of {run.budget}"
-                                                               if run.budget else ""),
-                                  "tool-use trials (of the budget)"
-                                  + (f"; paper: {run.paper_trials}" if run.paper_trials
-                                     else "")))
-    if ev is not None and ev.trials is not None:
-        done, total = ev.successes or 0, ev.trials
-        out.lines.append(f"Evaluation of the learned model on the task it learned: "
-                         f"{done} of {total} trials succeeded.")
-        out.figures.append(Figure("eval.successes", done, f"{done} / {total}",
-                                  "learned model's evaluation: successes / trials"))
-    if create is not None and create.to_dict():
-        out.lines.append(_creation_line(create))
-        solved = create.solved_by
-        tool = create.solver if solved else None
-        if solved:
-            out.figures.append(Figure("create.solved_by", solved,
-                                      f"{solved}" + (f" {tool}" if tool else ""),
-                                      f"harder task ({create.variant or '?'}) "
-                                      "solved by"))
-        done, total = _successes(create.eval)
-        if total:
-            out.figures.append(Figure("create.eval", done, f"{done} / {total}",
-                                      f"created {create.success}'s evaluation: "
-                                      "successes / trials"))
-        for tool_entry in create.created_tools:
-            line, figures = _print_line(tool_entry)
-            if line:
-                out.lines.append(line)
-                out.figures += figures
-    resumed = s.resumed
-    if resumed is not None:
-        text = "Resumed after an interruption"
-        if resumed.replayed is not None:
-            text += (f": {resumed.replayed} trial{'s' if resumed.replayed != 1 else ''} "
-                     "of the interrupted run replayed from its records")
-        if resumed.earlier_wall_time_s is not None:
-            text += (f"; the interrupted run took {number_text(resumed.earlier_wall_time_s)}"
-                     " s to its last recorded trial")
-        if resumed.total_wall_time_s is not None:
-            text += f"; {number_text(resumed.total_wall_time_s)} s in all"
-        out.lines.append(text + ".")
-        lost = resumed.lost_trial
-        if lost:
-            skill = f", in skill {lost['skill']}" if lost.get("skill") else ""
-            out.lines.append(f"Trial #{lost.get('trial')} ({lost.get('tool')} at location "
-                             f"{lost.get('location')}) did not go as planned: the backend "
-                             f"was lost{skill} ({lost.get('reason')}); nothing was learned "
-                             "from it and the resume ran it again.")
+
+
+def _add_use(run: RunContents, out: Headline) -> None:
+    """Add tool-use learning: its trials, stop, the paper's count and the prior taken."""
+    use = run.summary.use
+    if use is None or use.trials is None:
+        return
+    n = use.trials
+    ok = sum(1 for t in run.trials if t.get("phase") == "use"
+             and t.get("outcome") == "success")
+    budget = f" of a budget of {run.budget}" if run.budget else ""
+    text = f"Tool-use learning: {n} trials{budget} ({ok} succeeded)"
+    if use.stop:
+        text += f"; stopped because {STOP_TEXT.get(use.stop, use.stop)}"
+    if use.converged and use.trials_to_converge:
+        text += f"; converged after {use.trials_to_converge} trials"
+    if run.paper_trials:
+        text += f"; the paper's robot used {run.paper_trials}"
+    out.lines.append(text + ".")
+    if use.prior is not None:
+        pr = use.prior
+        out.lines.append(f"Started from case {pr.case}'s learned model: "
+                         f"{len(pr.taken)} literal(s) predicted necessary; "
+                         f"{len(pr.settled)} settled by a success (untested: the "
+                         f"stop is certified relative to them), {len(pr.confirmed)} "
+                         f"made necessary by the physics, {len(pr.dropped)} "
+                         "contradicted by the physics (dropped, learned afresh).")
+    out.figures.append(Figure("use.trials", n, f"{n}" + (f" of {run.budget}"
+                                                           if run.budget else ""),
+                              "tool-use trials (of the budget)"
+                              + (f"; paper: {run.paper_trials}" if run.paper_trials
+                                 else "")))
+
+
+def _add_eval(run: RunContents, out: Headline) -> None:
+    """Add the learned model's evaluation on the task it learned."""
+    ev = run.summary.eval
+    if ev is None or ev.trials is None:
+        return
+    done, total = ev.successes or 0, ev.trials
+    out.lines.append(f"Evaluation of the learned model on the task it learned: "
+                     f"{done} of {total} trials succeeded.")
+    out.figures.append(Figure("eval.successes", done, f"{done} / {total}",
+                              "learned model's evaluation: successes / trials"))
+
+
+def _add_create(run: RunContents, out: Headline) -> None:
+    """Add tool creation: what solved the harder task, the created tool's evaluation,
+    and each created tool's printing."""
+    create = run.summary.create
+    if create is None or not create.to_dict():
+        return
+    out.lines.append(_creation_line(create))
+    solved = create.solved_by
+    tool = create.solver if solved else None
+    if solved:
+        out.figures.append(Figure("create.solved_by", solved,
+                                  f"{solved}" + (f" {tool}" if tool else ""),
+                                  f"harder task ({create.variant or '?'}) "
+                                  "solved by"))
+    done, total = _successes(create.eval)
+    if total:
+        out.figures.append(Figure("create.eval", done, f"{done} / {total}",
+                                  f"created {create.success}'s evaluation: "
+                                  "successes / trials"))
+    for tool_entry in create.created_tools:
+        line, figures = _print_line(tool_entry)
+        if line:
+            out.lines.append(line)
+            out.figures += figures
+
+
+def _add_resumed(run: RunContents, out: Headline) -> None:
+    """Add how a resumed run went on: the trials replayed, the times, a trial lost with
+    its backend."""
+    resumed = run.summary.resumed
+    if resumed is None:
+        return
+    text = "Resumed after an interruption"
+    if resumed.replayed is not None:
+        text += (f": {resumed.replayed} trial{'s' if resumed.replayed != 1 else ''} "
+                 "of the interrupted run replayed from its records")
+    if resumed.earlier_wall_time_s is not None:
+        text += (f"; the interrupted run took {number_text(resumed.earlier_wall_time_s)}"
+                 " s to its last recorded trial")
+    if resumed.total_wall_time_s is not None:
+        text += f"; {number_text(resumed.total_wall_time_s)} s in all"
+    out.lines.append(text + ".")
+    lost = resumed.lost_trial
+    if lost:
+        skill = f", in skill {lost['skill']}" if lost.get("skill") else ""
+        out.lines.append(f"Trial #{lost.get('trial')} ({lost.get('tool')} at location "
+                         f"{lost.get('location')}) did not go as planned: the backend "
+                         f"was lost{skill} ({lost.get('reason')}); nothing was learned "
+                         "from it and the resume ran it again.")
+
+
+def _add_wall_time(run: RunContents, out: Headline) -> None:
+    """Add the wall time, in all and by phase."""
+    s = run.summary
     wall = s.wall_time_s
-    if wall is not None and wall.total is not None:
-        parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.phases())
-        out.lines.append(f"Wall time {number_text(wall.total)} s"
-                         + (" of the resumed session" if resumed is not None else "")
-                         + (f" ({parts})." if parts else "."))
-        out.figures.append(Figure("wall_time_s.total", wall.total,
-                                  f"{number_text(wall.total)} s", "wall time"))
-    return out
+    if wall is None or wall.total is None:
+        return
+    parts = ", ".join(f"{k} {number_text(v)} s" for k, v in wall.phases())
+    out.lines.append(f"Wall time {number_text(wall.total)} s"
+                     + (" of the resumed session" if s.resumed is not None else "")
+                     + (f" ({parts})." if parts else "."))
+    out.figures.append(Figure("wall_time_s.total", wall.total,
+                              f"{number_text(wall.total)} s", "wall time"))
 
 
 def _creation_line(create: CreateSummary) -> str:

@@ -52,9 +52,9 @@ CORPUS = [
     (["make-tool", "hook", "handle_length=long", "--out", "/proc/creative_tools"],
      "/proc/creative_tools"),
     # The trial command's unknown tool, unknown variant, bad location and unreadable
-    # pose are each one _fail line of cli._trial, checked with their messages and exit
+    # pose are each one fail line of cli.trial, checked with their messages and exit
     # code 2 in this process by test_cli_trial.py (test_bad_arguments_give_a_clear_error);
-    # the rows below keep a real process of the command for _fail's one line.
+    # the rows below keep a real process of the command for fail's one line.
     (["trial", "hook", "--tool", "hook_a2", "--pose", "0.03,0,1e9"],
      "--pose: roll must be within"),
     (["trial", "hook", "--tool", "hook_a2", "--seed", "-1"], "--seed must be at least 0"),
@@ -239,7 +239,7 @@ def test_an_ontology_missing_a_property_s_ranges_is_named(tmp_path):
 @pytest.mark.parametrize("bad, message, debug", [
     ("broken(:- .", "rake.pl:", True),
     # the engine's consult raises PrologLoadError here, PrologSyntaxError above: both
-    # BridgeErrors, re-raised under --debug by the same line of cli._one_line_errors,
+    # BridgeErrors, re-raised under --debug by the same line of cli.errors.one_line_errors,
     # so the first case's --debug run checks this one's
     ("p(X) :- undefined_thing(X).", "Unknown procedure: undefined_thing/1", False),
 ])

@@ -67,13 +67,24 @@ def env_class(task: str):
     registered on first use, so importing this module loads no simulator)."""
     if task in _REGISTERED:
         return _REGISTERED[task]
+    spec = _stock_task(task)
+    from mani_skill.utils.registration import register_env
+
+    name = "Catalogue" + spec.cls.__name__
+    cls = type(name, (CatalogueTask, spec.cls), {"__qualname__": name,
+                                                 "__doc__": CatalogueTask.__doc__})
+    register_env(env_id(task), max_episode_steps=spec.max_episode_steps)(cls)
+    _REGISTERED[task] = cls
+    return cls
+
+
+def _stock_task(task: str):
+    """Return ManiSkill's registration of its task ``task`` (its class and episode
+    length), importing ManiSkill quietened; KeyError if it has no such task."""
     vulkan_ready()
-    import sapien
-    import torch
     import mani_skill.envs  # noqa: F401  (registers the tasks)
     from mani_skill import logger as maniskill_logger
-    from mani_skill.utils.registration import REGISTERED_ENVS, register_env
-    from mani_skill.utils.structs import Pose
+    from mani_skill.utils.registration import REGISTERED_ENVS
 
     # ManiSkill warns at every environment it builds that no initial pose was set for the
     # builders (the episode's initialisation sets them) and that CUDA is missing (the CPU
@@ -81,104 +92,120 @@ def env_class(task: str):
     maniskill_logger.setLevel(logging.ERROR)
     if task not in REGISTERED_ENVS:
         raise KeyError(task)
-    spec = REGISTERED_ENVS[task]
+    return REGISTERED_ENVS[task]
 
-    class CatalogueEnv(spec.cls):
-        """ManiSkill's task whose tool actor is built from ``tool_parts`` and whose
-        target starts ``cube_dx`` farther along +x (0: the stock task)."""
 
-        def __init__(self, *args, tool_actor="", target_actor="", goal_actor="",
-                     tool_parts=(), tool_mass=0.5, tool_friction=None, cube_dx=0.0,
-                     **kwargs):
-            self.tool_actor, self.target_actor = tool_actor, target_actor
-            self.goal_actor = goal_actor
-            self.tool_parts = tuple(tool_parts)
-            self.tool_mass = float(tool_mass)
-            self.tool_friction = tool_friction
-            self.cube_dx = float(cube_dx)
-            self.stock_far = 0.0
-            super().__init__(*args, **kwargs)
+class CatalogueTask:
+    """ManiSkill's task whose tool actor is built from ``tool_parts`` and whose
+    target starts ``cube_dx`` farther along +x (0: the stock task).
 
-        def actor(self, name: str):
-            """Return the scene's actor called ``name``."""
-            return self.scene.actors[name]
+    The overrides of a stock task's class, which :func:`env_class` puts first in the
+    bases of its subclass (so ``super()`` is the stock task); imports ManiSkill, SAPIEN
+    and torch only when called."""
 
-        def _tool_boxes(self, builder) -> None:
-            """Give ``builder`` (the stock tool's) the spec's boxes in place of its own,
-            keeping how far the stock tool's shapes reach along +x."""
-            self.stock_far = max(float(r.pose.p[0]) + float(r.scale[0])
-                                 for r in builder.collision_records if r.type == "box")
-            builder.collision_records.clear()
-            builder.visual_records.clear()
-            mat = sapien.render.RenderMaterial()
-            mat.set_base_color([1, 0, 0, 1])
-            volume = sum(p.size[0] * p.size[1] * p.size[2] for p in self.tool_parts)
-            density = self.tool_mass / volume
-            phys = None
-            if self.tool_friction is not None:
-                f = float(self.tool_friction)
-                phys = sapien.pysapien.physx.PhysxMaterial(f, f, 0.0)
-            for part in self.tool_parts:
-                q = sapien.Pose(q=_yaw_quat_wxyz(part.yaw)).q
-                pose = sapien.Pose(list(part.center), q)
-                half = [s / 2 for s in part.size]
-                builder.add_box_collision(pose, half, density=density, material=phys)
-                builder.add_box_visual(pose, half, material=mat)
+    def __init__(self, *args, tool_actor="", target_actor="", goal_actor="",
+                 tool_parts=(), tool_mass=0.5, tool_friction=None, cube_dx=0.0,
+                 **kwargs):
+        self.tool_actor, self.target_actor = tool_actor, target_actor
+        self.goal_actor = goal_actor
+        self.tool_parts = tuple(tool_parts)
+        self.tool_mass = float(tool_mass)
+        self.tool_friction = tool_friction
+        self.cube_dx = float(cube_dx)
+        self.stock_far = 0.0
+        super().__init__(*args, **kwargs)
 
-        def _load_scene(self, options):
-            if not self.tool_parts:
-                return super()._load_scene(options)
-            scene = self.scene
-            create = scene.create_actor_builder
-            env = self
+    def actor(self, name: str):
+        """Return the scene's actor called ``name``."""
+        return self.scene.actors[name]
 
-            def create_actor_builder(*a, **k):
-                builder = create(*a, **k)
-                build = builder.build
+    def _tool_boxes(self, builder) -> None:
+        """Give ``builder`` (the stock tool's) the spec's boxes in place of its own,
+        keeping how far the stock tool's shapes reach along +x."""
+        import sapien
 
-                def build_tool(name, *ba, **bk):
-                    if name == env.tool_actor:
-                        env._tool_boxes(builder)
-                    return build(name, *ba, **bk)
+        self.stock_far = max(float(r.pose.p[0]) + float(r.scale[0])
+                             for r in builder.collision_records if r.type == "box")
+        builder.collision_records.clear()
+        builder.visual_records.clear()
+        mat = sapien.render.RenderMaterial()
+        mat.set_base_color([1, 0, 0, 1])
+        volume = sum(p.size[0] * p.size[1] * p.size[2] for p in self.tool_parts)
+        density = self.tool_mass / volume
+        phys = None
+        if self.tool_friction is not None:
+            f = float(self.tool_friction)
+            phys = sapien.pysapien.physx.PhysxMaterial(f, f, 0.0)
+        for part in self.tool_parts:
+            q = sapien.Pose(q=_yaw_quat_wxyz(part.yaw)).q
+            pose = sapien.Pose(list(part.center), q)
+            half = [s / 2 for s in part.size]
+            builder.add_box_collision(pose, half, density=density, material=phys)
+            builder.add_box_visual(pose, half, material=mat)
 
-                builder.build = build_tool
-                return builder
+    def _load_scene(self, options):
+        if not self.tool_parts:
+            return super()._load_scene(options)
+        scene = self.scene
+        create = scene.create_actor_builder
+        env = self
 
-            scene.create_actor_builder = create_actor_builder
-            try:
-                return super()._load_scene(options)
-            finally:
-                del scene.create_actor_builder
+        def create_actor_builder(*a, **k):
+            builder = create(*a, **k)
+            build = builder.build
 
-        def _initialize_episode(self, env_idx, options):
-            super()._initialize_episode(env_idx, options)
-            if not self.tool_parts and self.cube_dx == 0.0:
-                return
-            with torch.device(self.device):
-                if self.tool_parts:
-                    actor = self.actor(self.tool_actor)
-                    tool = actor.pose
-                    p = tool.p.clone()
-                    # the tool frame on the handle's axis, its lowest face on the table
-                    p[..., 2] = -min(part.center[2] - part.size[2] / 2
-                                     for part in self.tool_parts)
-                    # its far end where the stock tool has its own (a longer handle
-                    # reaches back towards the robot, not into the target's region)
-                    far = max(part.center[0] + part.size[0] / 2 for part in self.tool_parts)
-                    p[..., 0] -= max(0.0, far - self.stock_far)
-                    actor.set_pose(Pose.create_from_pq(p=p, q=tool.q))
-                # the target is set again even where it stays (as it always was)
-                for name in (self.target_actor, self.goal_actor):
-                    if name and (name == self.target_actor or self.cube_dx != 0.0):
-                        moved = self.actor(name)
-                        c = moved.pose.p.clone()
-                        c[..., 0] += self.cube_dx
-                        moved.set_pose(Pose.create_from_pq(p=c, q=moved.pose.q))
+            def build_tool(name, *ba, **bk):
+                if name == env.tool_actor:
+                    env._tool_boxes(builder)
+                return build(name, *ba, **bk)
 
-    CatalogueEnv.__name__ = CatalogueEnv.__qualname__ = "Catalogue" + spec.cls.__name__
-    register_env(env_id(task), max_episode_steps=spec.max_episode_steps)(CatalogueEnv)
-    _REGISTERED[task] = CatalogueEnv
-    return CatalogueEnv
+            builder.build = build_tool
+            return builder
+
+        scene.create_actor_builder = create_actor_builder
+        try:
+            return super()._load_scene(options)
+        finally:
+            del scene.create_actor_builder
+
+    def _initialize_episode(self, env_idx, options):
+        super()._initialize_episode(env_idx, options)
+        if not self.tool_parts and self.cube_dx == 0.0:
+            return
+        import torch
+
+        with torch.device(self.device):
+            if self.tool_parts:
+                self._lay_tool()
+            self._move_target()
+
+    def _lay_tool(self) -> None:
+        """Lay the tool on the table at its own height, its far end where the stock
+        tool has its own."""
+        from mani_skill.utils.structs import Pose
+
+        actor = self.actor(self.tool_actor)
+        tool = actor.pose
+        p = tool.p.clone()
+        # the tool frame on the handle's axis, its lowest face on the table
+        p[..., 2] = -min(part.center[2] - part.size[2] / 2 for part in self.tool_parts)
+        # its far end where the stock tool has its own (a longer handle reaches back
+        # towards the robot, not into the target's region)
+        far = max(part.center[0] + part.size[0] / 2 for part in self.tool_parts)
+        p[..., 0] -= max(0.0, far - self.stock_far)
+        actor.set_pose(Pose.create_from_pq(p=p, q=tool.q))
+
+    def _move_target(self) -> None:
+        """Move the target (and the goal, when there is one) ``cube_dx`` along +x; the
+        target is set again even where it stays (as it always was)."""
+        from mani_skill.utils.structs import Pose
+
+        for name in (self.target_actor, self.goal_actor):
+            if name and (name == self.target_actor or self.cube_dx != 0.0):
+                moved = self.actor(name)
+                c = moved.pose.p.clone()
+                c[..., 0] += self.cube_dx
+                moved.set_pose(Pose.create_from_pq(p=c, q=moved.pose.q))
 
 
 def _yaw_quat_wxyz(yaw: float) -> list[float]:
