@@ -300,106 +300,355 @@ class Pace:
             self.win_wall, self.win_sim = wall, now
 
 
-def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
-          out=sys.stdout, scenes: Any = None) -> int:
-    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0.
+class StandinNode:
+    """The stand-in's ROS 2 node around a :class:`SimArm`: its action servers, publishers
+    and the trainer's subscription, the goals handed to the physics loop, and one
+    method for each thing the loop does (``rclpy`` must be initialised first).
 
-    With ``scenes`` (a :class:`~creative_py.backends.ros.trainer.SceneKeeper`) it also
-    answers the trainer's scene requests: the scene is rebuilt in the physics loop.
+    The action servers' callbacks run on the executor's threads; every other method runs
+    in the physics loop (:func:`serve`), which alone touches the arm.
+
+    Parameters
+    ----------
+    arm : SimArm
+        The simulated arm, with its profile's names.
+    stop, muted : threading.Event
+        Set when the stand-in stops; set while the joint states are silent (SIGUSR1).
+    scenes : creative_py.backends.ros.trainer.SceneKeeper, optional
+        With it, the trainer's scene requests are answered.
     """
-    import rclpy
-    from rclpy.action import ActionServer, CancelResponse, GoalResponse
-    from rclpy.callback_groups import ReentrantCallbackGroup
-    from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
-    from rclpy.node import Node
 
-    from control_msgs.action import FollowJointTrajectory, GripperCommand
-    from geometry_msgs.msg import PoseStamped
-    from rosgraph_msgs.msg import Clock
-    from sensor_msgs.msg import JointState
+    def __init__(self, arm: SimArm, stop: threading.Event, muted: threading.Event,
+                 scenes: Any = None) -> None:
+        from rclpy.action import ActionServer, CancelResponse
+        from rclpy.callback_groups import ReentrantCallbackGroup
+        from rclpy.node import Node
 
-    from rclpy.signals import SignalHandlerOptions
+        from control_msgs.action import FollowJointTrajectory, GripperCommand
+        from geometry_msgs.msg import PoseStamped
+        from rosgraph_msgs.msg import Clock
+        from sensor_msgs.msg import JointState
 
-    p = arm.profile
-    stop = threading.Event()
-    muted = threading.Event()  # SIGUSR1 toggles it: a live arm whose joint states stop
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        signal.signal(sig, lambda *_: stop.set())
-    signal.signal(signal.SIGUSR1,
-                  lambda *_: muted.clear() if muted.is_set() else muted.set())
-    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ours stop the loop
-    node = Node("creative_standin")
-    group = ReentrantCallbackGroup()
-    lock = threading.Lock()
-    jobs: list[Job] = []
-    state = {"q": arm.q()}
+        p = self.profile = arm.profile
+        self.arm, self.stop, self.muted, self.scenes = arm, stop, muted, scenes
+        node = self.node = Node("creative_standin")
+        group = ReentrantCallbackGroup()
+        self.lock = threading.Lock()
+        self.jobs: list[Job] = []  # goals accepted, not yet taken by the physics loop
+        self.latest_q = arm.q()  # the arm's last positions, read by the goal check
+        ActionServer(node, FollowJointTrajectory, p.arm_action,
+                     execute_callback=lambda handle: self.execute(handle, "trajectory"),
+                     goal_callback=self.on_trajectory,
+                     cancel_callback=lambda _: CancelResponse.ACCEPT, callback_group=group)
+        ActionServer(node, GripperCommand, p.gripper_action,
+                     execute_callback=lambda handle: self.execute(handle, "gripper"),
+                     cancel_callback=lambda _: CancelResponse.REJECT, callback_group=group)
+        self.js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
+        self.clock_pub = node.create_publisher(Clock, p.clock_topic, 10)
+        self.pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
+                          for n in arm.tracked}
+        self.wrench_pub = None
+        if p.wrench_topic:
+            from geometry_msgs.msg import WrenchStamped
 
-    def on_trajectory(goal: Any) -> Any:
+            self.wrench_pub = node.create_publisher(WrenchStamped, p.wrench_topic, 10)
+        self.trainer_done = None
+        if scenes is not None:
+            from std_msgs.msg import String
+
+            node.create_subscription(String, p.trainer_request_topic,
+                                     lambda m: scenes.requests.put(m.data), 10,
+                                     callback_group=group)
+            self.trainer_done = node.create_publisher(String, p.trainer_done_topic, 10)
+        # The physics loop's state.
+        self.js_period, self.pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
+        self.active: Optional[Job] = None  # the trajectory being executed
+        self.hold = arm.q()  # the posture held between trajectories
+        self.next_js = self.next_pose = arm.time()
+        self.last_fb = -math.inf
+        self.prev_q, self.prev_t = arm.q(), arm.time()
+
+    def interface(self) -> dict:
+        """Return the interface's names, as the ready line gives them."""
+        p, arm = self.profile, self.arm
+        interface = {"joint_states": p.joint_states_topic, "trajectory_action": p.arm_action,
+                     "gripper_action": p.gripper_action, "joints": list(p.joints),
+                     "objects": {n: p.object_topic_of(n) for n in arm.tracked},
+                     "frame": p.world_frame, "clock": p.clock_topic,
+                     "use_sim_time": p.use_sim_time}
+        if self.scenes is not None:
+            interface["trainer"] = {"request": p.trainer_request_topic,
+                                    "done": p.trainer_done_topic}
+        if self.wrench_pub is not None:
+            interface["wrench"] = p.wrench_topic
+        return interface
+
+    # The action servers' threads.
+
+    def on_trajectory(self, goal: Any) -> Any:
+        """Accept a FollowJointTrajectory goal, or reject it (logged) as the controller
+        would from the arm's last positions."""
+        from rclpy.action import GoalResponse
+
         try:
-            _trajectory_run(goal, arm, list(state["q"]))
+            _trajectory_run(goal, self.arm, list(self.latest_q))
         except InvalidTrajectory as exc:
-            node.get_logger().warning(f"rejected a trajectory: {exc}")
+            self.node.get_logger().warning(f"rejected a trajectory: {exc}")
             return GoalResponse.REJECT
         return GoalResponse.ACCEPT
 
-    def execute(kind: str) -> Any:
-        def run(handle: Any) -> Any:
-            job = Job(handle, kind, handle.request)
-            with lock:
-                jobs.append(job)  # the physics loop takes it at its next step
-            while not job.done.wait(0.05):
-                if stop.is_set():  # the loop ends: it may still finish the job itself
-                    settle(job, INVALID_GOAL, "the stand-in stopped", None)
-            return job.result
-        return run
+    def execute(self, handle: Any, kind: str) -> Any:
+        """Hand an accepted goal (``kind`` "trajectory" or "gripper") to the physics loop
+        and wait for its result; end it here if the stand-in stops first."""
+        job = Job(handle, kind, handle.request)
+        with self.lock:
+            self.jobs.append(job)  # the physics loop takes it at its next step
+        while not job.done.wait(0.05):
+            if self.stop.is_set():  # the loop ends: it may still finish the job itself
+                self.settle(job, INVALID_GOAL, "the stand-in stopped", None)
+        return job.result
 
-    def settle(job: Job, code: int, message: str, succeeded: Optional[bool]) -> None:
+    def settle(self, job: Job, code: int, message: str, succeeded: Optional[bool]) -> None:
         """End a job once, whichever thread comes first (the physics loop, or the
         action server's thread when the stand-in stops): succeed or abort its goal
         (``succeeded`` None: abort), set its result, wake its thread. A goal the client
         already ended (cancelled while the stand-in was stopped) is only logged."""
-        with lock:
+        with self.lock:
             if job.done.is_set():
                 return
-            job.result = _result(job.kind, SUCCESSFUL if job.kind == "gripper" else code,
-                                 message)
+            job.result = self.result_of(job.kind, SUCCESSFUL if job.kind == "gripper" else code,
+                                     message)
             try:
                 (job.handle.succeed if succeeded else job.handle.abort)()
             except Exception as exc:  # rclpy refuses a transition from a terminal state
-                node.get_logger().warning(f"goal ended as {message!r}: {exc}")
+                self.node.get_logger().warning(f"goal ended as {message!r}: {exc}")
             job.done.set()
 
-    def _result(kind: str, code: int, message: str) -> Any:
+    def result_of(self, kind: str, code: int, message: str) -> Any:
+        """Return the action's result: the gripper's gap, or a trajectory's error code
+        and string."""
+        from control_msgs.action import FollowJointTrajectory, GripperCommand
+
         if kind == "gripper":
             r = GripperCommand.Result()
-            r.position, r.effort = arm.gap(), 0.0
+            r.position, r.effort = self.arm.gap(), 0.0
             return r
         r = FollowJointTrajectory.Result()
         r.error_code, r.error_string = code, message
         return r
 
-    ActionServer(node, FollowJointTrajectory, p.arm_action, execute_callback=execute("trajectory"),
-                 goal_callback=on_trajectory, cancel_callback=lambda _: CancelResponse.ACCEPT,
-                 callback_group=group)
-    ActionServer(node, GripperCommand, p.gripper_action, execute_callback=execute("gripper"),
-                 cancel_callback=lambda _: CancelResponse.REJECT, callback_group=group)
-    js_pub = node.create_publisher(JointState, p.joint_states_topic, 10)
-    clock_pub = node.create_publisher(Clock, p.clock_topic, 10)
-    pose_pubs = {n: node.create_publisher(PoseStamped, p.object_topic_of(n), 10)
-                 for n in arm.tracked}
-    wrench_pub = None
-    if p.wrench_topic:
+    # The physics loop, in the order serve calls them.
+
+    def answer_scene_request(self) -> None:
+        """Answer the trainer's next scene request, if any (trainer.py): rebuild the
+        scene here, in the physics loop, aborting the running goal; the arm's time goes
+        on from where it was (SimArm.rebind)."""
+        scenes, arm = self.scenes, self.arm
+        if scenes is None or scenes.requests.empty():
+            return
+        rid, error, episode = scenes.apply(scenes.requests.get())
+        if episode is not None:
+            if self.active is not None:
+                self.settle(self.active, INVALID_GOAL, "the trainer reset the scene", False)
+                self.active = None
+            arm.rebind(episode)
+            from geometry_msgs.msg import PoseStamped
+
+            for name in arm.tracked:
+                if name not in self.pose_pubs:
+                    self.pose_pubs[name] = self.node.create_publisher(
+                        PoseStamped, self.profile.object_topic_of(name), 10)
+            self.hold = arm.q()
+            self.prev_q = self.hold
+            self.latest_q = self.hold
+        if rid is not None:
+            from std_msgs.msg import String
+
+            self.trainer_done.publish(String(data=json.dumps(
+                {"id": rid, "ok": error is None, "error": error or ""})))
+        if error is not None:
+            self.node.get_logger().warning(f"scene request {rid}: {error}")
+
+    def take_jobs(self) -> list[Job]:
+        """Return the goals handed over since the last call, oldest first."""
+        if not self.jobs:
+            return []
+        with self.lock:
+            pending, self.jobs[:] = list(self.jobs), []
+        return pending
+
+    def run_gripper(self, job: Job) -> None:
+        """Close or open the gripper at once; its feedback and result say whether it
+        holds the tool (stalled on it)."""
+        from control_msgs.action import GripperCommand
+
+        p, arm = self.profile, self.arm
+        close = job.request.command.position <= (p.gripper_open + p.gripper_closed) / 2
+        holds = arm.grip(close)
+        r = GripperCommand.Result()
+        r.position = arm.gap()
+        r.effort = job.request.command.max_effort if holds else 0.0
+        r.stalled, r.reached_goal = holds, not holds
+        fb = GripperCommand.Feedback()
+        fb.position, fb.effort, fb.stalled, fb.reached_goal = (
+            r.position, r.effort, r.stalled, r.reached_goal)
+        job.handle.publish_feedback(fb)
+        with self.lock:
+            if not job.done.is_set():  # not ended by a stop meanwhile
+                job.handle.succeed()
+                job.result = r
+                job.done.set()
+
+    def start_trajectory(self, job: Job) -> None:
+        """Make a trajectory goal the active one from the arm's positions now,
+        preempting the active one (aborted if it has become invalid)."""
+        if self.active is not None:
+            self.settle(self.active, INVALID_GOAL, "preempted by a newer goal", False)
+        try:
+            job.run = _trajectory_run(job.request, self.arm, self.arm.q())
+        except InvalidTrajectory as exc:  # the arm moved since the goal was accepted
+            self.settle(job, exc.code, str(exc), False)
+            return
+        job.t0, self.active = self.arm.time(), job
+
+    def command_trajectory(self) -> None:
+        """Set the motors to the active trajectory's desired positions now, if any."""
+        if self.active is not None:
+            t = self.arm.time() - self.active.t0
+            desired, index = self.active.run.desired(t)
+            self.arm.command(desired)
+
+    def advance_trajectory(self, now: float, q: list[float]) -> None:
+        """Judge the active trajectory at physics time ``now`` and positions ``q``, after a
+        physics step: end it if cancelled, else send feedback at the joint states'
+        rate and end it when judged."""
+        active = self.active
+        if active is None:
+            return
+        if active.handle.is_cancel_requested:
+            with self.lock:
+                if not active.done.is_set():
+                    active.handle.canceled()
+                    active.result = self.result_of("trajectory", SUCCESSFUL, "canceled")
+                    active.done.set()
+            self.hold, self.active = q, None
+            self.arm.command(self.hold)
+            return
+        t = now - active.t0
+        result = active.run.judge(t, q)
+        if now - self.last_fb >= self.js_period or result is not None:
+            self.last_fb = now
+            self.trajectory_feedback(now, t, q)
+        if result is not None:
+            self.finish_trajectory(result, q)
+
+    def trajectory_feedback(self, now: float, t: float, q: list[float]) -> None:
+        """Publish the active trajectory's feedback: desired, actual, error, index at
+        ``t`` s into it."""
+        from control_msgs.action import FollowJointTrajectory
+
+        desired, index = self.active.run.desired(t)
+        fb = FollowJointTrajectory.Feedback()
+        fb.header.stamp = self.stamp(now)
+        fb.joint_names = list(self.profile.joints)
+        fb.desired.positions = desired
+        fb.actual.positions = q
+        fb.error.positions = [d - a for d, a in zip(desired, q)]
+        fb.index = index
+        self.active.handle.publish_feedback(fb)
+
+    def finish_trajectory(self, result: GoalResult, q: list[float]) -> None:
+        """End the active trajectory as judged: succeeded, holding its last point, or
+        aborted, stopping where it is (as a controller does on an abort)."""
+        ok = result.code == SUCCESSFUL
+        if not ok:
+            self.hold = q
+            self.arm.command(self.hold)
+        else:
+            self.hold = self.active.run.targets[-1]
+        self.settle(self.active, result.code, result.message, ok)
+        self.active = None
+
+    def stamp(self, now: float) -> Any:
+        """The header stamp of a message about physics time ``now``: that simulated time
+        when the profile says use_sim_time (as Gazebo stamps), else the wall clock."""
+        if self.profile.use_sim_time:
+            return _sim_stamp(now)
+        return self.node.get_clock().now().to_msg()
+
+    def publish_states(self, now: float, q: list[float]) -> None:
+        """Publish the clock, and (unless muted) the joint states with the velocities
+        since the last and the wrench; schedule the next."""
+        from rosgraph_msgs.msg import Clock
+        from sensor_msgs.msg import JointState
+
+        p, arm = self.profile, self.arm
+        clock_msg = Clock()
+        clock_msg.clock = _sim_stamp(now)
+        self.clock_pub.publish(clock_msg)
+        if not self.muted.is_set():
+            msg = JointState()
+            msg.header.stamp = self.stamp(now)
+            msg.name = [*p.joints, p.gripper_joint]
+            msg.position = [*q, arm.gap()]
+            dt = now - self.prev_t
+            msg.velocity = ([*((a - b) / dt for a, b in zip(q, self.prev_q)), 0.0]
+                            if dt > 0 else [])
+            self.js_pub.publish(msg)
+            if self.wrench_pub is not None:
+                self.publish_wrench(msg.header.stamp)
+        self.prev_q, self.prev_t = q, now
+        self.next_js = max(self.next_js + self.js_period, now)
+
+    def publish_wrench(self, stamp: Any) -> None:
+        """Publish the wrist sensor's mean wrench since the last, with the joint states'
+        ``stamp``."""
         from geometry_msgs.msg import WrenchStamped
 
-        wrench_pub = node.create_publisher(WrenchStamped, p.wrench_topic, 10)
-    trainer_done = None
-    if scenes is not None:
-        from std_msgs.msg import String
+        w = WrenchStamped()
+        w.header.stamp, w.header.frame_id = stamp, self.profile.wrench_frame
+        force, torque = self.arm.take_wrench()
+        (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = force
+        (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = torque
+        self.wrench_pub.publish(w)
 
-        node.create_subscription(String, p.trainer_request_topic,
-                                 lambda m: scenes.requests.put(m.data), 10,
-                                 callback_group=group)
-        trainer_done = node.create_publisher(String, p.trainer_done_topic, 10)
+    def publish_poses(self, now: float) -> None:
+        """Publish each tracked object's pose when its period is due; schedule the next."""
+        if now < self.next_pose:
+            return
+        from geometry_msgs.msg import PoseStamped
+
+        pose_stamp = self.stamp(now)
+        for name, (pos, quat) in self.arm.poses().items():
+            msg = PoseStamped()
+            msg.header.stamp, msg.header.frame_id = pose_stamp, self.profile.world_frame
+            msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = pos
+            (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
+             msg.pose.orientation.w) = quat
+            self.pose_pubs[name].publish(msg)
+        self.next_pose = max(self.next_pose + self.pose_period, now)
+
+    def abort_jobs(self) -> None:
+        """Abort the active goal and those not yet taken: the stand-in stopped."""
+        for job in [*([self.active] if self.active is not None else []), *self.jobs]:
+            self.settle(job, INVALID_GOAL, "the stand-in stopped", False)
+
+
+def _stop_signals() -> tuple[threading.Event, threading.Event]:
+    """Return the events that SIGINT/SIGTERM set (stop) and SIGUSR1 toggles (mute the
+    joint states: a live arm whose joint states stop)."""
+    stop, muted = threading.Event(), threading.Event()
+    for sig in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(sig, lambda *_: stop.set())
+    signal.signal(signal.SIGUSR1,
+                  lambda *_: muted.clear() if muted.is_set() else muted.set())
+    return stop, muted
+
+
+def _spin(node: Any) -> tuple[Any, threading.Thread]:
+    """Spin ``node`` on a multi-threaded executor in a daemon thread; return both."""
+    from rclpy.executors import ExternalShutdownException, MultiThreadedExecutor
+
     executor = MultiThreadedExecutor(num_threads=4)
     executor.add_node(node)
 
@@ -411,171 +660,48 @@ def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
 
     spinner = threading.Thread(target=spin, daemon=True)
     spinner.start()
-    interface = {"joint_states": p.joint_states_topic, "trajectory_action": p.arm_action,
-                 "gripper_action": p.gripper_action, "joints": list(p.joints),
-                 "objects": {n: p.object_topic_of(n) for n in arm.tracked},
-                 "frame": p.world_frame, "clock": p.clock_topic,
-                 "use_sim_time": p.use_sim_time}
-    if scenes is not None:
-        interface["trainer"] = {"request": p.trainer_request_topic,
-                                "done": p.trainer_done_topic}
-    if wrench_pub is not None:
-        interface["wrench"] = p.wrench_topic
-    print("standin ready " + json.dumps(interface), file=out, flush=True)
+    return executor, spinner
 
-    js_period, pose_period = 1.0 / p.joint_states_rate_hz, 1.0 / p.object_rate_hz
-    active: Optional[Job] = None
-    hold = arm.q()
-    next_js = next_pose = arm.time()
-    last_fb = -math.inf
-    prev_q, prev_t = arm.q(), arm.time()
-    pace = Pace(realtime, arm.time(), node.get_logger())
+
+def serve(arm: SimArm, realtime: float = 1.0, seconds: float = math.inf,
+          out=sys.stdout, scenes: Any = None) -> int:
+    """Run the stand-in's node until SIGINT/SIGTERM or ``seconds``; return 0.
+
+    With ``scenes`` (a :class:`~creative_py.backends.ros.trainer.SceneKeeper`) it also
+    answers the trainer's scene requests: the scene is rebuilt in the physics loop.
+    """
+    import rclpy
+    from rclpy.signals import SignalHandlerOptions
+
+    stop, muted = _stop_signals()
+    rclpy.init(signal_handler_options=SignalHandlerOptions.NO)  # ours stop the loop
+    standin = StandinNode(arm, stop, muted, scenes)
+    executor, spinner = _spin(standin.node)
+    print("standin ready " + json.dumps(standin.interface()), file=out, flush=True)
+    pace = Pace(realtime, arm.time(), standin.node.get_logger())
     deadline = time.monotonic() + seconds
-
-    def stamp(now: float) -> Any:
-        """The header stamp of a message about physics time ``now``: that simulated time
-        when the profile says use_sim_time (as Gazebo stamps), else the wall clock."""
-        if p.use_sim_time:
-            return _sim_stamp(now)
-        return node.get_clock().now().to_msg()
-
-    def finish(job: Job, code: int, message: str, succeeded: bool) -> None:
-        settle(job, code, message, succeeded)
-
     while not stop.is_set() and time.monotonic() < deadline:
-        if scenes is not None and not scenes.requests.empty():
-            # The trainer's scene request (trainer.py): rebuild the scene here, in the
-            # physics loop; the arm's time goes on from where it was (SimArm.rebind).
-            rid, error, episode = scenes.apply(scenes.requests.get())
-            if episode is not None:
-                if active is not None:
-                    finish(active, INVALID_GOAL, "the trainer reset the scene", False)
-                    active = None
-                arm.rebind(episode)
-                for name in arm.tracked:
-                    if name not in pose_pubs:
-                        pose_pubs[name] = node.create_publisher(
-                            PoseStamped, p.object_topic_of(name), 10)
-                hold = arm.q()
-                prev_q = hold
-                state["q"] = hold
-            if rid is not None:
-                from std_msgs.msg import String
-
-                trainer_done.publish(String(data=json.dumps(
-                    {"id": rid, "ok": error is None, "error": error or ""})))
-            if error is not None:
-                node.get_logger().warning(f"scene request {rid}: {error}")
-        if jobs:
-            with lock:
-                pending, jobs[:] = list(jobs), []
-        else:
-            pending = []
-        for job in pending:
+        standin.answer_scene_request()
+        for job in standin.take_jobs():
             if job.kind == "gripper":
-                close = job.request.command.position <= (p.gripper_open + p.gripper_closed) / 2
-                holds = arm.grip(close)
-                r = GripperCommand.Result()
-                r.position = arm.gap()
-                r.effort = job.request.command.max_effort if holds else 0.0
-                r.stalled, r.reached_goal = holds, not holds
-                fb = GripperCommand.Feedback()
-                fb.position, fb.effort, fb.stalled, fb.reached_goal = (
-                    r.position, r.effort, r.stalled, r.reached_goal)
-                job.handle.publish_feedback(fb)
-                with lock:
-                    if not job.done.is_set():  # not ended by a stop meanwhile
-                        job.handle.succeed()
-                        job.result = r
-                        job.done.set()
-                continue
-            if active is not None:
-                finish(active, INVALID_GOAL, "preempted by a newer goal", False)
-            try:
-                job.run = _trajectory_run(job.request, arm, arm.q())
-            except InvalidTrajectory as exc:  # the arm moved since the goal was accepted
-                finish(job, exc.code, str(exc), False)
-                continue
-            job.t0, active = arm.time(), job
-        if active is not None:
-            t = arm.time() - active.t0
-            desired, index = active.run.desired(t)
-            arm.command(desired)
+                standin.run_gripper(job)
+            else:
+                standin.start_trajectory(job)
+        standin.command_trajectory()
         now = arm.step()
         q = arm.q()
-        if active is not None:
-            t = now - active.t0
-            result: Optional[GoalResult] = None
-            if active.handle.is_cancel_requested:
-                with lock:
-                    if not active.done.is_set():
-                        active.handle.canceled()
-                        active.result = _result("trajectory", SUCCESSFUL, "canceled")
-                        active.done.set()
-                hold, active = q, None
-                arm.command(hold)
-            else:
-                result = active.run.judge(t, q)
-                if now - last_fb >= js_period or result is not None:
-                    last_fb = now
-                    desired, index = active.run.desired(t)
-                    fb = FollowJointTrajectory.Feedback()
-                    fb.header.stamp = stamp(now)
-                    fb.joint_names = list(p.joints)
-                    fb.desired.positions = desired
-                    fb.actual.positions = q
-                    fb.error.positions = [d - a for d, a in zip(desired, q)]
-                    fb.index = index
-                    active.handle.publish_feedback(fb)
-            if result is not None:
-                ok = result.code == SUCCESSFUL
-                if not ok:  # stop where it is, as a controller does on an abort
-                    hold = q
-                    arm.command(hold)
-                else:
-                    hold = active.run.targets[-1]
-                finish(active, result.code, result.message, ok)
-                active = None
-        state["q"] = q  # one reference swapped: atomic under the GIL
-        if now < next_js:
+        standin.advance_trajectory(now, q)
+        standin.latest_q = q  # one reference swapped: atomic under the GIL
+        if now < standin.next_js:
             continue  # the physics runs ahead, at most one publication period
-        clock_msg = Clock()
-        clock_msg.clock = _sim_stamp(now)
-        clock_pub.publish(clock_msg)
-        if not muted.is_set():
-            msg = JointState()
-            msg.header.stamp = stamp(now)
-            msg.name = [*p.joints, p.gripper_joint]
-            msg.position = [*q, arm.gap()]
-            dt = now - prev_t
-            msg.velocity = [*((a - b) / dt for a, b in zip(q, prev_q)), 0.0] if dt > 0 else []
-            js_pub.publish(msg)
-            if wrench_pub is not None:
-                w = WrenchStamped()
-                w.header.stamp, w.header.frame_id = msg.header.stamp, p.wrench_frame
-                force, torque = arm.take_wrench()
-                (w.wrench.force.x, w.wrench.force.y, w.wrench.force.z) = force
-                (w.wrench.torque.x, w.wrench.torque.y, w.wrench.torque.z) = torque
-                wrench_pub.publish(w)
-        prev_q, prev_t = q, now
-        next_js = max(next_js + js_period, now)
-        if now >= next_pose:
-            pose_stamp = stamp(now)
-            for name, (pos, quat) in arm.poses().items():
-                msg = PoseStamped()
-                msg.header.stamp, msg.header.frame_id = pose_stamp, p.world_frame
-                msg.pose.position.x, msg.pose.position.y, msg.pose.position.z = pos
-                (msg.pose.orientation.x, msg.pose.orientation.y, msg.pose.orientation.z,
-                 msg.pose.orientation.w) = quat
-                pose_pubs[name].publish(msg)
-            next_pose = max(next_pose + pose_period, now)
+        standin.publish_states(now, q)
+        standin.publish_poses(now)
         pace.wait(now)  # once a publication period: wall time catches up with physics
     stop.set()
-    for job in [*([active] if active is not None else []), *jobs]:
-        settle(job, INVALID_GOAL, "the stand-in stopped", False)
+    standin.abort_jobs()
     executor.shutdown(timeout_sec=2.0)
     spinner.join(timeout=2.0)
-    node.destroy_node()
+    standin.node.destroy_node()
     rclpy.try_shutdown()
     return 0
 
