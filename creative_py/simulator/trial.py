@@ -137,7 +137,8 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
     The body of :func:`run_trial`, for a caller that opens the episode itself (the
     simulator benchmark). Before the tool action the robot observes (the state the
     action model's precondition speaks of); a blocked motion is observed where it
-    stopped, a trial whose skills all ran at its end. ``observe=False`` takes no
+    stopped, a trial whose skills all ran at its end; a skill in which the robot
+    struck a scene body (its ``struck``) is the trial's last. ``observe=False`` takes no
     observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
     the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
     skipped). ``timings`` receives each skill's wall time (s) as ``<skill>_s``. The
@@ -162,8 +163,8 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
             raise
         if timings is not None:
             timings[f"{skill.name}_s"] = time.perf_counter() - t0
-        if not status.ok:
-            break
+        if not status.ok or status.struck is not None:
+            break  # a robot that struck the scene: the trial ends there (trial_outcome)
     outcome, reason, oracle, asked = judge(ep, status, acted)
     if observe and outcome == "blocked":
         # What the robot sees where the motion stopped: the catalogue and the task's
@@ -265,7 +266,18 @@ def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str
         nothing of what the tool would have done at its end (a ``failure`` would say
         the tool did all of it and missed). The reason is the skill's.
         Otherwise the skill's status (``unreachable``, ``invalid``) with its reason.
+        Before all of these: a skill in which the robot itself (a link, not the tool
+        it holds) struck a scene body (``status.struck``, measured by the backend)
+        ends the trial ``blocked``, before or during the tool action, whatever the
+        goal, unless the physics blew up (``invalid``): the arm, not the tool, met
+        the scene, so the trial says nothing of what the tool does where it was
+        planned to be (a hand that strikes a tube's mouth pushes the held tool
+        aside; a ``failure`` would be read as the tool's). The reason is the
+        skill's (which link struck which body, where; or its guard's, when one
+        stopped the motion too).
     """
+    if status.struck is not None and status.status != "invalid":
+        return "blocked", status.reason
     if status.ok:
         return ("success", GOAL_REACHED) if reached else ("failure", GOAL_NOT_REACHED)
     if status.status == "out_of_time":
