@@ -239,6 +239,9 @@ def verdict_words(verdict: Any) -> str:
     stop = verdict.get("stop")
     if isinstance(stop, dict) and stop.get("text"):
         parts.append(f"stopped: {measure_words(stop)}")
+    struck = verdict.get("struck")
+    if isinstance(struck, dict) and struck.get("text"):
+        parts.append(f"struck: {measure_words(struck)}")
     if verdict.get("text"):
         parts.append(measure_words(verdict))
     return " | ".join(parts)
@@ -324,6 +327,10 @@ def verdict_lines(verdict: Any) -> list[str]:
         touching = (stop.get("measures") or {}).get("touching")
         if touching:
             lines.append(f"touching {', '.join(touching)}")
+    struck = verdict.get("struck")
+    if isinstance(struck, dict):
+        lines.append(f"struck: {', '.join((struck.get('measures') or {}).get('touching') or [])}"
+                     f" ({_with_unit(struck.get('brief'), struck.get('unit'))})")
     if verdict.get("brief") or verdict.get("text"):
         lines.append(_with_unit(verdict.get("brief"), verdict.get("unit"))
                      or str(verdict["text"]))

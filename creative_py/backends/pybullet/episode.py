@@ -334,7 +334,7 @@ class Episode:
                 stop = self._name_touching(stop)
             return SkillOutcome(res.status, f"{name}: {res.reason}", stop, struck)
         if struck is not None:
-            return SkillOutcome("ok", f"{name}: {struck.detail}", struck, struck)
+            return SkillOutcome("ok", f"{name}: {struck.detail}", struck=struck)
         return res
 
     def _struck(self) -> Verdict | None:
