@@ -30,8 +30,9 @@ from creative_py.records.checking import hints, typed
 
 TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
 """Outcomes of a trial: ``success`` / ``failure`` (the goal was or was not reached),
-``blocked`` (a motion before the tool action was stopped by a collision, or the
-trial's step or time budget ran out before the goal was reached), ``unreachable`` (no
+``blocked`` (a motion before the tool action was stopped by a collision, the robot
+itself struck a scene body and the goal was not reached, or the trial's step or time
+budget ran out before the goal was reached), ``unreachable`` (no
 arm posture reaches a waypoint), ``invalid`` (the physics blew up)."""
 
 PHASES: tuple[str, ...] = ("use", "create", "eval")

@@ -29,7 +29,11 @@ Moves are Cartesian straight lines sampled every ``steps_per_waypoint`` physics 
 each waypoint is an IK solution seeded from the previous one, sent as position targets
 at the URDF effort limits. A move ends ``blocked`` when the gripper lags its target by
 more than ``max_tracking_error`` (it hit something), ``unreachable`` when IK cannot
-reach a waypoint, ``invalid`` when the physics produces NaN.
+reach a waypoint, ``invalid`` when the physics produces NaN. After every waypoint the
+arm also measures where its own links strike the scene bodies it was given
+(:meth:`Arm.watch_strikes`, :meth:`Arm.take_strikes`): a strike stops nothing (the
+physics goes on as without it); the episode reports it with the skill
+(``SkillOutcome.struck``) and the trial's outcome rule reads it.
 """
 
 from __future__ import annotations
