@@ -108,23 +108,27 @@ class PusherSpec(SquareBarTool):
         """Return the pole, the neck, the base plate and the wings (hulls)."""
         L, w, t, H = self.pole_length, self.pole_width, self.wall, self.wall_height
         y0, y1 = self.drop, self.drop + H
-        half = self.plate_width / 2
         parts: list[Part] = [
             self.bar(),
             Box((L - w / 2, (y0 + w / 2) / 2, 0.0), (w, y0 + w / 2, w)),
             Box((L - t / 2, (y0 + y1) / 2, 0.0), (t, H, self.plate_width)),
         ]
-        if self.wing_length > 0:
-            wl, sp = self.wing_length, self.wing_spread
-            for s in (1.0, -1.0):
-                # The tip ends in a face across z (t long), so that a printed piece
-                # cut from the head can stand on it flat.
-                corners = [(L - t, s * half), (L - t, s * (half - t)),
-                           (L + wl - t, s * (half + sp)), (L + wl, s * (half + sp)),
-                           (L + wl, s * (half + sp - t))]
-                verts = tuple((x, y, z) for x, z in corners for y in (y0, y1))
-                parts.append(Hull(verts, volume=H * _area(_convex(corners))))
+        for corners in self._wing_sections():
+            verts = tuple((x, y, z) for x, z in corners for y in (y0, y1))
+            parts.append(Hull(verts, volume=H * _area(_convex(corners))))
         return parts
+
+    def _wing_sections(self) -> list[list[tuple[float, float]]]:
+        """Return each wing's section in (x, z), none without wings. The tip ends in a
+        face across z (``wall`` long), so that a printed piece cut from the head can
+        stand on it flat."""
+        if self.wing_length <= 0:
+            return []
+        L, t, half = self.pole_length, self.wall, self.plate_width / 2
+        wl, sp = self.wing_length, self.wing_spread
+        return [[(L - t, s * half), (L - t, s * (half - t)),
+                 (L + wl - t, s * (half + sp)), (L + wl, s * (half + sp)),
+                 (L + wl, s * (half + sp - t))] for s in (1.0, -1.0)]
 
     def volume(self) -> float:
         """Return the solid volume, m^3, each overlap counted once: every part is an
@@ -140,8 +144,7 @@ class PusherSpec(SquareBarTool):
         prisms = [(-w / 2, w / 2, _rect(0.0, L, -w / 2, w / 2)),
                   (0.0, y0 + w / 2, _rect(L - w, L, -w / 2, w / 2)),
                   (y0, y1, _rect(L - t, L, -half, half))]
-        for part in self.parts()[3:]:  # the wings
-            prisms.append((y0, y1, _convex([(x, z) for x, y, z in part.vertices if y == y0])))
+        prisms += [(y0, y1, _convex(corners)) for corners in self._wing_sections()]
         return prisms
 
     # -------------------- how the simulator holds it (by the pole: SquareBarTool)
