@@ -143,6 +143,19 @@ class Connection:
             raise SceneRefused(f"{p.source}: the trainer on {p.trainer_done_topic!r} refused "
                                f"the scene: {answer.get('error') or 'no reason given'}")
 
+    def rebase(self, base: Any) -> None:
+        """Put the learner's model of the arm's base at ``base`` (another world places
+        the same arm elsewhere): new kinematics and learner arm over the same client,
+        so one process keeps one node per arm."""
+        if base == self.base:
+            return
+        kin = Kinematics(self.profile, base)
+        if self.kin is not None:
+            self.kin.close()
+        log, self.base, self.kin = self.arm.log, base, kin
+        self.arm = LearnerArm(self.client, kin)
+        self.arm.log = log  # every goal of the process (GOAL_LOG_ENV)
+
     def close(self) -> None:
         """Release the kinematics and the node (idempotent)."""
         if self.kin is not None:
@@ -153,7 +166,8 @@ class Connection:
             self.client = None
 
 
-_CONNECTION: dict[tuple, Connection] = {}
+_CONNECTION: dict[str, Connection] = {}
+"""This process's connections, one per robot profile (one node per arm)."""
 
 
 def profile_name(manifest: Any) -> str:
@@ -179,8 +193,10 @@ def world_base(world: Any) -> Any:
 
 def connection(world: Any) -> Connection:
     """Return this process's connection to the arm of the profile ``world``'s manifest
-    names (:func:`profile_name`), made on first use; the learner's kinematics and bounds
-    put the arm's base where ``world`` places it (:func:`world_base`).
+    names (:func:`profile_name`), made on first use and kept, one per profile; the
+    learner's kinematics and bounds put the arm's base where ``world`` places it
+    (:func:`world_base`; :meth:`Connection.rebase` when another world placed it
+    elsewhere).
 
     Raises
     ------
@@ -198,9 +214,9 @@ def connection(world: Any) -> Connection:
     """
     name = profile_name(world.manifest)
     base = world_base(world)
-    key = (name, base)
-    conn = _CONNECTION.get(key)
+    conn = _CONNECTION.get(name)
     if conn is not None and conn.client is not None:
+        conn.rebase(base)
         return conn
     profile = load_profile(name)
     warning = discovery_warning(os.environ)
@@ -225,7 +241,7 @@ def connection(world: Any) -> Connection:
             "(it said: 'Please compile Fast DDS using the -DSECURITY=ON CMake option'; the "
             "PyPI wheels' is): run the learner with the lab's own ROS 2 install and SROS2, "
             "or on an isolated robot network (docs/real-robot.md, Network safety)") from None
-    _CONNECTION[key] = conn
+    _CONNECTION[name] = conn
     return conn
 
 
@@ -239,7 +255,7 @@ def _close_connections() -> None:
     path = os.environ.get(GOAL_LOG_ENV)
     if path and _CONNECTION:
         data = {name: {"goals": conn.arm.log, "scene_s": conn.scene_s}
-                for (name, _), conn in _CONNECTION.items()}
+                for name, conn in _CONNECTION.items()}
         Path(path).write_text(json.dumps(data), encoding="utf-8")
     for conn in _CONNECTION.values():
         try:

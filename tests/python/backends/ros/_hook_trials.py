@@ -76,6 +76,17 @@ try:
     out["trials"] = trials
     conn = ros.connection(world)
     out["scene_s"] = conn.scene_s
+    # the same arm placed elsewhere by another world: the same connection (one node per
+    # arm in the process), the learner's kinematics moved to the new base, then back
+    moved_robot = replace(world.scene.robot, base=((0.1, -0.2, 0.0), (0.0, 0.0, 0.5)))
+    moved = replace(world, scene=replace(world.scene, robot=moved_robot))
+    node, goals = conn.client.node, len(conn.arm.log)
+    again = ros.connection(moved)
+    out["rebase"] = {"same_connection": again is conn, "same_node": again.client.node is node,
+                     "base": [list(v) for v in again.base],
+                     "goals_kept": len(again.arm.log) == goals > 0}
+    back = ros.connection(world)
+    out["rebase"]["back"] = back is conn and back.base is None
     # a scene the trainer refuses: an unknown tool of a created tool's request
     from creative_py.backends.ros.trainer import scene_request
 

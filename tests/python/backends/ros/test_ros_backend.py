@@ -229,6 +229,15 @@ def test_hook_trials_over_ros_are_decided_by_the_stand_ins_physics(hook_trials):
 
 
 @pytest.mark.sim
+def test_a_world_that_places_the_arm_elsewhere_keeps_the_process_s_one_connection(
+        hook_trials):
+    # A sweep over worlds that place the same arm differently opened a node per base.
+    r = hook_trials["rebase"]
+    assert r["same_connection"] and r["same_node"] and r["goals_kept"] and r["back"], r
+    assert r["base"][0] == pytest.approx([0.1, -0.2, 0.0])
+
+
+@pytest.mark.sim
 def test_the_trainer_refuses_a_scene_in_one_line(hook_trials):
     msg = hook_trials["refused"]
     assert "the trainer on 'trainer/scene_done' refused the scene" in msg
