@@ -395,13 +395,7 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
 
     def finished(row: dict[str, Any]) -> None:
         result.rows.append(row)
-        done = len(result.rows)
-        what = (f"{row['trials_to_learn']} tool-use trials, {row['creation_trials'] or '-'} "
-                f"creation trials" if row["status"] == "ok" else row["error"])
-        say(f"[{done}/{total}, {total - done} left] {row['case']} {row['strategy']} "
-            f"seed {row['seed']} world {'-' if row['world_seed'] == '' else row['world_seed']}: "
-            f"{row['status']}, {what}, "
-            f"{row['wall_time_s']} s")
+        say(_progress_line(row, len(result.rows), total))
         _write_csv(folder / "sweep.csv", result.rows)
 
     try:
@@ -418,13 +412,31 @@ def run_sweep(runs: Sequence[RunSpec], out: Path, options: SweepOptions = SweepO
         _write_csv(folder / "sweep.csv", result.rows)
         raise SweepStopped(signum, folder, len(result.rows), total) from None
     result.wall_time_s = round(time.perf_counter() - t0, 2)
+    ray = None if serial else {"address": address, "num_cpus": num_cpus,
+                               "fresh_workers": fresh_workers}
+    _write_outputs(result, runs, options, ray, serial)
+    return result
+
+
+def _progress_line(row: dict[str, Any], done: int, total: int) -> str:
+    """Return the line that says run ``row`` finished, the ``done``-th of ``total``."""
+    what = (f"{row['trials_to_learn']} tool-use trials, {row['creation_trials'] or '-'} "
+            f"creation trials" if row["status"] == "ok" else row["error"])
+    return (f"[{done}/{total}, {total - done} left] {row['case']} {row['strategy']} "
+            f"seed {row['seed']} world {'-' if row['world_seed'] == '' else row['world_seed']}: "
+            f"{row['status']}, {what}, "
+            f"{row['wall_time_s']} s")
+
+
+def _write_outputs(result: SweepResult, runs: Sequence[RunSpec], options: SweepOptions,
+                   ray: Optional[dict[str, Any]], serial: bool) -> None:
+    """Write a finished sweep's ``sweep.csv`` (rows in the planned order), ``sweep.png``
+    and ``sweep.json`` into its folder."""
+    folder = result.folder
     _sort_as_planned(result.rows, runs)
     _write_csv(folder / "sweep.csv", result.rows)
     plot_sweep(result.rows, folder / "sweep.png")
-    ray = None if serial else {"address": address, "num_cpus": num_cpus,
-                               "fresh_workers": fresh_workers}
     _write_sweep_json(folder / "sweep.json", runs, options, ray, serial, result)
-    return result
 
 
 def _sort_as_planned(rows: list[dict[str, Any]], runs: Sequence[RunSpec]) -> None:

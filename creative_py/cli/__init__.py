@@ -19,9 +19,10 @@ and the ``creative`` script.
 
 from __future__ import annotations
 
+import inspect
 import logging
 import sys
-from typing import Optional
+from typing import Any, Callable, Optional
 
 import typer
 
@@ -63,15 +64,24 @@ def main(ctx: typer.Context,
                         format="%(levelname)s %(name)s: %(message)s")
 
 
+def _command(fn: Callable[..., Any], name: Optional[str] = None) -> None:
+    """Register ``fn`` as a command of :data:`app`, its help its docstring with each
+    paragraph on one line: typer's rich help keeps a docstring's line breaks, so
+    ``--help`` would break a sentence where the source wraps, not where the terminal
+    does."""
+    paragraphs = inspect.cleandoc(fn.__doc__ or "").split("\n\n")
+    app.command(name, help="\n\n".join(" ".join(p.split()) for p in paragraphs))(fn)
+
+
 # The commands, in the order ``creative --help`` lists them.
-app.command()(listings.robots)
-app.command()(listings.cases)
-app.command()(trial.trial)
-app.command()(sweep.sweep)
-app.command()(run.run)
-app.command()(report.report)
-app.command()(repl.repl)
-app.command("make-tool")(make_tool.make_tool_cmd)
+_command(listings.robots)
+_command(listings.cases)
+_command(trial.trial)
+_command(sweep.sweep)
+_command(run.run)
+_command(report.report)
+_command(repl.repl)
+_command(make_tool.make_tool_cmd, "make-tool")
 
 
 def main(args: Optional[list[str]] = None) -> None:

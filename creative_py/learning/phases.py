@@ -21,6 +21,7 @@ from creative_py.records.summary import (CatalogueEntry, CreatedToolSummary, Cre
                                          PddlChecks, Prediction, PrintSummary,
                                          StrengthSummary, UsePhase, UsePrior,
                                          PriorDrop)
+from creative_py.robots import load_profile
 
 Say = Callable[[str], None]
 
@@ -29,11 +30,17 @@ def case_facts(manifest: Any, options: RunOptions) -> dict[str, Any]:
     """What the reports need of the case, written into ``summary.json`` so that they read
     the run folder alone: the unit of each pose number (``pose_units``), N of Algorithm 1
     as this run used it (``trial_budget``) and the paper's count of tool-use trials
-    (``paper_trials``, None when the paper has no such case); fields of
+    (``paper_trials``, None when the paper has no such case) and, where ``--robot``
+    gave a profile by its ``.toml`` path, the profile's name (``robot_name``); fields of
     :class:`~creative_py.records.summary.RunSummary`."""
-    return {"pose_units": {p.name: p.unit for p in manifest.pose_params},
-            "trial_budget": options.max_trials or manifest.trial_budget,
-            "paper_trials": manifest.paper_trials}
+    facts = {"pose_units": {p.name: p.unit for p in manifest.pose_params},
+             "trial_budget": options.max_trials or manifest.trial_budget,
+             "paper_trials": manifest.paper_trials}
+    if options.robot is not None:
+        name = load_profile(options.robot).name
+        if name != options.robot:
+            facts["robot_name"] = name
+    return facts
 
 
 def learn_to_use(runner: TrialRunner, options: RunOptions, wall: dict[str, float],

@@ -16,6 +16,7 @@ import time
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any, Mapping
 
 import manifold3d
 import numpy as np
@@ -117,7 +118,6 @@ def check_print_files(files: ToolFiles | Path | str) -> PrintCheck:
                           (f"{files.spec.name}: not printable: {entry.get('reason')}",))
     bed = np.asarray(entry["build_volume_mm"], dtype=float)
     settings = PrintSettings(build_volume=tuple(bed / MM_PER_M))
-    slack = FIT_MARGIN * MM_PER_M / 2
     boxes, solids, sliced = [], [], 0
     for row in entry["pieces"]:
         path = files.directory / row["stl"]
@@ -125,39 +125,68 @@ def check_print_files(files: ToolFiles | Path | str) -> PrintCheck:
             problems.append(f"{path}: file missing")
             continue
         mesh = _load_mm_mesh(path)
-        if not mesh.is_watertight or mesh.body_count != 1:
-            problems.append(f"{path}: not one watertight solid")
-        lo, hi = mesh.bounds
-        boxes.append(tuple(float(v) for v in hi - lo))
-        if (lo < -slack).any() or (hi > bed + slack).any():
-            problems.append(f"{path}: outside the {' x '.join(f'{v:g}' for v in bed)} mm "
-                            f"build volume (bounds {lo.round(2)} .. {hi.round(2)})")
-        placement = np.asarray(row["placement"], dtype=float)
-        rot = placement[:3, :3] / MM_PER_M
-        back = (np.asarray(mesh.vertices) - placement[:3, 3]) @ rot  # rot^T per row
-        solids.append(_manifold(trimesh.Trimesh(back, mesh.faces, process=False)))
+        boxes.append(_check_piece_mesh(path, mesh, bed, problems))
+        solids.append(_in_tool_frame(mesh, np.asarray(row["placement"], dtype=float)))
         if row.get("gcode"):
-            try:
-                est = read_gcode(files.directory / row["gcode"], settings, piece=row["name"])
-            except (SliceError, OSError) as exc:
-                problems.append(str(exc))
-            else:
-                if est.print_time_s > 0 and est.filament_g > 0 and est.filament_mm > 0:
-                    sliced += 1
-                else:
-                    problems.append(f"{row['gcode']}: no positive print time or filament")
-    mismatch = None
-    if solids and files.stl.is_file():
-        design = _manifold(_load_mm_mesh(files.stl))
-        union = manifold3d.Manifold.batch_boolean(solids, manifold3d.OpType.Add)
-        mismatch = float(((design - union).volume() + (union - design).volume())
-                         / design.volume())
-        if mismatch > SPLIT_VOLUME_RTOL:
-            problems.append(f"{files.spec.name}: the pieces united differ from the tool's STL "
-                            f"by {mismatch:.2%} of its volume")
+            sliced += _check_gcode(files, row, settings, problems)
+    mismatch = _union_mismatch(files, solids, problems) if solids else None
     fits = len(boxes) == len(entry["pieces"]) and not any("outside" in p for p in problems)
     return PrintCheck(len(entry["pieces"]), tuple(boxes), fits, mismatch, sliced,
                       tuple(problems))
+
+
+def _check_piece_mesh(path: Path, mesh: trimesh.Trimesh, bed: np.ndarray,
+                      problems: list[str]) -> tuple[float, float, float]:
+    """Add to ``problems`` if a piece's STL ``mesh`` (mm) is not one watertight solid or
+    lies outside the build volume ``bed`` (mm); return its extent (x, y, z), mm."""
+    slack = FIT_MARGIN * MM_PER_M / 2
+    if not mesh.is_watertight or mesh.body_count != 1:
+        problems.append(f"{path}: not one watertight solid")
+    lo, hi = mesh.bounds
+    if (lo < -slack).any() or (hi > bed + slack).any():
+        problems.append(f"{path}: outside the {' x '.join(f'{v:g}' for v in bed)} mm "
+                        f"build volume (bounds {lo.round(2)} .. {hi.round(2)})")
+    return tuple(float(v) for v in hi - lo)
+
+
+def _in_tool_frame(mesh: trimesh.Trimesh, placement: np.ndarray) -> manifold3d.Manifold:
+    """Return a piece's STL ``mesh`` (mm, as placed on the bed) moved back into the tool
+    frame by the inverse of its ``placement`` (4 x 4, tool frame in m to bed in mm)."""
+    rot = placement[:3, :3] / MM_PER_M
+    back = (np.asarray(mesh.vertices) - placement[:3, 3]) @ rot  # rot^T per row
+    return _manifold(trimesh.Trimesh(back, mesh.faces, process=False))
+
+
+def _check_gcode(files: ToolFiles, row: Mapping[str, Any], settings: PrintSettings,
+                 problems: list[str]) -> bool:
+    """Return whether a piece's G-code reads back with a positive print time and
+    filament (else add why to ``problems``)."""
+    try:
+        est = read_gcode(files.directory / row["gcode"], settings, piece=row["name"])
+    except (SliceError, OSError) as exc:
+        problems.append(str(exc))
+        return False
+    if est.print_time_s > 0 and est.filament_g > 0 and est.filament_mm > 0:
+        return True
+    problems.append(f"{row['gcode']}: no positive print time or filament")
+    return False
+
+
+def _union_mismatch(files: ToolFiles, solids: list[manifold3d.Manifold],
+                    problems: list[str]) -> float | None:
+    """Return the symmetric difference of the pieces ``solids`` united and the tool's
+    STL, as a fraction of the STL's volume (None without the STL); add to
+    ``problems`` if it exceeds :data:`~creative_py.mesh.tolerances.SPLIT_VOLUME_RTOL`."""
+    if not files.stl.is_file():
+        return None
+    design = _manifold(_load_mm_mesh(files.stl))
+    union = manifold3d.Manifold.batch_boolean(solids, manifold3d.OpType.Add)
+    mismatch = float(((design - union).volume() + (union - design).volume())
+                     / design.volume())
+    if mismatch > SPLIT_VOLUME_RTOL:
+        problems.append(f"{files.spec.name}: the pieces united differ from the tool's STL "
+                        f"by {mismatch:.2%} of its volume")
+    return mismatch
 
 
 def _load_mm_mesh(path: Path) -> trimesh.Trimesh:

@@ -177,6 +177,28 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
         One entry per object seen by at least ``config.min_points`` points; objects
         not seen are left out (and logged).
     """
+    _check_inputs(bodies, noise, rng, config)
+    support_z = dict(support_z or {})
+    heights = dict(heights or {})
+    if noise is not None and not noise.is_zero:
+        frames = [noise.apply(f, rng) for f in frames]
+    smooth = (config.median_filter if config.median_filter is not None
+              else noise is not None and noise.depth_sigma_m > 0.0)
+    # The sensor's depth noise is known from its model; a 3x3 median leaves about half.
+    sigma_z = 0.0 if noise is None else noise.depth_sigma_m * (0.5 if smooth else 1.0)
+    out: dict[str, ObjectEstimate] = {}
+    for name, bid in bodies.items():
+        est = _estimate_body(frames, name, int(bid), smooth, sigma_z, support_z.get(name),
+                             heights.get(name), config)
+        if est is not None:
+            out[name] = est
+    return out
+
+
+def _check_inputs(bodies: Mapping[str, int], noise: NoiseModel | None,
+                  rng: np.random.Generator | None, config: EstimatorConfig) -> None:
+    """Raise ValueError if a noise model comes without an rng, a body id is not an int
+    >= 0 or ``config.extent_trim`` lies outside [0, 0.5)."""
     if noise is not None and not noise.is_zero and rng is None:
         raise ValueError("estimate_objects: a noise model needs an rng "
                          "(numpy.random.default_rng(seed)) so that results are reproducible")
@@ -184,38 +206,33 @@ def estimate_objects(frames: Sequence[Frame], bodies: Mapping[str, int],
         if isinstance(bid, bool) or not isinstance(bid, (int, np.integer)) or bid < 0:
             raise ValueError(f"estimate_objects: body id of {name!r} must be an int >= 0, "
                              f"got {bid!r}")
-    support_z = dict(support_z or {})
-    heights = dict(heights or {})
-    noisy = noise is not None and not noise.is_zero
-    if noisy:
-        frames = [noise.apply(f, rng) for f in frames]
     trim = config.extent_trim
-    smooth = (config.median_filter if config.median_filter is not None
-              else noise is not None and noise.depth_sigma_m > 0.0)
-    # The sensor's depth noise is known from its model; a 3x3 median leaves about half.
-    sigma_z = 0.0 if noise is None else noise.depth_sigma_m * (0.5 if smooth else 1.0)
     if not 0.0 <= trim < 0.5:
         raise ValueError(f"estimate_objects: config field 'extent_trim' must lie in [0, 0.5), "
                          f"got {trim!r}")
-    out: dict[str, ObjectEstimate] = {}
-    for name, bid in bodies.items():
-        chunks, heights_f, tilts, cams = _body_points(frames, int(bid), smooth, config)
-        n_pts = sum(len(c) for c in chunks)
-        if n_pts < config.min_points:
-            log.info("object %s not seen (%d points)", name, n_pts)
-            continue
-        pts, z, tilt = (np.concatenate(c) for c in (chunks, heights_f, tilts))
-        # Depth noise moves a point along its ray, so sideways by sigma * tilt. With a
-        # noise model, draw the footprint from steep rays (a downward camera sees the
-        # whole footprint of an object on a surface) if there are enough of them.
-        footprint = np.ones(len(pts), bool)
-        steep = tilt <= config.footprint_max_tilt
-        if sigma_z > 0.0 and steep.sum() >= config.min_points:
-            footprint = steep
-        est = _estimate_one(name, pts, z, footprint, steep, cams, support_z.get(name),
-                            heights.get(name), trim, sigma_z, config)
-        out[name] = est
-    return out
+
+
+def _estimate_body(frames: Sequence[Frame], name: str, bid: int, smooth: bool,
+                   sigma_z: float, support_z: float | None, height: float | None,
+                   config: EstimatorConfig) -> ObjectEstimate | None:
+    """Fuse the points of body ``bid`` from every camera that sees it and estimate its
+    pose and size, or return None (and log it) if fewer than ``config.min_points`` are
+    seen. ``sigma_z`` is the depth noise left after smoothing (m)."""
+    chunks, heights_f, tilts, cams = _body_points(frames, bid, smooth, config)
+    n_pts = sum(len(c) for c in chunks)
+    if n_pts < config.min_points:
+        log.info("object %s not seen (%d points)", name, n_pts)
+        return None
+    pts, z, tilt = (np.concatenate(c) for c in (chunks, heights_f, tilts))
+    # Depth noise moves a point along its ray, so sideways by sigma * tilt. With a
+    # noise model, draw the footprint from steep rays (a downward camera sees the
+    # whole footprint of an object on a surface) if there are enough of them.
+    footprint = np.ones(len(pts), bool)
+    steep = tilt <= config.footprint_max_tilt
+    if sigma_z > 0.0 and steep.sum() >= config.min_points:
+        footprint = steep
+    return _estimate_one(name, pts, z, footprint, steep, cams, support_z, height,
+                         config.extent_trim, sigma_z, config)
 
 
 def _body_points(frames: Sequence[Frame], bid: int, smooth: bool, cfg: EstimatorConfig):

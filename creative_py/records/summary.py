@@ -550,6 +550,9 @@ class RunSummary(Part):
     phase: Optional[str] = None
     options: dict[str, Any] = field(default_factory=dict)
     """The run's options (``creative_py.learning.options.RunOptions``) by name."""
+    robot_name: Optional[str] = _omit()
+    """The robot profile's own name where the options give its ``.toml`` path (they keep
+    the path: a resume loads it again); left out otherwise."""
     wall_time_s: Optional[WallTimes] = None
     world_seed: Optional[int] = None
     drawn_world: Optional[dict[str, Any]] = None
@@ -590,10 +593,12 @@ class RunSummary(Part):
 
     @property
     def robot(self) -> Optional[str]:
-        """The robot profile the run's arm was built from (``--robot``, else the case's,
-        as ``run.json`` recorded it); None for a run recorded before robots were named
+        """The robot profile the run's arm was built from (``--robot``, else the case's):
+        its name, or as ``run.json`` recorded it where the run did not record the name
+        of a profile given by path; None for a run recorded before robots were named
         or on a backend with its own arm."""
-        return self.options.get("robot") or self.options.get("robot_profile")
+        return (self.robot_name or self.options.get("robot")
+                or self.options.get("robot_profile"))
 
     @property
     def budget(self) -> Any:

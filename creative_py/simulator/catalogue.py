@@ -24,9 +24,9 @@ FRICTION = (0.0, 10.0)
 
 @dataclass(frozen=True)
 class CatalogueItem:
-    """An available object: its spec (a tool kind's), set name, friction, mass (kg,
-    None: from its volume; the spec's own for a catalogued object) and, for a created
-    tool, the URDF file written for it."""
+    """An available object: its spec (a tool kind's, which holds its mass: kg, None for
+    a created tool, printed PLA), set name, friction and, for a created tool, the URDF
+    file written for it."""
 
     spec: Any
     set: str
@@ -35,7 +35,6 @@ class CatalogueItem:
     outside_ranges: bool = False
     """Set by ``outside_ranges = true`` in objects.toml: the user knows a dimension lies
     outside the ontology's qualitative ranges (a run refuses such an object otherwise)."""
-    mass: Optional[float] = None
 
 
 def read_catalogue(path: Path, table: str,
@@ -66,8 +65,7 @@ def read_catalogue(path: Path, table: str,
             raise tf.error("kind", why)
         if spec.name in items:
             raise tf.error("name", f"object name {spec.name!r} is used twice")
-        items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside,
-                                         mass=spec.mass)
+        items[spec.name] = CatalogueItem(spec, obj_set, friction, outside_ranges=outside)
     f.done()
     if not items:
         raise WorldFileError(f"{path}: field {table!r}: at least one [[{table}]] is needed")

@@ -94,23 +94,30 @@ def run_trial(world: World, tool: str, variant: str, location: int,
                                      pose_target, record=record) as ep:
         played = play_trial(ep, m, pose)
         wall_s = time.perf_counter() - t0
-        force, load = ep.measured_load() if played.acted else (0.0, None)
-        final = played.final
-        result = TrialResult(
-            case=m.id, object=tool, variant=variant, location=int(location),
-            pose=tuple(pose), outcome=played.outcome, reason=played.reason,
-            perceived_final=(final.perceived_poses() if final is not None and final.frames
-                             else None),
-            true_final=played.truth, sim_time_s=ep.sim_time(), wall_time_s=wall_s,
-            render_time_s=ep.render_time_s, steps=ep.steps, seed=seed,
-            max_tool_force_n=force, tool_load=load, facts_before=played.facts_before,
-            verdict=played.verdict)
+        result = TrialResult(case=m.id, object=tool, variant=variant,
+                             location=int(location), pose=tuple(pose), seed=seed,
+                             wall_time_s=wall_s, **_measured(ep, played))
         # Everything judged is taken: a clip's rendering may set the state back.
         if verdict is not None:
             verdict(played.outcome, played.reason, played.verdict)
         elif record is not None:
             record.render()
     return result
+
+
+def _measured(ep: Episode, played: Played) -> dict[str, Any]:
+    """Return the :class:`~creative_py.simulator.types.TrialResult` fields that the
+    trial ``played`` in episode ``ep`` measured: its outcome and reason, the facts before
+    the tool action, the final poses, the episode's time and steps, the tool's load
+    (once the tool action started) and the verdict."""
+    force, load = ep.measured_load() if played.acted else (0.0, None)
+    final = played.final
+    return dict(outcome=played.outcome, reason=played.reason,
+                perceived_final=(final.perceived_poses() if final is not None and final.frames
+                                 else None),
+                true_final=played.truth, sim_time_s=ep.sim_time(),
+                render_time_s=ep.render_time_s, steps=ep.steps, max_tool_force_n=force,
+                tool_load=load, facts_before=played.facts_before, verdict=played.verdict)
 
 
 class Played(NamedTuple):

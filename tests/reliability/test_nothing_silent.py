@@ -379,6 +379,34 @@ def test_help_shows_no_value_type_beside_a_plain_flag():
     assert gui.split("--gui", 1)[1].lstrip().startswith("Show the trials")
 
 
+def test_help_at_80_columns_breaks_each_command_s_line_only_where_it_is_full():
+    # The docstrings' own line breaks showed: "the URDF loads, the joints" then
+    # "and links are found" on a line of its own.
+    proc = subprocess.run([sys.executable, "-m", "creative_py.cli", "--help"],
+                          capture_output=True, text=True, timeout=60,
+                          env={**os.environ, "COLUMNS": "80"})
+    assert proc.returncode == 0
+    lines = proc.stdout.splitlines()
+    top = next(i for i, ln in enumerate(lines) if "Commands" in ln)
+    rows = [ln for ln in lines[top + 1:] if ln.startswith("\u2502")]
+    start = rows[0].index("List the robot profiles")
+    width = len(rows[0]) - 2 - start            # the description column, less "│" and a space
+    cells: list[list[str]] = []
+    for ln in rows:
+        text = ln[start:-1].rstrip()
+        if ln[1:start].strip():                 # a command's name: a new cell
+            cells.append([text])
+        else:
+            cells[-1].append(text)
+    assert len(cells) == 8 and all(len(ln) <= width for c in cells for ln in c)
+    for cell in cells:
+        for line, after in zip(cell, cell[1:]):
+            assert len(line) + 1 + len(after.split()[0]) > width, (line, after)
+    assert cells[0] == ["List the robot profiles, each with a one-line check: the URDF",
+                        "loads, the joints and links are found, the home posture is",
+                        "reachable (docs/robots.md)."]
+
+
 def test_a_refused_make_tool_leaves_no_empty_out_folder(tmp_path):
     out = tmp_path / "tools" / "sub"
     proc = creative("make-tool", "hook", "handle_length=long", "--build-volume", "10,10,10",

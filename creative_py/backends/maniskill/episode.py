@@ -42,10 +42,11 @@ from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOut
                                          pose_numbers)
 
 def tool_mass(item) -> float:
-    """Return the tool's mass, kg: the catalogue's, else printed PLA's (created tools)."""
+    """Return the tool's mass, kg: its spec's, else printed PLA's (created tools)."""
     from creative_py.kinds.parts import PLA_DENSITY
 
-    return float(item.mass) if item.mass is not None else PLA_DENSITY * item.spec.volume()
+    mass = item.spec.mass
+    return float(mass) if mass is not None else PLA_DENSITY * item.spec.volume()
 
 
 def _yaw(q_wxyz: Sequence[float]) -> float:

@@ -202,6 +202,19 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
     ef = f.table("episode")
     max_steps = ef.int("max_steps", 100, minimum=10, maximum=1000)
     ef.done()
+    seeds = _read_locations(f)
+    centre, radius = _read_zone(f, env)
+    video = read_video(f)
+    f.done()
+    skills = _read_skills(manifest)
+    _check_variants(manifest)
+    _check_demonstration(manifest, items, len(seeds))
+    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills, env, centre,
+                 video=video)
+
+
+def _read_locations(f: Fields) -> list[int]:
+    """Read the ``[[location]]`` tables of tasks.toml: each location's episode seed."""
     seeds = []
     for lf in f.tables("location"):
         seeds.append(lf.int("seed", minimum=0, maximum=2**31 - 1))
@@ -209,6 +222,12 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
         lf.done()
     if not seeds:
         raise f.error("location", "at least one [[location]] is needed")
+    return seeds
+
+
+def _read_zone(f: Fields, env: TaskEnv) -> tuple[str, float]:
+    """Read ``[zone]`` of tasks.toml: what the zone is centred on (``robot`` or the
+    goal actor named in ``[env]``) and its radius (m)."""
     zf = f.table("zone")
     centre = zf.str("centre", "robot")
     if centre != "robot" and centre not in (env.target, env.goal):
@@ -216,8 +235,13 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
                                  f"({env.goal or 'none'}), got {centre!r}")
     radius = zf.float("radius", minimum=0.01, maximum=2.0)
     zf.done()
-    video = read_video(f)
-    f.done()
+    return centre, radius
+
+
+def _read_skills(manifest: CaseManifest) -> dict[str, tuple[str, dict[str, Any]]]:
+    """Return the manifest's skills, ``name -> (primitive, options)`` with the
+    primitive's defaults filled in; raise :class:`WorldFileError` naming case.toml's
+    field for an unknown primitive or option, or a step that is not a length in (0, 1] m."""
     case_file = manifest.folder / "case.toml"
     skills = {}
     for i, s in enumerate(manifest.skills):
@@ -237,6 +261,13 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
                                      f"be a number of metres above 0 and at most 1, got "
                                      f"{value!r}")
         skills[s.name] = (s.primitive, {**known, **s.options})
+    return skills
+
+
+def _check_variants(manifest: CaseManifest) -> None:
+    """Raise :class:`WorldFileError` unless every value a variant sets is one of
+    :data:`VARIANT_VALUES`, within its range."""
+    case_file = manifest.folder / "case.toml"
     for v in manifest.variants:
         for k, val in v.set.items():
             if k not in VARIANT_VALUES:
@@ -246,15 +277,20 @@ def load_world(manifest: CaseManifest, world_dir: Optional[Path] = None) -> Worl
             if not (isinstance(val, (int, float)) and lo <= val <= hi):
                 raise WorldFileError(f"{case_file}: variant {v.name!r}: set: {k} must be a "
                                      f"number in {lo}..{hi}, got {val!r}")
+
+
+def _check_demonstration(manifest: CaseManifest, items: Mapping[str, CatalogueItem],
+                         n_locations: int) -> None:
+    """Raise :class:`WorldFileError` unless the demonstration's tool is catalogued and its
+    location is one of the ``n_locations``."""
+    case_file = manifest.folder / "case.toml"
     demo = manifest.demonstration
     if demo.tool not in items:
         raise WorldFileError(f"{case_file}: field 'demonstration.tool': must be one of "
                              f"{', '.join(items)}, got {demo.tool!r}")
-    if demo.location > len(seeds):
+    if demo.location > n_locations:
         raise WorldFileError(f"{case_file}: field 'demonstration.location': must be at most "
-                             f"{len(seeds)}, got {demo.location}")
-    return World(manifest, d, items, tuple(seeds), max_steps, radius, skills, env, centre,
-                 video=video)
+                             f"{n_locations}, got {demo.location}")
 
 
 def _read_env(f: Fields) -> TaskEnv:

@@ -366,6 +366,38 @@ def rotation_vector(q_from: Sequence[float], q_to: Sequence[float]) -> np.ndarra
     return np.array([x, y, z]) * (angle / s)
 
 
+def _ik_step(jac: np.ndarray, err: np.ndarray, q: np.ndarray, lo: np.ndarray,
+             hi: np.ndarray, drift: np.ndarray) -> np.ndarray:
+    """Return one damped-least-squares step of the arm's joints (rad) that reduces
+    ``err`` (the tool frame's position then orientation error, m and rad) through the
+    6 x n Jacobian ``jac``, with ``drift`` (rad, towards mid-range) in the null space,
+    at most 0.2 rad per joint.
+
+    Joints pinned at a limit (``lo``, ``hi``) and pushed beyond it are taken out of the
+    Jacobian (an active set), so the others do the work instead of the solver stalling
+    against the clamp.
+    """
+    n = len(q)
+    damped = 1e-4 * np.eye(6)
+    eye = np.eye(n)
+    free = np.ones(n)
+    for _ in range(3):
+        jf = jac * free
+        pinv = jf.T @ np.linalg.inv(jf @ jf.T + damped)
+        dq = pinv @ err
+        # Secondary task in the null space: drift towards mid-range, so that
+        # long Cartesian paths do not run the arm into a joint limit.
+        dq += (eye - pinv @ jf) @ (drift * free)
+        pinned = ((q <= lo + 1e-6) & (dq < 0)) | ((q >= hi - 1e-6) & (dq > 0))
+        if not np.any(pinned & (free > 0)):
+            break
+        free[pinned] = 0.0
+    biggest = float(np.max(np.abs(dq)))
+    if biggest > 0.2:
+        dq *= 0.2 / biggest
+    return dq
+
+
 class _Model:
     """A loaded arm in one client: joint tables and helpers."""
 
@@ -377,6 +409,23 @@ class _Model:
                                 physicsClientId=client)
         if self.body < 0:
             raise RuntimeError(f"{urdf}: pybullet could not load the URDF of {profile.source}")
+        self._read_joints()
+        self._check_names()
+        self.arm = [self.joint[n] for n in profile.arm_joints]
+        self.idle = [self.joint[n] for n in profile.idle if n in self.joint
+                     and self.joint[n] in self.movable]
+        """The idle joints that move in this model (none in the light robot)."""
+        self.idle_q = [profile.idle[n] for n in profile.idle if n in self.joint
+                       and self.joint[n] in self.movable]
+        self.ee = self.link[profile.ee_link]
+        self.tool = tool_frame(profile)
+        self._jacobian_frames(base)
+        self._arm_limits()
+
+    def _read_joints(self) -> None:
+        """Read the URDF's joint table: joint and child-link names to joint indices, the
+        moving joints with their limits (rad or m) and efforts (N m or N)."""
+        client = self.client
         self.joint: dict[str, int] = {}
         self.link: dict[str, int] = {}
         self.movable: list[int] = []
@@ -394,6 +443,11 @@ class _Model:
                 self.lower.append(info[8])
                 self.upper.append(info[9])
                 self.effort[j] = info[10]
+
+    def _check_names(self) -> None:
+        """Raise the profile's error unless its arm joints move in the URDF and its
+        end-effector link is one of the URDF's links."""
+        profile = self.profile
         missing = [n for n in profile.arm_joints if n not in self.joint
                    or self.joint[n] not in self.movable]
         if missing:
@@ -402,20 +456,16 @@ class _Model:
         if profile.ee_link not in self.link:
             raise profile.error("kinematics.ee_link", f"{profile.ee_link!r} is no link of "
                                 f"{profile.urdf_path.name}")
-        self.arm = [self.joint[n] for n in profile.arm_joints]
-        self.idle = [self.joint[n] for n in profile.idle if n in self.joint
-                     and self.joint[n] in self.movable]
-        """The idle joints that move in this model (none in the light robot)."""
-        self.idle_q = [profile.idle[n] for n in profile.idle if n in self.joint
-                       and self.joint[n] in self.movable]
-        self.ee = self.link[profile.ee_link]
-        self.tool = tool_frame(profile)
+
+    def _jacobian_frames(self, base: Pose) -> None:
+        """Set what the Jacobians need: the base's rotation, the end-effector link's
+        centre-of-mass frame and the tool frame's origin in it."""
         self.base_rotation: np.ndarray | None = None
         """The base's rotation matrix where it is turned: pybullet's Jacobians are in the
         base's frame, IK's errors in the world's."""
         if tuple(base[1]) != (0.0, 0.0, 0.0, 1.0):
             self.base_rotation = np.array(pb.getMatrixFromQuaternion(base[1])).reshape(3, 3)
-        st = pb.getLinkState(self.body, self.ee, physicsClientId=client)
+        st = pb.getLinkState(self.body, self.ee, physicsClientId=self.client)
         self.ee_com: Pose | None = None
         """The end-effector link's centre-of-mass frame in its link frame, None where
         they coincide (pybullet's Jacobians and constraints are taken there)."""
@@ -425,6 +475,9 @@ class _Model:
         """The tool frame's origin in the end-effector link's centre-of-mass frame."""
         if self.tool is not None or self.ee_com is not None:
             self.jacobian_point = self.in_ee_com(((0.0, 0.0, 0.0), (0.0, 0.0, 0.0, 1.0)))[0]
+
+    def _arm_limits(self) -> None:
+        """Set the arm joints' limits (rad; infinite for a continuous joint)."""
         self.arm_in_movable = [self.movable.index(j) for j in self.arm]
         lower = np.array([self.lower[i] for i in self.arm_in_movable])
         upper = np.array([self.upper[i] for i in self.arm_in_movable])
@@ -456,6 +509,21 @@ class _Model:
             return tuple(st[4]), tuple(st[5])
         pos, quat = pb.multiplyTransforms(st[4], st[5], self.tool[0], self.tool[1])
         return tuple(pos), tuple(quat)
+
+    def arm_jacobian(self, q: np.ndarray) -> np.ndarray:
+        """Return the tool frame's 6 x n Jacobian (linear then angular rows, world
+        frame) at the arm's joint angles ``q`` (rad), the model being posed at ``q``."""
+        zeros = [0.0] * len(self.movable)
+        full = [0.0] * len(self.movable)
+        for i, v in zip(self.arm_in_movable, q):
+            full[i] = float(v)
+        lin, ang = pb.calculateJacobian(self.body, self.ee, self.jacobian_point, full, zeros,
+                                        zeros, physicsClientId=self.client)
+        cols = self.arm_in_movable
+        lin, ang = np.asarray(lin)[:, cols], np.asarray(ang)[:, cols]
+        if self.base_rotation is not None:
+            lin, ang = self.base_rotation @ lin, self.base_rotation @ ang
+        return np.vstack([lin, ang])
 
     def arm_q(self) -> list[float]:
         return [pb.getJointState(self.body, j, physicsClientId=self.client)[0]
@@ -631,15 +699,10 @@ class Arm:
         q = np.clip(q, lo, hi)
         # A continuous joint has no mid-range: its drift target is where it is.
         mid = np.where(k.continuous, q, (lo + hi) / 2) if k.continuous.any() else (lo + hi) / 2
-        n = len(k.arm)
         ik = self.profile.ik
         tpos = np.asarray(target[0], float)
         tquat = target[1]
-        zeros = [0.0] * len(k.movable)
-        full = [0.0] * len(k.movable)
         perr = oerr = math.inf
-        damped = 1e-4 * np.eye(6)
-        eye = np.eye(n)
         for _ in range(max_iterations):
             k.reset(k.arm, q)
             pos, quat = k.ee_pose()
@@ -648,35 +711,10 @@ class Arm:
             perr, oerr = float(np.linalg.norm(e_pos)), float(np.linalg.norm(e_rot))
             if perr < 1e-4 and oerr < 1e-3:
                 break
-            for i, v in zip(k.arm_in_movable, q):
-                full[i] = float(v)
             if k.continuous.any():
                 mid = np.where(k.continuous, q, mid)
-            lin, ang = pb.calculateJacobian(k.body, k.ee, k.jacobian_point, full, zeros, zeros,
-                                            physicsClientId=k.client)
-            lin, ang = np.asarray(lin)[:, k.arm_in_movable], np.asarray(ang)[:, k.arm_in_movable]
-            if k.base_rotation is not None:
-                lin, ang = k.base_rotation @ lin, k.base_rotation @ ang
-            jac = np.vstack([lin, ang])
-            err = np.concatenate([e_pos, e_rot])
-            # Joints pinned at a limit and pushed beyond it are taken out of the
-            # Jacobian (an active set), so the others do the work instead of the
-            # solver stalling against the clamp.
-            free = np.ones(n)
-            for _ in range(3):
-                jf = jac * free
-                pinv = jf.T @ np.linalg.inv(jf @ jf.T + damped)
-                dq = pinv @ err
-                # Secondary task in the null space: drift towards mid-range, so that
-                # long Cartesian paths do not run the arm into a joint limit.
-                dq += (eye - pinv @ jf) @ (ik.centring * (mid - q) * free)
-                pinned = ((q <= lo + 1e-6) & (dq < 0)) | ((q >= hi - 1e-6) & (dq > 0))
-                if not np.any(pinned & (free > 0)):
-                    break
-                free[pinned] = 0.0
-            biggest = float(np.max(np.abs(dq)))
-            if biggest > 0.2:
-                dq *= 0.2 / biggest
+            dq = _ik_step(k.arm_jacobian(q), np.concatenate([e_pos, e_rot]), q, lo, hi,
+                          ik.centring * (mid - q))
             q = np.clip(q + dq, lo, hi)
         if perr > ik.position_tolerance or oerr > ik.orientation_tolerance:
             return None
@@ -954,47 +992,15 @@ def check_profile(profile: RobotProfile | str) -> str:
     pose from mid-range (so the solver works on this arm), and measures the cost of a
     physics step with the arm at rest (the best of three runs of 480 steps).
     """
-    import time
-
-    from creative_py.world_files import PhysicsSettings, WorldFileError
+    from creative_py.world_files import PhysicsSettings
 
     p = load_profile(profile) if isinstance(profile, str) else profile
     sim = Sim(PhysicsSettings(1 / 240, 50, (0.0, 0.0, -9.81)))
     try:
-        try:
-            full = _Model(sim.client, arm_urdf(p, False, "full"), p)
-            for name in p.idle:
-                if name not in full.joint:
-                    raise p.error("idle", f"{name!r} is no joint of {p.urdf_path.name}")
-            pb.removeBody(full.body, physicsClientId=sim.client)
-            arm = Arm(sim, p, mode="light")
-        except ValueError as exc:
-            if isinstance(exc, WorldFileError):
-                raise
-            raise p.error("urdf", str(exc)) from None
-        except (RuntimeError, pb.error) as exc:
-            raise p.error("urdf", f"pybullet cannot load {p.urdf_path}: {exc}") from None
+        arm = _load_checked(sim, p)
         k = arm.kin
-        home = np.array(p.home)
-        bad = [(n, v) for n, v, lo, hi in zip(p.arm_joints, home, k.arm_lower, k.arm_upper)
-               if not lo - 1e-9 <= v <= hi + 1e-9]
-        if bad:
-            raise p.error("kinematics.home", f"{bad[0][0]} = {bad[0][1]} lies outside the "
-                          "joint's limits")
-        pose = arm.gripper_pose()
-        mid = np.where(k.continuous, 0.0, (k.arm_lower + k.arm_upper) / 2)
-        q = arm.solve_ik(pose, seed=list(np.where(k.continuous, 0.0, mid)))
-        if q is None:
-            q = arm.solve_ik_global(pose)
-        if q is None:
-            raise p.error("kinematics.home", "IK does not reach the home posture's tool pose "
-                          "(check ee_link, the tool frame and the joints)")
-        best = math.inf  # the best of three 480-step runs (a shared machine is noisy)
-        for _ in range(3):
-            t0 = time.perf_counter()
-            sim.step(480)
-            best = min(best, time.perf_counter() - t0)
-        step_us = best / 480 * 1e6
+        pose = _check_home(arm, p)
+        step_us = _step_cost_us(sim)
         hand = ("no hand" if p.hand is None else
                 f"{len(p.hand.joints)} fingers" + (" gear-coupled" if p.hand.gear_ratio else ""))
         x, y, z = pose[0]
@@ -1004,3 +1010,58 @@ def check_profile(profile: RobotProfile | str) -> str:
                 f"(tool at {x:.3f}, {y:.3f}, {z:.3f} m); {step_us:.0f} us per step")
     finally:
         sim.close()
+
+
+def _load_checked(sim: Sim, p: RobotProfile) -> Arm:
+    """Load profile ``p``'s full model (checking its idle joints, then removing it) and
+    its light arm in ``sim``; raise the profile's error naming the field at fault."""
+    from creative_py.world_files import WorldFileError
+
+    try:
+        full = _Model(sim.client, arm_urdf(p, False, "full"), p)
+        for name in p.idle:
+            if name not in full.joint:
+                raise p.error("idle", f"{name!r} is no joint of {p.urdf_path.name}")
+        pb.removeBody(full.body, physicsClientId=sim.client)
+        return Arm(sim, p, mode="light")
+    except ValueError as exc:
+        if isinstance(exc, WorldFileError):
+            raise
+        raise p.error("urdf", str(exc)) from None
+    except (RuntimeError, pb.error) as exc:
+        raise p.error("urdf", f"pybullet cannot load {p.urdf_path}: {exc}") from None
+
+
+def _check_home(arm: Arm, p: RobotProfile) -> Pose:
+    """Return the tool pose of profile ``p``'s home posture; raise the profile's error
+    unless the posture lies within the joint limits and IK reaches its tool pose from
+    mid-range."""
+    k = arm.kin
+    home = np.array(p.home)
+    bad = [(n, v) for n, v, lo, hi in zip(p.arm_joints, home, k.arm_lower, k.arm_upper)
+           if not lo - 1e-9 <= v <= hi + 1e-9]
+    if bad:
+        raise p.error("kinematics.home", f"{bad[0][0]} = {bad[0][1]} lies outside the "
+                      "joint's limits")
+    pose = arm.gripper_pose()
+    mid = np.where(k.continuous, 0.0, (k.arm_lower + k.arm_upper) / 2)
+    q = arm.solve_ik(pose, seed=list(np.where(k.continuous, 0.0, mid)))
+    if q is None:
+        q = arm.solve_ik_global(pose)
+    if q is None:
+        raise p.error("kinematics.home", "IK does not reach the home posture's tool pose "
+                      "(check ee_link, the tool frame and the joints)")
+    return pose
+
+
+def _step_cost_us(sim: Sim) -> float:
+    """Return the cost of one physics step of ``sim`` (microseconds): the best of three
+    480-step runs (a shared machine is noisy)."""
+    import time
+
+    best = math.inf
+    for _ in range(3):
+        t0 = time.perf_counter()
+        sim.step(480)
+        best = min(best, time.perf_counter() - t0)
+    return best / 480 * 1e6

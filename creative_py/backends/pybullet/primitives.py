@@ -199,17 +199,50 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     top = ep.perceived_top(ep.target_name)
     if top is None:
         return SkillOutcome("unreachable", f"the camera does not see {ep.target_name}")
+    flat = _flat_roll(ep, opts, y_goal, roll)
+    steps = _insertion_steps(ep, opts, top, (x_goal, y_goal), flat, roll)
+    pull_dx = min(0.0, opts["pull_to_x"] - x_goal)
+    guard = slip_guard(ep, opts)
+    kind = ep.kind
+    for i, (origin, r, speed) in enumerate(steps):
+        res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed, guard)
+        if not res.ok:
+            return res
+        if i == 0 and opts["posture_search"]:
+            res = _choose_posture(ep, steps[1:], pull_dx, opts["free_speed"])
+            if not res.ok:
+                return res
+    ep.state["attitude"] = roll
+    log.info("insert_at_pose %s at %s: ok", ep.spec.name, target)
+    return SkillOutcome("ok")
+
+
+def _flat_roll(ep: Any, opts: Mapping[str, Any], y_goal: float, roll: float) -> float:
+    """Return the roll (rad) at which :func:`insert_at_pose` carries and inserts the
+    tool: the requested ``roll`` if it is flat, the tool has no head or ``keep_roll``
+    is set; else the manifest's ``flat_roll``; else the flat roll towards the side of
+    the passage with more room beside ``y_goal`` (m)."""
+    if abs(roll) >= math.pi / 4 or not ep.spec.has_head or opts["keep_roll"]:
+        return roll
+    if opts["flat_roll"]:
+        return opts["flat_roll"]
     tb = ep.context_body
-    spec, kind = ep.spec, ep.kind
+    room_left = tb.axis_y + tb.inner_width / 2 - y_goal
+    room_right = y_goal - (tb.axis_y - tb.inner_width / 2)
+    return math.pi / 2 if room_left > room_right else -math.pi / 2
+
+
+def _insertion_steps(ep: Any, opts: Mapping[str, Any], top: float,
+                     goal: tuple[float, float], flat: float, roll: float) -> list[tuple]:
+    """Return the tool-origin moves ``(origin, roll, speed)`` of :func:`insert_at_pose`
+    (m, rad, m/s): over the passage at travel height, turned ``flat``, lowered to the
+    insertion height above the target's perceived ``top``, in along +x until the prong
+    is at ``goal`` = (X, Y), down so the prong clears the passage's floor, turned to
+    ``roll``."""
+    tb = ep.context_body
+    spec = ep.spec
+    x_goal, y_goal = goal
     travel = opts["travel_z"]
-    if abs(roll) >= math.pi / 4 or not spec.has_head or opts["keep_roll"]:
-        flat = roll
-    elif opts["flat_roll"]:
-        flat = opts["flat_roll"]
-    else:
-        room_left = tb.axis_y + tb.inner_width / 2 - y_goal
-        room_right = y_goal - (tb.axis_y - tb.inner_width / 2)
-        flat = math.pi / 2 if room_left > room_right else -math.pi / 2
     half_t = spec.handle_width / 2
     z_insert = top + half_t + opts["clearance"]
     tip_local = prong_centre(spec)
@@ -220,7 +253,7 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     # Lowered into the passage in front of its mouth, or, with from_above (a passage
     # open at the top), straight down at the goal.
     pre_origin_x = goal_origin_x if opts["from_above"] else tb.mouth_x - 0.03 - far_x
-    carried = kind.attitude(ep)
+    carried = ep.kind.attitude(ep)
     steps = [((pre_origin_x, y_goal, travel), carried, opts["free_speed"]),
              ((pre_origin_x, y_goal, travel), flat, opts["free_speed"]),
              ((pre_origin_x, y_goal, z_insert), flat, opts["free_speed"]),
@@ -230,19 +263,7 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
                  floor + tb.inner_height - half_t - 0.002)
     steps.append(((goal_origin_x, y_goal, z_down), flat, opts["speed"]))
     steps.append(((goal_origin_x, y_goal, z_down), roll, opts["speed"]))
-    pull_dx = min(0.0, opts["pull_to_x"] - x_goal)
-    guard = slip_guard(ep, opts)
-    for i, (origin, r, speed) in enumerate(steps):
-        res = kind.move(ep, kind.gripper_for_tool(ep, origin, r), r, speed, guard)
-        if not res.ok:
-            return res
-        if i == 0 and opts["posture_search"]:
-            res = _choose_posture(ep, steps[1:], pull_dx, opts["free_speed"])
-            if not res.ok:
-                return res
-    ep.state["attitude"] = roll
-    log.info("insert_at_pose %s at %s: ok", spec.name, target)
-    return SkillOutcome("ok")
+    return steps
 
 
 def _gripper_path(ep: Any, steps, pull_dx: float) -> list[Pose]:

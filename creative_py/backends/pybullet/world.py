@@ -48,12 +48,15 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import Any, Mapping, Optional, Sequence
+from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
 from creative_py.world_files import (Fields, OptionError, PhysicsSettings, WorldFileError,
                                      load_toml, read_physics, world_file)
+
+if TYPE_CHECKING:
+    from creative_py.backends.pybullet.scene import Namespace
 
 _ROLES = ("tool", "target", "context")
 
@@ -548,15 +551,22 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     (:func:`creative_py.backends.pybullet.oracles.check_options`: names that resolve,
     vector lengths, axes, box order, non-zero scales).
     """
-    from creative_py.backends.pybullet import oracles, primitives
     from creative_py.backends.pybullet.scene import make_bodies
 
     ns = world.namespace(variant, location, tool)
     episode = f" (variant {variant}, location {location})"
     bodies = make_bodies(world.scene.bodies, ns)
+    _check_start_poses(world, ns, episode)
+    _check_skill_options(world, ns, episode)
+    _check_oracle_options(world, ns, bodies, tool, episode)
+    _check_perceived_and_roles(world, ns, bodies, tool)
+
+
+def _check_start_poses(world: World, ns: Namespace, episode: str) -> None:
+    """Raise :class:`WorldFileError` unless every number of ``[tool_start]`` and of the
+    robot's start and via poses lies within +-:data:`EXTENT_M` (m or rad)."""
     scene_file = world.directory / "scene.toml"
-    start = resolve_start(world, ns)
-    for k, v in start.items():
+    for k, v in resolve_start(world, ns).items():
         if not isinstance(v, (dict, str)):
             check_bound(v, (-EXTENT_M, EXTENT_M, "(m, rad)"),
                         f"{scene_file}: field 'tool_start.{k}'", episode)
@@ -570,6 +580,13 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
                                      f"{pose[k]!r}")
             check_bound(value, (-EXTENT_M, EXTENT_M, "m" if k == "position" else "rad"),
                         where, episode)
+
+
+def _check_skill_options(world: World, ns: Namespace, episode: str) -> None:
+    """Raise :class:`WorldFileError` unless every skill's options are well typed, within
+    their bounds and valid for their primitive."""
+    from creative_py.backends.pybullet import primitives
+
     case_file = world.manifest.folder / "case.toml"
     flags = primitives.option_flags()
     for i, s in enumerate(world.skills.values()):
@@ -592,6 +609,15 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
             raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{exc.option}': "
                                  f"{exc.cause}{_context(s.options.get(exc.option), episode)}"
                                  ) from None
+
+
+def _check_oracle_options(world: World, ns: Namespace, bodies: dict[str, Any], tool: str,
+                          episode: str) -> None:
+    """Raise :class:`WorldFileError` unless the oracle's options lie within their bounds
+    and are valid for its kind against the objects and roles of an episode with
+    ``bodies`` and ``tool``."""
+    from creative_py.backends.pybullet import oracles
+
     words = oracle_words(world)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
     tasks_file = world.directory / "tasks.toml"
@@ -607,6 +633,12 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
                              + ("" if exc.option in words else
                                 _context(world.oracle.options.get(exc.option), episode))
                              ) from None
+
+
+def _check_perceived_and_roles(world: World, ns: Namespace, bodies: dict[str, Any],
+                               tool: str) -> None:
+    """Raise :class:`WorldFileError` unless every perceived object's support height
+    resolves and names an object, and every role of case.toml is a body of the scene."""
     for p in world.scene.perceived:
         if p.support_z is not None:
             ns.evaluate(p.support_z, f"perception.object {p.name} support_z")

@@ -81,3 +81,22 @@ def test_the_run_writes_the_manifest_s_facts():
     assert facts["trial_budget"] == 12 and facts["paper_trials"] == 12
     assert set(facts["pose_units"].values()) <= {"m", "rad"}
     assert case_facts(hook, RunOptions(max_trials=3))["trial_budget"] == 3
+
+
+def test_a_robot_given_by_its_toml_path_is_named_by_the_profile_in_the_headline(tmp_path):
+    # --robot PATH.toml showed the whole path in the headline; --robot panda its name.
+    from creative_py.case import get_case
+    from creative_py.robots import ROBOTS_ROOT
+
+    profile = tmp_path / "lab_arm.toml"            # the file's stem is not the name
+    profile.write_text((ROBOTS_ROOT / "panda.toml").read_text())
+    hook = get_case("hook")
+    options = RunOptions(robot=str(profile))
+    facts = case_facts(hook, options)
+    assert facts["robot_name"] == "panda"
+    assert "robot_name" not in case_facts(hook, RunOptions(robot="panda"))
+    run = _folder(tmp_path, {"case": "hook", "seed": 0, "options": options.recorded(),
+                             **facts})
+    c = read_run(run)
+    assert c.summary.options["robot"] == str(profile)   # a resume loads the path again
+    assert headline(c).lines[0] == "Case hook, strategy informative, seed 0, robot panda."

@@ -93,3 +93,17 @@ def test_world_and_episode_have_the_protocol_s_members(world):
 
     assert signature_mismatches(World, world) == []
     assert signature_mismatches(Episode, ManiSkillEpisode) == []
+
+
+def test_the_tool_s_mass_comes_from_its_spec_alone(world):
+    """A catalogued tool's mass is its spec's (objects.toml's ``mass``, kg), and a spec
+    put in its place (a drawn world's) brings its own: the catalogue keeps no copy."""
+    from dataclasses import replace
+
+    from creative_py.backends.maniskill.episode import tool_mass
+
+    name = world.manifest.demonstration.tool
+    item = world.item(name)
+    assert tool_mass(item) == item.spec.mass == 0.5
+    drawn = world.with_spec(name, replace(item.spec, mass=0.3))
+    assert tool_mass(drawn.item(name)) == 0.3
