@@ -22,7 +22,8 @@ What each way of ending a trial means is decided by the physics alone, in one pl
 for every backend (:func:`creative_py.simulator.trial.trial_outcome`, from how the
 skills ended and what the oracle measured). Outcomes ``blocked`` (the arm could
 not carry out a motion before the tool action, e.g. a short handle whose gripper hits
-the tube mouth before the prong is behind the cube) count as failures of the *planned*
+the tube mouth before the prong is behind the cube, or a robot whose own links struck
+a scene body and did not reach the goal) count as failures of the *planned*
 example, so they are evidence about the tested literal only; outcomes
 ``unreachable`` and ``invalid`` are recorded with their reason and leave the version
 space unchanged.
