@@ -355,13 +355,19 @@ class TrialRunner:
 
     def _label(self, vs: Term, exp: Term, ex: Any, task: TaskState) -> Term:
         """Return the version space after the trial's example (success: ``pos``;
-        failure: ``neg`` of what was observed; blocked: ``neg`` of the planned example);
-        an unreachable or invalid trial leaves it as it was."""
+        failure: ``neg`` of what was observed; blocked: ``neg`` of the planned example;
+        a success in which the robot struck a scene body: ``pos`` of the planned
+        example); an unreachable or invalid trial leaves it as it was."""
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is None:
             return vs
         facts = [fact_term(f) for f in ex.facts_before]
-        planned = ex.outcome == "blocked"
+        # A blocked motion stopped before the tool acted, and a robot that struck a scene
+        # body (its verdict's ``struck``: the judgement of simulator/trial.py
+        # trial_outcome) moved the held tool itself: in either, what the robot observed
+        # before the tool action is where the motion left or the arm pushed the tool,
+        # not the pose the experiment tested, so the trial labels the planned example.
+        planned = ex.outcome == "blocked" or bool((ex.verdict or {}).get("struck"))
         if planned and not facts:
             facts = self.task_facts(task)
         return self.engine.label_trial(self.case, vs, exp, facts, lab,

@@ -270,6 +270,30 @@ def test_a_blocked_trial_without_facts_is_labelled_with_the_task_s(hook):
                                                             hook.records[0].hg)
 
 
+STRUCK = {"asked": True, "struck": {"link": "hand", "body": "tube1", "force_n": 524.0}}
+"""A verdict whose robot struck a scene body (simulator/trial.py: verdict_data)."""
+
+
+def test_a_success_in_which_the_robot_struck_is_labelled_with_the_planned_example(hook):
+    # Trial 1's facts were observed where the arm stopped, away from the planned pose:
+    # as a plain success they are the positive example, and h_s loses the spatial
+    # literals they lack; the robot struck the scene, so the trial labels the planned
+    # example (the tested pose), as a blocked one does, and h_s keeps them.
+    runner = _runner(hook)
+    task, exp = _first(hook, runner)
+    observed = [trials.fact_term(f) for f in hook.records[0].facts]
+    expected = {mode: runner.bounds(hook.engine.label_trial(
+        "hook", hook.vs0, exp, observed, "pos", mode)) for mode in ("observed", "planned")}
+    assert "centred_on(_G3,_G4)" in expected["planned"][0]
+    assert "centred_on(_G3,_G4)" not in expected["observed"][0]
+    for verdict, mode in ((STRUCK, "planned"), (None, "observed"),
+                          ({"asked": True}, "observed")):
+        hs, hg = expected[mode]  # the replay refuses a record whose bounds differ
+        _, (rec, vs) = _replay_first(hook, _edited(hook, outcome="success", verdict=verdict,
+                                                   hs=hs, hg=hg))
+        assert (rec.outcome, _runner(hook).bounds(vs)) == ("success", expected[mode])
+
+
 @pytest.mark.parametrize("outcome", ["unreachable", "invalid"])
 def test_an_unreachable_or_invalid_trial_leaves_the_version_space(hook, outcome):
     hs, hg = _runner(hook).bounds(hook.vs0)
