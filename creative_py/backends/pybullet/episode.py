@@ -183,8 +183,9 @@ class Episode:
             self.robot.reset_posture(self._start_posture())
         self.run(w.scene.settle_time)
         if self.robot is not None:
-            # Where the robot's own links strike a scene body (a skill's ``struck``).
-            self.robot.watch_strikes({b.id: n for n, b in self.bodies.items()})
+            # Where the robot's own links strike a body the scene says they must keep
+            # clear of ([robot] keep_clear; a skill's ``struck``).
+            self.robot.watch_strikes({self.bodies[n].id: n for n in w.scene.robot.keep_clear})
         self.strike_arm = self.robot
         # Where the tracked objects start (an oracle measures how far they moved).
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}

@@ -3,6 +3,8 @@ one run_trial the learner, the CLI and the benchmarks share, in the pybullet phy
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 from _hook_runs import hook_world
 from _poses import poses
@@ -54,8 +56,7 @@ def test_a_finished_trial_keeps_what_the_robot_saw_before_the_tool_action():
 
 
 @pytest.mark.sim
-def test_a_hand_that_strikes_the_tube_makes_the_trial_blocked_not_the_tool_s_failure(
-        monkeypatch):
+def test_a_hand_that_strikes_the_tube_makes_the_trial_blocked_not_the_tool_s_failure():
     # On the Panda, the 0.28 m handle of hook_b3 brings the hand (20 cm across) to the
     # tube's 10 x 7 cm mouth: 2 cm to the left of the cube, the hand strikes the tube
     # without lagging its target past the tracking guard, the held hook is pushed
@@ -63,10 +64,9 @@ def test_a_hand_that_strikes_the_tube_makes_the_trial_blocked_not_the_tool_s_fai
     # not the tool: blocked (it was a failure when only the guard spoke).
     from creative_py.backends.pybullet import load_world
     from creative_py.case import get_case
-    from creative_py.robots import ROBOT_ENV
 
-    monkeypatch.setenv(ROBOT_ENV, "panda")
-    world = load_world(get_case("hook"))   # not hook_world(): that is the Baxter's, cached
+    # What --robot panda makes of the case (hook_world() is the Baxter's, cached).
+    world = load_world(replace(get_case("hook"), robot="panda"))
     assert world.scene.robot.profile.name == "panda"
     result = run_trial(world, "hook_b3", "standard", 1, pose=(0.03, 0.02, 0.0),
                        pose_target=poses(world))
