@@ -22,7 +22,8 @@ What each way of ending a trial means is decided by the physics alone, in one pl
 for every backend (:func:`creative_py.simulator.trial.trial_outcome`, from how the
 skills ended and what the oracle measured). Outcomes ``blocked`` (the arm could
 not carry out a motion before the tool action, e.g. a short handle whose gripper hits
-the tube mouth before the prong is behind the cube) count as failures of the *planned*
+the tube mouth before the prong is behind the cube, or a robot whose own links struck
+a scene body and did not reach the goal) count as failures of the *planned*
 example, so they are evidence about the tested literal only; outcomes
 ``unreachable`` and ``invalid`` are recorded with their reason and leave the version
 space unchanged.
@@ -354,13 +355,19 @@ class TrialRunner:
 
     def _label(self, vs: Term, exp: Term, ex: Any, task: TaskState) -> Term:
         """Return the version space after the trial's example (success: ``pos``;
-        failure: ``neg`` of what was observed; blocked: ``neg`` of the planned example);
-        an unreachable or invalid trial leaves it as it was."""
+        failure: ``neg`` of what was observed; blocked: ``neg`` of the planned example;
+        a success in which the robot struck a scene body: ``pos`` of the planned
+        example); an unreachable or invalid trial leaves it as it was."""
         lab = {"success": "pos", "failure": "neg", "blocked": "neg"}.get(ex.outcome)
         if lab is None:
             return vs
         facts = [fact_term(f) for f in ex.facts_before]
-        planned = ex.outcome == "blocked"
+        # A blocked motion stopped before the tool acted, and a robot that struck a scene
+        # body (its verdict's ``struck``: the judgement of simulator/trial.py
+        # trial_outcome) moved the held tool itself: in either, what the robot observed
+        # before the tool action is where the motion left or the arm pushed the tool,
+        # not the pose the experiment tested, so the trial labels the planned example.
+        planned = ex.outcome == "blocked" or bool((ex.verdict or {}).get("struck"))
         if planned and not facts:
             facts = self.task_facts(task)
         return self.engine.label_trial(self.case, vs, exp, facts, lab,

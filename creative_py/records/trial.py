@@ -30,8 +30,9 @@ from creative_py.records.checking import hints, typed
 
 TRIAL_OUTCOMES: tuple[str, ...] = ("success", "failure", "blocked", "unreachable", "invalid")
 """Outcomes of a trial: ``success`` / ``failure`` (the goal was or was not reached),
-``blocked`` (a motion before the tool action was stopped by a collision, or the
-trial's step or time budget ran out before the goal was reached), ``unreachable`` (no
+``blocked`` (a motion before the tool action was stopped by a collision, the robot
+itself struck a scene body and the goal was not reached, or the trial's step or time
+budget ran out before the goal was reached), ``unreachable`` (no
 arm posture reaches a waypoint), ``invalid`` (the physics blew up)."""
 
 PHASES: tuple[str, ...] = ("use", "create", "eval")
@@ -239,6 +240,9 @@ def verdict_words(verdict: Any) -> str:
     stop = verdict.get("stop")
     if isinstance(stop, dict) and stop.get("text"):
         parts.append(f"stopped: {measure_words(stop)}")
+    struck = verdict.get("struck")
+    if isinstance(struck, dict) and struck.get("text"):
+        parts.append(f"struck: {measure_words(struck)}")
     if verdict.get("text"):
         parts.append(measure_words(verdict))
     return " | ".join(parts)
@@ -324,6 +328,10 @@ def verdict_lines(verdict: Any) -> list[str]:
         touching = (stop.get("measures") or {}).get("touching")
         if touching:
             lines.append(f"touching {', '.join(touching)}")
+    struck = verdict.get("struck")
+    if isinstance(struck, dict):
+        lines.append(f"struck: {', '.join((struck.get('measures') or {}).get('touching') or [])}"
+                     f" ({_with_unit(struck.get('brief'), struck.get('unit'))})")
     if verdict.get("brief") or verdict.get("text"):
         lines.append(_with_unit(verdict.get("brief"), verdict.get("unit"))
                      or str(verdict["text"]))

@@ -32,6 +32,7 @@ from __future__ import annotations
 import logging
 import math
 import time
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, NamedTuple, Optional, Sequence
 
@@ -146,8 +147,10 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
     The body of :func:`run_trial`, for a caller that opens the episode itself (the
     simulator benchmark, the demonstration). Before the tool action the robot observes
     (the state the action model's precondition speaks of); a blocked motion is observed
-    where it stopped, a trial whose skills all ran at its end. ``observe=False`` takes
-    no observation (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
+    where it stopped, a trial whose skills all ran at its end. A skill in which the
+    robot struck a scene body (its ``struck``) does not end the trial: the skills go on
+    and the judgement carries the first strike. ``observe=False`` takes no observation
+    (nothing rendered, no noise drawn). ``by_hand`` lets the trainer put
     the tool at the pose (the pose skill's ``by_hand`` option; the skills before it are
     skipped). ``timings`` receives each skill's wall time (s) as ``<skill>_s``.
     ``skills`` are the skills to run (default: the manifest's; the demonstration's
@@ -158,6 +161,7 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
     facts: tuple[Fact, ...] = ()
     final: Optional[Observation] = None
     acted, status = False, SkillOutcome("ok")
+    struck: Optional[SkillOutcome] = None
     for skill in manifest.skills if skills is None else skills:
         if by_hand and not (skill.pose or skill.tool_action):
             continue  # the trainer places the tool: no grasp, no carrying
@@ -174,10 +178,15 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
             raise
         if timings is not None:
             timings[f"{skill.name}_s"] = time.perf_counter() - t0
+        if struck is None and status.struck is not None:
+            struck = status  # the robot's first strike on the scene (trial_outcome)
         if after_skill is not None:
             after_skill(skill, status)
         if not status.ok:
             break
+    if struck is not None and struck is not status:
+        # The first strike says it; a guard that stopped a later motion keeps its status.
+        status = struck if status.ok else replace(status, struck=struck.struck)
     outcome, reason, oracle, asked = judge(ep, status, acted)
     if observe and outcome == "blocked":
         # What the robot sees where the motion stopped: the catalogue and the task's
@@ -191,7 +200,7 @@ def play_trial(ep: Episode, manifest: CaseManifest, pose: Sequence[float],
     if bad and outcome != "invalid":
         outcome, reason = "invalid", f"non-finite pose of {', '.join(bad)}"
     return Played(outcome, reason, tuple(facts), final, truth, acted,
-                  verdict_data(oracle, asked, status.stop))
+                  verdict_data(oracle, asked, status.stop, status.struck))
 
 
 def judge(ep: Episode, status: SkillOutcome, acted: bool
@@ -222,18 +231,22 @@ def judge(ep: Episode, status: SkillOutcome, acted: bool
     return outcome, reason, oracle, asked
 
 
-def verdict_data(oracle: Optional[Verdict], asked: bool,
-                 stop: Optional[Verdict]) -> Optional[dict[str, Any]]:
+def verdict_data(oracle: Optional[Verdict], asked: bool, stop: Optional[Verdict],
+                 struck: Optional[Verdict] = None) -> Optional[dict[str, Any]]:
     """Return a trial's measured verdict as JSON-ready data: the oracle's
     (:meth:`Verdict.to_dict`) with ``asked`` (whether the outcome rests on it: every
-    skill ran, or the tool acted until stopped) and, for a motion a guard stopped,
-    ``stop`` (the guard's verdict: what it measured and what was touching)."""
-    if oracle is None and stop is None:
+    skill ran, or the tool acted until stopped), for a motion a guard stopped,
+    ``stop`` (the guard's verdict: what it measured and what was touching), and for
+    a robot that struck a scene body, ``struck`` (which link struck which body,
+    where, how hard: :attr:`SkillOutcome.struck`)."""
+    if oracle is None and stop is None and struck is None:
         return None
     data = oracle.to_dict() if oracle is not None else {}
     data["asked"] = bool(asked)
     if stop is not None:
         data["stop"] = stop.to_dict()
+    if struck is not None:
+        data["struck"] = struck.to_dict()
     return data
 
 
@@ -282,7 +295,19 @@ def trial_outcome(status: SkillOutcome, acted: bool, reached: bool) -> tuple[str
         nothing of what the tool would have done at its end (a ``failure`` would say
         the tool did all of it and missed). The reason is the skill's.
         Otherwise the skill's status (``unreachable``, ``invalid``) with its reason.
+        Before all of these, a trial in which the robot itself (a link, not the tool
+        it holds) struck a scene body (``status.struck``, measured by the backend),
+        before or during the tool action, unless the physics blew up (``invalid``):
+        ``success`` if the tool acted and the goal holds (the physics judges the
+        state, as for a trial out of time), ``blocked`` otherwise: the arm, not the
+        tool, met the scene, so a goal not reached says nothing of what the tool
+        does where it was planned to be (a hand that strikes a tube's mouth pushes
+        the held tool aside; a ``failure`` would be read as the tool's). The reason
+        is the skill's (which link struck which body, where; or its guard's, when
+        one stopped the motion too).
     """
+    if status.struck is not None and status.status != "invalid":
+        return ("success" if acted and reached else "blocked"), status.reason
     if status.ok:
         return ("success", GOAL_REACHED) if reached else ("failure", GOAL_NOT_REACHED)
     if status.status == "out_of_time":

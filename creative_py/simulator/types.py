@@ -226,11 +226,20 @@ class SkillOutcome:
         gripper's lag, its twist, the grasp's slip) and which bodies the robot and
         the held tool touched then (``measures["touching"]``); for a motion out of
         time: what it needed against the budget (control steps, seconds).
+    struck : Verdict or None
+        Set when the robot itself (one of its links, not the tool it holds) struck a
+        scene body during the skill's motion, as the backend measured it (the
+        pybullet backend: from the physics' contacts): the largest normal force, and
+        in ``measures["struck"]`` each link and body with its force and where. What
+        that means for the trial is decided above the boundary
+        (:func:`creative_py.simulator.trial.trial_outcome`: ``blocked``). A backend
+        that cannot tell (an arm over ROS 2, ManiSkill) leaves it None.
     """
 
     status: SkillStatus
     reason: str = ""
     stop: "Verdict | None" = None
+    struck: "Verdict | None" = None
 
     @property
     def ok(self) -> bool:

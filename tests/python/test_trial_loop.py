@@ -23,7 +23,7 @@ from test_simulator_registry import signature_mismatches
 
 from creative_py.backends import BACKENDS, BackendEntry
 from creative_py.case import read_manifest
-from creative_py.records.trial import verdict_lines
+from creative_py.records.trial import verdict_lines, verdict_words
 from creative_py.simulator import TRIAL_OUTCOMES, Episode, Observation, SkillOutcome, Verdict
 from creative_py.simulator.trial import play_trial, run_trial, trial_outcome
 from creative_py.simulator.types import NonFiniteState
@@ -409,3 +409,65 @@ def test_the_demonstration_is_played_by_the_trial_s_loop(backend):
     with pytest.raises(DemonstrationFailed, match="did not reach the goal in the physics: "
                                                   "non-finite pose of box1"):
         run_demonstration(backend.world, pose_target=len)
+
+
+STRUCK = Verdict("robot strike force", 463.1, 0.0, "N", "<=", False,
+                 "robot links strike no scene body",
+                 detail="the robot's hand_link struck box2 at (0.850, -0.250, -0.024) m",
+                 measures={"struck": [{"link": "hand_link", "body": "box2", "force_n": 463.1,
+                                       "point": [0.85, -0.25, -0.024]}],
+                           "touching": ["hand_link against box2"]})
+
+
+@pytest.mark.parametrize("status, acted, reached, want", [
+    # The robot itself struck a scene body: blocked, before or during the tool action,
+    # unless the tool acted and the goal holds (the physics judges the state).
+    (SkillOutcome("ok", "place: struck", struck=STRUCK), False, False,
+     ("blocked", "place: struck")),
+    (SkillOutcome("ok", "place: struck", struck=STRUCK), True, False,
+     ("blocked", "place: struck")),
+    (SkillOutcome("ok", "place: struck", struck=STRUCK), True, True,
+     ("success", "place: struck")),
+    (SkillOutcome("ok", "place: struck", struck=STRUCK), False, True,
+     ("blocked", "place: struck")),
+    # A guard that stopped the tool while acting: not a failure once the robot struck.
+    (SkillOutcome("blocked", "push: lagged", struck=STRUCK), True, False,
+     ("blocked", "push: lagged")),
+    (SkillOutcome("out_of_time", "push: ran out", struck=STRUCK), True, False,
+     ("blocked", "push: ran out")),
+    (SkillOutcome("unreachable", "push: no posture", struck=STRUCK), True, False,
+     ("blocked", "push: no posture")),
+    # A physics blow-up stays what it is.
+    (SkillOutcome("invalid", "push: NaN", struck=STRUCK), True, False,
+     ("invalid", "push: NaN")),
+])
+def test_a_robot_that_struck_the_scene_is_blocked_unless_the_goal_holds(status, acted,
+                                                                       reached, want):
+    got = trial_outcome(status, acted, reached)
+    assert got == want and got[0] in TRIAL_OUTCOMES
+
+
+def test_a_strike_before_the_tool_action_goes_on_and_the_first_strike_says_why(backend):
+    # The hand strikes while placing; the skills go on (the goal may still be
+    # reached); the goal not reached, the trial is blocked with the place's strike,
+    # not the push's, and the record keeps which link struck which body.
+    later = Verdict("robot strike force", 5.0, 0.0, "N", "<=", False)
+    backend.episode = ScriptedEpisode(
+        ends={"place": SkillOutcome("ok", "place: the robot's hand_link struck box2",
+                                    struck=STRUCK),
+              "push": SkillOutcome("ok", "push: struck again", struck=later)}, holds=False)
+    result = run_trial(backend.world, "stick1", "easy", 1)
+    assert [c[1] for c in backend.episode.log if c[0] == "run_skill"] == [
+        "pick_up", "place", "push"]
+    assert (result.outcome, result.reason) == (
+        "blocked", "place: the robot's hand_link struck box2")
+    assert result.verdict["struck"]["measures"]["touching"] == ["hand_link against box2"]
+    assert "stop" not in result.verdict
+    assert "struck: hand_link against box2 (robot strike force 463.1 N, needs <= 0.0 N)" \
+        in verdict_lines(result.verdict)
+    assert "struck: robot strike force 463.1 N" in verdict_words(result.verdict)
+    # The same trial whose goal holds is a success, still saying what struck.
+    backend.episode = ScriptedEpisode(
+        ends={"place": SkillOutcome("ok", "place: struck", struck=STRUCK)})
+    result = run_trial(backend.world, "stick1", "easy", 1)
+    assert (result.outcome, result.reason) == ("success", "place: struck")

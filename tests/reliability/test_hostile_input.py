@@ -450,6 +450,13 @@ WORLD_OPTIONS = [
     ("high_object", "case.toml", "flat_roll = 1.5707963267948966", "flat_roll = 4.71238898",
      "field 'skill[1].options.flat_roll': must be -pi/2, 0 (chosen by the room) or pi/2 "
      "(the prong carried flat), got 4.71239 rad"),
+    # the bodies whose strike by the robot decides a trial: a typo would watch nothing
+    ("hook_tube", "scene.toml", 'keep_clear = ["tube1", "riser1"]',
+     'keep_clear = ["tube1", "riser"]',
+     "field 'robot.keep_clear': 'riser' is no [[body]] of the scene (table1, riser1, "
+     "tube1, cube1) (did you mean 'riser1'?)"),
+    ("paddle_tube", "scene.toml", 'keep_clear = ["tube1", "riser1"]', 'keep_clear = "tube1"',
+     "field 'robot.keep_clear': must be a list of [[body]] names, got 'tube1'"),
 ]
 
 

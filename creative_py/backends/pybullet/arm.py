@@ -29,7 +29,11 @@ Moves are Cartesian straight lines sampled every ``steps_per_waypoint`` physics 
 each waypoint is an IK solution seeded from the previous one, sent as position targets
 at the URDF effort limits. A move ends ``blocked`` when the gripper lags its target by
 more than ``max_tracking_error`` (it hit something), ``unreachable`` when IK cannot
-reach a waypoint, ``invalid`` when the physics produces NaN.
+reach a waypoint, ``invalid`` when the physics produces NaN. After every waypoint the
+arm also measures where its own links strike the scene bodies it was given
+(:meth:`Arm.watch_strikes`, :meth:`Arm.take_strikes`): a strike stops nothing (the
+physics goes on as without it); the episode reports it with the skill
+(``SkillOutcome.struck``) and the trial's outcome rule reads it.
 """
 
 from __future__ import annotations
@@ -610,6 +614,10 @@ class Arm:
         self._hand()
         self.reset_posture(self.profile.home)
         self._limit_collisions()
+        self.strike_bodies: dict[int, str] = {}
+        """The scene bodies whose strikes by a robot link are measured (id -> name)."""
+        self._mount: set[tuple[int, int]] = set()
+        self._strikes: dict[tuple[int, int], tuple[float, tuple[float, ...]]] = {}
 
     def _hand(self) -> None:
         """Set a driven hand up: fingers open, held by motors, coupled by a gear."""
@@ -910,8 +918,50 @@ class Arm:
                     pairs.add((int(body), int(cp[2])))
         return sorted(pairs)
 
+    # --------------------------------------------------------------- strikes
+    def watch_strikes(self, bodies: dict[int, str]) -> None:
+        """Measure from now on where the robot's own links strike ``bodies`` (scene
+        body id -> name), after every waypoint of a move (:meth:`take_strikes`).
+
+        A strike is a contact point of a robot link with one of them that carries a
+        normal force (pybullet also reports points a contact margin apart, with
+        none). The held tool is no scene body, and its contacts with the fingers are
+        switched off while held (:meth:`grasp`). A link touching one of the bodies
+        now, before any move (what the robot stands on), is left out with that body.
+        """
+        self.strike_bodies = dict(bodies)
+        self._mount = {(int(cp[3]), int(cp[2])) for cp in
+                       pb.getContactPoints(bodyA=self.body, physicsClientId=self.sim.client)
+                       if cp[2] in self.strike_bodies}
+        self._strikes = {}
+
+    def _measure_strikes(self) -> None:
+        """Keep, per robot link and scene body, the largest normal force of a strike
+        in the contacts after the last physics step, and where on the body."""
+        if not self.strike_bodies:
+            return
+        for cp in pb.getContactPoints(bodyA=self.body, physicsClientId=self.sim.client):
+            key = (int(cp[3]), int(cp[2]))
+            if cp[2] in self.strike_bodies and cp[9] > 0.0 and key not in self._mount:
+                if key not in self._strikes or cp[9] > self._strikes[key][0]:
+                    self._strikes[key] = (float(cp[9]), tuple(float(v) for v in cp[6]))
+
+    def take_strikes(self) -> list[dict]:
+        """Return the strikes measured since the last call and forget them, strongest
+        first: each ``{"link", "body", "force_n", "point"}`` (the robot link's and the
+        scene body's names, the largest normal force in N, where on the body it
+        acted, world frame, m)."""
+        names = {j: n for n, j in self.model.link.items()}
+        names[-1] = self.model.base_link
+        out = [{"link": names.get(link, f"link{link}"), "body": self.strike_bodies[body],
+                "force_n": round(force, 3), "point": [round(v, 4) for v in point]}
+               for (link, body), (force, point) in self._strikes.items()]
+        self._strikes = {}
+        return sorted(out, key=lambda s: (-s["force_n"], s["link"], s["body"]))
+
     def _check(self, commanded: Point, check: bool,
                watch: Sequence[int] = ()) -> SkillOutcome | None:
+        self._measure_strikes()
         actual = self.gripper_pose()[0]
         if not all(math.isfinite(v) for v in actual):
             return SkillOutcome("invalid", "the physics produced NaN in the arm's state")

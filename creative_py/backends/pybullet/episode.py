@@ -182,6 +182,11 @@ class Episode:
                 steps_per_waypoint=rs.steps_per_waypoint), base=base)
             self.robot.reset_posture(self._start_posture())
         self.run(w.scene.settle_time)
+        if self.robot is not None:
+            # Where the robot's own links strike a body the scene says they must keep
+            # clear of ([robot] keep_clear; a skill's ``struck``).
+            self.robot.watch_strikes({self.bodies[n].id: n for n in w.scene.robot.keep_clear})
+        self.strike_arm = self.robot
         # Where the tracked objects start (an oracle measures how far they moved).
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
         # And every movable body's (a reward counting bodies nobody tracks reads them).
@@ -315,18 +320,47 @@ class Episode:
         if monitor is not None:
             # The largest contact force on the tool while it acts (sim/loads.py).
             monitor.start()
+        if self.strike_arm is not None:
+            self.strike_arm.take_strikes()  # from this skill on
         try:
             res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
         finally:
             self._last_skill = name
             if monitor is not None:
                 self.tool_load = monitor.stop()
+        struck = self._struck()
         if not res.ok:
             stop = res.stop
             if stop is not None and "touching_ids" in stop.measures:
                 stop = self._name_touching(stop)
-            return SkillOutcome(res.status, f"{name}: {res.reason}", stop)
+            return SkillOutcome(res.status, f"{name}: {res.reason}", stop, struck)
+        if struck is not None:
+            return SkillOutcome("ok", f"{name}: {struck.detail}", struck=struck)
         return res
+
+    def _struck(self) -> Verdict | None:
+        """Return the strikes of the robot's own links on scene bodies during the
+        skill just run (:meth:`~creative_py.backends.pybullet.arm.Arm.take_strikes`)
+        as a verdict, or None: the largest normal force (N) against none, the
+        strongest strike in words (which link struck which body, where, how hard),
+        every strike in ``measures["struck"]`` and the pairs in
+        ``measures["touching"]``."""
+        if self.strike_arm is None:
+            return None
+        strikes = self.strike_arm.take_strikes()
+        if not strikes:
+            return None
+        top = strikes[0]
+        x, y, z = top["point"]
+        more = len(strikes) - 1
+        detail = (f"the robot's {top['link']} struck {top['body']} at ({x:.3f}, {y:.3f}, "
+                  f"{z:.3f}) m with {top['force_n']:.0f} N"
+                  + (f" ({more} more link-body contact{'s' * (more > 1)})" if more else "")
+                  + ": the arm, not the tool, met the scene")
+        touching = sorted({f"{s['link']} against {s['body']}" for s in strikes})
+        return Verdict("robot strike force", top["force_n"], 0.0, "N", "<=", False,
+                       threshold_name="robot links strike no scene body", detail=detail,
+                       measures={"struck": strikes, "touching": touching})
 
     def _name_touching(self, stop: Verdict) -> Verdict:
         """Return a guard's verdict with the bodies it saw touching named (scene

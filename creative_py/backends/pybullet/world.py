@@ -13,7 +13,8 @@ The folder holds, besides ``case.toml``:
     ``solver_iterations``) for the arm's motions.
 ``scene.toml``
     ``settle_time`` (s of physics after building); ``[robot]`` (``visuals``, ``speed``
-    m/s, ``turn_speed`` rad/s, ``steps_per_waypoint``) and ``[robot.start]`` (the
+    m/s, ``turn_speed`` rad/s, ``steps_per_waypoint``, ``keep_clear``: the bodies the
+    robot's own links must not strike) and ``[robot.start]`` (the
     gripper's start ``position``, ``gripper`` attitude ``forward`` or ``down`` at
     ``angle`` rad, ``keep`` IK candidates, optional ``via`` pose whose posture seeds
     the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.backends.pybullet.scene`);
@@ -53,7 +54,7 @@ from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
 from creative_py.world_files import (Fields, OptionError, PhysicsSettings, WorldFileError,
-                                     load_toml, read_physics, world_file)
+                                     did_you_mean, load_toml, read_physics, world_file)
 
 if TYPE_CHECKING:
     from creative_py.backends.pybullet.scene import Namespace
@@ -77,6 +78,11 @@ class RobotSpec:
     """The robot profile (:class:`creative_py.robots.RobotProfile`)."""
     base: tuple | None = None
     """``(position, rpy)`` of the arm's base in this scene; None: the profile's."""
+    keep_clear: tuple[str, ...] = ()
+    """The scene bodies (``[[body]]`` names) the robot's own links must keep clear of:
+    a link that strikes one decides the trial (:attr:`SkillOutcome.struck`,
+    :func:`~creative_py.simulator.trial.trial_outcome`). Bodies the arm may touch in
+    its work (a table it sweeps a tool along) are left out."""
 
 
 @dataclass(frozen=True)
@@ -308,6 +314,9 @@ def _read_robot_fields(rf: Fields, parent: Fields | None,
                     maximum=TURN_SPEED_RAD_S[1])
     spw = rf.int("steps_per_waypoint", pick("steps_per_waypoint", 4),
                  minimum=STEPS_PER_WAYPOINT[0], maximum=STEPS_PER_WAYPOINT[1])
+    keep_clear = rf.raw("keep_clear", pick("keep_clear", []))
+    if not (isinstance(keep_clear, list) and all(isinstance(n, str) for n in keep_clear)):
+        raise rf.error("keep_clear", f"must be a list of [[body]] names, got {keep_clear!r}")
     base = None
     values: dict[str, Any] = {}
     if placement:
@@ -339,7 +348,8 @@ def _read_robot_fields(rf: Fields, parent: Fields | None,
         vf.done()
     sf.done()
     rf.done()
-    return RobotSpec(visuals, speed, turn, spw, start, via, keep, base=base), values
+    return RobotSpec(visuals, speed, turn, spw, start, via, keep, base=base,
+                     keep_clear=tuple(keep_clear)), values
 
 
 def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
@@ -363,6 +373,12 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
                                  f"value of [values]")
     values.update(placed_values)
     bodies = read_bodies(f.tables("body"))
+    names = [b.name for b in bodies]
+    for name in robot.keep_clear:
+        if name not in names:
+            raise WorldFileError(f"{path}: field 'robot.keep_clear': {name!r} is no "
+                                 f"[[body]] of the scene ({', '.join(names)})"
+                                 f"{did_you_mean(name, names)}")
     tf = f.table("tool_start")
     tool_start: dict[str, Any] = {}
     for kind in sorted(kinds):

@@ -103,8 +103,14 @@ def _as_recorded(rec, recorded):
     """Return ``rec`` without the measured fields the recorded line lacks (a field the
     physics measures that was added after the fixture was recorded: the physics run
     again measures it, the old line has nothing to compare it with)."""
-    return dataclasses.replace(rec, **{n: None for n in measured_fields(type(rec))
-                                       if getattr(recorded, n, None) is None})
+    rec = dataclasses.replace(rec, **{n: None for n in measured_fields(type(rec))
+                                      if getattr(recorded, n, None) is None})
+    if isinstance(rec.verdict, dict) and "struck" not in (recorded.verdict or {}):
+        # The robot's strikes on the bodies the scene says it must keep clear of
+        # (simulator/trial.py), measured since after the fixture was recorded.
+        rec = dataclasses.replace(rec, verdict={k: v for k, v in rec.verdict.items()
+                                                if k != "struck"})
+    return rec
 
 
 def _replay_first(hook, record, phase="use", variant="standard", run=None, lines=None,
@@ -270,6 +276,30 @@ def test_a_blocked_trial_without_facts_is_labelled_with_the_task_s(hook):
                                                             hook.records[0].hg)
 
 
+STRUCK = {"asked": True, "struck": {"link": "hand", "body": "tube1", "force_n": 524.0}}
+"""A verdict whose robot struck a scene body (simulator/trial.py: verdict_data)."""
+
+
+def test_a_success_in_which_the_robot_struck_is_labelled_with_the_planned_example(hook):
+    # Trial 1's facts were observed where the arm stopped, away from the planned pose:
+    # as a plain success they are the positive example, and h_s loses the spatial
+    # literals they lack; the robot struck the scene, so the trial labels the planned
+    # example (the tested pose), as a blocked one does, and h_s keeps them.
+    runner = _runner(hook)
+    task, exp = _first(hook, runner)
+    observed = [trials.fact_term(f) for f in hook.records[0].facts]
+    expected = {mode: runner.bounds(hook.engine.label_trial(
+        "hook", hook.vs0, exp, observed, "pos", mode)) for mode in ("observed", "planned")}
+    assert "centred_on(_G3,_G4)" in expected["planned"][0]
+    assert "centred_on(_G3,_G4)" not in expected["observed"][0]
+    for verdict, mode in ((STRUCK, "planned"), (None, "observed"),
+                          ({"asked": True}, "observed")):
+        hs, hg = expected[mode]  # the replay refuses a record whose bounds differ
+        _, (rec, vs) = _replay_first(hook, _edited(hook, outcome="success", verdict=verdict,
+                                                   hs=hs, hg=hg))
+        assert (rec.outcome, _runner(hook).bounds(vs)) == ("success", expected[mode])
+
+
 @pytest.mark.parametrize("outcome", ["unreachable", "invalid"])
 def test_an_unreachable_or_invalid_trial_leaves_the_version_space(hook, outcome):
     hs, hg = _runner(hook).bounds(hook.vs0)
@@ -403,17 +433,27 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
     one = hook.records[0]
     hs, hg = runner.bounds(hook.vs0)
     assert vs is hook.vs0 and runner.trials == [rec] and runner.physical == 1
+    # The gripper met the riser and the tube's mouth before the guard stopped it: the
+    # physics now also says which robot links struck them (the record of 2026-12-02
+    # predates it); the outcome and its reason stay the guard's.
+    struck = rec.verdict["struck"]["measures"]["struck"]
+    assert {s["body"] for s in struck} <= {"riser1", "tube1"} and struck
+    assert all(s["force_n"] > 0 for s in struck)
     assert dataclasses.replace(_as_recorded(rec, one), decision_time_s=0.0,
                                wall_time_s=0.0) == (
         dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
-    assert lines == [
+    # The strike's force is the contact solver's (its last bits the CPU's): said, not pinned.
+    force = f"{rec.verdict['struck']['value']:.1f}"
+    assert [line.replace(f"force {force} N", "force F N") for line in lines] == [
         "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
         "because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, "
         "-0.052) m: something is in the way  [stopped: gripper lag 0.0301 m, needs <= "
         "0.0300 m; touching hook_a1 against cube1, hook_a1 against tube1, robot against "
-        "riser1, robot against tube1; cube1 centre x 1.0985 m, needs < 0.8500 m; moved "
-        "1.1 cm]"]
+        "riser1, robot against tube1; struck: r_gripper_l_finger against tube1, "
+        "r_gripper_r_finger against tube1, right_gripper_base_link against riser1, "
+        "right_gripper_base_link against tube1 (robot strike force F N, needs <= 0.0 N); "
+        "cube1 centre x 1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):

@@ -3,6 +3,8 @@ one run_trial the learner, the CLI and the benchmarks share, in the pybullet phy
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 from _hook_runs import hook_world
 from _poses import poses
@@ -51,3 +53,38 @@ def test_a_finished_trial_keeps_what_the_robot_saw_before_the_tool_action():
     assert result.outcome == "success" and result.reason == "goal reached"
     assert ("held", "hook_a2") in result.facts_before
     assert result.tool_load is not None and result.tool_load["max_force_n"] > 0
+
+
+@pytest.mark.sim
+def test_a_hand_that_strikes_the_tube_makes_the_trial_blocked_not_the_tool_s_failure():
+    # On the Panda, the 0.28 m handle of hook_b3 brings the hand (20 cm across) to the
+    # tube's 10 x 7 cm mouth: 2 cm to the left of the cube, the hand strikes the tube
+    # without lagging its target past the tracking guard, the held hook is pushed
+    # aside and the cube stays. The physics' contacts say it was the robot's hand,
+    # not the tool: blocked (it was a failure when only the guard spoke).
+    from creative_py.backends.pybullet import load_world
+    from creative_py.case import get_case
+
+    # What --robot panda makes of the case (hook_world() is the Baxter's, cached).
+    world = load_world(replace(get_case("hook"), robot="panda"))
+    assert world.scene.robot.profile.name == "panda"
+    result = run_trial(world, "hook_b3", "standard", 1, pose=(0.03, 0.02, 0.0),
+                       pose_target=poses(world))
+    assert result.outcome == "blocked", (result.reason, result.verdict)
+    assert result.reason.startswith("position_tool: the robot's panda_hand struck tube1 at ")
+    struck = result.verdict["struck"]
+    assert struck["quantity"] == "robot strike force" and struck["value"] > 0
+    assert {"link": "panda_hand", "body": "tube1"}.items() <= struck["measures"]["struck"][0].items()
+    assert all(s["link"].startswith("panda_") for s in struck["measures"]["struck"])
+    assert "stop" not in result.verdict          # no guard stopped the motion
+    assert result.verdict["value"] > 0.85        # the cube is still in the tube
+
+
+@pytest.mark.sim
+def test_the_baxter_s_trials_of_the_demonstration_pose_strike_nothing():
+    # The same tool at the demonstration's pose on the Baxter: its hand stays clear.
+    world = hook_world()
+    result = run_trial(world, "hook_b3", "standard", 1, pose=(0.03, 0.0, 0.0),
+                       pose_target=poses(world))
+    assert result.outcome == "success", result.reason
+    assert "struck" not in result.verdict
