@@ -843,7 +843,12 @@ def robotoolbench() -> str:
                     f"{tool_cell} | {pair(pub.get('vlmgineer'))} | {pair(pub.get('expert'))} | "
                     f"{pair(pub.get('gripper'))} |")
     rollouts = d["rollouts"]
-    rows += ["", f"`{d['command']}`, recorded {d['recorded']}. Rollouts behind the published "
+    when: dict[str, list[str]] = {}
+    for task, t in d["tasks"].items():  # a re-run of some tasks (--cases) dates them
+        when.setdefault(t.get("recorded") or d["recorded"], []).append(task)
+    recorded = "; ".join(f"{', '.join(tasks)} {at}" for at, tasks in sorted(when.items()))
+    rows += ["", f"`{d['command']}`, recorded {recorded if len(when) > 1 else d['recorded']}. "
+             f"Rollouts behind the published "
              f"figures (5 runs each): VLMgineer {rollouts['vlmgineer']}; the robotics expert "
              f"{rollouts['expert']}; the gripper {rollouts['gripper']}. Source: "
              f"{d['published_source']}."]

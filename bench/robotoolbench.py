@@ -28,7 +28,9 @@ puts the table into ``docs/results.md``.
     .venv/bin/python bench/robotoolbench.py [--cases ID ...] [--world-seeds 0-4]
                                             [--out FILE | --record] [--from-runs DIR ...]
 
-``--from-runs`` records finished run folders again, running nothing.
+``--from-runs`` records finished run folders again, running nothing. Written to a file
+that holds other tasks (``--cases`` re-runs some), their rows and figures are kept, each
+task's figures saying when they were ``recorded``.
 """
 
 from __future__ import annotations
@@ -43,7 +45,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from recording import add_output_options, write_figures
+from recording import add_output_options, output_path, write_figures
 
 HERE = Path(__file__).resolve().parent
 ROOT = HERE.parent
@@ -307,23 +309,35 @@ def main() -> int:
                 row = demonstration_row(c, stopped[0])
                 row["stopped_worlds"] = stopped
                 extra.append(row)
-    rows = sorted([*(world_row(d) for d in dirs), *extra],
-                  key=lambda r: (r["case"], r["world_seed"] or 0))
+    now = time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime())
+    rows = [*(world_row(d) for d in dirs), *extra]
     by_task = {}
     for case in cases:
         mine = [r for r in rows if r["case"] == case]
         if mine:
-            by_task[tasks[case]] = task_summary(tasks[case], mine)
+            by_task[tasks[case]] = {**task_summary(tasks[case], mine), "recorded": now}
+    # The tasks not run now keep their recorded rows and figures (--cases re-runs some).
+    path = output_path(args, TRACKED)
+    old = json.loads(path.read_text()) if path is not None and path.exists() else {}
+    for task, figures in (old.get("tasks") or {}).items():
+        if figures.get("case") not in cases and figures.get("case") in tasks:
+            by_task[task] = {"recorded": old.get("recorded"), **figures}
+            rows += [r for r in old.get("worlds") or () if r["case"] == figures["case"]]
+            failed += [f for f in old.get("failed_runs") or () if f["case"] == figures["case"]]
+    rows.sort(key=lambda r: (r["case"], r["world_seed"] or 0))
+    by_task = {t: by_task[t] for t in tasks.values() if t in by_task}
     figures = {
         "bench": "robotoolbench",
         "command": (f"creative run CASE --seed 0 --world-seed W --video none, W in "
                     f"{args.world_seeds}"),
         "machine": f"{platform.node()} ({platform.machine()}), shared 2-core",
-        "recorded": time.strftime("%Y-%m-%d %H:%M UTC", time.gmtime()),
+        "recorded": now,
         "bench_wall_time_s": round(time.monotonic() - start, 1),
         "done_threshold": DONE, "published_source": SOURCE, "rollouts": ROLLOUTS,
         "tasks": by_task, "worlds": rows, "failed_runs": failed}
     for task, t in by_task.items():
+        if t["case"] not in cases:
+            continue  # kept from the file, not run now
         pub = t["published"] or {}
         print(f"{task} ({t['case']}): reward mean {t['reward_mean']} best {t['reward_best']}, "
               f"{t['successes']} of {t['worlds']} worlds, {t['trials_total']} trials, "

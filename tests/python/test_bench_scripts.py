@@ -124,6 +124,38 @@ def test_the_robotoolbench_row_counts_every_demonstration_and_the_whole_tool(tmp
     assert dims["handle_length"] == 0.31 and "hook_length" in dims
 
 
+def test_robotoolbench_re_running_some_tasks_keeps_the_others_figures(tmp_path, monkeypatch):
+    """``--cases`` re-runs some tasks; the file's other tasks keep their rows and
+    figures, each task saying when it was recorded (the whole file was rewritten with
+    only the re-run task before)."""
+    import robotoolbench
+
+    run = tmp_path / "run"
+    run.mkdir()
+    (run / "summary.json").write_text(json.dumps({
+        "case": "bring_cube", "world_seed": 0, "drawn_world": {"seed": 0, "redraws": 0},
+        "trials": {"use": {"trials": 5}}, "create": {"variant": "benchmark"}}))
+    (run / "trials.jsonl").write_text(json.dumps({
+        "variant": "benchmark", "tool": "hook_a1",
+        "verdict": {"quantity": "reward", "value": 0.995}}) + "\n")
+    old_row = {"case": "one_book", "world_seed": 0, "reward": 0.5}
+    out = tmp_path / "figures.json"
+    out.write_text(json.dumps({
+        "recorded": "2026-01-01 00:00 UTC",
+        "tasks": {"OneBook": {"case": "one_book", "reward_mean": 0.5}},
+        "worlds": [old_row], "failed_runs": []}))
+    monkeypatch.setattr(sys, "argv", ["robotoolbench.py", "--cases", "bring_cube",
+                                      "--from-runs", str(run), "--out", str(out)])
+    assert robotoolbench.main() == 0
+    got = json.loads(out.read_text())
+    assert list(got["tasks"]) == ["BringCube", "OneBook"]
+    assert got["tasks"]["OneBook"] == {"recorded": "2026-01-01 00:00 UTC", "case": "one_book",
+                                       "reward_mean": 0.5}
+    assert got["tasks"]["BringCube"]["recorded"] == got["recorded"] != "2026-01-01 00:00 UTC"
+    assert [r["case"] for r in got["worlds"]] == ["bring_cube", "one_book"]
+    assert got["worlds"][1] == old_row
+
+
 def test_robotoolbench_refuses_a_task_it_has_no_published_figures_for(tmp_path, monkeypatch,
                                                                       capsys):
     """A misspelled ``[benchmark] task`` showed "n/a" in the table, silently."""
