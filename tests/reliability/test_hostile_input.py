@@ -455,6 +455,11 @@ WORLD_OPTIONS = [
      'keep_clear = ["tube1", "riser"]',
      "field 'robot.keep_clear': 'riser' is no [[body]] of the scene (table1, riser1, "
      "tube1, cube1) (did you mean 'riser1'?)"),
+    # in the table of an arm that is not the one running (the case's Baxter)
+    ("hook_tube", "scene.toml", "steps_per_waypoint = 1\n",
+     'steps_per_waypoint = 1\nkeep_clear = ["tube"]\n',
+     "field 'robot.panda.keep_clear': 'tube' is no [[body]] of the scene (table1, riser1, "
+     "tube1, cube1) (did you mean 'tube1'?)"),
     ("paddle_tube", "scene.toml", 'keep_clear = ["tube1", "riser1"]', 'keep_clear = "tube1"',
      "field 'robot.keep_clear': must be a list of [[body]] names, got 'tube1'"),
 ]

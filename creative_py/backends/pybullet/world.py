@@ -374,11 +374,16 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     values.update(placed_values)
     bodies = read_bodies(f.tables("body"))
     names = [b.name for b in bodies]
-    for name in robot.keep_clear:
-        if name not in names:
-            raise WorldFileError(f"{path}: field 'robot.keep_clear': {name!r} is no "
-                                 f"[[body]] of the scene ({', '.join(names)})"
-                                 f"{did_you_mean(name, names)}")
+    # Every [robot] table's keep_clear (lists of names: _read_robot_fields), whichever
+    # arm runs.
+    rt = f.data["robot"]
+    for field, listed in [("robot.keep_clear", rt.get("keep_clear", [])),
+                          *((f"robot.{k}.keep_clear", v["keep_clear"]) for k, v in rt.items()
+                            if isinstance(v, dict) and "keep_clear" in v)]:
+        for name in listed:
+            if name not in names:
+                raise WorldFileError(f"{path}: field '{field}': {name!r} is no [[body]] of "
+                                     f"the scene ({', '.join(names)}){did_you_mean(name, names)}")
     tf = f.table("tool_start")
     tool_start: dict[str, Any] = {}
     for kind in sorted(kinds):
