@@ -314,10 +314,22 @@ def lengths_in_mm(text: str) -> str:
     return _LENGTH.sub(lambda m: f"{mm(m.group(1), m.group(3))} mm", text)
 
 
+def struck_line(struck: dict) -> str:
+    """Return a robot's strike on the scene (a verdict's ``struck``) as one short line:
+    the strongest link-body strike with its force, and how many more there were."""
+    strikes = (struck.get("measures") or {}).get("struck") or []
+    if not strikes:
+        return f"struck: {_with_unit(struck.get('brief'), struck.get('unit'))}"
+    top, more = strikes[0], len(strikes) - 1
+    return (f"struck: {top['link']} against {top['body']} with {top['force_n']:.0f} N"
+            + (f" ({more} more link-body contact{'s' * (more > 1)})" if more else ""))
+
+
 def verdict_lines(verdict: Any) -> list[str]:
     """Return a trial's measured verdict as short lines (a clip's caption, the
     terminal): the guard's measure and what was touching when it stopped a motion,
-    then the oracle's measure and the one beside it (empty for none)."""
+    the robot's strongest strike on the scene (:func:`struck_line`), then the oracle's
+    measure and the one beside it (empty for none)."""
     if not isinstance(verdict, dict):
         return []
     lines = []
@@ -330,8 +342,7 @@ def verdict_lines(verdict: Any) -> list[str]:
             lines.append(f"touching {', '.join(touching)}")
     struck = verdict.get("struck")
     if isinstance(struck, dict):
-        lines.append(f"struck: {', '.join((struck.get('measures') or {}).get('touching') or [])}"
-                     f" ({_with_unit(struck.get('brief'), struck.get('unit'))})")
+        lines.append(struck_line(struck))
     if verdict.get("brief") or verdict.get("text"):
         lines.append(_with_unit(verdict.get("brief"), verdict.get("unit"))
                      or str(verdict["text"]))

@@ -444,16 +444,15 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
         dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
     # The strike's force is the contact solver's (its last bits the CPU's): said, not pinned.
-    force = f"{rec.verdict['struck']['value']:.1f}"
-    assert [line.replace(f"force {force} N", "force F N") for line in lines] == [
+    force = f"{rec.verdict['struck']['value']:.0f}"
+    assert [line.replace(f"with {force} N", "with F N") for line in lines] == [
         "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
         "because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, "
         "-0.052) m: something is in the way  [stopped: gripper lag 0.0301 m, needs <= "
         "0.0300 m; touching hook_a1 against cube1, hook_a1 against tube1, robot against "
-        "riser1, robot against tube1; struck: r_gripper_l_finger against tube1, "
-        "r_gripper_r_finger against tube1, right_gripper_base_link against riser1, "
-        "right_gripper_base_link against tube1 (robot strike force F N, needs <= 0.0 N); "
-        "cube1 centre x 1.0985 m, needs < 0.8500 m; moved 1.1 cm]"]
+        "riser1, robot against tube1; struck: right_gripper_base_link against tube1 with "
+        "F N (3 more link-body contacts); cube1 centre x 1.0985 m, needs < 0.8500 m; moved "
+        "1.1 cm]"]
 
 
 def test_a_trial_in_the_physics_after_a_replayed_one(hook, tmp_path):
