@@ -136,6 +136,8 @@ class Episode:
         self.state: dict[str, Any] = {}
         self.records: dict[str, Any] = {}
         self.tool_load = ToolLoad()
+        self.supports: dict[str, int] = {}
+        """Bodies a tool's handling built to rest it on (name -> body: ``pedestal``)."""
         self.robot = None
         self.robot_parked = False
         self.with_robot = robot
@@ -368,6 +370,7 @@ class Episode:
         from dataclasses import replace
 
         names = {b.id: n for n, b in self.bodies.items()}
+        names.update({body: n for n, body in self.supports.items()})
         names[self.tool_body] = self.spec.name
         if self.robot is not None and not self.robot_parked:
             names[self.robot.body] = "robot"

@@ -173,9 +173,10 @@ class HandleHeld(ToolKind):
             x0 = x1 - 0.03
         base = start["pedestal_base_z"]
         stand_h = top_z - base
-        spawn_parts(sim, [Box((0, 0, 0), (x1 - x0, start["pedestal_width"], stand_h))],
-                    (((x0 + x1) / 2, axis_y, base + stand_h / 2), IDENTITY), 0.0,
-                    Surface(start["pedestal_friction"], (0.3, 0.3, 0.3, 1.0)))
+        ep.supports["pedestal"] = spawn_parts(
+            sim, [Box((0, 0, 0), (x1 - x0, start["pedestal_width"], stand_h))],
+            (((x0 + x1) / 2, axis_y, base + stand_h / 2), IDENTITY), 0.0,
+            Surface(start["pedestal_friction"], (0.3, 0.3, 0.3, 1.0)))
         lying = ((butt_x, axis_y, top_z + spec.handle_width / 2 + 0.0005),
                  tool_orientation(spec, start["roll"]))
         if ep.item.urdf is not None:

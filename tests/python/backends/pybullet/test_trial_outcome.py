@@ -88,3 +88,20 @@ def test_the_baxter_s_trials_of_the_demonstration_pose_strike_nothing():
                        pose_target=poses(world))
     assert result.outcome == "success", result.reason
     assert "struck" not in result.verdict
+
+
+@pytest.mark.sim
+def test_a_guard_names_the_pedestal_the_tool_lay_on():
+    # A stop's touching pairs name every body: the pedestal a handle's tool lies on was
+    # "body10" (CleanTable's rake_c3, stopped against it on its way out).
+    from creative_py.backends.pybullet import open_episode
+    from creative_py.simulator import Verdict
+
+    world = hook_world()
+    with open_episode(world, "standard", 1, "hook_a2", robot=False) as ep:
+        assert set(ep.supports) == {"pedestal"}
+        stop = Verdict("gripper lag", 0.04, 0.03, "m", "<=", False, measures={
+            "touching_ids": [(ep.tool_body, ep.supports["pedestal"])]})
+        named = ep._name_touching(stop)
+    assert named.measures["touching"] == ["hook_a2 against pedestal"]
+    assert named.detail == "touching: hook_a2 against pedestal"
