@@ -184,8 +184,10 @@ test-python: $(STAMP)  ## Run pytest without the slow tests, one worker a core.
 # check before it refuses to run when the narrowing did not take (numpy ignores names it
 # does not know). It leaves out what computes no float to compare: tests/reliability
 # (exit codes, messages, locks, kills and resumes, each run compared with itself on the
-# same machine) and tests/python/architecture (scans of the source). The folders are
-# named, not --ignore'd: pytest does not ignore a folder that testpaths names.
+# same machine), tests/python/architecture (scans of the source) and tests/python/bridge
+# (the Prolog facade, which imports only the standard library, pyswip and itself:
+# test_imports.py checks it). The folders are named, not --ignore'd: pytest does not
+# ignore a folder that testpaths names.
 NUMPY_DISPATCH := from numpy._core import _multiarray_umath as m
 test-narrow: $(STAMP)  ## Run pytest again with numpy's vector dispatch narrowed to its baseline (another CPU).
 	@features=$$($(PY) -c '$(NUMPY_DISPATCH); print(" ".join(m.__cpu_dispatch__))') && \
@@ -193,7 +195,8 @@ test-narrow: $(STAMP)  ## Run pytest again with numpy's vector dispatch narrowed
 	  $(PY) -c '$(NUMPY_DISPATCH); on = [f for f in m.__cpu_dispatch__ if m.__cpu_features__.get(f)]; \
 	    assert not on, f"numpy still dispatches to {on}"; \
 	    print("numpy narrowed to its baseline", m.__cpu_baseline__, "(disabled:", " ".join(m.__cpu_dispatch__) + ")")' && \
-	  $(PY) -m pytest -q -m "not slow" -n auto tests/python tests/integration --ignore=tests/python/architecture
+	  $(PY) -m pytest -q -m "not slow" -n auto tests/python tests/integration --ignore=tests/python/architecture \
+	    --ignore=tests/python/bridge
 
 test-all: test-prolog $(STAMP)  ## Run every test, the slow learning runs included.
 	$(PY) -m pytest -q -n auto

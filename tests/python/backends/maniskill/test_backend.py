@@ -6,10 +6,16 @@ each on this machine (SAPIEN's first scene takes a few seconds).
 
 from __future__ import annotations
 
+import importlib.util
+
 import pytest
 
-pytest.importorskip("mani_skill", reason="the maniskill extra is not installed "
-                                         "(make setup-maniskill or pip install -e '.[maniskill]')")
+# Skipped without the extra, which is looked for, not imported: importing mani_skill (and
+# torch) costs about 8 CPU s, which every pytest-xdist worker paid at collection, also
+# the one that runs none of these tests; the episodes import it when they run.
+if importlib.util.find_spec("mani_skill") is None:
+    pytest.skip("the maniskill extra is not installed (make setup-maniskill or pip install "
+                "-e '.[maniskill]')", allow_module_level=True)
 
 from creative_py.case import get_case  # noqa: E402
 from creative_py.backends.maniskill import load_world, open_episode  # noqa: E402
