@@ -23,7 +23,7 @@ starts, the arm at its start posture. A skill runs the primitive its manifest en
 binds (:mod:`creative_py.backends.pybullet.primitives`); the pose skill's world target comes from
 ``pose_target``, a :data:`PoseTarget` the caller gives (the engine's pose solution),
 applied to what the robot perceives at that moment. :meth:`Episode.verdict` is what
-the oracle (:mod:`creative_py.backends.pybullet.oracles`) measures. A trial (the
+the oracle (:mod:`creative_py.world.oracles`) measures. A trial (the
 manifest's skills in order, the oracle asked, the outcome labelled) is run above the
 boundary, as every backend's: :func:`creative_py.simulator.trial.run_trial`. Nothing
 here looks at tool properties.
@@ -44,7 +44,7 @@ import pybullet as pb
 
 from creative_py.backends.pybullet.loads import ToolLoad, ToolLoadMonitor
 from creative_py.backends.pybullet.recorder import Recorder
-from creative_py.backends.pybullet.world import (World, object_name, resolve_options, resolve_start,
+from creative_py.world.read import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
 from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome, Verdict,
                                          pose_numbers)
@@ -497,6 +497,12 @@ class Episode:
         v, _ = pb.getBaseVelocity(self.body_id(name), physicsClientId=self.sim.client)
         return tuple(float(c) for c in v)
 
+    def joint_angle(self, name: str) -> float | None:
+        """Return the angle (rad) of a jointed body's joint from its sensor (a door's: 0
+        is closed), or None for a body without one."""
+        angle = getattr(self.bodies.get(name), "angle", None)
+        return float(angle(self.sim)) if callable(angle) else None
+
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
         """Return ground-truth ``name -> (x, y, z, yaw)`` of the tracked objects and the
         tool (its frame), for error reports only."""
@@ -512,7 +518,7 @@ class Episode:
     def verdict(self) -> Verdict:
         """Return the oracle's measured verdict on the simulated state: whether the goal
         holds, the quantity measured and the threshold it was judged by
-        (:mod:`creative_py.backends.pybullet.oracles`)."""
+        (:mod:`creative_py.world.oracles`)."""
         from dataclasses import replace
 
         spec = self.world.oracle
