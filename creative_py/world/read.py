@@ -1,4 +1,4 @@
-"""A case's simulated world: the manifest, the catalogue of tools and the scene files.
+"""A case's world as its files describe it, for every backend that builds the scene.
 
 :func:`load_world` reads a world folder (``worlds/<folder>/`` or a copy) for a
 :class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool;
@@ -17,12 +17,12 @@ The folder holds, besides ``case.toml``:
     robot's own links must not strike) and ``[robot.start]`` (the
     gripper's start ``position``, ``gripper`` attitude ``forward`` or ``down`` at
     ``angle`` rad, ``keep`` IK candidates, optional ``via`` pose whose posture seeds
-    the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.backends.pybullet.scene`);
+    the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.world.bodies`);
     ``[tool_start]`` (where the tool lies: the fields of its kind,
-    :mod:`creative_py.backends.pybullet.tools`); ``[perception]`` (noise and the
+    :mod:`creative_py.world.handlings`); ``[perception]`` (noise and the
     ``[[perception.object]]`` the cameras track); ``[[camera]]``; an optional
     ``[video]`` (the fixed camera of the trial clips and their ``fps``,
-    :mod:`creative_py.backends.pybullet.recorder`).
+    :class:`creative_py.world.cameras.VideoSpec`).
 ``objects.toml``
     The catalogue: one table per object in the array named by the manifest's
     ``roles.tools`` (``[[tool]]``, ``[[object]]``), with the spec fields of
@@ -40,8 +40,8 @@ Every number has finite bounds, so that no value makes the physics run without e
 ``settle_time`` 0-10 s (:data:`SETTLE_TIME_S`); ``[robot]`` ``speed`` 0.001-2 m/s,
 ``turn_speed`` 0.001-10 rad/s, ``steps_per_waypoint`` 1-1000, ``keep`` 1-100; the
 start poses' and ``[tool_start]``'s numbers within +-10 m (rad); ``depth_sigma_m``
-0-0.1 m; an object's ``friction`` 0-10; the bodies' (:mod:`creative_py.backends.pybullet.scene`);
-the skills' options (:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the
+0-0.1 m; an object's ``friction`` 0-10; the bodies' (:mod:`creative_py.world.bodies`);
+the skills' options (:data:`creative_py.world.skills.OPTION_BOUNDS`) and the
 oracle's (:data:`creative_py.world.oracles.OPTION_BOUNDS`).
 """
 
@@ -106,7 +106,7 @@ class SceneSpec:
     perceived: tuple[PerceivedObject, ...]
     cameras: tuple
     video: Any = None
-    """The clips' camera and frame rate (:class:`~creative_py.backends.pybullet.recorder.VideoSpec`):
+    """The clips' camera and frame rate (:class:`~creative_py.world.cameras.VideoSpec`):
     the ``[video]`` table, else the first camera at 5 frames per second, else None."""
 
 
@@ -164,7 +164,7 @@ class World(CatalogueWorld):
     @property
     def video(self) -> Any:
         """Return the camera of the trial clips (``scene.video``,
-        :class:`~creative_py.backends.pybullet.recorder.VideoSpec`), or None."""
+        :class:`~creative_py.world.cameras.VideoSpec`), or None."""
         return self.scene.video
 
     def with_tool(self, spec: Any, urdf: Path | None = None) -> "World":
@@ -478,7 +478,7 @@ def world_robot(manifest: CaseManifest) -> Any:
     name = manifest.robot
     if not name:
         raise WorldFileError(f"{manifest.folder / 'case.toml'}: field 'robot': missing (the "
-                             "pybullet backend needs the case's robot profile)")
+                             "scene's robot is a robot profile's)")
     return load_profile(name)
 
 
@@ -557,13 +557,13 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     fails or lies outside its bounds.
 
     Bounded, each error naming the file and the field: the bodies' numbers
-    (:mod:`creative_py.backends.pybullet.scene`), every number of ``[tool_start]`` and of the robot's
+    (:mod:`creative_py.world.bodies`), every number of ``[tool_start]`` and of the robot's
     start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
-    (:func:`creative_py.backends.pybullet.primitives.option_bound`: the primitive's own
-    bound, else :data:`~creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
+    (:func:`creative_py.world.skills.option_bound`: the primitive's own
+    bound, else :data:`~creative_py.world.skills.OPTION_BOUNDS`) and the oracle's
     (:data:`creative_py.world.oracles.OPTION_BOUNDS`). Beyond bounds, what
     would fail or mean nothing mid-run: the skills' options by their primitive
-    (:func:`creative_py.backends.pybullet.primitives.check_options`: a list's length, a
+    (:func:`creative_py.world.skills.check_options`: a list's length, a
     zero direction), the oracle's by its kind against the scene's objects and roles
     (:func:`creative_py.world.oracles.check_options`: names that resolve,
     vector lengths, axes, box order, non-zero scales).
