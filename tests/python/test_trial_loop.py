@@ -412,7 +412,7 @@ def test_the_demonstration_is_played_by_the_trial_s_loop(backend):
 
 
 STRUCK = Verdict("robot strike force", 463.1, 0.0, "N", "<=", False,
-                 "robot links strike no scene body",
+                 "robot links strike none of box2",
                  detail="the robot's hand_link struck box2 at (0.850, -0.250, -0.024) m",
                  measures={"struck": [{"link": "hand_link", "body": "box2", "force_n": 463.1,
                                        "point": [0.85, -0.25, -0.024]}],

@@ -358,9 +358,10 @@ class Episode:
                   f"{z:.3f}) m with {top['force_n']:.0f} N" + more_strikes(strikes)
                   + ": the arm, not the tool, met the scene")
         touching = sorted({f"{s['link']} against {s['body']}" for s in strikes})
+        keep_clear = ", ".join(self.world.scene.robot.keep_clear)
         return Verdict("robot strike force", top["force_n"], 0.0, "N", "<=", False,
-                       threshold_name="robot links strike no scene body", detail=detail,
-                       measures={"struck": strikes, "touching": touching})
+                       threshold_name=f"robot links strike none of {keep_clear}",
+                       detail=detail, measures={"struck": strikes, "touching": touching})
 
     def _name_touching(self, stop: Verdict) -> Verdict:
         """Return a guard's verdict with the bodies it saw touching named (scene

@@ -441,10 +441,12 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
     # The strike's force is the contact solver's (its last bits the CPU's): said, not pinned.
     force = f"{rec.verdict['struck']['value']:.0f}"
     assert all(s["force_n"] > 0 for s in struck)
-    # The strike's words count the other contacts as its short line does (more_strikes).
+    # The limit names the bodies the scene says the robot must keep clear of; the
+    # strike's words count the other contacts as its short line does (more_strikes).
+    assert rec.verdict["struck"]["threshold_name"] == "robot links strike none of tube1, riser1"
     head, _, tail = rec.verdict["struck"]["text"].partition(" at (")
     assert head == (f"robot strike force {rec.verdict['struck']['value']:.1f} N (needs <= "
-                    "0.0 N, robot links strike no scene body); the robot's "
+                    "0.0 N, robot links strike none of tube1, riser1); the robot's "
                     "right_gripper_base_link struck tube1")
     assert tail.endswith(f") m with {force} N (3 more link-body contacts): the arm, not the "
                          "tool, met the scene")
