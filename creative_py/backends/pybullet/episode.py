@@ -46,6 +46,7 @@ from creative_py.backends.pybullet.loads import ToolLoad, ToolLoadMonitor
 from creative_py.backends.pybullet.recorder import Recorder
 from creative_py.world.read import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
+from creative_py.records.trial import more_strikes
 from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome, Verdict,
                                          pose_numbers)
 from creative_py.world_files import PhysicsSettings, WorldFileError
@@ -188,7 +189,6 @@ class Episode:
             # Where the robot's own links strike a body the scene says they must keep
             # clear of ([robot] keep_clear; a skill's ``struck``).
             self.robot.watch_strikes({self.bodies[n].id: n for n in w.scene.robot.keep_clear})
-        self.strike_arm = self.robot
         # Where the tracked objects start (an oracle measures how far they moved).
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
         # And every movable body's (a reward counting bodies nobody tracks reads them).
@@ -322,8 +322,8 @@ class Episode:
         if monitor is not None:
             # The largest contact force on the tool while it acts (sim/loads.py).
             monitor.start()
-        if self.strike_arm is not None:
-            self.strike_arm.take_strikes()  # from this skill on
+        if self.robot is not None:
+            self.robot.take_strikes()  # from this skill on
         try:
             res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
         finally:
@@ -347,22 +347,21 @@ class Episode:
         strongest strike in words (which link struck which body, where, how hard),
         every strike in ``measures["struck"]`` and the pairs in
         ``measures["touching"]``."""
-        if self.strike_arm is None:
+        if self.robot is None:
             return None
-        strikes = self.strike_arm.take_strikes()
+        strikes = self.robot.take_strikes()
         if not strikes:
             return None
         top = strikes[0]
         x, y, z = top["point"]
-        more = len(strikes) - 1
         detail = (f"the robot's {top['link']} struck {top['body']} at ({x:.3f}, {y:.3f}, "
-                  f"{z:.3f}) m with {top['force_n']:.0f} N"
-                  + (f" ({more} more link-body contact{'s' * (more > 1)})" if more else "")
+                  f"{z:.3f}) m with {top['force_n']:.0f} N" + more_strikes(strikes)
                   + ": the arm, not the tool, met the scene")
         touching = sorted({f"{s['link']} against {s['body']}" for s in strikes})
+        keep_clear = ", ".join(self.world.scene.robot.keep_clear)
         return Verdict("robot strike force", top["force_n"], 0.0, "N", "<=", False,
-                       threshold_name="robot links strike no scene body", detail=detail,
-                       measures={"struck": strikes, "touching": touching})
+                       threshold_name=f"robot links strike none of {keep_clear}",
+                       detail=detail, measures={"struck": strikes, "touching": touching})
 
     def _name_touching(self, stop: Verdict) -> Verdict:
         """Return a guard's verdict with the bodies it saw touching named (scene
