@@ -356,7 +356,7 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
     from creative_py.backends.pybullet.camera import cameras_from_tables
     from creative_py.backends.pybullet.recorder import VideoSpec
-    from creative_py.backends.pybullet.scene import read_bodies
+    from creative_py.world.bodies import read_bodies
     from creative_py.backends.pybullet.tools import HANDLINGS
 
     f = Fields(load_toml(path), path)
