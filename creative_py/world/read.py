@@ -49,15 +49,15 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, replace
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, Mapping, Optional, Sequence
+from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
+from creative_py.world.bodies import read_bodies, resolve_bodies
+from creative_py.world.expressions import Namespace
 from creative_py.world_files import (Fields, OptionError, PhysicsSettings, WorldFileError,
                                      did_you_mean, load_toml, read_physics, world_file)
 
-if TYPE_CHECKING:
-    from creative_py.backends.pybullet.scene import Namespace
 
 _ROLES = ("tool", "target", "context")
 
@@ -231,7 +231,6 @@ class World(CatalogueWorld):
 
     def namespace(self, variant: str, location: int, tool: str):
         """Return the scene values of one episode (variant and location applied)."""
-        from creative_py.backends.pybullet.scene import Namespace
         from creative_py.backends.pybullet.tools import tool_kind
 
         v = self.manifest.variant(variant)
@@ -363,7 +362,6 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
     from creative_py.backends.pybullet.camera import cameras_from_tables
     from creative_py.backends.pybullet.recorder import VideoSpec
-    from creative_py.backends.pybullet.scene import read_bodies
     from creative_py.backends.pybullet.tools import HANDLINGS
 
     f = Fields(load_toml(path), path)
@@ -543,11 +541,9 @@ def oracle_reads(world: World, variant: str, location: int, tool: str
     """Return the objects the world's oracle reads in an episode of ``variant``,
     ``location`` and ``tool`` (in order), and whether it reads a velocity."""
     from creative_py.world import oracles
-    from creative_py.backends.pybullet.scene import make_bodies
-
     ns = world.namespace(variant, location, tool)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=oracle_words(world))
-    names = _scene_names(world, make_bodies(world.scene.bodies, ns), tool)
+    names = _scene_names(world, resolve_bodies(world.scene.bodies, ns), tool)
     kind = world.oracle.oracle
     return oracles.objects_read(world.oracle.kind, opts, names), kind.velocity(opts)
 
@@ -568,11 +564,9 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     (:func:`creative_py.world.oracles.check_options`: names that resolve,
     vector lengths, axes, box order, non-zero scales).
     """
-    from creative_py.backends.pybullet.scene import make_bodies
-
     ns = world.namespace(variant, location, tool)
     episode = f" (variant {variant}, location {location})"
-    bodies = make_bodies(world.scene.bodies, ns)
+    bodies = resolve_bodies(world.scene.bodies, ns)
     _check_start_poses(world, ns, episode)
     _check_skill_options(world, ns, episode)
     _check_oracle_options(world, ns, bodies, tool, episode)

@@ -18,17 +18,15 @@ boundary, as every backend's (:mod:`creative_py.simulator.trial`,
 A pose skill needs ``pose_target`` (:data:`PoseTarget`), given by the caller: the
 learning layer's :func:`creative_py.learning.poses.pose_resolver` asks the engine.
 
-Modules, from the data to the physics:
+The world it builds is read above the backends (:mod:`creative_py.world`: the world
+files, the body kinds, the primitives' options, the oracle kinds); ``load_world`` and
+``World`` here are that reader's. Modules, from the data to the physics:
 
 ``types``       the boundary's value types, re-exported (:mod:`creative_py.simulator.types`)
-``world``       a world folder read for a manifest (World, load_world)
-``scene``       ``[[body]]`` tables and scene expressions; the body kinds of
-                ``BODY_KINDS`` (box, tube, shelf, door, lane, sphere, zone, scatter,
-                standing_shelf, open_box, bookends)
+``scene``       the body kinds of :mod:`creative_py.world.bodies` built (``BODY_BUILDERS``)
 ``tools``       how a tool kind is held (by a handle, from the top): start, grasp,
                 motion, proprioception, catalogue facts
-``primitives``  the skill primitives a manifest binds by name
-``oracles``     the success oracles a world's ``tasks.toml`` configures
+``primitives``  the skill primitives a manifest binds by name, run
 ``episode``     one scene driven skill by skill (open_episode, Episode, tool_rests)
 ``arm``, ``bodies``, ``camera``, ``core``   the robot profile's arm, rigid bodies, cameras, the client
 """

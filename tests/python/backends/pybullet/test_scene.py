@@ -5,8 +5,9 @@ import math
 import pytest
 
 from creative_py.backends.pybullet.core import Sim
-from creative_py.backends.pybullet.scene import (BODY_KINDS, REQUIRED, BodyTable, Namespace,
-                                                 make_bodies)
+from creative_py.backends.pybullet.scene import BODY_BUILDERS, make_bodies
+from creative_py.world.bodies import BODY_KINDS, REQUIRED, BodyTable
+from creative_py.world.expressions import Namespace
 from creative_py.world_files import PhysicsSettings, WorldFileError
 
 
@@ -86,7 +87,7 @@ def test_every_body_kind_builds_from_a_shipped_scene_and_gives_its_facts(kind):
     from creative_py.backends.pybullet.scene import SceneBody
     from creative_py.case import load_cases
 
-    cls = BODY_KINDS[kind]
+    cls = BODY_BUILDERS[kind]
     assert issubclass(cls, SceneBody) and cls.FIELDS
     assert cls.build is not SceneBody.build
     assert set(cls.BOUNDS) <= set(cls.FIELDS), (kind, set(cls.BOUNDS) - set(cls.FIELDS))
@@ -202,10 +203,10 @@ def test_a_body_of_the_new_kinds_that_cannot_be_built_is_named(kind, fields, mes
 def test_a_lane_has_no_walls_and_reports_its_passage_and_goal():
     import pybullet as pb
 
-    lane = BODY_KINDS["lane"]("lane1", {"mouth_x": 0.95, "axis_y": 0.0, "floor_z": 0.0,
-                                        "length": 0.25, "inner_width": 0.3,
-                                        "inner_height": 0.3, "goal_x": 0.6, "mark": 0.07,
-                                        "colour": (0.2, 0.8, 0.2, 0.5)})
+    lane = BODY_BUILDERS["lane"]("lane1", {"mouth_x": 0.95, "axis_y": 0.0, "floor_z": 0.0,
+                                           "length": 0.25, "inner_width": 0.3,
+                                           "inner_height": 0.3, "goal_x": 0.6, "mark": 0.07,
+                                           "colour": (0.2, 0.8, 0.2, 0.5)})
     assert lane.facts(None) == [("lane_start", "lane1", 0.95, 0.0, 0.15),
                                 ("lane_length_m", "lane1", 0.25),
                                 ("lane_room_m", "lane1", 0.3, 0.3),
@@ -215,4 +216,4 @@ def test_a_lane_has_no_walls_and_reports_its_passage_and_goal():
         assert pb.getCollisionShapeData(body, -1, physicsClientId=sim.client) == ()
         assert lane.centre(sim)[:2] == (0.6, 0.0)
     with pytest.raises(ValueError, match="length must be positive"):
-        BODY_KINDS["lane"]("lane1", {**lane.v, "length": 0.0})
+        BODY_BUILDERS["lane"]("lane1", {**lane.v, "length": 0.0})

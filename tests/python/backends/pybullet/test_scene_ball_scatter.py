@@ -6,7 +6,9 @@ import pybullet as pb
 import pytest
 
 from creative_py.backends.pybullet.core import Sim
-from creative_py.backends.pybullet.scene import BODY_KINDS, BodyTable, Namespace, make_bodies
+from creative_py.backends.pybullet.scene import make_bodies
+from creative_py.world.bodies import BODY_KINDS, BodyTable
+from creative_py.world.expressions import Namespace
 from creative_py.world_files import PhysicsSettings, WorldFileError
 
 
