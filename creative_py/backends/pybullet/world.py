@@ -450,7 +450,8 @@ def _read_tasks(path: Path):
 
 
 def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
-    from creative_py.backends.pybullet.primitives import PRIMITIVES, REQUIRED
+    from creative_py.backends.pybullet.primitives import PRIMITIVES
+    from creative_py.world.skills import REQUIRED
 
     path = manifest.folder / "case.toml"
     out = {}
@@ -606,7 +607,7 @@ def _check_start_poses(world: World, ns: Namespace, episode: str) -> None:
 def _check_skill_options(world: World, ns: Namespace, episode: str) -> None:
     """Raise :class:`WorldFileError` unless every skill's options are well typed, within
     their bounds and valid for their primitive."""
-    from creative_py.backends.pybullet import primitives
+    from creative_py.world import skills as primitives
 
     case_file = world.manifest.folder / "case.toml"
     flags = primitives.option_flags()
