@@ -354,8 +354,7 @@ def _read_robot_fields(rf: Fields, parent: Fields | None,
 
 def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
-    from creative_py.backends.pybullet.camera import cameras_from_tables
-    from creative_py.backends.pybullet.recorder import VideoSpec
+    from creative_py.world.cameras import VideoSpec, cameras_from_tables
     from creative_py.backends.pybullet.scene import read_bodies
     from creative_py.backends.pybullet.tools import HANDLINGS
 
