@@ -32,7 +32,7 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
   +-:data:`RANDOMISE_LIMIT`).
 
 The skills' ``options`` are checked where they are resolved, in every variant and
-location (:func:`creative_py.backends.pybullet.world.check_values`, the bounds of
+location (:func:`creative_py.world.read.check_values`, the bounds of
 :data:`creative_py.world.skills.OPTION_BOUNDS`).
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under

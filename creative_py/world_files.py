@@ -2,7 +2,8 @@
 
 Every world folder (``worlds/<case>/``) holds the same five files, listed in
 :data:`WORLD_FILES`. This module only knows how to read TOML safely; what the fields
-mean belongs to the simulator that reads them (:mod:`creative_py.backends.pybullet.world`).
+mean belongs to their readers (:mod:`creative_py.world.read` for a scene a backend
+builds, the ManiSkill backend's for a ManiSkill task).
 
 A :class:`Fields` reader wraps one TOML table. Each accessor names the file and the
 dotted field path in its error, and :meth:`Fields.done` rejects fields nobody asked

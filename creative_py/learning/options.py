@@ -52,7 +52,7 @@ class RunOptions:
         :class:`~creative_py.learning.strategies.UnknownStrategy`.
     world_seed : int or None
         None: the world as its files say; N: a world drawn from the case's manifest
-        (:func:`creative_py.backends.pybullet.world.draw_world`: the catalogue's numbers inside their
+        (:func:`creative_py.simulator.randomise.draw_world`: the catalogue's numbers inside their
         own qualitative ranges, its order shuffled, the locations jittered), the same
         for the same N.
     catalogue_first : bool or None

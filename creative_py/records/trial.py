@@ -24,7 +24,7 @@ import math
 import re
 import typing
 from dataclasses import dataclass, field, fields
-from typing import Any, Callable, Union
+from typing import Any, Callable, Sequence, Union
 
 from creative_py.records.checking import hints, typed
 
@@ -314,15 +314,24 @@ def lengths_in_mm(text: str) -> str:
     return _LENGTH.sub(lambda m: f"{mm(m.group(1), m.group(3))} mm", text)
 
 
+def more_strikes(strikes: Sequence[Any]) -> str:
+    """Return how many link-body strikes there were besides the strongest one
+    (``strikes[0]``, the words said after it) as `` (3 more link-body contacts)``;
+    ``""`` for none. The one writer of these words: a strike's verdict (the pybullet
+    episode's detail) and its line (:func:`struck_line`) both say it so."""
+    more = len(strikes) - 1
+    return f" ({more} more link-body contact{'s' * (more > 1)})" if more > 0 else ""
+
+
 def struck_line(struck: dict) -> str:
     """Return a robot's strike on the scene (a verdict's ``struck``) as one short line:
     the strongest link-body strike with its force, and how many more there were."""
     strikes = (struck.get("measures") or {}).get("struck") or []
     if not strikes:
         return f"struck: {_with_unit(struck.get('brief'), struck.get('unit'))}"
-    top, more = strikes[0], len(strikes) - 1
+    top = strikes[0]
     return (f"struck: {top['link']} against {top['body']} with {top['force_n']:.0f} N"
-            + (f" ({more} more link-body contact{'s' * (more > 1)})" if more else ""))
+            + more_strikes(strikes))
 
 
 def verdict_lines(verdict: Any) -> list[str]:
@@ -426,5 +435,4 @@ def jsonable(value: Any) -> Any:
 
 __all__ = ["PHASES", "REQUIRED_KEYS", "TRIAL_OUTCOMES", "TrialRecord", "as_record", "cell_text",
            "lengths_in_mm", "limit_words", "measure_words", "measured", "measured_fields",
-           "reason_text", "trial_columns",
-           "verdict_lines", "verdict_words"]
+           "more_strikes", "reason_text", "trial_columns", "verdict_lines", "verdict_words"]

@@ -3,7 +3,7 @@
 The formulas of RoboToolBench (Gao et al., "VLMgineer: Vision Language Models as
 Robotic Toolsmiths", arXiv 2507.12644; its environments' ``reward()`` methods, MIT),
 written generically and term by term, so that a world's ``tasks.toml`` sets every
-constant (:mod:`creative_py.backends.pybullet.oracles` registers them as oracle kinds;
+constant (:mod:`creative_py.world.oracles` registers them as oracle kinds;
 docs/robotoolbench.md says which task uses which). Each function returns the reward and
 its terms by name (JSON-ready numbers), the terms a report shows and a test checks.
 

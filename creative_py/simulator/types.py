@@ -47,7 +47,7 @@ _RELATIONS = {"<": lambda a, b: a < b, "<=": lambda a, b: a <= b,
 class Verdict:
     """A measured verdict: what the physics measured and the threshold it was judged by.
 
-    Every oracle (the pybullet backend's: :mod:`creative_py.backends.pybullet.oracles`) and every
+    Every oracle (the world files' kinds: :mod:`creative_py.world.oracles`) and every
     guard that stops a motion gives one, so a failure says how far it was from success,
     in the world's units.
 

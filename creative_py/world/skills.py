@@ -193,7 +193,7 @@ the tool kinds' grasps, by option name, unless the primitive bounds it itself
 may be negative, a grasp's may not); a ``steps`` option must be a whole number, an
 option whose default is true or false (``posture_search``, ``perceive``, ``by_hand``,
 ``park_robot``) must be true or false. The loader checks every skill's options in
-every variant and location (:func:`creative_py.backends.pybullet.world.check_values`), so that no
+every variant and location (:func:`creative_py.world.read.check_values`), so that no
 number of ``case.toml`` makes a motion or a wait run without end."""
 
 

@@ -127,8 +127,8 @@ def test_the_shipped_worlds_lie_inside_every_bound():
 def test_every_option_of_every_primitive_and_oracle_has_bounds():
     """A new numeric option without bounds would let a number run the physics without
     end: each option is a flag, a word, or bounded; each default lies inside."""
-    from creative_py.backends.pybullet.oracles import ORACLES
-    from creative_py.backends.pybullet.oracles import OPTION_BOUNDS as ORACLE_BOUNDS
+    from creative_py.world.oracles import ORACLES
+    from creative_py.world.oracles import OPTION_BOUNDS as ORACLE_BOUNDS
     from creative_py.world.skills import OPTION_BOUNDS, SKILLS, option_flags
 
     flags = option_flags()

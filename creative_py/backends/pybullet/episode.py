@@ -23,7 +23,7 @@ starts, the arm at its start posture. A skill runs the primitive its manifest en
 binds (:mod:`creative_py.backends.pybullet.primitives`); the pose skill's world target comes from
 ``pose_target``, a :data:`PoseTarget` the caller gives (the engine's pose solution),
 applied to what the robot perceives at that moment. :meth:`Episode.verdict` is what
-the oracle (:mod:`creative_py.backends.pybullet.oracles`) measures. A trial (the
+the oracle (:mod:`creative_py.world.oracles`) measures. A trial (the
 manifest's skills in order, the oracle asked, the outcome labelled) is run above the
 boundary, as every backend's: :func:`creative_py.simulator.trial.run_trial`. Nothing
 here looks at tool properties.
@@ -44,8 +44,9 @@ import pybullet as pb
 
 from creative_py.backends.pybullet.loads import ToolLoad, ToolLoadMonitor
 from creative_py.backends.pybullet.recorder import Recorder
-from creative_py.backends.pybullet.world import (World, object_name, resolve_options, resolve_start,
+from creative_py.world.read import (World, object_name, resolve_options, resolve_start,
                                    oracle_words)
+from creative_py.records.trial import more_strikes
 from creative_py.simulator.types import (Fact, Observation, PoseTarget, SkillOutcome, Verdict,
                                          pose_numbers)
 from creative_py.world_files import PhysicsSettings, WorldFileError
@@ -188,7 +189,6 @@ class Episode:
             # Where the robot's own links strike a body the scene says they must keep
             # clear of ([robot] keep_clear; a skill's ``struck``).
             self.robot.watch_strikes({self.bodies[n].id: n for n in w.scene.robot.keep_clear})
-        self.strike_arm = self.robot
         # Where the tracked objects start (an oracle measures how far they moved).
         self.start_centres = {n: self.true_centre(n) for n, _ in self.perceived}
         # And every movable body's (a reward counting bodies nobody tracks reads them).
@@ -322,8 +322,8 @@ class Episode:
         if monitor is not None:
             # The largest contact force on the tool while it acts (sim/loads.py).
             monitor.start()
-        if self.strike_arm is not None:
-            self.strike_arm.take_strikes()  # from this skill on
+        if self.robot is not None:
+            self.robot.take_strikes()  # from this skill on
         try:
             res = self.run_primitive(skill.primitive, pose, **{**skill.options, **options})
         finally:
@@ -347,22 +347,21 @@ class Episode:
         strongest strike in words (which link struck which body, where, how hard),
         every strike in ``measures["struck"]`` and the pairs in
         ``measures["touching"]``."""
-        if self.strike_arm is None:
+        if self.robot is None:
             return None
-        strikes = self.strike_arm.take_strikes()
+        strikes = self.robot.take_strikes()
         if not strikes:
             return None
         top = strikes[0]
         x, y, z = top["point"]
-        more = len(strikes) - 1
         detail = (f"the robot's {top['link']} struck {top['body']} at ({x:.3f}, {y:.3f}, "
-                  f"{z:.3f}) m with {top['force_n']:.0f} N"
-                  + (f" ({more} more link-body contact{'s' * (more > 1)})" if more else "")
+                  f"{z:.3f}) m with {top['force_n']:.0f} N" + more_strikes(strikes)
                   + ": the arm, not the tool, met the scene")
         touching = sorted({f"{s['link']} against {s['body']}" for s in strikes})
+        keep_clear = ", ".join(self.world.scene.robot.keep_clear)
         return Verdict("robot strike force", top["force_n"], 0.0, "N", "<=", False,
-                       threshold_name="robot links strike no scene body", detail=detail,
-                       measures={"struck": strikes, "touching": touching})
+                       threshold_name=f"robot links strike none of {keep_clear}",
+                       detail=detail, measures={"struck": strikes, "touching": touching})
 
     def _name_touching(self, stop: Verdict) -> Verdict:
         """Return a guard's verdict with the bodies it saw touching named (scene
@@ -496,6 +495,12 @@ class Episode:
         v, _ = pb.getBaseVelocity(self.body_id(name), physicsClientId=self.sim.client)
         return tuple(float(c) for c in v)
 
+    def joint_angle(self, name: str) -> float | None:
+        """Return the angle (rad) of a jointed body's joint from its sensor (a door's: 0
+        is closed), or None for a body without one."""
+        angle = getattr(self.bodies.get(name), "angle", None)
+        return float(angle(self.sim)) if callable(angle) else None
+
     def truth(self) -> dict[str, tuple[float, float, float, float]]:
         """Return ground-truth ``name -> (x, y, z, yaw)`` of the tracked objects and the
         tool (its frame), for error reports only."""
@@ -511,7 +516,7 @@ class Episode:
     def verdict(self) -> Verdict:
         """Return the oracle's measured verdict on the simulated state: whether the goal
         holds, the quantity measured and the threshold it was judged by
-        (:mod:`creative_py.backends.pybullet.oracles`)."""
+        (:mod:`creative_py.world.oracles`)."""
         from dataclasses import replace
 
         spec = self.world.oracle

@@ -281,7 +281,7 @@ def load_world(manifest: Any) -> Any:
     a clip camera; connect to the arm (:func:`connection`). Raise WorldFileError for a
     case that binds a primitive this backend does not run, an oracle that reads an
     object it does not follow (or a velocity), a bad profile, or an absent arm."""
-    from creative_py.backends.ros.twin import read_world
+    from creative_py.world.read import load_world as read_world
 
     profile_name(manifest)  # no robot: one line naming the case file
     world = read_world(manifest)

@@ -94,7 +94,7 @@ def unjudged_oracle(world: Any) -> list[str]:
     context and the tool alone (its twin's other bodies stay where the scene put them)
     and measures no velocity. Checked for the demonstration's variant, location and
     tool; each line names ``tasks.toml`` and the field."""
-    from creative_py.backends.ros.twin import object_name, oracle_reads
+    from creative_py.world.read import object_name, oracle_reads
 
     m, demo = world.manifest, world.manifest.demonstration
     where = f"{world.directory / 'tasks.toml'}: field 'oracle'"

@@ -740,7 +740,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     if not args.seconds > 0:
         print(f"{prog}: option --seconds: must be > 0, got {args.seconds}", file=sys.stderr)
         return 2
-    from creative_py.backends.pybullet import load_world, open_episode
+    from creative_py.backends.pybullet import open_episode
+    from creative_py.world.read import load_world
     from creative_py.case import get_case
 
     try:  # every input is checked before ROS or the physics start

@@ -2,16 +2,14 @@
 
 An arm over ROS 2 tells the learner its joint states and the tracked objects' poses,
 nothing else. What the learner computes from them it computes on a model of the world
-files and of the robot's URDF, and that model is the pybullet backend's, in DIRECT
-clients of the learner's own process whose physics never runs:
+(read by :mod:`creative_py.world`, as for every backend) and of the robot's URDF, and
+that model is the pybullet backend's, in DIRECT clients of the learner's own process
+whose physics never runs:
 
-* :func:`read_world`: the world files read into the pybullet backend's ``World`` (the
-  twin below is built from it, so its scene, primitives and oracle are the ones the
-  world files describe for every backend that builds them);
-* :data:`TwinEpisode`: the pybullet backend's episode of that world, which
+* :data:`TwinEpisode`: the pybullet backend's episode of the world, which
   :class:`~creative_py.backends.ros.episode.RosEpisode` extends: its tracked bodies
-  follow the pose topics, its arm the joint states; the pybullet backend's primitives,
-  perception and oracle then run unchanged on what the topics gave;
+  follow the pose topics, its arm the joint states; the pybullet backend's primitives
+  and perception and the world's oracle then run unchanged on what the topics gave;
 * :func:`kinematics_arm`, :func:`kinematics_model`, :func:`base_pose`: the robot's
   kinematics from the profile's URDF (IK, forward kinematics), the base where a world
   places it;
@@ -24,30 +22,23 @@ This module is the one place of the learner's side that imports the pybullet bac
 (the stand-in's is :mod:`.standin`, which serves a pybullet scene behind the arm's
 interface): docs/architecture.md section 3 states the rule, and
 ``tests/python/architecture/test_layers.py`` holds every other module of this package to
-its row. Nothing here reads a world file or a profile itself: the readers are the
-pybullet backend's and :mod:`creative_py.robots`.
+its row. Nothing here reads a world file or a profile: the readers are
+:mod:`creative_py.world` and :mod:`creative_py.robots`.
 """
 
 from __future__ import annotations
 
 from typing import Any
 
-from creative_py.backends.pybullet import load_world, tool_rests
+from creative_py.backends.pybullet import tool_rests
 from creative_py.backends.pybullet.arm import Arm, base_pose, kinematics_model
 from creative_py.backends.pybullet.bodies import local_extents, set_frame_pose
 from creative_py.backends.pybullet.core import Sim
 from creative_py.backends.pybullet.episode import Episode as TwinEpisode
-from creative_py.backends.pybullet.world import object_name, oracle_reads
 from creative_py.world_files import PhysicsSettings
 
 __all__ = ["TwinEpisode", "base_pose", "kinematics_arm", "kinematics_model", "local_extents",
-           "object_name", "oracle_reads", "read_world", "set_frame_pose", "tool_rests"]
-
-
-def read_world(manifest: Any) -> Any:
-    """Return the case's world as its files describe it for ``manifest.robot`` (the
-    pybullet backend's reader: :func:`creative_py.backends.pybullet.load_world`)."""
-    return load_world(manifest)
+           "set_frame_pose", "tool_rests"]
 
 
 def kinematics_arm(profile: Any, base: Any = None) -> tuple[Any, Any]:

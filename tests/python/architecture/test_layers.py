@@ -290,7 +290,7 @@ def test_the_learning_loop_imports_no_simulator_backend() -> None:
 
 def test_no_backend_imports_another_but_the_two_modules_the_table_names() -> None:
     # Whatever the table says: a backend's package imports no other backend's, except the
-    # ROS 2 backend's learner's model (twin.py: the pybullet backend's world, episode and
+    # ROS 2 backend's learner's model (twin.py: the pybullet backend's episode and
     # kinematics, whose physics never runs) and its stand-in (standin.py: the pybullet
     # backend's scene served behind an arm's interface, a process of its own).
     backends = backend_packages()

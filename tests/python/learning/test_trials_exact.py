@@ -438,13 +438,22 @@ def test_an_unlabelled_trial_in_the_physics_without_a_folder_or_clips(hook):
     # predates it); the outcome and its reason stay the guard's.
     struck = rec.verdict["struck"]["measures"]["struck"]
     assert {s["body"] for s in struck} <= {"riser1", "tube1"} and struck
+    # The strike's force is the contact solver's (its last bits the CPU's): said, not pinned.
+    force = f"{rec.verdict['struck']['value']:.0f}"
     assert all(s["force_n"] > 0 for s in struck)
+    # The limit names the bodies the scene says the robot must keep clear of; the
+    # strike's words count the other contacts as its short line does (more_strikes).
+    assert rec.verdict["struck"]["threshold_name"] == "robot links strike none of tube1, riser1"
+    head, _, tail = rec.verdict["struck"]["text"].partition(" at (")
+    assert head == (f"robot strike force {rec.verdict['struck']['value']:.1f} N (needs <= "
+                    "0.0 N, robot links strike none of tube1, riser1); the robot's "
+                    "right_gripper_base_link struck tube1")
+    assert tail.endswith(f") m with {force} N (3 more link-body contacts): the arm, not the "
+                         "tool, met the scene")
     assert dataclasses.replace(_as_recorded(rec, one), decision_time_s=0.0,
                                wall_time_s=0.0) == (
         dataclasses.replace(one, phase="eval", hs=hs, hg=hg, vs_count=None,
                             vs_count_exact=None, decision_time_s=0.0, wall_time_s=0.0))
-    # The strike's force is the contact solver's (its last bits the CPU's): said, not pinned.
-    force = f"{rec.verdict['struck']['value']:.0f}"
     assert [line.replace(f"with {force} N", "with F N") for line in lines] == [
         "#1   EVAL hook_a1        loc 1  blocked     tested handle_length(hook_a1,medium)  "
         "because position_tool: gripper lagged its target by 3.0 cm at (0.978, -0.250, "

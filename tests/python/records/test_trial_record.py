@@ -198,6 +198,20 @@ def test_the_reason_cell_and_the_short_lines_carry_the_measured_verdict():
     assert "verdict" not in old.to_dict()
 
 
+def test_a_strike_says_how_many_link_body_contacts_besides_the_strongest():
+    # One writer of these words: the strike's line here and the pybullet episode's
+    # detail of a strike (its reason) both take them from more_strikes.
+    from creative_py.records.trial import more_strikes, struck_line
+
+    strike = {"link": "hand", "body": "tube1", "force_n": 331.2, "point": [0.85, -0.24, 0.0]}
+    assert [more_strikes([strike] * n) for n in (0, 1, 2, 4)] == [
+        "", "", " (1 more link-body contact)", " (3 more link-body contacts)"]
+    assert struck_line({"measures": {"struck": [strike] * 4}}) == (
+        "struck: hand against tube1 with 331 N (3 more link-body contacts)")
+    assert struck_line({"measures": {"struck": [strike]}}) == (
+        "struck: hand against tube1 with 331 N")
+
+
 def test_lengths_and_limits_read_as_words_with_one_unit():
     from creative_py.records.trial import lengths_in_mm, limit_words, measure_words
 

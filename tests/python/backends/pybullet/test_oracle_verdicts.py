@@ -13,7 +13,7 @@ from _poses import poses
 from creative_py.case import get_case
 from creative_py.backends.pybullet import load_world, open_episode
 from creative_py.simulator.trial import run_trial
-from creative_py.backends.pybullet.oracles import ORACLES
+from creative_py.world.oracles import ORACLES
 from creative_py.simulator.types import Verdict
 
 

@@ -13,7 +13,7 @@ import math
 import pytest
 
 from creative_py.simulator import rewards
-from creative_py.backends.pybullet.oracles import ORACLES, OPTION_BOUNDS
+from creative_py.world.oracles import ORACLES, OPTION_BOUNDS
 
 TOL = 1e-9
 

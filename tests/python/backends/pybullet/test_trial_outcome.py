@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 import pytest
-from _hook_runs import hook_world
+from _hook_runs import hook_trial, hook_world
 from _poses import poses
 
 from creative_py.simulator import TRIAL_OUTCOMES, SkillOutcome
@@ -36,9 +36,7 @@ def test_a_blocked_trial_keeps_what_the_robot_saw_where_it_stopped():
     # The short handle at the pose the learning runs test it with (dx 0.0375 m): its
     # wrist jams at the mouth past the tracking guard whatever the robot model (at the
     # demonstration's dx 0.03 the lag straddles the guard).
-    world = hook_world()
-    result = run_trial(world, "hook_a1", "standard", 1, pose=(0.0375, 0.0, 0.0),
-                       pose_target=poses(world))
+    result = hook_trial("hook_a1", "standard", 1, pose=(0.0375, 0.0, 0.0))
     assert result.outcome == "blocked", result.reason
     kinds = {f[0] for f in result.facts_before}
     assert {"pose", "object_kind"} <= kinds       # the task and the catalogue
@@ -48,8 +46,7 @@ def test_a_blocked_trial_keeps_what_the_robot_saw_where_it_stopped():
 
 @pytest.mark.sim
 def test_a_finished_trial_keeps_what_the_robot_saw_before_the_tool_action():
-    world = hook_world()
-    result = run_trial(world, "hook_a2", "standard", 1, pose_target=poses(world))
+    result = hook_trial("hook_a2", "standard", 1)
     assert result.outcome == "success" and result.reason == "goal reached"
     assert ("held", "hook_a2") in result.facts_before
     assert result.tool_load is not None and result.tool_load["max_force_n"] > 0
@@ -83,9 +80,7 @@ def test_a_hand_that_strikes_the_tube_makes_the_trial_blocked_not_the_tool_s_fai
 @pytest.mark.sim
 def test_the_baxter_s_trials_of_the_demonstration_pose_strike_nothing():
     # The same tool at the demonstration's pose on the Baxter: its hand stays clear.
-    world = hook_world()
-    result = run_trial(world, "hook_b3", "standard", 1, pose=(0.03, 0.0, 0.0),
-                       pose_target=poses(world))
+    result = hook_trial("hook_b3", "standard", 1, pose=(0.03, 0.0, 0.0))
     assert result.outcome == "success", result.reason
     assert "struck" not in result.verdict
 

@@ -2,7 +2,7 @@
 
 The ``[oracle]`` table of a world's ``tasks.toml`` names a kind of :data:`ORACLES` and
 its options; objects are named by role (``target``, ``tool``, ``context``) or by name,
-numbers may be scene expressions (:mod:`creative_py.backends.pybullet.scene`)::
+numbers may be scene expressions (:mod:`creative_py.world.expressions`)::
 
     [oracle]                      # the cube is out: its centre in front of the mouth
     kind = "below"
@@ -18,7 +18,13 @@ numbers may be scene expressions (:mod:`creative_py.backends.pybullet.scene`)::
     fact = "door_held"
 
 An oracle is called as ``judge(ep, options)`` with the running
-:class:`~creative_py.backends.pybullet.episode.Episode` and returns a
+episode of a backend that builds the world (the pybullet backend's
+:class:`~creative_py.backends.pybullet.episode.Episode`, the ROS 2 backend's twin of it),
+which measures what the judges read: ``object_name(role_or_name)``,
+``true_centre(name)`` (x, y, z, yaw), ``start_centres`` (name -> the centre at the
+episode's start), ``linear_velocity(name)``, ``joint_angle(name)`` (rad, or None) and
+``records`` (name -> a released joint's record: ``final_angle``,
+``touched``, ``closed_after_contact_deg``, ``contact_angle``). It returns a
 :class:`~creative_py.simulator.types.Verdict`: whether the goal holds, the quantity it
 measured and the threshold it judged it by (the cube's centre against the mouth and how
 far the cube moved; the door's angle against the held limit and how far it closed after
@@ -157,9 +163,8 @@ def joint_held(ep: Any, opts: Mapping[str, Any]) -> Verdict:
     measures: dict[str, Any] = {"released": record is not None,
                                 "max_close_deg": max_close}
     if record is None:
-        body = ep.bodies.get(name)
-        angle = getattr(body, "angle", None)
-        value = math.degrees(angle(ep.sim)) if callable(angle) else None
+        angle = ep.joint_angle(name)
+        value = None if angle is None else math.degrees(angle)
         return Verdict(f"{name} angle", value, min_open, "deg", ">=", False,
                        detail="not released", measures=measures, note="not released")
     value = math.degrees(record.final_angle)
@@ -320,7 +325,7 @@ def fraction_within(ep: Any, opts: Mapping[str, Any]) -> Verdict:
 
 # ------------------------------------------------------------------ load-time checks
 # Each kind's check of its resolved options against the scene (the loader runs it for
-# every variant and location, :func:`creative_py.backends.pybullet.world.check_values`):
+# every variant and location, :func:`creative_py.world.read.check_values`):
 # what its judge would otherwise fail on mid-run, or measure without meaning.
 
 def _vector(opts: Mapping[str, Any], option: str, lengths: tuple[int, ...],
@@ -505,7 +510,7 @@ OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
     "min_open_deg": (0.0, 180.0, "deg"),
 }
 """The bounds ``(low, high, unit)`` of the oracles' numeric options, by name (checked by
-the loader in every variant and location, :func:`creative_py.backends.pybullet.world.check_values`)."""
+the loader in every variant and location, :func:`creative_py.world.read.check_values`)."""
 
 
 @dataclass(frozen=True)

@@ -1,4 +1,4 @@
-"""A case's simulated world: the manifest, the catalogue of tools and the scene files.
+"""A case's world as its files describe it, for every backend that builds the scene.
 
 :func:`load_world` reads a world folder (``worlds/<folder>/`` or a copy) for a
 :class:`~creative_py.case.CaseManifest`; :meth:`World.with_tool` adds a created tool;
@@ -17,19 +17,19 @@ The folder holds, besides ``case.toml``:
     robot's own links must not strike) and ``[robot.start]`` (the
     gripper's start ``position``, ``gripper`` attitude ``forward`` or ``down`` at
     ``angle`` rad, ``keep`` IK candidates, optional ``via`` pose whose posture seeds
-    the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.backends.pybullet.scene`);
+    the search); ``[values]`` and ``[[body]]`` (:mod:`creative_py.world.bodies`);
     ``[tool_start]`` (where the tool lies: the fields of its kind,
-    :mod:`creative_py.backends.pybullet.tools`); ``[perception]`` (noise and the
+    :mod:`creative_py.world.handlings`); ``[perception]`` (noise and the
     ``[[perception.object]]`` the cameras track); ``[[camera]]``; an optional
     ``[video]`` (the fixed camera of the trial clips and their ``fps``,
-    :mod:`creative_py.backends.pybullet.recorder`).
+    :class:`creative_py.world.cameras.VideoSpec`).
 ``objects.toml``
     The catalogue: one table per object in the array named by the manifest's
     ``roles.tools`` (``[[tool]]``, ``[[object]]``), with the spec fields of
     :mod:`creative_py.mesh.spec`, its ``set`` and ``friction``.
 ``tasks.toml``
     ``[[location]]`` (``set = {...}``: scene values of the target's predefined
-    locations) and ``[oracle]`` (:mod:`creative_py.backends.pybullet.oracles`).
+    locations) and ``[oracle]`` (:mod:`creative_py.world.oracles`).
 
 Every number of the scene, the start, the skills' options and the oracle may be a
 scene expression; the loader resolves them all for every variant and location, so a
@@ -40,9 +40,9 @@ Every number has finite bounds, so that no value makes the physics run without e
 ``settle_time`` 0-10 s (:data:`SETTLE_TIME_S`); ``[robot]`` ``speed`` 0.001-2 m/s,
 ``turn_speed`` 0.001-10 rad/s, ``steps_per_waypoint`` 1-1000, ``keep`` 1-100; the
 start poses' and ``[tool_start]``'s numbers within +-10 m (rad); ``depth_sigma_m``
-0-0.1 m; an object's ``friction`` 0-10; the bodies' (:mod:`creative_py.backends.pybullet.scene`);
-the skills' options (:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the
-oracle's (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`).
+0-0.1 m; an object's ``friction`` 0-10; the bodies' (:mod:`creative_py.world.bodies`);
+the skills' options (:data:`creative_py.world.skills.OPTION_BOUNDS`) and the
+oracle's (:data:`creative_py.world.oracles.OPTION_BOUNDS`).
 """
 
 from __future__ import annotations
@@ -106,7 +106,7 @@ class SceneSpec:
     perceived: tuple[PerceivedObject, ...]
     cameras: tuple
     video: Any = None
-    """The clips' camera and frame rate (:class:`~creative_py.backends.pybullet.recorder.VideoSpec`):
+    """The clips' camera and frame rate (:class:`~creative_py.world.cameras.VideoSpec`):
     the ``[video]`` table, else the first camera at 5 frames per second, else None."""
 
 
@@ -164,7 +164,7 @@ class World(CatalogueWorld):
     @property
     def video(self) -> Any:
         """Return the camera of the trial clips (``scene.video``,
-        :class:`~creative_py.backends.pybullet.recorder.VideoSpec`), or None."""
+        :class:`~creative_py.world.cameras.VideoSpec`), or None."""
         return self.scene.video
 
     def with_tool(self, spec: Any, urdf: Path | None = None) -> "World":
@@ -270,7 +270,8 @@ SIGMA_M = (0.0, 0.1)
 """The bounds of ``[perception] depth_sigma_m``, metres."""
 
 
-def _read_robot(rf: Fields, profile: Any) -> tuple[RobotSpec, dict[str, Any]]:
+def _read_robot(rf: Fields, profile: Any, bodies: Sequence[str]
+                ) -> tuple[RobotSpec, dict[str, Any]]:
     """Read ``[robot]`` for the robot ``profile``: ``speed`` (m/s) within
     :data:`SPEED_M_S`, ``turn_speed`` (rad/s) within :data:`TURN_SPEED_RAD_S`,
     ``steps_per_waypoint`` within :data:`STEPS_PER_WAYPOINT`, ``[robot.start] keep``
@@ -291,18 +292,20 @@ def _read_robot(rf: Fields, profile: Any) -> tuple[RobotSpec, dict[str, Any]]:
         if name not in known:
             raise rf.error(name, f"names no robot profile of robots/ "
                            f"({', '.join(sorted(known))}) and no field of [robot]")
-    own = _read_robot_fields(rf, None, placement=False)  # [robot]'s own errors first
+    own = _read_robot_fields(rf, None, bodies, placement=False)  # [robot]'s own errors first
     for name in placed:
-        got = _read_robot_fields(rf.table(name), rf, placement=True)
+        got = _read_robot_fields(rf.table(name), rf, bodies, placement=True)
         if name == profile.name:
             own = got
     spec, values = own
     return replace(spec, profile=profile), values
 
 
-def _read_robot_fields(rf: Fields, parent: Fields | None,
+def _read_robot_fields(rf: Fields, parent: Fields | None, bodies: Sequence[str],
                        placement: bool) -> tuple[RobotSpec, dict[str, Any]]:
-    """Read one ``[robot]`` table (or a ``[robot.NAME]`` placement over ``parent``)."""
+    """Read one ``[robot]`` table (or a ``[robot.NAME]`` placement over ``parent``);
+    ``bodies``: the names of the scene's ``[[body]]`` tables (``keep_clear`` names
+    some)."""
     def pick(name: str, default: Any) -> Any:
         if parent is not None and not rf.has(name):
             return parent.data.get(name, default)
@@ -317,6 +320,10 @@ def _read_robot_fields(rf: Fields, parent: Fields | None,
     keep_clear = rf.raw("keep_clear", pick("keep_clear", []))
     if not (isinstance(keep_clear, list) and all(isinstance(n, str) for n in keep_clear)):
         raise rf.error("keep_clear", f"must be a list of [[body]] names, got {keep_clear!r}")
+    for name in keep_clear:
+        if name not in bodies:
+            raise rf.error("keep_clear", f"{name!r} is no [[body]] of the scene "
+                           f"({', '.join(bodies)}){did_you_mean(name, bodies)}")
     base = None
     values: dict[str, Any] = {}
     if placement:
@@ -360,7 +367,8 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
 
     f = Fields(load_toml(path), path)
     settle = f.float("settle_time", minimum=SETTLE_TIME_S[0], maximum=SETTLE_TIME_S[1])
-    robot, placed_values = _read_robot(f.table("robot"), profile)
+    bodies = read_bodies(f.tables("body"))
+    robot, placed_values = _read_robot(f.table("robot"), profile, [b.name for b in bodies])
     vf = f.table("values", {})
     values = dict(vf.data)
     for k in values:
@@ -371,18 +379,6 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
             raise WorldFileError(f"{path}: field 'robot.{profile.name}.values.{k}': names no "
                                  f"value of [values]")
     values.update(placed_values)
-    bodies = read_bodies(f.tables("body"))
-    names = [b.name for b in bodies]
-    # Every [robot] table's keep_clear (lists of names: _read_robot_fields), whichever
-    # arm runs.
-    rt = f.data["robot"]
-    for field, listed in [("robot.keep_clear", rt.get("keep_clear", [])),
-                          *((f"robot.{k}.keep_clear", v["keep_clear"]) for k, v in rt.items()
-                            if isinstance(v, dict) and "keep_clear" in v)]:
-        for name in listed:
-            if name not in names:
-                raise WorldFileError(f"{path}: field '{field}': {name!r} is no [[body]] of "
-                                     f"the scene ({', '.join(names)}){did_you_mean(name, names)}")
     tf = f.table("tool_start")
     tool_start: dict[str, Any] = {}
     for kind in sorted(kinds):
@@ -425,7 +421,7 @@ def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
 
 
 def _read_tasks(path: Path):
-    from creative_py.backends.pybullet.oracles import ORACLES, OracleSpec
+    from creative_py.world.oracles import ORACLES, OracleSpec
 
     f = Fields(load_toml(path), path)
     locations = []
@@ -482,7 +478,7 @@ def world_robot(manifest: CaseManifest) -> Any:
     name = manifest.robot
     if not name:
         raise WorldFileError(f"{manifest.folder / 'case.toml'}: field 'robot': missing (the "
-                             "pybullet backend needs the case's robot profile)")
+                             "scene's robot is a robot profile's)")
     return load_profile(name)
 
 
@@ -532,8 +528,8 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
 
 def _scene_names(world: World, bodies: dict[str, Any], tool: str) -> Any:
     """Return what an oracle's options may name in an episode with ``bodies`` and
-    ``tool`` (:class:`creative_py.backends.pybullet.oracles.SceneNames`)."""
-    from creative_py.backends.pybullet import oracles
+    ``tool`` (:class:`creative_py.world.oracles.SceneNames`)."""
+    from creative_py.world import oracles
 
     manifest = world.manifest
     started = {object_name(manifest, p.name, tool) for p in world.scene.perceived}
@@ -546,7 +542,7 @@ def oracle_reads(world: World, variant: str, location: int, tool: str
                  ) -> tuple[list[str], bool]:
     """Return the objects the world's oracle reads in an episode of ``variant``,
     ``location`` and ``tool`` (in order), and whether it reads a velocity."""
-    from creative_py.backends.pybullet import oracles
+    from creative_py.world import oracles
     from creative_py.backends.pybullet.scene import make_bodies
 
     ns = world.namespace(variant, location, tool)
@@ -561,15 +557,15 @@ def check_values(world: World, variant: str, location: int, tool: str) -> None:
     fails or lies outside its bounds.
 
     Bounded, each error naming the file and the field: the bodies' numbers
-    (:mod:`creative_py.backends.pybullet.scene`), every number of ``[tool_start]`` and of the robot's
+    (:mod:`creative_py.world.bodies`), every number of ``[tool_start]`` and of the robot's
     start and via poses (within +-:data:`EXTENT_M` m or rad), the skills' options
-    (:func:`creative_py.backends.pybullet.primitives.option_bound`: the primitive's own
-    bound, else :data:`~creative_py.backends.pybullet.primitives.OPTION_BOUNDS`) and the oracle's
-    (:data:`creative_py.backends.pybullet.oracles.OPTION_BOUNDS`). Beyond bounds, what
+    (:func:`creative_py.world.skills.option_bound`: the primitive's own
+    bound, else :data:`~creative_py.world.skills.OPTION_BOUNDS`) and the oracle's
+    (:data:`creative_py.world.oracles.OPTION_BOUNDS`). Beyond bounds, what
     would fail or mean nothing mid-run: the skills' options by their primitive
-    (:func:`creative_py.backends.pybullet.primitives.check_options`: a list's length, a
+    (:func:`creative_py.world.skills.check_options`: a list's length, a
     zero direction), the oracle's by its kind against the scene's objects and roles
-    (:func:`creative_py.backends.pybullet.oracles.check_options`: names that resolve,
+    (:func:`creative_py.world.oracles.check_options`: names that resolve,
     vector lengths, axes, box order, non-zero scales).
     """
     from creative_py.backends.pybullet.scene import make_bodies
@@ -637,7 +633,7 @@ def _check_oracle_options(world: World, ns: Namespace, bodies: dict[str, Any], t
     """Raise :class:`WorldFileError` unless the oracle's options lie within their bounds
     and are valid for its kind against the objects and roles of an episode with
     ``bodies`` and ``tool``."""
-    from creative_py.backends.pybullet import oracles
+    from creative_py.world import oracles
 
     words = oracle_words(world)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
@@ -701,7 +697,7 @@ def check_bound(value: Any, bound: tuple[float, float, str], where: str,
 
 def oracle_words(world: World) -> set[str]:
     """Return the oracle options that are words (object names, an axis), not numbers."""
-    from creative_py.backends.pybullet.oracles import ORACLES
+    from creative_py.world.oracles import ORACLES
 
     o = ORACLES[world.oracle.kind]
     return {o.subject, *o.words}
