@@ -30,7 +30,8 @@ from recording import add_output_options, write_figures
 
 from creative_py.perception import estimate_objects
 from creative_py.backends.pybullet.bodies import frame_pose, set_frame_pose
-from creative_py.backends.pybullet.camera import CameraSpec, capture
+from creative_py.backends.pybullet.camera import capture
+from creative_py.world.cameras import CameraSpec
 
 ROOT = Path(__file__).resolve().parents[1]
 log = logging.getLogger("bench.perception")

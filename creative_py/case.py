@@ -33,7 +33,7 @@ world folder with a ``case.toml`` manifest, in one schema (``docs/new-case.md``)
 
 The skills' ``options`` are checked where they are resolved, in every variant and
 location (:func:`creative_py.world.read.check_values`, the bounds of
-:data:`creative_py.backends.pybullet.primitives.OPTION_BOUNDS`).
+:data:`creative_py.world.skills.OPTION_BOUNDS`).
 
 Nothing here knows any particular case: :func:`load_cases` finds every manifest under
 ``worlds/``, :func:`get_case` returns one by id. Errors name the file and the field

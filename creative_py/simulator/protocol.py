@@ -39,8 +39,8 @@ the result's ``verdict`` data)."""
 
 
 class ClipCamera(Protocol):
-    """The camera of a world's video clips (pybullet: :class:`creative_py.backends.pybullet.recorder.
-    VideoSpec`); the learning loop reads only its frame rate."""
+    """The camera of a world's video clips (pybullet: :class:`creative_py.world.cameras.VideoSpec`);
+    the learning loop reads only its frame rate."""
 
     @property
     def fps(self) -> float:

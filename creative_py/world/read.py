@@ -175,9 +175,9 @@ class World(CatalogueWorld):
         when given, otherwise from the spec's parts. It takes the friction of the
         catalogue's first object (the same printed material).
         """
-        from creative_py.backends.pybullet.tools import tool_kind
+        from creative_py.world.handlings import handling
 
-        tool_kind(spec)  # a kind this backend holds
+        handling(spec)  # a kind the simulator holds
         return super().with_tool(spec, urdf)
 
     def listing(self) -> dict[str, Any]:
@@ -231,7 +231,12 @@ class World(CatalogueWorld):
 
     def namespace(self, variant: str, location: int, tool: str):
         """Return the scene values of one episode (variant and location applied)."""
+<<<<<<< HEAD
         from creative_py.backends.pybullet.tools import tool_kind
+=======
+        from creative_py.backends.pybullet.scene import Namespace
+        from creative_py.world.handlings import quantities
+>>>>>>> skills-merged
 
         v = self.manifest.variant(variant)
         if not (isinstance(location, int) and 1 <= location <= len(self.location_sets)):
@@ -239,7 +244,7 @@ class World(CatalogueWorld):
                            f"1..{len(self.location_sets)}")
         spec = self.item(tool).spec
         ns = Namespace(self.scene.values, {b.name: b.fields for b in self.scene.bodies},
-                       tool_kind(spec).quantities(spec), str(self.directory / "scene.toml"))
+                       quantities(spec), str(self.directory / "scene.toml"))
         ns.override(v.set, f"{self.manifest.folder / 'case.toml'}: variant {v.name!r}: set")
         ns.override(self.location_sets[location - 1],
                     f"{self.directory / 'tasks.toml'}: location[{location - 1}]: set")
@@ -360,9 +365,15 @@ def _read_robot_fields(rf: Fields, parent: Fields | None, bodies: Sequence[str],
 
 def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
+<<<<<<< HEAD
     from creative_py.backends.pybullet.camera import cameras_from_tables
     from creative_py.backends.pybullet.recorder import VideoSpec
     from creative_py.backends.pybullet.tools import HANDLINGS
+=======
+    from creative_py.world.cameras import VideoSpec, cameras_from_tables
+    from creative_py.backends.pybullet.scene import read_bodies
+    from creative_py.world.handlings import HANDLINGS
+>>>>>>> skills-merged
 
     f = Fields(load_toml(path), path)
     settle = f.float("settle_time", minimum=SETTLE_TIME_S[0], maximum=SETTLE_TIME_S[1])
@@ -381,7 +392,7 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     tf = f.table("tool_start")
     tool_start: dict[str, Any] = {}
     for kind in sorted(kinds):
-        for name, default in HANDLINGS[kind].START_FIELDS.items():
+        for name, default in HANDLINGS[kind].start_fields.items():
             if name not in tool_start:
                 tool_start[name] = tf.raw(name) if default is None else tf.raw(name, default)
     tf.done()
@@ -410,7 +421,7 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
 
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
-    from creative_py.backends.pybullet.tools import HANDLINGS
+    from creative_py.world.handlings import HANDLINGS
 
     def holds(spec: Any) -> Optional[str]:
         return (None if spec.HANDLING in HANDLINGS else
@@ -444,16 +455,16 @@ def _read_tasks(path: Path):
 
 
 def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
-    from creative_py.backends.pybullet.primitives import PRIMITIVES, REQUIRED
+    from creative_py.world.skills import REQUIRED, SKILLS
 
     path = manifest.folder / "case.toml"
     out = {}
     for i, s in enumerate(manifest.skills):
         where = f"{path}: field 'skill[{i}]"
-        if s.primitive not in PRIMITIVES:
+        if s.primitive not in SKILLS:
             raise WorldFileError(f"{where}.primitive': unknown primitive {s.primitive!r}; "
-                                 f"primitives: {', '.join(PRIMITIVES)}")
-        known = PRIMITIVES[s.primitive].options
+                                 f"primitives: {', '.join(SKILLS)}")
+        known = SKILLS[s.primitive].options
         for name in s.options:
             if name not in known:
                 raise WorldFileError(f"{where}.options.{name}': unknown option of "
@@ -596,7 +607,7 @@ def _check_start_poses(world: World, ns: Namespace, episode: str) -> None:
 def _check_skill_options(world: World, ns: Namespace, episode: str) -> None:
     """Raise :class:`WorldFileError` unless every skill's options are well typed, within
     their bounds and valid for their primitive."""
-    from creative_py.backends.pybullet import primitives
+    from creative_py.world import skills as primitives
 
     case_file = world.manifest.folder / "case.toml"
     flags = primitives.option_flags()

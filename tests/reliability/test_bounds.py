@@ -129,10 +129,10 @@ def test_every_option_of_every_primitive_and_oracle_has_bounds():
     end: each option is a flag, a word, or bounded; each default lies inside."""
     from creative_py.world.oracles import ORACLES
     from creative_py.world.oracles import OPTION_BOUNDS as ORACLE_BOUNDS
-    from creative_py.backends.pybullet.primitives import OPTION_BOUNDS, PRIMITIVES, option_flags
+    from creative_py.world.skills import OPTION_BOUNDS, SKILLS, option_flags
 
     flags = option_flags()
-    for p in PRIMITIVES.values():
+    for p in SKILLS.values():
         for name, default in p.options.items():
             own = p.bounds.get(name) or OPTION_BOUNDS.get(name)   # its own bounds first
             assert name in flags or own, (p.name, name)
@@ -142,7 +142,7 @@ def test_every_option_of_every_primitive_and_oracle_has_bounds():
     for o in ORACLES.values():
         for name in o.options:
             assert name in ORACLE_BOUNDS or name in {o.subject, *o.words}, (o.name, name)
-    own = [b for p in PRIMITIVES.values() for b in p.bounds.values()]
+    own = [b for p in SKILLS.values() for b in p.bounds.values()]
     assert all(math.isfinite(lo) and math.isfinite(hi)
                for lo, hi, _ in [*OPTION_BOUNDS.values(), *ORACLE_BOUNDS.values(), *own])
 

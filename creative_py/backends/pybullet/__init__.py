@@ -56,10 +56,11 @@ _import_pybullet_quietly()
 from creative_py.backends.pybullet.arm import check_profile
 from creative_py.backends.pybullet.core import display_reachable
 from creative_py.backends.pybullet.episode import Episode, open_episode, tool_rests
-from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
+from creative_py.backends.pybullet.recorder import Recorder
 from creative_py.world.read import World, load_world
 from creative_py.simulator.types import (SKILL_STATUSES, Fact, Observation, PoseTarget,
                                          SkillOutcome)
+from creative_py.world.cameras import VideoSpec
 
 
 def recorder(camera: VideoSpec) -> Recorder:

@@ -391,8 +391,7 @@ class Episode:
         scene's own facts (a target relative to a hinge, no rendering, no noise drawn).
         """
         from creative_py.backends.pybullet.primitives import primitive as lookup
-
-        from creative_py.backends.pybullet.primitives import REQUIRED
+        from creative_py.world.skills import REQUIRED
 
         prim = lookup(primitive)
         unknown = sorted(set(options) - set(prim.options))

@@ -1,50 +1,13 @@
-"""Skill primitives: the motions a manifest's ``[[skill]]`` binds by name.
+"""Skill primitives run in pybullet: the motions :mod:`creative_py.world.skills` defines.
 
-A skill of ``case.toml`` names a primitive of :data:`PRIMITIVES` and may set its
-options (``options = {...}``, numbers or scene expressions such as
-``"tube1.mouth_x - 0.05"``, see :mod:`creative_py.backends.pybullet.scene`). A primitive that takes
-the pose gets its world target from the engine's pose solution
-(:attr:`creative_py.backends.pybullet.episode.Episode.pose_target`), never from case arithmetic:
+Each primitive of :data:`creative_py.world.skills.SKILLS` (its options, their defaults
+and bounds, its world target: what a manifest's ``[[skill]]`` may bind) has its run
+function here; :data:`PRIMITIVES` pairs each schema with it, by the same names.
 
-==================== ========================= =============================================
-primitive            world target              what it does
-==================== ========================= =============================================
-``grasp``            -                         the tool's kind grasps it where it lies
-                                               (options of the kind: hook-like ``approach``
-                                               ``free_speed`` ``speed`` ``lift_to``; block
-                                               ``carry_z`` ``clearance`` ``gripper_yaw``)
-``insert_at_pose``   ``tip(X, Y, Roll)``       carry a hook-like tool into the context's
-                                               passage (a tube, the space under a shelf)
-                                               and put its prong centre at (X, Y), turned to
-                                               Roll; the arm's posture search is an option
-``place_on_floor``   ``place(X, Y, Heading)``  put the held tool down on the context's top
-                                               face, the target's holder swinging it clear
-``pull_along_axis``  -                         pull the held tool back along -x until its
-                                               working point passes ``until_x``, with a
-                                               sideways draw of ``lateral`` m first
-``push_along_axis``  -                         push the held tool along +x by ``distance``
-``lower_at_pose``    ``tip(X, Y, Roll)``       carry the held tool over the table, lower it
-                                               ``slide_from`` off the place and slide it in
-                                               until its working point is at (X, Y,
-                                               ``work_z``), turned to Roll (a pusher's head
-                                               round or behind what it will push)
-``sweep``            -                         move the held tool along ``direction`` (in
-                                               the table's plane) until its working point
-                                               reaches ``until`` along it, slowing over the
-                                               last ``ramp`` metres, then wait until what
-                                               it pushed is at rest
-``release_joint``    -                         release the target's held joint: its closer
-                                               acts for ``duration`` s (recorded for the
-                                               oracle)
-==================== ========================= =============================================
-
-The primitives that move a held tool under or into something (``insert_at_pose``,
-``pull_along_axis``) take a grasp-slip guard: with ``grasp_slip_max_rad`` or
-``grasp_slip_max_m`` above 0 (the default 0 turns it off), every guarded step compares
-the tool's pose with the pose the grasp holds it in (:func:`~creative_py.backends.pybullet.tools.grasp_slip`)
-and ends the motion ``blocked`` beyond either limit: a tool jammed against a static
-body twists in pybullet's soft grasp constraint while the gripper follows its
-commands, so the arm's tracking guard does not see it.
+The grasp-slip guard of the primitives that move a held tool under or into something
+(``insert_at_pose``, ``pull_along_axis``; :func:`slip_guard`) compares, at every
+guarded step, the tool's pose with the pose the grasp holds it in
+(:func:`~creative_py.backends.pybullet.tools.grasp_slip`).
 
 A primitive is called as ``run(ep, options, target)`` with the running
 :class:`~creative_py.backends.pybullet.episode.Episode` (typed ``Any`` here: this module must not
@@ -57,8 +20,8 @@ from __future__ import annotations
 
 import logging
 import math
-from dataclasses import dataclass, field
-from typing import Any, Callable, Mapping, Sequence
+from dataclasses import dataclass
+from typing import Any, Callable, Mapping
 
 import numpy as np
 import pybullet as pb
@@ -68,34 +31,47 @@ from creative_py.backends.pybullet.core import Pose
 from creative_py.simulator.types import SkillOutcome, Verdict
 from creative_py.backends.pybullet.tools import (HandleHeld, grasp_slip, prong_centre, prong_reach,
                                    roll_of, tool_orientation)
-from creative_py.world_files import OptionError, shown
+from creative_py.world.skills import SKILLS, SkillSchema
 
 
 log = logging.getLogger(__name__)
 
-REQUIRED = None
-"""An option without a default."""
-
-
 @dataclass(frozen=True)
 class Primitive:
-    """A registered primitive: its function, its options (``name -> default``), the
-    name of the world target it takes (``""`` for none), the bounds of those of its
-    options whose meaning is its own (``name -> (low, high, unit)``, before
-    :data:`OPTION_BOUNDS`, :func:`option_bound`), and ``check(options)``, which raises
-    :class:`~creative_py.world_files.OptionError` for resolved options it cannot run
-    with beyond their bounds and lengths (:func:`check_options`)."""
+    """A registered primitive: its schema (:class:`~creative_py.world.skills.SkillSchema`:
+    its name, options, world target, bounds and check) and its function ``run``."""
 
-    name: str
+    schema: SkillSchema
     run: Callable[[Any, Mapping[str, Any], tuple], SkillOutcome]
-    options: Mapping[str, Any]
-    target: str = ""
-    bounds: Mapping[str, tuple[float, float, str]] = field(default_factory=dict)
-    check: Callable[[Mapping[str, Any]], None] = lambda opts: None
+
+    @property
+    def name(self) -> str:
+        """Return the primitive's name."""
+        return self.schema.name
+
+    @property
+    def options(self) -> Mapping[str, Any]:
+        """Return its options (``name -> default``)."""
+        return self.schema.options
+
+    @property
+    def target(self) -> str:
+        """Return the name of the world target it takes (``""`` for none)."""
+        return self.schema.target
+
+    @property
+    def bounds(self) -> Mapping[str, tuple[float, float, str]]:
+        """Return the bounds of the options whose meaning is its own."""
+        return self.schema.bounds
+
+    @property
+    def check(self) -> Callable[[Mapping[str, Any]], None]:
+        """Return its check of resolved options."""
+        return self.schema.check
 
     def needs_held_tool(self, opts: Mapping[str, Any]) -> bool:
         """Return whether the primitive moves a held tool (checked before perceiving)."""
-        return bool(self.target) and not opts.get("by_hand", False)
+        return self.schema.needs_held_tool(opts)
 
 
 # -------------------------------------------------------------------------- grasp
@@ -130,10 +106,6 @@ def _fell(ep: Any) -> SkillOutcome | None:
 
 
 # ------------------------------------------------------------------ grasp slip
-SLIP_OPTIONS = {"grasp_slip_max_rad": 0.0, "grasp_slip_max_m": 0.0}
-"""The grasp-slip guard's options (0 = no check of that limit)."""
-
-
 def slip_guard(ep: Any, opts: Mapping[str, Any]) -> Callable[[], SkillOutcome | None] | None:
     """Return the grasp-slip check of ``opts`` for the held tool, or None if it is off."""
     max_rad = float(opts.get("grasp_slip_max_rad", 0.0) or 0.0)
@@ -171,7 +143,8 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     ``inner_height``). The gripper carries the tool above it to in front of its mouth
     and turns it so the prong is flat: at the requested roll if that is flat, otherwise
     towards the side of the handle with more room, or at ``flat_roll`` (rad, +pi/2 or
-    -pi/2; 0, the default, chooses by the room; :data:`FLAT_ROLLS`, nothing else) if the
+    -pi/2; 0, the default, chooses by the room;
+    :data:`~creative_py.world.skills.FLAT_ROLLS`, nothing else) if the
     manifest sets one: an arm whose
     wrist turns only one way from the pose's roll (a 7-joint arm's last joint at the
     height of a tall shelf) carries the prong flat on that side. With ``from_above`` (a passage
@@ -190,8 +163,9 @@ def insert_at_pose(ep: Any, opts: Mapping[str, Any], target: tuple) -> SkillOutc
     ``clearance`` is the height of the handle's underside above the target's perceived
     top during the insertion (m). A negative value puts the underside that far below
     the top, so that a tool without a prong (a plain stick) meets the target's side and
-    pushes or pulls it; it may not go below :data:`MIN_INSERT_CLEARANCE_M` (its bound in
-    :data:`PRIMITIVES`). The handle never goes below the passage's floor.
+    pushes or pulls it; it may not go below
+    :data:`~creative_py.world.skills.MIN_INSERT_CLEARANCE_M` (its bound in
+    :data:`~creative_py.world.skills.SKILLS`). The handle never goes below the passage's floor.
     """
     if not isinstance(ep.kind, HandleHeld):
         raise TypeError(f"insert_at_pose moves handled tools, not {ep.spec.kind}")
@@ -674,153 +648,16 @@ def _robot_in_sweep(ep: Any, door) -> str:
 
 
 # ------------------------------------------------------------------------ registry
-def _kind_grasp_options() -> dict[str, Any]:
-    from creative_py.backends.pybullet.tools import HANDLINGS
-
-    out: dict[str, Any] = {}
-    for kind in HANDLINGS.values():
-        out.update(kind.GRASP_OPTIONS)
-    return out
-
-
-MIN_INSERT_CLEARANCE_M = -0.05
-"""The lowest ``clearance`` of ``insert_at_pose`` (m): the handle's underside at most
-5 cm below the target's top. A target a tool is inserted over lies in a passage (the
-tube's 7 cm, the shelf's 4 cm of room) and is lower than that, so a lower value would
-put the handle under the target, which is nonsense."""
-
-
-FLAT_ROLLS = (-math.pi / 2, 0.0, math.pi / 2)
-"""The values of ``insert_at_pose``'s ``flat_roll`` (rad): the prong flat towards -y or
-+y, or 0, chosen by the room (a roll between would carry it neither flat nor down)."""
-
-FLAT_ROLL_TOLERANCE = 1e-6
-"""How far (rad) a ``flat_roll`` may lie from one of :data:`FLAT_ROLLS` (the digits of
-pi / 2 a file writes)."""
-
-
-def _check_insert(opts: Mapping[str, Any]) -> None:
-    roll = opts["flat_roll"]
-    if not any(abs(roll - r) <= FLAT_ROLL_TOLERANCE for r in FLAT_ROLLS):
-        raise OptionError("flat_roll", f"must be -pi/2, 0 (chosen by the room) or pi/2 "
-                          f"(the prong carried flat), got {roll:g} rad")
-
-
-def _check_sweep(opts: Mapping[str, Any]) -> None:
-    if math.hypot(*opts["direction"]) < 1e-9:
-        raise OptionError("direction", f"must not be zero, got {shown(opts['direction'])}")
-
-
-PRIMITIVES: dict[str, Primitive] = {p.name: p for p in (
-    Primitive("grasp", grasp, _kind_grasp_options()),
-    Primitive("insert_at_pose", insert_at_pose,
-              {"travel_z": REQUIRED, "pull_to_x": REQUIRED, "clearance": 0.008,
-               "free_speed": 0.35, "speed": 0.20, "posture_search": True, "perceive": True,
-               "flat_roll": 0.0, "from_above": False, "keep_roll": False,
-               **SLIP_OPTIONS},
-              target="tip",
-              bounds={"clearance": (MIN_INSERT_CLEARANCE_M, 1.0, "m")}, check=_check_insert),
-    Primitive("place_on_floor", place_on_floor,
-              {"hold_angle": REQUIRED, "carry_height": 0.10, "release_height": 0.003,
-               "lower_speed": 0.10, "gripper_yaw": 0.0, "retreat": REQUIRED,
-               "settle_time": 0.25, "by_hand": False, "perceive": False}, target="place"),
-    Primitive("pull_along_axis", pull_along_axis,
-              {"until_x": REQUIRED, "speed": 0.20, "settle_steps": 60, "lateral": 0.0,
-               "lateral_over": 0.0, **SLIP_OPTIONS},
-              bounds={"lateral": (-0.5, 0.5, "m"), "lateral_over": (0.0, 2.0, "m")}),
-    Primitive("push_along_axis", push_along_axis,
-              {"distance": REQUIRED, "speed": 0.10, "settle_steps": 60}),
-    Primitive("lower_at_pose", lower_at_pose,
-              {"travel_z": REQUIRED, "work_z": REQUIRED, "slide_from": None,
-               "via": None, "carry_z": None, "free_speed": 0.35, "speed": 0.10,
-               "posture_search": False,
-               "perceive": True}, target="tip",
-),
-    Primitive("sweep", sweep,
-              {"direction": REQUIRED, "until": REQUIRED, "speed": 0.10, "ramp": 0.0,
-               "ramp_pieces": 4, "end_speed": 0.02, "settle_steps": 60, "rest_speed": 0.0,
-               "settle_time": 2.0, "lift": 0.0}, check=_check_sweep),
-    Primitive("release_joint", release_joint,
-              {"duration": 4.0, "contact_distance": 0.0005, "park_robot": True}),
-)}
-"""The skill primitives a manifest may bind, by name."""
-
-
-_POSITION = (-10.0, 10.0, "m")
-_SPEED = (1e-3, 2.0, "m/s")
-_ANGLE = (-2 * math.pi, 2 * math.pi, "rad")
-
-OPTION_BOUNDS: dict[str, tuple[float, float, str]] = {
-    # where things are: coordinates in the world frame (a list: each of its numbers)
-    "travel_z": _POSITION, "pull_to_x": _POSITION, "until_x": _POSITION,
-    "lift_to": _POSITION, "carry_z": _POSITION, "retreat": _POSITION,
-    "work_z": _POSITION, "direction": (-1.0, 1.0, "(a unit vector)"),
-    "slide_from": (-2.0, 2.0, "m"), "via": (-2.0, 2.0, "m"), "until": _POSITION,
-    # how far
-    "approach": (0.0, 1.0, "m"), "clearance": (0.0, 1.0, "m"),
-    "carry_height": (0.0, 1.0, "m"), "release_height": (0.0, 1.0, "m"),
-    "distance": (-2.0, 2.0, "m"), "contact_distance": (-0.1, 0.1, "m"),
-    "ramp": (0.0, 2.0, "m"), "lift": (0.0, 1.0, "m"), "ramp_pieces": (1, 100, "steps"),
-    # how fast
-    "free_speed": _SPEED, "speed": _SPEED, "lower_speed": _SPEED, "end_speed": _SPEED,
-    "rest_speed": (0.0, 1.0, "m/s"),
-    # angles
-    "gripper_yaw": _ANGLE, "hold_angle": _ANGLE, "flat_roll": _ANGLE,
-    # how long: what a hang would come from
-    "settle_time": (0.0, 10.0, "s"), "duration": (0.0, 60.0, "s"),
-    "settle_steps": (0, 10000, "steps"),
-    # the grasp-slip guard
-    "grasp_slip_max_rad": (0.0, math.pi, "rad"), "grasp_slip_max_m": (0.0, 1.0, "m"),
+_RUNS: dict[str, Callable[[Any, Mapping[str, Any], tuple], SkillOutcome]] = {
+    "grasp": grasp, "insert_at_pose": insert_at_pose, "place_on_floor": place_on_floor,
+    "pull_along_axis": pull_along_axis, "push_along_axis": push_along_axis,
+    "lower_at_pose": lower_at_pose, "sweep": sweep, "release_joint": release_joint,
 }
-"""The bounds ``(low, high, unit)`` of every numeric option of the primitives and of
-the tool kinds' grasps, by option name, unless the primitive bounds it itself
-(:attr:`Primitive.bounds`, :func:`option_bound`: ``insert_at_pose``'s ``clearance``
-may be negative, a grasp's may not); a ``steps`` option must be a whole number, an
-option whose default is true or false (``posture_search``, ``perceive``, ``by_hand``,
-``park_robot``) must be true or false. The loader checks every skill's options in
-every variant and location (:func:`creative_py.world.read.check_values`), so that no
-number of ``case.toml`` makes a motion or a wait run without end."""
 
-
-VECTOR_OPTIONS: dict[str, int] = {"direction": 2, "via": 2, "slide_from": 2, "retreat": 3}
-"""The options that are lists of numbers, by name, and how many numbers each holds
-(``direction``, ``via``, ``slide_from``: x, y in the table's plane; ``retreat``: a
-point x, y, z); every other numeric option is one number."""
-
-
-def check_options(primitive_name: str, opts: Mapping[str, Any]) -> None:
-    """Raise :class:`~creative_py.world_files.OptionError` unless the resolved options
-    of the primitive named ``primitive_name`` have their shapes (a list of
-    :data:`VECTOR_OPTIONS`'s length, else one number; an unset optional list is None)
-    and pass its own check (:attr:`Primitive.check`). Bounds are checked apart
-    (:func:`option_bound`)."""
-    p = PRIMITIVES[primitive_name]
-    flags = option_flags()
-    for k, v in opts.items():
-        if k in flags or v is None:  # None: an optional option left unset
-            continue
-        n = VECTOR_OPTIONS.get(k)
-        if n is not None and not (isinstance(v, tuple) and len(v) == n):
-            raise OptionError(k, f"must be a list of {n} numbers, got {shown(v)}")
-        if n is None and isinstance(v, tuple):
-            raise OptionError(k, f"must be a number, got a list {shown(v)}")
-    p.check(opts)
-
-
-def option_bound(primitive_name: str, option: str) -> tuple[float, float, str] | None:
-    """Return the bound ``(low, high, unit)`` of ``option`` of the primitive named
-    ``primitive_name``: its own (:attr:`Primitive.bounds`), else :data:`OPTION_BOUNDS`'s,
-    else None (an option without a numeric bound)."""
-    p = PRIMITIVES.get(primitive_name)
-    if p is not None and option in p.bounds:
-        return p.bounds[option]
-    return OPTION_BOUNDS.get(option)
-
-
-def option_flags() -> frozenset[str]:
-    """Return the options that are true or false (their default is a bool)."""
-    return frozenset(n for p in PRIMITIVES.values() for n, d in p.options.items()
-                     if isinstance(d, bool))
+PRIMITIVES: dict[str, Primitive] = {name: Primitive(schema, _RUNS[name])
+                                    for name, schema in SKILLS.items()}
+"""The skill primitives a manifest may bind, by name: each schema of
+:data:`creative_py.world.skills.SKILLS` with its run function."""
 
 
 def primitive(name: str) -> Primitive:
@@ -829,7 +666,3 @@ def primitive(name: str) -> Primitive:
         raise KeyError(f"unknown primitive {name!r}; primitives: {', '.join(PRIMITIVES)}")
     return PRIMITIVES[name]
 
-
-def option_names(p: Primitive) -> Sequence[str]:
-    """Return the option names of primitive ``p``."""
-    return tuple(p.options)

@@ -16,15 +16,8 @@ cylinders, boxes and spheres, created only for the rendering. Whether a trial is
 rendering is decided once its outcome is known, so the cheap part (snapshots) runs for
 every trial and the expensive part (rendering) only for the clips that are kept.
 
-The ``[video]`` table of a world's ``scene.toml`` places the camera::
-
-    [video]
-    eye = [1.0, -1.05, 0.75]
-    target = [0.93, -0.32, -0.10]
-    fov_deg = 50.0
-    width = 320
-    height = 240
-    fps = 5.0             # frames per second of simulated time
+The ``[video]`` table of a world's ``scene.toml`` places the camera
+(:class:`~creative_py.world.cameras.VideoSpec`).
 """
 
 from __future__ import annotations
@@ -36,12 +29,13 @@ import time
 import xml.etree.ElementTree as ET
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable, Mapping
+from typing import Any, Callable
 
 import numpy as np
 import pybullet as pb
 
-from creative_py.backends.pybullet.camera import CameraSpec
+from creative_py.backends.pybullet.camera import projection_matrix, view_matrix
+from creative_py.world.cameras import VideoSpec
 
 PROXY_RGBA = (0.55, 0.58, 0.62, 1.0)
 """Colour of the robot's stand-in shapes."""
@@ -52,42 +46,6 @@ MESHES = False
 """Whether collision meshes (a torso and pedestal, say) join the stand-in: off, as
 they render speckled and more than double the time of a frame."""
 """Collision shapes smaller than this (m) are left out of the stand-in."""
-
-
-@dataclass(frozen=True)
-class VideoSpec:
-    """The fixed camera of a world's clips and their frame rate.
-
-    Attributes
-    ----------
-    camera : CameraSpec
-        The camera (eye, target, field of view, size in pixels).
-    fps : float
-        Frames per second of simulated time, in (0, 60].
-    """
-
-    camera: CameraSpec
-    fps: float = 5.0
-
-    def __post_init__(self) -> None:
-        if (isinstance(self.fps, bool) or not isinstance(self.fps, (int, float))
-                or not 0.0 < self.fps <= 60.0):
-            raise ValueError(f"[video]: field 'fps' must lie in (0, 60] frames per second "
-                             f"of simulated time, got {self.fps!r}")
-
-    @classmethod
-    def from_table(cls, table: Mapping[str, Any], source: str) -> "VideoSpec":
-        """Build the spec from a ``[video]`` table (camera fields plus ``fps``)."""
-        if not isinstance(table, Mapping):
-            raise ValueError(f"{source}: [video] must be a table")
-        cam = {k: v for k, v in table.items() if k != "fps"}
-        cam.setdefault("name", "video")
-        camera = CameraSpec.from_dict(cam, f"{source}: [video]")
-        fps = table.get("fps", 5.0)
-        try:
-            return cls(camera, fps)
-        except ValueError as exc:
-            raise ValueError(f"{source}: {exc}") from None
 
 
 @dataclass(frozen=True)
@@ -219,7 +177,7 @@ class Recorder:
         t0 = time.perf_counter()
         c = self.client
         cam = self.spec.camera
-        view, proj = cam.view_matrix(), cam.projection_matrix()
+        view, proj = view_matrix(cam), projection_matrix(cam)
         proxies = self._build_proxies()
         frames = []
         for snap in self.snapshots:

@@ -4,8 +4,10 @@ A catalogued object's spec is its tool kind's (:mod:`creative_py.kinds`: one plu
 module per kind); the spec says, as data, how it is held (``HANDLING``), and the
 handlings registered in :data:`HANDLINGS` bring the motion: where the tool starts (the
 ``[tool_start]`` table of ``scene.toml``), the grasp, how the held tool is moved and
-what the arm's proprioception says about it. :func:`catalogue_facts` is the one place
-that gives the catalogue facts of an object (the spec's own).
+what the arm's proprioception says about it. Each handling's ``[tool_start]`` fields
+and grasp options are its schema's (:mod:`creative_py.world.handlings`, by the same
+names). :func:`catalogue_facts` is the one place that gives the catalogue facts of an
+object (the spec's own).
 
 A handling's methods take the running :class:`~creative_py.backends.pybullet.episode.Episode` as
 ``ep`` (typed ``Any``: the episode imports this module).
@@ -32,6 +34,8 @@ from creative_py.backends.pybullet.arm import gripper_down, gripper_forward, qua
 from creative_py.backends.pybullet.bodies import Surface, frame_pose, load_tool_urdf, spawn_parts, spawn_spec
 from creative_py.backends.pybullet.core import Pose
 from creative_py.simulator.types import Fact, SkillOutcome
+from creative_py.world import handlings
+from creative_py.world.handlings import Handling
 
 
 IDENTITY = (0.0, 0.0, 0.0, 1.0)
@@ -93,12 +97,14 @@ class ToolKind:
 
     ``START_FIELDS`` lists the fields of ``[tool_start]`` the handling reads (``name ->
     default``, None for required); ``GRASP_OPTIONS`` the options of the ``grasp``
-    primitive (``name -> default``). What a tool is (its catalogue facts, sizes, the
+    primitive (``name -> default``): both its schema's (``SCHEMA``, a
+    :class:`~creative_py.world.handlings.Handling`). What a tool is (its catalogue facts, sizes, the
     fields a randomised world redraws) its spec says (:class:`creative_py.kinds.parts.KindSpec`).
     """
 
-    START_FIELDS: dict[str, Any] = {}
-    GRASP_OPTIONS: dict[str, Any] = {}
+    SCHEMA: Handling
+    START_FIELDS: Mapping[str, Any] = {}
+    GRASP_OPTIONS: Mapping[str, Any] = {}
 
     def catalogue_facts(self, spec: Any) -> list[Fact]:
         """Return the catalogue facts of ``spec`` (metres, degrees)."""
@@ -106,7 +112,7 @@ class ToolKind:
 
     def quantities(self, spec: Any) -> dict[str, float]:
         """Return the tool's named sizes that scene expressions may use (``tool.<q>``)."""
-        return spec.quantities()
+        return handlings.quantities(spec)
 
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         """Create the tool where it starts (and any support it needs); return its body."""
@@ -159,10 +165,9 @@ class HandleHeld(ToolKind):
     wide, stands on ``pedestal_base_z`` and runs under the bare handle).
     """
 
-    START_FIELDS = {"position": None, "roll": None, "pedestal_width": None,
-                    "pedestal_base_z": None, "pedestal_friction": 0.8,
-                    "colour": (0.95, 0.8, 0.1, 1.0)}
-    GRASP_OPTIONS = {"approach": 0.10, "free_speed": 0.35, "speed": 0.20, "lift_to": None}
+    SCHEMA = handlings.HANDLINGS["handle"]
+    START_FIELDS = SCHEMA.start_fields
+    GRASP_OPTIONS = SCHEMA.grasp_options
 
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         spec, sim = ep.spec, ep.sim
@@ -255,8 +260,9 @@ class TopGripped(ToolKind):
     the heading ``yaw`` (rad); ``colours`` maps an object set to its RGBA colour.
     """
 
-    START_FIELDS = {"position": None, "yaw": 0.0, "colours": {}}
-    GRASP_OPTIONS = {"carry_z": None, "clearance": 0.004, "gripper_yaw": 0.0}
+    SCHEMA = handlings.HANDLINGS["top"]
+    START_FIELDS = SCHEMA.start_fields
+    GRASP_OPTIONS = SCHEMA.grasp_options
 
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         x, y, z = start["position"]
@@ -308,17 +314,15 @@ class TopGripped(ToolKind):
         return spec.centre()
 
 
-HANDLINGS: dict[str, ToolKind] = {"handle": HandleHeld(), "top": TopGripped()}
-"""The handlings by the ``HANDLING`` name a tool kind's spec gives."""
+HANDLINGS: dict[str, ToolKind] = {k.SCHEMA.name: k for k in (HandleHeld(), TopGripped())}
+"""The handlings by the ``HANDLING`` name a tool kind's spec gives (the names of
+:data:`creative_py.world.handlings.HANDLINGS`)."""
 
 
 def tool_kind(spec: Any) -> ToolKind:
-    """Return the handling of ``spec``; raise naming the registered handlings."""
-    handling = getattr(spec, "HANDLING", None)
-    if handling not in HANDLINGS:
-        raise TypeError(f"{getattr(spec, 'name', spec)!r}: no handling {handling!r} in the "
-                        f"simulator; handlings: {', '.join(HANDLINGS)}")
-    return HANDLINGS[handling]
+    """Return the handling of ``spec``; raise naming the registered handlings
+    (:func:`creative_py.world.handlings.handling`)."""
+    return HANDLINGS[handlings.handling(spec).name]
 
 
 def catalogue_facts(spec: Any) -> list[Fact]:

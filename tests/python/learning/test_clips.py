@@ -16,8 +16,9 @@ from creative_py.learning.clips import CLIP_NICE, ClipKeeper, failure_reason
 from creative_py.learning.options import RunOptions
 from creative_py.records.trial import TrialRecord
 from creative_py.backends.pybullet import recorder
-from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
+from creative_py.backends.pybullet.recorder import Recorder
 from creative_py.video import Captioner
+from creative_py.world.cameras import VideoSpec
 
 BLOCKED = "position_tool: gripper lagged its target by {} cm at (0.978, -0.250, -0.052) m"
 

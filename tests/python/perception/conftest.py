@@ -12,7 +12,7 @@ import pytest
 from creative_py.mesh.spec import Box, Cylinder, Hull
 
 from creative_py.kinds.block import BlockSpec
-from creative_py.backends.pybullet.camera import CameraSpec
+from creative_py.world.cameras import CameraSpec
 
 TABLE_TOP = -0.20
 FLOOR = -0.926

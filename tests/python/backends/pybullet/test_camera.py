@@ -8,7 +8,8 @@ import numpy as np
 import pybullet as p
 import pytest
 
-from creative_py.backends.pybullet.camera import CameraSpec, cameras_from_tables, capture
+from creative_py.backends.pybullet.camera import capture
+from creative_py.world.cameras import CameraSpec, cameras_from_tables
 
 GOOD = {"name": "top", "eye": [0.9, -0.1, 0.8], "target": [0.9, -0.1, -0.2], "up": [1, 0, 0],
         "fov_deg": 40, "width": 320, "height": 240, "near": 0.1, "far": 3.0}

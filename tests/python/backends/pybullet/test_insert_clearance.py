@@ -11,9 +11,8 @@ from pathlib import Path
 import pytest
 
 from creative_py.backends.pybullet import load_world
-from creative_py.backends.pybullet.primitives import (MIN_INSERT_CLEARANCE_M, OPTION_BOUNDS,
-                                                      option_bound)
 from creative_py.case import manifest_of_folder
+from creative_py.world.skills import MIN_INSERT_CLEARANCE_M, OPTION_BOUNDS, option_bound
 from creative_py.world_files import WORLDS_ROOT, WorldFileError
 
 

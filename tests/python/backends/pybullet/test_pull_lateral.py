@@ -12,8 +12,9 @@ import pytest
 from creative_py.case import get_case
 from creative_py.backends.pybullet import load_world
 from creative_py.backends.pybullet.episode import open_episode
-from creative_py.backends.pybullet.primitives import PRIMITIVES, option_bound
+from creative_py.backends.pybullet.primitives import PRIMITIVES
 from creative_py.world.read import resolve_options
+from creative_py.world.skills import option_bound
 
 
 def test_the_draw_is_off_by_default_and_bounded():

@@ -17,8 +17,8 @@ from creative_py.backends.pybullet import load_world
 from creative_py.simulator.trial import run_trial
 
 from _poses import poses
-from creative_py.backends.pybullet.camera import CameraSpec
-from creative_py.backends.pybullet.recorder import Recorder, VideoSpec
+from creative_py.backends.pybullet.recorder import Recorder
+from creative_py.world.cameras import CameraSpec, VideoSpec
 from creative_py.video import band_height, caption, write_clip
 
 pytestmark = pytest.mark.sim
