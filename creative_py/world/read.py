@@ -53,8 +53,13 @@ from typing import Any, Mapping, Optional, Sequence
 
 from creative_py.case import CaseManifest
 from creative_py.simulator.catalogue import CatalogueItem, CatalogueWorld, read_catalogue
+from creative_py.world import oracles, skills
 from creative_py.world.bodies import read_bodies, resolve_bodies
+from creative_py.world.cameras import VideoSpec, cameras_from_tables
 from creative_py.world.expressions import Namespace
+from creative_py.world.handlings import HANDLINGS, handling, quantities
+from creative_py.world.oracles import ORACLES, OracleSpec
+from creative_py.world.skills import REQUIRED, SKILLS
 from creative_py.world_files import (Fields, OptionError, PhysicsSettings, WorldFileError,
                                      did_you_mean, load_toml, read_physics, world_file)
 
@@ -175,8 +180,6 @@ class World(CatalogueWorld):
         when given, otherwise from the spec's parts. It takes the friction of the
         catalogue's first object (the same printed material).
         """
-        from creative_py.world.handlings import handling
-
         handling(spec)  # a kind the simulator holds
         return super().with_tool(spec, urdf)
 
@@ -231,13 +234,6 @@ class World(CatalogueWorld):
 
     def namespace(self, variant: str, location: int, tool: str):
         """Return the scene values of one episode (variant and location applied)."""
-<<<<<<< HEAD
-        from creative_py.backends.pybullet.tools import tool_kind
-=======
-        from creative_py.backends.pybullet.scene import Namespace
-        from creative_py.world.handlings import quantities
->>>>>>> skills-merged
-
         v = self.manifest.variant(variant)
         if not (isinstance(location, int) and 1 <= location <= len(self.location_sets)):
             raise KeyError(f"unknown location {location!r}; locations: "
@@ -365,16 +361,6 @@ def _read_robot_fields(rf: Fields, parent: Fields | None, bodies: Sequence[str],
 
 def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
     from creative_py.perception.noise import NoiseModel
-<<<<<<< HEAD
-    from creative_py.backends.pybullet.camera import cameras_from_tables
-    from creative_py.backends.pybullet.recorder import VideoSpec
-    from creative_py.backends.pybullet.tools import HANDLINGS
-=======
-    from creative_py.world.cameras import VideoSpec, cameras_from_tables
-    from creative_py.backends.pybullet.scene import read_bodies
-    from creative_py.world.handlings import HANDLINGS
->>>>>>> skills-merged
-
     f = Fields(load_toml(path), path)
     settle = f.float("settle_time", minimum=SETTLE_TIME_S[0], maximum=SETTLE_TIME_S[1])
     bodies = read_bodies(f.tables("body"))
@@ -421,8 +407,6 @@ def _read_scene(path: Path, kinds: set[str], profile: Any) -> SceneSpec:
 
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
-    from creative_py.world.handlings import HANDLINGS
-
     def holds(spec: Any) -> Optional[str]:
         return (None if spec.HANDLING in HANDLINGS else
                 f"the simulator has no handling {spec.HANDLING!r} for a {spec.kind}")
@@ -431,8 +415,6 @@ def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
 
 
 def _read_tasks(path: Path):
-    from creative_py.world.oracles import ORACLES, OracleSpec
-
     f = Fields(load_toml(path), path)
     locations = []
     for lf in f.tables("location"):
@@ -455,8 +437,6 @@ def _read_tasks(path: Path):
 
 
 def _read_skills(manifest: CaseManifest) -> dict[str, SkillSpec]:
-    from creative_py.world.skills import REQUIRED, SKILLS
-
     path = manifest.folder / "case.toml"
     out = {}
     for i, s in enumerate(manifest.skills):
@@ -538,8 +518,6 @@ def load_world(manifest: CaseManifest, world_dir: Path | None = None) -> World:
 def _scene_names(world: World, bodies: dict[str, Any], tool: str) -> Any:
     """Return what an oracle's options may name in an episode with ``bodies`` and
     ``tool`` (:class:`creative_py.world.oracles.SceneNames`)."""
-    from creative_py.world import oracles
-
     manifest = world.manifest
     started = {object_name(manifest, p.name, tool) for p in world.scene.perceived}
     started |= {n for n, b in bodies.items() if getattr(b, "dynamic", False)}
@@ -551,7 +529,6 @@ def oracle_reads(world: World, variant: str, location: int, tool: str
                  ) -> tuple[list[str], bool]:
     """Return the objects the world's oracle reads in an episode of ``variant``,
     ``location`` and ``tool`` (in order), and whether it reads a velocity."""
-    from creative_py.world import oracles
     ns = world.namespace(variant, location, tool)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=oracle_words(world))
     names = _scene_names(world, resolve_bodies(world.scene.bodies, ns), tool)
@@ -607,10 +584,8 @@ def _check_start_poses(world: World, ns: Namespace, episode: str) -> None:
 def _check_skill_options(world: World, ns: Namespace, episode: str) -> None:
     """Raise :class:`WorldFileError` unless every skill's options are well typed, within
     their bounds and valid for their primitive."""
-    from creative_py.world import skills as primitives
-
     case_file = world.manifest.folder / "case.toml"
-    flags = primitives.option_flags()
+    flags = skills.option_flags()
     for i, s in enumerate(world.skills.values()):
         for k, raw in s.options.items():  # a flag is never a scene expression
             if k in flags and not isinstance(raw, bool):
@@ -622,11 +597,11 @@ def _check_skill_options(world: World, ns: Namespace, episode: str) -> None:
             if k in flags:
                 if not isinstance(v, bool):
                     raise WorldFileError(f"{where}: must be true or false, got {v!r}")
-            elif (bound := primitives.option_bound(s.primitive, k)) is not None:
+            elif (bound := skills.option_bound(s.primitive, k)) is not None:
                 check_bound(v, bound, where,
                             episode if isinstance(s.options[k], str) else "")
         try:
-            primitives.check_options(s.primitive, opts)
+            skills.check_options(s.primitive, opts)
         except OptionError as exc:
             raise WorldFileError(f"{case_file}: field 'skill[{i}].options.{exc.option}': "
                                  f"{exc.cause}{_context(s.options.get(exc.option), episode)}"
@@ -638,8 +613,6 @@ def _check_oracle_options(world: World, ns: Namespace, bodies: dict[str, Any], t
     """Raise :class:`WorldFileError` unless the oracle's options lie within their bounds
     and are valid for its kind against the objects and roles of an episode with
     ``bodies`` and ``tool``."""
-    from creative_py.world import oracles
-
     words = oracle_words(world)
     opts = resolve_options(world.oracle.options, ns, "oracle", words=words)
     tasks_file = world.directory / "tasks.toml"
@@ -702,8 +675,6 @@ def check_bound(value: Any, bound: tuple[float, float, str], where: str,
 
 def oracle_words(world: World) -> set[str]:
     """Return the oracle options that are words (object names, an axis), not numbers."""
-    from creative_py.world.oracles import ORACLES
-
     o = ORACLES[world.oracle.kind]
     return {o.subject, *o.words}
 
