@@ -2,7 +2,7 @@
 
 A skill of ``case.toml`` names a primitive of :data:`SKILLS` and may set its options
 (``options = {...}``, numbers or scene expressions such as ``"tube1.mouth_x - 0.05"``,
-see :mod:`creative_py.backends.pybullet.scene`). A primitive that takes the pose gets
+see :mod:`creative_py.world.expressions`). A primitive that takes the pose gets
 its world target from the engine's pose solution
 (:attr:`creative_py.backends.pybullet.episode.Episode.pose_target`), never from case
 arithmetic. This module holds what a primitive is (its options and their defaults, its
