@@ -11,7 +11,7 @@ from it.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import asdict, dataclass, replace
 from pathlib import Path
 from typing import Any, Callable, Mapping, Optional, Sequence
 
@@ -76,6 +76,34 @@ class CatalogueWorld:
     """The catalogue half of :class:`creative_py.simulator.protocol.World`."""
 
     items: dict[str, Any]
+
+    def listing(self) -> dict[str, Any]:
+        """Return JSON-ready data (``creative trial CASE --list``): the objects (spec
+        fields, set, friction, the URDF of a created tool), the locations (the world's
+        own :meth:`location_listing`), the variants, the default pose and the
+        demonstration."""
+        m = self.manifest
+        objects = {}
+        for n, item in self.items.items():
+            d = asdict(item.spec)
+            d.update(set=item.set, friction=item.friction)
+            if item.urdf is not None:
+                d["urdf"] = str(item.urdf)
+            objects[n] = d
+        pose = dict(zip(m.pose_names, m.demonstration.pose))
+        demo = m.demonstration
+        return {"case": m.id, "objects": objects, "locations": self.location_listing(),
+                "variants": {v.name: {"description": v.description, "harder": v.harder,
+                                      "set": dict(v.set)} for v in m.variants},
+                "default_pose": pose,
+                "demonstration": {"tool": demo.tool, "variant": demo.variant,
+                                  "location": demo.location, "steps": list(demo.steps),
+                                  "pose": pose}}
+
+    def location_listing(self) -> list[dict[str, Any]]:
+        """Return the locations as :meth:`listing` shows them, one table each with its
+        1-based ``index``."""
+        raise NotImplementedError
 
     @property
     def catalogue(self) -> dict[str, Any]:

@@ -47,7 +47,7 @@ oracle's (:data:`creative_py.world.oracles.OPTION_BOUNDS`).
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field, replace
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any, Mapping, Optional, Sequence
 
@@ -183,30 +183,9 @@ class World(CatalogueWorld):
         handling(spec)  # a kind the simulator holds
         return super().with_tool(spec, urdf)
 
-    def listing(self) -> dict[str, Any]:
-        """Return JSON-ready data: objects (spec fields, set, friction, URDF of a created
-        tool), locations, variants, the default pose and the demonstration."""
-        m = self.manifest
-        objects = {}
-        for n, item in self.items.items():
-            d = asdict(item.spec)
-            d.update(set=item.set, friction=item.friction)
-            if item.urdf is not None:
-                d["urdf"] = str(item.urdf)
-            objects[n] = d
-        pose = dict(zip(m.pose_names, m.demonstration.pose))
-        return {
-            "case": m.id,
-            "objects": objects,
-            "locations": [{"index": i, **s} for i, s in enumerate(self.location_sets, 1)],
-            "variants": {v.name: {"description": v.description, "harder": v.harder,
-                                  "set": dict(v.set)} for v in m.variants},
-            "default_pose": pose,
-            "demonstration": {"tool": m.demonstration.tool,
-                              "variant": m.demonstration.variant,
-                              "location": m.demonstration.location,
-                              "steps": list(m.demonstration.steps), "pose": pose},
-        }
+    def location_listing(self) -> list[dict[str, Any]]:
+        """Return each location's scene values with its 1-based ``index``."""
+        return [{"index": i, **s} for i, s in enumerate(self.location_sets, 1)]
 
     def location_values(self, location: int) -> dict[str, Any]:
         """Return the scene values location ``location`` sets (its ``set`` table of

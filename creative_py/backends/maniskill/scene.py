@@ -39,7 +39,7 @@ and the field.
 
 from __future__ import annotations
 
-from dataclasses import asdict, dataclass, field
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping, Optional, Sequence
 
@@ -164,24 +164,9 @@ class World(CatalogueWorld):
         """Refuse as :meth:`location_values` (ValueError)."""
         raise self._no_drawn_worlds()
 
-    def listing(self) -> dict[str, Any]:
-        """Return JSON-ready data: objects, locations (seeds), variants, pose, demonstration."""
-        m = self.manifest
-        objects = {}
-        for n, item in self.items.items():
-            d = asdict(item.spec)
-            d.update(set=item.set, friction=item.friction)
-            objects[n] = d
-        pose = dict(zip(m.pose_names, m.demonstration.pose))
-        return {"case": m.id, "objects": objects,
-                "locations": [{"index": i, "seed": s} for i, s in enumerate(self.seeds, 1)],
-                "variants": {v.name: {"description": v.description, "harder": v.harder,
-                                      "set": dict(v.set)} for v in m.variants},
-                "default_pose": pose,
-                "demonstration": {"tool": m.demonstration.tool,
-                                  "variant": m.demonstration.variant,
-                                  "location": m.demonstration.location,
-                                  "steps": list(m.demonstration.steps), "pose": pose}}
+    def location_listing(self) -> list[dict[str, Any]]:
+        """Return each location's episode seed with its 1-based ``index``."""
+        return [{"index": i, "seed": s} for i, s in enumerate(self.seeds, 1)]
 
 
 def _read_catalogue(path: Path, table: str) -> dict[str, CatalogueItem]:
