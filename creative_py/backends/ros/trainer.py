@@ -66,7 +66,7 @@ class SceneKeeper:
 
     Parameters
     ----------
-    world : creative_py.backends.pybullet.World
+    world : creative_py.world.read.World
         The case's world as its files say (created tools are added per request).
     open_episode : callable
         The backend that builds a scene, ``open_episode(world, variant, location, tool)``
