@@ -180,7 +180,7 @@ class World(CatalogueWorld):
         when given, otherwise from the spec's parts. It takes the friction of the
         catalogue's first object (the same printed material).
         """
-        handling(spec)  # a kind the simulator holds
+        handling(spec)  # a handling the world files know (a backend builds each)
         return super().with_tool(spec, urdf)
 
     def location_listing(self) -> list[dict[str, Any]]:

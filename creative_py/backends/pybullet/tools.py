@@ -110,10 +110,6 @@ class ToolKind:
         """Return the catalogue facts of ``spec`` (metres, degrees)."""
         return spec.catalogue_facts()
 
-    def quantities(self, spec: Any) -> dict[str, float]:
-        """Return the tool's named sizes that scene expressions may use (``tool.<q>``)."""
-        return handlings.quantities(spec)
-
     def spawn(self, ep: Any, start: Mapping[str, Any]) -> int:
         """Create the tool where it starts (and any support it needs); return its body."""
         raise NotImplementedError
